@@ -1,0 +1,28 @@
+#pragma once
+// Importance sampling of an environment by its luminance: a piecewise-constant 2D distribution
+// over the equirect texels, weighted by each texel's luminance times its solid angle
+// [PBRT 3rd ed., 14.2.4 "Infinite Area Lights"].
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/Environment.h"
+#include "core/Sampling.h"
+
+namespace facet {
+
+class EnvironmentSampler {
+public:
+    explicit EnvironmentSampler(const Environment& environment);
+
+    // A world direction drawn in proportion to radiance luminance, and its pdf w.r.t. solid angle.
+    glm::dvec3 sample(const glm::dvec2& u, double* pdf) const;
+    // The pdf of drawing world direction `direction` (unit).
+    double pdf(const glm::dvec3& direction) const;
+
+private:
+    const Environment& m_environment;
+    sampling::Distribution2D m_distribution; // x = u, y = v (row 0: v in [0, 1/H), the image's bottom row)
+};
+
+} // namespace facet

@@ -1,0 +1,30 @@
+#include "TestSupport.h"
+
+#include <QDir>
+#include <QFileInfo>
+
+namespace facet::test {
+
+QString assetsDir()
+{
+    const QByteArray fromEnvironment = qgetenv("FACET_ASSETS_DIR");
+    return fromEnvironment.isEmpty() ? QStringLiteral(FACET_ASSETS_DIR) : QString::fromLocal8Bit(fromEnvironment);
+}
+
+static QString existing(const QString& path) { return QFileInfo::exists(path) ? path : QString(); }
+
+QString hdriPath(const QString& name) { return existing(assetsDir() + QStringLiteral("/hdri/") + name + QStringLiteral(".exr")); }
+QString modelPath(const QString& name) { return existing(assetsDir() + QStringLiteral("/models/") + name + QStringLiteral(".glb")); }
+QString sourceDir() { return QStringLiteral(FACET_SOURCE_DIR); }
+
+QString outputDir()
+{
+    const QByteArray fromEnvironment = qgetenv("FACET_TEST_OUTPUT_DIR");
+    const QString dir = fromEnvironment.isEmpty() ? QStringLiteral(FACET_TEST_OUTPUT_DIR) : QString::fromLocal8Bit(fromEnvironment);
+    QDir().mkpath(dir);
+    return dir;
+}
+
+bool runningInCi() { return qgetenv("CI") == "true"; }
+
+} // namespace facet::test

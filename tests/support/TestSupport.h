@@ -1,0 +1,36 @@
+#pragma once
+// Helpers shared by the test executables: where the CC0 sample data and the test artefacts are.
+
+#include <QString>
+#include <QtTest/QTest>
+
+namespace facet::test {
+
+// Root of the sample data fetched by packaging/fetch-assets.sh ($FACET_ASSETS_DIR overrides the
+// directory configured at build time).
+QString assetsDir();
+// Path of a sample HDR environment, e.g. hdriPath("studio") -> ".../hdri/studio.exr". Empty if absent.
+QString hdriPath(const QString& name);
+// Path of a sample mesh, e.g. modelPath("suzi") -> ".../models/suzi.glb". Empty if absent.
+QString modelPath(const QString& name);
+// The source tree (for golden data under tests/data).
+QString sourceDir();
+// Where tests write artefacts (actual and diff images, screenshots); created on demand.
+QString outputDir();
+// True when running under CI (CI=true): missing sample data is then a failure, not a skip.
+bool runningInCi();
+
+} // namespace facet::test
+
+// Skips the test (locally) or fails it (CI) when a sample-data file is missing.
+#define FACET_REQUIRE_ASSET(path, what)                                                              \
+    do {                                                                                             \
+        if ((path).isEmpty()) {                                                                      \
+            const QByteArray message = QByteArray("sample data missing: ") + (what)                  \
+                + " (run packaging/fetch-assets.sh)";                                                \
+            if (facet::test::runningInCi())                                                          \
+                QFAIL(message.constData());                                                          \
+            else                                                                                     \
+                QSKIP(message.constData());                                                          \
+        }                                                                                            \
+    } while (false)
