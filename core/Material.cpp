@@ -1,0 +1,196 @@
+#include "core/Material.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <utility>
+
+namespace facet {
+
+namespace {
+template <typename Enum, std::size_t N>
+std::optional<Enum> lookup(const std::pair<Enum, const char*> (&table)[N], std::string_view name)
+{
+    for (const auto& [value, text] : table)
+        if (name == text)
+            return value;
+    return std::nullopt;
+}
+template <typename Enum, std::size_t N>
+const char* nameOf(const std::pair<Enum, const char*> (&table)[N], Enum value)
+{
+    for (const auto& [v, text] : table)
+        if (v == value)
+            return text;
+    return "";
+}
+
+constexpr std::pair<MapSlot, const char*> kSlots[]
+    = {{MapSlot::BaseColor, "baseColor"}, {MapSlot::Normal, "normal"}, {MapSlot::Metallic, "metallic"},
+        {MapSlot::Roughness, "roughness"}, {MapSlot::Occlusion, "occlusion"}};
+constexpr std::pair<MapChannel, const char*> kChannels[] = {{MapChannel::Rgb, "rgb"}, {MapChannel::R, "r"},
+    {MapChannel::G, "g"}, {MapChannel::B, "b"}, {MapChannel::A, "a"}};
+constexpr std::pair<ColorEncoding, const char*> kEncodings[]
+    = {{ColorEncoding::SRGB, "srgb"}, {ColorEncoding::Linear, "linear"}};
+
+std::string number(double value)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", value);
+    return buffer;
+}
+
+// "<field>: <value> is outside [lo, hi]" when value is not a finite number within the range.
+bool checkRange(double value, double lo, double hi, const std::string& field, std::string* problem)
+{
+    if (std::isfinite(value) && value >= lo && value <= hi)
+        return true;
+    if (problem)
+        *problem = field + ": " + number(value) + " is outside [" + number(lo) + ", " + number(hi) + "]";
+    return false;
+}
+
+bool fail(const std::string& message, std::string* problem)
+{
+    if (problem)
+        *problem = message;
+    return false;
+}
+
+bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
+{
+    const std::string key = toString(slot);
+    if (slot == MapSlot::BaseColor) {
+        static const char* const kComponents[] = {"r", "g", "b", "a"};
+        for (int i = 0; i < 4; ++i)
+            if (!checkRange(map.factor[i], 0.0, 1.0, key + ".factor." + kComponents[i], problem))
+                return false;
+    } else {
+        // Normal strength scales tangent-space X and Y; beyond 10 the map is noise, below 0 it
+        // would flip both axes, which flipGreen and the texture itself express better.
+        const double hi = slot == MapSlot::Normal ? 10.0 : 1.0;
+        if (!checkRange(map.factor.x, 0.0, hi, key + ".factor", problem))
+            return false;
+        if (map.factor.y != map.factor.x || map.factor.z != map.factor.x || map.factor.w != map.factor.x)
+            return fail(key + ".factor: a scalar factor must have equal components (use Material::setFactor)",
+                problem);
+    }
+    if (slot == MapSlot::Normal && map.channel != MapChannel::Rgb)
+        return fail(key + ".channel: a normal map reads \"rgb\"", problem);
+    if (isScalarSlot(slot) && map.channel == MapChannel::Rgb)
+        return fail(
+            key + ".channel: a " + key + " map reads one channel (\"r\", \"g\", \"b\" or \"a\"), not \"rgb\"",
+            problem);
+    if (map.invert && !isScalarSlot(slot))
+        return fail(key + ".invert: only metallic, roughness and occlusion maps can be inverted", problem);
+    if (map.flipGreen && slot != MapSlot::Normal)
+        return fail(key + ".flipGreen: only the normal map has a green-channel convention", problem);
+    // A zero scale collapses the texture to one texel, which is never what was meant.
+    for (int i = 0; i < 2; ++i) {
+        const char* axis = i == 0 ? "u" : "v";
+        if (!std::isfinite(map.uv.scale[i]) || map.uv.scale[i] == 0.0)
+            return fail(
+                key + ".uv.scale." + axis + ": " + number(map.uv.scale[i]) + " must be finite and non-zero",
+                problem);
+        if (!std::isfinite(map.uv.offset[i]))
+            return fail(key + ".uv.offset." + axis + ": must be finite", problem);
+    }
+    if (!std::isfinite(map.uv.rotationDegrees))
+        return fail(key + ".uv.rotationDegrees: must be finite", problem);
+    return true;
+}
+} // namespace
+
+const char* toString(MapSlot slot)
+{
+    return nameOf(kSlots, slot);
+}
+std::optional<MapSlot> mapSlotFromString(std::string_view name)
+{
+    return lookup(kSlots, name);
+}
+const char* toString(MapChannel channel)
+{
+    return nameOf(kChannels, channel);
+}
+std::optional<MapChannel> mapChannelFromString(std::string_view name)
+{
+    return lookup(kChannels, name);
+}
+const char* toString(ColorEncoding encoding)
+{
+    return nameOf(kEncodings, encoding);
+}
+std::optional<ColorEncoding> colorEncodingFromString(std::string_view name)
+{
+    return lookup(kEncodings, name);
+}
+
+glm::dmat3 UvTransform::matrix() const
+{
+    // KHR_texture_transform's GLSL, verbatim in meaning: matrix = translation * rotation * scale,
+    // glm and GLSL both take the columns in order.
+    const double r = rotationDegrees * std::numbers::pi / 180.0;
+    const double c = std::cos(r);
+    const double s = std::sin(r);
+    const glm::dmat3 translation(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, offset.x, offset.y, 1.0);
+    const glm::dmat3 rotation(c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0);
+    const glm::dmat3 scaling(scale.x, 0.0, 0.0, 0.0, scale.y, 0.0, 0.0, 0.0, 1.0);
+    return translation * rotation * scaling;
+}
+
+glm::dvec2 UvTransform::apply(const glm::dvec2& uv) const
+{
+    const glm::dvec3 p = matrix() * glm::dvec3(uv, 1.0);
+    return {p.x, p.y};
+}
+
+std::array<MaterialMap, kMapSlotCount> Material::defaultMaps()
+{
+    std::array<MaterialMap, kMapSlotCount> maps;
+    MaterialMap& baseColor = maps[std::size_t(MapSlot::BaseColor)];
+    baseColor.factor = glm::dvec4(0.8, 0.8, 0.8, 1.0);
+    baseColor.colorSpace = ColorEncoding::SRGB; // colour textures are sRGB-encoded (DESIGN.md "Textures")
+    // Scalar maps default to the channels of an ORM / glTF metallicRoughness texture; a greyscale
+    // texture has the same value in every channel, so the defaults suit it too.
+    maps[std::size_t(MapSlot::Metallic)].factor = glm::dvec4(0.0);
+    maps[std::size_t(MapSlot::Metallic)].channel = MapChannel::B;
+    maps[std::size_t(MapSlot::Roughness)].factor = glm::dvec4(0.5);
+    maps[std::size_t(MapSlot::Roughness)].channel = MapChannel::G;
+    maps[std::size_t(MapSlot::Occlusion)].factor = glm::dvec4(1.0);
+    maps[std::size_t(MapSlot::Occlusion)].channel = MapChannel::R;
+    maps[std::size_t(MapSlot::Normal)].factor = glm::dvec4(1.0);
+    return maps;
+}
+
+double Material::dielectricF0() const
+{
+    return f0FromIor(ior);
+}
+
+bool Material::validate(std::string* problem) const
+{
+    // IOR: 1 is vacuum; 5 is above every transparent dielectric an artist might want (diamond
+    // 2.42, rutile 2.9, germanium ~4 in the infrared).
+    if (!checkRange(ior, 1.0, 5.0, "ior", problem))
+        return false;
+    for (MapSlot slot : kAllMapSlots)
+        if (!validateMap(slot, map(slot), problem))
+            return false;
+    return true;
+}
+
+double f0FromIor(double ior)
+{
+    const double r = (ior - 1.0) / (ior + 1.0);
+    return r * r;
+}
+
+double iorFromF0(double f0)
+{
+    const double s = std::sqrt(std::clamp(f0, 0.0, 0.999999));
+    return (1.0 + s) / (1.0 - s);
+}
+
+} // namespace facet

@@ -1,0 +1,1006 @@
+#include "core/Project.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonParseError>
+#include <QJsonValue>
+#include <QSaveFile>
+#include <QSet>
+#include <QStorageInfo>
+
+namespace facet {
+
+namespace {
+
+// ---- Names ------------------------------------------------------------------------------
+
+template <typename Enum, std::size_t N>
+std::optional<Enum> lookup(const std::pair<Enum, const char*> (&table)[N], std::string_view name)
+{
+    for (const auto& [value, text] : table)
+        if (name == text)
+            return value;
+    return std::nullopt;
+}
+template <typename Enum, std::size_t N>
+const char* nameOf(const std::pair<Enum, const char*> (&table)[N], Enum value)
+{
+    for (const auto& [v, text] : table)
+        if (v == value)
+            return text;
+    return "";
+}
+
+constexpr std::pair<ToneMapper, const char*> kToneMappers[] = {{ToneMapper::None, "none"},
+    {ToneMapper::Reinhard, "reinhard"}, {ToneMapper::Exposure, "exposure"}, {ToneMapper::Aces, "aces"},
+    {ToneMapper::KhronosNeutral, "khronos-neutral"}, {ToneMapper::AgX, "agx"}};
+constexpr std::pair<DisplayEncoding, const char*> kDisplayEncodings[]
+    = {{DisplayEncoding::SRGB, "srgb"}, {DisplayEncoding::Gamma, "gamma"}};
+constexpr std::pair<BackgroundMode, const char*> kBackgroundModes[]
+    = {{BackgroundMode::Environment, "environment"}, {BackgroundMode::Blurred, "blurred"},
+        {BackgroundMode::Color, "color"}};
+constexpr std::pair<IblQuality, const char*> kIblQualities[]
+    = {{IblQuality::Draft, "draft"}, {IblQuality::Default, "default"}, {IblQuality::High, "high"}};
+
+// ---- Small helpers ----------------------------------------------------------------------
+
+QString qs(const std::string& s)
+{
+    return QString::fromStdString(s);
+}
+std::string ss(const QString& s)
+{
+    return s.toStdString();
+}
+
+std::string number(double value)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", value);
+    return buffer;
+}
+
+bool fail(const std::string& message, std::string* problem)
+{
+    if (problem)
+        *problem = message;
+    return false;
+}
+std::nullopt_t failed(const std::string& message, std::string* problem)
+{
+    fail(message, problem);
+    return std::nullopt;
+}
+
+bool finite(const glm::dvec3& v)
+{
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+const char* typeName(const QJsonValue& value)
+{
+    switch (value.type()) {
+    case QJsonValue::Null:
+        return "null";
+    case QJsonValue::Bool:
+        return "a boolean";
+    case QJsonValue::Double:
+        return "a number";
+    case QJsonValue::String:
+        return "a string";
+    case QJsonValue::Array:
+        return "an array";
+    case QJsonValue::Object:
+        return "an object";
+    case QJsonValue::Undefined:
+        break;
+    }
+    return "nothing";
+}
+
+QJsonArray toArray(const double* values, int count)
+{
+    QJsonArray array;
+    for (int i = 0; i < count; ++i)
+        array.append(values[i]);
+    return array;
+}
+QJsonArray toArray(const glm::dvec2& v)
+{
+    return toArray(&v.x, 2);
+}
+QJsonArray toArray(const glm::dvec3& v)
+{
+    return toArray(&v.x, 3);
+}
+QJsonArray toArray(const glm::dvec4& v)
+{
+    return toArray(&v.x, 4);
+}
+
+// ---- Reading with JSON paths ------------------------------------------------------------
+
+// What a read collects: the first error (later ones are consequences) and ignored-key warnings.
+struct Messages {
+    std::string error;
+    std::vector<std::string> warnings;
+    bool failed() const { return !error.empty(); }
+    void fail(const std::string& path, const std::string& problem)
+    {
+        if (error.empty())
+            error = path + ": " + problem;
+    }
+};
+
+// Reads the fields of one JSON object. Missing keys leave the output (its default) alone; a key
+// of the wrong type or an unknown name records an error naming the key's JSON path. Reading
+// continues after an error, but only the first one is reported.
+class ObjectReader {
+public:
+    ObjectReader(Messages& messages, QJsonObject object, std::string path)
+        : m_messages(messages)
+        , m_object(std::move(object))
+        , m_path(std::move(path))
+    {
+    }
+
+    std::string pathOf(const char* key) const
+    {
+        return m_path.empty() ? std::string(key) : m_path + "." + key;
+    }
+
+    // The value under `key` (Undefined when missing), marking the key as known.
+    QJsonValue value(const char* key)
+    {
+        const QString name = QString::fromLatin1(key);
+        m_known.insert(name);
+        return m_object.value(name);
+    }
+
+    void number(const char* key, double& out)
+    {
+        const QJsonValue v = value(key);
+        if (v.isUndefined())
+            return;
+        if (!v.isDouble())
+            return wrongType(key, "a number", v);
+        out = v.toDouble();
+    }
+    void integer(const char* key, int& out)
+    {
+        const QJsonValue v = value(key);
+        if (v.isUndefined())
+            return;
+        if (!v.isDouble())
+            return wrongType(key, "an integer", v);
+        const double d = v.toDouble();
+        if (!(std::floor(d) == d && d >= -2147483648.0 && d <= 2147483647.0))
+            return m_messages.fail(pathOf(key), "expected an integer, got " + facet::number(d));
+        out = int(d);
+    }
+    void boolean(const char* key, bool& out)
+    {
+        const QJsonValue v = value(key);
+        if (v.isUndefined())
+            return;
+        if (!v.isBool())
+            return wrongType(key, "true or false", v);
+        out = v.toBool();
+    }
+    void string(const char* key, std::string& out)
+    {
+        const QJsonValue v = value(key);
+        if (v.isUndefined())
+            return;
+        if (!v.isString())
+            return wrongType(key, "a string", v);
+        out = ss(v.toString());
+    }
+    // An array of `minCount` to `maxCount` numbers into out[0..]; returns how many were read (0
+    // when missing or wrong).
+    int numbers(const char* key, double* out, int minCount, int maxCount)
+    {
+        const QJsonValue v = value(key);
+        if (v.isUndefined())
+            return 0;
+        const std::string expected = minCount == maxCount
+            ? "an array of " + std::to_string(minCount) + " numbers"
+            : "an array of " + std::to_string(minCount) + " to " + std::to_string(maxCount) + " numbers";
+        if (!v.isArray()) {
+            wrongType(key, expected, v);
+            return 0;
+        }
+        const QJsonArray array = v.toArray();
+        if (array.size() < minCount || array.size() > maxCount) {
+            m_messages.fail(pathOf(key), "expected " + expected + ", got " + std::to_string(array.size()));
+            return 0;
+        }
+        for (int i = 0; i < int(array.size()); ++i) {
+            if (!array[i].isDouble()) {
+                m_messages.fail(pathOf(key) + "[" + std::to_string(i) + "]",
+                    std::string("expected a number, got ") + typeName(array[i]));
+                return 0;
+            }
+        }
+        for (int i = 0; i < int(array.size()); ++i)
+            out[i] = array[i].toDouble();
+        return int(array.size());
+    }
+    void vec2(const char* key, glm::dvec2& out) { numbers(key, &out.x, 2, 2); }
+    void vec3(const char* key, glm::dvec3& out) { numbers(key, &out.x, 3, 3); }
+
+    // `table`: pairs of (value, name), e.g. kToneMappers.
+    template <typename Enum, typename Table> void enumeration(const char* key, Enum& out, const Table& table)
+    {
+        const QJsonValue v = value(key);
+        if (v.isUndefined())
+            return;
+        if (!v.isString())
+            return wrongType(key, "a string", v);
+        const std::string name = ss(v.toString());
+        std::string expected;
+        for (const auto& [candidate, text] : table) {
+            if (name == text) {
+                out = candidate;
+                return;
+            }
+            expected += std::string(expected.empty() ? "" : ", ") + "\"" + text + "\"";
+        }
+        m_messages.fail(pathOf(key), "unknown name \"" + name + "\" (expected one of " + expected + ")");
+    }
+
+    // A nested object; nullopt when missing or of the wrong type (then an error is recorded).
+    std::optional<QJsonObject> object(const char* key)
+    {
+        const QJsonValue v = value(key);
+        if (v.isUndefined())
+            return std::nullopt;
+        if (!v.isObject()) {
+            wrongType(key, "an object", v);
+            return std::nullopt;
+        }
+        return v.toObject();
+    }
+    std::optional<QJsonArray> array(const char* key)
+    {
+        const QJsonValue v = value(key);
+        if (v.isUndefined())
+            return std::nullopt;
+        if (!v.isArray()) {
+            wrongType(key, "an array", v);
+            return std::nullopt;
+        }
+        return v.toArray();
+    }
+
+    // Keys nobody asked for: a newer Facet's optional fields, or typos. Warned about, not errors.
+    void warnAboutUnknownKeys()
+    {
+        for (auto it = m_object.begin(); it != m_object.end(); ++it)
+            if (!m_known.contains(it.key()))
+                m_messages.warnings.push_back(
+                    pathOf(it.key().toUtf8().constData()) + ": unknown key, ignored");
+    }
+
+private:
+    void wrongType(const char* key, const std::string& expected, const QJsonValue& got)
+    {
+        m_messages.fail(pathOf(key), "expected " + expected + ", got " + typeName(got));
+    }
+
+    Messages& m_messages;
+    QJsonObject m_object;
+    std::string m_path;
+    QSet<QString> m_known;
+};
+
+// ---- Value types <-> JSON ---------------------------------------------------------------
+
+constexpr std::pair<MapChannel, const char*> kChannelNames[] = {{MapChannel::Rgb, "rgb"},
+    {MapChannel::R, "r"}, {MapChannel::G, "g"}, {MapChannel::B, "b"}, {MapChannel::A, "a"}};
+constexpr std::pair<ColorEncoding, const char*> kEncodingNames[]
+    = {{ColorEncoding::SRGB, "srgb"}, {ColorEncoding::Linear, "linear"}};
+constexpr std::pair<LightType, const char*> kLightTypeNames[]
+    = {{LightType::Directional, "directional"}, {LightType::Point, "point"}, {LightType::Spot, "spot"}};
+// The ShadingModel names come from ShadingModel.cpp (toString); the tables here are built from
+// them so the two cannot disagree.
+template <typename Enum, std::size_t N>
+std::array<std::pair<Enum, const char*>, N> namesOf(const Enum (&values)[N])
+{
+    std::array<std::pair<Enum, const char*>, N> table;
+    for (std::size_t i = 0; i < N; ++i)
+        table[i] = {values[i], toString(values[i])};
+    return table;
+}
+
+template <typename Enum, std::size_t N>
+void readEnum(ObjectReader& reader, const char* key, Enum& out, const Enum (&values)[N])
+{
+    reader.enumeration(key, out, namesOf(values));
+}
+
+constexpr BrdfComposition kAllCompositions[] = {BrdfComposition::Gltf, BrdfComposition::LearnOpenGL};
+constexpr Distribution kAllDistributions[] = {Distribution::GGX, Distribution::Beckmann};
+constexpr Visibility kAllVisibilities[]
+    = {Visibility::SmithGGXCorrelated, Visibility::SmithGGXUncorrelated, Visibility::SchlickGGX};
+constexpr Fresnel kAllFresnels[] = {Fresnel::Schlick, Fresnel::Dielectric};
+constexpr DielectricCoupling kAllCouplings[]
+    = {DielectricCoupling::FresnelMix, DielectricCoupling::EnergyPreserving};
+
+QJsonObject shadingToJson(const ShadingModel& model)
+{
+    QJsonObject o;
+    o[QLatin1String("composition")] = QLatin1String(toString(model.composition));
+    o[QLatin1String("distribution")] = QLatin1String(toString(model.distribution));
+    o[QLatin1String("visibility")] = QLatin1String(toString(model.visibility));
+    o[QLatin1String("fresnel")] = QLatin1String(toString(model.fresnel));
+    o[QLatin1String("coupling")] = QLatin1String(toString(model.coupling));
+    o[QLatin1String("multiScatter")] = model.multiScatter;
+    return o;
+}
+
+void readShading(Messages& messages, const QJsonObject& object, const std::string& path, ShadingModel& model)
+{
+    ObjectReader r(messages, object, path);
+    readEnum(r, "composition", model.composition, kAllCompositions);
+    readEnum(r, "distribution", model.distribution, kAllDistributions);
+    readEnum(r, "visibility", model.visibility, kAllVisibilities);
+    readEnum(r, "fresnel", model.fresnel, kAllFresnels);
+    readEnum(r, "coupling", model.coupling, kAllCouplings);
+    r.boolean("multiScatter", model.multiScatter);
+    r.warnAboutUnknownKeys();
+}
+
+QJsonObject uvToJson(const UvTransform& uv)
+{
+    QJsonObject o;
+    o[QLatin1String("scale")] = toArray(uv.scale);
+    o[QLatin1String("offset")] = toArray(uv.offset);
+    o[QLatin1String("rotationDegrees")] = uv.rotationDegrees;
+    return o;
+}
+
+QJsonObject mapToJson(
+    MapSlot slot, const MaterialMap& map, const std::string& baseDir, bool includeTexturePaths)
+{
+    QJsonObject o;
+    if (includeTexturePaths && !map.path.empty())
+        o[QLatin1String("texture")] = qs(json::storedPath(map.path, baseDir));
+    if (slot == MapSlot::BaseColor)
+        o[QLatin1String("factor")] = toArray(map.factor);
+    else
+        o[QLatin1String("factor")] = map.factor.x;
+    o[QLatin1String("channel")] = QLatin1String(toString(map.channel));
+    o[QLatin1String("colorSpace")] = QLatin1String(toString(map.colorSpace));
+    if (isScalarSlot(slot))
+        o[QLatin1String("invert")] = map.invert;
+    if (slot == MapSlot::Normal)
+        o[QLatin1String("flipGreen")] = map.flipGreen;
+    o[QLatin1String("uv")] = uvToJson(map.uv);
+    return o;
+}
+
+void readMap(Messages& messages, MapSlot slot, const QJsonObject& object, const std::string& path,
+    const std::string& baseDir, MaterialMap& map)
+{
+    ObjectReader r(messages, object, path);
+    std::string texture;
+    r.string("texture", texture);
+    map.path = json::resolvedPath(texture, baseDir);
+    if (slot == MapSlot::BaseColor) {
+        // [r, g, b] or [r, g, b, a]; alpha defaults to 1.
+        double factor[4] = {map.factor.x, map.factor.y, map.factor.z, 1.0};
+        if (r.numbers("factor", factor, 3, 4) > 0)
+            map.factor = glm::dvec4(factor[0], factor[1], factor[2], factor[3]);
+    } else {
+        double factor = map.factor.x;
+        r.number("factor", factor);
+        map.factor = glm::dvec4(factor);
+    }
+    r.enumeration("channel", map.channel, kChannelNames);
+    r.enumeration("colorSpace", map.colorSpace, kEncodingNames);
+    if (isScalarSlot(slot))
+        r.boolean("invert", map.invert);
+    if (slot == MapSlot::Normal)
+        r.boolean("flipGreen", map.flipGreen);
+    if (const std::optional<QJsonObject> uv = r.object("uv")) {
+        ObjectReader u(messages, *uv, r.pathOf("uv"));
+        u.vec2("scale", map.uv.scale);
+        u.vec2("offset", map.uv.offset);
+        u.number("rotationDegrees", map.uv.rotationDegrees);
+        u.warnAboutUnknownKeys();
+    }
+    r.warnAboutUnknownKeys();
+}
+
+void readMaterial(Messages& messages, const QJsonObject& object, const std::string& path,
+    const std::string& baseDir, Material& material)
+{
+    ObjectReader r(messages, object, path);
+    r.string("name", material.name);
+    r.number("ior", material.ior);
+    if (const std::optional<QJsonObject> shading = r.object("shading"))
+        readShading(messages, *shading, r.pathOf("shading"), material.shading);
+    for (MapSlot slot : kAllMapSlots)
+        if (const std::optional<QJsonObject> map = r.object(toString(slot)))
+            readMap(messages, slot, *map, r.pathOf(toString(slot)), baseDir, material.map(slot));
+    r.warnAboutUnknownKeys();
+}
+
+QJsonObject lightToJson(const Light& light)
+{
+    QJsonObject o;
+    o[QLatin1String("name")] = qs(light.name);
+    o[QLatin1String("type")] = QLatin1String(toString(light.type));
+    o[QLatin1String("enabled")] = light.enabled;
+    o[QLatin1String("color")] = toArray(light.color);
+    o[QLatin1String("useTemperature")] = light.useTemperature;
+    o[QLatin1String("kelvin")] = light.kelvin;
+    o[QLatin1String("intensity")] = light.intensity;
+    o[QLatin1String("range")] = light.range;
+    o[QLatin1String("innerConeAngle")] = light.innerConeAngle;
+    o[QLatin1String("outerConeAngle")] = light.outerConeAngle;
+    o[QLatin1String("position")] = toArray(light.position);
+    o[QLatin1String("direction")] = toArray(light.direction);
+    return o;
+}
+
+void readLight(Messages& messages, const QJsonObject& object, const std::string& path, Light& light)
+{
+    ObjectReader r(messages, object, path);
+    r.string("name", light.name);
+    r.enumeration("type", light.type, kLightTypeNames);
+    r.boolean("enabled", light.enabled);
+    r.vec3("color", light.color);
+    r.boolean("useTemperature", light.useTemperature);
+    r.number("kelvin", light.kelvin);
+    r.number("intensity", light.intensity);
+    r.number("range", light.range);
+    r.number("innerConeAngle", light.innerConeAngle);
+    r.number("outerConeAngle", light.outerConeAngle);
+    r.vec3("position", light.position);
+    r.vec3("direction", light.direction);
+    r.warnAboutUnknownKeys();
+}
+
+QJsonObject cameraToJson(const Camera& camera)
+{
+    QJsonObject o;
+    o[QLatin1String("position")] = toArray(camera.position);
+    o[QLatin1String("target")] = toArray(camera.target);
+    o[QLatin1String("up")] = toArray(camera.up);
+    o[QLatin1String("verticalFovDegrees")] = camera.verticalFovDegrees;
+    o[QLatin1String("nearPlane")] = camera.nearPlane;
+    o[QLatin1String("farPlane")] = camera.farPlane;
+    return o;
+}
+
+void readCamera(Messages& messages, const QJsonObject& object, const std::string& path, Camera& camera)
+{
+    ObjectReader r(messages, object, path);
+    r.vec3("position", camera.position);
+    r.vec3("target", camera.target);
+    r.vec3("up", camera.up);
+    r.number("verticalFovDegrees", camera.verticalFovDegrees);
+    r.number("nearPlane", camera.nearPlane);
+    r.number("farPlane", camera.farPlane);
+    r.warnAboutUnknownKeys();
+}
+
+QJsonObject environmentToJson(const EnvironmentSettings& environment, const std::string& baseDir)
+{
+    QJsonObject o;
+    o[QLatin1String("source")] = qs(json::storedSpec(environment.source, baseDir));
+    o[QLatin1String("rotationDegrees")] = environment.rotationDegrees;
+    o[QLatin1String("intensity")] = environment.intensity;
+    o[QLatin1String("quality")] = QLatin1String(toString(environment.quality));
+    return o;
+}
+
+void readEnvironment(Messages& messages, const QJsonObject& object, const std::string& path,
+    const std::string& baseDir, EnvironmentSettings& environment)
+{
+    ObjectReader r(messages, object, path);
+    std::string source = environment.source;
+    r.string("source", source);
+    environment.source = json::resolvedSpec(source, baseDir);
+    r.number("rotationDegrees", environment.rotationDegrees);
+    r.number("intensity", environment.intensity);
+    r.enumeration("quality", environment.quality, kIblQualities);
+    r.warnAboutUnknownKeys();
+}
+
+QJsonObject viewToJson(const ViewSettings& view, const std::string& baseDir)
+{
+    QJsonObject o;
+    o[QLatin1String("exposureEV")] = view.exposureEV;
+    o[QLatin1String("toneMapper")] = QLatin1String(toString(view.toneMapper));
+    o[QLatin1String("displayEncoding")] = QLatin1String(toString(view.displayEncoding));
+    o[QLatin1String("gamma")] = view.gamma;
+    o[QLatin1String("ocioDisplay")] = qs(view.ocioDisplay);
+    o[QLatin1String("ocioView")] = qs(view.ocioView);
+    o[QLatin1String("debugView")] = qs(view.debugView);
+    o[QLatin1String("mesh")] = qs(json::storedSpec(view.mesh, baseDir));
+    o[QLatin1String("msaaSamples")] = view.msaaSamples;
+    o[QLatin1String("background")] = QLatin1String(toString(view.background));
+    o[QLatin1String("backgroundColor")] = toArray(view.backgroundColor);
+    o[QLatin1String("backgroundBlurRoughness")] = view.backgroundBlurRoughness;
+    return o;
+}
+
+void readView(Messages& messages, const QJsonObject& object, const std::string& path,
+    const std::string& baseDir, ViewSettings& view)
+{
+    ObjectReader r(messages, object, path);
+    r.number("exposureEV", view.exposureEV);
+    r.enumeration("toneMapper", view.toneMapper, kToneMappers);
+    r.enumeration("displayEncoding", view.displayEncoding, kDisplayEncodings);
+    r.number("gamma", view.gamma);
+    r.string("ocioDisplay", view.ocioDisplay);
+    r.string("ocioView", view.ocioView);
+    r.string("debugView", view.debugView);
+    std::string mesh = view.mesh;
+    r.string("mesh", mesh);
+    view.mesh = json::resolvedSpec(mesh, baseDir);
+    r.integer("msaaSamples", view.msaaSamples);
+    r.enumeration("background", view.background, kBackgroundModes);
+    r.vec3("backgroundColor", view.backgroundColor);
+    r.number("backgroundBlurRoughness", view.backgroundBlurRoughness);
+    r.warnAboutUnknownKeys();
+}
+
+std::string joinLines(const std::vector<std::string>& lines, const std::string& prefix)
+{
+    std::string text;
+    for (const std::string& line : lines)
+        text += (text.empty() ? "" : "\n") + prefix + line;
+    return text;
+}
+
+void appendWarnings(std::string* warning, const std::vector<std::string>& lines, const std::string& prefix)
+{
+    if (!warning || lines.empty())
+        return;
+    if (!warning->empty())
+        *warning += "\n";
+    *warning += joinLines(lines, prefix);
+}
+
+// Reads a whole project object; messages start at the JSON path.
+std::optional<Project> readProject(const QJsonObject& object, const std::string& baseDir,
+    std::string* problem, std::vector<std::string>& warnings)
+{
+    Messages messages;
+    ObjectReader r(messages, object, {});
+
+    // Format and version first: a newer file's fields may mean something else, so the version
+    // message must win over any field error.
+    if (!json::checkFormat(object, Project::kFormatName, Project::kFormatVersion, "a Facet project", problem))
+        return std::nullopt;
+    r.value("format");
+    r.value("version");
+    r.value("generator"); // informative only
+
+    Project project;
+    if (const std::optional<QJsonObject> material = r.object("material"))
+        readMaterial(messages, *material, "material", baseDir, project.material);
+    if (const std::optional<QJsonObject> environment = r.object("environment"))
+        readEnvironment(messages, *environment, "environment", baseDir, project.environment);
+    if (const std::optional<QJsonArray> lights = r.array("lights")) {
+        for (int i = 0; i < int(lights->size()); ++i) {
+            const std::string path = "lights[" + std::to_string(i) + "]";
+            const QJsonValue value = lights->at(i);
+            if (!value.isObject()) {
+                messages.fail(path, std::string("expected an object, got ") + typeName(value));
+                break;
+            }
+            Light light;
+            readLight(messages, value.toObject(), path, light);
+            project.lights.push_back(std::move(light));
+        }
+    }
+    if (const std::optional<QJsonObject> camera = r.object("camera"))
+        readCamera(messages, *camera, "camera", project.camera);
+    if (const std::optional<QJsonObject> view = r.object("view"))
+        readView(messages, *view, "view", baseDir, project.view);
+    r.warnAboutUnknownKeys();
+
+    if (messages.failed())
+        return failed(messages.error, problem);
+    std::string invalid;
+    if (!project.validate(&invalid))
+        return failed(invalid, problem);
+    warnings = std::move(messages.warnings);
+    return project;
+}
+
+// The mount point holding `path`, or its nearest existing ancestor (a texture may not exist yet).
+QString volumeRoot(const QString& path)
+{
+    QFileInfo info(path);
+    QString existing = info.absoluteFilePath();
+    for (int guard = 0; guard < 256 && !existing.isEmpty() && !QFileInfo::exists(existing); ++guard) {
+        const QString parent = QFileInfo(existing).absolutePath();
+        if (parent == existing)
+            break;
+        existing = parent;
+    }
+    const QStorageInfo storage(existing);
+    return storage.isValid() ? storage.rootPath() : QString();
+}
+
+} // namespace
+
+// ---- Names ------------------------------------------------------------------------------
+
+const char* toString(ToneMapper value)
+{
+    return nameOf(kToneMappers, value);
+}
+std::optional<ToneMapper> toneMapperFromString(std::string_view name)
+{
+    return lookup(kToneMappers, name);
+}
+const char* toString(DisplayEncoding value)
+{
+    return nameOf(kDisplayEncodings, value);
+}
+std::optional<DisplayEncoding> displayEncodingFromString(std::string_view name)
+{
+    return lookup(kDisplayEncodings, name);
+}
+const char* toString(BackgroundMode value)
+{
+    return nameOf(kBackgroundModes, value);
+}
+std::optional<BackgroundMode> backgroundModeFromString(std::string_view name)
+{
+    return lookup(kBackgroundModes, name);
+}
+const char* toString(IblQuality value)
+{
+    return nameOf(kIblQualities, value);
+}
+std::optional<IblQuality> iblQualityFromString(std::string_view name)
+{
+    return lookup(kIblQualities, name);
+}
+
+// ---- Validation -------------------------------------------------------------------------
+
+bool ViewSettings::validate(std::string* problem) const
+{
+    // 2^20 either way covers a candle-lit room to the midday sun with room to spare.
+    if (!std::isfinite(exposureEV) || exposureEV < -20.0 || exposureEV > 20.0)
+        return fail("exposureEV: " + number(exposureEV) + " is outside [-20, 20]", problem);
+    if (!std::isfinite(gamma) || gamma < 1.0 || gamma > 3.0)
+        return fail("gamma: " + number(gamma) + " is outside [1, 3]", problem);
+    if (debugView.empty())
+        return fail("debugView: must not be empty (\"none\" shows the shaded image)", problem);
+    if (mesh.empty())
+        return fail("mesh: must not be empty (\"sphere\" is the built-in sphere)", problem);
+    if (msaaSamples != 1 && msaaSamples != 2 && msaaSamples != 4 && msaaSamples != 8 && msaaSamples != 16)
+        return fail("msaaSamples: " + std::to_string(msaaSamples) + " is not one of 1, 2, 4, 8, 16", problem);
+    if (!finite(backgroundColor) || backgroundColor.x < 0.0 || backgroundColor.y < 0.0
+        || backgroundColor.z < 0.0)
+        return fail("backgroundColor: must be finite and >= 0 (linear)", problem);
+    if (!std::isfinite(backgroundBlurRoughness) || backgroundBlurRoughness < 0.0
+        || backgroundBlurRoughness > 1.0)
+        return fail(
+            "backgroundBlurRoughness: " + number(backgroundBlurRoughness) + " is outside [0, 1]", problem);
+    return true;
+}
+
+bool EnvironmentSettings::validate(std::string* problem) const
+{
+    if (source.empty())
+        return fail("source: must not be empty (a path, \"studio\", \"sky\" or \"uniform:VALUE\")", problem);
+    if (!std::isfinite(rotationDegrees))
+        return fail("rotationDegrees: must be finite", problem);
+    if (!std::isfinite(intensity) || intensity < 0.0)
+        return fail("intensity: " + number(intensity) + " must be a finite number >= 0", problem);
+    return true;
+}
+
+bool Project::validate(std::string* problem) const
+{
+    std::string local;
+    if (!material.validate(&local))
+        return fail("material." + local, problem);
+    if (!environment.validate(&local))
+        return fail("environment." + local, problem);
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        if (!lights[i].validate(&local))
+            return fail("lights[" + std::to_string(i) + "]." + local, problem);
+    if (!camera.validate(&local))
+        return fail("camera." + local, problem);
+    if (!view.validate(&local))
+        return fail("view." + local, problem);
+    return true;
+}
+
+// ---- Project ----------------------------------------------------------------------------
+
+Project Project::defaultProject()
+{
+    Project project;
+    project.material.name = "Glossy plastic";
+    project.material.setBaseColor(
+        glm::dvec3(0.8, 0.3, 0.2)); // a red-orange that shows diffuse and specular apart
+    project.material.setFactor(MapSlot::Roughness, 0.35);
+    project.material.setFactor(MapSlot::Metallic, 0.0);
+    project.environment = EnvironmentSettings {};
+    project.camera = Camera::referenceView();
+    project.view = ViewSettings {};
+    return project;
+}
+
+QJsonObject Project::toJson(const std::string& baseDir) const
+{
+    QJsonObject o;
+    o[QLatin1String("format")] = QLatin1String(kFormatName);
+    o[QLatin1String("version")] = kFormatVersion;
+#ifdef FACET_VERSION
+    o[QLatin1String("generator")] = QStringLiteral("Facet " FACET_VERSION);
+#endif
+    o[QLatin1String("material")] = materialToJson(material, baseDir, true);
+    o[QLatin1String("environment")] = environmentToJson(environment, baseDir);
+    QJsonArray lightArray;
+    for (const Light& light : lights)
+        lightArray.append(lightToJson(light));
+    o[QLatin1String("lights")] = lightArray;
+    o[QLatin1String("camera")] = cameraToJson(camera);
+    o[QLatin1String("view")] = viewToJson(view, baseDir);
+    return o;
+}
+
+std::optional<Project> Project::fromJson(
+    const QJsonObject& object, const std::string& baseDir, std::string* error, std::string* warning)
+{
+    std::string problem;
+    std::vector<std::string> warnings;
+    std::optional<Project> project = readProject(object, baseDir, &problem, warnings);
+    if (!project)
+        return failed("Project::fromJson: " + problem, error);
+    appendWarnings(warning, warnings, "Project::fromJson: ");
+    return project;
+}
+
+bool Project::save(const std::string& path, std::string* error) const
+{
+    const std::string prefix = "Project::save: " + path + ": ";
+    std::string problem;
+    if (!validate(&problem))
+        return fail(prefix + "not saved, the project is invalid: " + problem, error);
+    const std::string baseDir = ss(QFileInfo(qs(path)).absolutePath());
+    if (!json::writeObjectFile(path, toJson(baseDir), &problem))
+        return fail(prefix + problem, error);
+    return true;
+}
+
+std::optional<Project> Project::load(const std::string& path, std::string* error, std::string* warning)
+{
+    const std::string prefix = "Project::load: " + path + ": ";
+    std::string problem;
+    const std::optional<QJsonObject> object = json::readObjectFile(path, kMaxFileBytes, &problem);
+    if (!object)
+        return failed(prefix + problem, error);
+    std::vector<std::string> warnings;
+    std::optional<Project> project
+        = readProject(*object, ss(QFileInfo(qs(path)).absolutePath()), &problem, warnings);
+    if (!project)
+        return failed(prefix + problem, error);
+    appendWarnings(warning, warnings, prefix);
+    return project;
+}
+
+// ---- Material JSON ----------------------------------------------------------------------
+
+QJsonObject materialToJson(const Material& material, const std::string& baseDir, bool includeTexturePaths)
+{
+    QJsonObject o;
+    o[QLatin1String("name")] = qs(material.name);
+    o[QLatin1String("ior")] = material.ior;
+    o[QLatin1String("shading")] = shadingToJson(material.shading);
+    for (MapSlot slot : kAllMapSlots)
+        o[QLatin1String(toString(slot))] = mapToJson(slot, material.map(slot), baseDir, includeTexturePaths);
+    return o;
+}
+
+std::optional<Material> materialFromJson(const QJsonObject& object, const std::string& baseDir,
+    const std::string& jsonPath, std::string* error, std::string* warning)
+{
+    Messages messages;
+    Material material;
+    readMaterial(messages, object, jsonPath, baseDir, material);
+    if (messages.failed())
+        return failed(messages.error, error);
+    std::string invalid;
+    if (!material.validate(&invalid))
+        return failed((jsonPath.empty() ? "" : jsonPath + ".") + invalid, error);
+    appendWarnings(warning, messages.warnings, {});
+    return material;
+}
+
+// ---- Files and paths --------------------------------------------------------------------
+
+namespace json {
+
+std::string storedPath(const std::string& path, const std::string& baseDir)
+{
+    if (path.empty() || baseDir.empty())
+        return path;
+    const QString file = QDir::cleanPath(QDir::fromNativeSeparators(qs(path)));
+    if (QDir::isRelativePath(file))
+        return ss(file);
+    const QString base = QDir::cleanPath(QDir(qs(baseDir)).absolutePath());
+    // A file on another volume stays absolute: moving the project folder does not move it, and
+    // on Windows no relative path crosses drives.
+    const QString fileRoot = volumeRoot(file);
+    const QString baseRoot = volumeRoot(base);
+    if (!fileRoot.isEmpty() && !baseRoot.isEmpty() && fileRoot != baseRoot)
+        return ss(file);
+    const QString relative = QDir(base).relativeFilePath(file);
+    if (QDir::isAbsolutePath(relative))
+        return ss(file);
+    return ss(relative);
+}
+
+std::string resolvedPath(const std::string& path, const std::string& baseDir)
+{
+    if (path.empty())
+        return path;
+    const QString file = QDir::fromNativeSeparators(qs(path));
+    if (baseDir.empty() || QDir::isAbsolutePath(file))
+        return ss(QDir::cleanPath(file));
+    return ss(QDir::cleanPath(QDir(qs(baseDir)).absoluteFilePath(file)));
+}
+
+bool isBuiltinSpec(const std::string& spec)
+{
+    if (spec.rfind("uniform:", 0) == 0)
+        return true;
+    if (spec.empty() || !(spec[0] >= 'a' && spec[0] <= 'z'))
+        return false;
+    for (char c : spec)
+        if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-'))
+            return false;
+    return true;
+}
+
+std::string storedSpec(const std::string& spec, const std::string& baseDir)
+{
+    if (spec.empty() || isBuiltinSpec(spec))
+        return spec;
+    const std::string stored = storedPath(spec, baseDir);
+    return isBuiltinSpec(stored) ? "./" + stored : stored;
+}
+
+std::string resolvedSpec(const std::string& spec, const std::string& baseDir)
+{
+    return isBuiltinSpec(spec) ? spec : resolvedPath(spec, baseDir);
+}
+
+bool checkFormat(const QJsonObject& object, const char* formatName, int newestVersion, const char* what,
+    std::string* problem)
+{
+    const QJsonValue format = object.value(QLatin1String("format"));
+    if (format.isUndefined())
+        return fail(std::string("\"format\" is missing: not ") + what + " file", problem);
+    if (!format.isString())
+        return fail(std::string("format: expected a string, got ") + typeName(format), problem);
+    if (format.toString() != QLatin1String(formatName))
+        return fail(
+            "format: \"" + ss(format.toString()) + "\" is not \"" + formatName + "\": not " + what + " file",
+            problem);
+    const QJsonValue version = object.value(QLatin1String("version"));
+    if (version.isUndefined())
+        return fail("\"version\" is missing", problem);
+    const double versionNumber = version.toDouble();
+    if (!version.isDouble() || std::floor(versionNumber) != versionNumber)
+        return fail(std::string("version: expected an integer, got ")
+                + (version.isDouble() ? facet::number(versionNumber) : typeName(version)),
+            problem);
+    if (versionNumber > newestVersion)
+        return fail("written by a newer Facet (version " + facet::number(versionNumber)
+                + "); this Facet reads up to version " + std::to_string(newestVersion),
+            problem);
+    if (versionNumber < 1)
+        return fail(
+            "version: " + facet::number(versionNumber) + " is not a valid version (versions start at 1)",
+            problem);
+    return true;
+}
+
+std::optional<QJsonObject> readObjectFile(const std::string& path, qint64 maxBytes, std::string* problem)
+{
+    if (path.empty())
+        return failed("no file name given", problem);
+    const QString fileName = qs(path);
+    const QFileInfo info(fileName);
+    if (!info.exists())
+        return failed("no such file", problem);
+    if (info.isDir())
+        return failed("is a folder, not a file", problem);
+    QFile file(fileName);
+    if (!file.open(QIODevice::ReadOnly))
+        return failed("cannot read it: " + ss(file.errorString()), problem);
+    // Read one byte more than allowed to tell "at the limit" from "over it" without trusting
+    // size() (a pipe or /proc file reports 0).
+    const QByteArray data = file.read(maxBytes + 1);
+    if (file.error() != QFileDevice::NoError)
+        return failed("cannot read it: " + ss(file.errorString()), problem);
+    if (data.size() > maxBytes)
+        return failed("the file is larger than " + std::to_string(maxBytes / (1024 * 1024))
+                + " MiB, too large to be a " + "Facet file",
+            problem);
+    if (data.trimmed().isEmpty())
+        return failed("the file is empty", problem);
+
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(data, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        // QJsonParseError::offset counts bytes of the UTF-8 input; report a 1-based line and a
+        // column in characters (UTF-8 continuation bytes do not start a character).
+        const qsizetype offset = std::clamp<qsizetype>(parseError.offset, 0, data.size());
+        int line = 1;
+        int column = 1;
+        for (qsizetype i = 0; i < offset; ++i) {
+            const auto byte = static_cast<unsigned char>(data[i]);
+            if (byte == '\n') {
+                ++line;
+                column = 1;
+            } else if ((byte & 0xC0) != 0x80) {
+                ++column;
+            }
+        }
+        return failed("line " + std::to_string(line) + ", column " + std::to_string(column) + ": "
+                + ss(parseError.errorString()) + " (not valid JSON)",
+            problem);
+    }
+    if (!document.isObject())
+        return failed(std::string("expected a JSON object at the top level, got ")
+                + (document.isArray() ? "an array" : "something else"),
+            problem);
+    return document.object();
+}
+
+bool writeObjectFile(const std::string& path, const QJsonObject& object, std::string* problem)
+{
+    if (path.empty())
+        return fail("no file name given", problem);
+    const QString fileName = qs(path);
+    const QFileInfo info(fileName);
+    if (info.isDir())
+        return fail("is a folder, not a file", problem);
+    if (!info.absoluteDir().exists())
+        return fail("the folder " + ss(info.absolutePath()) + " does not exist", problem);
+    const QByteArray data = QJsonDocument(object).toJson(QJsonDocument::Indented);
+    // QSaveFile writes a temporary file next to the target and renames it over the target on
+    // commit(): a failure at any point leaves the old file as it was (DESIGN.md "Bad input").
+    // Direct-write fallback stays off, so an unwritable folder fails instead of writing in place.
+    QSaveFile file(fileName);
+    if (!file.open(QIODevice::WriteOnly))
+        return fail("cannot write it: " + ss(file.errorString()), problem);
+    if (file.write(data) != data.size()) {
+        const std::string reason = ss(file.errorString());
+        file.cancelWriting();
+        return fail("cannot write it: " + reason, problem);
+    }
+    if (!file.commit())
+        return fail("cannot write it: " + ss(file.errorString()), problem);
+    return true;
+}
+
+} // namespace json
+
+} // namespace facet

@@ -1,0 +1,159 @@
+#pragma once
+// The document: one material on one mesh, under an environment and punctual lights, seen by a
+// camera through a display transform; and its file format, "facet-project" version 1 (JSON,
+// docs/project-format.md). Plain values (Tiled's libtiled model); the undoable editing lives in ui/.
+//
+// Files: paths (textures, environment image, mesh) are absolute in memory and stored relative to
+// the project file's folder when on the same volume, so a project folder can be moved or shared.
+// Loading never crashes and never throws: every problem comes back as one message naming the
+// function, the file and the JSON path, e.g.
+//   "Project::load: /x/y.json: lights[1].intensity: expected a number, got a string".
+// Out-of-range values are errors, not clamped: a project that loads is exactly what was saved, and
+// a hand-edited typo is reported instead of silently becoming something else. Unknown keys are
+// ignored with a warning (a newer Facet of the same format version may add optional fields).
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <QJsonObject>
+
+#include <glm/vec3.hpp>
+
+#include "core/Camera.h"
+#include "core/Light.h"
+#include "core/Material.h"
+
+namespace facet {
+
+enum class ToneMapper { None, Reinhard, Exposure, Aces, KhronosNeutral, AgX };
+const char* toString(ToneMapper value); // "none", "reinhard", "exposure", "aces", "khronos-neutral", "agx"
+std::optional<ToneMapper> toneMapperFromString(std::string_view name);
+
+// How display-referred values are encoded for the screen (when no OCIO display is chosen).
+enum class DisplayEncoding { SRGB, Gamma };
+const char* toString(DisplayEncoding value); // "srgb" (the piecewise IEC 61966-2-1 curve), "gamma"
+std::optional<DisplayEncoding> displayEncodingFromString(std::string_view name);
+
+// What pixels that miss the mesh show.
+enum class BackgroundMode { Environment, Blurred, Color };
+const char* toString(BackgroundMode value); // "environment", "blurred", "color"
+std::optional<BackgroundMode> backgroundModeFromString(std::string_view name);
+
+// The IBL precompute quality preset (sizes and sample counts are render/'s, chosen on the
+// time/error curve of `facet bench`).
+enum class IblQuality { Draft, Default, High };
+const char* toString(IblQuality value); // "draft", "default", "high"
+std::optional<IblQuality> iblQualityFromString(std::string_view name);
+
+struct ViewSettings {
+    double exposureEV = 0.0; // scene radiance is multiplied by 2^exposureEV before tone mapping
+    ToneMapper toneMapper = ToneMapper::KhronosNeutral;
+    DisplayEncoding displayEncoding = DisplayEncoding::SRGB;
+    double gamma = 2.2; // the display gamma when displayEncoding is Gamma; [1, 3]
+    // An OCIO display/view pair (from $OCIO's config); both empty: Facet's own transform above.
+    std::string ocioDisplay;
+    std::string ocioView;
+    std::string debugView = "none"; // a render/ debug view name ("none": the shaded image)
+    // "sphere" (a built-in mesh name: lower-case letters, digits, '-') or a mesh file path.
+    std::string mesh = "sphere";
+    int msaaSamples = 4; // 1 (off), 2, 4, 8 or 16
+    BackgroundMode background = BackgroundMode::Environment;
+    glm::dvec3 backgroundColor {0.18}; // linear Rec.709, >= 0, for BackgroundMode::Color
+    double backgroundBlurRoughness = 0.5; // perceptual roughness of the blurred background, [0, 1]
+
+    // On failure: "<field>: <problem>" (the caller prefixes "view.").
+    bool validate(std::string* problem) const;
+    bool operator==(const ViewSettings&) const = default;
+};
+
+struct EnvironmentSettings {
+    // What Environment::fromSpec() accepts: an image path, a built-in name ("studio", "sky") or
+    // "uniform:VALUE" / "uniform:R,G,B". Only paths are relativised in files.
+    std::string source = "studio";
+    double rotationDegrees = 0.0; // about +Y (DESIGN.md)
+    double intensity = 1.0; // linear radiance multiplier, >= 0 (the UI shows log2 as EV)
+    IblQuality quality = IblQuality::Default;
+
+    // On failure: "<field>: <problem>" (the caller prefixes "environment.").
+    bool validate(std::string* problem) const;
+    bool operator==(const EnvironmentSettings&) const = default;
+};
+
+struct Project {
+    static constexpr const char* kFormatName = "facet-project";
+    // The version this Facet writes and the newest it reads. Bump it when a field changes meaning
+    // or a required field appears; adding an optional field with a default does not need a bump
+    // (older Facets ignore it with a warning). docs/project-format.md, "Versioning".
+    static constexpr int kFormatVersion = 1;
+    // Larger files are refused before parsing: a project is a few kilobytes.
+    static constexpr qint64 kMaxFileBytes = 16 * 1024 * 1024;
+
+    Material material;
+    EnvironmentSettings environment;
+    std::vector<Light> lights;
+    Camera camera; // the reference view by default
+    ViewSettings view;
+
+    // File > New: a glossy red-orange plastic on the sphere in the studio environment, reference
+    // camera, no punctual lights (the studio's soft boxes light it, and the no-light shader
+    // variant is the cheapest).
+    static Project defaultProject();
+
+    // On failure: "<json path>: <problem>", e.g. "lights[0].intensity: -1 must be ...".
+    bool validate(std::string* problem) const;
+
+    // JSON without a file. baseDir: the folder paths are made relative to (toJson) or resolved
+    // against (fromJson); empty leaves paths as they are. fromJson's messages start with
+    // "Project::fromJson: "; `warning` (optional) receives ignored-key notes, one per line.
+    QJsonObject toJson(const std::string& baseDir = {}) const;
+    static std::optional<Project> fromJson(const QJsonObject& object, const std::string& baseDir,
+        std::string* error, std::string* warning = nullptr);
+
+    // Writes through QSaveFile (a temporary file, then an atomic rename): on any failure the file
+    // at `path` is untouched. Refuses an invalid project (validate()).
+    bool save(const std::string& path, std::string* error) const;
+    static std::optional<Project> load(
+        const std::string& path, std::string* error, std::string* warning = nullptr);
+
+    bool operator==(const Project&) const = default;
+};
+
+// Material <-> the JSON object of project files and material presets (docs/project-format.md,
+// "material"). includeTexturePaths false leaves texture paths out (presets by default).
+QJsonObject materialToJson(
+    const Material& material, const std::string& baseDir, bool includeTexturePaths = true);
+// Reads and validates a material object. Messages start at the JSON path (`jsonPath`, e.g.
+// "material"): "material.roughness.factor: expected a number, got a string"; the caller adds its
+// "Function: file: " prefix. Warnings (ignored keys) are appended to *warning, one per line.
+std::optional<Material> materialFromJson(const QJsonObject& object, const std::string& baseDir,
+    const std::string& jsonPath, std::string* error, std::string* warning = nullptr);
+
+// Building blocks shared by project and preset files.
+namespace json {
+// A path as a file stores it: relative to baseDir (with '/' separators) when both are on the same
+// volume, else absolute. Empty stays empty; an empty baseDir changes nothing.
+std::string storedPath(const std::string& path, const std::string& baseDir);
+// The inverse: a relative path is resolved against baseDir and cleaned.
+std::string resolvedPath(const std::string& path, const std::string& baseDir);
+// A "spec" (environment source, mesh) is either a built-in name (lower-case letters, digits and
+// '-', or "uniform:...") that is kept as is, or a path. A relative path that would read as a
+// built-in name is written as "./name".
+std::string storedSpec(const std::string& spec, const std::string& baseDir);
+std::string resolvedSpec(const std::string& spec, const std::string& baseDir);
+bool isBuiltinSpec(const std::string& spec);
+// Checks the "format" and "version" keys of a file's top-level object: format must equal
+// `formatName` and version be an integer in [1, newestVersion]. `what` names the kind of file in
+// messages ("a Facet project"). A newer version gives "written by a newer Facet (version 3);
+// this Facet reads up to version 1".
+bool checkFormat(const QJsonObject& object, const char* formatName, int newestVersion, const char* what,
+    std::string* problem);
+// Reads a file holding one JSON object. On failure returns nullopt and sets *problem (no prefix)
+// to e.g. "no such file", "the file is empty", "line 3, column 7: unterminated string".
+std::optional<QJsonObject> readObjectFile(const std::string& path, qint64 maxBytes, std::string* problem);
+// Writes `object` (indented) through QSaveFile. On failure the old file is untouched.
+bool writeObjectFile(const std::string& path, const QJsonObject& object, std::string* problem);
+} // namespace json
+
+} // namespace facet

@@ -1,0 +1,689 @@
+// The project file: full round trip, relative paths, moving a project folder, every kind of
+// broken file giving a message that names the file and the field, atomic saves, and truncated or
+// corrupted files never crashing the loader.
+
+#include <cmath>
+#include <numbers>
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonParseError>
+#include <QRandomGenerator>
+#include <QStorageInfo>
+#include <QTemporaryDir>
+#include <QtTest/QTest>
+
+#include "TestSupport.h"
+#include "core/Project.h"
+
+using namespace facet;
+
+namespace {
+QString qs(const std::string& s)
+{
+    return QString::fromStdString(s);
+}
+bool contains(const std::string& text, const std::string& part)
+{
+    return text.find(part) != std::string::npos;
+}
+
+QByteArray readAll(const QString& path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+bool writeAll(const QString& path, const QByteArray& data)
+{
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(data) == data.size();
+}
+
+// A project in which every field differs from its default; texture, environment and mesh paths
+// under `root`.
+Project everythingChanged(const QString& root)
+{
+    const auto under
+        = [&](const char* relative) { return QDir(root).filePath(QLatin1String(relative)).toStdString(); };
+    Project p;
+    Material& m = p.material;
+    m.name = "Worn brass \"test\" \u00e9";
+    m.ior = 1.7;
+    m.shading.composition = BrdfComposition::LearnOpenGL;
+    m.shading.distribution = Distribution::Beckmann;
+    m.shading.visibility = Visibility::SchlickGGX;
+    m.shading.fresnel = Fresnel::Dielectric;
+    m.shading.coupling = DielectricCoupling::EnergyPreserving;
+    m.shading.multiScatter = false;
+    MaterialMap& base = m.map(MapSlot::BaseColor);
+    base.path = under("textures/albedo.png");
+    base.factor = {0.9, 0.6, 0.3, 0.75};
+    base.channel = MapChannel::R;
+    base.colorSpace = ColorEncoding::Linear;
+    base.uv = {{2.0, 3.0}, {0.25, -0.5}, 30.0};
+    MaterialMap& normal = m.map(MapSlot::Normal);
+    normal.path = under("textures/normal.png");
+    normal.factor = glm::dvec4(0.6);
+    normal.colorSpace = ColorEncoding::SRGB;
+    normal.flipGreen = true;
+    normal.uv.rotationDegrees = -45.0;
+    MaterialMap& metallic = m.map(MapSlot::Metallic);
+    metallic.path = under("textures/orm.png");
+    metallic.factor = glm::dvec4(0.8);
+    metallic.channel = MapChannel::A;
+    metallic.invert = true;
+    MaterialMap& roughness = m.map(MapSlot::Roughness);
+    roughness.path = under("textures/orm.png");
+    roughness.factor = glm::dvec4(0.3);
+    roughness.channel = MapChannel::R;
+    roughness.colorSpace = ColorEncoding::SRGB;
+    roughness.uv.offset = {0.1, 0.2};
+    MaterialMap& occlusion = m.map(MapSlot::Occlusion);
+    occlusion.path = under("textures/orm.png");
+    occlusion.factor = glm::dvec4(0.5);
+    occlusion.channel = MapChannel::B;
+    occlusion.invert = true;
+    occlusion.uv.scale = {-1.0, 1.0};
+
+    p.environment.source = under("hdri/room.exr");
+    p.environment.rotationDegrees = 123.5;
+    p.environment.intensity = 0.125;
+    p.environment.quality = IblQuality::High;
+
+    Light sun;
+    sun.name = "Sun";
+    sun.type = LightType::Directional;
+    sun.enabled = false;
+    sun.color = {1.0, 0.9, 0.8};
+    sun.intensity = 100000.0;
+    sun.direction = {0.3, -1.0, 0.2};
+    sun.position = {1.0, 2.0, 3.0};
+    sun.range = 5.0;
+    sun.innerConeAngle = 0.1;
+    sun.outerConeAngle = 0.3;
+    Light spot;
+    spot.name = "Spot";
+    spot.type = LightType::Spot;
+    spot.useTemperature = true;
+    spot.kelvin = 3200.0;
+    spot.intensity = 800.0;
+    spot.range = 12.0;
+    spot.innerConeAngle = 0.25;
+    spot.outerConeAngle = 0.5;
+    spot.position = {-2.0, 3.0, 4.0};
+    spot.direction = {0.5, -0.5, -1.0};
+    Light point;
+    point.name = "Point";
+    point.type = LightType::Point;
+    point.intensity = 0.0;
+    point.position = {0.0, -1.5, 0.0};
+    p.lights = {sun, spot, point};
+
+    p.camera.position = {1.0, 2.0, 5.0};
+    p.camera.target = {0.0, 0.5, 0.0};
+    p.camera.up = {0.0, 0.0, 1.0};
+    p.camera.verticalFovDegrees = 30.0;
+    p.camera.nearPlane = 0.2;
+    p.camera.farPlane = 50.0;
+
+    ViewSettings& v = p.view;
+    v.exposureEV = -1.5;
+    v.toneMapper = ToneMapper::AgX;
+    v.displayEncoding = DisplayEncoding::Gamma;
+    v.gamma = 2.4;
+    v.ocioDisplay = "sRGB - Display";
+    v.ocioView = "ACES 1.0 - SDR Video";
+    v.debugView = "normal";
+    v.mesh = under("meshes/bunny.glb");
+    v.msaaSamples = 8;
+    v.background = BackgroundMode::Color;
+    v.backgroundColor = {0.1, 0.2, 0.3};
+    v.backgroundBlurRoughness = 0.7;
+    return p;
+}
+
+// The valid minimal file the error cases start from, with `body` spliced in.
+QByteArray minimalWith(const char* body)
+{
+    QByteArray text = R"({"format": "facet-project", "version": 1)";
+    if (body[0] != '\0')
+        text += ", " + QByteArray(body);
+    return text + "}";
+}
+} // namespace
+
+class ProjectTest : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void defaultProject()
+    {
+        const Project p = Project::defaultProject();
+        std::string problem;
+        QVERIFY2(p.validate(&problem), problem.c_str());
+        QCOMPARE(p.camera, Camera::referenceView());
+        QCOMPARE(p.view.mesh, std::string("sphere"));
+        QCOMPARE(p.environment.source, std::string("studio"));
+        QCOMPARE(p.view.toneMapper, ToneMapper::KhronosNeutral);
+        QCOMPARE(p.material.roughness(), 0.35);
+        QVERIFY(p.material.baseColorFactor().x > p.material.baseColorFactor().z);
+
+        // DESIGN.md's reference view.
+        const Camera reference = Camera::referenceView();
+        QCOMPARE(reference.position, glm::dvec3(0.0, 0.0, 3.0));
+        QCOMPARE(reference.target, glm::dvec3(0.0));
+        QCOMPARE(reference.up, glm::dvec3(0.0, 1.0, 0.0));
+        QCOMPARE(reference.verticalFovDegrees, 45.0);
+        QVERIFY(reference.validate(&problem));
+        // The view matrix takes the origin to 3 units in front of the camera (-Z).
+        const glm::dvec4 origin = reference.viewMatrix() * glm::dvec4(0.0, 0.0, 0.0, 1.0);
+        QVERIFY(std::abs(origin.z + 3.0) < 1e-12 && std::abs(origin.x) < 1e-12 && std::abs(origin.y) < 1e-12);
+    }
+
+    void enumNamesRoundTrip()
+    {
+        const char* const toneMappers[] = {"none", "reinhard", "exposure", "aces", "khronos-neutral", "agx"};
+        for (const char* name : toneMappers) {
+            const std::optional<ToneMapper> value = toneMapperFromString(name);
+            QVERIFY2(value, name);
+            QCOMPARE(toString(*value), name);
+        }
+        for (const char* name : {"srgb", "gamma"})
+            QCOMPARE(toString(*displayEncodingFromString(name)), name);
+        for (const char* name : {"environment", "blurred", "color"})
+            QCOMPARE(toString(*backgroundModeFromString(name)), name);
+        for (const char* name : {"draft", "default", "high"})
+            QCOMPARE(toString(*iblQualityFromString(name)), name);
+        QVERIFY(!toneMapperFromString("filmic"));
+    }
+
+    void everyFieldRoundTripsThroughAFile()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString root = QDir(dir.path()).filePath(QStringLiteral("project"));
+        const Project original = everythingChanged(root);
+        std::string problem;
+        QVERIFY2(original.validate(&problem), problem.c_str());
+        // Each part really differs from its default, so the comparison below checks them all.
+        const Project defaults;
+        QVERIFY(original.material.name != defaults.material.name
+            && original.material.ior != defaults.material.ior);
+        QVERIFY(original.material.shading != defaults.material.shading);
+        for (MapSlot slot : kAllMapSlots)
+            QVERIFY2(original.material.map(slot) != defaults.material.map(slot), toString(slot));
+        QVERIFY(original.environment != defaults.environment && original.camera != defaults.camera);
+        QVERIFY(original.view != defaults.view && original.lights.size() == 3);
+
+        const std::string path = QDir(root).filePath(QStringLiteral("look.facet.json")).toStdString();
+        QVERIFY(QDir().mkpath(root));
+        std::string error;
+        QVERIFY2(original.save(path, &error), error.c_str());
+        std::string warning;
+        const std::optional<Project> loaded = Project::load(path, &error, &warning);
+        QVERIFY2(loaded, error.c_str());
+        QVERIFY2(warning.empty(), warning.c_str());
+        QVERIFY(*loaded == original);
+        QVERIFY(loaded->material == original.material);
+        QVERIFY(loaded->lights == original.lights);
+        QVERIFY(loaded->view == original.view);
+
+        // Without a file, and with no base folder (paths stay as they are).
+        const std::optional<Project> inMemory = Project::fromJson(original.toJson(), {}, &error);
+        QVERIFY2(inMemory, error.c_str());
+        QVERIFY(*inMemory == original);
+
+        // The file says what it is.
+        const QJsonObject object = QJsonDocument::fromJson(readAll(qs(path))).object();
+        QCOMPARE(object.value(QLatin1String("format")).toString(), QStringLiteral("facet-project"));
+        QCOMPARE(object.value(QLatin1String("version")).toInt(), 1);
+    }
+
+    void defaultProjectRoundTrips()
+    {
+        std::string error;
+        const Project p = Project::defaultProject();
+        const std::optional<Project> back
+            = Project::fromJson(p.toJson(QStringLiteral("/tmp").toStdString()), "/tmp", &error);
+        QVERIFY2(back, error.c_str());
+        QVERIFY(*back == p);
+        // Built-in specs are never turned into paths.
+        QCOMPARE(back->environment.source, std::string("studio"));
+        QCOMPARE(back->view.mesh, std::string("sphere"));
+    }
+
+    void pathsAreStoredRelativeAndResolvedOnLoad()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString root = QDir(dir.path()).filePath(QStringLiteral("project"));
+        Project p = everythingChanged(root);
+        // A texture beside the project folder is reached with "..".
+        p.material.map(MapSlot::Occlusion).path
+            = QDir(dir.path()).filePath(QStringLiteral("shared/ao.png")).toStdString();
+        const QString path = QDir(root).filePath(QStringLiteral("p.json"));
+        QVERIFY(QDir().mkpath(root));
+        std::string error;
+        QVERIFY2(p.save(path.toStdString(), &error), error.c_str());
+
+        const QByteArray text = readAll(path);
+        QVERIFY(text.contains("\"textures/albedo.png\""));
+        QVERIFY(text.contains("\"textures/orm.png\""));
+        QVERIFY(text.contains("\"../shared/ao.png\""));
+        QVERIFY(text.contains("\"hdri/room.exr\""));
+        QVERIFY(text.contains("\"meshes/bunny.glb\""));
+        QVERIFY2(!text.contains(dir.path().toUtf8()), "an absolute path was stored");
+
+        const std::optional<Project> loaded = Project::load(path.toStdString(), &error);
+        QVERIFY2(loaded, error.c_str());
+        QCOMPARE(qs(loaded->material.map(MapSlot::BaseColor).path),
+            QDir(root).filePath(QStringLiteral("textures/albedo.png")));
+        QCOMPARE(qs(loaded->material.map(MapSlot::Occlusion).path),
+            QDir(dir.path()).filePath(QStringLiteral("shared/ao.png")));
+        QCOMPARE(qs(loaded->environment.source), QDir(root).filePath(QStringLiteral("hdri/room.exr")));
+        QCOMPARE(qs(loaded->view.mesh), QDir(root).filePath(QStringLiteral("meshes/bunny.glb")));
+        QVERIFY(!loaded->material.map(MapSlot::BaseColor).path.empty());
+        QVERIFY(*loaded == p);
+    }
+
+    void specsKeepBuiltinNames()
+    {
+        QCOMPARE(json::storedSpec("studio", "/a/b"), std::string("studio"));
+        QCOMPARE(json::storedSpec("uniform:0.5,0.5,0.5", "/a/b"), std::string("uniform:0.5,0.5,0.5"));
+        QCOMPARE(json::resolvedSpec("uniform:1", "/a/b"), std::string("uniform:1"));
+        QCOMPARE(json::resolvedSpec("sky", "/a/b"), std::string("sky"));
+        // A file whose relative path would read as a built-in name keeps a "./".
+        QCOMPARE(json::storedSpec("/a/b/studio", "/a/b"), std::string("./studio"));
+        QCOMPARE(json::resolvedSpec("./studio", "/a/b"), std::string("/a/b/studio"));
+        QCOMPARE(json::resolvedSpec("room.exr", "/a/b"), std::string("/a/b/room.exr"));
+        QCOMPARE(json::storedPath("/a/b/c/d.png", "/a/b"), std::string("c/d.png"));
+        QCOMPARE(json::storedPath("/a/x.png", "/a/b"), std::string("../x.png"));
+        QCOMPARE(json::storedPath("/a/x.png", ""), std::string("/a/x.png"));
+        QCOMPARE(json::storedPath("", "/a/b"), std::string());
+        QCOMPARE(json::resolvedPath("../x.png", "/a/b"), std::string("/a/x.png"));
+        QCOMPARE(json::resolvedPath("/abs/x.png", "/a/b"), std::string("/abs/x.png"));
+    }
+
+    void pathsOnAnotherVolumeStayAbsolute()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        // /proc is its own file system on Linux; if it shares the temporary folder's volume here,
+        // there is no second volume to test with.
+        const QStorageInfo proc(QStringLiteral("/proc/self"));
+        const QStorageInfo temp(dir.path());
+        if (!proc.isValid() || !temp.isValid() || proc.rootPath() == temp.rootPath())
+            QSKIP("no second volume to test with");
+        QCOMPARE(json::storedPath("/proc/self/status", dir.path().toStdString()),
+            std::string("/proc/self/status"));
+        QCOMPARE(json::resolvedPath("/proc/self/status", dir.path().toStdString()),
+            std::string("/proc/self/status"));
+    }
+
+    void movingTheProjectFolderKeepsTexturesFound()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString before = QDir(dir.path()).filePath(QStringLiteral("before"));
+        const QString after = QDir(dir.path()).filePath(QStringLiteral("elsewhere/after"));
+        Project p = Project::defaultProject();
+        p.material.map(MapSlot::BaseColor).path
+            = QDir(before).filePath(QStringLiteral("tex/albedo.png")).toStdString();
+        p.material.map(MapSlot::Normal).path
+            = QDir(before).filePath(QStringLiteral("tex/normal.png")).toStdString();
+        p.environment.source = QDir(before).filePath(QStringLiteral("env.exr")).toStdString();
+        QVERIFY(writeAll(QDir(before).filePath(QStringLiteral("tex/albedo.png")), "png"));
+        QVERIFY(writeAll(QDir(before).filePath(QStringLiteral("tex/normal.png")), "png"));
+        QVERIFY(writeAll(QDir(before).filePath(QStringLiteral("env.exr")), "exr"));
+        std::string error;
+        QVERIFY2(
+            p.save(QDir(before).filePath(QStringLiteral("p.json")).toStdString(), &error), error.c_str());
+
+        QVERIFY(QDir().mkpath(QFileInfo(after).absolutePath()));
+        QVERIFY(QDir().rename(before, after));
+        const std::optional<Project> loaded
+            = Project::load(QDir(after).filePath(QStringLiteral("p.json")).toStdString(), &error);
+        QVERIFY2(loaded, error.c_str());
+        for (MapSlot slot : {MapSlot::BaseColor, MapSlot::Normal}) {
+            const QString texture = qs(loaded->material.map(slot).path);
+            QVERIFY2(texture.startsWith(after) && QFileInfo::exists(texture), qPrintable(texture));
+        }
+        QVERIFY(QFileInfo::exists(qs(loaded->environment.source)));
+        QVERIFY(loaded->material.map(MapSlot::Metallic).path.empty());
+    }
+
+    void brokenFilesGiveClearErrors_data()
+    {
+        QTest::addColumn<QByteArray>("content");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("empty") << QByteArray() << QStringLiteral("the file is empty");
+        QTest::newRow("whitespace") << QByteArray(" \n\t\n") << QStringLiteral("the file is empty");
+        QTest::newRow("broken JSON") << QByteArray(
+            "{\n  \"format\": \"facet-project\",\n  \"version\": 1,\n  oops\n}")
+                                     << QStringLiteral("line 4, column"); // Qt points at or just after "oops"
+        QTest::newRow("unterminated")
+            << QByteArray("{\"format\": \"facet-pro") << QStringLiteral("line 1, column");
+        QTest::newRow("binary") << QByteArray("\x89PNG\r\n\x1a\n\0\0\0", 11)
+                                << QStringLiteral("not valid JSON");
+        QTest::newRow("top-level array")
+            << QByteArray("[1, 2]") << QStringLiteral("expected a JSON object at the top level");
+        QTest::newRow("no format") << QByteArray(R"({"version": 1})")
+                                   << QStringLiteral("\"format\" is missing");
+        QTest::newRow("wrong format")
+            << QByteArray(R"({"format": "facet-material-preset", "version": 1})")
+            << QStringLiteral("format: \"facet-material-preset\" is not \"facet-project\"");
+        QTest::newRow("format not a string") << QByteArray(R"({"format": 7, "version": 1})")
+                                             << QStringLiteral("format: expected a string, got a number");
+        QTest::newRow("no version") << QByteArray(R"({"format": "facet-project"})")
+                                    << QStringLiteral("\"version\" is missing");
+        QTest::newRow("newer version")
+            << QByteArray(
+                   R"({"format": "facet-project", "version": 3, "material": {"roughness": "new syntax"}})")
+            << QStringLiteral("written by a newer Facet (version 3); this Facet reads up to version 1");
+        QTest::newRow("version zero") << QByteArray(R"({"format": "facet-project", "version": 0})")
+                                      << QStringLiteral("version: 0 is not a valid version");
+        QTest::newRow("version string") << QByteArray(R"({"format": "facet-project", "version": "1"})")
+                                        << QStringLiteral("version: expected an integer, got a string");
+        QTest::newRow("version fraction") << QByteArray(R"({"format": "facet-project", "version": 1.5})")
+                                          << QStringLiteral("version: expected an integer, got 1.5");
+        QTest::newRow("intensity string")
+            << minimalWith(R"("lights": [{"type": "point"}, {"intensity": "bright"}])")
+            << QStringLiteral("lights[1].intensity: expected a number, got a string");
+        QTest::newRow("roughness string")
+            << minimalWith(R"("material": {"roughness": {"factor": "0.5"}})")
+            << QStringLiteral("material.roughness.factor: expected a number, got a string");
+        QTest::newRow("roughness out of range")
+            << minimalWith(R"("material": {"roughness": {"factor": 1.5}})")
+            << QStringLiteral("material.roughness.factor: 1.5 is outside [0, 1]");
+        QTest::newRow("negative intensity")
+            << minimalWith(R"("lights": [{"intensity": -2}])") << QStringLiteral("lights[0].intensity: -2");
+        QTest::newRow("cone angles") << minimalWith(
+            R"("lights": [{"type": "spot", "innerConeAngle": 0.8, "outerConeAngle": 0.5}])")
+                                     << QStringLiteral("lights[0].innerConeAngle");
+        QTest::newRow("unknown tone mapper") << minimalWith(R"("view": {"toneMapper": "filmic"})")
+                                             << QStringLiteral("view.toneMapper: unknown name \"filmic\"");
+        QTest::newRow("unknown light type") << minimalWith(R"("lights": [{"type": "area"}])")
+                                            << QStringLiteral("lights[0].type: unknown name \"area\"");
+        QTest::newRow("unknown visibility")
+            << minimalWith(R"("material": {"shading": {"visibility": "smith"}})")
+            << QStringLiteral("material.shading.visibility: unknown name \"smith\"");
+        QTest::newRow("unknown channel") << minimalWith(R"("material": {"metallic": {"channel": "x"}})")
+                                         << QStringLiteral("material.metallic.channel: unknown name \"x\"");
+        QTest::newRow("short colour")
+            << minimalWith(R"("lights": [{"color": [1, 1]}])")
+            << QStringLiteral("lights[0].color: expected an array of 3 numbers, got 2");
+        QTest::newRow("colour element")
+            << minimalWith(R"("lights": [{"color": [1, "red", 1]}])")
+            << QStringLiteral("lights[0].color[1]: expected a number, got a string");
+        QTest::newRow("lights not an array") << minimalWith(R"("lights": {"type": "point"})")
+                                             << QStringLiteral("lights: expected an array, got an object");
+        QTest::newRow("light not an object") << minimalWith(R"("lights": [{}, 5])")
+                                             << QStringLiteral("lights[1]: expected an object, got a number");
+        QTest::newRow("material not an object") << minimalWith(
+            R"("material": [])") << QStringLiteral("material: expected an object, got an array");
+        QTest::newRow("base colour size")
+            << minimalWith(R"("material": {"baseColor": {"factor": [1, 1]}})")
+            << QStringLiteral("material.baseColor.factor: expected an array of 3 to 4 numbers");
+        QTest::newRow("uv scale type")
+            << minimalWith(R"("material": {"normal": {"uv": {"scale": 2}}})")
+            << QStringLiteral("material.normal.uv.scale: expected an array of 2 numbers, got a number");
+        QTest::newRow("texture not a string")
+            << minimalWith(R"("material": {"normal": {"texture": null}})")
+            << QStringLiteral("material.normal.texture: expected a string, got null");
+        QTest::newRow("bool as string")
+            << minimalWith(R"("material": {"normal": {"flipGreen": "yes"}})")
+            << QStringLiteral("material.normal.flipGreen: expected true or false, got a string");
+        QTest::newRow("camera fov") << minimalWith(R"("camera": {"verticalFovDegrees": 0})")
+                                    << QStringLiteral("camera.verticalFovDegrees");
+        QTest::newRow("camera looks at itself") << minimalWith(R"("camera": {"position": [0, 0, 0]})")
+                                                << QStringLiteral("camera.target: must differ from position");
+        QTest::newRow("msaa not a power of two")
+            << minimalWith(R"("view": {"msaaSamples": 3})") << QStringLiteral("view.msaaSamples: 3");
+        QTest::newRow("msaa fraction") << minimalWith(R"("view": {"msaaSamples": 2.5})")
+                                       << QStringLiteral("view.msaaSamples: expected an integer, got 2.5");
+        QTest::newRow("negative environment")
+            << minimalWith(R"("environment": {"intensity": -1})") << QStringLiteral("environment.intensity");
+        QTest::newRow("unknown quality") << minimalWith(R"("environment": {"quality": "ultra"})")
+                                         << QStringLiteral("environment.quality: unknown name \"ultra\"");
+        // Qt's parser refuses numbers beyond double range, so no infinity reaches the model.
+        QTest::newRow("huge number") << minimalWith(R"("environment": {"rotationDegrees": 1e999})")
+                                     << QStringLiteral("line 1, column 83: illegal number");
+    }
+    void brokenFilesGiveClearErrors()
+    {
+        QFETCH(QByteArray, content);
+        QFETCH(QString, expected);
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = QDir(dir.path()).filePath(QStringLiteral("broken-project.json"));
+        QVERIFY(writeAll(path, content));
+        std::string error;
+        const std::optional<Project> loaded = Project::load(path.toStdString(), &error);
+        QVERIFY2(!loaded, "a broken file loaded");
+        QVERIFY2(contains(error, "Project::load: " + path.toStdString() + ": "), error.c_str());
+        QVERIFY2(contains(error, expected.toStdString()), error.c_str());
+    }
+
+    void missingAndUnreadableFiles()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        std::string error;
+        const QString missing = QDir(dir.path()).filePath(QStringLiteral("missing.json"));
+        QVERIFY(!Project::load(missing.toStdString(), &error));
+        QVERIFY2(
+            contains(error, "Project::load: " + missing.toStdString() + ": no such file"), error.c_str());
+
+        QVERIFY(!Project::load(dir.path().toStdString(), &error));
+        QVERIFY2(contains(error, "is a folder"), error.c_str());
+
+        QVERIFY(!Project::load({}, &error));
+        QVERIFY2(contains(error, "Project::load"), error.c_str());
+
+        const QString locked = QDir(dir.path()).filePath(QStringLiteral("locked.json"));
+        QVERIFY(writeAll(locked, minimalWith("")));
+        QVERIFY(QFile::setPermissions(locked, QFileDevice::WriteOwner));
+        QFile probe(locked);
+        if (probe.open(QIODevice::ReadOnly))
+            QSKIP("running with permission to read any file (root): cannot test an unreadable file");
+        QVERIFY(!Project::load(locked.toStdString(), &error));
+        QVERIFY2(contains(error, "locked.json: cannot read it"), error.c_str());
+    }
+
+    void missingFieldsTakeDefaults()
+    {
+        std::string error;
+        std::optional<Project> p
+            = Project::fromJson(QJsonDocument::fromJson(minimalWith("")).object(), "/x", &error);
+        QVERIFY2(p, error.c_str());
+        QVERIFY(*p == Project {});
+
+        p = Project::fromJson(
+            QJsonDocument::fromJson(
+                minimalWith(R"("material": {"roughness": {"factor": 0.2}}, "lights": [{"type": "spot"}])"))
+                .object(),
+            "/x", &error);
+        QVERIFY2(p, error.c_str());
+        Material expected;
+        expected.setFactor(MapSlot::Roughness, 0.2);
+        QVERIFY(p->material == expected);
+        QCOMPARE(p->lights.size(), std::size_t(1));
+        Light spot;
+        spot.type = LightType::Spot;
+        QVERIFY(p->lights[0] == spot);
+
+        // A base colour without alpha gets alpha 1.
+        p = Project::fromJson(
+            QJsonDocument::fromJson(minimalWith(R"("material": {"baseColor": {"factor": [0.1, 0.2, 0.3]}})"))
+                .object(),
+            {}, &error);
+        QVERIFY2(p, error.c_str());
+        QCOMPARE(p->material.baseColorFactor(), glm::dvec4(0.1, 0.2, 0.3, 1.0));
+    }
+
+    void unknownKeysAreWarnedAboutNotFatal()
+    {
+        std::string error;
+        std::string warning;
+        const std::optional<Project> p = Project::fromJson(
+            QJsonDocument::fromJson(
+                minimalWith(R"("futureThing": 1, "material": {"rougness": {"factor": 0.1}})"))
+                .object(),
+            {}, &error, &warning);
+        QVERIFY2(p, error.c_str());
+        QVERIFY2(contains(warning, "futureThing: unknown key"), warning.c_str());
+        QVERIFY2(contains(warning, "material.rougness: unknown key"), warning.c_str());
+        QVERIFY(*p == Project {});
+
+        // fromJson names itself in its errors.
+        QVERIFY(!Project::fromJson(QJsonObject(), {}, &error));
+        QVERIFY2(error.rfind("Project::fromJson: ", 0) == 0, error.c_str());
+    }
+
+    void failedSaveLeavesTheOriginalUntouched()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString folder = QDir(dir.path()).filePath(QStringLiteral("work"));
+        QVERIFY(QDir().mkpath(folder));
+        const QString path = QDir(folder).filePath(QStringLiteral("keep.json"));
+        std::string error;
+        QVERIFY2(Project::defaultProject().save(path.toStdString(), &error), error.c_str());
+        const QByteArray original = readAll(path);
+        QVERIFY(!original.isEmpty());
+
+        // An invalid project is refused before anything is written.
+        Project invalid = Project::defaultProject();
+        invalid.lights.push_back(Light {});
+        invalid.lights.back().intensity = -5.0;
+        QVERIFY(!invalid.save(path.toStdString(), &error));
+        QVERIFY2(
+            contains(error, "Project::save: " + path.toStdString()) && contains(error, "lights[0].intensity"),
+            error.c_str());
+        QCOMPARE(readAll(path), original);
+
+        // A folder that does not exist.
+        const QString nowhere = QDir(dir.path()).filePath(QStringLiteral("no/such/folder/p.json"));
+        QVERIFY(!Project::defaultProject().save(nowhere.toStdString(), &error));
+        QVERIFY2(
+            contains(error, "Project::save: " + nowhere.toStdString()) && contains(error, "does not exist"),
+            error.c_str());
+        QVERIFY(!QFileInfo::exists(nowhere));
+
+        // A folder path given as the file.
+        QVERIFY(!Project::defaultProject().save(folder.toStdString(), &error));
+        QVERIFY(QFileInfo(folder).isDir());
+
+        // A read-only folder: the save fails and the old file survives, with no temporary left.
+        Project changed = Project::defaultProject();
+        changed.material.name = "Changed";
+        QVERIFY(QFile::setPermissions(folder, QFileDevice::ReadOwner | QFileDevice::ExeOwner));
+        QFile probe(QDir(folder).filePath(QStringLiteral("probe")));
+        const bool folderStillWritable = probe.open(QIODevice::WriteOnly);
+        if (folderStillWritable) {
+            probe.close();
+            probe.remove();
+        }
+        bool saved = false;
+        if (!folderStillWritable)
+            saved = changed.save(path.toStdString(), &error);
+        QVERIFY(QFile::setPermissions(
+            folder, QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner));
+        if (folderStillWritable)
+            QSKIP("running with permission to write anywhere (root): cannot test a read-only folder");
+        QVERIFY(!saved);
+        QVERIFY2(
+            contains(error, "Project::save: " + path.toStdString() + ": cannot write it"), error.c_str());
+        QCOMPARE(readAll(path), original);
+        QCOMPARE(
+            QDir(folder).entryList(QDir::Files | QDir::Hidden), QStringList {QStringLiteral("keep.json")});
+    }
+
+    void truncatedFilesNeverCrash()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString root = dir.path();
+        const Project full = everythingChanged(root);
+        const QString path = QDir(root).filePath(QStringLiteral("p.json"));
+        std::string error;
+        QVERIFY2(full.save(path.toStdString(), &error), error.c_str());
+        const QByteArray text = readAll(path);
+        QVERIFY(text.size() > 1000);
+
+        // Every prefix goes through the parser and the model in memory; every 13th (and the last
+        // few) also through a file, for the file reader's own checks and its line/column report.
+        // (Not all through files: rewriting a file thousands of times is slow on some disks.)
+        const QString cut = QDir(root).filePath(QStringLiteral("cut.json"));
+        int failures = 0;
+        for (qsizetype length = 0; length < text.size(); ++length) {
+            const QByteArray prefix = text.left(length);
+            error.clear();
+            std::optional<Project> loaded;
+            if (length % 13 == 0 || length + 3 >= text.size()) {
+                QVERIFY(writeAll(cut, prefix));
+                loaded = Project::load(cut.toStdString(), &error);
+                if (!loaded)
+                    QVERIFY2(contains(error, "Project::load: " + cut.toStdString() + ": "), error.c_str());
+            } else {
+                QJsonParseError parseError;
+                const QJsonDocument document = QJsonDocument::fromJson(prefix, &parseError);
+                if (parseError.error == QJsonParseError::NoError && document.isObject())
+                    loaded = Project::fromJson(document.object(), root.toStdString(), &error);
+                else
+                    error = "not JSON";
+            }
+            if (loaded) {
+                // Only the whole object (perhaps without trailing white space) may load.
+                QCOMPARE(prefix.trimmed(), text.trimmed());
+                QVERIFY(*loaded == full);
+            } else {
+                QVERIFY(!error.empty());
+                ++failures;
+            }
+        }
+        QVERIFY(failures >= text.size() - 2);
+
+        // Corrupted bytes: whatever loads is valid, whatever fails says why.
+        QRandomGenerator random(20240611u);
+        for (int round = 0; round < 1500; ++round) {
+            QByteArray mutated = text;
+            const int edits = 1 + int(random.bounded(4));
+            for (int e = 0; e < edits; ++e) {
+                const qsizetype at = qsizetype(random.bounded(quint32(mutated.size())));
+                switch (random.bounded(3)) {
+                case 0:
+                    mutated[at] = char(random.bounded(256));
+                    break;
+                case 1:
+                    mutated.remove(at, 1 + qsizetype(random.bounded(8)));
+                    break;
+                default:
+                    mutated.insert(at, "[{\"-1e308,"[random.bounded(10)]);
+                    break;
+                }
+            }
+            const std::optional<QJsonObject> object = QJsonDocument::fromJson(mutated).isObject()
+                ? std::optional(QJsonDocument::fromJson(mutated).object())
+                : std::nullopt;
+            if (!object)
+                continue;
+            error.clear();
+            const std::optional<Project> loaded = Project::fromJson(*object, root.toStdString(), &error);
+            if (loaded) {
+                std::string problem;
+                QVERIFY2(loaded->validate(&problem), problem.c_str());
+            } else {
+                QVERIFY(!error.empty());
+            }
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(ProjectTest)
+#include "ProjectTest.moc"
