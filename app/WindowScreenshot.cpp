@@ -1,0 +1,89 @@
+#include "WindowScreenshot.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QImageWriter>
+#include <QOpenGLWidget>
+#include <QPixmap>
+#include <QSaveFile>
+#include <QWidget>
+
+#include <utility>
+
+#include <cstdio>
+
+namespace facet {
+
+WindowScreenshot::WindowScreenshot(QWidget* window, QOpenGLWidget* viewport, QString path, QObject* parent)
+    : QObject(parent)
+    , m_window(window)
+    , m_path(std::move(path))
+{
+    // The grab goes after the first frame has reached the window, from the event loop, so that
+    // the layout has settled and the viewport holds a finished picture.
+    connect(viewport, &QOpenGLWidget::frameSwapped, this, [this] {
+        if (!m_done)
+            QTimer::singleShot(0, this, &WindowScreenshot::save);
+    });
+    m_timeout.setSingleShot(true);
+    connect(&m_timeout, &QTimer::timeout, this, [this] {
+        fail(QStringLiteral("the viewport drew no frame within %1 s").arg(kFirstFrameTimeoutMs / 1000));
+    });
+    m_timeout.start(kFirstFrameTimeoutMs);
+}
+
+bool WindowScreenshot::canWriteFormatOf(const QString& path, QString* why)
+{
+    const QString suffix = QFileInfo(path).suffix();
+    if (QImageWriter::supportedImageFormats().contains(suffix.toLower().toLatin1()))
+        return true;
+    *why = suffix.isEmpty()
+        ? QStringLiteral("the file name has no suffix (use .png)")
+        : QStringLiteral("'.%1' is not an image format Qt can write (use .png)").arg(suffix);
+    return false;
+}
+
+void WindowScreenshot::save()
+{
+    if (m_done)
+        return;
+    m_done = true;
+    m_timeout.stop();
+
+    QString why;
+    if (!canWriteFormatOf(m_path, &why)) {
+        fail(why);
+        return;
+    }
+    const QByteArray format = QFileInfo(m_path).suffix().toLower().toLatin1();
+    const QPixmap picture = m_window->grab();
+    // Through a temporary file and a rename: a failed save never leaves half a picture.
+    QSaveFile file(m_path);
+    if (!file.open(QIODevice::WriteOnly)) {
+        fail(file.errorString());
+        return;
+    }
+    if (!picture.save(&file, format.constData())) {
+        file.cancelWriting();
+        fail(QStringLiteral("encoding the picture failed"));
+        return;
+    }
+    if (!file.commit()) {
+        fail(file.errorString());
+        return;
+    }
+    std::fprintf(stdout, "facet: saved %dx%d screenshot to %s\n", picture.width(), picture.height(),
+        qPrintable(m_path));
+    std::fflush(stdout);
+    QCoreApplication::exit(0);
+}
+
+void WindowScreenshot::fail(const QString& why)
+{
+    m_done = true;
+    m_timeout.stop();
+    std::fprintf(stderr, "facet: cannot save screenshot '%s': %s\n", qPrintable(m_path), qPrintable(why));
+    QCoreApplication::exit(1);
+}
+
+} // namespace facet

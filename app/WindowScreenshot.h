@@ -1,0 +1,36 @@
+#pragma once
+// `facet --screenshot FILE.png`: once the viewport has drawn its first frame, saves a grab of the
+// whole window and quits (exit code 0 when saved, 1 when not). For README pictures and smoke tests.
+
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+class QOpenGLWidget;
+class QWidget;
+
+namespace facet {
+
+class WindowScreenshot : public QObject {
+    Q_OBJECT
+public:
+    // How long to wait for the first frame before giving up (a context that never comes up).
+    static constexpr int kFirstFrameTimeoutMs = 60000;
+
+    WindowScreenshot(QWidget* window, QOpenGLWidget* viewport, QString path, QObject* parent = nullptr);
+
+    // Whether Qt can write an image of `path`'s suffix; if not, `why` says so. Needs a QGuiApplication
+    // (image-format plugins), so main() checks this before it shows the window.
+    static bool canWriteFormatOf(const QString& path, QString* why);
+
+private:
+    void save();
+    void fail(const QString& why);
+
+    QWidget* m_window;
+    QString m_path;
+    QTimer m_timeout;
+    bool m_done = false;
+};
+
+} // namespace facet

@@ -1,0 +1,100 @@
+// facet: the GUI by default; headless commands (render, sheet, bake, export, bench) arrive in
+// later versions. The command line is parsed before any Q*Application exists, so --help, --version
+// and errors need no display server; QApplication is made only for the GUI.
+
+#include "CommandLine.h"
+#include "WindowScreenshot.h"
+
+#include "ui/MainWindow.h"
+#include "ui/SurfaceFormat.h"
+#include "ui/ViewportWidget.h"
+
+#include <QApplication>
+
+#include <cstdio>
+#include <optional>
+
+namespace {
+
+constexpr int kExitUsage = 2; // bad command line, unavailable command
+constexpr int kExitFailure = 1; // valid request that could not be carried out
+
+// Qt aborts (qFatal) when its platform plugin finds no display; say why before it can.
+bool displayServerReachable()
+{
+    const QString platform = qEnvironmentVariable("QT_QPA_PLATFORM");
+    if (!platform.isEmpty() && !platform.startsWith(QStringLiteral("xcb"))
+        && !platform.startsWith(QStringLiteral("wayland")))
+        return true; // the user chose a platform; let Qt judge it
+    return !qEnvironmentVariableIsEmpty("DISPLAY") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
+}
+
+int runGui(int& argc, char** argv, const facet::CommandLine& commandLine)
+{
+    if (!displayServerReachable()) {
+        std::fprintf(stderr,
+            "facet: the main window needs a display server and neither DISPLAY nor WAYLAND_DISPLAY "
+            "is set (run it under xvfb-run, or see 'facet --help')\n");
+        return kExitFailure;
+    }
+    facet::installViewportSurfaceFormat();
+    QApplication app(argc, argv);
+
+    QString why;
+    if (!commandLine.screenshotPath.isEmpty()
+        && !facet::WindowScreenshot::canWriteFormatOf(commandLine.screenshotPath, &why)) {
+        std::fprintf(stderr, "facet: --screenshot '%s': %s\n", qPrintable(commandLine.screenshotPath),
+            qPrintable(why));
+        return kExitUsage;
+    }
+
+    facet::MainWindow window;
+    if (!commandLine.projectPath.isEmpty()) {
+        // No fake loading: say plainly that the file was not opened.
+        const QString message
+            = QStringLiteral("Opening projects is not available in this version; '%1' was not loaded.")
+                  .arg(commandLine.projectPath);
+        std::fprintf(stderr, "facet: %s\n", qPrintable(message));
+        window.showStatusMessage(message);
+    }
+    std::optional<facet::WindowScreenshot> screenshot;
+    if (!commandLine.screenshotPath.isEmpty())
+        screenshot.emplace(&window, window.viewport(), commandLine.screenshotPath);
+    window.show();
+    return QApplication::exec();
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+    QCoreApplication::setApplicationName(QStringLiteral("facet"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(FACET_VERSION));
+    QCoreApplication::setOrganizationName(QStringLiteral("Facet"));
+
+    QStringList arguments;
+    for (int index = 0; index < argc; ++index)
+        arguments.append(QString::fromLocal8Bit(argv[index]));
+    const facet::CommandLine commandLine = facet::CommandLine::parse(arguments);
+
+    switch (commandLine.action) {
+    case facet::CommandLine::Action::ShowHelp:
+        std::fputs(qPrintable(facet::CommandLine::helpText()), stdout);
+        return 0;
+    case facet::CommandLine::Action::ShowVersion:
+        std::printf("%s %s\n", qPrintable(QCoreApplication::applicationName()),
+            qPrintable(QCoreApplication::applicationVersion()));
+        return 0;
+    case facet::CommandLine::Action::Unavailable:
+        std::fprintf(
+            stderr, "facet: '%s' is not available in this version\n", qPrintable(commandLine.command));
+        return kExitUsage;
+    case facet::CommandLine::Action::Error:
+        std::fprintf(
+            stderr, "facet: %s\nTry 'facet --help' for more information.\n", qPrintable(commandLine.error));
+        return kExitUsage;
+    case facet::CommandLine::Action::Gui:
+        break;
+    }
+    return runGui(argc, argv, commandLine);
+}
