@@ -1,0 +1,380 @@
+#include "core/Image.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <random>
+#include <system_error>
+
+#include <QtGlobal>
+
+#include <OpenImageIO/imageio.h>
+
+namespace facet {
+
+namespace {
+
+// The largest finite IEEE 754 binary16 value: what +Inf becomes, so that a sanitised image
+// survives a round trip through a half-float EXR or an RGBA16F texture unchanged.
+constexpr float kLargestHalf = 65504.0f;
+
+std::string lowercase(std::string text)
+{
+    std::transform(text.begin(), text.end(), text.begin(),
+        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+// OIIO's messages can span several lines (libpng stacks its own under OIIO's); a message for
+// the user is one line.
+std::string oneLine(std::string message)
+{
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+        message.pop_back();
+    std::string result;
+    result.reserve(message.size());
+    for (char c : message) {
+        if (c == '\n')
+            result += "; ";
+        else
+            result += c;
+    }
+    return result.empty() ? std::string("unknown error") : result;
+}
+
+void setError(std::string* error, const char* function, const std::string& path, const std::string& problem)
+{
+    if (error)
+        *error = std::string(function) + ": " + path + ": " + oneLine(problem);
+}
+
+// What the numbers of a file mean. OIIO names the colour space when the format says it
+// ("sRGB" for PNG/JPEG/WebP, "Linear" for EXR, "linear" for Radiance HDR, "GammaCorrected2.2"
+// for a PNG with a gAMA chunk) and says nothing for TIFF or TGA. Without a name, the
+// convention of the formats decides: 8/16-bit integer files are sRGB-encoded colour (PNG, JPEG,
+// TGA, 8-bit TIFF as painting tools write them), float files (EXR, HDR, float TIFF) are linear.
+ColorEncoding encodingFor(const std::string& colorSpaceName, OIIO::TypeDesc format)
+{
+    const std::string name = lowercase(colorSpaceName);
+    // A 2.2 power curve is not the sRGB curve but close to it (within 0.4% of full scale),
+    // and what a gamma-tagged PNG's author meant.
+    if (name.find("srgb") != std::string::npos || name.rfind("gammacorrected", 0) == 0)
+        return ColorEncoding::SRGB;
+    if (name.find("linear") != std::string::npos || name.rfind("lin_", 0) == 0 || name == "acescg"
+        || name == "aces2065-1" || name == "raw")
+        return ColorEncoding::Linear;
+    switch (format.basetype) {
+    case OIIO::TypeDesc::UINT8:
+    case OIIO::TypeDesc::INT8:
+    case OIIO::TypeDesc::UINT16:
+    case OIIO::TypeDesc::INT16:
+        return ColorEncoding::SRGB;
+    default:
+        return ColorEncoding::Linear;
+    }
+}
+
+// The sRGB EOTF, IEC 61966-2-1:1999 section 4.2 (piecewise: linear toe below 0.04045).
+float srgbToLinear(float encoded)
+{
+    if (encoded <= 0.04045f)
+        return encoded / 12.92f;
+    return std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
+
+std::string temporaryPathFor(const std::string& path)
+{
+    // Same directory as the target, so the final rename stays on one file system and is
+    // atomic (POSIX rename(2)); a random suffix, so two saves of one file cannot collide.
+    static const char kDigits[] = "0123456789abcdef";
+    std::random_device device;
+    std::mt19937 generator(device());
+    std::uniform_int_distribution<int> digit(0, 15);
+    for (int attempt = 0; attempt < 16; ++attempt) {
+        std::string candidate = path + ".tmp-";
+        for (int i = 0; i < 6; ++i)
+            candidate += kDigits[digit(generator)];
+        std::error_code ec;
+        if (!std::filesystem::exists(candidate, ec))
+            return candidate;
+    }
+    return path + ".tmp-" + std::to_string(std::uniform_int_distribution<unsigned>()(generator));
+}
+
+} // namespace
+
+Image::Image(int width, int height, glm::vec4 fill)
+    : m_width(std::max(width, 0))
+    , m_height(std::max(height, 0))
+{
+    Q_ASSERT(width >= 0 && height >= 0);
+    m_pixels.assign(pixelCount(), fill);
+}
+
+void Image::toLinear()
+{
+    if (m_encoding == ColorEncoding::Linear)
+        return;
+    for (glm::vec4& pixel : m_pixels) {
+        pixel.x = srgbToLinear(pixel.x);
+        pixel.y = srgbToLinear(pixel.y);
+        pixel.z = srgbToLinear(pixel.z);
+    }
+    m_encoding = ColorEncoding::Linear;
+}
+
+ImageLoadStats Image::sanitize()
+{
+    // Radiance is finite and non-negative; everything downstream (prefiltering, SH projection,
+    // importance sampling, the half-float GPU copy) assumes it. Negative values come from
+    // lossy EXR compression ringing around bright suns (DWAA/DWAB), NaN/Inf from broken
+    // renders; a single one would spread over a whole prefiltered mip level.
+    ImageLoadStats stats;
+    for (glm::vec4& pixel : m_pixels) {
+        for (int c = 0; c < 3; ++c) {
+            float& value = pixel[c];
+            if (std::isnan(value)) {
+                value = 0.0f;
+                ++stats.nanCount;
+            } else if (std::isinf(value)) {
+                value = value > 0.0f ? kLargestHalf : 0.0f;
+                ++stats.infCount;
+            } else if (value < 0.0f) {
+                value = 0.0f;
+                ++stats.negativeCount;
+            }
+        }
+        // Alpha is a coverage in [0,1]: NaN means nothing sensible, so opaque; Inf and negative
+        // values are counted like colour, values just above 1 (filtering overshoot) are clamped
+        // without a count.
+        float& alpha = pixel.w;
+        if (std::isnan(alpha)) {
+            alpha = 1.0f;
+            ++stats.nanCount;
+        } else {
+            if (std::isinf(alpha))
+                ++stats.infCount;
+            else if (alpha < 0.0f)
+                ++stats.negativeCount;
+            alpha = std::clamp(alpha, 0.0f, 1.0f);
+        }
+    }
+    return stats;
+}
+
+std::optional<Image> Image::load(const std::string& path, std::string* error, ImageLoadStats* stats)
+{
+    constexpr const char* kFunction = "Image::load";
+    if (stats)
+        *stats = {};
+    try {
+        std::error_code ec;
+        const std::filesystem::file_status status = std::filesystem::status(path, ec);
+        if (status.type() == std::filesystem::file_type::not_found) {
+            setError(error, kFunction, path, "no such file");
+            return std::nullopt;
+        }
+        if (std::filesystem::is_directory(status)) {
+            setError(error, kFunction, path, "is a directory, not an image");
+            return std::nullopt;
+        }
+
+        // Leave unassociated alpha as the file stores it: OIIO would otherwise premultiply
+        // PNG/TIFF/TGA colour by alpha on read, and a base colour texture with a cut-out mask
+        // must keep its colour where alpha is 0.
+        OIIO::ImageSpec config;
+        config.attribute("oiio:UnassociatedAlpha", 1);
+        std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path, &config);
+        if (!input) {
+            setError(error, kFunction, path, OIIO::geterror());
+            return std::nullopt;
+        }
+        const OIIO::ImageSpec& spec = input->spec();
+
+        // Only the header has been read so far: check what it claims before allocating a
+        // single pixel, so a crafted or corrupt header cannot make us ask for terabytes.
+        if (spec.width <= 0 || spec.height <= 0) {
+            setError(error, kFunction, path,
+                "invalid size " + std::to_string(spec.width) + "x" + std::to_string(spec.height));
+            return std::nullopt;
+        }
+        if (spec.width > kMaxDimension || spec.height > kMaxDimension) {
+            setError(error, kFunction, path,
+                "image too large: " + std::to_string(spec.width) + "x" + std::to_string(spec.height)
+                    + " exceeds the limit of " + std::to_string(kMaxDimension) + " pixels per side");
+            return std::nullopt;
+        }
+        const std::size_t pixels = std::size_t(spec.width) * std::size_t(spec.height);
+        if (pixels > kMaxPixels) {
+            setError(error, kFunction, path,
+                "image too large: " + std::to_string(spec.width) + "x" + std::to_string(spec.height)
+                    + " exceeds the limit of " + std::to_string(kMaxPixels) + " pixels");
+            return std::nullopt;
+        }
+        if (spec.depth > 1) {
+            setError(error, kFunction, path,
+                "volume images (depth " + std::to_string(spec.depth) + ") are not supported");
+            return std::nullopt;
+        }
+        if (spec.nchannels <= 0) {
+            setError(error, kFunction, path, "image has no channels");
+            return std::nullopt;
+        }
+
+        Image image(spec.width, spec.height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        image.m_sourceChannels = spec.nchannels;
+        image.m_colorSpaceName = spec.get_string_attribute("oiio:ColorSpace");
+        image.m_encoding = encodingFor(image.m_colorSpaceName, spec.format);
+
+        // Read at most four channels straight into the RGBA pixels (the stride skips the rest),
+        // so a file with dozens of AOV channels costs no more memory than an RGBA one.
+        const int readChannels = std::min(spec.nchannels, 4);
+        const OIIO::stride_t xstride = sizeof(glm::vec4);
+        const OIIO::stride_t ystride = xstride * OIIO::stride_t(spec.width);
+        if (!input->read_image(
+                0, 0, 0, readChannels, OIIO::TypeDesc::FLOAT, image.data(), xstride, ystride)) {
+            std::string reason = input->geterror();
+            setError(
+                error, kFunction, path, reason.empty() ? std::string("could not read the pixels") : reason);
+            return std::nullopt;
+        }
+        input->close();
+
+        // Fill what the file does not have. Two channels are grey + alpha (what PNG and TIFF
+        // mean by two channels), unless they are named R and G (a two-channel EXR, e.g. a
+        // normal map's X and Y), which stay red and green.
+        const bool twoColourChannels = spec.nchannels == 2 && spec.channelnames.size() == 2
+            && spec.channelnames[0] == "R" && spec.channelnames[1] == "G";
+        for (glm::vec4& pixel : image.m_pixels) {
+            switch (spec.nchannels) {
+            case 1:
+                pixel = glm::vec4(pixel.x, pixel.x, pixel.x, 1.0f);
+                break;
+            case 2:
+                pixel = twoColourChannels ? glm::vec4(pixel.x, pixel.y, 0.0f, 1.0f)
+                                          : glm::vec4(pixel.x, pixel.x, pixel.x, pixel.y);
+                break;
+            case 3:
+                pixel.w = 1.0f;
+                break;
+            default:
+                break;
+            }
+        }
+
+        const ImageLoadStats replaced = image.sanitize();
+        if (stats)
+            *stats = replaced;
+        return image;
+    } catch (const std::bad_alloc&) {
+        setError(error, kFunction, path, "out of memory");
+    } catch (const std::exception& e) {
+        setError(error, kFunction, path, e.what());
+    } catch (...) {
+        setError(error, kFunction, path, "unknown error while reading");
+    }
+    return std::nullopt;
+}
+
+bool Image::save(const std::string& path, std::string* error, bool alpha) const
+{
+    constexpr const char* kFunction = "Image::save";
+    if (isEmpty()) {
+        setError(error, kFunction, path, "the image is empty");
+        return false;
+    }
+    std::string temporary;
+    const auto removeTemporary = [&temporary] {
+        if (!temporary.empty()) {
+            std::error_code ignored;
+            std::filesystem::remove(temporary, ignored);
+        }
+    };
+    try {
+        // The writer is chosen by the final name's extension; it then writes to the temporary
+        // name, whose ".tmp-XXXXXX" suffix no writer looks at.
+        std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
+        if (!output) {
+            setError(error, kFunction, path, OIIO::geterror());
+            return false;
+        }
+        const std::string formatName = output->format_name();
+        const bool isExr = formatName == "openexr";
+        // Formats that store floats and nothing else; everything else gets 8 bits.
+        const bool isFloatOnly = formatName == "hdr" || formatName == "pfm";
+        const bool writeAlpha = alpha && output->supports("alpha");
+        const int channels = writeAlpha ? 4 : 3;
+        const OIIO::TypeDesc fileFormat = isExr ? OIIO::TypeDesc::HALF
+            : isFloatOnly                       ? OIIO::TypeDesc::FLOAT
+                                                : OIIO::TypeDesc::UINT8;
+
+        OIIO::ImageSpec spec(m_width, m_height, channels, fileFormat);
+        if (isExr || isFloatOnly) {
+            spec.attribute("oiio:ColorSpace", "Linear");
+        } else {
+            // The caller encoded the values; only an sRGB claim is written (an untagged PNG
+            // or JPEG is read as sRGB anyway, and a gAMA 1.0 chunk confuses viewers).
+            if (m_encoding == ColorEncoding::SRGB)
+                spec.attribute("oiio:ColorSpace", "sRGB");
+            // The colour values are not premultiplied: keep OIIO from dividing them by alpha.
+            spec.attribute("oiio:UnassociatedAlpha", 1);
+        }
+        if (isExr)
+            spec.attribute("compression", "zip");
+
+        // Convert to what the file can hold ourselves, so nothing depends on OIIO's choices:
+        // finite values beyond the half range would become Inf in an EXR, and 8-bit files
+        // hold [0,1] (NaN stored as 0).
+        std::vector<float> buffer(pixelCount() * std::size_t(channels));
+        for (std::size_t i = 0; i < pixelCount(); ++i) {
+            for (int c = 0; c < channels; ++c) {
+                float value = m_pixels[i][c];
+                if (isExr)
+                    value = std::isnan(value) ? value : std::clamp(value, -kLargestHalf, kLargestHalf);
+                else if (!isFloatOnly)
+                    value = std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, 1.0f);
+                buffer[i * std::size_t(channels) + std::size_t(c)] = value;
+            }
+        }
+
+        temporary = temporaryPathFor(path);
+        if (!output->open(temporary, spec)) {
+            const std::string reason = output->geterror();
+            removeTemporary();
+            setError(error, kFunction, path, "cannot write: " + reason);
+            return false;
+        }
+        const bool written = output->write_image(OIIO::TypeDesc::FLOAT, buffer.data());
+        std::string reason = written ? std::string() : output->geterror();
+        const bool closed = output->close();
+        if (reason.empty() && !closed)
+            reason = output->geterror();
+        if (!written || !closed) {
+            removeTemporary();
+            setError(error, kFunction, path, "write failed: " + reason);
+            return false;
+        }
+        output.reset();
+
+        std::error_code ec;
+        std::filesystem::rename(temporary, path, ec);
+        if (ec) {
+            removeTemporary();
+            setError(error, kFunction, path, "cannot replace the file: " + ec.message());
+            return false;
+        }
+        return true;
+    } catch (const std::bad_alloc&) {
+        setError(error, kFunction, path, "out of memory");
+    } catch (const std::exception& e) {
+        setError(error, kFunction, path, e.what());
+    } catch (...) {
+        setError(error, kFunction, path, "unknown error while writing");
+    }
+    removeTemporary();
+    return false;
+}
+
+} // namespace facet
