@@ -24,7 +24,9 @@ struct Parser {
     {
         parser.setApplicationDescription(
             QStringLiteral("Facet authors and previews physically based materials.\n"
-                           "With no command it opens the main window, on PROJECT.json if given."));
+                           "With no command it opens the main window, on PROJECT.json if given.\n"
+                           "Commands (each has --help):\n"
+                           "  render   render a project to an EXR or PNG without a display"));
         // Our own -h/-v instead of addHelpOption(): its --help-all lists Qt options that this
         // parser, running before QApplication, does not accept.
         parser.addOption(help);
@@ -44,6 +46,12 @@ const QStringList& CommandLine::commandNames()
     return names;
 }
 
+const QStringList& CommandLine::availableCommandNames()
+{
+    static const QStringList names = {QStringLiteral("render")};
+    return names;
+}
+
 QString CommandLine::helpText()
 {
     Parser p;
@@ -60,8 +68,13 @@ CommandLine CommandLine::parse(const QStringList& arguments)
     // A command is the first argument after the program (`facet render --size 512 ...`), so that
     // its own options are its parser's business, not this one's.
     if (arguments.size() > 1 && commandNames().contains(arguments.at(1))) {
-        result.action = Action::Unavailable;
         result.command = arguments.at(1);
+        if (availableCommandNames().contains(result.command)) {
+            result.action = Action::Command;
+            result.commandArguments = arguments.mid(2);
+        } else {
+            result.action = Action::Unavailable;
+        }
         return result;
     }
 
@@ -85,8 +98,14 @@ CommandLine CommandLine::parse(const QStringList& arguments)
     // said that what follows are file names.
     if (!positional.isEmpty() && commandNames().contains(positional.first())
         && !arguments.contains(QStringLiteral("--"))) {
-        result.action = Action::Unavailable;
+        // Options before a command belong to the GUI's parser: say so rather than guess.
         result.command = positional.first();
+        if (availableCommandNames().contains(result.command)) {
+            result.action = Action::Error;
+            result.error = QStringLiteral("'%1' must come first: facet %1 [options]").arg(result.command);
+        } else {
+            result.action = Action::Unavailable;
+        }
         return result;
     }
     if (positional.size() > 1) {

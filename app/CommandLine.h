@@ -3,8 +3,8 @@
 // and every error work on a machine without a display server.
 //
 //   facet [--screenshot FILE.png] [PROJECT.json]   the GUI (the default)
-//   facet <command> ...                             a headless command (render, sheet, bake,
-//                                                   export, bench: none in this version)
+//   facet <command> ...                             a headless command (render; sheet, bake,
+//                                                   export and bench are not in this version)
 
 #include <QString>
 #include <QStringList>
@@ -16,6 +16,7 @@ struct CommandLine {
         Gui, // open the main window
         ShowHelp, // print helpText() to stdout, exit 0
         ShowVersion, // print "facet <version>" to stdout, exit 0
+        Command, // `command` is a headless command this version has; `commandArguments` follow it
         Unavailable, // `command` names a command this version does not have: exit 2
         Error, // `error` says what is wrong: exit 2
     };
@@ -23,7 +24,8 @@ struct CommandLine {
     Action action = Action::Gui;
     QString projectPath; // Gui: the project to open; empty for none
     QString screenshotPath; // Gui: save a grab of the window here after its first frame, then quit
-    QString command; // Unavailable: the command asked for
+    QString command; // Command, Unavailable: the command asked for
+    QStringList commandArguments; // Command: the arguments after the command's name
     QString error; // Error: e.g. "Unknown option 'bogus'."
 
     // `arguments` as QCoreApplication::arguments() would give them: the program first.
@@ -31,6 +33,8 @@ struct CommandLine {
     static QString helpText();
     // The headless commands of the design (shared/DESIGN.md), whether this version has them or not.
     static const QStringList& commandNames();
+    // Those this version has.
+    static const QStringList& availableCommandNames();
 };
 
 } // namespace facet

@@ -1,8 +1,9 @@
-// facet: the GUI by default; headless commands (render, sheet, bake, export, bench) arrive in
-// later versions. The command line is parsed before any Q*Application exists, so --help, --version
+// facet: the GUI by default; headless commands: render (sheet, bake, export and bench are not in
+// this version). The command line is parsed before any Q*Application exists, so --help, --version
 // and errors need no display server; QApplication is made only for the GUI.
 
 #include "CommandLine.h"
+#include "RenderCommand.h"
 #include "WindowScreenshot.h"
 
 #include "ui/MainWindow.h"
@@ -85,6 +86,23 @@ int main(int argc, char* argv[])
         std::printf("%s %s\n", qPrintable(QCoreApplication::applicationName()),
             qPrintable(QCoreApplication::applicationVersion()));
         return 0;
+    case facet::CommandLine::Action::Command: {
+        // Only `render` exists so far (CommandLine::availableCommandNames()).
+        QString error;
+        int exitCode = 0;
+        const auto request = facet::RenderCommand::parse(commandLine.commandArguments, &error, &exitCode);
+        if (!request) {
+            if (exitCode == 0) { // --help
+                std::fputs(qPrintable(error), stdout);
+                return 0;
+            }
+            std::fprintf(stderr, "facet render: %s\n", qPrintable(error));
+            if (exitCode == facet::RenderCommand::kExitUsage)
+                std::fputs("Try 'facet render --help' for more information.\n", stderr);
+            return exitCode;
+        }
+        return facet::RenderCommand::run(*request);
+    }
     case facet::CommandLine::Action::Unavailable:
         std::fprintf(
             stderr, "facet: '%s' is not available in this version\n", qPrintable(commandLine.command));

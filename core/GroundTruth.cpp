@@ -11,6 +11,7 @@
 
 #include "core/Brdf.h"
 #include "core/EnvironmentSampler.h"
+#include "core/Project.h"
 #include "core/Parallel.h"
 #include "core/Punctual.h"
 #include "core/ReferenceView.h"
@@ -222,6 +223,44 @@ Image renderGroundTruth(const GroundTruthScene& scene, const GroundTruthSettings
         stats->samples = hits * std::uint64_t(settings.samplesPerPixel) * 2u;
     }
     return image;
+}
+
+} // namespace facet
+
+namespace facet {
+
+std::optional<GroundTruthScene> groundTruthSceneFromProject(const Project& project, std::string* error,
+                                                            std::string* warning)
+{
+    const Material& material = project.material;
+    for (MapSlot slot : kAllMapSlots) {
+        if (material.map(slot).hasTexture()) {
+            if (error)
+                *error = std::string("groundTruthSceneFromProject: the ground truth renders constant materials only, "
+                                     "but the ")
+                    + toString(slot) + " map uses '" + material.map(slot).path + "'";
+            return std::nullopt;
+        }
+    }
+    GroundTruthScene scene;
+    const glm::dvec4 base = material.baseColorFactor();
+    scene.material.baseColor = glm::dvec3(base);
+    scene.material.metallic = material.metallic();
+    scene.material.perceptualRoughness = material.roughness();
+    scene.material.ior = material.ior;
+    scene.model = material.shading;
+    std::string environmentError;
+    auto environment = Environment::fromSpec(project.environment.source, &environmentError, warning);
+    if (!environment) {
+        if (error)
+            *error = environmentError;
+        return std::nullopt;
+    }
+    environment->setRotationDegrees(project.environment.rotationDegrees);
+    environment->setIntensity(project.environment.intensity);
+    scene.environment = std::move(*environment);
+    scene.lights = project.lights;
+    return scene;
 }
 
 } // namespace facet

@@ -16,6 +16,8 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "core/Environment.h"
@@ -66,5 +68,18 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
                                      const class EnvironmentSampler& sampler, const glm::dvec3& n,
                                      const glm::dvec3& v, int samples, std::uint64_t seed, std::uint64_t stream,
                                      GroundTruthSettings::Lobes lobes = GroundTruthSettings::Lobes::Material);
+
+} // namespace facet
+
+namespace facet {
+
+struct Project;
+
+// The ground-truth scene for a project: its material's constant inputs (factors, IOR, shading
+// model), its environment (Environment::fromSpec of the project's source, with rotation and
+// intensity) and its lights. The integrator renders the reference sphere with constant inputs:
+// a material with texture maps is refused with a message saying so.
+std::optional<GroundTruthScene> groundTruthSceneFromProject(const Project& project, std::string* error,
+                                                            std::string* warning = nullptr);
 
 } // namespace facet

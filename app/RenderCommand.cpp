@@ -1,0 +1,332 @@
+#include "RenderCommand.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+#include <QFileInfo>
+
+#include "core/GroundTruth.h"
+#include "core/Image.h"
+#include "core/MaterialPresets.h"
+#include "core/ToneMap.h"
+
+namespace facet {
+
+namespace {
+
+constexpr int kMaxImageSide = 16384;
+constexpr int kMaxSamplesPerPixel = 1 << 20;
+
+struct Options {
+    QCommandLineParser parser;
+    QCommandLineOption help{{QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Displays this help.")};
+    QCommandLineOption env{QStringLiteral("env"),
+                           QStringLiteral("Environment: an image path, a built-in name (studio, sky) or "
+                                          "uniform:VALUE / uniform:R,G,B."),
+                           QStringLiteral("spec")};
+    QCommandLineOption material{QStringLiteral("material"), QStringLiteral("A built-in material preset (e.g. gold)."),
+                                QStringLiteral("preset")};
+    QCommandLineOption baseColor{QStringLiteral("base-color"), QStringLiteral("Linear base colour r,g,b in [0, 1]."),
+                                 QStringLiteral("r,g,b")};
+    QCommandLineOption metallic{QStringLiteral("metallic"), QStringLiteral("Metallic in [0, 1]."), QStringLiteral("m")};
+    QCommandLineOption roughness{QStringLiteral("roughness"), QStringLiteral("Perceptual roughness in [0, 1]."),
+                                 QStringLiteral("r")};
+    QCommandLineOption brdf{QStringLiteral("brdf"), QStringLiteral("BRDF composition: gltf or learnopengl."),
+                            QStringLiteral("name")};
+    QCommandLineOption multiScatter{QStringLiteral("multiscatter"),
+                                    QStringLiteral("Multiple-scattering energy compensation: on or off."),
+                                    QStringLiteral("on|off")};
+    QCommandLineOption mesh{QStringLiteral("mesh"), QStringLiteral("A built-in mesh name or a mesh file."),
+                            QStringLiteral("name|path")};
+    QCommandLineOption view{QStringLiteral("view"), QStringLiteral("Debug view name (none: the shaded image)."),
+                            QStringLiteral("name")};
+    QCommandLineOption size{QStringLiteral("size"), QStringLiteral("Image size, e.g. 512x512."), QStringLiteral("WxH")};
+    QCommandLineOption referenceView{QStringLiteral("reference-view"),
+                                     QStringLiteral("Use DESIGN.md's reference camera (unit sphere, camera at "
+                                                    "(0,0,3), 45 degree FOV).")};
+    QCommandLineOption spp{QStringLiteral("spp"),
+                           QStringLiteral("Render with the CPU ground-truth integrator at N samples per pixel."),
+                           QStringLiteral("N")};
+    QCommandLineOption quality{QStringLiteral("quality"), QStringLiteral("IBL quality preset: draft, default, high."),
+                               QStringLiteral("preset")};
+    QCommandLineOption stats{QStringLiteral("stats"), QStringLiteral("Print timings and work counters.")};
+    QCommandLineOption output{{QStringLiteral("o"), QStringLiteral("output")},
+                              QStringLiteral("Output image: .exr (linear radiance) or .png (display-referred)."),
+                              QStringLiteral("file")};
+
+    Options()
+    {
+        parser.setApplicationDescription(QStringLiteral(
+            "Renders a project (or the built-in default) without a window or display server.\n"
+            "EXR output is linear scene radiance with no tone mapping; PNG goes through the project's "
+            "view transform. With --spp the CPU ground truth renders the reference view instead."));
+        for (const QCommandLineOption* option : {&help, &env, &material, &baseColor, &metallic, &roughness, &brdf,
+                                                 &multiScatter, &mesh, &view, &size, &referenceView, &spp, &quality,
+                                                 &stats, &output})
+            parser.addOption(*option);
+        parser.addPositionalArgument(QStringLiteral("project"), QStringLiteral("Project file (JSON)."),
+                                     QStringLiteral("[PROJECT.json]"));
+    }
+};
+
+// Parses a finite number in [low, high]; the message names the flag and the value.
+bool parseNumber(const QString& flag, const QString& text, double low, double high, double* out, QString* error)
+{
+    bool ok = false;
+    const double value = text.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(value)) {
+        *error = QStringLiteral("--%1: '%2' is not a number").arg(flag, text);
+        return false;
+    }
+    if (value < low || value > high) {
+        *error = QStringLiteral("--%1: %2 is outside [%3, %4]").arg(flag, text).arg(low).arg(high);
+        return false;
+    }
+    *out = value;
+    return true;
+}
+
+} // namespace
+
+QString RenderCommand::helpText()
+{
+    Options options;
+    QString text = options.parser.helpText();
+    text.replace(QStringLiteral("<executable_name>"), QStringLiteral("facet render"));
+    return text;
+}
+
+std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, QString* error, int* exitCode)
+{
+    *exitCode = kExitUsage;
+    Options o;
+    QStringList withProgram = arguments;
+    withProgram.prepend(QStringLiteral("facet render"));
+    if (!o.parser.parse(withProgram)) {
+        *error = o.parser.errorText();
+        return std::nullopt;
+    }
+    if (o.parser.isSet(o.help)) {
+        *exitCode = 0;
+        *error = helpText();
+        return std::nullopt;
+    }
+
+    RenderRequest request;
+    const QStringList positional = o.parser.positionalArguments();
+    if (positional.size() > 1) {
+        *error = QStringLiteral("too many arguments: expected at most one project file, got '%1'")
+                     .arg(positional.join(QStringLiteral("' '")));
+        return std::nullopt;
+    }
+    if (!o.parser.isSet(o.output)) {
+        *error = QStringLiteral("-o OUT.exr or -o OUT.png is required");
+        return std::nullopt;
+    }
+    request.outputPath = o.parser.value(o.output).toStdString();
+    const QString suffix = QFileInfo(o.parser.value(o.output)).suffix().toLower();
+    if (suffix != QStringLiteral("exr") && suffix != QStringLiteral("png")) {
+        *error = QStringLiteral("-o '%1': the output must be .exr (linear radiance) or .png (display-referred)")
+                     .arg(o.parser.value(o.output));
+        return std::nullopt;
+    }
+
+    // The project: the file, or the built-in default.
+    if (!positional.isEmpty()) {
+        std::string loadError;
+        std::string warning;
+        auto project = Project::load(positional.first().toStdString(), &loadError, &warning);
+        if (!project) {
+            *error = QString::fromStdString(loadError);
+            *exitCode = kExitFailure;
+            return std::nullopt;
+        }
+        if (!warning.empty())
+            std::fprintf(stderr, "facet render: %s\n", warning.c_str());
+        request.project = std::move(*project);
+    } else {
+        request.project = Project::defaultProject();
+    }
+    Project& project = request.project;
+
+    if (o.parser.isSet(o.env))
+        project.environment.source = o.parser.value(o.env).toStdString();
+    if (o.parser.isSet(o.material)) {
+        const QString id = o.parser.value(o.material);
+        const MaterialPreset* preset = findPreset(id.toStdString());
+        if (!preset) {
+            QStringList ids;
+            for (const MaterialPreset& p : builtinPresets())
+                ids.append(QString::fromStdString(p.id));
+            *error = QStringLiteral("--material: no preset '%1' (built-in: %2)").arg(id, ids.join(QStringLiteral(", ")));
+            return std::nullopt;
+        }
+        const ShadingModel shading = project.material.shading;
+        project.material = preset->material;
+        project.material.shading = shading;
+    }
+    if (o.parser.isSet(o.baseColor)) {
+        const QStringList parts = o.parser.value(o.baseColor).split(QLatin1Char(','));
+        if (parts.size() != 3) {
+            *error = QStringLiteral("--base-color: '%1' is not r,g,b").arg(o.parser.value(o.baseColor));
+            return std::nullopt;
+        }
+        glm::dvec3 rgb;
+        for (int i = 0; i < 3; ++i)
+            if (!parseNumber(QStringLiteral("base-color"), parts[i], 0.0, 1.0, &rgb[i], error))
+                return std::nullopt;
+        project.material.setBaseColor(rgb, project.material.baseColorFactor().a);
+    }
+    double value = 0.0;
+    if (o.parser.isSet(o.metallic)) {
+        if (!parseNumber(QStringLiteral("metallic"), o.parser.value(o.metallic), 0.0, 1.0, &value, error))
+            return std::nullopt;
+        project.material.setFactor(MapSlot::Metallic, value);
+    }
+    if (o.parser.isSet(o.roughness)) {
+        if (!parseNumber(QStringLiteral("roughness"), o.parser.value(o.roughness), 0.0, 1.0, &value, error))
+            return std::nullopt;
+        project.material.setFactor(MapSlot::Roughness, value);
+    }
+    if (o.parser.isSet(o.brdf)) {
+        const QString name = o.parser.value(o.brdf);
+        const bool multiScatter = project.material.shading.multiScatter;
+        if (name == QStringLiteral("gltf"))
+            project.material.shading = ShadingModel{};
+        else if (name == QStringLiteral("learnopengl"))
+            project.material.shading = ShadingModel::learnOpenGL();
+        else {
+            *error = QStringLiteral("--brdf: '%1' is not gltf or learnopengl").arg(name);
+            return std::nullopt;
+        }
+        project.material.shading.multiScatter = multiScatter;
+    }
+    if (o.parser.isSet(o.multiScatter)) {
+        const QString state = o.parser.value(o.multiScatter);
+        if (state != QStringLiteral("on") && state != QStringLiteral("off")) {
+            *error = QStringLiteral("--multiscatter: '%1' is not on or off").arg(state);
+            return std::nullopt;
+        }
+        project.material.shading.multiScatter = state == QStringLiteral("on");
+    }
+    if (o.parser.isSet(o.mesh))
+        project.view.mesh = o.parser.value(o.mesh).toStdString();
+    if (o.parser.isSet(o.view))
+        project.view.debugView = o.parser.value(o.view).toStdString();
+    if (o.parser.isSet(o.quality)) {
+        const auto quality = iblQualityFromString(o.parser.value(o.quality).toStdString());
+        if (!quality) {
+            *error = QStringLiteral("--quality: '%1' is not draft, default or high").arg(o.parser.value(o.quality));
+            return std::nullopt;
+        }
+        project.environment.quality = *quality;
+    }
+    if (o.parser.isSet(o.size)) {
+        const QStringList parts = o.parser.value(o.size).toLower().split(QLatin1Char('x'));
+        bool okW = false;
+        bool okH = false;
+        const int w = parts.size() == 2 ? parts[0].toInt(&okW) : 0;
+        const int h = parts.size() == 2 ? parts[1].toInt(&okH) : 0;
+        if (!okW || !okH || w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide) {
+            *error = QStringLiteral("--size: '%1' is not WxH with 1 <= W, H <= %2")
+                         .arg(o.parser.value(o.size))
+                         .arg(kMaxImageSide);
+            return std::nullopt;
+        }
+        request.width = w;
+        request.height = h;
+    }
+    request.referenceView = o.parser.isSet(o.referenceView);
+    if (o.parser.isSet(o.spp)) {
+        bool ok = false;
+        const int spp = o.parser.value(o.spp).toInt(&ok);
+        if (!ok || spp < 1 || spp > kMaxSamplesPerPixel) {
+            *error = QStringLiteral("--spp: '%1' is not a whole number from 1 to %2")
+                         .arg(o.parser.value(o.spp))
+                         .arg(kMaxSamplesPerPixel);
+            return std::nullopt;
+        }
+        request.samplesPerPixel = spp;
+    }
+    request.printStats = o.parser.isSet(o.stats);
+
+    std::string problem;
+    if (!project.validate(&problem)) {
+        *error = QString::fromStdString(problem);
+        return std::nullopt;
+    }
+    *exitCode = 0;
+    return request;
+}
+
+namespace {
+
+// Writes linear radiance as EXR, or the display transform of it as PNG.
+bool writeOutput(const Image& radiance, const RenderRequest& request, std::string* error)
+{
+    const bool png = QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower() == QStringLiteral("png");
+    if (!png)
+        return radiance.save(request.outputPath, error, /*alpha=*/false);
+    Image display(radiance.width(), radiance.height());
+    for (int y = 0; y < radiance.height(); ++y)
+        for (int x = 0; x < radiance.width(); ++x) {
+            const glm::dvec3 c = tonemap::displayTransform(glm::dvec3(glm::vec3(radiance.at(x, y))), request.project.view);
+            display.at(x, y) = glm::vec4(glm::vec3(c), 1.0f);
+        }
+    display.setEncoding(ColorEncoding::SRGB);
+    return display.save(request.outputPath, error, /*alpha=*/false);
+}
+
+int runGroundTruth(const RenderRequest& request)
+{
+    const Project& project = request.project;
+    if (project.view.mesh != "sphere") {
+        std::fprintf(stderr, "facet render: --spp renders the reference sphere only, not mesh '%s'\n",
+                     project.view.mesh.c_str());
+        return RenderCommand::kExitUsage;
+    }
+    if (project.view.debugView != "none") {
+        std::fprintf(stderr, "facet render: --spp renders the shaded image only, not debug view '%s'\n",
+                     project.view.debugView.c_str());
+        return RenderCommand::kExitUsage;
+    }
+    std::string error;
+    std::string warning;
+    auto scene = groundTruthSceneFromProject(project, &error, &warning);
+    if (!warning.empty())
+        std::fprintf(stderr, "facet render: %s\n", warning.c_str());
+    if (!scene) {
+        std::fprintf(stderr, "facet render: %s\n", error.c_str());
+        return RenderCommand::kExitFailure;
+    }
+    GroundTruthSettings settings;
+    settings.width = request.width;
+    settings.height = request.height;
+    settings.samplesPerPixel = request.samplesPerPixel;
+    GroundTruthStats stats;
+    const Image image = renderGroundTruth(*scene, settings, &stats);
+    if (!writeOutput(image, request, &error)) {
+        std::fprintf(stderr, "facet render: %s\n", error.c_str());
+        return RenderCommand::kExitFailure;
+    }
+    if (request.printStats)
+        std::printf("renderer: ground truth (CPU)\nsize: %dx%d\nspp: %d\nsamples: %llu\ntime_ms: %.1f\n", request.width,
+                    request.height, request.samplesPerPixel, static_cast<unsigned long long>(stats.samples),
+                    stats.seconds * 1000.0);
+    return 0;
+}
+
+} // namespace
+
+int RenderCommand::run(const RenderRequest& request)
+{
+    if (request.samplesPerPixel > 0)
+        return runGroundTruth(request);
+    std::fprintf(stderr, "facet render: the GPU renderer is not available in this version; use --spp N for the "
+                         "CPU ground truth\n");
+    return kExitUsage;
+}
+
+} // namespace facet

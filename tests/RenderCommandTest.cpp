@@ -1,0 +1,233 @@
+// `facet render` as scripts drive it: the executable run with no display server, its output
+// images read back, its errors and exit codes.
+
+#include <QProcess>
+#include <QProcessEnvironment>
+#include <QTemporaryDir>
+#include <QtTest/QTest>
+
+#include <glm/geometric.hpp>
+
+#include "TestSupport.h"
+#include "core/GroundTruth.h"
+#include "core/MaterialPresets.h"
+#include "core/Project.h"
+#include "core/ReferenceView.h"
+
+using namespace facet;
+
+namespace {
+
+struct Result {
+    int exitCode = -1;
+    QString out;
+    QString err;
+};
+
+Result runFacet(const QStringList& arguments)
+{
+    QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.remove(QStringLiteral("DISPLAY"));
+    environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
+    process.setProcessEnvironment(environment);
+    process.start(QStringLiteral(FACET_EXECUTABLE), arguments);
+    Result result;
+    if (!process.waitForFinished(300000)) {
+        result.err = QStringLiteral("did not finish");
+        return result;
+    }
+    result.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    result.out = QString::fromUtf8(process.readAllStandardOutput());
+    result.err = QString::fromUtf8(process.readAllStandardError());
+    return result;
+}
+
+} // namespace
+
+class RenderCommandTest : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    QString path(const QString& name) const { return m_dir.filePath(name); }
+
+private Q_SLOTS:
+    // The white furnace through the command line: with compensation a white metal disappears.
+    void groundTruthWhiteFurnace()
+    {
+        const QString out = path(QStringLiteral("furnace.exr"));
+        const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--env"), QStringLiteral("uniform:1"),
+                                   QStringLiteral("--base-color"), QStringLiteral("1,1,1"), QStringLiteral("--metallic"),
+                                   QStringLiteral("1"), QStringLiteral("--roughness"), QStringLiteral("0.7"),
+                                   QStringLiteral("--multiscatter"), QStringLiteral("on"), QStringLiteral("--reference-view"),
+                                   QStringLiteral("--spp"), QStringLiteral("256"), QStringLiteral("--size"),
+                                   QStringLiteral("32x32"), QStringLiteral("--stats"), QStringLiteral("-o"), out});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY(r.out.contains(QStringLiteral("renderer: ground truth")));
+        QVERIFY(r.out.contains(QStringLiteral("time_ms:")));
+        std::string error;
+        const auto image = Image::load(out.toStdString(), &error);
+        QVERIFY2(image, error.c_str());
+        QCOMPARE(image->width(), 32);
+        QCOMPARE(image->height(), 32);
+        for (int y = 0; y < 32; ++y)
+            for (int x = 0; x < 32; ++x) {
+                const float value = image->at(x, y).g;
+                if (referenceview::isInteriorSpherePixel(x, y, 32, 32))
+                    QVERIFY2(std::abs(value - 1.0f) < 0.01f, qPrintable(QString::number(value)));
+                else if (!referenceview::intersectSphere(referenceview::rayDirection(x, y, 32, 32)))
+                    QCOMPARE(value, 1.0f); // the background is the environment
+            }
+    }
+
+    // The command renders exactly what core's integrator renders (up to EXR's half floats).
+    void matchesCoreIntegrator()
+    {
+        const QString out = path(QStringLiteral("gold.exr"));
+        const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--env"), QStringLiteral("sky"),
+                                   QStringLiteral("--material"), QStringLiteral("gold"), QStringLiteral("--roughness"),
+                                   QStringLiteral("0.3"), QStringLiteral("--spp"), QStringLiteral("16"),
+                                   QStringLiteral("--size"), QStringLiteral("24x24"), QStringLiteral("-o"), out});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        std::string error;
+        const auto image = Image::load(out.toStdString(), &error);
+        QVERIFY2(image, error.c_str());
+
+        Project project = Project::defaultProject();
+        project.environment.source = "sky";
+        const MaterialPreset* gold = findPreset("gold");
+        QVERIFY(gold);
+        const ShadingModel shading = project.material.shading;
+        project.material = gold->material;
+        project.material.shading = shading;
+        project.material.setFactor(MapSlot::Roughness, 0.3);
+        auto scene = groundTruthSceneFromProject(project, &error);
+        QVERIFY2(scene, error.c_str());
+        GroundTruthSettings settings;
+        settings.width = settings.height = 24;
+        settings.samplesPerPixel = 16;
+        const Image expected = renderGroundTruth(*scene, settings);
+        for (int y = 0; y < 24; ++y)
+            for (int x = 0; x < 24; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    const float e = expected.at(x, y)[c];
+                    QVERIFY2(std::abs(image->at(x, y)[c] - e) <= 1e-3f * (1.0f + e), // half precision
+                             qPrintable(QStringLiteral("(%1,%2): %3 vs %4").arg(x).arg(y).arg(image->at(x, y)[c]).arg(e)));
+                }
+    }
+
+    void pngIsDisplayReferred()
+    {
+        const QString out = path(QStringLiteral("shot.png"));
+        const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--spp"), QStringLiteral("4"),
+                                   QStringLiteral("--size"), QStringLiteral("16x16"), QStringLiteral("-o"), out});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        std::string error;
+        const auto image = Image::load(out.toStdString(), &error);
+        QVERIFY2(image, error.c_str());
+        QCOMPARE(image->encoding(), ColorEncoding::SRGB);
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x)
+                QVERIFY(image->at(x, y).r >= 0.0f && image->at(x, y).r <= 1.0f);
+    }
+
+    void projectFileIsRendered()
+    {
+        Project project = Project::defaultProject();
+        project.environment.source = "uniform:0.5";
+        project.material.setBaseColor(glm::dvec3(1.0));
+        project.material.setFactor(MapSlot::Metallic, 1.0);
+        const QString projectPath = path(QStringLiteral("p.json"));
+        std::string error;
+        QVERIFY2(project.save(projectPath.toStdString(), &error), error.c_str());
+        const QString out = path(QStringLiteral("p.exr"));
+        const Result r = runFacet({QStringLiteral("render"), projectPath, QStringLiteral("--spp"), QStringLiteral("64"),
+                                   QStringLiteral("--size"), QStringLiteral("16x16"), QStringLiteral("-o"), out});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        const auto image = Image::load(out.toStdString(), &error);
+        QVERIFY2(image, error.c_str());
+        QVERIFY(std::abs(image->at(8, 8).r - 0.5f) < 0.01f); // compensated white metal in a 0.5 furnace
+    }
+
+    void badInputGivesClearErrors_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("message");
+        const QString out = QStringLiteral("never-written.exr");
+        QTest::newRow("no output") << QStringList{QStringLiteral("render")} << 2 << QStringLiteral("-o OUT.exr");
+        QTest::newRow("bad extension") << QStringList{QStringLiteral("render"), QStringLiteral("-o"), QStringLiteral("x.jpg")}
+                                       << 2 << QStringLiteral("must be .exr");
+        QTest::newRow("roughness range") << QStringList{QStringLiteral("render"), QStringLiteral("--roughness"),
+                                                        QStringLiteral("1.5"), QStringLiteral("-o"), out}
+                                         << 2 << QStringLiteral("--roughness: 1.5 is outside [0, 1]");
+        QTest::newRow("metallic nan") << QStringList{QStringLiteral("render"), QStringLiteral("--metallic"),
+                                                     QStringLiteral("nan"), QStringLiteral("-o"), out}
+                                      << 2 << QStringLiteral("--metallic: 'nan' is not a number");
+        QTest::newRow("base colour") << QStringList{QStringLiteral("render"), QStringLiteral("--base-color"),
+                                                    QStringLiteral("1,1"), QStringLiteral("-o"), out}
+                                     << 2 << QStringLiteral("--base-color: '1,1' is not r,g,b");
+        QTest::newRow("size") << QStringList{QStringLiteral("render"), QStringLiteral("--size"), QStringLiteral("0x10"),
+                                             QStringLiteral("-o"), out}
+                              << 2 << QStringLiteral("--size: '0x10'");
+        QTest::newRow("spp") << QStringList{QStringLiteral("render"), QStringLiteral("--spp"), QStringLiteral("-3"),
+                                            QStringLiteral("-o"), out}
+                             << 2 << QStringLiteral("--spp: '-3'");
+        QTest::newRow("brdf") << QStringList{QStringLiteral("render"), QStringLiteral("--brdf"), QStringLiteral("phong"),
+                                             QStringLiteral("-o"), out}
+                              << 2 << QStringLiteral("--brdf: 'phong' is not gltf or learnopengl");
+        QTest::newRow("multiscatter") << QStringList{QStringLiteral("render"), QStringLiteral("--multiscatter"),
+                                                     QStringLiteral("maybe"), QStringLiteral("-o"), out}
+                                      << 2 << QStringLiteral("--multiscatter: 'maybe' is not on or off");
+        QTest::newRow("preset") << QStringList{QStringLiteral("render"), QStringLiteral("--material"),
+                                               QStringLiteral("unobtainium"), QStringLiteral("-o"), out}
+                                << 2 << QStringLiteral("no preset 'unobtainium'");
+        QTest::newRow("quality") << QStringList{QStringLiteral("render"), QStringLiteral("--quality"),
+                                                QStringLiteral("ultra"), QStringLiteral("-o"), out}
+                                 << 2 << QStringLiteral("--quality: 'ultra'");
+        QTest::newRow("missing project") << QStringList{QStringLiteral("render"), QStringLiteral("no-such.json"),
+                                                        QStringLiteral("-o"), out}
+                                         << 1 << QStringLiteral("no-such.json");
+        QTest::newRow("missing environment") << QStringList{QStringLiteral("render"), QStringLiteral("--env"),
+                                                            QStringLiteral("/no/such/env.exr"), QStringLiteral("--spp"),
+                                                            QStringLiteral("4"), QStringLiteral("-o"), out}
+                                             << 1 << QStringLiteral("/no/such/env.exr");
+        QTest::newRow("uniform garbage") << QStringList{QStringLiteral("render"), QStringLiteral("--env"),
+                                                        QStringLiteral("uniform:-1"), QStringLiteral("--spp"),
+                                                        QStringLiteral("4"), QStringLiteral("-o"), out}
+                                         << 1 << QStringLiteral("uniform:-1");
+        QTest::newRow("ground truth mesh") << QStringList{QStringLiteral("render"), QStringLiteral("--mesh"),
+                                                          QStringLiteral("cube"), QStringLiteral("--spp"),
+                                                          QStringLiteral("4"), QStringLiteral("-o"), out}
+                                           << 2 << QStringLiteral("reference sphere only");
+    }
+    void badInputGivesClearErrors()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(int, exitCode);
+        QFETCH(QString, message);
+        // Run inside the temporary directory so that nothing could be written anywhere else.
+        QStringList args = arguments;
+        for (QString& a : args)
+            if (a == QStringLiteral("never-written.exr"))
+                a = path(a);
+        const Result r = runFacet(args);
+        QCOMPARE(r.exitCode, exitCode);
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+        QVERIFY(r.err.startsWith(QStringLiteral("facet render: ")));
+        QVERIFY(r.out.isEmpty());
+        QVERIFY(!QFile::exists(path(QStringLiteral("never-written.exr"))));
+    }
+
+    void unwritableOutputFails()
+    {
+        const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--spp"), QStringLiteral("1"),
+                                   QStringLiteral("--size"), QStringLiteral("8x8"), QStringLiteral("-o"),
+                                   QStringLiteral("/no/such/dir/out.exr")});
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY2(r.err.contains(QStringLiteral("/no/such/dir/out.exr")), qPrintable(r.err));
+    }
+};
+
+QTEST_GUILESS_MAIN(RenderCommandTest)
+#include "RenderCommandTest.moc"
