@@ -1,0 +1,496 @@
+#include <epoxy/gl.h> // before any header that could pull in <GL/gl.h>
+
+#include "render/IblPrecompute.h"
+
+#include "core/IblDiskCache.h"
+#include "core/SphericalHarmonics.h"
+#include "render/ShaderProgram.h"
+
+#include <QtGlobal>
+
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+namespace facet {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+int mipChainLength(int size) { return std::bit_width(unsigned(std::max(size, 1))); }
+
+// The GL state the passes change, restored on scope exit so that a caller's renderer is not
+// disturbed (framebuffer, viewport, program, vertex array, unit 0's bindings, capabilities).
+class GLStateGuard {
+public:
+    GLStateGuard()
+    {
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &m_drawFramebuffer);
+        glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &m_readFramebuffer);
+        glGetIntegerv(GL_VIEWPORT, m_viewport);
+        glGetIntegerv(GL_CURRENT_PROGRAM, &m_program);
+        glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &m_vertexArray);
+        glGetIntegerv(GL_ACTIVE_TEXTURE, &m_activeTexture);
+        glActiveTexture(GL_TEXTURE0);
+        glGetIntegerv(GL_TEXTURE_BINDING_2D, &m_texture2D);
+        glGetIntegerv(GL_TEXTURE_BINDING_CUBE_MAP, &m_textureCube);
+        glGetIntegerv(GL_UNPACK_ALIGNMENT, &m_unpackAlignment);
+        glGetIntegerv(GL_PIXEL_UNPACK_BUFFER_BINDING, &m_unpackBuffer);
+        for (std::size_t i = 0; i < kCapabilities.size(); ++i) {
+            m_enabled[i] = glIsEnabled(kCapabilities[i]);
+            glDisable(kCapabilities[i]);
+        }
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    }
+    ~GLStateGuard()
+    {
+        for (std::size_t i = 0; i < kCapabilities.size(); ++i)
+            (m_enabled[i] ? glEnable : glDisable)(kCapabilities[i]);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(m_drawFramebuffer));
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(m_readFramebuffer));
+        glViewport(m_viewport[0], m_viewport[1], m_viewport[2], m_viewport[3]);
+        glUseProgram(GLuint(m_program));
+        glBindVertexArray(GLuint(m_vertexArray));
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, GLuint(m_texture2D));
+        glBindTexture(GL_TEXTURE_CUBE_MAP, GLuint(m_textureCube));
+        glActiveTexture(GLenum(m_activeTexture));
+        glPixelStorei(GL_UNPACK_ALIGNMENT, m_unpackAlignment);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, GLuint(m_unpackBuffer));
+    }
+    GLStateGuard(const GLStateGuard&) = delete;
+    GLStateGuard& operator=(const GLStateGuard&) = delete;
+
+private:
+    static constexpr std::array<GLenum, 5> kCapabilities = {GL_DEPTH_TEST, GL_BLEND, GL_SCISSOR_TEST, GL_CULL_FACE,
+                                                            GL_STENCIL_TEST};
+    GLint m_drawFramebuffer = 0, m_readFramebuffer = 0, m_viewport[4] = {}, m_program = 0, m_vertexArray = 0;
+    GLint m_activeTexture = GL_TEXTURE0, m_texture2D = 0, m_textureCube = 0, m_unpackAlignment = 4,
+          m_unpackBuffer = 0;
+    std::array<GLboolean, kCapabilities.size()> m_enabled {};
+};
+
+// An RGBA16F cubemap of `levels` levels, level 0 `size` wide; `data` (optional) gives each
+// level's 6 faces of half floats, faces in GL order.
+std::shared_ptr<GLTexture> makeCubemap(int size, int levels, const std::vector<const IblCacheLayer*>& data = {})
+{
+    auto texture = std::make_shared<GLTexture>(GLTexture::create(GL_TEXTURE_CUBE_MAP));
+    glBindTexture(GL_TEXTURE_CUBE_MAP, texture->id());
+    for (int level = 0; level < levels; ++level) {
+        const int s = std::max(size >> level, 1);
+        const IblCacheLayer* layer = std::size_t(level) < data.size() ? data[std::size_t(level)] : nullptr;
+        for (int face = 0; face < 6; ++face) {
+            const void* pixels = layer ? layer->half.data() + std::size_t(face) * std::size_t(s) * std::size_t(s) * 4
+                                       : nullptr;
+            glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), level, GL_RGBA16F, s, s, 0, GL_RGBA,
+                GL_HALF_FLOAT, pixels);
+        }
+    }
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BASE_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, levels - 1);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, wrap, GL_CLAMP_TO_EDGE);
+    return texture;
+}
+
+std::shared_ptr<GLTexture> makeDfgTexture(int size, const std::uint16_t* data = nullptr)
+{
+    auto texture = std::make_shared<GLTexture>(GLTexture::create(GL_TEXTURE_2D));
+    glBindTexture(GL_TEXTURE_2D, texture->id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, size, size, 0, GL_RGBA, GL_HALF_FLOAT, data);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return texture;
+}
+
+// Every level of a cubemap as cache layers (exact half floats).
+void appendCubemapLayers(const GLTexture& texture, int levels, std::vector<IblCacheLayer>& out)
+{
+    for (int level = 0; level < levels; ++level) {
+        IblCacheLayer layer;
+        layer.faces = 6;
+        layer.level = level;
+        for (int face = 0; face < 6; ++face) {
+            const std::vector<unsigned short> pixels
+                = readTextureLevelHalf(texture, face, level, &layer.width, &layer.height);
+            layer.half.insert(layer.half.end(), pixels.begin(), pixels.end());
+        }
+        out.push_back(std::move(layer));
+    }
+}
+
+std::string glErrorText(GLenum error)
+{
+    switch (error) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    default: return "GL error " + std::to_string(error);
+    }
+}
+
+} // namespace
+
+struct IblPrecompute::Programs {
+    ShaderProgram equirectToCube;
+    ShaderProgram prefilterCopy;
+    ShaderProgram prefilter;
+    ShaderProgram irradiance;
+    ShaderProgram dfg;
+};
+
+IblPrecompute::IblPrecompute(QString cacheDirectory, bool useDiskCache)
+    : m_cacheDirectory(cacheDirectory.isEmpty() ? IblDiskCache::defaultDirectory() : std::move(cacheDirectory))
+    , m_useDiskCache(useDiskCache)
+{
+}
+
+IblPrecompute::~IblPrecompute()
+{
+    m_memory.clear();
+    m_dfg.clear();
+    m_programs.reset();
+    if (m_vertexArray)
+        glDeleteVertexArrays(1, &m_vertexArray);
+    if (m_framebuffer)
+        glDeleteFramebuffers(1, &m_framebuffer);
+}
+
+void IblPrecompute::clearMemoryCache()
+{
+    m_memory.clear();
+    m_dfg.clear();
+}
+
+void IblPrecompute::warn(const std::string& message)
+{
+    m_lastWarning = message;
+    qWarning("%s", message.c_str());
+}
+
+bool IblPrecompute::ensurePrograms(std::string* error)
+{
+    if (m_programs)
+        return true;
+    auto programs = std::make_unique<Programs>();
+    const ShaderStageSource vertex {ShaderStageSource::Stage::Vertex, "ibl_fullscreen.vert"};
+    auto make = [&](ShaderProgram& out, const char* name, const char* fragment, std::vector<std::string> defines) {
+        std::optional<ShaderProgram> program = ShaderProgram::create(
+            name, {vertex, {ShaderStageSource::Stage::Fragment, fragment}}, defines, error);
+        if (!program)
+            return false;
+        out = std::move(*program);
+        return true;
+    };
+    if (!make(programs->equirectToCube, "iblEquirectToCube", "ibl_equirect_to_cube.frag", {})
+        || !make(programs->prefilterCopy, "iblPrefilterCopy", "ibl_prefilter.frag", {"PREFILTER_COPY"})
+        || !make(programs->prefilter, "iblPrefilter", "ibl_prefilter.frag", {})
+        || !make(programs->irradiance, "iblIrradiance", "ibl_irradiance.frag", {})
+        || !make(programs->dfg, "iblDfg", "ibl_dfg.frag", {})) {
+        if (error)
+            *error = "IblPrecompute::prepare: " + *error;
+        return false;
+    }
+    for (ShaderProgram* p : {&programs->equirectToCube, &programs->prefilterCopy, &programs->prefilter,
+                             &programs->irradiance})
+        p->setInt("uEnvironment", 0), p->setInt("uEquirect", 0);
+    m_programs = std::move(programs);
+    if (!m_vertexArray)
+        glGenVertexArrays(1, &m_vertexArray);
+    if (!m_framebuffer)
+        glGenFramebuffers(1, &m_framebuffer);
+    return true;
+}
+
+namespace {
+
+// Renders one full-viewport triangle into `level` of `face` (-1: a 2D texture) of `texture`.
+bool drawInto(const GLTexture& texture, int face, int level, int size, std::string* error)
+{
+    const GLenum target = face < 0 ? GLenum(GL_TEXTURE_2D) : GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, texture.id(), level);
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        if (error)
+            *error = "IblPrecompute::prepare: framebuffer incomplete (status " + std::to_string(status)
+                + ") rendering into level " + std::to_string(level);
+        return false;
+    }
+    glViewport(0, 0, size, size);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    return true;
+}
+
+} // namespace
+
+std::shared_ptr<const GLTexture> IblPrecompute::prepareDfg(const IblSettings& settings, IblStats* stats,
+                                                           std::string* error)
+{
+    const std::uint64_t key = IblDiskCache::key(0, settings.dfgHash());
+    if (const auto it = m_dfg.find(key); it != m_dfg.end())
+        return it->second;
+    const IblDiskCache disk(m_cacheDirectory);
+    if (m_useDiskCache) {
+        std::string warning;
+        const std::optional<IblCacheEntry> entry = disk.load(key, &warning);
+        if (!warning.empty())
+            warn(warning);
+        if (entry && entry->layers.size() == 1 && entry->layers[0].width == settings.dfgSize
+            && entry->layers[0].height == settings.dfgSize && entry->layers[0].format == IblCacheLayer::Format::Half) {
+            auto texture = makeDfgTexture(settings.dfgSize, entry->layers[0].half.data());
+            ++stats->cacheHitsDisk;
+            m_dfg[key] = texture;
+            return texture;
+        }
+        if (entry)
+            warn("IblDiskCache: " + disk.pathFor(key).toStdString() + ": unexpected layout; ignoring it");
+    }
+    const Clock::time_point start = Clock::now();
+    auto texture = makeDfgTexture(settings.dfgSize);
+    m_programs->dfg.use();
+    m_programs->dfg.setInt("uSize", settings.dfgSize);
+    m_programs->dfg.setInt("uSampleCount", settings.dfgSamples);
+    if (!drawInto(*texture, -1, 0, settings.dfgSize, error))
+        return nullptr;
+    glFinish();
+    stats->msDfg = msSince(start);
+    ++stats->passesRun;
+    m_dfg[key] = texture;
+    if (m_useDiskCache) {
+        IblCacheEntry entry;
+        IblCacheLayer layer;
+        layer.half = readTextureLevelHalf(*texture, 0, 0, &layer.width, &layer.height);
+        entry.layers.push_back(std::move(layer));
+        std::string storeError;
+        if (!disk.store(key, entry, &storeError))
+            warn(storeError);
+    }
+    return texture;
+}
+
+std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& environment, const IblSettings& requested,
+                                                          IblStats* statsOut, std::string* error)
+{
+    const Clock::time_point start = Clock::now();
+    IblStats localStats;
+    IblStats* stats = statsOut ? statsOut : &localStats;
+    *stats = IblStats {};
+    auto finish = [&](std::shared_ptr<const IblTextures> result) {
+        stats->msTotal = msSince(start);
+        return result;
+    };
+    if (environment.isEmpty()) {
+        if (error)
+            *error = "IblPrecompute::prepare: the environment has no image";
+        return nullptr;
+    }
+    const IblSettings settings = requested.sanitized();
+    const std::uint64_t key = IblDiskCache::key(environment.contentHash(), settings.hash());
+
+    // 1. Memory.
+    for (auto it = m_memory.begin(); it != m_memory.end(); ++it) {
+        if (it->first == key) {
+            m_memory.splice(m_memory.begin(), m_memory, it);
+            stats->cacheHitsMemory = 1;
+            return finish(m_memory.front().second);
+        }
+    }
+
+    GLStateGuard guard;
+    if (!ensurePrograms(error))
+        return nullptr;
+    glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer);
+    glBindVertexArray(m_vertexArray);
+    glActiveTexture(GL_TEXTURE0);
+    // Filtering across cube faces (the prefilter reads blurred levels, where the seams would show);
+    // global state, which the surface renderer wants too.
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+
+    auto result = std::make_shared<IblTextures>();
+    result->environmentSize = settings.cubeSize;
+    result->environmentMipLevels = mipChainLength(settings.cubeSize);
+    result->prefilteredSize = settings.prefilterSize;
+    result->prefilteredMipLevels = settings.prefilterMipLevels;
+    result->irradianceSize = settings.irradianceSize;
+    result->dfgSize = settings.dfgSize;
+
+    result->dfg = prepareDfg(settings, stats, error);
+    if (!result->dfg)
+        return nullptr;
+
+    // 2. Disk.
+    const IblDiskCache disk(m_cacheDirectory);
+    bool fromDisk = false;
+    if (m_useDiskCache) {
+        std::string warning;
+        const std::optional<IblCacheEntry> entry = disk.load(key, &warning);
+        if (!warning.empty())
+            warn(warning);
+        // Layout: environment levels 0..E-1, prefiltered levels 0..P-1, irradiance; extra = SH (27).
+        const int e = result->environmentMipLevels;
+        const int p = result->prefilteredMipLevels;
+        auto layoutMatches = [&](const IblCacheEntry& c) {
+            if (int(c.layers.size()) != e + p + 1 || c.extra.size() != 27)
+                return false;
+            for (int i = 0; i < e + p + 1; ++i) {
+                const IblCacheLayer& l = c.layers[std::size_t(i)];
+                const int base = i < e ? settings.cubeSize : i < e + p ? settings.prefilterSize : settings.irradianceSize;
+                const int level = i < e ? i : i < e + p ? i - e : 0;
+                if (l.faces != 6 || l.level != level || l.width != std::max(base >> level, 1) || l.width != l.height
+                    || l.format != IblCacheLayer::Format::Half)
+                    return false;
+            }
+            return true;
+        };
+        if (entry && !layoutMatches(*entry))
+            warn("IblDiskCache: " + disk.pathFor(key).toStdString() + ": unexpected layout; ignoring it");
+        else if (entry) {
+            std::vector<const IblCacheLayer*> envLayers, preLayers;
+            for (int i = 0; i < e; ++i)
+                envLayers.push_back(&entry->layers[std::size_t(i)]);
+            for (int i = 0; i < p; ++i)
+                preLayers.push_back(&entry->layers[std::size_t(e + i)]);
+            result->environment = makeCubemap(settings.cubeSize, e, envLayers);
+            result->prefiltered = makeCubemap(settings.prefilterSize, p, preLayers);
+            result->irradiance = makeCubemap(settings.irradianceSize, 1, {&entry->layers.back()});
+            for (std::size_t i = 0; i < 9; ++i)
+                result->irradianceSH[i] = glm::vec3(
+                    float(entry->extra[3 * i]), float(entry->extra[3 * i + 1]), float(entry->extra[3 * i + 2]));
+            ++stats->cacheHitsDisk;
+            fromDisk = true;
+        }
+    }
+
+    if (!fromDisk) {
+        // 3a. Equirect -> cubemap, then the mip chain (box filter) for the background and as the
+        // filtered source of the convolutions.
+        Clock::time_point passStart = Clock::now();
+        const Image& image = environment.image();
+        GLTexture equirect = GLTexture::create(GL_TEXTURE_2D);
+        glBindTexture(GL_TEXTURE_2D, equirect.id());
+        // Rows top first, as Image stores them: t = 0 is the image's top row (common_equirect.glsl).
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, image.width(), image.height(), 0, GL_RGBA, GL_FLOAT, image.data());
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        auto cube = makeCubemap(settings.cubeSize, result->environmentMipLevels);
+        m_programs->equirectToCube.use();
+        glBindTexture(GL_TEXTURE_2D, equirect.id());
+        for (int face = 0; face < 6; ++face) {
+            m_programs->equirectToCube.setInt("uFace", face);
+            if (!drawInto(*cube, face, 0, settings.cubeSize, error))
+                return nullptr;
+        }
+        glBindTexture(GL_TEXTURE_CUBE_MAP, cube->id());
+        glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+        glFinish();
+        stats->msEquirectToCube = msSince(passStart);
+        ++stats->passesRun;
+        result->environment = cube;
+
+        // 3b. Prefiltered specular: level 0 copies the environment, level i convolves with GGX
+        // of roughness i / (levels - 1) by filtered importance sampling.
+        passStart = Clock::now();
+        auto prefiltered = makeCubemap(settings.prefilterSize, settings.prefilterMipLevels);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, cube->id());
+        const float sourceMaxLod = float(result->environmentMipLevels - 1);
+        for (int level = 0; level < settings.prefilterMipLevels; ++level) {
+            const int size = std::max(settings.prefilterSize >> level, 1);
+            const ShaderProgram& program = level == 0 ? m_programs->prefilterCopy : m_programs->prefilter;
+            program.use();
+            program.setFloat("uRoughness", float(roughnessFromLod(level, settings.prefilterMipLevels)));
+            program.setInt("uSampleCount", settings.prefilterSamples);
+            program.setFloat("uSourceSize", float(settings.cubeSize));
+            program.setFloat("uSourceMaxLod", sourceMaxLod);
+            program.setFloat("uCopyLod",
+                float(std::max(0.0, std::log2(double(settings.cubeSize) / double(settings.prefilterSize)))));
+            for (int face = 0; face < 6; ++face) {
+                program.setInt("uFace", face);
+                if (!drawInto(*prefiltered, face, level, size, error))
+                    return nullptr;
+            }
+        }
+        glFinish();
+        stats->msPrefilter = msSince(passStart);
+        ++stats->passesRun;
+        result->prefiltered = prefiltered;
+
+        // 3c. Irradiance E(n): a quadrature over every texel of a small level of the cube.
+        passStart = Clock::now();
+        auto irradiance = makeCubemap(settings.irradianceSize, 1);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, cube->id());
+        // Source level: the largest whose 6 s^2 texels are at most irradianceSamples (at least
+        // 1x1), never finer than the cube's level 0.
+        int sourceLevel = 0;
+        while (sourceLevel + 1 < result->environmentMipLevels
+               && 6LL * (settings.cubeSize >> sourceLevel) * (settings.cubeSize >> sourceLevel) > settings.irradianceSamples)
+            ++sourceLevel;
+        m_programs->irradiance.use();
+        m_programs->irradiance.setInt("uSourceSize", std::max(settings.cubeSize >> sourceLevel, 1));
+        m_programs->irradiance.setFloat("uSourceLevel", float(sourceLevel));
+        for (int face = 0; face < 6; ++face) {
+            m_programs->irradiance.setInt("uFace", face);
+            if (!drawInto(*irradiance, face, 0, settings.irradianceSize, error))
+                return nullptr;
+        }
+        glFinish();
+        stats->msIrradiance = msSince(passStart);
+        ++stats->passesRun;
+        result->irradiance = irradiance;
+
+        // 3d. SH9 on the CPU, in the image frame at intensity 1 (rotation and intensity are
+        // applied at shading time, like every other IBL texture).
+        passStart = Clock::now();
+        Environment imageFrame = environment;
+        imageFrame.setRotationDegrees(0.0);
+        imageFrame.setIntensity(1.0);
+        const IrradianceSH9 sh = irradianceSHCoefficients(projectEquirect(imageFrame));
+        for (std::size_t i = 0; i < 9; ++i)
+            result->irradianceSH[i] = glm::vec3(sh.c[i]);
+        stats->msSh = msSince(passStart);
+
+        if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
+            if (error)
+                *error = "IblPrecompute::prepare: " + glErrorText(glError) + " during the passes";
+            return nullptr;
+        }
+        if (m_useDiskCache) {
+            IblCacheEntry entry;
+            appendCubemapLayers(*result->environment, result->environmentMipLevels, entry.layers);
+            appendCubemapLayers(*result->prefiltered, result->prefilteredMipLevels, entry.layers);
+            appendCubemapLayers(*result->irradiance, 1, entry.layers);
+            for (const glm::dvec3& c : sh.c)
+                entry.extra.insert(entry.extra.end(), {c.x, c.y, c.z});
+            std::string storeError;
+            if (!disk.store(key, entry, &storeError))
+                warn(storeError);
+        }
+    }
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
+
+    m_memory.emplace_front(key, result);
+    while (m_memory.size() > std::size_t(kMemoryEntries))
+        m_memory.pop_back();
+    return finish(result);
+}
+
+} // namespace facet

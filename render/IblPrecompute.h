@@ -1,0 +1,90 @@
+#pragma once
+// The image-based-lighting precompute on the GPU (OpenGL 4.1 core, fragment-shader passes that
+// render into cubemap faces and mip levels; no compute shaders). For an environment and
+// IblSettings it produces IblTextures: the environment cubemap, the prefiltered specular
+// cubemap, the irradiance cubemap, the DFG LUT and the SH9 irradiance coefficients.
+// docs/ibl.md has each pass's equations, the layouts, the cache and measured numbers; the CPU
+// twins are core/Prefilter.h, core/Irradiance.h, core/DfgTable.h, core/SphericalHarmonics.h.
+//
+// Everything is computed in the environment image's frame at intensity 1: rotation and intensity
+// are applied by the renderer at shading time, so changing them reruns nothing.
+//
+// Caching by content: results are keyed by (Environment::contentHash(), IblSettings::hash()),
+// kept in memory (the last kMemoryEntries) and on disk (core/IblDiskCache, $FACET_CACHE_DIR or
+// QStandardPaths::CacheLocation/ibl). The DFG LUT depends on the settings only and is cached
+// separately (memory and disk), shared by every environment's IblTextures.
+//
+// Threading and lifetime: every call needs the same GL context (or one sharing with it)
+// current; destroy the IblPrecompute and drop every IblTextures with it current.
+
+#include "core/Environment.h"
+#include "render/IblSettings.h"
+#include "render/IblTextures.h"
+
+#include <QString>
+
+#include <cstdint>
+#include <list>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace facet {
+
+// What one prepare() call did. Times in milliseconds, measured with glFinish() before reading
+// the clock at the end of each pass (GPU work is asynchronous: without it a pass would look free
+// and the next one would pay for it). A pass skipped thanks to a cache counts 0 ms.
+struct IblStats {
+    int passesRun = 0;       // GPU passes run: equirect->cube, prefilter, irradiance, DFG (0..4)
+    int cacheHitsMemory = 0; // 1 when the environment's textures came from the memory cache
+    int cacheHitsDisk = 0;   // environment entry and/or DFG LUT loaded from disk (0..2)
+    double msEquirectToCube = 0.0; // upload + resample + mip generation
+    double msPrefilter = 0.0;
+    double msIrradiance = 0.0;
+    double msDfg = 0.0;
+    double msSh = 0.0;             // SH9 projection on the CPU
+    double msTotal = 0.0;          // the whole call, including cache look-ups and disk I/O
+};
+
+class ShaderProgram;
+
+class IblPrecompute {
+public:
+    static constexpr int kMemoryEntries = 4;
+
+    // `cacheDirectory` empty: IblDiskCache::defaultDirectory(). `useDiskCache` false: memory only.
+    explicit IblPrecompute(QString cacheDirectory = {}, bool useDiskCache = true);
+    IblPrecompute(const IblPrecompute&) = delete;
+    IblPrecompute& operator=(const IblPrecompute&) = delete;
+    ~IblPrecompute(); // needs the context current
+
+    // Needs a current GL 4.1 core context. Returns the cached result when there is one. On
+    // failure returns null and sets `error` to "IblPrecompute::prepare: <problem>" (an empty
+    // environment, a shader that does not compile, an incomplete framebuffer, a GL error).
+    // `stats` (optional) is reset and filled.
+    std::shared_ptr<const IblTextures> prepare(const Environment& environment, const IblSettings& settings,
+                                               IblStats* stats, std::string* error);
+
+    // Drops the in-memory results (the disk cache stays): the next prepare() reads the disk.
+    void clearMemoryCache();
+    // The last warning (e.g. a corrupt disk-cache file that was ignored); also sent to qWarning().
+    const std::string& lastWarning() const { return m_lastWarning; }
+    const QString& cacheDirectory() const { return m_cacheDirectory; }
+
+private:
+    struct Programs;
+    bool ensurePrograms(std::string* error);
+    std::shared_ptr<const GLTexture> prepareDfg(const IblSettings& settings, IblStats* stats, std::string* error);
+    void warn(const std::string& message);
+
+    QString m_cacheDirectory;
+    bool m_useDiskCache = true;
+    std::unique_ptr<Programs> m_programs;
+    unsigned m_vertexArray = 0;
+    unsigned m_framebuffer = 0;
+    std::list<std::pair<std::uint64_t, std::shared_ptr<const IblTextures>>> m_memory; // most recent first
+    std::map<std::uint64_t, std::shared_ptr<const GLTexture>> m_dfg;
+    std::string m_lastWarning;
+};
+
+} // namespace facet

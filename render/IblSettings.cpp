@@ -1,0 +1,93 @@
+#include "render/IblSettings.h"
+
+#include <algorithm>
+#include <bit>
+
+namespace facet {
+
+namespace {
+
+std::uint64_t fnv1a(std::uint64_t hash, std::int32_t value)
+{
+    const auto bits = std::uint32_t(value);
+    for (int i = 0; i < 4; ++i) {
+        hash ^= (bits >> (8 * i)) & 0xffu;
+        hash *= 0x100000001b3ULL;
+    }
+    return hash;
+}
+
+constexpr std::uint64_t kFnvOffset = 0xcbf29ce484222325ULL;
+// Bumped whenever a pass's algorithm changes, so that old disk-cache files stop matching.
+constexpr std::int32_t kAlgorithmVersion = 1;
+
+int mipChainLength(int size) { return std::bit_width(unsigned(std::max(size, 1))); }
+
+} // namespace
+
+std::uint64_t IblSettings::hash() const
+{
+    std::uint64_t h = fnv1a(kFnvOffset, kAlgorithmVersion);
+    for (int v : {cubeSize, prefilterSize, prefilterMipLevels, prefilterSamples, irradianceSize, irradianceSamples,
+                  dfgSize, dfgSamples, int(irradiance)})
+        h = fnv1a(h, v);
+    return h;
+}
+
+std::uint64_t IblSettings::dfgHash() const
+{
+    std::uint64_t h = fnv1a(kFnvOffset, kAlgorithmVersion);
+    h = fnv1a(h, 0x44464700); // "DFG": a different key space from hash()
+    h = fnv1a(h, dfgSize);
+    return fnv1a(h, dfgSamples);
+}
+
+IblSettings IblSettings::sanitized() const
+{
+    IblSettings s = *this;
+    s.cubeSize = std::clamp(s.cubeSize, 1, 4096);
+    s.prefilterSize = std::clamp(s.prefilterSize, 1, 4096);
+    s.prefilterMipLevels = std::clamp(s.prefilterMipLevels, 1, mipChainLength(s.prefilterSize));
+    s.prefilterSamples = std::clamp(s.prefilterSamples, 1, 1 << 16);
+    s.irradianceSize = std::clamp(s.irradianceSize, 1, 1024);
+    s.irradianceSamples = std::clamp(s.irradianceSamples, 1, 1 << 16);
+    s.dfgSize = std::clamp(s.dfgSize, 2, 1024);
+    s.dfgSamples = std::clamp(s.dfgSamples, 1, 1 << 16);
+    return s;
+}
+
+// Initial numbers, sized for llvmpipe on 2 cores (shared/PLATFORM.md); `facet bench` is to move
+// them to the knee of its time/error curve (docs/ibl.md has the measured times).
+std::optional<IblSettings> IblSettings::preset(const std::string& name)
+{
+    IblSettings s;
+    if (name == "draft") {
+        s.cubeSize = 128;
+        s.prefilterSize = 64;
+        s.prefilterMipLevels = 5;
+        s.prefilterSamples = 64;
+        s.irradianceSize = 16;
+        s.irradianceSamples = 384; // 8x8 source texels a face
+        s.dfgSize = 32;
+        s.dfgSamples = 256;
+        return s;
+    }
+    if (name == "default")
+        return s; // the member initialisers above
+    if (name == "high") {
+        s.cubeSize = 512;
+        s.prefilterSize = 256;
+        s.prefilterMipLevels = 7;
+        s.prefilterSamples = 512;
+        s.irradianceSize = 32;
+        s.irradianceSamples = 6144; // 32x32 source texels a face
+        s.dfgSize = 64;
+        s.dfgSamples = 2048;
+        return s;
+    }
+    return std::nullopt;
+}
+
+std::vector<std::string> IblSettings::presetNames() { return {"draft", "default", "high"}; }
+
+} // namespace facet

@@ -1,0 +1,47 @@
+#pragma once
+// Quality settings of the IBL precompute (render/IblPrecompute.h). Every field changes the
+// result, so every field is part of hash(), the cache key (with the environment's content hash).
+// Rotation and intensity are NOT settings: they are applied at shading time, never baked.
+// docs/ibl.md lists the presets and their measured times and errors.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace facet {
+
+struct IblSettings {
+    enum class Irradiance {
+        SH,  // the surface shader evaluates the 9 SH coefficients (cheap, ~-30%/+25% off on studio)
+        Map, // the surface shader reads the irradiance cubemap (within a few % of brute force)
+    };
+
+    int cubeSize = 256;          // environment cubemap face size (level 0), full mip chain
+    int prefilterSize = 128;     // prefiltered specular face size of level 0
+    int prefilterMipLevels = 6;  // levels of the prefiltered cubemap (level i: roughness i / (levels - 1))
+    int prefilterSamples = 128;  // GGX samples per texel (filtered importance sampling)
+    int irradianceSize = 32;     // irradiance cubemap face size
+    // Source texels summed per irradiance texel: the pass sums every texel of the largest level of
+    // the environment cube that has at most this many (6 s^2; 1536 = 16x16 a face).
+    int irradianceSamples = 1536;
+    int dfgSize = 32;            // DFG LUT is dfgSize x dfgSize
+    int dfgSamples = 1024;       // VNDF samples per LUT texel
+    Irradiance irradiance = Irradiance::Map;
+
+    bool operator==(const IblSettings&) const = default;
+    // FNV-1a 64 over every field (as int32, little-endian order of declaration): stable across runs.
+    std::uint64_t hash() const;
+    // Only the fields the DFG LUT depends on (dfgSize, dfgSamples): the LUT is cached per this.
+    std::uint64_t dfgHash() const;
+
+    // Clamps every field into its valid range (sizes >= 1, levels within the size's mip chain,
+    // samples >= 1); prepare() works on the sanitised copy.
+    IblSettings sanitized() const;
+
+    // "draft", "default", "high"; nullopt for an unknown name.
+    static std::optional<IblSettings> preset(const std::string& name);
+    static std::vector<std::string> presetNames();
+};
+
+} // namespace facet

@@ -1,0 +1,72 @@
+#pragma once
+// What the surface shader consumes from the IBL precompute (render/IblPrecompute.h). A plain
+// struct of shared, immutable GL textures: IblPrecompute's cache and any number of renderers may
+// hold the same IblTextures (std::shared_ptr<const IblTextures>); the textures are deleted when
+// the last holder lets go, which must happen with the GL context current. The DFG LUT depends on
+// the settings only, so IblTextures of different environments share one.
+//
+// Everything is in the environment IMAGE's frame, unrotated, at intensity 1: the renderer turns
+// a world lookup direction into the image frame (Environment::toImageFrame, a rotation about +Y)
+// and multiplies by Environment::intensity() at shading time. docs/ibl.md has the equations.
+
+#include "render/GLTexture.h"
+
+#include <glm/vec3.hpp>
+
+#include <algorithm>
+#include <array>
+#include <memory>
+
+namespace facet {
+
+struct IblTextures {
+    // GL_TEXTURE_CUBE_MAP, RGBA16F, environment radiance, cubeSize^2 per face, full mip chain
+    // (glGenerateMipmap: box-filtered) for the background and blurred backgrounds.
+    std::shared_ptr<const GLTexture> environment;
+    int environmentSize = 0;
+    int environmentMipLevels = 0;
+
+    // GL_TEXTURE_CUBE_MAP, RGBA16F, prefiltered specular radiance (split-sum first factor,
+    // Karis 2013, n = v = r). Level i, of size prefilterSize >> i, holds perceptual roughness
+    // i / (levels - 1): read it at lodFromRoughness(r, levels) with LINEAR_MIPMAP_LINEAR.
+    // Level 0 (roughness 0) is the environment itself, resampled to prefilterSize.
+    std::shared_ptr<const GLTexture> prefiltered;
+    int prefilteredSize = 0;
+    int prefilteredMipLevels = 0;
+
+    // GL_TEXTURE_CUBE_MAP, RGBA16F, IRRADIANCE E(n) = integral L(w) max(0, n.w) dw (radiance x sr,
+    // NOT divided by pi: a uniform environment L gives pi L). Diffuse radiance = albedo / pi * E.
+    // One level, LINEAR. Present whatever IblSettings::irradiance says (it is cheap).
+    std::shared_ptr<const GLTexture> irradiance;
+    int irradianceSize = 0;
+
+    // GL_TEXTURE_2D, RGBA16F, dfgSize^2: R = scale, G = bias, B = scale + bias (core/DfgTable.h),
+    // x = n.v, y = perceptual roughness; texel i holds the value at i / (N - 1), row 0 (t = 0)
+    // is roughness 0. LINEAR, CLAMP_TO_EDGE; read it at dfgTexCoord(n.v, r, N).
+    std::shared_ptr<const GLTexture> dfg;
+    int dfgSize = 0;
+
+    // SH9 irradiance coefficients, premultiplied by the cosine-lobe A_l (core/SphericalHarmonics.h
+    // IrradianceSH9), in the image frame: uniform vec3 uIrradianceSH[9] of irradianceSH(n), which
+    // gives E(n) (not divided by pi) like the irradiance map.
+    std::array<glm::vec3, 9> irradianceSH {};
+
+    unsigned environmentCubemap() const { return environment ? environment->id() : 0; }
+    unsigned prefilteredCubemap() const { return prefiltered ? prefiltered->id() : 0; }
+    unsigned irradianceCubemap() const { return irradiance ? irradiance->id() : 0; }
+    unsigned dfgLut() const { return dfg ? dfg->id() : 0; }
+};
+
+// Level of the prefiltered cubemap for a perceptual roughness; GLSL twin of the same name in
+// resources/shaders/ibl_lookup.glsl.
+inline float lodFromRoughness(float perceptualRoughness, float mipLevels)
+{
+    return std::clamp(perceptualRoughness, 0.0f, 1.0f) * (mipLevels - 1.0f);
+}
+// Perceptual roughness stored in level `level` of `mipLevels` (the inverse of lodFromRoughness).
+inline double roughnessFromLod(int level, int mipLevels)
+{
+    return mipLevels > 1 ? double(level) / double(mipLevels - 1) : 0.0;
+}
+
+} // namespace facet

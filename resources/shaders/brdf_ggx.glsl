@@ -1,0 +1,5 @@
+// Every BRDF term of core/Brdf.h: include this, or only the chunk a shader needs.
+#include "brdf_common.glsl"
+#include "brdf_distribution.glsl"
+#include "brdf_visibility.glsl"
+#include "brdf_fresnel.glsl"

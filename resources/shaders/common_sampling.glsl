@@ -1,0 +1,98 @@
+// Sample generation and importance sampling: GLSL twins of core/Sampling.h (same names, same
+// formulas, in float). Tangent space has the normal along +Z.
+#include "common_math.glsl"
+
+// Van der Corput radical inverse in base 2 (bits mirrored about the binary point).
+float radicalInverse(uint bits)
+{
+    bits = (bits << 16u) | (bits >> 16u);
+    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+    return float(bits) * 2.3283064365386963e-10; // / 2^32
+}
+
+// The i-th of n Hammersley points [Hammersley & Handscomb 1964].
+vec2 hammersley(uint i, uint n) { return vec2(float(i) / float(n), radicalInverse(i)); }
+
+// Orthonormal basis around unit n [Duff et al. 2017].
+void buildOrthonormalBasis(vec3 n, out vec3 t, out vec3 b)
+{
+    float s = n.z >= 0.0 ? 1.0 : -1.0;
+    float a = -1.0 / (s + n.z);
+    float c = n.x * n.y * a;
+    t = vec3(1.0 + s * n.x * n.x * a, s * c, -s * n.x);
+    b = vec3(c, s + n.y * n.y * a, -n.y);
+}
+vec3 tangentToWorld(vec3 v, vec3 t, vec3 b, vec3 n) { return v.x * t + v.y * b + v.z * n; }
+
+// 2 (v.h) h - v.
+vec3 reflectAbout(vec3 v, vec3 h) { return 2.0 * dot(v, h) * h - v; }
+
+// Cosine-weighted hemisphere through the concentric disk mapping [Shirley & Chiu 1997];
+// pdf = cos(theta) / pi.
+vec3 sampleCosineHemisphere(vec2 u)
+{
+    float sx = 2.0 * u.x - 1.0;
+    float sy = 2.0 * u.y - 1.0;
+    float r = 0.0;
+    float phi = 0.0;
+    if (sx != 0.0 || sy != 0.0) {
+        if (abs(sx) > abs(sy)) {
+            r = sx;
+            phi = (PI / 4.0) * (sy / sx);
+        } else {
+            r = sy;
+            phi = (PI / 2.0) - (PI / 4.0) * (sx / sy);
+        }
+    }
+    float x = r * cos(phi);
+    float y = r * sin(phi);
+    return vec3(x, y, sqrt(max(0.0, 1.0 - x * x - y * y)));
+}
+float pdfCosineHemisphere(float cosTheta) { return max(cosTheta, 0.0) * INV_PI; }
+
+// Classic GGX NDF sampling, h proportional to D(h) (n.h) [Walter et al. 2007, eq. 35-36].
+vec3 importanceSampleGGX(vec2 u, float alpha)
+{
+    float phi = TWO_PI * u.x;
+    float cos2Theta = (1.0 - u.y) / (1.0 + (alpha * alpha - 1.0) * u.y);
+    float cosTheta = sqrt(clamp(cos2Theta, 0.0, 1.0));
+    float sinTheta = sqrt(max(0.0, 1.0 - cosTheta * cosTheta));
+    return vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
+}
+
+// pdf of l = reflect(v, h) for h from importanceSampleGGX: D(h) (n.h) / (4 v.h) [Walter eq. 14].
+float pdfGGXReflection(float NoH, float VoH, float alpha)
+{
+    if (NoH <= 0.0 || VoH <= 0.0)
+        return 0.0;
+    float a2 = alpha * alpha;
+    float f = NoH * NoH * (a2 - 1.0) + 1.0;
+    return a2 / (PI * f * f) * NoH / (4.0 * VoH);
+}
+
+// Exact Smith G1 for GGX [Walter et al. 2007, eq. 34].
+float G1_SmithGGX(float NoX, float alpha)
+{
+    float a2 = alpha * alpha;
+    return 2.0 * NoX / (NoX + sqrt(a2 + (1.0 - a2) * NoX * NoX));
+}
+
+// Visible-normal sampling [Heitz 2018, "Sampling the GGX Distribution of Visible Normals", listing 1].
+vec3 importanceSampleVNDF(vec2 u, vec3 v, float alpha)
+{
+    vec3 vh = normalize(vec3(alpha * v.x, alpha * v.y, v.z));
+    float lensq = vh.x * vh.x + vh.y * vh.y;
+    vec3 t1 = lensq > 0.0 ? vec3(-vh.y, vh.x, 0.0) * inversesqrt(lensq) : vec3(1.0, 0.0, 0.0);
+    vec3 t2 = cross(vh, t1);
+    float r = sqrt(u.x);
+    float phi = TWO_PI * u.y;
+    float p1 = r * cos(phi);
+    float p2 = r * sin(phi);
+    float s = 0.5 * (1.0 + vh.z);
+    p2 = (1.0 - s) * sqrt(max(0.0, 1.0 - p1 * p1)) + s * p2;
+    vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
+    return normalize(vec3(alpha * nh.x, alpha * nh.y, max(0.0, nh.z)));
+}
