@@ -1,0 +1,373 @@
+#include "core/MeshImport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <utility>
+#include <vector>
+
+#include <QFileInfo>
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+namespace facet {
+
+namespace {
+
+// Post-processing after the raw read (Assimp runs the steps in its own fixed order, not this
+// one). GenSmoothNormals only fills in meshes without normals. CalcTangentSpace is left out on
+// purpose: tangents the file lacks come from generateTangents(), so an imported mesh, a
+// primitive and a mesh with generated UVs all get the same MikkTSpace-like frame (glTF 2.0 asks
+// for MikkTSpace; Assimp's step is a different algorithm: unweighted, smoothed by position
+// within 45 degrees, NaN on degenerate UVs).
+constexpr unsigned kPostProcess = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices
+    | aiProcess_GenSmoothNormals | aiProcess_SortByPType | aiProcess_FindInvalidData
+    | aiProcess_FindDegenerates | aiProcess_GenUVCoords;
+
+glm::mat4 toGlm(const aiMatrix4x4& m)
+{
+    // aiMatrix4x4 is row-major (a1..a4 is the first row), glm is column-major.
+    return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4);
+}
+
+glm::vec3 toGlm(const aiVector3D& v)
+{
+    return {v.x, v.y, v.z};
+}
+
+bool isFinite(const glm::vec3& v)
+{
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+glm::vec3 normalizedOrZero(const glm::vec3& v)
+{
+    const float length = glm::length(v);
+    return length > 0.0f && std::isfinite(length) ? v / length : glm::vec3(0.0f);
+}
+
+struct Instance {
+    const aiMesh* mesh;
+    const aiNode* node;
+    glm::mat4 transform;
+};
+
+// Every mesh instance in the node tree with its node's global transform. Depth-first with an
+// explicit stack: a deep hierarchy in a hostile file cannot overflow the call stack.
+std::vector<Instance> flatten(const aiScene& scene)
+{
+    std::vector<Instance> instances;
+    std::vector<std::pair<const aiNode*, glm::mat4>> stack;
+    if (scene.mRootNode)
+        stack.emplace_back(scene.mRootNode, glm::mat4(1.0f));
+    while (!stack.empty()) {
+        const auto [node, parent] = stack.back();
+        stack.pop_back();
+        const glm::mat4 global = parent * toGlm(node->mTransformation);
+        for (unsigned i = 0; i < node->mNumMeshes; ++i)
+            if (node->mMeshes[i] < scene.mNumMeshes)
+                instances.push_back({scene.mMeshes[node->mMeshes[i]], node, global});
+        // Children pushed in reverse so they come off the stack in file order.
+        for (unsigned c = node->mNumChildren; c-- > 0;)
+            if (node->mChildren[c])
+                stack.emplace_back(node->mChildren[c], global);
+    }
+    return instances;
+}
+
+bool isTriangleMesh(const aiMesh& mesh)
+{
+    return (mesh.mPrimitiveTypes & aiPrimitiveType_TRIANGLE) != 0 && mesh.mNumFaces > 0 && mesh.mNumVertices > 0;
+}
+
+std::string subMeshName(const Instance& instance, std::size_t index)
+{
+    if (instance.mesh->mName.length > 0)
+        return instance.mesh->mName.C_Str();
+    if (instance.node->mName.length > 0)
+        return instance.node->mName.C_Str();
+    return "mesh " + std::to_string(index);
+}
+
+// Per-part facts the flattening collects for the steps after it.
+struct PartInfo {
+    bool hasUvs = false;
+    bool hasTangents = false;
+};
+
+// Appends one instance: positions by its transform, normals by the inverse transpose, tangents
+// and bitangents by the transform, winding reversed when the transform mirrors.
+PartInfo appendInstance(Mesh& out, const Instance& instance, std::size_t index)
+{
+    const aiMesh& in = *instance.mesh;
+    const glm::mat3 linear(instance.transform);
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
+    const bool mirrored = glm::determinant(linear) < 0.0f;
+    const bool hasUvs = in.mTextureCoords[0] != nullptr;
+    const bool hasTangents = in.mTangents != nullptr && in.mBitangents != nullptr && in.mNormals != nullptr;
+
+    SubMesh sub;
+    sub.name = subMeshName(instance, index);
+    sub.firstIndex = uint32_t(out.indices.size());
+    sub.materialIndex = int(in.mMaterialIndex);
+    const auto base = uint32_t(out.vertices.size());
+    for (unsigned i = 0; i < in.mNumVertices; ++i) {
+        Vertex v;
+        v.position = glm::vec3(instance.transform * glm::vec4(toGlm(in.mVertices[i]), 1.0f));
+        // Zero where the file had none or a broken one: repaired from the faces afterwards.
+        v.normal = in.mNormals ? normalizedOrZero(normalMatrix * toGlm(in.mNormals[i])) : glm::vec3(0.0f);
+        if (hasUvs)
+            v.uv = {in.mTextureCoords[0][i].x, in.mTextureCoords[0][i].y};
+        if (hasTangents) {
+            const glm::vec3 t = linear * toGlm(in.mTangents[i]);
+            const glm::vec3 b = linear * toGlm(in.mBitangents[i]);
+            v.tangent = glm::vec4(t, glm::dot(glm::cross(v.normal, t), b) < 0.0f ? -1.0f : 1.0f);
+        }
+        out.vertices.push_back(v);
+    }
+    for (unsigned f = 0; f < in.mNumFaces; ++f) {
+        const aiFace& face = in.mFaces[f];
+        if (face.mNumIndices != 3)
+            continue; // SortByPType put points and lines in meshes of their own; belt and braces
+        const uint32_t a = base + face.mIndices[0];
+        uint32_t b = base + face.mIndices[1], c = base + face.mIndices[2];
+        if (mirrored)
+            std::swap(b, c);
+        out.indices.insert(out.indices.end(), {a, b, c});
+    }
+    sub.indexCount = uint32_t(out.indices.size()) - sub.firstIndex;
+    out.subMeshes.push_back(std::move(sub));
+    return {hasUvs, hasTangents};
+}
+
+// Vertices whose normal is missing, zero or not finite get the angle-free, area-weighted sum
+// of their faces' normals (the face cross products), or +Y if even that is zero.
+std::size_t repairNormals(Mesh& mesh)
+{
+    std::vector<bool> broken(mesh.vertices.size());
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+        const glm::vec3& n = mesh.vertices[i].normal;
+        broken[i] = !isFinite(n) || std::abs(glm::length(n) - 1.0f) > 1e-3f;
+        count += broken[i] ? 1 : 0;
+    }
+    if (count == 0)
+        return 0;
+    std::vector<glm::vec3> sum(mesh.vertices.size(), glm::vec3(0.0f));
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const uint32_t i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
+        const glm::vec3 p0 = mesh.vertices[i0].position;
+        const glm::vec3 faceNormal = glm::cross(mesh.vertices[i1].position - p0, mesh.vertices[i2].position - p0);
+        for (uint32_t i : {i0, i1, i2})
+            sum[i] += faceNormal;
+    }
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+        if (broken[i]) {
+            const glm::vec3 n = normalizedOrZero(sum[i]);
+            mesh.vertices[i].normal = n == glm::vec3(0.0f) ? glm::vec3(0.0f, 1.0f, 0.0f) : n;
+        }
+    return count;
+}
+
+// File tangents made exactly perpendicular to the (repaired) normals; false when one cannot be.
+bool orthonormalizeTangents(Mesh& mesh)
+{
+    for (Vertex& v : mesh.vertices) {
+        const glm::vec3 t = normalizedOrZero(glm::vec3(v.tangent) - v.normal * glm::dot(v.normal, glm::vec3(v.tangent)));
+        if (t == glm::vec3(0.0f))
+            return false;
+        v.tangent = glm::vec4(t, v.tangent.w);
+    }
+    return true;
+}
+
+std::string joined(const std::vector<std::string>& parts)
+{
+    std::string text;
+    for (const std::string& part : parts)
+        text += (text.empty() ? "" : "; ") + part;
+    return text;
+}
+
+std::optional<Mesh> importChecked(const std::string& path, const MeshImportOptions& options,
+    std::string* error, std::vector<std::string>& warnings)
+{
+    const auto failed = [&](const std::string& problem) -> std::optional<Mesh> {
+        if (error)
+            *error = "importMesh: " + path + ": " + problem;
+        return std::nullopt;
+    };
+
+    Assimp::Importer importer;
+    importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, options.smoothingAngleDegrees);
+    // Remove degenerate triangles outright (instead of turning them into lines), and only those
+    // with coincident corners: the area test's fixed 1e-6 threshold would delete every triangle
+    // of a model made in metres with millimetre detail.
+    importer.SetPropertyBool(AI_CONFIG_PP_FD_REMOVE, true);
+    importer.SetPropertyBool(AI_CONFIG_PP_FD_CHECKAREA, false);
+
+    // Read raw and validated first, to see what the file itself holds before post-processing
+    // fills it in; ValidateDataStructure catches out-of-range indices and the like.
+    const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+    if (!scene) {
+        const std::string reason = importer.GetErrorString();
+        if (reason.find("mNumMeshes is 0") != std::string::npos)
+            return failed("contains no meshes (Assimp: " + reason + ")");
+        return failed("Assimp cannot read it: " + reason);
+    }
+    if (scene->mNumMeshes == 0 || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
+        return failed("contains no meshes");
+
+    std::size_t rawVertices = 0;
+    bool normalsMissing = false;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+        rawVertices += scene->mMeshes[m]->mNumVertices;
+        normalsMissing = normalsMissing || (isTriangleMesh(*scene->mMeshes[m]) && !scene->mMeshes[m]->mNormals);
+    }
+    // Formats without shared vertices (STL, some OBJ) hold up to a triangle's worth of copies of
+    // each vertex until JoinIdenticalVertices: refuse only what cannot shrink under the limit.
+    if (rawVertices / 8 > options.maxVertices)
+        return failed(std::to_string(rawVertices) + " vertices, far over the " + std::to_string(options.maxVertices)
+            + " Facet previews (docs/meshes.md, limits)");
+
+    scene = importer.ApplyPostProcessing(kPostProcess);
+    if (!scene)
+        return failed("Assimp cannot process it: " + std::string(importer.GetErrorString()));
+
+    std::size_t droppedMeshes = 0;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m)
+        droppedMeshes += isTriangleMesh(*scene->mMeshes[m]) ? 0 : 1;
+    if (droppedMeshes > 0)
+        warnings.push_back(std::to_string(droppedMeshes) + " part(s) made of points or lines dropped");
+
+    std::vector<Instance> instances;
+    std::size_t vertexCount = 0, triangleCount = 0, singular = 0;
+    for (const Instance& instance : flatten(*scene)) {
+        if (!isTriangleMesh(*instance.mesh))
+            continue;
+        // A transform that flattens the mesh to a plane or a point leaves no usable normals.
+        const glm::mat3 linear(instance.transform);
+        const float det = glm::determinant(linear);
+        const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+        if (!std::isfinite(det) || !(std::abs(det) > 1e-12f * scale * scale * scale)) {
+            ++singular;
+            continue;
+        }
+        instances.push_back(instance);
+        vertexCount += instance.mesh->mNumVertices;
+        triangleCount += instance.mesh->mNumFaces;
+    }
+    if (singular > 0)
+        warnings.push_back(std::to_string(singular) + " instance(s) with a singular or non-finite transform skipped");
+    if (instances.empty())
+        return failed("contains no triangles");
+    if (vertexCount > options.maxVertices)
+        return failed(std::to_string(vertexCount) + " vertices (all instances) are over the "
+            + std::to_string(options.maxVertices) + " Facet previews: at 48 bytes each that is more memory"
+            + " than a preview should take (docs/meshes.md, limits)");
+    if (triangleCount > options.maxTriangles)
+        return failed(std::to_string(triangleCount) + " triangles (all instances) are over the "
+            + std::to_string(options.maxTriangles) + " Facet previews (docs/meshes.md, limits)");
+
+    Mesh mesh;
+    mesh.name = QFileInfo(QString::fromStdString(path)).completeBaseName().toStdString();
+    mesh.vertices.reserve(vertexCount);
+    mesh.indices.reserve(3 * triangleCount);
+    std::vector<std::size_t> partsWithoutUvs;
+    bool allTangents = true;
+    for (std::size_t i = 0; i < instances.size(); ++i) {
+        const PartInfo info = appendInstance(mesh, instances[i], i);
+        if (!info.hasUvs)
+            partsWithoutUvs.push_back(i);
+        allTangents = allTangents && info.hasTangents;
+    }
+
+    if (normalsMissing)
+        warnings.push_back("no normals in the file: smooth normals generated (hard edges over "
+            + std::to_string(int(options.smoothingAngleDegrees)) + " degrees)");
+    if (const std::size_t repaired = repairNormals(mesh); repaired > 0)
+        warnings.push_back(std::to_string(repaired) + " vertices with a missing or broken normal given their faces' normal");
+
+    std::string problem;
+    mesh.hasUvs = true;
+    if (!partsWithoutUvs.empty()) {
+        const bool all = partsWithoutUvs.size() == mesh.subMeshes.size();
+        if (!generateUvs(mesh, options.uvFallback, &problem, all ? std::vector<std::size_t> {} : partsWithoutUvs))
+            return failed(problem);
+        warnings.push_back(std::string(all ? "no UVs" : std::to_string(partsWithoutUvs.size()) + " part(s) without UVs")
+            + ": generated by " + std::string(uvProjectionName(options.uvFallback)) + " projection");
+        allTangents = false;
+    }
+    if (allTangents && orthonormalizeTangents(mesh)) {
+        mesh.hasTangents = true;
+    } else {
+        TangentStats stats;
+        if (!generateTangents(mesh, &problem, &stats))
+            return failed(problem);
+        if (stats.fallbackVertices > 0)
+            warnings.push_back(std::to_string(stats.fallbackVertices)
+                + " vertices without a usable UV direction given an arbitrary tangent");
+    }
+    mesh.updateBounds();
+    if (!mesh.validate(&problem))
+        return failed(problem);
+    return mesh;
+}
+
+} // namespace
+
+std::optional<Mesh> importMesh(
+    const std::string& path, std::string* error, std::string* warning, const MeshImportOptions& options)
+{
+    if (warning)
+        warning->clear();
+    const auto failed = [&](const std::string& problem) -> std::optional<Mesh> {
+        if (error)
+            *error = "importMesh: " + path + ": " + problem;
+        return std::nullopt;
+    };
+    if (path.empty())
+        return failed("no file name given");
+    const QFileInfo info(QString::fromStdString(path));
+    if (!info.exists())
+        return failed("file does not exist");
+    if (info.isDir())
+        return failed("is a directory, not a mesh file");
+    if (!info.isFile())
+        return failed("is not a regular file");
+    if (!info.isReadable())
+        return failed("cannot be read (permission denied)");
+    if (info.size() == 0)
+        return failed("file is empty");
+
+    std::vector<std::string> warnings;
+    std::optional<Mesh> mesh;
+    // Assimp reports failures by a null scene, but a bad_alloc on a hostile size field or an
+    // exception from a reader outside its guard must not cross the API either (STYLE.md, 6).
+    try {
+        mesh = importChecked(path, options, error, warnings);
+    } catch (const std::exception& e) {
+        return failed(std::string("Assimp failed: ") + e.what());
+    } catch (...) {
+        return failed("Assimp failed with an unknown exception");
+    }
+    if (mesh && warning && !warnings.empty())
+        *warning = "importMesh: " + path + ": " + joined(warnings);
+    return mesh;
+}
+
+std::string importableMeshPatterns()
+{
+    std::string patterns;
+    Assimp::Importer().GetExtensionList(patterns);
+    return patterns;
+}
+
+} // namespace facet
