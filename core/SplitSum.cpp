@@ -1,0 +1,52 @@
+#include "core/SplitSum.h"
+
+#include <algorithm>
+
+#include <glm/common.hpp>
+
+#include "core/Brdf.h"
+
+namespace facet {
+
+using namespace shading;
+
+BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, const MaterialInfo& material,
+                           double NoV, const SplitSumLighting& lighting)
+{
+    // Mirrors environmentLobes() in resources/shaders/environment_lighting.glsl line by line.
+    const ShadingModel& model = brdf.model();
+    NoV = std::clamp(NoV, 0.0, 1.0);
+    const double roughness = clampRoughness(material.perceptualRoughness);
+    const double metallic = std::clamp(material.metallic, 0.0, 1.0);
+    const glm::dvec3 baseColor = glm::max(material.baseColor, glm::dvec3(0.0));
+    const glm::dvec3 diffuseLight = lighting.irradiance * kInvPi;
+    const DfgValue dfg = table.sample(NoV, roughness);
+    const auto albedoSingleScatter = [&dfg](const glm::dvec3& f0) { return f0 * dfg.scale + dfg.bias; };
+    const double f0Dielectric = f0FromIor(material.ior);
+    // The table lookup the shader does through dfgLookup(): the same table, bilinear.
+    const double es = brdf.dielectricSpecularAlbedo(f0Dielectric, NoV, roughness);
+
+    BrdfLobes lobes;
+    if (model.composition == BrdfComposition::LearnOpenGL) {
+        const glm::dvec3 f0 = glm::mix(glm::dvec3(f0Dielectric), baseColor, metallic);
+        const glm::dvec3 albedo = albedoSingleScatter(f0);
+        lobes.specular = lighting.prefilteredRadiance * albedo * brdf.multiScatterFactor(f0, NoV, roughness);
+        const glm::dvec3 kD = model.coupling == DielectricCoupling::EnergyPreserving
+            ? glm::dvec3((1.0 - es) * (1.0 - metallic))
+            : (glm::dvec3(1.0) - F_SchlickRoughness(f0, NoV, roughness)) * (1.0 - metallic);
+        lobes.diffuse = diffuseLight * baseColor * kD;
+        return lobes;
+    }
+    const double specularDielectric = albedoSingleScatter(glm::dvec3(f0Dielectric)).x
+        * brdf.multiScatterFactor(glm::dvec3(f0Dielectric), NoV, roughness).x;
+    const glm::dvec3 specularMetal = albedoSingleScatter(baseColor)
+        * brdf.multiScatterFactor(baseColor, NoV, roughness);
+    lobes.specular = lighting.prefilteredRadiance * glm::mix(glm::dvec3(specularDielectric), specularMetal, metallic);
+    const double diffuseWeight = model.coupling == DielectricCoupling::EnergyPreserving
+        ? std::max(0.0, 1.0 - es)
+        : std::max(0.0, 1.0 - albedoSingleScatter(glm::dvec3(f0Dielectric)).x);
+    lobes.diffuse = diffuseLight * baseColor * (diffuseWeight * (1.0 - metallic));
+    return lobes;
+}
+
+} // namespace facet

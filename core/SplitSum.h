@@ -1,0 +1,33 @@
+#pragma once
+// The image-based lighting of the real-time renderer, on the CPU: the split sum [Karis 2013]
+// with the composition of the material model, exactly as resources/shaders/
+// environment_lighting.glsl environmentLobes() computes it, so tests can compare GPU pixels
+// against it. With a uniform environment the prefiltered radiance and the irradiance are exact
+// (L and pi L), so the only approximations left are the split sum's own (see
+// docs/rendering.md, "Image-based lighting").
+
+#include <glm/vec3.hpp>
+
+#include "core/MaterialBrdf.h"
+
+namespace facet {
+
+struct SplitSumLighting {
+    glm::dvec3 prefilteredRadiance {0.0}; // prefiltered(R, lodFromRoughness(r)), intensity applied
+    glm::dvec3 irradiance {0.0};          // E(n), not divided by pi, intensity applied
+};
+
+// Outgoing radiance lobes towards a viewer at n.v = NoV (before ambient occlusion):
+//   specular = prefiltered * (F0 scale + bias) * M(F0)      per lobe (glTF: dielectric F0 and
+//                                                            base colour, mixed by metallic)
+//   diffuse  = E / pi * c * w_d, with w_d:
+//     glTF, fresnel_mix         (1 - m) (1 - (F0_d scale + bias))
+//     glTF, energy preserving   (1 - m) (1 - E_s(n.v))          E_s = dielectricSpecularAlbedo
+//     LearnOpenGL, fresnel_mix  (1 - m) (1 - F_SchlickRoughness(F0, n.v, r))
+//     LearnOpenGL, energy pres. (1 - m) (1 - E_s(n.v))
+// `brdf`'s model selects the composition and multi-scatter; `table` is the DFG LUT the renderer
+// samples (the one `brdf` was made with), looked up bilinearly as GL_LINEAR does.
+BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, const MaterialInfo& material,
+                           double NoV, const SplitSumLighting& lighting);
+
+} // namespace facet

@@ -1,0 +1,93 @@
+#pragma once
+// A snapshot of everything one frame shows, built by the caller (ui/ or the headless commands)
+// from core's document. Renderer::render() reads it and keeps nothing but GPU caches keyed by
+// content: the mesh by `meshKey`, each map by (path, timestamp, colour space).
+// No GL header here: GL objects that the scene refers to (the IBL textures of
+// render/IblPrecompute) travel as plain names.
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/Camera.h"
+#include "core/Image.h"
+#include "core/Light.h"
+#include "core/Material.h"
+#include "core/Mesh.h"
+#include "core/Project.h"
+#include "render/IblTextures.h"
+
+namespace facet {
+
+// One material map's texture as core loaded it. The numbers are as the file stores them (not
+// converted to linear): render/ decodes per MaterialMap::colorSpace.
+struct RenderMapImage {
+    std::shared_ptr<const Image> image; // null: the slot uses its constant factor only
+    std::string path;                   // the cache key with timestamp and colour space
+    std::int64_t timestamp = 0;         // file modification time (any unit, e.g. ms since epoch)
+};
+
+// The IBL textures of the environment (render/IblTextures.h, made by render/IblPrecompute), as
+// GL names owned by whoever made them (or by `textures`); they must outlive the render() call.
+// Tests build tiny ones by hand (a uniform environment needs no precompute).
+struct EnvironmentLighting {
+    unsigned environmentCubemap = 0; // radiance, for the background (level 0)
+    unsigned prefilteredCubemap = 0; // level i: perceptual roughness i / (levels - 1)
+    int prefilteredLevels = 1;
+    unsigned irradianceCubemap = 0; // irradiance E (not / pi); unused when useSH
+    unsigned dfgLut = 0;            // RGB = scale, bias, E (core/DfgTable.h layout), LINEAR filtered
+    int dfgSize = 0;
+    // Computed with the visibility term of the material's ShadingModel (the LearnOpenGL variant
+    // needs a Schlick-GGX table); the renderer does not check it.
+    bool useSH = false;
+    std::array<glm::vec3, 9> irradianceSH {}; // premultiplied c_i A_l of the UNROTATED environment
+    double rotationDegrees = 0.0; // about +Y (Environment::toImageFrame)
+    double intensity = 1.0;       // linear radiance multiplier
+    // Keeps the textures above alive while the scene is held (optional).
+    std::shared_ptr<const IblTextures> textures;
+};
+
+// The lighting of engineer A's precompute result, rotated and scaled as the environment says.
+inline EnvironmentLighting environmentLighting(const std::shared_ptr<const IblTextures>& ibl, double rotationDegrees,
+                                               double intensity, bool useSH)
+{
+    EnvironmentLighting lighting;
+    if (ibl) {
+        lighting.environmentCubemap = ibl->environmentCubemap();
+        lighting.prefilteredCubemap = ibl->prefilteredCubemap();
+        lighting.prefilteredLevels = ibl->prefilteredMipLevels;
+        lighting.irradianceCubemap = ibl->irradianceCubemap();
+        lighting.dfgLut = ibl->dfgLut();
+        lighting.dfgSize = ibl->dfgSize;
+        lighting.irradianceSH = ibl->irradianceSH;
+        lighting.textures = ibl;
+    }
+    lighting.useSH = useSH;
+    lighting.rotationDegrees = rotationDegrees;
+    lighting.intensity = intensity;
+    return lighting;
+}
+
+struct RenderScene {
+    std::shared_ptr<const Mesh> mesh; // drawn with the model matrix; null: background only
+    std::uint64_t meshKey = 0;        // content key: a new key re-uploads, the same key never does
+    glm::dmat4 modelMatrix {1.0};
+    Material material;
+    std::array<RenderMapImage, kMapSlotCount> maps {}; // indexed by MapSlot
+    // E_s,avg of the compensated dielectric layer at the material's constant roughness
+    // (MaterialBrdf::dielectricSpecularAverageAlbedo): used by the energy-preserving coupling.
+    double dielectricAverageAlbedo = 0.0;
+    std::vector<Light> lights; // enabled ones are drawn, at most kMaxPunctualLights
+    Camera camera;
+    EnvironmentLighting environment;
+    // exposureEV, toneMapper, displayEncoding, gamma (tone-map pass); debugView, msaaSamples,
+    // background, backgroundColor, backgroundBlurRoughness (surface pass).
+    ViewSettings view;
+};
+
+} // namespace facet

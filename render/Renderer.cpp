@@ -1,0 +1,441 @@
+#include <epoxy/gl.h>
+
+#include "render/Renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat3x3.hpp>
+
+#include "render/Framebuffer.h"
+#include "render/GpuMesh.h"
+#include "render/ShaderProgram.h"
+#include "render/TextureCache.h"
+#include "render/ToneMapping.h"
+
+namespace facet {
+
+namespace {
+
+// Texture units of the surface and background programs.
+constexpr int kMapUnit0 = 0; // 0..4: MapSlot order
+constexpr int kDfgUnit = 5;
+constexpr int kPrefilteredUnit = 6;
+constexpr int kIrradianceUnit = 7;
+constexpr int kEnvironmentUnit = 8;
+
+constexpr const char* kMapSamplers[kMapSlotCount]
+    = {"uBaseColorMap", "uNormalMap", "uMetallicMap", "uRoughnessMap", "uOcclusionMap"};
+
+// World -> environment image frame: Environment::toImageFrame, rotateAboutY(d, -rotation), as a
+// matrix built by applying it to the basis (so the two cannot disagree on signs).
+glm::mat3 environmentRotation(double rotationDegrees)
+{
+    const double a = -rotationDegrees * 3.14159265358979323846 / 180.0;
+    const double c = std::cos(a);
+    const double s = std::sin(a);
+    auto rotate = [c, s](const glm::dvec3& d) { return glm::dvec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z); };
+    return glm::mat3(glm::vec3(rotate({1.0, 0.0, 0.0})), glm::vec3(rotate({0.0, 1.0, 0.0})),
+                     glm::vec3(rotate({0.0, 0.0, 1.0})));
+}
+
+void setMat4(const ShaderProgram& program, const char* name, const glm::dmat4& m)
+{
+    const glm::mat4 f(m);
+    program.setMat4(name, glm::value_ptr(f));
+}
+
+void setMat3(const ShaderProgram& program, const char* name, const glm::mat3& m)
+{
+    program.setMat3(name, glm::value_ptr(m));
+}
+
+void setVec3(const ShaderProgram& program, const char* name, const glm::dvec3& v)
+{
+    program.setVec3(name, float(v.x), float(v.y), float(v.z));
+}
+
+// Times one step with glFinish() on both sides when enabled.
+class StepTimer {
+public:
+    StepTimer(bool enabled, double* milliseconds)
+        : m_enabled(enabled)
+        , m_milliseconds(milliseconds)
+    {
+        if (m_enabled) {
+            glFinish();
+            m_start = std::chrono::steady_clock::now();
+        }
+    }
+    ~StepTimer()
+    {
+        if (m_enabled) {
+            glFinish();
+            *m_milliseconds
+                += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - m_start).count();
+        }
+    }
+    StepTimer(const StepTimer&) = delete;
+    StepTimer& operator=(const StepTimer&) = delete;
+
+private:
+    bool m_enabled;
+    double* m_milliseconds;
+    std::chrono::steady_clock::time_point m_start;
+};
+
+// "name[i]" without std::string concatenation (GCC 12's -Wrestrict false positive at -O3).
+struct IndexedName {
+    char text[64];
+    IndexedName(const char* name, int index) { std::snprintf(text, sizeof text, "%s[%d]", name, index); }
+    const char* c_str() const { return text; }
+};
+
+int enabledLightCount(const RenderScene& scene)
+{
+    int count = 0;
+    for (const Light& light : scene.lights)
+        if (light.enabled)
+            ++count;
+    return std::min(count, kMaxPunctualLights);
+}
+
+} // namespace
+
+Renderer::Renderer()
+    : m_toneMapping(std::make_unique<ToneMapping>())
+    , m_mesh(std::make_unique<GpuMesh>())
+    , m_textures(std::make_unique<TextureCache>())
+{
+}
+
+Renderer::~Renderer()
+{
+    destroyMsaaTarget();
+    if (m_emptyVao)
+        glDeleteVertexArrays(1, &m_emptyVao);
+}
+
+SurfaceVariantKey Renderer::variantKeyFor(const RenderScene& scene)
+{
+    bool hasImage[kMapSlotCount] = {};
+    for (int i = 0; i < kMapSlotCount; ++i) {
+        const auto& image = scene.maps[std::size_t(i)].image;
+        hasImage[i] = image && !image->isEmpty();
+    }
+    SurfaceVariantKey key;
+    key.features = surfaceFeaturesFor(scene.material, hasImage, enabledLightCount(scene) > 0, scene.environment.useSH);
+    key.debugView = debugViewFromString(scene.view.debugView).value_or(DebugView::None);
+    return key;
+}
+
+bool Renderer::ensureFixedPrograms(std::string* error)
+{
+    if (m_backgroundProgram)
+        return true;
+    std::string message;
+    std::optional<ShaderProgram> program = ShaderProgram::create(
+        "background", {{ShaderStageSource::Stage::Vertex, "fullscreen.vert"}, {ShaderStageSource::Stage::Fragment, "background.frag"}},
+        {}, &message);
+    if (!program) {
+        if (error)
+            *error = "Renderer::render: " + message;
+        return false;
+    }
+    m_backgroundProgram = std::make_unique<ShaderProgram>(std::move(*program));
+    ++m_frame.programsCompiled;
+    glGenVertexArrays(1, &m_emptyVao);
+    return true;
+}
+
+void Renderer::destroyMsaaTarget()
+{
+    if (m_msaaFramebuffer)
+        glDeleteFramebuffers(1, &m_msaaFramebuffer);
+    if (m_msaaColor)
+        glDeleteRenderbuffers(1, &m_msaaColor);
+    if (m_msaaDepth)
+        glDeleteRenderbuffers(1, &m_msaaDepth);
+    m_msaaFramebuffer = m_msaaColor = m_msaaDepth = 0;
+    m_msaaWidth = m_msaaHeight = m_msaaSamples = 0;
+}
+
+bool Renderer::ensureMsaaTarget(int width, int height, int samples, bool fullFloat, std::string* error)
+{
+    if (m_msaaFramebuffer && m_msaaWidth == width && m_msaaHeight == height && m_msaaSamples == samples
+        && m_msaaFullFloat == fullFloat)
+        return true;
+    destroyMsaaTarget();
+    GLint previous = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &previous);
+    glGenFramebuffers(1, &m_msaaFramebuffer);
+    glGenRenderbuffers(1, &m_msaaColor);
+    glGenRenderbuffers(1, &m_msaaDepth);
+    glBindRenderbuffer(GL_RENDERBUFFER, m_msaaColor);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, fullFloat ? GL_RGBA32F : GL_RGBA16F, width, height);
+    glBindRenderbuffer(GL_RENDERBUFFER, m_msaaDepth);
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_msaaFramebuffer);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_msaaColor);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_msaaDepth);
+    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(previous));
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        destroyMsaaTarget();
+        if (error)
+            *error = "Renderer::render: the " + std::to_string(samples) + "x MSAA target of " + std::to_string(width)
+                + "x" + std::to_string(height) + " is incomplete (status " + std::to_string(status) + ")";
+        return false;
+    }
+    m_msaaWidth = width;
+    m_msaaHeight = height;
+    m_msaaSamples = samples;
+    m_msaaFullFloat = fullFloat;
+    return true;
+}
+
+bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::string* error)
+{
+    m_frame = {};
+    const int width = hdrTarget.width();
+    const int height = hdrTarget.height();
+    const bool fullFloat = hdrTarget.format() == FramebufferFormat::RGBA32F;
+    m_maxRadiance = fullFloat ? 3.0e38f : 65504.0f;
+    if (!ensureFixedPrograms(error))
+        return false;
+
+    GLint maxSamples = 1;
+    glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
+    const int samples = std::clamp(scene.view.msaaSamples, 1, std::max(1, int(maxSamples)));
+    if (samples > 1) {
+        if (!ensureMsaaTarget(width, height, samples, fullFloat, error))
+            return false;
+        glBindFramebuffer(GL_FRAMEBUFFER, m_msaaFramebuffer);
+    } else {
+        hdrTarget.bind();
+    }
+    glViewport(0, 0, width, height);
+    glDepthMask(GL_TRUE);
+    glClearDepth(1.0);
+    glClear(GL_DEPTH_BUFFER_BIT);
+
+    const glm::dmat4 view = scene.camera.viewMatrix();
+    const glm::dmat4 projection = scene.camera.projectionMatrix(double(width) / double(height));
+    // Surface first, then the background where the depth buffer is still clear (far plane,
+    // GL_LEQUAL): covered pixels run no background shader.
+    bool ok = true;
+    {
+        StepTimer timer(m_timing, &m_frame.surfaceMs);
+        ok = drawSurface(scene, view, projection, error);
+    }
+    {
+        StepTimer timer(m_timing, &m_frame.backgroundMs);
+        drawBackground(scene, view, projection);
+    }
+    if (samples > 1) {
+        StepTimer timer(m_timing, &m_frame.resolveMs);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, m_msaaFramebuffer);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, hdrTarget.framebufferId());
+        glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    m_textures->evictUnused();
+    m_frame.frameCount = 1;
+    m_total.add(m_frame);
+    ++m_total.frameCount;
+    return ok;
+}
+
+void Renderer::drawBackground(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection)
+{
+    const EnvironmentLighting& env = scene.environment;
+    const ShaderProgram& program = *m_backgroundProgram;
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_BLEND);
+    program.use();
+    int mode = 2;
+    if (scene.view.background == BackgroundMode::Environment && env.environmentCubemap)
+        mode = 0;
+    else if (scene.view.background != BackgroundMode::Color && env.prefilteredCubemap)
+        mode = 1; // blurred, or the sharp environment is missing
+    program.setInt("uBackgroundMode", mode);
+    setVec3(program, "uBackgroundColor", scene.view.backgroundColor);
+    setMat4(program, "uInverseViewProjection", glm::inverse(projection * view));
+    setVec3(program, "uCameraPosition", scene.camera.position);
+    glActiveTexture(GL_TEXTURE0 + kEnvironmentUnit);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, env.environmentCubemap);
+    program.setInt("uEnvironmentMap", kEnvironmentUnit);
+    glActiveTexture(GL_TEXTURE0 + kPrefilteredUnit);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, env.prefilteredCubemap);
+    program.setInt("uPrefilteredMap", kPrefilteredUnit);
+    program.setFloat("uPrefilteredLevels", float(std::max(env.prefilteredLevels, 1)));
+    program.setFloat("uBlurRoughness",
+                     float(scene.view.background == BackgroundMode::Blurred ? scene.view.backgroundBlurRoughness : 0.0));
+    setMat3(program, "uEnvironmentRotation", environmentRotation(env.rotationDegrees));
+    program.setFloat("uEnvironmentIntensity", float(env.intensity));
+    program.setFloat("uMaxRadiance", m_maxRadiance);
+    glBindVertexArray(m_emptyVao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+    ++m_frame.drawCalls;
+    glDepthMask(GL_TRUE);
+    glDisable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+}
+
+bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection,
+                           std::string* error)
+{
+    if (!scene.mesh || scene.mesh->indices.empty())
+        return true;
+    const SurfaceVariantKey key = variantKeyFor(scene);
+    const int compilesBefore = m_surfacePrograms.compileCount();
+    std::string message;
+    const ShaderProgram* program = m_surfacePrograms.get(key, &message);
+    m_frame.programsCompiled += m_surfacePrograms.compileCount() - compilesBefore;
+    if (!program) {
+        if (error)
+            *error = "Renderer::render: " + message;
+        return false;
+    }
+    {
+        StepTimer timer(m_timing, &m_frame.uploadMs);
+        if (m_mesh->update(*scene.mesh, scene.meshKey))
+            ++m_frame.meshesUploaded;
+    }
+
+    const Material& material = scene.material;
+    const EnvironmentLighting& env = scene.environment;
+    program->use();
+    setMat4(*program, "uModel", scene.modelMatrix);
+    setMat3(*program, "uNormalMatrix", glm::mat3(glm::inverseTranspose(glm::dmat3(scene.modelMatrix))));
+    setMat4(*program, "uViewProjection", projection * view);
+    setVec3(*program, "uCameraPosition", scene.camera.position);
+    program->setFloat("uMaxRadiance", m_maxRadiance);
+
+    // Material factors (core/Material.h: what each slot's factor means).
+    const glm::dvec4 base = material.baseColorFactor();
+    program->setVec4("uBaseColorFactor", float(base.r), float(base.g), float(base.b), float(base.a));
+    program->setFloat("uMetallicFactor", float(material.metallic()));
+    program->setFloat("uRoughnessFactor", float(material.roughness()));
+    program->setFloat("uOcclusionStrength", float(material.occlusionStrength()));
+    program->setFloat("uNormalStrength", float(material.normalStrength()));
+    program->setFloat("uIor", float(material.ior));
+    program->setFloat("uDielectricAverageAlbedo", float(scene.dielectricAverageAlbedo));
+    program->setInt("uFlipGreen", material.map(MapSlot::Normal).flipGreen ? 1 : 0);
+    constexpr SurfaceFeature kMapBits[kMapSlotCount]
+        = {SurfaceFeature::HasBaseColorMap, SurfaceFeature::HasNormalMap, SurfaceFeature::HasMetallicMap,
+           SurfaceFeature::HasRoughnessMap, SurfaceFeature::HasOcclusionMap};
+    for (int i = 0; i < kMapSlotCount; ++i) {
+        const MaterialMap& map = material.maps[std::size_t(i)];
+        const glm::mat3 uv(map.uv.matrix());
+        setMat3(*program, IndexedName("uUvTransform", i).c_str(), uv);
+        program->setInt(IndexedName("uChannel", i).c_str(), int(map.channel));
+        program->setInt(IndexedName("uInvert", i).c_str(), map.invert ? 1 : 0);
+        if (!hasFeature(key.features, kMapBits[i]))
+            continue;
+        const RenderMapImage& image = scene.maps[std::size_t(i)];
+        bool uploaded = false;
+        unsigned texture = 0;
+        {
+            StepTimer timer(m_timing, &m_frame.uploadMs);
+            texture = m_textures->get(image.image, image.path.empty() ? map.path : image.path, image.timestamp,
+                                      map.colorSpace, &uploaded);
+        }
+        if (uploaded)
+            ++m_frame.texturesUploaded;
+        glActiveTexture(GLenum(GL_TEXTURE0 + kMapUnit0 + i));
+        glBindTexture(GL_TEXTURE_2D, texture);
+        program->setInt(kMapSamplers[i], kMapUnit0 + i);
+    }
+
+    // Environment.
+    glActiveTexture(GL_TEXTURE0 + kDfgUnit);
+    glBindTexture(GL_TEXTURE_2D, env.dfgLut);
+    program->setInt("uDfgLut", kDfgUnit);
+    program->setFloat("uDfgSize", float(std::max(env.dfgSize, 1)));
+    glActiveTexture(GL_TEXTURE0 + kPrefilteredUnit);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, env.prefilteredCubemap);
+    program->setInt("uPrefilteredMap", kPrefilteredUnit);
+    program->setFloat("uPrefilteredLevels", float(std::max(env.prefilteredLevels, 1)));
+    if (env.useSH) {
+        for (int i = 0; i < 9; ++i) {
+            const glm::vec3& c = env.irradianceSH[std::size_t(i)];
+            program->setVec3(IndexedName("uIrradianceSH", i).c_str(), c.x, c.y, c.z);
+        }
+    } else {
+        glActiveTexture(GL_TEXTURE0 + kIrradianceUnit);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, env.irradianceCubemap);
+        program->setInt("uIrradianceMap", kIrradianceUnit);
+    }
+    setMat3(*program, "uEnvironmentRotation", environmentRotation(env.rotationDegrees));
+    program->setFloat("uEnvironmentIntensity", float(env.intensity));
+
+    // Punctual lights (KHR_lights_punctual units), enabled ones, at most kMaxPunctualLights.
+    if (hasFeature(key.features, SurfaceFeature::HasPunctualLights)) {
+        int count = 0;
+        for (const Light& light : scene.lights) {
+            if (!light.enabled || count == kMaxPunctualLights)
+                continue;
+            const int type = light.type == LightType::Directional ? 0 : light.type == LightType::Point ? 1 : 2;
+            program->setInt(IndexedName("uLightType", count).c_str(), type);
+            setVec3(*program, IndexedName("uLightIntensity", count).c_str(), light.linearColor() * light.intensity);
+            setVec3(*program, IndexedName("uLightPosition", count).c_str(), light.position);
+            const double length = glm::length(light.direction);
+            setVec3(*program, IndexedName("uLightDirection", count).c_str(),
+                    length > 0.0 ? light.direction / length : glm::dvec3(0.0, 0.0, -1.0));
+            program->setFloat(IndexedName("uLightRange", count).c_str(), float(light.range));
+            program->setVec2(IndexedName("uLightConeCos", count).c_str(), float(std::cos(light.outerConeAngle)),
+                             float(std::cos(light.innerConeAngle)));
+            ++count;
+        }
+        program->setInt("uLightCount", count);
+    }
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_CULL_FACE); // two-sided: open meshes show their inside
+    m_frame.drawCalls += m_mesh->draw(*scene.mesh);
+    glDisable(GL_DEPTH_TEST);
+    glActiveTexture(GL_TEXTURE0);
+    return true;
+}
+
+bool Renderer::toneMap(const Framebuffer& hdr, Framebuffer& output, const ViewSettings& view, std::string* error)
+{
+    if (hdr.width() != output.width() || hdr.height() != output.height()) {
+        if (error)
+            *error = "Renderer::toneMap: the output (" + std::to_string(output.width()) + "x"
+                + std::to_string(output.height()) + ") differs in size from the HDR target ("
+                + std::to_string(hdr.width()) + "x" + std::to_string(hdr.height()) + ")";
+        return false;
+    }
+    return toneMapTo(hdr, output.framebufferId(), view, error);
+}
+
+bool Renderer::toneMapTo(const Framebuffer& hdr, unsigned framebuffer, const ViewSettings& view, std::string* error)
+{
+    RenderStats pass;
+    bool compiled = false;
+    bool ok = false;
+    {
+        StepTimer timer(m_timing, &pass.toneMapMs);
+        ok = m_toneMapping->apply(hdr.colorTexture(), framebuffer, hdr.width(), hdr.height(), view, error, &compiled);
+    }
+    pass.programsCompiled = compiled ? 1 : 0;
+    pass.drawCalls = ok ? 1 : 0;
+    m_frame.toneMapMs = pass.toneMapMs;
+    m_frame.programsCompiled += pass.programsCompiled;
+    m_frame.drawCalls += pass.drawCalls;
+    m_total.add(pass);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return ok;
+}
+
+} // namespace facet

@@ -1,0 +1,81 @@
+#pragma once
+// The surface renderer: draws a RenderScene snapshot into an HDR (RGBA16F/32F) Framebuffer, and
+// tone-maps an HDR framebuffer for display. It owns every GL object it uses (programs by variant
+// key, the mesh buffers, the material textures, the MSAA target, the tone-mapping pass) and no
+// widget; the viewport and the headless commands call the same two functions.
+//
+//   Renderer renderer;                                // GL context current
+//   renderer.render(scene, hdr, &error);              // linear radiance, background included
+//   renderer.toneMap(hdr, display, scene.view, &error); // exposure, tone mapper, encoding
+//
+// docs/rendering.md describes the passes, the variant flags, the IBL formulas and the caches.
+
+#include <memory>
+#include <string>
+
+#include "render/RenderScene.h"
+#include "render/RenderStats.h"
+#include "render/ShaderVariant.h"
+
+namespace facet {
+
+class Framebuffer;
+class GpuMesh;
+class ShaderProgram;
+class TextureCache;
+class ToneMapping;
+
+class Renderer {
+public:
+    Renderer(); // needs the GL context current; creates nothing until the first frame
+    ~Renderer(); // the same context must be current
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Draws the scene into `hdrTarget` (its size is the viewport; aspect from it): background,
+    // then the mesh with the scene's surface variant, into an MSAA target resolved into
+    // `hdrTarget` when view.msaaSamples > 1. False with *error ("Renderer::render: ...") when a
+    // program does not compile or the MSAA target cannot be made; nothing is drawn then.
+    bool render(const RenderScene& scene, Framebuffer& hdrTarget, std::string* error);
+
+    // Display transform of `hdr` into `output` (same size). Writes display-encoded values.
+    bool toneMap(const Framebuffer& hdr, Framebuffer& output, const ViewSettings& view, std::string* error);
+    // The same into any framebuffer (0: the default one, e.g. a widget's), width x height = hdr's size.
+    bool toneMapTo(const Framebuffer& hdr, unsigned framebuffer, const ViewSettings& view, std::string* error);
+
+    // The variant key render() would use for `scene`.
+    static SurfaceVariantKey variantKeyFor(const RenderScene& scene);
+
+    const RenderStats& lastFrameStats() const { return m_frame; }
+    const RenderStats& totalStats() const { return m_total; }
+    // Per-step milliseconds via glFinish() (stalls; for benchmarks and tests).
+    void setTimingEnabled(bool enabled) { m_timing = enabled; }
+
+private:
+    bool ensureFixedPrograms(std::string* error);
+    bool ensureMsaaTarget(int width, int height, int samples, bool fullFloat, std::string* error);
+    void destroyMsaaTarget();
+    void drawBackground(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection);
+    bool drawSurface(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection,
+                     std::string* error);
+
+    SurfaceProgramCache m_surfacePrograms;
+    std::unique_ptr<ShaderProgram> m_backgroundProgram;
+    std::unique_ptr<ToneMapping> m_toneMapping;
+    std::unique_ptr<GpuMesh> m_mesh;
+    std::unique_ptr<TextureCache> m_textures;
+    unsigned m_emptyVao = 0;
+    unsigned m_msaaFramebuffer = 0;
+    unsigned m_msaaColor = 0;
+    unsigned m_msaaDepth = 0;
+    int m_msaaWidth = 0;
+    int m_msaaHeight = 0;
+    int m_msaaSamples = 0;
+    bool m_msaaFullFloat = false;
+    float m_maxRadiance = 65504.0f;
+    RenderStats m_frame;
+    RenderStats m_total;
+    bool m_timing = false;
+};
+
+} // namespace facet

@@ -1,0 +1,123 @@
+#include "render/ShaderVariant.h"
+
+#include <array>
+
+#include "render/ShaderProgram.h"
+
+namespace facet {
+
+namespace {
+
+constexpr std::array<const char*, kSurfaceFeatureBits> kFeatureDefines = {
+    "HAS_BASE_COLOR_MAP", "HAS_NORMAL_MAP",        "HAS_METALLIC_MAP",          "HAS_ROUGHNESS_MAP",
+    "HAS_OCCLUSION_MAP",  "HAS_PUNCTUAL_LIGHTS",   "IRRADIANCE_SH",             "MULTI_SCATTER",
+    "COMPOSITION_LEARNOPENGL", "COUPLING_ENERGY_PRESERVING", "DISTRIBUTION_BECKMANN", "VISIBILITY_UNCORRELATED",
+    "VISIBILITY_SCHLICK", "FRESNEL_DIELECTRIC",
+};
+
+constexpr std::array<const char*, kDebugViewCount> kDebugViewNames = {
+    "none",       "base-color", "shading-normal",       "geometric-normal", "metallic",     "roughness",
+    "occlusion",  "d",          "v",                    "f",                "irradiance",   "ibl-diffuse",
+    "prefiltered-radiance",     "brdf-lut",             "ibl-specular",     "ibl-total",    "direct-light",
+    "white-furnace",
+};
+
+} // namespace
+
+const char* toString(DebugView view)
+{
+    const int index = int(view);
+    return index >= 0 && index < kDebugViewCount ? kDebugViewNames[std::size_t(index)] : "none";
+}
+
+std::optional<DebugView> debugViewFromString(const std::string& name)
+{
+    for (int i = 0; i < kDebugViewCount; ++i)
+        if (name == kDebugViewNames[std::size_t(i)])
+            return DebugView(i);
+    return std::nullopt;
+}
+
+SurfaceFeatures surfaceFeaturesFor(const ShadingModel& model)
+{
+    SurfaceFeatures f = 0;
+    if (model.multiScatter)
+        f = f | SurfaceFeature::MultiScatter;
+    if (model.composition == BrdfComposition::LearnOpenGL)
+        f = f | SurfaceFeature::CompositionLearnOpenGL;
+    if (model.coupling == DielectricCoupling::EnergyPreserving)
+        f = f | SurfaceFeature::EnergyPreservingCoupling;
+    if (model.distribution == Distribution::Beckmann)
+        f = f | SurfaceFeature::Beckmann;
+    if (model.visibility == Visibility::SmithGGXUncorrelated)
+        f = f | SurfaceFeature::VisibilityUncorrelated;
+    if (model.visibility == Visibility::SchlickGGX)
+        f = f | SurfaceFeature::VisibilitySchlick;
+    if (model.fresnel == Fresnel::Dielectric)
+        f = f | SurfaceFeature::FresnelDielectric;
+    return f;
+}
+
+SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMapImage)[kMapSlotCount],
+                                   bool hasPunctualLights, bool irradianceFromSH)
+{
+    SurfaceFeatures f = surfaceFeaturesFor(material.shading);
+    constexpr SurfaceFeature kMapBits[kMapSlotCount] = {SurfaceFeature::HasBaseColorMap, SurfaceFeature::HasNormalMap,
+                                                        SurfaceFeature::HasMetallicMap, SurfaceFeature::HasRoughnessMap,
+                                                        SurfaceFeature::HasOcclusionMap};
+    for (int i = 0; i < kMapSlotCount; ++i)
+        if (hasMapImage[i] && material.maps[std::size_t(i)].hasTexture())
+            f = f | kMapBits[i];
+    if (hasPunctualLights)
+        f = f | SurfaceFeature::HasPunctualLights;
+    if (irradianceFromSH)
+        f = f | SurfaceFeature::IrradianceSH;
+    return f;
+}
+
+std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key)
+{
+    std::vector<std::string> defines;
+    for (int bit = 0; bit < kSurfaceFeatureBits; ++bit)
+        if (key.features & (1u << bit))
+            defines.emplace_back(kFeatureDefines[std::size_t(bit)]);
+    defines.push_back("DEBUG_VIEW " + std::to_string(int(key.debugView)));
+    defines.push_back("MAX_LIGHTS " + std::to_string(kMaxPunctualLights));
+    return defines;
+}
+
+SurfaceProgramCache::SurfaceProgramCache() = default;
+SurfaceProgramCache::~SurfaceProgramCache() = default;
+
+void SurfaceProgramCache::clear()
+{
+    m_programs.clear();
+    m_errors.clear();
+}
+
+const ShaderProgram* SurfaceProgramCache::get(const SurfaceVariantKey& key, std::string* error)
+{
+    if (auto found = m_programs.find(key); found != m_programs.end()) {
+        if (!found->second && error)
+            *error = m_errors[key];
+        return found->second.get();
+    }
+    ++m_compileCount;
+    std::string message;
+    std::optional<ShaderProgram> program = ShaderProgram::create(
+        "surface", {{ShaderStageSource::Stage::Vertex, "surface.vert"}, {ShaderStageSource::Stage::Fragment, "surface.frag"}},
+        surfaceDefines(key), &message);
+    if (!program) {
+        m_errors[key] = "SurfaceProgramCache::get: " + message;
+        if (error)
+            *error = m_errors[key];
+        m_programs[key] = nullptr;
+        return nullptr;
+    }
+    auto stored = std::make_unique<ShaderProgram>(std::move(*program));
+    const ShaderProgram* result = stored.get();
+    m_programs[key] = std::move(stored);
+    return result;
+}
+
+} // namespace facet

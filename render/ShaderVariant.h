@@ -1,0 +1,119 @@
+#pragma once
+// Surface shader variants (after Magnum's PhongGL flags and the glTF Sample Viewer's
+// shader_cache.js): an enum class flag set, one `#define` per bit, plus the debug view as
+// `#define DEBUG_VIEW <n>`. A variant key (flags + debug view) names one compiled program; the
+// cache compiles each key once and counts compiles so tests can see skipped work.
+//
+// What the flags remove (DESIGN.md, "Shader permutations"): without a Has*Map bit the input is
+// the constant factor and the shader declares no sampler for it; without HasNormalMap there is no
+// tangent frame and surface.vert reads no tangent attribute; without HasPunctualLights there is
+// no light loop.
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/Material.h"
+#include "core/ShadingModel.h"
+
+namespace facet {
+
+class ShaderProgram;
+
+enum class SurfaceFeature : uint32_t {
+    None = 0,
+    HasBaseColorMap = 1u << 0,          // HAS_BASE_COLOR_MAP
+    HasNormalMap = 1u << 1,             // HAS_NORMAL_MAP (tangent frame, aTangent)
+    HasMetallicMap = 1u << 2,           // HAS_METALLIC_MAP
+    HasRoughnessMap = 1u << 3,          // HAS_ROUGHNESS_MAP
+    HasOcclusionMap = 1u << 4,          // HAS_OCCLUSION_MAP
+    HasPunctualLights = 1u << 5,        // HAS_PUNCTUAL_LIGHTS (the light loop)
+    IrradianceSH = 1u << 6,             // IRRADIANCE_SH: 9 SH uniforms instead of the irradiance cubemap
+    MultiScatter = 1u << 7,             // MULTI_SCATTER: Turquin 2019 compensation
+    CompositionLearnOpenGL = 1u << 8,   // COMPOSITION_LEARNOPENGL (else glTF 2.0 Appendix B)
+    EnergyPreservingCoupling = 1u << 9, // COUPLING_ENERGY_PRESERVING (else fresnel_mix)
+    Beckmann = 1u << 10,                // DISTRIBUTION_BECKMANN (else GGX)
+    VisibilityUncorrelated = 1u << 11,  // VISIBILITY_UNCORRELATED (separable Smith-GGX)
+    VisibilitySchlick = 1u << 12,       // VISIBILITY_SCHLICK (Smith with Schlick-GGX G1)
+    FresnelDielectric = 1u << 13,       // FRESNEL_DIELECTRIC (exact dielectric Fresnel, lights only)
+};
+inline constexpr int kSurfaceFeatureBits = 14;
+
+using SurfaceFeatures = uint32_t;
+inline constexpr SurfaceFeatures operator|(SurfaceFeature a, SurfaceFeature b) { return uint32_t(a) | uint32_t(b); }
+inline constexpr SurfaceFeatures operator|(SurfaceFeatures a, SurfaceFeature b) { return a | uint32_t(b); }
+inline constexpr bool hasFeature(SurfaceFeatures set, SurfaceFeature f) { return (set & uint32_t(f)) != 0; }
+
+// What the surface pass writes. None is the shaded image; the others show one intermediate value
+// (glTF Sample Viewer's DEBUG_* views). Values are linear and go through the tone-mapping pass
+// like the image (use ToneMapper::None, exposure 0 to see them raw).
+enum class DebugView : int {
+    None = 0,
+    BaseColor,        // linear base colour
+    ShadingNormal,    // n * 0.5 + 0.5, after normal mapping
+    GeometricNormal,  // interpolated vertex normal * 0.5 + 0.5
+    Metallic,
+    Roughness,        // perceptual roughness as used (after the clamp)
+    Occlusion,
+    Distribution,     // D(n.h) for the first light (or l = reflect(-v, n) without lights)
+    Visibility,       // V = G / (4 n.l n.v), same l
+    Fresnel,          // F(v.h) of the composition, same l
+    Irradiance,       // E(n) / pi: the irradiance map or SH, rotated, times intensity
+    IblDiffuse,       // diffuse image-based light
+    PrefilteredRadiance, // prefiltered(R, lodFromRoughness(r))
+    BrdfLut,          // the DFG table at (n.v, r): RGB = scale, bias, E
+    IblSpecular,      // specular image-based light
+    IblTotal,         // IBL diffuse + specular (with occlusion)
+    DirectLight,      // punctual lights only
+    WhiteFurnace,     // white material (base colour 1) under a uniform environment of radiance 1
+};
+inline constexpr int kDebugViewCount = 18;
+// "none", "base-color", "shading-normal", "geometric-normal", "metallic", "roughness",
+// "occlusion", "d", "v", "f", "irradiance", "ibl-diffuse", "prefiltered-radiance", "brdf-lut",
+// "ibl-specular", "ibl-total", "direct-light", "white-furnace" (ViewSettings::debugView).
+const char* toString(DebugView view);
+std::optional<DebugView> debugViewFromString(const std::string& name);
+
+struct SurfaceVariantKey {
+    SurfaceFeatures features = 0;
+    DebugView debugView = DebugView::None;
+    bool operator==(const SurfaceVariantKey&) const = default;
+    auto operator<=>(const SurfaceVariantKey&) const = default;
+};
+
+// The flags a material + scene need: map bits from the material's textures (only where an image
+// is given), model bits from its ShadingModel, lights when any enabled light exists.
+SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMapImage)[kMapSlotCount],
+                                   bool hasPunctualLights, bool irradianceFromSH);
+SurfaceFeatures surfaceFeaturesFor(const ShadingModel& model);
+
+// One "#define NAME" per set bit, in bit order, then "DEBUG_VIEW <n>" and "MAX_LIGHTS <n>".
+std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key);
+inline constexpr int kMaxPunctualLights = 8;
+
+// Compiled surface programs by key. Needs the GL context current for get() and destruction.
+class SurfaceProgramCache {
+public:
+    SurfaceProgramCache();
+    ~SurfaceProgramCache();
+    SurfaceProgramCache(const SurfaceProgramCache&) = delete;
+    SurfaceProgramCache& operator=(const SurfaceProgramCache&) = delete;
+
+    // The program for `key`, compiling it on first use (surface.vert + surface.frag). nullptr on
+    // a compile or link error, with *error set (ShaderProgram's message, which names the file and
+    // line); a failed key is remembered and not recompiled every frame.
+    const ShaderProgram* get(const SurfaceVariantKey& key, std::string* error);
+    int compileCount() const { return m_compileCount; }
+    std::size_t size() const { return m_programs.size(); }
+    void clear();
+
+private:
+    std::map<SurfaceVariantKey, std::unique_ptr<ShaderProgram>> m_programs; // null: failed
+    std::map<SurfaceVariantKey, std::string> m_errors;
+    int m_compileCount = 0;
+};
+
+} // namespace facet

@@ -1,0 +1,36 @@
+// Pixels that miss the mesh: the environment cubemap (sharp), the prefiltered cubemap at a
+// roughness (blurred), or a solid colour; drawn first at the far plane. Linear radiance.
+#include "ibl_lookup.glsl"
+
+in vec2 vClip;
+
+uniform mat4 uInverseViewProjection;
+uniform vec3 uCameraPosition;
+uniform int uBackgroundMode; // 0 environment, 1 blurred, 2 colour (core BackgroundMode)
+uniform vec3 uBackgroundColor;
+uniform samplerCube uEnvironmentMap;
+uniform samplerCube uPrefilteredMap;
+uniform float uPrefilteredLevels;
+uniform float uBlurRoughness;
+uniform mat3 uEnvironmentRotation;
+uniform float uEnvironmentIntensity;
+uniform float uMaxRadiance; // 65504 for RGBA16F targets (see surface.frag)
+
+out vec4 fragColor;
+
+void main()
+{
+    if (uBackgroundMode == 2) {
+        fragColor = vec4(min(uBackgroundColor, vec3(uMaxRadiance)), 1.0);
+        return;
+    }
+    vec4 farPoint = uInverseViewProjection * vec4(vClip, 1.0, 1.0);
+    vec3 direction = normalize(farPoint.xyz / farPoint.w - uCameraPosition);
+    vec3 d = uEnvironmentRotation * direction;
+    vec3 radiance;
+    if (uBackgroundMode == 1)
+        radiance = textureLod(uPrefilteredMap, d, lodFromRoughness(uBlurRoughness, uPrefilteredLevels)).rgb;
+    else
+        radiance = textureLod(uEnvironmentMap, d, 0.0).rgb;
+    fragColor = vec4(min(radiance * uEnvironmentIntensity, vec3(uMaxRadiance)), 1.0);
+}

@@ -1,0 +1,113 @@
+// The material's inputs at a fragment (the glTF Sample Viewer's MaterialInfo), from constant
+// factors and, where the variant says HAS_*_MAP, one texture each. Twin of what core's
+// MaterialInfo holds after textures (core/Material.h explains every factor).
+//
+// Slots (core/Material.h MapSlot): 0 base colour, 1 normal, 2 metallic, 3 roughness, 4 occlusion.
+// Per slot: uUvTransform (KHR_texture_transform matrix, core UvTransform::matrix()), uChannel
+// (0 rgb, 1 r, 2 g, 3 b, 4 a: core MapChannel), uInvert (scalar maps: 1 - value).
+// sRGB-encoded maps are uploaded as GL_SRGB8_ALPHA8, so texture() returns linear values
+// (decoded before filtering, as the sRGB specification intends); no decode happens here.
+
+struct MaterialInfo {
+    vec3 baseColor;            // linear
+    float metallic;
+    float perceptualRoughness; // clamped to kMinPerceptualRoughness where used
+    float ior;
+    float occlusion;           // multiplies indirect light only
+};
+
+uniform vec4 uBaseColorFactor;
+uniform float uMetallicFactor;
+uniform float uRoughnessFactor;
+uniform float uOcclusionStrength;
+uniform float uNormalStrength;
+uniform float uIor;
+uniform mat3 uUvTransform[5];
+uniform int uChannel[5];
+uniform int uInvert[5];
+uniform int uFlipGreen;
+
+#ifdef HAS_BASE_COLOR_MAP
+uniform sampler2D uBaseColorMap;
+#endif
+#ifdef HAS_NORMAL_MAP
+uniform sampler2D uNormalMap;
+#endif
+#ifdef HAS_METALLIC_MAP
+uniform sampler2D uMetallicMap;
+#endif
+#ifdef HAS_ROUGHNESS_MAP
+uniform sampler2D uRoughnessMap;
+#endif
+#ifdef HAS_OCCLUSION_MAP
+uniform sampler2D uOcclusionMap;
+#endif
+
+vec2 mapUv(int slot, vec2 uv) { return (uUvTransform[slot] * vec3(uv, 1.0)).xy; }
+
+float pickChannel(vec4 texel, int channel)
+{
+    if (channel == 2)
+        return texel.g;
+    if (channel == 3)
+        return texel.b;
+    if (channel == 4)
+        return texel.a;
+    return texel.r; // r, or rgb on a scalar map: the red channel
+}
+
+float scalarMapValue(int slot, vec4 texel)
+{
+    float value = pickChannel(texel, uChannel[slot]);
+    return uInvert[slot] != 0 ? 1.0 - value : value;
+}
+
+MaterialInfo materialInputs(vec2 uv)
+{
+    MaterialInfo m;
+    m.baseColor = uBaseColorFactor.rgb;
+#ifdef HAS_BASE_COLOR_MAP
+    vec4 base = texture(uBaseColorMap, mapUv(0, uv));
+    m.baseColor *= uChannel[0] == 0 ? base.rgb : vec3(pickChannel(base, uChannel[0]));
+#endif
+    m.metallic = uMetallicFactor;
+#ifdef HAS_METALLIC_MAP
+    m.metallic *= scalarMapValue(2, texture(uMetallicMap, mapUv(2, uv)));
+#endif
+    m.perceptualRoughness = uRoughnessFactor;
+#ifdef HAS_ROUGHNESS_MAP
+    m.perceptualRoughness *= scalarMapValue(3, texture(uRoughnessMap, mapUv(3, uv)));
+#endif
+    m.occlusion = 1.0;
+#ifdef HAS_OCCLUSION_MAP
+    // glTF occlusionTexture.strength: mix(1, ao, strength).
+    m.occlusion = 1.0 + uOcclusionStrength * (scalarMapValue(4, texture(uOcclusionMap, mapUv(4, uv))) - 1.0);
+#endif
+    m.baseColor = max(m.baseColor, vec3(0.0));
+    m.metallic = clamp(m.metallic, 0.0, 1.0);
+    m.perceptualRoughness = clamp(m.perceptualRoughness, 0.0, 1.0);
+    m.ior = uIor;
+    return m;
+}
+
+// The shading normal: the geometric normal ng (unit, facing the viewer), perturbed by the
+// tangent-space normal map (OpenGL convention, +Y green; uFlipGreen for DirectX maps) scaled in
+// X and Y by the strength (glTF normalTexture.scale).
+#ifdef HAS_NORMAL_MAP
+vec3 shadingNormal(vec3 ng, vec4 tangent, vec2 uv)
+{
+    vec3 t = tangent.xyz - ng * dot(ng, tangent.xyz);
+    float tLength = length(t);
+    if (tLength < 1e-8)
+        return ng; // degenerate tangent: no frame to map in
+    t /= tLength;
+    vec3 b = cross(ng, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
+    vec3 tn = texture(uNormalMap, mapUv(1, uv)).rgb * 2.0 - 1.0;
+    if (uFlipGreen != 0)
+        tn.y = -tn.y;
+    tn.xy *= uNormalStrength;
+    vec3 n = t * tn.x + b * tn.y + ng * tn.z;
+    float nLength = length(n);
+    return nLength > 1e-8 ? n / nLength : ng;
+}
+#endif

@@ -1,0 +1,114 @@
+// The surface pass: material inputs -> image-based light (split sum) + punctual lights, lobes
+// kept apart (glTF Sample Viewer's pbr.frag), written as linear HDR radiance. Variants: see
+// render/ShaderVariant.h. Twin of core/MaterialBrdf.cpp (lights) and core/SplitSum.cpp (IBL).
+#include "debug_views.glsl"
+#include "material_inputs.glsl"
+#include "brdf_compose.glsl"
+#include "environment_lighting.glsl"
+#ifdef HAS_PUNCTUAL_LIGHTS
+#include "lights_punctual.glsl"
+#endif
+
+in vec3 vWorldPosition;
+in vec3 vNormal;
+in vec2 vUv;
+#ifdef HAS_NORMAL_MAP
+in vec4 vTangent;
+#endif
+
+uniform vec3 uCameraPosition;
+// The largest value the target holds: 65504 for RGBA16F, so radiance beyond it (a 1e6 sun)
+// saturates instead of becoming +Inf, which tone mappers would turn into NaN.
+uniform float uMaxRadiance;
+
+out vec4 fragColor;
+
+void main()
+{
+    vec3 v = normalize(uCameraPosition - vWorldPosition);
+    vec3 ng = normalize(vNormal);
+    if (!gl_FrontFacing)
+        ng = -ng; // two-sided: shade the side the camera sees
+    MaterialInfo m = materialInputs(vUv);
+#if DEBUG_VIEW == DEBUG_WHITE_FURNACE
+    m.baseColor = vec3(1.0);
+    m.occlusion = 1.0;
+#endif
+#ifdef HAS_NORMAL_MAP
+    vec3 n = shadingNormal(ng, vTangent, vUv);
+#else
+    vec3 n = ng;
+#endif
+    // Normal-mapped normals may face away from the viewer: keep n.v >= 0 consistent with core's
+    // evaluate(), which returns zero below the surface.
+
+    BrdfLobes ibl = environmentLobes(m, n, v);
+    vec3 direct = vec3(0.0);
+#ifdef HAS_PUNCTUAL_LIGHTS
+    for (int i = 0; i < uLightCount; ++i) {
+        vec3 lightIrradiance;
+        vec3 l = lightDirection(i, vWorldPosition, lightIrradiance);
+        float NoL = dot(n, l);
+        if (NoL <= 0.0)
+            continue;
+        BrdfLobes f = evaluateBrdf(m, n, v, l, true);
+        direct += (f.diffuse + f.specular) * lightIrradiance * NoL;
+    }
+#endif
+    // Ambient occlusion darkens indirect light only.
+    vec3 indirect = (ibl.diffuse + ibl.specular) * m.occlusion;
+    vec3 color = indirect + direct;
+
+#if DEBUG_VIEW != DEBUG_NONE
+    // The l that the D, V and F views evaluate: the first light, else the mirror direction.
+    vec3 debugL = reflect(-v, n);
+#ifdef HAS_PUNCTUAL_LIGHTS
+    if (uLightCount > 0) {
+        vec3 unused;
+        debugL = lightDirection(0, vWorldPosition, unused);
+    }
+#endif
+    float debugNoV = clamp(dot(n, v), 0.0, 1.0);
+    float debugNoL = clamp(dot(n, debugL), 0.0, 1.0);
+    vec3 debugH = normalize(v + debugL);
+    float debugR = clampRoughness(m.perceptualRoughness);
+#endif
+#if DEBUG_VIEW == DEBUG_BASE_COLOR
+    color = m.baseColor;
+#elif DEBUG_VIEW == DEBUG_SHADING_NORMAL
+    color = n * 0.5 + 0.5;
+#elif DEBUG_VIEW == DEBUG_GEOMETRIC_NORMAL
+    color = ng * 0.5 + 0.5;
+#elif DEBUG_VIEW == DEBUG_METALLIC
+    color = vec3(m.metallic);
+#elif DEBUG_VIEW == DEBUG_ROUGHNESS
+    color = vec3(debugR);
+#elif DEBUG_VIEW == DEBUG_OCCLUSION
+    color = vec3(m.occlusion);
+#elif DEBUG_VIEW == DEBUG_D
+    color = vec3(distribution(saturate(dot(n, debugH)), debugR * debugR));
+#elif DEBUG_VIEW == DEBUG_V
+    color = vec3(visibility(debugNoV, debugNoL, debugR * debugR, debugR, true));
+#elif DEBUG_VIEW == DEBUG_F
+    color = compositionFresnel(m, saturate(dot(v, debugH)));
+#elif DEBUG_VIEW == DEBUG_IRRADIANCE
+    color = irradiance(n) * INV_PI;
+#elif DEBUG_VIEW == DEBUG_IBL_DIFFUSE
+    color = ibl.diffuse * m.occlusion;
+#elif DEBUG_VIEW == DEBUG_PREFILTERED_RADIANCE
+    color = prefilteredRadiance(reflect(-v, n), debugR);
+#elif DEBUG_VIEW == DEBUG_BRDF_LUT
+    color = dfgLookup(debugNoV, debugR);
+#elif DEBUG_VIEW == DEBUG_IBL_SPECULAR
+    color = ibl.specular * m.occlusion;
+#elif DEBUG_VIEW == DEBUG_IBL_TOTAL
+    color = indirect;
+#elif DEBUG_VIEW == DEBUG_DIRECT_LIGHT
+    color = direct;
+#elif DEBUG_VIEW == DEBUG_WHITE_FURNACE
+    color = ibl.diffuse + ibl.specular;
+#endif
+    if (any(isnan(color)))
+        color = vec3(0.0);
+    fragColor = vec4(min(color, vec3(uMaxRadiance)), 1.0);
+}

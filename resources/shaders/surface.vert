@@ -1,0 +1,29 @@
+// The surface pass's vertex stage. Attribute locations match render/GpuMesh (core/Mesh.h's
+// Vertex: position, normal, tangent, uv). Without HAS_NORMAL_MAP no tangent is read.
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+#ifdef HAS_NORMAL_MAP
+layout(location = 2) in vec4 aTangent; // xyz along dP/du, w = handedness (glTF 2.0)
+out vec4 vTangent;
+#endif
+layout(location = 3) in vec2 aUv;
+
+uniform mat4 uModel;
+uniform mat3 uNormalMatrix; // inverse transpose of uModel's upper 3x3
+uniform mat4 uViewProjection;
+
+out vec3 vWorldPosition;
+out vec3 vNormal;
+out vec2 vUv;
+
+void main()
+{
+    vec4 world = uModel * vec4(aPosition, 1.0);
+    vWorldPosition = world.xyz;
+    vNormal = uNormalMatrix * aNormal;
+    vUv = aUv;
+#ifdef HAS_NORMAL_MAP
+    vTangent = vec4(mat3(uModel) * aTangent.xyz, aTangent.w);
+#endif
+    gl_Position = uViewProjection * world;
+}
