@@ -7,10 +7,22 @@
 #include <QCommandLineParser>
 #include <QFileInfo>
 
+#include <chrono>
+
+#include "core/Brdf.h"
+#include "core/DfgTable.h"
 #include "core/GroundTruth.h"
 #include "core/Image.h"
+#include "core/MaterialBrdf.h"
 #include "core/MaterialPresets.h"
+#include "core/ProjectAssets.h"
 #include "core/ToneMap.h"
+#include "render/Framebuffer.h"
+#include "render/HeadlessGLContext.h"
+#include "render/IblPrecompute.h"
+#include "render/IblSettings.h"
+#include "render/RenderScene.h"
+#include "render/Renderer.h"
 
 namespace facet {
 
@@ -318,15 +330,124 @@ int runGroundTruth(const RenderRequest& request)
     return 0;
 }
 
+int runGpu(const RenderRequest& request)
+{
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    const Project& project = request.project;
+    std::string error;
+    std::string warning;
+    auto assets = loadProjectAssets(project, &error, &warning);
+    if (!warning.empty())
+        std::fprintf(stderr, "facet render: %s\n", warning.c_str());
+    if (!assets) {
+        std::fprintf(stderr, "facet render: %s\n", error.c_str());
+        return RenderCommand::kExitFailure;
+    }
+    const auto loaded = Clock::now();
+
+    // A surfaceless EGL context: no display server needed (shared/PLATFORM.md).
+    auto context = HeadlessGLContext::create(&error);
+    if (!context) {
+        std::fprintf(stderr, "facet render: %s\n", error.c_str());
+        return RenderCommand::kExitFailure;
+    }
+    const auto settings = IblSettings::preset(toString(project.environment.quality));
+    Q_ASSERT(settings); // the project validated its quality name
+    int exitCode = 0;
+    {
+        IblPrecompute precompute;
+        IblStats iblStats;
+        const auto ibl = precompute.prepare(assets->environment, *settings, &iblStats, &error);
+        if (!ibl) {
+            std::fprintf(stderr, "facet render: %s\n", error.c_str());
+            return RenderCommand::kExitFailure;
+        }
+        if (!precompute.lastWarning().empty())
+            std::fprintf(stderr, "facet render: %s\n", precompute.lastWarning().c_str());
+
+        RenderScene scene;
+        scene.mesh = assets->mesh;
+        scene.meshKey = assets->meshKey;
+        scene.material = project.material;
+        for (MapSlot slot : kAllMapSlots) {
+            const LoadedMapImage& map = assets->maps[std::size_t(slot)];
+            scene.maps[std::size_t(slot)] = RenderMapImage{map.image, map.path, map.timestamp};
+        }
+        scene.lights = project.lights;
+        scene.view = project.view;
+        scene.camera = project.camera;
+        if (request.referenceView) {
+            // DESIGN.md's reference view: one sample through each pixel centre, the environment
+            // behind the object.
+            scene.camera = Camera::referenceView();
+            scene.view.msaaSamples = 1;
+            scene.view.background = BackgroundMode::Environment;
+        }
+        scene.environment = environmentLighting(ibl, assets->environment.rotationDegrees(),
+                                                assets->environment.intensity(),
+                                                settings->irradiance == IblSettings::Irradiance::SH);
+        if (project.material.shading.coupling == DielectricCoupling::EnergyPreserving) {
+            const DfgTable table = DfgTable::compute(32, 512, project.material.shading.visibility);
+            const MaterialBrdf brdf(project.material.shading, table);
+            scene.dielectricAverageAlbedo = brdf.dielectricSpecularAverageAlbedo(
+                shading::f0FromIor(project.material.ior), project.material.roughness());
+        }
+
+        Renderer renderer;
+        renderer.setTimingEnabled(request.printStats);
+        auto hdr = Framebuffer::create(request.width, request.height, FramebufferFormat::RGBA16F, &error);
+        if (!hdr || !renderer.render(scene, *hdr, &error)) {
+            std::fprintf(stderr, "facet render: %s\n", error.c_str());
+            return RenderCommand::kExitFailure;
+        }
+        const bool png = QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower() == QStringLiteral("png");
+        Image image;
+        if (png) {
+            // The viewport's own display transform, on the GPU.
+            auto display = Framebuffer::create(request.width, request.height, FramebufferFormat::RGBA16F, &error);
+            if (!display || !renderer.toneMap(*hdr, *display, scene.view, &error)) {
+                std::fprintf(stderr, "facet render: %s\n", error.c_str());
+                return RenderCommand::kExitFailure;
+            }
+            image = display->readPixels();
+            image.setEncoding(ColorEncoding::SRGB);
+        } else {
+            image = hdr->readPixels();
+        }
+        if (!image.save(request.outputPath, &error, /*alpha=*/false)) {
+            std::fprintf(stderr, "facet render: %s\n", error.c_str());
+            exitCode = RenderCommand::kExitFailure;
+        }
+        if (request.printStats) {
+            const RenderStats& frame = renderer.lastFrameStats();
+            const GLInfo& gl = context->info();
+            std::printf("renderer: gpu\ngl: %s\ngl_renderer: %s\nsize: %dx%d\nquality: %s\n", gl.version.c_str(),
+                        gl.renderer.c_str(), request.width, request.height, toString(project.environment.quality));
+            std::printf("load_ms: %.1f\n",
+                        std::chrono::duration<double, std::milli>(loaded - start).count());
+            std::printf("ibl_passes_run: %d\nibl_cache_hits_memory: %d\nibl_cache_hits_disk: %d\n", iblStats.passesRun,
+                        iblStats.cacheHitsMemory, iblStats.cacheHitsDisk);
+            std::printf("ibl_ms: %.1f (equirect_to_cube %.1f, prefilter %.1f, irradiance %.1f, dfg %.1f, sh %.1f)\n",
+                        iblStats.msTotal, iblStats.msEquirectToCube, iblStats.msPrefilter, iblStats.msIrradiance,
+                        iblStats.msDfg, iblStats.msSh);
+            std::printf("programs_compiled: %d\ntextures_uploaded: %d\nmeshes_uploaded: %d\ndraw_calls: %d\n",
+                        frame.programsCompiled, frame.texturesUploaded, frame.meshesUploaded, frame.drawCalls);
+            std::printf("frame_ms: upload %.1f, surface %.1f, background %.1f, resolve %.1f, tone_map %.1f\n",
+                        frame.uploadMs, frame.surfaceMs, frame.backgroundMs, frame.resolveMs, frame.toneMapMs);
+            std::printf("total_ms: %.1f\n", std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+        }
+    }
+    return exitCode;
+}
+
 } // namespace
 
 int RenderCommand::run(const RenderRequest& request)
 {
     if (request.samplesPerPixel > 0)
         return runGroundTruth(request);
-    std::fprintf(stderr, "facet render: the GPU renderer is not available in this version; use --spp N for the "
-                         "CPU ground truth\n");
-    return kExitUsage;
+    return runGpu(request);
 }
 
 } // namespace facet

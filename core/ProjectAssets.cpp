@@ -1,0 +1,108 @@
+#include "core/ProjectAssets.h"
+
+#include <QDateTime>
+#include <QFileInfo>
+
+#include "core/MeshImport.h"
+#include "core/MeshPrimitives.h"
+#include "core/Project.h"
+
+namespace facet {
+
+namespace {
+
+void appendWarning(std::string* warning, const std::string& text)
+{
+    if (!warning || text.empty())
+        return;
+    if (!warning->empty())
+        *warning += '\n';
+    *warning += text;
+}
+
+std::uint64_t fnv1a(const std::string& text, std::uint64_t hash = 0xcbf29ce484222325ULL)
+{
+    for (unsigned char c : text) {
+        hash ^= c;
+        hash *= 0x100000001b3ULL;
+    }
+    return hash;
+}
+
+std::int64_t modificationTime(const std::string& path)
+{
+    return QFileInfo(QString::fromStdString(path)).lastModified().toMSecsSinceEpoch();
+}
+
+} // namespace
+
+std::optional<Mesh> loadViewMesh(const std::string& nameOrPath, std::string* error, std::string* warning)
+{
+    if (auto primitive = makePrimitive(nameOrPath)) {
+        primitive->normalizeToUnitSphere();
+        return primitive;
+    }
+    std::string importError;
+    std::string importWarning;
+    auto mesh = importMesh(nameOrPath, &importError, &importWarning);
+    appendWarning(warning, importWarning);
+    if (!mesh) {
+        if (error)
+            *error = importError;
+        return std::nullopt;
+    }
+    mesh->normalizeToUnitSphere();
+    return mesh;
+}
+
+std::optional<ProjectAssets> loadProjectAssets(const Project& project, std::string* error, std::string* warning)
+{
+    ProjectAssets assets;
+    std::string problem;
+    std::string note;
+    auto environment = Environment::fromSpec(project.environment.source, &problem, &note);
+    appendWarning(warning, note);
+    if (!environment) {
+        if (error)
+            *error = "loadProjectAssets: environment: " + problem;
+        return std::nullopt;
+    }
+    environment->setRotationDegrees(project.environment.rotationDegrees);
+    environment->setIntensity(project.environment.intensity);
+    assets.environment = std::move(*environment);
+
+    auto mesh = loadViewMesh(project.view.mesh, &problem, warning);
+    if (!mesh) {
+        if (error)
+            *error = "loadProjectAssets: mesh: " + problem;
+        return std::nullopt;
+    }
+    assets.mesh = std::make_shared<const Mesh>(std::move(*mesh));
+    const bool isFile = QFileInfo::exists(QString::fromStdString(project.view.mesh));
+    assets.meshKey = fnv1a(project.view.mesh, isFile ? std::uint64_t(modificationTime(project.view.mesh)) : 1u);
+
+    for (MapSlot slot : kAllMapSlots) {
+        const MaterialMap& map = project.material.map(slot);
+        if (!map.hasTexture())
+            continue;
+        note.clear();
+        ImageLoadStats stats;
+        auto image = Image::load(map.path, &problem, &stats);
+        if (!image) {
+            if (error)
+                *error = std::string("loadProjectAssets: ") + toString(slot) + " map: " + problem;
+            return std::nullopt;
+        }
+        if (stats.total() > 0)
+            appendWarning(warning, map.path + ": replaced " + std::to_string(stats.nanCount) + " NaN, "
+                                       + std::to_string(stats.infCount) + " Inf, "
+                                       + std::to_string(stats.negativeCount) + " negative samples");
+        LoadedMapImage& loaded = assets.maps[std::size_t(slot)];
+        loaded.image = std::make_shared<const Image>(std::move(*image));
+        loaded.path = map.path;
+        loaded.timestamp = modificationTime(map.path);
+    }
+    return assets;
+}
+
+} // namespace facet

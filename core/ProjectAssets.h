@@ -1,0 +1,44 @@
+#pragma once
+// What a project refers to, loaded: the environment, the mesh and the material's map images.
+// core loads, render uploads (shared/DESIGN.md): the viewport and the headless commands both
+// turn a Project into ProjectAssets here, then hand the assets to the renderer.
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/Environment.h"
+#include "core/Image.h"
+#include "core/Material.h"
+#include "core/Mesh.h"
+
+namespace facet {
+
+struct Project;
+
+struct LoadedMapImage {
+    std::shared_ptr<const Image> image; // null: the slot uses its constant factor only
+    std::string path;
+    std::int64_t timestamp = 0; // file modification time, ms since the epoch
+};
+
+struct ProjectAssets {
+    Environment environment; // rotation and intensity applied
+    std::shared_ptr<const Mesh> mesh; // normalised to the unit bounding sphere
+    std::uint64_t meshKey = 0;        // changes when the mesh source or its file changes
+    std::array<LoadedMapImage, kMapSlotCount> maps{};
+};
+
+// Loads everything `project` names. Errors name the file and the problem (the environment,
+// the mesh, or a map: "loadProjectAssets: baseColor map: Image::load: <path>: <reason>").
+// Warnings (sanitised pixels, generated UVs...) are appended to `warning`, one per line.
+std::optional<ProjectAssets> loadProjectAssets(const Project& project, std::string* error,
+                                               std::string* warning = nullptr);
+
+// The mesh a view names: a built-in primitive ("sphere", "cube", ...) or a mesh file, normalised
+// to the unit bounding sphere (the built-in sphere is already the unit sphere of the reference view).
+std::optional<Mesh> loadViewMesh(const std::string& nameOrPath, std::string* error, std::string* warning = nullptr);
+
+} // namespace facet
