@@ -6,26 +6,11 @@
 #include <numbers>
 #include <utility>
 
+#include "core/EnumNames.h"
+
 namespace facet {
 
 namespace {
-template <typename Enum, std::size_t N>
-std::optional<Enum> lookup(const std::pair<Enum, const char*> (&table)[N], std::string_view name)
-{
-    for (const auto& [value, text] : table)
-        if (name == text)
-            return value;
-    return std::nullopt;
-}
-template <typename Enum, std::size_t N>
-const char* nameOf(const std::pair<Enum, const char*> (&table)[N], Enum value)
-{
-    for (const auto& [v, text] : table)
-        if (v == value)
-            return text;
-    return "";
-}
-
 constexpr std::pair<MapSlot, const char*> kSlots[]
     = {{MapSlot::BaseColor, "baseColor"}, {MapSlot::Normal, "normal"}, {MapSlot::Metallic, "metallic"},
         {MapSlot::Roughness, "roughness"}, {MapSlot::Occlusion, "occlusion"}};
@@ -104,27 +89,27 @@ bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
 
 const char* toString(MapSlot slot)
 {
-    return nameOf(kSlots, slot);
+    return enumName(kSlots, slot);
 }
 std::optional<MapSlot> mapSlotFromString(std::string_view name)
 {
-    return lookup(kSlots, name);
+    return enumFromName(kSlots, name);
 }
 const char* toString(MapChannel channel)
 {
-    return nameOf(kChannels, channel);
+    return enumName(kChannels, channel);
 }
 std::optional<MapChannel> mapChannelFromString(std::string_view name)
 {
-    return lookup(kChannels, name);
+    return enumFromName(kChannels, name);
 }
 const char* toString(ColorEncoding encoding)
 {
-    return nameOf(kEncodings, encoding);
+    return enumName(kEncodings, encoding);
 }
 std::optional<ColorEncoding> colorEncodingFromString(std::string_view name)
 {
-    return lookup(kEncodings, name);
+    return enumFromName(kEncodings, name);
 }
 
 glm::dmat3 UvTransform::matrix() const

@@ -17,28 +17,11 @@
 #include <QSet>
 #include <QStorageInfo>
 
+#include "core/EnumNames.h"
+
 namespace facet {
 
 namespace {
-
-// ---- Names ------------------------------------------------------------------------------
-
-template <typename Enum, std::size_t N>
-std::optional<Enum> lookup(const std::pair<Enum, const char*> (&table)[N], std::string_view name)
-{
-    for (const auto& [value, text] : table)
-        if (name == text)
-            return value;
-    return std::nullopt;
-}
-template <typename Enum, std::size_t N>
-const char* nameOf(const std::pair<Enum, const char*> (&table)[N], Enum value)
-{
-    for (const auto& [v, text] : table)
-        if (v == value)
-            return text;
-    return "";
-}
 
 constexpr std::pair<ToneMapper, const char*> kToneMappers[] = {{ToneMapper::None, "none"},
     {ToneMapper::Reinhard, "reinhard"}, {ToneMapper::Exposure, "exposure"}, {ToneMapper::Aces, "aces"},
@@ -644,35 +627,35 @@ QString volumeRoot(const QString& path)
 
 const char* toString(ToneMapper value)
 {
-    return nameOf(kToneMappers, value);
+    return enumName(kToneMappers, value);
 }
 std::optional<ToneMapper> toneMapperFromString(std::string_view name)
 {
-    return lookup(kToneMappers, name);
+    return enumFromName(kToneMappers, name);
 }
 const char* toString(DisplayEncoding value)
 {
-    return nameOf(kDisplayEncodings, value);
+    return enumName(kDisplayEncodings, value);
 }
 std::optional<DisplayEncoding> displayEncodingFromString(std::string_view name)
 {
-    return lookup(kDisplayEncodings, name);
+    return enumFromName(kDisplayEncodings, name);
 }
 const char* toString(BackgroundMode value)
 {
-    return nameOf(kBackgroundModes, value);
+    return enumName(kBackgroundModes, value);
 }
 std::optional<BackgroundMode> backgroundModeFromString(std::string_view name)
 {
-    return lookup(kBackgroundModes, name);
+    return enumFromName(kBackgroundModes, name);
 }
 const char* toString(IblQuality value)
 {
-    return nameOf(kIblQualities, value);
+    return enumName(kIblQualities, value);
 }
 std::optional<IblQuality> iblQualityFromString(std::string_view name)
 {
-    return lookup(kIblQualities, name);
+    return enumFromName(kIblQualities, name);
 }
 
 // ---- Validation -------------------------------------------------------------------------

@@ -1,25 +1,10 @@
 #include "core/ShadingModel.h"
 
+#include "core/EnumNames.h"
+
 namespace facet {
 
 namespace {
-template <typename Enum, std::size_t N>
-std::optional<Enum> lookup(const std::pair<Enum, const char*> (&table)[N], std::string_view name)
-{
-    for (const auto& [value, text] : table)
-        if (name == text)
-            return value;
-    return std::nullopt;
-}
-template <typename Enum, std::size_t N>
-const char* nameOf(const std::pair<Enum, const char*> (&table)[N], Enum value)
-{
-    for (const auto& [v, text] : table)
-        if (v == value)
-            return text;
-    return "";
-}
-
 constexpr std::pair<BrdfComposition, const char*> kCompositions[] = {
     {BrdfComposition::Gltf, "gltf"}, {BrdfComposition::LearnOpenGL, "learnopengl"}};
 constexpr std::pair<Distribution, const char*> kDistributions[] = {
@@ -34,15 +19,15 @@ constexpr std::pair<DielectricCoupling, const char*> kCouplings[] = {
     {DielectricCoupling::FresnelMix, "fresnel-mix"}, {DielectricCoupling::EnergyPreserving, "energy-preserving"}};
 } // namespace
 
-const char* toString(BrdfComposition value) { return nameOf(kCompositions, value); }
-const char* toString(Distribution value) { return nameOf(kDistributions, value); }
-const char* toString(Visibility value) { return nameOf(kVisibilities, value); }
-const char* toString(Fresnel value) { return nameOf(kFresnels, value); }
-const char* toString(DielectricCoupling value) { return nameOf(kCouplings, value); }
-std::optional<BrdfComposition> brdfCompositionFromString(std::string_view name) { return lookup(kCompositions, name); }
-std::optional<Distribution> distributionFromString(std::string_view name) { return lookup(kDistributions, name); }
-std::optional<Visibility> visibilityFromString(std::string_view name) { return lookup(kVisibilities, name); }
-std::optional<Fresnel> fresnelFromString(std::string_view name) { return lookup(kFresnels, name); }
-std::optional<DielectricCoupling> dielectricCouplingFromString(std::string_view name) { return lookup(kCouplings, name); }
+const char* toString(BrdfComposition value) { return enumName(kCompositions, value); }
+const char* toString(Distribution value) { return enumName(kDistributions, value); }
+const char* toString(Visibility value) { return enumName(kVisibilities, value); }
+const char* toString(Fresnel value) { return enumName(kFresnels, value); }
+const char* toString(DielectricCoupling value) { return enumName(kCouplings, value); }
+std::optional<BrdfComposition> brdfCompositionFromString(std::string_view name) { return enumFromName(kCompositions, name); }
+std::optional<Distribution> distributionFromString(std::string_view name) { return enumFromName(kDistributions, name); }
+std::optional<Visibility> visibilityFromString(std::string_view name) { return enumFromName(kVisibilities, name); }
+std::optional<Fresnel> fresnelFromString(std::string_view name) { return enumFromName(kFresnels, name); }
+std::optional<DielectricCoupling> dielectricCouplingFromString(std::string_view name) { return enumFromName(kCouplings, name); }
 
 } // namespace facet
