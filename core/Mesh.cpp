@@ -116,7 +116,7 @@ bool Mesh::transform(const glm::mat4& matrix, std::string* problem)
         return fail("Mesh::transform: '" + name + "': the matrix is singular or not finite", problem);
 
     // Normals are covectors: they transform by the inverse transpose (Lengyel, "Mathematics for
-    // 3D Game Programming and Computer Graphics", 3rd ed., section 3.5). Tangents and bitangents
+    // 3D Game Programming and Computer Graphics", 3rd ed., section 4.5). Tangents and bitangents
     // are surface directions (dP/du, dP/dv) and take the matrix itself.
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
     for (Vertex& v : vertices) {
@@ -174,13 +174,15 @@ bool Mesh::validate(std::string* problem) const
                 return vertexProblem(i,
                     "tangent " + vec3Text(t) + " is not perpendicular to the normal " + vec3Text(v.normal));
             if (v.tangent.w != 1.0f && v.tangent.w != -1.0f)
-                return vertexProblem(i, "tangent handedness w is " + std::to_string(v.tangent.w) + ", not +-1");
+                return vertexProblem(
+                    i, "tangent handedness w is " + std::to_string(v.tangent.w) + ", not +-1");
         }
         // Bounds must hold every vertex (to a relative float tolerance): render/ culls and frames by them.
         const glm::vec3 slack = 1e-5f * (glm::abs(bounds.min) + glm::abs(bounds.max) + 1.0f);
         if (bounds.isEmpty() || glm::any(glm::lessThan(v.position, bounds.min - slack))
             || glm::any(glm::greaterThan(v.position, bounds.max + slack)))
-            return vertexProblem(i, "position " + vec3Text(v.position) + " is outside the bounds (call updateBounds())");
+            return vertexProblem(
+                i, "position " + vec3Text(v.position) + " is outside the bounds (call updateBounds())");
     }
 
     for (std::size_t s = 0; s < subMeshes.size(); ++s) {
@@ -188,8 +190,8 @@ bool Mesh::validate(std::string* problem) const
         const uint64_t end = uint64_t(sub.firstIndex) + sub.indexCount;
         if (sub.firstIndex % 3 != 0 || sub.indexCount % 3 != 0 || end > indices.size())
             return fail(prefix + "sub-mesh " + std::to_string(s) + " ('" + sub.name + "') covers indices "
-                    + std::to_string(sub.firstIndex) + " to " + std::to_string(end) + ", not whole triangles within "
-                    + std::to_string(indices.size()),
+                    + std::to_string(sub.firstIndex) + " to " + std::to_string(end)
+                    + ", not whole triangles within " + std::to_string(indices.size()),
                 problem);
     }
     return true;

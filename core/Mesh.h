@@ -39,7 +39,7 @@ struct SubMesh {
     std::string name;
     uint32_t firstIndex = 0; // into Mesh::indices; a multiple of 3
     uint32_t indexCount = 0; // a multiple of 3
-    int materialIndex = -1;  // the file's material index; -1: none
+    int materialIndex = -1; // the file's material index; -1: none
     bool visible = true;
 
     bool operator==(const SubMesh&) const = default;
@@ -66,9 +66,9 @@ public:
     std::vector<SubMesh> subMeshes;
     Bounds bounds; // of every vertex; updateBounds() after editing positions
 
-    bool hasUvs = false;       // the UVs mean something (from the file, a primitive, or generated)
+    bool hasUvs = false; // the UVs mean something (from the file, a primitive, or generated)
     bool uvsGenerated = false; // they were made by generateUvs() because the file had none
-    bool hasTangents = false;  // tangents are valid (from the file or generated from the UVs)
+    bool hasTangents = false; // tangents are valid (from the file or generated from the UVs)
 
     std::size_t triangleCount() const { return indices.size() / 3; }
 

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include <QFile>
 #include <QFileInfo>
 
 #include <assimp/Importer.hpp>
@@ -25,8 +26,8 @@ namespace {
 // one). GenSmoothNormals only fills in meshes without normals. CalcTangentSpace is left out on
 // purpose: tangents the file lacks come from generateTangents(), so an imported mesh, a
 // primitive and a mesh with generated UVs all get the same MikkTSpace-like frame (glTF 2.0 asks
-// for MikkTSpace; Assimp's step is a different algorithm: unweighted, smoothed by position
-// within 45 degrees, NaN on degenerate UVs).
+// for MikkTSpace; Assimp's step is a different algorithm: unweighted per-face tangents smoothed
+// between vertices at one position within 45 degrees). docs/meshes.md, section 5.
 constexpr unsigned kPostProcess = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices
     | aiProcess_GenSmoothNormals | aiProcess_SortByPType | aiProcess_FindInvalidData
     | aiProcess_FindDegenerates | aiProcess_GenUVCoords;
@@ -34,7 +35,8 @@ constexpr unsigned kPostProcess = aiProcess_Triangulate | aiProcess_JoinIdentica
 glm::mat4 toGlm(const aiMatrix4x4& m)
 {
     // aiMatrix4x4 is row-major (a1..a4 is the first row), glm is column-major.
-    return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4);
+    return glm::mat4(
+        m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4);
 }
 
 glm::vec3 toGlm(const aiVector3D& v)
@@ -84,7 +86,8 @@ std::vector<Instance> flatten(const aiScene& scene)
 
 bool isTriangleMesh(const aiMesh& mesh)
 {
-    return (mesh.mPrimitiveTypes & aiPrimitiveType_TRIANGLE) != 0 && mesh.mNumFaces > 0 && mesh.mNumVertices > 0;
+    return (mesh.mPrimitiveTypes & aiPrimitiveType_TRIANGLE) != 0 && mesh.mNumFaces > 0
+        && mesh.mNumVertices > 0;
 }
 
 std::string subMeshName(const Instance& instance, std::size_t index)
@@ -164,7 +167,8 @@ std::size_t repairNormals(Mesh& mesh)
     for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
         const uint32_t i0 = mesh.indices[t], i1 = mesh.indices[t + 1], i2 = mesh.indices[t + 2];
         const glm::vec3 p0 = mesh.vertices[i0].position;
-        const glm::vec3 faceNormal = glm::cross(mesh.vertices[i1].position - p0, mesh.vertices[i2].position - p0);
+        const glm::vec3 faceNormal
+            = glm::cross(mesh.vertices[i1].position - p0, mesh.vertices[i2].position - p0);
         for (uint32_t i : {i0, i1, i2})
             sum[i] += faceNormal;
     }
@@ -180,12 +184,36 @@ std::size_t repairNormals(Mesh& mesh)
 bool orthonormalizeTangents(Mesh& mesh)
 {
     for (Vertex& v : mesh.vertices) {
-        const glm::vec3 t = normalizedOrZero(glm::vec3(v.tangent) - v.normal * glm::dot(v.normal, glm::vec3(v.tangent)));
+        const glm::vec3 t
+            = normalizedOrZero(glm::vec3(v.tangent) - v.normal * glm::dot(v.normal, glm::vec3(v.tangent)));
         if (t == glm::vec3(0.0f))
             return false;
         v.tangent = glm::vec4(t, v.tangent.w);
     }
     return true;
+}
+
+// Assimp 5.2's PLY reader can loop forever on a header without a complete "end_header" line (a
+// file cut short, or a damaged keyword; found by fuzzing with mutated files, docs/meshes.md). A PLY
+// file (by extension or by its "ply" magic, which Assimp also goes by) must show that line
+// within its first MiB before Assimp sees it. Empty when the file is fine or not a PLY.
+std::string plyHeaderProblem(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return {};
+    const QByteArray head = file.read(1 << 20);
+    const bool plyMagic = head.startsWith("ply\n") || head.startsWith("ply\r");
+    if (!plyMagic && !path.endsWith(QLatin1String(".ply"), Qt::CaseInsensitive))
+        return {};
+    if (!plyMagic)
+        return "not a PLY file: it does not start with the line \"ply\"";
+    // Only whole lines count: a file cut right after "end_header", before its newline, hangs too.
+    const QList<QByteArray> lines = head.split('\n');
+    for (qsizetype i = 0; i + 1 < lines.size(); ++i)
+        if (lines[i].trimmed() == "end_header")
+            return {};
+    return "broken PLY header: no \"end_header\" line in the first MiB (the file may be cut short)";
 }
 
 std::string joined(const std::vector<std::string>& parts)
@@ -228,14 +256,22 @@ std::optional<Mesh> importChecked(const std::string& path, const MeshImportOptio
     std::size_t rawVertices = 0;
     bool normalsMissing = false;
     for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-        rawVertices += scene->mMeshes[m]->mNumVertices;
-        normalsMissing = normalsMissing || (isTriangleMesh(*scene->mMeshes[m]) && !scene->mMeshes[m]->mNormals);
+        const aiMesh& raw = *scene->mMeshes[m];
+        // Assimp 5.2's validation lets a face with no indices through (a PLY face list cut
+        // short), and Debian builds Assimp with its asserts on, so Triangulate would abort the
+        // process on it (found by fuzzing, docs/meshes.md). Refuse it here.
+        for (unsigned f = 0; f < raw.mNumFaces; ++f)
+            if (raw.mFaces[f].mNumIndices == 0 || !raw.mFaces[f].mIndices)
+                return failed(
+                    "face " + std::to_string(f) + " of mesh " + std::to_string(m) + " has no vertices");
+        rawVertices += raw.mNumVertices;
+        normalsMissing = normalsMissing || (isTriangleMesh(raw) && !raw.mNormals);
     }
     // Formats without shared vertices (STL, some OBJ) hold up to a triangle's worth of copies of
     // each vertex until JoinIdenticalVertices: refuse only what cannot shrink under the limit.
     if (rawVertices / 8 > options.maxVertices)
-        return failed(std::to_string(rawVertices) + " vertices, far over the " + std::to_string(options.maxVertices)
-            + " Facet previews (docs/meshes.md, limits)");
+        return failed(std::to_string(rawVertices) + " vertices, far over the "
+            + std::to_string(options.maxVertices) + " Facet previews (docs/meshes.md, limits)");
 
     scene = importer.ApplyPostProcessing(kPostProcess);
     if (!scene)
@@ -255,7 +291,8 @@ std::optional<Mesh> importChecked(const std::string& path, const MeshImportOptio
         // A transform that flattens the mesh to a plane or a point leaves no usable normals.
         const glm::mat3 linear(instance.transform);
         const float det = glm::determinant(linear);
-        const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+        const float scale
+            = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
         if (!std::isfinite(det) || !(std::abs(det) > 1e-12f * scale * scale * scale)) {
             ++singular;
             continue;
@@ -265,7 +302,8 @@ std::optional<Mesh> importChecked(const std::string& path, const MeshImportOptio
         triangleCount += instance.mesh->mNumFaces;
     }
     if (singular > 0)
-        warnings.push_back(std::to_string(singular) + " instance(s) with a singular or non-finite transform skipped");
+        warnings.push_back(
+            std::to_string(singular) + " instance(s) with a singular or non-finite transform skipped");
     if (instances.empty())
         return failed("contains no triangles");
     if (vertexCount > options.maxVertices)
@@ -293,15 +331,18 @@ std::optional<Mesh> importChecked(const std::string& path, const MeshImportOptio
         warnings.push_back("no normals in the file: smooth normals generated (hard edges over "
             + std::to_string(int(options.smoothingAngleDegrees)) + " degrees)");
     if (const std::size_t repaired = repairNormals(mesh); repaired > 0)
-        warnings.push_back(std::to_string(repaired) + " vertices with a missing or broken normal given their faces' normal");
+        warnings.push_back(
+            std::to_string(repaired) + " vertices with a missing or broken normal given their faces' normal");
 
     std::string problem;
     mesh.hasUvs = true;
     if (!partsWithoutUvs.empty()) {
         const bool all = partsWithoutUvs.size() == mesh.subMeshes.size();
-        if (!generateUvs(mesh, options.uvFallback, &problem, all ? std::vector<std::size_t> {} : partsWithoutUvs))
+        if (!generateUvs(
+                mesh, options.uvFallback, &problem, all ? std::vector<std::size_t> {} : partsWithoutUvs))
             return failed(problem);
-        warnings.push_back(std::string(all ? "no UVs" : std::to_string(partsWithoutUvs.size()) + " part(s) without UVs")
+        warnings.push_back(
+            std::string(all ? "no UVs" : std::to_string(partsWithoutUvs.size()) + " part(s) without UVs")
             + ": generated by " + std::string(uvProjectionName(options.uvFallback)) + " projection");
         allTangents = false;
     }
@@ -346,6 +387,9 @@ std::optional<Mesh> importMesh(
         return failed("cannot be read (permission denied)");
     if (info.size() == 0)
         return failed("file is empty");
+
+    if (const std::string problem = plyHeaderProblem(info.filePath()); !problem.empty())
+        return failed(problem);
 
     std::vector<std::string> warnings;
     std::optional<Mesh> mesh;

@@ -32,14 +32,14 @@ int clampTessellation(int value, int minimum)
 
 // How a stroke gets its UVs.
 enum class StrokeUv {
-    Lathe,      // u = longitude (times uRepeat), v = the profile point's v
-    PlanarUp,   // a flat face toward +Y: mapped like makePlane()
+    Lathe, // u = longitude (times uRepeat), v = the profile point's v
+    PlanarUp, // a flat face toward +Y: mapped like makePlane()
     PlanarDown, // a flat face toward -Y: the same seen from below
 };
 
 struct ProfilePoint {
     glm::vec2 position; // (r, y), r >= 0; r == 0 is on the axis (a pole)
-    glm::vec2 normal;   // (r, y) components of the unit outward normal
+    glm::vec2 normal; // (r, y) components of the unit outward normal
     float v = 0.0f;
 };
 
@@ -216,7 +216,8 @@ Mesh makeCube()
         const glm::vec2 corners[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
         for (const glm::vec2& uv : corners) {
             Vertex v;
-            v.position = face.normal + (2.0f * uv.x - 1.0f) * face.tangent + (2.0f * uv.y - 1.0f) * face.bitangent;
+            v.position
+                = face.normal + (2.0f * uv.x - 1.0f) * face.tangent + (2.0f * uv.y - 1.0f) * face.bitangent;
             v.normal = face.normal;
             v.tangent = glm::vec4(face.tangent, 1.0f);
             v.uv = uv;
@@ -275,8 +276,8 @@ Mesh makeTorus(int segments, int sides)
     for (int k = 0; k <= sides; ++k) {
         const float psi = kPi + 2.0f * kPi * float(k % sides) / float(sides);
         const glm::vec2 normal(std::cos(psi), std::sin(psi));
-        strokes[0].points.push_back({glm::vec2(majorRadius, 0.0f) + tubeRadius * normal, normal,
-            float(k) / float(sides)});
+        strokes[0].points.push_back(
+            {glm::vec2(majorRadius, 0.0f) + tubeRadius * normal, normal, float(k) / float(sides)});
     }
     // u twice around: the ring's centre line (2 pi 0.7 = 4.4) is about twice the tube's girth (1.9).
     Mesh mesh = revolve("torus", strokes, segments, 2.0f);
@@ -318,14 +319,17 @@ Mesh makeShaderBall(int segments)
     profile.to(Profile::arcPoint(ballCentre, ballRadius, neckLatitude), {1.0f, 0.0f});
     // Lower half of the ball, down to the band.
     profile.corner({std::cos(neckLatitude), std::sin(neckLatitude)});
-    profile.arc(ballCentre, ballRadius, neckLatitude, -bandHalfAngle, steps(neckLatitude + bandHalfAngle), false);
+    profile.arc(
+        ballCentre, ballRadius, neckLatitude, -bandHalfAngle, steps(neckLatitude + bandHalfAngle), false);
     // The band: lower wall (facing up into the groove), floor, upper wall (facing down).
     profile.corner({std::sin(bandHalfAngle), std::cos(bandHalfAngle)});
-    profile.to(Profile::arcPoint(ballCentre, bandRadius, -bandHalfAngle), {std::sin(bandHalfAngle), std::cos(bandHalfAngle)});
+    profile.to(Profile::arcPoint(ballCentre, bandRadius, -bandHalfAngle),
+        {std::sin(bandHalfAngle), std::cos(bandHalfAngle)});
     profile.corner({std::cos(-bandHalfAngle), std::sin(-bandHalfAngle)});
     profile.arc(ballCentre, bandRadius, -bandHalfAngle, bandHalfAngle, steps(2.0f * bandHalfAngle), false);
     profile.corner({std::sin(bandHalfAngle), -std::cos(bandHalfAngle)});
-    profile.to(Profile::arcPoint(ballCentre, ballRadius, bandHalfAngle), {std::sin(bandHalfAngle), -std::cos(bandHalfAngle)});
+    profile.to(Profile::arcPoint(ballCentre, ballRadius, bandHalfAngle),
+        {std::sin(bandHalfAngle), -std::cos(bandHalfAngle)});
     // Upper half of the ball, to the pole.
     profile.corner({std::cos(bandHalfAngle), std::sin(bandHalfAngle)});
     profile.arc(ballCentre, ballRadius, bandHalfAngle, kPi / 2.0f, steps(kPi / 2.0f - bandHalfAngle), false);

@@ -23,8 +23,8 @@ bool fail(const std::string& message, std::string* problem)
 
 bool indicesInRange(const Mesh& mesh)
 {
-    return std::all_of(mesh.indices.begin(), mesh.indices.end(),
-        [&](uint32_t i) { return i < mesh.vertices.size(); });
+    return std::all_of(
+        mesh.indices.begin(), mesh.indices.end(), [&](uint32_t i) { return i < mesh.vertices.size(); });
 }
 
 // The component of v perpendicular to the unit vector n, normalised; zero when v has none.
@@ -61,7 +61,8 @@ std::vector<std::pair<std::size_t, std::size_t>> triangleRanges(
             continue;
         const SubMesh& sub = mesh.subMeshes[s];
         const std::size_t first = std::min<std::size_t>(sub.firstIndex, mesh.indices.size());
-        const std::size_t end = std::min<std::size_t>(std::size_t(sub.firstIndex) + sub.indexCount, mesh.indices.size());
+        const std::size_t end
+            = std::min<std::size_t>(std::size_t(sub.firstIndex) + sub.indexCount, mesh.indices.size());
         ranges.emplace_back(first, first + (end - first) / 3 * 3);
     }
     return ranges;
@@ -147,8 +148,8 @@ void boxProject(Mesh& mesh, const std::vector<std::pair<std::size_t, std::size_t
         }
 }
 
-void sphereProject(Mesh& mesh, const std::vector<std::pair<std::size_t, std::size_t>>& ranges,
-    const glm::vec3& centre)
+void sphereProject(
+    Mesh& mesh, const std::vector<std::pair<std::size_t, std::size_t>>& ranges, const glm::vec3& centre)
 {
     // Charts: 0 the plain mapping, 1 the copy with u + 1 on the far side of the seam, 2 + t a
     // pole vertex's copy for triangle t (its u is the mean of the other two corners', as the
@@ -276,7 +277,8 @@ bool generateTangents(Mesh& mesh, std::string* problem, TangentStats* stats)
         for (int k = 0; k < 3; ++k) {
             // Angle weights make the sum independent of how a fan around the vertex is
             // triangulated (MikkTSpace does the same; Thurmer and Wuthrich 1998 for normals).
-            const float angle = cornerAngle(v[k]->position, v[(k + 1) % 3]->position, v[(k + 2) % 3]->position);
+            const float angle
+                = cornerAngle(v[k]->position, v[(k + 1) % 3]->position, v[(k + 2) % 3]->position);
             tangentSum[index[k]] += angle * perpendicularPart(dPdu, v[k]->normal);
             bitangentSum[index[k]] += angle * perpendicularPart(dPdv, v[k]->normal);
         }
@@ -304,8 +306,8 @@ bool generateTangents(Mesh& mesh, std::string* problem, TangentStats* stats)
     return true;
 }
 
-bool generateUvs(Mesh& mesh, UvProjection projection, std::string* problem,
-    const std::vector<std::size_t>& onlySubMeshes)
+bool generateUvs(
+    Mesh& mesh, UvProjection projection, std::string* problem, const std::vector<std::size_t>& onlySubMeshes)
 {
     const std::string prefix = "generateUvs: '" + mesh.name + "': ";
     if (!indicesInRange(mesh))

@@ -18,12 +18,12 @@ class Mesh;
 
 // A unit vector perpendicular to the unit vector n, continuous except across n.z = 0's sign
 // flip: Duff, Burgess, Christensen, Hery, Kensler, Liani and Villemin, "Building an Orthonormal
-// Basis, Revisited", JCGT 6(1), 2017, listing 3 (the first basis vector).
+// Basis, Revisited", JCGT 6(1), 2017 (its branchless construction; the first basis vector).
 glm::vec3 perpendicularTangent(const glm::vec3& n);
 
 struct TangentStats {
     std::size_t degenerateTriangles = 0; // zero UV or geometric area: they add nothing
-    std::size_t fallbackVertices = 0;    // no usable UV direction: tangent from perpendicularTangent()
+    std::size_t fallbackVertices = 0; // no usable UV direction: tangent from perpendicularTangent()
 };
 
 // Generates every vertex's tangent from positions, normals and UVs in the manner of MikkTSpace
@@ -78,6 +78,7 @@ bool generateUvs(Mesh& mesh, UvProjection projection, std::string* problem = nul
     const std::vector<std::size_t>& onlySubMeshes = {});
 
 // UVs (generateUvs with `fallback`) when the mesh has none, then tangents when it has none.
-bool ensureTangentFrame(Mesh& mesh, UvProjection fallback = UvProjection::Box, std::string* problem = nullptr);
+bool ensureTangentFrame(
+    Mesh& mesh, UvProjection fallback = UvProjection::Box, std::string* problem = nullptr);
 
 } // namespace facet

@@ -163,7 +163,8 @@ Mesh triangles(const std::vector<glm::vec3>& positions, const std::vector<glm::v
         mesh.indices.push_back(uint32_t(i));
     }
     for (std::size_t t = 0; t + 2 < positions.size(); t += 3) {
-        const glm::vec3 n = glm::normalize(glm::cross(positions[t + 1] - positions[t], positions[t + 2] - positions[t]));
+        const glm::vec3 n
+            = glm::normalize(glm::cross(positions[t + 1] - positions[t], positions[t + 2] - positions[t]));
         for (int k = 0; k < 3; ++k)
             mesh.vertices[t + k].normal = n;
     }
@@ -181,25 +182,31 @@ double angleDegrees(const glm::vec3& a, const glm::vec3& b)
 
 // glTF 2.0 (.gltf, JSON with the buffer embedded as a base64 data URI) holding one triangle
 // in the XY plane facing +Z, UVs (0,0) (1,0) (0,1) in glTF's top-left convention, and the given
-// node hierarchy. `withNormals` false leaves the NORMAL attribute out.
-QByteArray gltfTriangle(const QJsonArray& nodes, const QJsonArray& sceneNodes, bool withNormals)
+// node hierarchy. `withNormals` false leaves the NORMAL attribute out; `withTangents` adds a
+// TANGENT attribute, (0.6, 0.8, 0), (0.8, 0.6, 0), (0, 1, 0) with w = -1. (Not one tangent for
+// all three: Assimp's FindInvalidData drops a tangent array whose elements are all equal.)
+QByteArray gltfTriangle(
+    const QJsonArray& nodes, const QJsonArray& sceneNodes, bool withNormals, bool withTangents = false)
 {
     const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
     const float normals[9] = {0, 0, 1, 0, 0, 1, 0, 0, 1};
     const float uvs[6] = {0, 0, 1, 0, 0, 1};
     const uint16_t indices[4] = {0, 1, 2, 0}; // padded to 4-byte alignment
+    const float tangents[12] = {0.6f, 0.8f, 0, -1, 0.8f, 0.6f, 0, -1, 0, 1, 0, -1};
     QByteArray buffer;
     buffer.append(reinterpret_cast<const char*>(positions), sizeof positions);
     buffer.append(reinterpret_cast<const char*>(normals), sizeof normals);
     buffer.append(reinterpret_cast<const char*>(uvs), sizeof uvs);
     buffer.append(reinterpret_cast<const char*>(indices), sizeof indices);
+    buffer.append(reinterpret_cast<const char*>(tangents), sizeof tangents);
     const auto view = [](int offset, int length, int target) {
         return QJsonObject {{QStringLiteral("buffer"), 0}, {QStringLiteral("byteOffset"), offset},
             {QStringLiteral("byteLength"), length}, {QStringLiteral("target"), target}};
     };
     const auto accessor = [](int bufferView, int componentType, int count, const char* type) {
-        return QJsonObject {{QStringLiteral("bufferView"), bufferView}, {QStringLiteral("componentType"), componentType},
-            {QStringLiteral("count"), count}, {QStringLiteral("type"), QLatin1String(type)}};
+        return QJsonObject {{QStringLiteral("bufferView"), bufferView},
+            {QStringLiteral("componentType"), componentType}, {QStringLiteral("count"), count},
+            {QStringLiteral("type"), QLatin1String(type)}};
     };
     QJsonObject positionAccessor = accessor(0, 5126, 3, "VEC3");
     positionAccessor[QStringLiteral("min")] = QJsonArray {0, 0, 0};
@@ -207,6 +214,8 @@ QByteArray gltfTriangle(const QJsonArray& nodes, const QJsonArray& sceneNodes, b
     QJsonObject attributes {{QStringLiteral("POSITION"), 0}, {QStringLiteral("TEXCOORD_0"), 2}};
     if (withNormals)
         attributes[QStringLiteral("NORMAL")] = 1;
+    if (withTangents)
+        attributes[QStringLiteral("TANGENT")] = 4;
     const QJsonObject gltf {
         {QStringLiteral("asset"), QJsonObject {{QStringLiteral("version"), QStringLiteral("2.0")}}},
         {QStringLiteral("scene"), 0},
@@ -222,10 +231,11 @@ QByteArray gltfTriangle(const QJsonArray& nodes, const QJsonArray& sceneNodes, b
                 {QStringLiteral("uri"),
                     QString::fromLatin1("data:application/octet-stream;base64," + buffer.toBase64())}}}},
         {QStringLiteral("bufferViews"),
-            QJsonArray {view(0, 36, 34962), view(36, 36, 34962), view(72, 24, 34962), view(96, 6, 34963)}},
+            QJsonArray {view(0, 36, 34962), view(36, 36, 34962), view(72, 24, 34962), view(96, 6, 34963),
+                view(104, 48, 34962)}},
         {QStringLiteral("accessors"),
             QJsonArray {positionAccessor, accessor(1, 5126, 3, "VEC3"), accessor(2, 5126, 3, "VEC2"),
-                accessor(3, 5123, 3, "SCALAR")}},
+                accessor(3, 5123, 3, "SCALAR"), accessor(4, 5126, 3, "VEC4")}},
     };
     return QJsonDocument(gltf).toJson();
 }
@@ -252,7 +262,8 @@ private Q_SLOTS:
     {
         QTest::addColumn<QString>("name");
         for (std::string_view name : primitiveNames())
-            QTest::newRow(std::string(name).c_str()) << QString::fromLatin1(name.data(), qsizetype(name.size()));
+            QTest::newRow(std::string(name).c_str())
+                << QString::fromLatin1(name.data(), qsizetype(name.size()));
     }
     void primitives()
     {
@@ -306,7 +317,8 @@ private Q_SLOTS:
         // The shader ball: a bit less than its ball (the band's recess) plus the base and neck.
         const double ball = 4.0 / 3.0 * kPi * 0.8 * 0.8 * 0.8;
         const double shaderBall = signedVolume(makeShaderBall());
-        QVERIFY2(shaderBall > 0.85 * ball && shaderBall < 1.15 * ball, qPrintable(QString::number(shaderBall)));
+        QVERIFY2(
+            shaderBall > 0.85 * ball && shaderBall < 1.15 * ball, qPrintable(QString::number(shaderBall)));
     }
 
     void sphereLayout()
@@ -327,8 +339,11 @@ private Q_SLOTS:
             QVERIFY(std::abs(std::asin(double(v.position.y)) / kPi + 0.5 - double(v.uv.y)) < 1e-5);
         }
         // Seen from the reference camera on +Z, u grows to the right (+X) and v up: not mirrored.
-        const auto front = std::min_element(sphere.vertices.begin(), sphere.vertices.end(),
-            [](const Vertex& a, const Vertex& b) { return glm::length(a.position - glm::vec3(0, 0, 1)) < glm::length(b.position - glm::vec3(0, 0, 1)); });
+        const auto front = std::min_element(
+            sphere.vertices.begin(), sphere.vertices.end(), [](const Vertex& a, const Vertex& b) {
+                return glm::length(a.position - glm::vec3(0, 0, 1))
+                    < glm::length(b.position - glm::vec3(0, 0, 1));
+            });
         QVERIFY(glm::length(front->position - glm::vec3(0, 0, 1)) < 1e-6f);
         QVERIFY(glm::length(glm::vec3(front->tangent) - glm::vec3(1, 0, 0)) < 1e-6f);
         QCOMPARE(front->uv.x, 0.25f);
@@ -347,7 +362,8 @@ private Q_SLOTS:
             QVERIFY2(mesh.validate(&problem), problem.c_str());
             if (mesh.name != "plane") {
                 QString why;
-                QVERIFY2(isClosed(mesh, &why), qPrintable(QString::fromStdString(mesh.name) + QLatin1String(": ") + why));
+                QVERIFY2(isClosed(mesh, &why),
+                    qPrintable(QString::fromStdString(mesh.name) + QLatin1String(": ") + why));
             }
         }
         QCOMPARE(makeSphere(100000, 3).vertices.size(), makeSphere(4096, 3).vertices.size());
@@ -414,7 +430,8 @@ private Q_SLOTS:
             QCOMPARE(v.tangent.w, -1.0f);
         // Singular and non-finite matrices are refused and leave the mesh alone.
         Mesh cube = makeCube();
-        QVERIFY(!cube.transform(glm::mat4 {{1, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}, &problem));
+        QVERIFY(
+            !cube.transform(glm::mat4 {{1, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}, &problem));
         QVERIFY2(contains(problem, "Mesh::transform: 'cube'"), problem.c_str());
         QVERIFY(!cube.transform(glm::mat4(std::nanf(""))));
         QVERIFY(cube == makeCube());
@@ -442,7 +459,8 @@ private Q_SLOTS:
         m.vertices[4].normal *= 1.1f;
         expectProblem(m, "vertex 4: normal");
         m = good;
-        m.vertices[5].tangent = glm::vec4(glm::normalize(glm::vec3(m.vertices[5].normal) + glm::vec3(m.vertices[5].tangent)), 1.0f);
+        m.vertices[5].tangent = glm::vec4(
+            glm::normalize(glm::vec3(m.vertices[5].normal) + glm::vec3(m.vertices[5].tangent)), 1.0f);
         expectProblem(m, "not perpendicular");
         m = good;
         m.vertices[6].tangent.w = 0.5f;
@@ -468,7 +486,8 @@ private Q_SLOTS:
     {
         // A quad in the XY plane facing +Z, UVs in three layouts: straight (u = +X, v = +Y),
         // turned a quarter (u = +Y, v = -X), mirrored (u = -X, v = +Y).
-        const std::vector<glm::vec3> quad = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+        const std::vector<glm::vec3> quad
+            = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}};
         const struct {
             std::vector<glm::vec2> uvs;
             glm::vec3 tangent;
@@ -529,7 +548,8 @@ private Q_SLOTS:
         Mesh noUvs = makeCube();
         noUvs.hasUvs = false;
         QVERIFY(!generateTangents(noUvs, &problem));
-        QVERIFY2(contains(problem, "generateTangents: 'cube': ") && contains(problem, "no UVs"), problem.c_str());
+        QVERIFY2(
+            contains(problem, "generateTangents: 'cube': ") && contains(problem, "no UVs"), problem.c_str());
         Mesh badIndex = makeCube();
         badIndex.indices[0] = 1000;
         QVERIFY(!generateTangents(badIndex, &problem));
@@ -542,7 +562,8 @@ private Q_SLOTS:
         for (int i = 0; i <= 40; ++i)
             for (int j = 0; j < 80; ++j) {
                 const double theta = kPi * i / 40.0, phi = 2.0 * kPi * j / 80.0;
-                const glm::vec3 n(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+                const glm::vec3 n(
+                    std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
                 const glm::vec3 t = perpendicularTangent(n);
                 QVERIFY(std::abs(glm::length(t) - 1.0f) < 1e-5f);
                 QVERIFY(std::abs(glm::dot(t, n)) < 1e-5f);
@@ -564,13 +585,15 @@ private Q_SLOTS:
             QCOMPARE(stats.fallbackVertices, std::size_t(0));
             double worst = 0.0, sum = 0.0;
             for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-                const double angle = angleDegrees(glm::vec3(mesh.vertices[i].tangent), glm::vec3(reference.vertices[i].tangent));
+                const double angle = angleDegrees(
+                    glm::vec3(mesh.vertices[i].tangent), glm::vec3(reference.vertices[i].tangent));
                 worst = std::max(worst, angle);
                 sum += angle;
                 QCOMPARE(mesh.vertices[i].tangent.w, reference.vertices[i].tangent.w);
             }
             const double mean = sum / double(mesh.vertices.size());
-            qInfo("%s: generated vs analytic tangents: worst %.3g, mean %.3g degrees", reference.name.c_str(), worst, mean);
+            qInfo("%s: generated vs analytic tangents: worst %.3g, mean %.3g degrees", reference.name.c_str(),
+                worst, mean);
             QVERIFY2(worst < 3.0 && mean < 0.5, reference.name.c_str());
         }
     }
@@ -594,8 +617,10 @@ private Q_SLOTS:
             const glm::vec3 p0 = mesh.vertices[mesh.indices[t]].position;
             const glm::vec3 n = glm::cross(mesh.vertices[mesh.indices[t + 1]].position - p0,
                 mesh.vertices[mesh.indices[t + 2]].position - p0);
-            const auto chart = std::max_element(faces.begin(), faces.end(),
-                [&](const BoxFace& a, const BoxFace& b) { return glm::dot(a.normal, n) < glm::dot(b.normal, n); });
+            const auto chart
+                = std::max_element(faces.begin(), faces.end(), [&](const BoxFace& a, const BoxFace& b) {
+                      return glm::dot(a.normal, n) < glm::dot(b.normal, n);
+                  });
             for (int k = 0; k < 3; ++k) {
                 const Vertex& v = mesh.vertices[mesh.indices[t + k]];
                 const glm::vec2 expected(0.5f + 0.5f * glm::dot(v.position, chart->tangent),
@@ -635,7 +660,8 @@ private Q_SLOTS:
                 hi = std::max(hi, v.uv.x);
                 QVERIFY(std::abs(std::asin(v.position.y) / float(kPi) + 0.5f - v.uv.y) < 1e-5f);
             }
-            QVERIFY2(hi - lo < 1.5f / 64.0f, qPrintable(QStringLiteral("triangle %1 spans u %2..%3").arg(t / 3).arg(lo).arg(hi)));
+            QVERIFY2(hi - lo < 1.5f / 64.0f,
+                qPrintable(QStringLiteral("triangle %1 spans u %2..%3").arg(t / 3).arg(lo).arg(hi)));
         }
         for (std::size_t i = 0; i < reference.vertices.size(); ++i) {
             const float du = std::abs(mesh.vertices[i].uv.x - reference.vertices[i].uv.x);
@@ -660,9 +686,11 @@ private Q_SLOTS:
         QTest::addColumn<QVector<float>>("boundsMinMax");
         // Counts and bounds from the files' glTF accessors (POSITION min/max, index count / 3).
         QTest::newRow("suzi") << QStringLiteral("suzi") << 7503 << 14842
-                              << QVector<float> {-0.92973012f, -0.66979480f, -0.54478627f, 0.92973012f, 0.66825354f, 0.57615846f};
+                              << QVector<float> {-0.92973012f, -0.66979480f, -0.54478627f, 0.92973012f,
+                                     0.66825354f, 0.57615846f};
         QTest::newRow("bunny") << QStringLiteral("bunny") << 2826 << 5648
-                               << QVector<float> {-0.91377079f, -0.89104164f, -0.69637245f, 0.91721433f, 0.93988293f, 0.69886428f};
+                               << QVector<float> {-0.91377079f, -0.89104164f, -0.69637245f, 0.91721433f,
+                                      0.93988293f, 0.69886428f};
     }
     void importSampleMeshes()
     {
@@ -678,14 +706,15 @@ private Q_SLOTS:
         const std::optional<Mesh> mesh = importMesh(path.toStdString(), &error, &warning);
         const qint64 ms = timer.elapsed();
         QVERIFY2(mesh, error.c_str());
-        qInfo("%s: %d file vertices -> %zu after UV seams, %zu triangles, imported in %lld ms", qPrintable(name),
-            fileVertices, mesh->vertices.size(), mesh->triangleCount(), ms);
+        qInfo("%s: %d file vertices -> %zu after UV seams, %zu triangles, imported in %lld ms",
+            qPrintable(name), fileVertices, mesh->vertices.size(), mesh->triangleCount(), ms);
         QCOMPARE(mesh->triangleCount(), std::size_t(triangles));
         // The fallback splits vertices along chart seams: more than the file's, not absurdly many.
         QVERIFY(mesh->vertices.size() > std::size_t(fileVertices));
         QVERIFY(mesh->vertices.size() < std::size_t(2 * fileVertices));
         QVERIFY(mesh->hasUvs && mesh->uvsGenerated && mesh->hasTangents);
-        QVERIFY2(contains(warning, "importMesh: " + path.toStdString() + ": ") && contains(warning, "no UVs"), warning.c_str());
+        QVERIFY2(contains(warning, "importMesh: " + path.toStdString() + ": ") && contains(warning, "no UVs"),
+            warning.c_str());
         std::string problem;
         QVERIFY2(mesh->validate(&problem), problem.c_str());
         QCOMPARE(mesh->name, name.toStdString());
@@ -700,8 +729,9 @@ private Q_SLOTS:
         // smooth vertex normal leans past its face normal, while a flipped sign or a wrong
         // chart fails by far.
         const FrameAgreement frame = frameAgreement(*mesh);
-        qInfo("%s: frame agreement: tangent %.5f, bitangent %.5f, normal %.5f over %zu corners", qPrintable(name),
-            frame.tangentFraction(), frame.bitangentFraction(), frame.normalFraction(), frame.corners);
+        qInfo("%s: frame agreement: tangent %.5f, bitangent %.5f, normal %.5f over %zu corners",
+            qPrintable(name), frame.tangentFraction(), frame.bitangentFraction(), frame.normalFraction(),
+            frame.corners);
         QVERIFY(frame.tangentFraction() > 0.999);
         QVERIFY(frame.bitangentFraction() > 0.999);
         QVERIFY(frame.normalFraction() > 0.999);
@@ -764,8 +794,8 @@ private Q_SLOTS:
         QVERIFY(mesh->hasUvs && !mesh->uvsGenerated && mesh->hasTangents);
         QCOMPARE(mesh->triangleCount(), std::size_t(6));
         QCOMPARE(mesh->subMeshes.size(), std::size_t(3));
-        const std::map<std::string, std::pair<glm::vec3, float>> expected
-            = {{"straight", {{1, 0, 0}, 1.0f}}, {"turned", {{0, 1, 0}, 1.0f}}, {"mirrored", {{-1, 0, 0}, -1.0f}}};
+        const std::map<std::string, std::pair<glm::vec3, float>> expected = {{"straight", {{1, 0, 0}, 1.0f}},
+            {"turned", {{0, 1, 0}, 1.0f}}, {"mirrored", {{-1, 0, 0}, -1.0f}}};
         for (const SubMesh& sub : mesh->subMeshes) {
             QVERIFY2(expected.count(sub.name), sub.name.c_str());
             const auto& [tangent, w] = expected.at(sub.name);
@@ -795,13 +825,16 @@ private Q_SLOTS:
         QCOMPARE(mesh->subMeshes.size(), std::size_t(2));
         QVERIFY(mesh->hasUvs && mesh->uvsGenerated && mesh->hasTangents);
         QVERIFY2(contains(warning, "1 part(s) without UVs: generated by box projection"), warning.c_str());
-        const SubMesh& textured = mesh->subMeshes[0].name == "textured" ? mesh->subMeshes[0] : mesh->subMeshes[1];
+        const SubMesh& textured
+            = mesh->subMeshes[0].name == "textured" ? mesh->subMeshes[0] : mesh->subMeshes[1];
         const SubMesh& bare = mesh->subMeshes[0].name == "textured" ? mesh->subMeshes[1] : mesh->subMeshes[0];
         QCOMPARE(textured.name, std::string("textured"));
         QCOMPARE(bare.name, std::string("bare"));
         const glm::vec2 fileUvs[3] = {{0.1f, 0.2f}, {0.3f, 0.2f}, {0.3f, 0.4f}};
         for (int k = 0; k < 3; ++k)
-            QVERIFY(glm::length(mesh->vertices[mesh->indices[textured.firstIndex + uint32_t(k)]].uv - fileUvs[k]) < 1e-6f);
+            QVERIFY(
+                glm::length(mesh->vertices[mesh->indices[textured.firstIndex + uint32_t(k)]].uv - fileUvs[k])
+                < 1e-6f);
         // The bare triangle faces +Z: the +Z chart, u along +X, v along +Y.
         const Vertex& a = mesh->vertices[mesh->indices[bare.firstIndex]];
         const Vertex& b = mesh->vertices[mesh->indices[bare.firstIndex + 1]];
@@ -822,7 +855,8 @@ private Q_SLOTS:
         const QString path = dir.filePath(QStringLiteral("nodes.gltf"));
         const QJsonArray nodes {
             QJsonObject {{QStringLiteral("name"), QStringLiteral("parent")},
-                {QStringLiteral("translation"), QJsonArray {10, 20, 30}}, {QStringLiteral("scale"), QJsonArray {2, 2, 2}},
+                {QStringLiteral("translation"), QJsonArray {10, 20, 30}},
+                {QStringLiteral("scale"), QJsonArray {2, 2, 2}},
                 {QStringLiteral("children"), QJsonArray {1}}},
             QJsonObject {{QStringLiteral("name"), QStringLiteral("child")}, {QStringLiteral("mesh"), 0},
                 {QStringLiteral("translation"), QJsonArray {0, 0, 1}}},
@@ -851,7 +885,8 @@ private Q_SLOTS:
         // Instance 1: world = T(10,20,30) S(2) T(0,0,1) p = 2p + (10, 20, 32).
         const glm::vec3 expected1[3] = {{10, 20, 32}, {12, 20, 32}, {10, 22, 32}};
         for (int k = 0; k < 3; ++k) {
-            QVERIFY2(glm::length(corner(0, k).position - expected1[k]) < 1e-5f, qPrintable(QString::number(k)));
+            QVERIFY2(
+                glm::length(corner(0, k).position - expected1[k]) < 1e-5f, qPrintable(QString::number(k)));
             QVERIFY(glm::length(corner(0, k).normal - glm::vec3(0, 0, 1)) < 1e-6f);
         }
         // glTF's UV origin is top-left; ours (OpenGL) bottom-left: v' = 1 - v.
@@ -882,6 +917,33 @@ private Q_SLOTS:
         QCOMPARE(frame.normalAgrees, frame.corners);
         QCOMPARE(frame.tangentAgrees, frame.corners);
         QCOMPARE(frame.bitangentAgrees, frame.corners);
+    }
+
+    void importKeepsFileTangents()
+    {
+        // The file's TANGENTs (deliberately not what generateTangents() would make from the UVs,
+        // (1, 0, 0, -1) everywhere) are kept, turned by the node's rotation: 90 degrees about +Z,
+        // (x, y) -> (-y, x).
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("tangents.gltf"));
+        const QJsonArray nodes {QJsonObject {{QStringLiteral("mesh"), 0},
+            {QStringLiteral("rotation"), QJsonArray {0, 0, std::sqrt(0.5), std::sqrt(0.5)}}}};
+        QVERIFY(writeFile(path, gltfTriangle(nodes, QJsonArray {0}, true, true)));
+        std::string error, warning;
+        const std::optional<Mesh> mesh = importMesh(path.toStdString(), &error, &warning);
+        QVERIFY2(mesh, error.c_str());
+        QVERIFY(mesh->hasTangents && !mesh->uvsGenerated);
+        const glm::vec3 expected[3] = {{-0.8f, 0.6f, 0.0f}, {-0.6f, 0.8f, 0.0f}, {-1.0f, 0.0f, 0.0f}};
+        QCOMPARE(mesh->indices.size(), std::size_t(3));
+        for (int k = 0; k < 3; ++k) {
+            const Vertex& v = mesh->vertices[mesh->indices[std::size_t(k)]];
+            QVERIFY2(glm::length(glm::vec3(v.tangent) - expected[k]) < 1e-5f,
+                qPrintable(QStringLiteral("%1 %2 %3").arg(v.tangent.x).arg(v.tangent.y).arg(v.tangent.z)));
+            QCOMPARE(v.tangent.w, -1.0f);
+        }
+        std::string problem;
+        QVERIFY2(mesh->validate(&problem), problem.c_str());
     }
 
     void importGeneratesMissingNormals()
@@ -926,7 +988,8 @@ private Q_SLOTS:
         options.maxVertices = 1000;
         std::string error;
         QVERIFY(!importMesh(path.toStdString(), &error, nullptr, options));
-        QVERIFY2(contains(error, "importMesh: " + path.toStdString() + ": 7503 vertices") && contains(error, "1000"),
+        QVERIFY2(contains(error, "importMesh: " + path.toStdString() + ": 7503 vertices")
+                && contains(error, "1000"),
             error.c_str());
         options = {};
         options.maxTriangles = 100;
@@ -949,7 +1012,8 @@ private Q_SLOTS:
         checkImportFails(empty, "file is empty");
 
         const QString garbage = dir.filePath(QStringLiteral("garbage.obj"));
-        QVERIFY(writeFile(garbage, "This is not a mesh.\nJust some text pretending to be an OBJ file.\n\x01\x02\x03\n"));
+        QVERIFY(writeFile(
+            garbage, "This is not a mesh.\nJust some text pretending to be an OBJ file.\n\x01\x02\x03\n"));
         checkImportFails(garbage, "no meshes");
 
         const QString notAMesh = dir.filePath(QStringLiteral("picture.png"));
@@ -962,13 +1026,35 @@ private Q_SLOTS:
             "element face 1\nproperty list uchar int vertex_indices\nend_header\n"
             "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"));
         checkImportFails(ply, "out of range");
+        // Assimp 5.2 hangs on a PLY header without "end_header": cut short, or the keyword damaged.
+        const QByteArray plyText = readFile(ply);
+        const QString cutPly = dir.filePath(QStringLiteral("cut.ply"));
+        QVERIFY(writeFile(cutPly, plyText.left(plyText.indexOf("end_header") + 5)));
+        checkImportFails(cutPly, "no \"end_header\" line");
+        QVERIFY(writeFile(cutPly, plyText.left(plyText.indexOf("end_header") + 10))); // no newline
+        checkImportFails(cutPly, "no \"end_header\" line");
+        const QString damagedPly = dir.filePath(QStringLiteral("damaged.ply"));
+        QVERIFY(writeFile(damagedPly,
+            QByteArray(plyText).replace("end_header",
+                "end_\xb8"
+                "eader")));
+        checkImportFails(damagedPly, "no \"end_header\" line");
+        // A face list cut short leaves a face with no indices, which Assimp 5.2 validates but
+        // then asserts on (an abort in Debian's build).
+        const QString emptyFace = dir.filePath(QStringLiteral("empty-face.ply"));
+        QVERIFY(writeFile(emptyFace, plyText.left(plyText.lastIndexOf("3 0 1 7")) + "0"));
+        checkImportFails(emptyFace, "face 0 of mesh 0 has no vertices");
+        const QString notPly = dir.filePath(QStringLiteral("not-really.ply"));
+        QVERIFY(writeFile(notPly, "solid nothing\nendsolid nothing\n"));
+        checkImportFails(notPly, "not a PLY file");
 
         const QString sample = facet::test::modelPath(QStringLiteral("suzi"));
         if (!sample.isEmpty()) {
             // The real file cut in half, and cut at a few other places (header, JSON, binary).
             const QByteArray whole = readFile(sample);
             QVERIFY(whole.size() > 1000);
-            for (qsizetype cut : {whole.size() / 2, qsizetype(12), qsizetype(20), qsizetype(100), whole.size() - 1}) {
+            for (qsizetype cut :
+                {whole.size() / 2, qsizetype(12), qsizetype(20), qsizetype(100), whole.size() - 1}) {
                 const QString truncated = dir.filePath(QStringLiteral("truncated-%1.glb").arg(cut));
                 QVERIFY(writeFile(truncated, whole.left(cut)));
                 checkImportFails(truncated, "");
