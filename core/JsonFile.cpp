@@ -1,0 +1,210 @@
+// The project-independent parts of Facet's JSON files: paths stored relative to the file,
+// built-in specs, the format/version check, and reading/writing one object per file.
+// Declared in core/Project.h (namespace facet::json).
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonDocument>
+#include <QJsonParseError>
+#include <QSaveFile>
+#include <QStorageInfo>
+
+#include "core/JsonSupport.h"
+#include "core/Project.h"
+
+namespace facet {
+
+namespace {
+
+using namespace jsonsupport;
+
+// The mount point holding `path`, or its nearest existing ancestor (a texture may not exist yet).
+QString volumeRoot(const QString& path)
+{
+    QFileInfo info(path);
+    QString existing = info.absoluteFilePath();
+    for (int guard = 0; guard < 256 && !existing.isEmpty() && !QFileInfo::exists(existing); ++guard) {
+        const QString parent = QFileInfo(existing).absolutePath();
+        if (parent == existing)
+            break;
+        existing = parent;
+    }
+    const QStorageInfo storage(existing);
+    return storage.isValid() ? storage.rootPath() : QString();
+}
+
+} // namespace
+
+
+namespace json {
+
+std::string storedPath(const std::string& path, const std::string& baseDir)
+{
+    if (path.empty() || baseDir.empty())
+        return path;
+    const QString file = QDir::cleanPath(QDir::fromNativeSeparators(qs(path)));
+    if (QDir::isRelativePath(file))
+        return ss(file);
+    const QString base = QDir::cleanPath(QDir(qs(baseDir)).absolutePath());
+    // A file on another volume stays absolute: moving the project folder does not move it, and
+    // on Windows no relative path crosses drives.
+    const QString fileRoot = volumeRoot(file);
+    const QString baseRoot = volumeRoot(base);
+    if (!fileRoot.isEmpty() && !baseRoot.isEmpty() && fileRoot != baseRoot)
+        return ss(file);
+    const QString relative = QDir(base).relativeFilePath(file);
+    if (QDir::isAbsolutePath(relative))
+        return ss(file);
+    return ss(relative);
+}
+
+std::string resolvedPath(const std::string& path, const std::string& baseDir)
+{
+    if (path.empty())
+        return path;
+    const QString file = QDir::fromNativeSeparators(qs(path));
+    if (baseDir.empty() || QDir::isAbsolutePath(file))
+        return ss(QDir::cleanPath(file));
+    return ss(QDir::cleanPath(QDir(qs(baseDir)).absoluteFilePath(file)));
+}
+
+bool isBuiltinSpec(const std::string& spec)
+{
+    if (spec.rfind("uniform:", 0) == 0)
+        return true;
+    if (spec.empty() || !(spec[0] >= 'a' && spec[0] <= 'z'))
+        return false;
+    for (char c : spec)
+        if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-'))
+            return false;
+    return true;
+}
+
+std::string storedSpec(const std::string& spec, const std::string& baseDir)
+{
+    if (spec.empty() || isBuiltinSpec(spec))
+        return spec;
+    const std::string stored = storedPath(spec, baseDir);
+    return isBuiltinSpec(stored) ? "./" + stored : stored;
+}
+
+std::string resolvedSpec(const std::string& spec, const std::string& baseDir)
+{
+    return isBuiltinSpec(spec) ? spec : resolvedPath(spec, baseDir);
+}
+
+bool checkFormat(const QJsonObject& object, const char* formatName, int newestVersion, const char* what,
+    std::string* problem)
+{
+    const QJsonValue format = object.value(QLatin1String("format"));
+    if (format.isUndefined())
+        return fail(std::string("\"format\" is missing: not ") + what + " file", problem);
+    if (!format.isString())
+        return fail(std::string("format: expected a string, got ") + typeName(format), problem);
+    if (format.toString() != QLatin1String(formatName))
+        return fail(
+            "format: \"" + ss(format.toString()) + "\" is not \"" + formatName + "\": not " + what + " file",
+            problem);
+    const QJsonValue version = object.value(QLatin1String("version"));
+    if (version.isUndefined())
+        return fail("\"version\" is missing", problem);
+    const double versionNumber = version.toDouble();
+    if (!version.isDouble() || std::floor(versionNumber) != versionNumber)
+        return fail(std::string("version: expected an integer, got ")
+                + (version.isDouble() ? facet::number(versionNumber) : typeName(version)),
+            problem);
+    if (versionNumber > newestVersion)
+        return fail("written by a newer Facet (version " + facet::number(versionNumber)
+                + "); this Facet reads up to version " + std::to_string(newestVersion),
+            problem);
+    if (versionNumber < 1)
+        return fail(
+            "version: " + facet::number(versionNumber) + " is not a valid version (versions start at 1)",
+            problem);
+    return true;
+}
+
+std::optional<QJsonObject> readObjectFile(const std::string& path, qint64 maxBytes, std::string* problem)
+{
+    if (path.empty())
+        return failed("no file name given", problem);
+    const QString fileName = qs(path);
+    const QFileInfo info(fileName);
+    if (!info.exists())
+        return failed("no such file", problem);
+    if (info.isDir())
+        return failed("is a folder, not a file", problem);
+    QFile file(fileName);
+    if (!file.open(QIODevice::ReadOnly))
+        return failed("cannot read it: " + ss(file.errorString()), problem);
+    // Read one byte more than allowed to tell "at the limit" from "over it" without trusting
+    // size() (a pipe or /proc file reports 0).
+    const QByteArray data = file.read(maxBytes + 1);
+    if (file.error() != QFileDevice::NoError)
+        return failed("cannot read it: " + ss(file.errorString()), problem);
+    if (data.size() > maxBytes)
+        return failed("the file is larger than " + std::to_string(maxBytes / (1024 * 1024))
+                + " MiB, too large to be a " + "Facet file",
+            problem);
+    if (data.trimmed().isEmpty())
+        return failed("the file is empty", problem);
+
+    QJsonParseError parseError;
+    const QJsonDocument document = QJsonDocument::fromJson(data, &parseError);
+    if (parseError.error != QJsonParseError::NoError) {
+        // QJsonParseError::offset counts bytes of the UTF-8 input; report a 1-based line and a
+        // column in characters (UTF-8 continuation bytes do not start a character).
+        const qsizetype offset = std::clamp<qsizetype>(parseError.offset, 0, data.size());
+        int line = 1;
+        int column = 1;
+        for (qsizetype i = 0; i < offset; ++i) {
+            const auto byte = static_cast<unsigned char>(data[i]);
+            if (byte == '\n') {
+                ++line;
+                column = 1;
+            } else if ((byte & 0xC0) != 0x80) {
+                ++column;
+            }
+        }
+        return failed("line " + std::to_string(line) + ", column " + std::to_string(column) + ": "
+                + ss(parseError.errorString()) + " (not valid JSON)",
+            problem);
+    }
+    if (!document.isObject())
+        return failed(std::string("expected a JSON object at the top level, got ")
+                + (document.isArray() ? "an array" : "something else"),
+            problem);
+    return document.object();
+}
+
+bool writeObjectFile(const std::string& path, const QJsonObject& object, std::string* problem)
+{
+    if (path.empty())
+        return fail("no file name given", problem);
+    const QString fileName = qs(path);
+    const QFileInfo info(fileName);
+    if (info.isDir())
+        return fail("is a folder, not a file", problem);
+    if (!info.absoluteDir().exists())
+        return fail("the folder " + ss(info.absolutePath()) + " does not exist", problem);
+    const QByteArray data = QJsonDocument(object).toJson(QJsonDocument::Indented);
+    // QSaveFile writes a temporary file next to the target and renames it over the target on
+    // commit(): a failure at any point leaves the old file as it was (DESIGN.md "Bad input").
+    // Direct-write fallback stays off, so an unwritable folder fails instead of writing in place.
+    QSaveFile file(fileName);
+    if (!file.open(QIODevice::WriteOnly))
+        return fail("cannot write it: " + ss(file.errorString()), problem);
+    if (file.write(data) != data.size()) {
+        const std::string reason = ss(file.errorString());
+        file.cancelWriting();
+        return fail("cannot write it: " + reason, problem);
+    }
+    if (!file.commit())
+        return fail("cannot write it: " + ss(file.errorString()), problem);
+    return true;
+}
+
+} // namespace json
+
+} // namespace facet
