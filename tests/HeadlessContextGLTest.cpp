@@ -50,8 +50,7 @@ public:
     // Runs before QCoreApplication: the context must come up with no display server at all.
     static void initMain()
     {
-        qunsetenv("DISPLAY");
-        qunsetenv("WAYLAND_DISPLAY");
+        facet::test::forgetDisplayServer();
     }
 
 private Q_SLOTS:

@@ -77,19 +77,18 @@ glm::dvec3 texelDirection(int face, int x, int y, int size)
     return cubemapDirection(face, (x + 0.5) / size, (y + 0.5) / size);
 }
 
-double maxComponent(const glm::dvec3& v) { return std::max({v.x, v.y, v.z}); }
-double luminance(const glm::dvec3& v) { return 0.2126 * v.x + 0.7152 * v.y + 0.0722 * v.z; }
+double maxComponent(const glm::dvec3& v)
+{
+    return std::max({v.x, v.y, v.z});
+}
+double luminance(const glm::dvec3& v)
+{
+    return 0.2126 * v.x + 0.7152 * v.y + 0.0722 * v.z;
+}
 
 bool allFinite(const std::vector<float>& values)
 {
     return std::all_of(values.begin(), values.end(), [](float v) { return std::isfinite(v); });
-}
-
-std::string vec(const glm::dvec3& v)
-{
-    char text[96];
-    std::snprintf(text, sizeof text, "(%.5g, %.5g, %.5g)", v.x, v.y, v.z);
-    return text;
 }
 
 } // namespace
@@ -97,11 +96,7 @@ std::string vec(const glm::dvec3& v)
 class IblGLTest : public QObject {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        qunsetenv("DISPLAY");
-        qunsetenv("WAYLAND_DISPLAY");
-    }
+    static void initMain() { facet::test::forgetDisplayServer(); }
 
 private Q_SLOTS:
     void initTestCase();
@@ -151,7 +146,7 @@ void IblGLTest::cubemapDirectionTwinsAgree()
     std::string error;
     std::optional<ShaderProgram> program = ShaderProgram::create("direction",
         {{ShaderStageSource::Stage::Vertex, "ibl_fullscreen.vert"},
-         {ShaderStageSource::Stage::Fragment, "ibl_debug_direction.frag"}},
+            {ShaderStageSource::Stage::Fragment, "ibl_debug_direction.frag"}},
         {}, &error);
     QVERIFY2(program, error.c_str());
     const int n = 8;
@@ -216,8 +211,9 @@ void IblGLTest::equirectToCubeMatchesEnvironment()
                 const glm::dvec2 uv = equirectUvFromDirection(d);
                 for (double du : {-0.5, 0.5})
                     for (double dv : {-0.5, 0.5}) {
-                        const glm::dvec3 c = env.radianceNearest(directionFromEquirectUv(
-                            {uv.x + du / env.image().width(), std::clamp(uv.y + dv / env.image().height(), 0.0, 1.0)}));
+                        const glm::dvec3 c
+                            = env.radianceNearest(directionFromEquirectUv({uv.x + du / env.image().width(),
+                                std::clamp(uv.y + dv / env.image().height(), 0.0, 1.0)}));
                         lo = glm::min(lo, c);
                         hi = glm::max(hi, c);
                     }
@@ -225,7 +221,8 @@ void IblGLTest::equirectToCubeMatchesEnvironment()
                 const double e = maxComponent(glm::abs(actual - expected) / allowed);
                 if (e > worst && qEnvironmentVariableIsSet("IBL_DEBUG"))
                     qInfo("face %d texel %d,%d dir %s expected %s actual %s", face, x, y,
-                        vec(texelDirection(face, x, y, level.width)).c_str(), vec(expected).c_str(), vec(actual).c_str());
+                        facet::test::describe(texelDirection(face, x, y, level.width)).c_str(),
+                        facet::test::describe(expected).c_str(), facet::test::describe(actual).c_str());
                 worst = std::max(worst, e);
             }
     }
@@ -252,8 +249,8 @@ void IblGLTest::faceOrientation()
         for (int y = 12; y < 20; ++y)
             for (int x = 12; x < 20; ++x)
                 QVERIFY2(level.at(x, y).x == face + 1,
-                    ("face " + std::to_string(face) + " texel " + std::to_string(x) + "," + std::to_string(y) + " shows "
-                     + vec(level.at(x, y)))
+                    ("face " + std::to_string(face) + " texel " + std::to_string(x) + "," + std::to_string(y)
+                        + " shows " + facet::test::describe(level.at(x, y)))
                         .c_str());
     }
 }
@@ -274,9 +271,10 @@ void IblGLTest::dfgMatchesCpuTable()
             const DfgValue& cpu = table.texel(x, y);
             const glm::dvec3 gpu = lut.at(x, y);
             worst = std::max({worst, std::abs(gpu.x - cpu.scale), std::abs(gpu.y - cpu.bias),
-                              std::abs(gpu.z - cpu.albedo())});
+                std::abs(gpu.z - cpu.albedo())});
         }
-    qInfo("DFG GPU vs CPU (%d^2, %d samples): max abs error %.3g", settings.dfgSize, settings.dfgSamples, worst);
+    qInfo("DFG GPU vs CPU (%d^2, %d samples): max abs error %.3g", settings.dfgSize, settings.dfgSamples,
+        worst);
     // Same Hammersley points and formulas: what remains is float vs double arithmetic (~1e-6)
     // and half-float storage of values in [0, 1] (2^-11 = 4.9e-4 at 1).
     QVERIFY2(worst < 1e-3, std::to_string(worst).c_str());
@@ -338,8 +336,9 @@ IrradianceErrors irradianceErrors(const Environment& env, const IblTextures& ibl
         const double mapError = luminance(gpu[i]) / t - 1.0;
         const double shError = luminance(irradianceSH(sh, normals[i])) / t - 1.0;
         if (std::abs(mapError) > r.mapWorst && qEnvironmentVariableIsSet("IBL_DEBUG"))
-            qInfo("n %s truth %s gpu %s sh %s", vec(normals[i]).c_str(), vec(truth[i]).c_str(), vec(gpu[i]).c_str(),
-                vec(irradianceSH(sh, normals[i])).c_str());
+            qInfo("n %s truth %s gpu %s sh %s", facet::test::describe(normals[i]).c_str(),
+                facet::test::describe(truth[i]).c_str(), facet::test::describe(gpu[i]).c_str(),
+                facet::test::describe(irradianceSH(sh, normals[i])).c_str());
         r.mapWorst = std::max(r.mapWorst, std::abs(mapError));
         r.mapMean += std::abs(mapError);
         r.shMin = std::min(r.shMin, shError);
@@ -415,8 +414,8 @@ std::vector<double> prefilterErrors(const Environment& env, const IblTextures& i
             const int step = std::max(gpu.width / 3, 1);
             for (int y = step / 2; y < gpu.height; y += step)
                 for (int x = step / 2; x < gpu.width; x += step) {
-                    const glm::dvec3 cpu
-                        = prefilteredRadiance(env, texelDirection(face, x, y, gpu.width), roughness, cpuSamples);
+                    const glm::dvec3 cpu = prefilteredRadiance(
+                        env, texelDirection(face, x, y, gpu.width), roughness, cpuSamples);
                     const double e
                         = std::abs(luminance(gpu.at(x, y)) - luminance(cpu)) / std::max(luminance(cpu), mean);
                     worst[std::size_t(level)] = std::max(worst[std::size_t(level)], e);
@@ -623,8 +622,9 @@ void IblGLTest::corruptDiskCacheIsRecomputed()
         IblPrecompute writer(dir.path());
         QVERIFY2(writer.prepare(env, smallSettings(), &stats, &error), error.c_str());
     }
-    const QString path = IblDiskCache(dir.path()).pathFor(
-        IblDiskCache::key(env.contentHash(), smallSettings().sanitized().hash()));
+    const QString path
+        = IblDiskCache(dir.path())
+              .pathFor(IblDiskCache::key(env.contentHash(), smallSettings().sanitized().hash()));
     QVERIFY(QFile::exists(path));
     QVERIFY(QFile::resize(path, QFileInfo(path).size() / 2)); // truncated
     IblPrecompute reader(dir.path());
@@ -657,8 +657,8 @@ void IblGLTest::presetTimings()
         QVERIFY2(ibl.prepare(env, *settings, &stats, &error), error.c_str());
         qInfo("preset %-7s: equirect->cube %.1f ms, prefilter %.1f ms, irradiance %.1f ms, DFG %.1f ms, "
               "SH9 %.1f ms, total %.1f ms",
-            name.c_str(), stats.msEquirectToCube, stats.msPrefilter, stats.msIrradiance, stats.msDfg, stats.msSh,
-            stats.msTotal);
+            name.c_str(), stats.msEquirectToCube, stats.msPrefilter, stats.msIrradiance, stats.msDfg,
+            stats.msSh, stats.msTotal);
     }
 }
 

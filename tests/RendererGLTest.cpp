@@ -44,7 +44,7 @@ constexpr int kSize = 48;
 
 // GL textures of a uniform environment and a DFG LUT. Deleted with the context current.
 struct TinyIbl {
-    GLuint radiance = 0;  // cubemap, 4x4 faces, one level
+    GLuint radiance = 0; // cubemap, 4x4 faces, one level
     GLuint irradiance = 0; // cubemap, pi L
     GLuint dfg = 0;
     int dfgSize = 0;
@@ -80,8 +80,8 @@ struct TinyIbl {
         glBindTexture(GL_TEXTURE_CUBE_MAP, texture);
         std::vector<glm::vec4> texels(16, glm::vec4(value, 1.0f));
         for (int face = 0; face < 6; ++face)
-            glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, GL_RGBA32F, 4, 4, 0, GL_RGBA, GL_FLOAT,
-                         texels.data());
+            glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), 0, GL_RGBA32F, 4, 4, 0, GL_RGBA,
+                GL_FLOAT, texels.data());
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, 0);
@@ -160,23 +160,12 @@ std::vector<SpherePixel> interiorPixels(int size)
     return pixels;
 }
 
-std::string describe(const glm::dvec3& v)
-{
-    char text[96];
-    std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", v.x, v.y, v.z);
-    return text;
-}
-
 } // namespace
 
 class RendererGLTest : public QObject {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        qunsetenv("DISPLAY");
-        qunsetenv("WAYLAND_DISPLAY");
-    }
+    static void initMain() { facet::test::forgetDisplayServer(); }
 
 private Q_SLOTS:
     void initTestCase();
@@ -195,7 +184,8 @@ private Q_SLOTS:
     void timings();
 
 private:
-    Image renderScene(const RenderScene& scene, FramebufferFormat format = FramebufferFormat::RGBA32F, int size = kSize);
+    Image renderScene(
+        const RenderScene& scene, FramebufferFormat format = FramebufferFormat::RGBA32F, int size = kSize);
     std::optional<HeadlessGLContext> m_context;
     std::unique_ptr<Renderer> m_renderer;
 };
@@ -238,9 +228,9 @@ void RendererGLTest::variantDefines()
     };
     // Default model: glTF, GGX, correlated Smith, Schlick, fresnel_mix, multi-scatter on.
     QVERIFY(has("MULTI_SCATTER"));
-    for (const char* absent : {"HAS_BASE_COLOR_MAP", "HAS_NORMAL_MAP", "HAS_METALLIC_MAP", "HAS_ROUGHNESS_MAP",
-                               "HAS_OCCLUSION_MAP", "HAS_PUNCTUAL_LIGHTS", "COMPOSITION_LEARNOPENGL",
-                               "DISTRIBUTION_BECKMANN", "VISIBILITY_SCHLICK", "IRRADIANCE_SH"})
+    for (const char* absent : {"HAS_BASE_COLOR_MAP", "HAS_NORMAL_MAP", "HAS_METALLIC_MAP",
+             "HAS_ROUGHNESS_MAP", "HAS_OCCLUSION_MAP", "HAS_PUNCTUAL_LIGHTS", "COMPOSITION_LEARNOPENGL",
+             "DISTRIBUTION_BECKMANN", "VISIBILITY_SCHLICK", "IRRADIANCE_SH"})
         QVERIFY2(!has(absent), absent);
     QVERIFY(has("DEBUG_VIEW 0"));
 
@@ -252,8 +242,8 @@ void RendererGLTest::variantDefines()
     features = surfaceFeaturesFor(material, normalImage, true, true);
     key = {features, DebugView::WhiteFurnace};
     defines = surfaceDefines(key);
-    for (const char* present : {"HAS_NORMAL_MAP", "HAS_PUNCTUAL_LIGHTS", "IRRADIANCE_SH", "COMPOSITION_LEARNOPENGL",
-                                "VISIBILITY_SCHLICK", "MULTI_SCATTER", "DEBUG_VIEW 17"})
+    for (const char* present : {"HAS_NORMAL_MAP", "HAS_PUNCTUAL_LIGHTS", "IRRADIANCE_SH",
+             "COMPOSITION_LEARNOPENGL", "VISIBILITY_SCHLICK", "MULTI_SCATTER", "DEBUG_VIEW 17"})
         QVERIFY2(has(present), present);
     QVERIFY(!has("HAS_BASE_COLOR_MAP"));
     QCOMPARE(debugViewFromString("white-furnace").value(), DebugView::WhiteFurnace);
@@ -268,22 +258,25 @@ void RendererGLTest::toneMappingMatchesCpu()
     std::string error;
     std::optional<Framebuffer> hdr = Framebuffer::create(width, height, FramebufferFormat::RGBA32F, &error);
     QVERIFY2(hdr, error.c_str());
-    std::optional<Framebuffer> display = Framebuffer::create(width, height, FramebufferFormat::RGBA32F, &error);
+    std::optional<Framebuffer> display
+        = Framebuffer::create(width, height, FramebufferFormat::RGBA32F, &error);
     QVERIFY2(display, error.c_str());
     // A gradient from 1e-4 to 1e4 (log spaced); rows tint it differently to exercise hue handling.
     std::vector<glm::vec4> pixels(std::size_t(width * height));
-    const glm::vec3 tints[height] = {{1.0f, 1.0f, 1.0f}, {1.0f, 0.5f, 0.25f}, {0.1f, 0.6f, 1.0f}, {0.0f, 1.0f, 0.0f}};
+    const glm::vec3 tints[height]
+        = {{1.0f, 1.0f, 1.0f}, {1.0f, 0.5f, 0.25f}, {0.1f, 0.6f, 1.0f}, {0.0f, 1.0f, 0.0f}};
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const float value = std::pow(10.0f, -4.0f + 8.0f * float(x) / float(width - 1));
             pixels[std::size_t(y * width + x)] = glm::vec4(tints[y] * value, 1.0f);
         }
     glBindTexture(GL_TEXTURE_2D, hdr->colorTexture());
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, pixels.data()); // GL rows: bottom-up
+    glTexSubImage2D(
+        GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, pixels.data()); // GL rows: bottom-up
     glBindTexture(GL_TEXTURE_2D, 0);
 
     for (ToneMapper mapper : {ToneMapper::None, ToneMapper::Reinhard, ToneMapper::Exposure, ToneMapper::Aces,
-                              ToneMapper::KhronosNeutral, ToneMapper::AgX}) {
+             ToneMapper::KhronosNeutral, ToneMapper::AgX}) {
         for (DisplayEncoding encoding : {DisplayEncoding::SRGB, DisplayEncoding::Gamma}) {
             ViewSettings view;
             view.toneMapper = mapper;
@@ -302,7 +295,8 @@ void RendererGLTest::toneMappingMatchesCpu()
                 }
             // Float against double through pow/log2/exp: 1e-3 of the display range, far below one
             // 8-bit step (3.9e-3).
-            QVERIFY2(worst < 1e-3, (std::string(toString(mapper)) + ": worst difference " + std::to_string(worst)).c_str());
+            QVERIFY2(worst < 1e-3,
+                (std::string(toString(mapper)) + ": worst difference " + std::to_string(worst)).c_str());
         }
     }
 }
@@ -323,7 +317,8 @@ void RendererGLTest::whiteFurnaceMetal()
         for (const SpherePixel& p : pixels)
             worst = std::max(worst, double(glm::length(glm::vec3(image.at(p.x, p.y)) - glm::vec3(1.0f))));
         // 1%: the furnace bound of DESIGN.md (measured: float rounding only, ~1e-6).
-        QVERIFY2(worst < 0.01, ("roughness " + std::to_string(roughness) + ": worst " + std::to_string(worst)).c_str());
+        QVERIFY2(worst < 0.01,
+            ("roughness " + std::to_string(roughness) + ": worst " + std::to_string(worst)).c_str());
     }
 }
 
@@ -345,9 +340,10 @@ void RendererGLTest::whiteFurnaceDebugView()
             double worst = 0.0;
             for (const SpherePixel& p : pixels)
                 worst = std::max(worst, double(glm::length(glm::vec3(image.at(p.x, p.y)) - glm::vec3(1.0f))));
-            QVERIFY2(worst < 0.01, ("metallic " + std::to_string(metallic) + " roughness " + std::to_string(roughness)
-                                    + ": worst " + std::to_string(worst))
-                                       .c_str());
+            QVERIFY2(worst < 0.01,
+                ("metallic " + std::to_string(metallic) + " roughness " + std::to_string(roughness)
+                    + ": worst " + std::to_string(worst))
+                    .c_str());
         }
 }
 
@@ -359,7 +355,8 @@ void RendererGLTest::splitSumMatchesCpu_data()
     for (int model : {0, 1, 2})
         for (double metallic : {0.0, 1.0})
             for (double roughness : {0.05, 0.5, 1.0})
-                QTest::addRow("model%d-m%.0f-r%.2f", model, metallic, roughness) << model << metallic << roughness;
+                QTest::addRow("model%d-m%.0f-r%.2f", model, metallic, roughness)
+                    << model << metallic << roughness;
 }
 
 void RendererGLTest::splitSumMatchesCpu()
@@ -396,8 +393,8 @@ void RendererGLTest::splitSumMatchesCpu()
         const double error = glm::length(actual - expected) / std::max(glm::length(expected), 1e-3);
         if (error > worst) {
             worst = error;
-            where = "pixel " + std::to_string(p.x) + "," + std::to_string(p.y) + ": " + describe(actual) + " vs "
-                + describe(expected);
+            where = "pixel " + std::to_string(p.x) + "," + std::to_string(p.y) + ": "
+                + facet::test::describe(actual) + " vs " + facet::test::describe(expected);
         }
     }
     // 1%: the tessellated sphere's interpolated normal differs from the analytic one by ~1e-3 rad
@@ -444,14 +441,15 @@ void RendererGLTest::directLightMatchesCpu()
             }
             const double NoL = glm::dot(p.n, l);
             if (NoL > 0.0)
-                expected += brdf.evaluate(info, p.n, p.v, l, LightingKind::Punctual).total() * irradiance * NoL;
+                expected
+                    += brdf.evaluate(info, p.n, p.v, l, LightingKind::Punctual).total() * irradiance * NoL;
         }
         const glm::dvec3 actual(glm::vec3(image.at(p.x, p.y)));
         const double error = glm::length(actual - expected) / std::max(glm::length(expected), 0.02);
         if (error > worst) {
             worst = error;
-            where = "pixel " + std::to_string(p.x) + "," + std::to_string(p.y) + ": " + describe(actual) + " vs "
-                + describe(expected);
+            where = "pixel " + std::to_string(p.x) + "," + std::to_string(p.y) + ": "
+                + facet::test::describe(actual) + " vs " + facet::test::describe(expected);
         }
     }
     // 3%: highlights are sharp in the normal, and the tessellated normal is off by ~1e-3 rad.
@@ -479,9 +477,10 @@ void RendererGLTest::extremesStayFinite()
                             const glm::vec4 c = image.at(x, y);
                             for (int i = 0; i < 3; ++i)
                                 QVERIFY2(std::isfinite(c[i]) && c[i] >= 0.0f,
-                                         ("pixel " + std::to_string(x) + "," + std::to_string(y) + " radiance "
-                                          + std::to_string(radiance) + " roughness " + std::to_string(roughness))
-                                             .c_str());
+                                    ("pixel " + std::to_string(x) + "," + std::to_string(y) + " radiance "
+                                        + std::to_string(radiance) + " roughness "
+                                        + std::to_string(roughness))
+                                        .c_str());
                         }
                 }
     }
@@ -553,7 +552,8 @@ void RendererGLTest::baseColorDebugView()
 
     // An sRGB-encoded texture (encoded 128/255 everywhere) is decoded to linear and multiplied by
     // the factor; a constant texture makes filtering irrelevant.
-    auto texture = std::make_shared<Image>(8, 8, glm::vec4(128.0f / 255.0f, 128.0f / 255.0f, 128.0f / 255.0f, 1.0f));
+    auto texture
+        = std::make_shared<Image>(8, 8, glm::vec4(128.0f / 255.0f, 128.0f / 255.0f, 128.0f / 255.0f, 1.0f));
     scene.material.map(MapSlot::BaseColor).path = "/t/base.png";
     scene.material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::SRGB;
     scene.maps[std::size_t(MapSlot::BaseColor)] = {texture, "/t/base.png", 7};
@@ -562,7 +562,8 @@ void RendererGLTest::baseColorDebugView()
     for (const SpherePixel& p : pixels) {
         const glm::dvec3 actual(glm::vec3(image.at(p.x, p.y)));
         // 8-bit sRGB decode in the sampler: within 1e-3 of the exact curve (llvmpipe's table).
-        QVERIFY2(glm::length(actual - expected) < 2e-3, (describe(actual) + " vs " + describe(expected)).c_str());
+        QVERIFY2(glm::length(actual - expected) < 2e-3,
+            (facet::test::describe(actual) + " vs " + facet::test::describe(expected)).c_str());
     }
 }
 
@@ -605,7 +606,8 @@ void RendererGLTest::everyFeatureAndDebugViewCompiles()
             scene.material.shading = model;
             scene.view.debugView = toString(DebugView(view));
             std::string error;
-            std::optional<Framebuffer> target = Framebuffer::create(16, 16, FramebufferFormat::RGBA16F, &error);
+            std::optional<Framebuffer> target
+                = Framebuffer::create(16, 16, FramebufferFormat::RGBA16F, &error);
             QVERIFY2(target, error.c_str());
             QVERIFY2(m_renderer->render(scene, *target, &error), error.c_str());
             const Image image = target->readPixels();
@@ -613,7 +615,7 @@ void RendererGLTest::everyFeatureAndDebugViewCompiles()
                 for (int x = 0; x < 16; ++x)
                     for (int i = 0; i < 3; ++i)
                         QVERIFY2(std::isfinite(image.at(x, y)[i]) && image.at(x, y)[i] >= 0.0f,
-                                 toString(DebugView(view)));
+                            toString(DebugView(view)));
         }
     // SH irradiance of a constant E = pi gives the furnace's irradiance view: E / pi = 1.
     scene.material.shading = models[0];
@@ -630,8 +632,8 @@ void RendererGLTest::timings()
     RenderScene scene = referenceScene(ibl);
     scene.lights = {Light::defaultDirectional(), Light::defaultDirectional()};
     std::string error;
-    for (const auto& [w, h, samples] : {std::tuple {640, 360, 1}, std::tuple {640, 360, 4}, std::tuple {1280, 720, 1},
-                                        std::tuple {1280, 720, 4}}) {
+    for (const auto& [w, h, samples] : {std::tuple {640, 360, 1}, std::tuple {640, 360, 4},
+             std::tuple {1280, 720, 1}, std::tuple {1280, 720, 4}}) {
         scene.view.msaaSamples = samples;
         std::optional<Framebuffer> hdr = Framebuffer::create(w, h, FramebufferFormat::RGBA16F, &error);
         std::optional<Framebuffer> display = Framebuffer::create(w, h, FramebufferFormat::RGBA16F, &error);
@@ -642,8 +644,9 @@ void RendererGLTest::timings()
             QVERIFY2(m_renderer->toneMap(*hdr, *display, scene.view, &error), error.c_str());
         }
         const RenderStats& s = m_renderer->lastFrameStats();
-        qInfo("%dx%d MSAA %dx, 2 lights: background %.1f ms, surface %.1f ms, resolve %.1f ms, tone map %.1f ms", w, h,
-              samples, s.backgroundMs, s.surfaceMs, s.resolveMs, s.toneMapMs);
+        qInfo("%dx%d MSAA %dx, 2 lights: background %.1f ms, surface %.1f ms, resolve %.1f ms, tone map %.1f "
+              "ms",
+            w, h, samples, s.backgroundMs, s.surfaceMs, s.resolveMs, s.toneMapMs);
         m_renderer->setTimingEnabled(false);
     }
 }

@@ -10,6 +10,8 @@
 
 #include <QtTest/QTest>
 
+#include "TestSupport.h"
+
 #include <optional>
 #include <string>
 
@@ -48,8 +50,7 @@ class ShaderProgramGLTest : public QObject {
 public:
     static void initMain()
     {
-        qunsetenv("DISPLAY");
-        qunsetenv("WAYLAND_DISPLAY");
+        facet::test::forgetDisplayServer();
     }
 
 private Q_SLOTS:

@@ -1,5 +1,7 @@
 #include "TestSupport.h"
 
+#include <cstdio>
+
 #include <QDir>
 #include <QFileInfo>
 
@@ -26,5 +28,18 @@ QString outputDir()
 }
 
 bool runningInCi() { return qgetenv("CI") == "true"; }
+
+void forgetDisplayServer()
+{
+    qunsetenv("DISPLAY");
+    qunsetenv("WAYLAND_DISPLAY");
+}
+
+std::string describe(const glm::dvec3& v, int digits)
+{
+    char text[128];
+    std::snprintf(text, sizeof text, "(%.*g, %.*g, %.*g)", digits, v.x, digits, v.y, digits, v.z);
+    return text;
+}
 
 } // namespace facet::test

@@ -1,8 +1,12 @@
 #pragma once
 // Helpers shared by the test executables: where the CC0 sample data and the test artefacts are.
 
+#include <string>
+
 #include <QString>
 #include <QtTest/QTest>
+
+#include <glm/vec3.hpp>
 
 namespace facet::test {
 
@@ -19,6 +23,13 @@ QString sourceDir();
 QString outputDir();
 // True when running under CI (CI=true): missing sample data is then a failure, not a skip.
 bool runningInCi();
+
+// GL tests call this from initMain(), before any Q*Application: they must get their surfaceless
+// EGL context with no display server at all, as the headless commands do.
+void forgetDisplayServer();
+
+// "(x, y, z)" with `digits` significant digits, for failure messages.
+std::string describe(const glm::dvec3& v, int digits = 6);
 
 } // namespace facet::test
 
