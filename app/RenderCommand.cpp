@@ -22,6 +22,7 @@
 #include "render/IblPrecompute.h"
 #include "render/IblSettings.h"
 #include "render/RenderScene.h"
+#include "render/SceneFromProject.h"
 #include "render/Renderer.h"
 
 namespace facet {
@@ -366,33 +367,10 @@ int runGpu(const RenderRequest& request)
         if (!precompute.lastWarning().empty())
             std::fprintf(stderr, "facet render: %s\n", precompute.lastWarning().c_str());
 
-        RenderScene scene;
-        scene.mesh = assets->mesh;
-        scene.meshKey = assets->meshKey;
-        scene.material = project.material;
-        for (MapSlot slot : kAllMapSlots) {
-            const LoadedMapImage& map = assets->maps[std::size_t(slot)];
-            scene.maps[std::size_t(slot)] = RenderMapImage{map.image, map.path, map.timestamp};
-        }
-        scene.lights = project.lights;
-        scene.view = project.view;
-        scene.camera = project.camera;
-        if (request.referenceView) {
-            // DESIGN.md's reference view: one sample through each pixel centre, the environment
-            // behind the object.
-            scene.camera = Camera::referenceView();
-            scene.view.msaaSamples = 1;
-            scene.view.background = BackgroundMode::Environment;
-        }
-        scene.environment = environmentLighting(ibl, assets->environment.rotationDegrees(),
-                                                assets->environment.intensity(),
-                                                settings->irradiance == IblSettings::Irradiance::SH);
-        if (project.material.shading.coupling == DielectricCoupling::EnergyPreserving) {
-            const DfgTable table = DfgTable::compute(32, 512, project.material.shading.visibility);
-            const MaterialBrdf brdf(project.material.shading, table);
-            scene.dielectricAverageAlbedo = brdf.dielectricSpecularAverageAlbedo(
-                shading::f0FromIor(project.material.ior), project.material.roughness());
-        }
+        SceneOptions options;
+        options.referenceView = request.referenceView;
+        options.irradianceFromSH = settings->irradiance == IblSettings::Irradiance::SH;
+        const RenderScene scene = sceneFromProject(project, *assets, ibl, options);
 
         Renderer renderer;
         renderer.setTimingEnabled(request.printStats);

@@ -1,0 +1,62 @@
+#include "render/SceneFromProject.h"
+
+#include <map>
+#include <mutex>
+
+#include "core/Brdf.h"
+#include "core/DfgTable.h"
+#include "core/MaterialBrdf.h"
+#include "core/Project.h"
+#include "core/ProjectAssets.h"
+#include "render/IblTextures.h"
+
+namespace facet {
+
+double dielectricAverageAlbedoFor(const Project& project)
+{
+    const ShadingModel& shading = project.material.shading;
+    if (shading.coupling != DielectricCoupling::EnergyPreserving)
+        return 0.0;
+    // One 32 x 32 table per visibility term for the process: E_s,avg is an integral over n.v, so
+    // the table's resolution is ample (docs/energy.md).
+    static std::mutex mutex;
+    static std::map<Visibility, std::shared_ptr<const DfgTable>> tables;
+    std::shared_ptr<const DfgTable> table;
+    {
+        std::lock_guard lock(mutex);
+        auto& slot = tables[shading.visibility];
+        if (!slot)
+            slot = std::make_shared<const DfgTable>(DfgTable::compute(32, 512, shading.visibility));
+        table = slot;
+    }
+    const MaterialBrdf brdf(shading, *table);
+    return brdf.dielectricSpecularAverageAlbedo(shading::f0FromIor(project.material.ior),
+                                                project.material.roughness());
+}
+
+RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets,
+                             const std::shared_ptr<const IblTextures>& ibl, const SceneOptions& options)
+{
+    RenderScene scene;
+    scene.mesh = assets.mesh;
+    scene.meshKey = assets.meshKey;
+    scene.material = project.material;
+    for (MapSlot slot : kAllMapSlots) {
+        const LoadedMapImage& map = assets.maps[std::size_t(slot)];
+        scene.maps[std::size_t(slot)] = RenderMapImage{map.image, map.path, map.timestamp};
+    }
+    scene.lights = project.lights;
+    scene.view = project.view;
+    scene.camera = project.camera;
+    if (options.referenceView) {
+        scene.camera = Camera::referenceView();
+        scene.view.msaaSamples = 1;
+        scene.view.background = BackgroundMode::Environment;
+    }
+    scene.environment = environmentLighting(ibl, assets.environment.rotationDegrees(), assets.environment.intensity(),
+                                            options.irradianceFromSH);
+    scene.dielectricAverageAlbedo = dielectricAverageAlbedoFor(project);
+    return scene;
+}
+
+} // namespace facet
