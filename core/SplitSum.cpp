@@ -1,14 +1,23 @@
 #include "core/SplitSum.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "core/Brdf.h"
 
 namespace facet {
 
 using namespace shading;
+
+glm::dvec3 specularDominantDirection(const glm::dvec3& n, const glm::dvec3& R, double alpha)
+{
+    const double smoothness = std::clamp(1.0 - alpha, 0.0, 1.0);
+    const double lerpFactor = smoothness * (std::sqrt(smoothness) + alpha);
+    return glm::normalize(glm::mix(n, R, lerpFactor));
+}
 
 BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, const MaterialInfo& material,
                            double NoV, const SplitSumLighting& lighting)

@@ -27,6 +27,13 @@ struct SplitSumLighting {
 //     LearnOpenGL, energy pres. (1 - m) (1 - E_s(n.v))
 // `brdf`'s model selects the composition and multi-scatter; `table` is the DFG LUT the renderer
 // samples (the one `brdf` was made with), looked up bilinearly as GL_LINEAR does.
+// The direction the renderer reads the prefiltered map at for normal n, mirror direction R
+// (both unit) and alpha = roughness^2: normalize(lerp(n, R, s (sqrt(s) + alpha))), s = 1 - alpha
+// [Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", listing 22]. The peak of a rough lobe
+// leans from R towards n; docs/ibl.md ("Dominant direction") has the measurement behind the
+// choice. GLSL twin: resources/shaders/ibl_lookup.glsl.
+glm::dvec3 specularDominantDirection(const glm::dvec3& n, const glm::dvec3& R, double alpha);
+
 BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, const MaterialInfo& material,
                            double NoV, const SplitSumLighting& lighting);
 

@@ -19,7 +19,7 @@ std::uint64_t fnv1a(std::uint64_t hash, std::int32_t value)
 
 constexpr std::uint64_t kFnvOffset = 0xcbf29ce484222325ULL;
 // Bumped whenever a pass's algorithm changes, so that old disk-cache files stop matching.
-constexpr std::int32_t kAlgorithmVersion = 1;
+constexpr std::int32_t kAlgorithmVersion = 2; // 2: roughness-to-level map r (2 - r)
 
 int mipChainLength(int size) { return std::bit_width(unsigned(std::max(size, 1))); }
 

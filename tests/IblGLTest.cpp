@@ -442,12 +442,14 @@ void IblGLTest::prefilterAgainstCpu()
     for (std::size_t level = 1; level < worst.size(); ++level) {
         qInfo("sky prefilter level %zu (roughness %.2f): max relative error %.2f%%", level,
             roughnessFromLod(int(level), settings.prefilterMipLevels), 100 * worst[level]);
-        // Smooth sky with a soft sun: 128 filtered samples vs 2048 plain ones. Measured 5, 20, 36,
-        // 35% for levels 1-4 (1024 GPU samples: 12, 6, 8, 15%): the filtered lookups' footprints
+        // Smooth sky with a soft sun: 128 filtered samples vs 2048 plain ones. Levels 1-4 hold
+        // roughness 0.13, 0.29, 0.5, 1 (render/IblTextures.h roughnessFromLod). Measured 14, 15,
+        // 18, 35% (with the earlier linear map, roughness 0.25, 0.5, 0.75, 1: 5, 20, 36, 35%):
+        // the filtered lookups' footprints
         // (Omega_s = 1 / (N pdf), doubled by Krivanek's +1 bias) blur the sun and, near the
         // lobe's horizon, read light from below it. The bounds catch regressions and orientation
         // or scale mistakes (errors of order 100%); docs/ibl.md discusses the bias.
-        const double bound[] = {0.0, 0.10, 0.30, 0.45, 0.45};
+        const double bound[] = {0.0, 0.20, 0.30, 0.45, 0.45};
         QVERIFY2(worst[level] < bound[std::min<std::size_t>(level, 4)], std::to_string(worst[level]).c_str());
     }
 }
@@ -485,14 +487,14 @@ void IblGLTest::noSparkleUnderASun()
     IblSettings settings = smallSettings();
     settings.cubeSize = 64;
     settings.prefilterSize = 32;
-    settings.prefilterMipLevels = 5; // level 2 = roughness 0.5
+    settings.prefilterMipLevels = 5; // level 3 = roughness 0.5 (roughnessFromLod)
     settings.prefilterSamples = 64;
     std::string error;
     const auto ibl = m_ibl->prepare(env, settings, nullptr, &error);
     QVERIFY2(ibl, error.c_str());
     double worstRatio = 0.0;
     for (int face = 0; face < 6; ++face) {
-        const Level level = readLevel(ibl->prefiltered, face, 2);
+        const Level level = readLevel(ibl->prefiltered, face, 3);
         QVERIFY(allFinite(level.rgba));
         for (int y = 1; y + 1 < level.height; ++y)
             for (int x = 1; x + 1 < level.width; ++x) {

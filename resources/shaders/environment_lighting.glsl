@@ -72,7 +72,7 @@ BrdfLobes environmentLobes(MaterialInfo m, vec3 n, vec3 v)
     float roughness = clampRoughness(m.perceptualRoughness);
     float metallic = saturate(m.metallic);
     vec3 baseColor = max(m.baseColor, vec3(0.0));
-    vec3 R = reflect(-v, n);
+    vec3 R = specularDominantDirection(n, reflect(-v, n), roughness * roughness);
     vec3 radiance = prefilteredRadiance(R, roughness);
     vec3 diffuseLight = irradiance(n) * INV_PI;
     vec3 dfg = dfgLookup(NoV, roughness);

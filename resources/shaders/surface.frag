@@ -96,7 +96,7 @@ void main()
 #elif DEBUG_VIEW == DEBUG_IBL_DIFFUSE
     color = ibl.diffuse * m.occlusion;
 #elif DEBUG_VIEW == DEBUG_PREFILTERED_RADIANCE
-    color = prefilteredRadiance(reflect(-v, n), debugR);
+    color = prefilteredRadiance(specularDominantDirection(n, reflect(-v, n), debugR * debugR), debugR);
 #elif DEBUG_VIEW == DEBUG_BRDF_LUT
     color = dfgLookup(debugNoV, debugR);
 #elif DEBUG_VIEW == DEBUG_IBL_SPECULAR
