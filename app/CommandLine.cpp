@@ -26,7 +26,8 @@ struct Parser {
             QStringLiteral("Facet authors and previews physically based materials.\n"
                            "With no command it opens the main window, on PROJECT.json if given.\n"
                            "Commands (each has --help):\n"
-                           "  render   render a project to an EXR or PNG without a display"));
+                           "  render   render a project to an EXR or PNG without a display\n"
+                           "  bench    time against error of the IBL quality settings (table and CSV)"));
         // Our own -h/-v instead of addHelpOption(): its --help-all lists Qt options that this
         // parser, running before QApplication, does not accept.
         parser.addOption(help);
@@ -48,7 +49,7 @@ const QStringList& CommandLine::commandNames()
 
 const QStringList& CommandLine::availableCommandNames()
 {
-    static const QStringList names = {QStringLiteral("render")};
+    static const QStringList names = {QStringLiteral("render"), QStringLiteral("bench")};
     return names;
 }
 

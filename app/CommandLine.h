@@ -3,8 +3,8 @@
 // and every error work on a machine without a display server.
 //
 //   facet [--screenshot FILE.png] [PROJECT.json]   the GUI (the default)
-//   facet <command> ...                             a headless command (render; sheet, bake,
-//                                                   export and bench are not in this version)
+//   facet <command> ...                             a headless command (render, bench; sheet,
+//                                                   bake and export are not in this version)
 
 #include <QString>
 #include <QStringList>

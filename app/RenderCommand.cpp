@@ -1,5 +1,7 @@
 #include "RenderCommand.h"
 
+#include "OffscreenRender.h"
+
 #include <cmath>
 #include <cstdio>
 
@@ -17,7 +19,6 @@
 #include "core/MaterialPresets.h"
 #include "core/ProjectAssets.h"
 #include "core/ToneMap.h"
-#include "render/Framebuffer.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblPrecompute.h"
 #include "render/IblSettings.h"
@@ -367,33 +368,20 @@ int runGpu(const RenderRequest& request)
         if (!precompute.lastWarning().empty())
             std::fprintf(stderr, "facet render: %s\n", precompute.lastWarning().c_str());
 
-        SceneOptions options;
-        options.referenceView = request.referenceView;
-        options.irradianceFromSH = settings->irradiance == IblSettings::Irradiance::SH;
-        const RenderScene scene = sceneFromProject(project, *assets, ibl, options);
+        const RenderScene scene
+            = sceneFromProject(project, *assets, ibl, sceneOptionsFor(*settings, request.referenceView));
 
         Renderer renderer;
         renderer.setTimingEnabled(request.printStats);
-        auto hdr = Framebuffer::create(request.width, request.height, FramebufferFormat::RGBA16F, &error);
-        if (!hdr || !renderer.render(scene, *hdr, &error)) {
+        const bool png = QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower() == QStringLiteral("png");
+        const std::optional<Image> image
+            = renderOffscreen(renderer, scene, request.width, request.height,
+                              png ? OffscreenOutput::DisplayReferred : OffscreenOutput::LinearRadiance, &error);
+        if (!image) {
             std::fprintf(stderr, "facet render: %s\n", error.c_str());
             return RenderCommand::kExitFailure;
         }
-        const bool png = QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower() == QStringLiteral("png");
-        Image image;
-        if (png) {
-            // The viewport's own display transform, on the GPU.
-            auto display = Framebuffer::create(request.width, request.height, FramebufferFormat::RGBA16F, &error);
-            if (!display || !renderer.toneMap(*hdr, *display, scene.view, &error)) {
-                std::fprintf(stderr, "facet render: %s\n", error.c_str());
-                return RenderCommand::kExitFailure;
-            }
-            image = display->readPixels();
-            image.setEncoding(ColorEncoding::SRGB);
-        } else {
-            image = hdr->readPixels();
-        }
-        if (!image.save(request.outputPath, &error, /*alpha=*/false)) {
+        if (!image->save(request.outputPath, &error, /*alpha=*/false)) {
             std::fprintf(stderr, "facet render: %s\n", error.c_str());
             exitCode = RenderCommand::kExitFailure;
         }

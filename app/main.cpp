@@ -1,7 +1,8 @@
-// facet: the GUI by default; headless commands: render (sheet, bake, export and bench are not in
-// this version). The command line is parsed before any Q*Application exists, so --help, --version
+// facet: the GUI by default; headless commands: render and bench (sheet, bake and export are not
+// in this version). The command line is parsed before any Q*Application exists, so --help, --version
 // and errors need no display server; QApplication is made only for the GUI.
 
+#include "BenchCommand.h"
 #include "CommandLine.h"
 #include "RenderCommand.h"
 #include "WindowScreenshot.h"
@@ -65,6 +66,26 @@ int runGui(int& argc, char** argv, const facet::CommandLine& commandLine)
     return QApplication::exec();
 }
 
+// Parses a headless command's arguments and runs it. Both commands share the contract: parse()
+// returns nullopt with exit code 0 for --help (the text in `error`), 1 or 2 with a message.
+template <typename Command> int runCommand(const char* name, const QStringList& arguments)
+{
+    QString error;
+    int exitCode = 0;
+    const auto request = Command::parse(arguments, &error, &exitCode);
+    if (!request) {
+        if (exitCode == 0) { // --help
+            std::fputs(qPrintable(error), stdout);
+            return 0;
+        }
+        std::fprintf(stderr, "facet %s: %s\n", name, qPrintable(error));
+        if (exitCode == Command::kExitUsage)
+            std::fprintf(stderr, "Try 'facet %s --help' for more information.\n", name);
+        return exitCode;
+    }
+    return Command::run(*request);
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
@@ -86,23 +107,11 @@ int main(int argc, char* argv[])
         std::printf("%s %s\n", qPrintable(QCoreApplication::applicationName()),
             qPrintable(QCoreApplication::applicationVersion()));
         return 0;
-    case facet::CommandLine::Action::Command: {
-        // Only `render` exists so far (CommandLine::availableCommandNames()).
-        QString error;
-        int exitCode = 0;
-        const auto request = facet::RenderCommand::parse(commandLine.commandArguments, &error, &exitCode);
-        if (!request) {
-            if (exitCode == 0) { // --help
-                std::fputs(qPrintable(error), stdout);
-                return 0;
-            }
-            std::fprintf(stderr, "facet render: %s\n", qPrintable(error));
-            if (exitCode == facet::RenderCommand::kExitUsage)
-                std::fputs("Try 'facet render --help' for more information.\n", stderr);
-            return exitCode;
-        }
-        return facet::RenderCommand::run(*request);
-    }
+    case facet::CommandLine::Action::Command:
+        // The commands this version has: CommandLine::availableCommandNames().
+        if (commandLine.command == QStringLiteral("bench"))
+            return runCommand<facet::BenchCommand>("bench", commandLine.commandArguments);
+        return runCommand<facet::RenderCommand>("render", commandLine.commandArguments);
     case facet::CommandLine::Action::Unavailable:
         std::fprintf(
             stderr, "facet: '%s' is not available in this version\n", qPrintable(commandLine.command));

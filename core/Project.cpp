@@ -576,6 +576,12 @@ bool ViewSettings::validate(std::string* problem) const
         return fail("exposureEV: " + number(exposureEV) + " is outside [-20, 20]", problem);
     if (!std::isfinite(gamma) || gamma < 1.0 || gamma > 3.0)
         return fail("gamma: " + number(gamma) + " is outside [1, 3]", problem);
+    // An OCIO view belongs to a display: one without the other names no transform. Whether the
+    // names exist depends on $OCIO's config at render time (render/ToneMapping reports it).
+    if (ocioDisplay.empty() && !ocioView.empty())
+        return fail("ocioDisplay: must be set when ocioView is (\"" + ocioView + "\")", problem);
+    if (!ocioDisplay.empty() && ocioView.empty())
+        return fail("ocioView: must be set when ocioDisplay is (\"" + ocioDisplay + "\")", problem);
     if (debugView.empty())
         return fail("debugView: must not be empty (\"none\" shows the shaded image)", problem);
     if (mesh.empty())

@@ -299,7 +299,7 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
             *error = "IblPrecompute::prepare: the environment has no image";
         return nullptr;
     }
-    const IblSettings settings = requested.sanitized();
+    const IblSettings settings = requested.forImage(environment.image().width());
     const std::uint64_t key = IblDiskCache::key(environment.contentHash(), settings.hash());
 
     // 1. Memory.

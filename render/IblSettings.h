@@ -24,7 +24,7 @@ struct IblSettings {
     int irradianceSize = 32;     // irradiance cubemap face size
     // Source texels summed per irradiance texel: the pass sums every texel of the largest level of
     // the environment cube that has at most this many (6 s^2; 1536 = 16x16 a face).
-    int irradianceSamples = 1536;
+    int irradianceSamples = 384;
     int dfgSize = 32;            // DFG LUT is dfgSize x dfgSize
     int dfgSamples = 1024;       // VNDF samples per LUT texel
     Irradiance irradiance = Irradiance::Map;
@@ -38,6 +38,13 @@ struct IblSettings {
     // Clamps every field into its valid range (sizes >= 1, levels within the size's mip chain,
     // samples >= 1); prepare() works on the sanitised copy.
     IblSettings sanitized() const;
+    // The settings for an equirect image `equirectWidth` texels wide: cubeSize is a MAXIMUM, and
+    // the cube gets no more than twice the image's own resolution (an equirect's width covers
+    // four faces: width / 4 texels a face; 2x that keeps bilinear resampling from blurring, one
+    // point of relative RMSE on the 512 x 256 CC0 maps, docs/benchmarks.md), as a power of two
+    // >= 16. prefilterSize never exceeds the cube; levels are clamped to the chain. Applied by
+    // IblPrecompute::prepare() (so the cache key holds what was really computed).
+    IblSettings forImage(int equirectWidth) const;
 
     // "draft", "default", "high"; nullopt for an unknown name.
     static std::optional<IblSettings> preset(const std::string& name);

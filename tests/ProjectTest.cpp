@@ -446,6 +446,12 @@ private Q_SLOTS:
             << minimalWith(R"("view": {"msaaSamples": 3})") << QStringLiteral("view.msaaSamples: 3");
         QTest::newRow("msaa fraction") << minimalWith(R"("view": {"msaaSamples": 2.5})")
                                        << QStringLiteral("view.msaaSamples: expected an integer, got 2.5");
+        QTest::newRow("ocio view without display")
+            << minimalWith(R"("view": {"ocioView": "Raw"})")
+            << QStringLiteral("view.ocioDisplay: must be set when ocioView is (\"Raw\")");
+        QTest::newRow("ocio display without view")
+            << minimalWith(R"("view": {"ocioDisplay": "sRGB - Display"})")
+            << QStringLiteral("view.ocioView: must be set when ocioDisplay is (\"sRGB - Display\")");
         QTest::newRow("negative environment")
             << minimalWith(R"("environment": {"intensity": -1})") << QStringLiteral("environment.intensity");
         QTest::newRow("unknown quality") << minimalWith(R"("environment": {"quality": "ultra"})")
