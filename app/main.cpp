@@ -8,10 +8,12 @@
 #include "WindowScreenshot.h"
 
 #include "ui/MainWindow.h"
+#include "ui/ProjectFileController.h"
 #include "ui/SurfaceFormat.h"
 #include "ui/ViewportWidget.h"
 
 #include <QApplication>
+#include <QTimer>
 
 #include <cstdio>
 #include <optional>
@@ -52,17 +54,18 @@ int runGui(int& argc, char** argv, const facet::CommandLine& commandLine)
 
     facet::MainWindow window;
     if (!commandLine.projectPath.isEmpty()) {
-        // No fake loading: say plainly that the file was not opened.
-        const QString message
-            = QStringLiteral("Opening projects is not available in this version; '%1' was not loaded.")
-                  .arg(commandLine.projectPath);
-        std::fprintf(stderr, "facet: %s\n", qPrintable(message));
-        window.showStatusMessage(message);
+        // A project that cannot be opened leaves the default project up and says why (status bar
+        // and a message box), and on stderr for whoever started facet from a shell.
+        if (!window.projectFiles()->openFile(commandLine.projectPath))
+            std::fprintf(stderr, "facet: %s\n", qPrintable(window.projectFiles()->lastError()));
     }
     std::optional<facet::WindowScreenshot> screenshot;
     if (!commandLine.screenshotPath.isEmpty())
         screenshot.emplace(&window, window.viewport(), commandLine.screenshotPath);
     window.show();
+    // Work lost in a crash is offered back, but not to a scripted screenshot run.
+    if (!screenshot)
+        QTimer::singleShot(0, &window, &facet::MainWindow::offerRecovery);
     return QApplication::exec();
 }
 

@@ -1,49 +1,94 @@
 #include "ui/MainWindow.h"
 
+#include "core/MaterialPresets.h"
+#include "ui/AutosaveController.h"
+#include "ui/CameraController.h"
+#include "ui/Document.h"
+#include "ui/EnvironmentDock.h"
+#include "ui/LightsDock.h"
+#include "ui/MaterialDock.h"
+#include "ui/ProjectFileController.h"
+#include "ui/SceneController.h"
+#include "ui/TextureMapsDock.h"
+#include "ui/ViewDock.h"
 #include "ui/ViewportWidget.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
+#include <QCloseEvent>
 #include <QDebug>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileInfo>
 #include <QKeySequence>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QSettings>
 #include <QStatusBar>
+#include <QUndoStack>
 
 namespace facet {
 
-MainWindow::MainWindow(QWidget* parent)
+namespace {
+
+const QLatin1String kGeometryKey("window/geometry");
+const QLatin1String kLayoutKey("window/layout");
+constexpr int kLayoutVersion = 1;
+constexpr int kPresetShortcuts = 9; // keys 1..9
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     : QMainWindow(parent)
+    , m_document(new Document(this))
+    , m_scene(new SceneController(m_document, this))
     , m_viewport(new ViewportWidget(this))
+    , m_camera(new CameraController(m_document, m_scene, m_viewport, this))
+    , m_files(new ProjectFileController(m_document, this, this))
+    , m_autosave(new AutosaveController(m_document, recoveryDirectory, this))
     , m_glStatusLabel(new QLabel(tr("Initialising OpenGL…"), this))
+    , m_frameStatsLabel(new QLabel(this))
 {
-    setWindowTitle(QStringLiteral("Facet"));
     setCentralWidget(m_viewport);
+    m_viewport->setSceneController(m_scene);
+    setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
     m_glStatusLabel->setObjectName(QStringLiteral("glStatusLabel"));
+    m_frameStatsLabel->setObjectName(QStringLiteral("frameStatsLabel"));
+    statusBar()->addPermanentWidget(m_frameStatsLabel);
     statusBar()->addPermanentWidget(m_glStatusLabel);
     createMenus();
+    createDocks();
+
     connect(m_viewport, &ViewportWidget::glInitialized, this, &MainWindow::onViewportGLInitialized);
+    connect(m_viewport, &ViewportWidget::frameRendered, this, &MainWindow::onFrameRendered);
+    connect(m_viewport, &ViewportWidget::iblPrecomputeStarting, this,
+        [this](const QString& name) { showStatusMessage(tr("Preparing the lighting of %1…").arg(name)); });
+    connect(m_viewport, &ViewportWidget::iblPrecomputeFinished, this, [this](const QString& name, double ms) {
+        showStatusMessage(ms > 0.0 ? tr("Lighting of %1 ready (%2 ms)").arg(name).arg(ms, 0, 'f', 0)
+                                   : tr("Lighting of %1 ready").arg(name));
+    });
+    connect(m_scene, &SceneController::message, this, &MainWindow::showStatusMessage);
+    connect(m_document, &Document::editRejected, this, &MainWindow::showStatusMessage);
+    connect(m_files, &ProjectFileController::statusMessage, this, &MainWindow::showStatusMessage);
+    connect(m_files, &ProjectFileController::errorReported, this, &MainWindow::showStatusMessage);
+    connect(m_autosave, &AutosaveController::failed, this, &MainWindow::showStatusMessage);
+    connect(m_document, &Document::modifiedChanged, this, &QWidget::setWindowModified);
+    connect(m_document, &Document::filePathChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &Document::missingFilesChanged, this,
+        [this](const QStringList& missing) { m_relinkAction->setEnabled(!missing.isEmpty()); });
+    updateTitle();
     resize(1200, 800);
 }
 
+MainWindow::~MainWindow() = default;
+
 void MainWindow::createMenus()
 {
-    QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
-    fileMenu->setObjectName(QStringLiteral("fileMenu"));
-    QAction* quitAction = fileMenu->addAction(tr("&Quit"), this, &QWidget::close);
-    quitAction->setObjectName(QStringLiteral("quitAction"));
-    quitAction->setShortcut(QKeySequence::Quit);
-    quitAction->setMenuRole(QAction::QuitRole);
-
-    QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
-    viewMenu->setObjectName(QStringLiteral("viewMenu"));
-    QAction* fullScreenAction = viewMenu->addAction(tr("&Full Screen"));
-    fullScreenAction->setObjectName(QStringLiteral("fullScreenAction"));
-    fullScreenAction->setCheckable(true);
-    fullScreenAction->setShortcut(QKeySequence::FullScreen);
-    connect(fullScreenAction, &QAction::toggled, this,
-        [this](bool fullScreen) { setWindowState(windowState().setFlag(Qt::WindowFullScreen, fullScreen)); });
+    createFileMenu();
+    createEditMenu();
+    createViewMenu();
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     helpMenu->setObjectName(QStringLiteral("helpMenu"));
@@ -54,9 +99,258 @@ void MainWindow::createMenus()
     aboutQtAction->setMenuRole(QAction::AboutQtRole);
 }
 
+void MainWindow::createFileMenu()
+{
+    QMenu* menu = menuBar()->addMenu(tr("&File"));
+    menu->setObjectName(QStringLiteral("fileMenu"));
+    const auto add = [this, menu](const QString& text, const char* name, QKeySequence keys, auto slot) {
+        QAction* action = menu->addAction(text, m_files, slot);
+        action->setObjectName(QLatin1String(name));
+        action->setShortcut(keys);
+        return action;
+    };
+    add(tr("&New"), "newAction", QKeySequence::New, &ProjectFileController::newProject);
+    add(tr("&Open…"), "openAction", QKeySequence::Open, &ProjectFileController::open);
+    m_recentMenu = menu->addMenu(tr("Open &Recent"));
+    m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
+    connect(m_files, &ProjectFileController::recentFilesChanged, this, &MainWindow::updateRecentFilesMenu);
+    updateRecentFilesMenu();
+    menu->addSeparator();
+    add(tr("&Save"), "saveAction", QKeySequence::Save, &ProjectFileController::save);
+    add(tr("Save &As…"), "saveAsAction", QKeySequence::SaveAs, &ProjectFileController::saveAs);
+    menu->addSeparator();
+    m_relinkAction = add(tr("Re&link Missing Files…"), "relinkAction", QKeySequence(),
+        &ProjectFileController::showMissingFilesDialog);
+    m_relinkAction->setEnabled(false);
+    menu->addSeparator();
+    QAction* quitAction = menu->addAction(tr("&Quit"), this, &QWidget::close);
+    quitAction->setObjectName(QStringLiteral("quitAction"));
+    quitAction->setShortcut(QKeySequence::Quit);
+    quitAction->setMenuRole(QAction::QuitRole);
+}
+
+void MainWindow::createEditMenu()
+{
+    QMenu* menu = menuBar()->addMenu(tr("&Edit"));
+    menu->setObjectName(QStringLiteral("editMenu"));
+    QAction* undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("undoAction"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("redoAction"));
+    redo->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    menu->addAction(undo);
+    menu->addAction(redo);
+    menu->addSeparator();
+    QMenu* presets = menu->addMenu(tr("Apply &Preset"));
+    presets->setObjectName(QStringLiteral("presetMenu"));
+    int index = 0;
+    for (const MaterialPreset& preset : builtinPresets()) {
+        QAction* action = presets->addAction(QString::fromStdString(preset.displayName));
+        action->setObjectName(QStringLiteral("presetAction_%1").arg(QString::fromStdString(preset.id)));
+        if (index < kPresetShortcuts)
+            action->setShortcut(QKeySequence(Qt::Key_1 + index));
+        connect(
+            action, &QAction::triggered, m_document, [this, &preset] { m_document->applyPreset(preset); });
+        ++index;
+    }
+}
+
+void MainWindow::createViewMenu()
+{
+    QMenu* menu = menuBar()->addMenu(tr("&View"));
+    menu->setObjectName(QStringLiteral("viewMenu"));
+    QAction* frame = menu->addAction(tr("&Frame Object"), m_camera, &CameraController::frameObject);
+    frame->setObjectName(QStringLiteral("frameAction"));
+    frame->setShortcut(Qt::Key_F);
+    QAction* reset = menu->addAction(tr("&Reset Camera"), m_camera, &CameraController::resetView);
+    reset->setObjectName(QStringLiteral("resetCameraAction"));
+    reset->setShortcut(Qt::Key_Home);
+    QAction* fly = menu->addAction(tr("F&ly Mode (WASD)"));
+    fly->setObjectName(QStringLiteral("flyModeAction"));
+    fly->setCheckable(true);
+    fly->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F));
+    connect(fly, &QAction::toggled, m_camera, &CameraController::setFlyMode);
+    connect(m_camera, &CameraController::flyModeChanged, fly, &QAction::setChecked);
+
+    menu->addSeparator();
+    QAction* turntable = menu->addAction(tr("&Turntable"));
+    turntable->setObjectName(QStringLiteral("turntableAction"));
+    turntable->setCheckable(true);
+    turntable->setShortcut(Qt::Key_T);
+    connect(turntable, &QAction::toggled, m_camera, &CameraController::setTurntableRunning);
+    connect(m_camera, &CameraController::turntableRunningChanged, turntable, &QAction::setChecked);
+    QMenu* spins = menu->addMenu(tr("Turntable &Spins"));
+    auto* group = new QActionGroup(spins);
+    const auto addSpin
+        = [&](const QString& text, const char* name, CameraController::TurntableTarget target) {
+              QAction* action = spins->addAction(text);
+              action->setObjectName(QLatin1String(name));
+              action->setCheckable(true);
+              action->setChecked(m_camera->turntableTarget() == target);
+              group->addAction(action);
+              connect(action, &QAction::triggered, m_camera,
+                  [this, target] { m_camera->setTurntableTarget(target); });
+          };
+    addSpin(tr("the &Object"), "turntableObjectAction", CameraController::TurntableTarget::Object);
+    addSpin(
+        tr("the &Environment"), "turntableEnvironmentAction", CameraController::TurntableTarget::Environment);
+
+    menu->addSeparator();
+    m_panelsMenu = menu->addMenu(tr("&Panels"));
+    m_panelsMenu->setObjectName(QStringLiteral("panelsMenu"));
+    QAction* resetLayoutAction = menu->addAction(tr("Reset &Layout"), this, &MainWindow::resetLayout);
+    resetLayoutAction->setObjectName(QStringLiteral("resetLayoutAction"));
+    QAction* fullScreenAction = menu->addAction(tr("F&ull Screen"));
+    fullScreenAction->setObjectName(QStringLiteral("fullScreenAction"));
+    fullScreenAction->setCheckable(true);
+    fullScreenAction->setShortcut(QKeySequence::FullScreen);
+    connect(fullScreenAction, &QAction::toggled, this,
+        [this](bool fullScreen) { setWindowState(windowState().setFlag(Qt::WindowFullScreen, fullScreen)); });
+}
+
+void MainWindow::createDocks()
+{
+    // Before show(): the saved layout (QSettings) is restored onto these in showEvent().
+    m_textureMapsDock = new TextureMapsDock(m_document, this);
+    m_materialDock = new MaterialDock(m_document, this);
+    m_environmentDock = new EnvironmentDock(m_document, this);
+    m_lightsDock = new LightsDock(m_document, this);
+    m_viewDock = new ViewDock(m_document, this);
+    // Left: the material (maps, BRDF and presets); right: the scene (environment, lights, view).
+    // Tabbed, so the viewport keeps most of the window.
+    addDock(m_textureMapsDock, Qt::LeftDockWidgetArea);
+    addDock(m_materialDock, Qt::LeftDockWidgetArea);
+    tabifyDockWidget(m_textureMapsDock, m_materialDock);
+    addDock(m_environmentDock, Qt::RightDockWidgetArea);
+    addDock(m_lightsDock, Qt::RightDockWidgetArea);
+    addDock(m_viewDock, Qt::RightDockWidgetArea);
+    tabifyDockWidget(m_environmentDock, m_lightsDock);
+    tabifyDockWidget(m_lightsDock, m_viewDock);
+    m_textureMapsDock->raise();
+    m_environmentDock->raise();
+    resizeDocks({m_textureMapsDock, m_environmentDock}, {300, 290}, Qt::Horizontal);
+
+    connect(m_textureMapsDock, &TextureMapsDock::message, this, &MainWindow::showStatusMessage);
+    connect(m_materialDock, &MaterialDock::message, this, &MainWindow::showStatusMessage);
+    connect(m_environmentDock, &EnvironmentDock::message, this, &MainWindow::showStatusMessage);
+    connect(m_lightsDock, &LightsDock::message, this, &MainWindow::showStatusMessage);
+    connect(m_viewDock, &ViewDock::message, this, &MainWindow::showStatusMessage);
+    connect(m_viewDock, &ViewDock::resetCameraRequested, m_camera, &CameraController::resetView);
+    connect(m_viewport, &ViewportWidget::iblPrecomputeStarting, m_environmentDock,
+        &EnvironmentDock::showPrecomputeStarting);
+    connect(m_viewport, &ViewportWidget::iblPrecomputeFinished, m_environmentDock,
+        &EnvironmentDock::showPrecomputeFinished);
+    connect(m_viewport, &ViewportWidget::glInitialized, m_viewDock,
+        [this] { m_viewDock->showGLInfo(m_viewport->glInfo()); });
+    connect(m_viewport, &ViewportWidget::frameRendered, m_viewDock,
+        [this] { m_viewDock->showFrameStats(m_viewport->lastFrameStats()); });
+}
+
+void MainWindow::updateRecentFilesMenu()
+{
+    m_recentMenu->clear();
+    const QStringList files = m_files->recentFiles();
+    for (const QString& file : files) {
+        QAction* action = m_recentMenu->addAction(QDir::toNativeSeparators(file));
+        connect(action, &QAction::triggered, m_files, [this, file] { m_files->openFile(file); });
+    }
+    if (!files.isEmpty())
+        m_recentMenu->addSeparator();
+    QAction* clear
+        = m_recentMenu->addAction(tr("&Clear Menu"), m_files, &ProjectFileController::clearRecentFiles);
+    clear->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::addDock(QDockWidget* dock, Qt::DockWidgetArea area)
+{
+    Q_ASSERT_X(
+        !dock->objectName().isEmpty(), "MainWindow::addDock", "docks need an objectName for the layout");
+    dock->setFeatures(
+        QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable | QDockWidget::DockWidgetClosable);
+    dock->setParent(this);
+    addDockWidget(area, dock);
+    m_panelsMenu->addAction(dock->toggleViewAction());
+}
+
+void MainWindow::resetLayout()
+{
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+        dock->setFloating(false);
+        dock->show();
+    }
+    if (!m_defaultLayout.isEmpty())
+        restoreState(m_defaultLayout, kLayoutVersion);
+    QSettings().remove(kLayoutKey);
+}
+
+void MainWindow::showEvent(QShowEvent* event)
+{
+    QMainWindow::showEvent(event);
+    if (m_layoutRestored)
+        return;
+    // The layout addDock() built is the default; the user's saved one replaces it.
+    m_layoutRestored = true;
+    m_defaultLayout = saveState(kLayoutVersion);
+    QSettings settings;
+    restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    restoreState(settings.value(kLayoutKey).toByteArray(), kLayoutVersion);
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (!m_files->maybeSave()) {
+        event->ignore();
+        return;
+    }
+    QSettings settings;
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kLayoutKey, saveState(kLayoutVersion));
+    m_camera->setTurntableRunning(false);
+    event->accept();
+}
+
+void MainWindow::offerRecovery()
+{
+    for (const QString& file : m_autosave->orphanedRecoveryFiles()) {
+        const QString original = Document::recoveryOriginalPath(file);
+        const QString name
+            = original.isEmpty() ? tr("an untitled project") : QDir::toNativeSeparators(original);
+        const QString when = QFileInfo(file).lastModified().toString(Qt::TextDate);
+        const auto answer = QMessageBox::question(this, tr("Recover Unsaved Work"),
+            tr("Facet did not close normally. Recover the unsaved changes to %1 (autosaved %2)?")
+                .arg(name, when),
+            QMessageBox::Yes | QMessageBox::Discard | QMessageBox::Ignore, QMessageBox::Yes);
+        if (answer == QMessageBox::Ignore)
+            continue; // keep the file for the next start
+        if (answer == QMessageBox::Yes) {
+            QString error;
+            if (!m_document->recover(file, &error)) {
+                showStatusMessage(tr("Could not recover %1: %2").arg(file, error));
+                continue;
+            }
+            showStatusMessage(tr("Recovered unsaved changes to %1; save to keep them").arg(name));
+        }
+        AutosaveController::discard(file);
+        if (answer == QMessageBox::Yes)
+            break; // one document per window
+    }
+}
+
+void MainWindow::updateTitle()
+{
+    setWindowTitle(QStringLiteral("%1[*] — Facet").arg(m_document->displayName()));
+    setWindowModified(m_document->isModified());
+}
+
 void MainWindow::showStatusMessage(const QString& message)
 {
     statusBar()->showMessage(message);
+}
+
+QString MainWindow::statusMessage() const
+{
+    return statusBar()->currentMessage();
 }
 
 QString MainWindow::aboutText() const
@@ -92,6 +386,16 @@ void MainWindow::onViewportGLInitialized()
     const QString problem = summary + QStringLiteral(" — ") + m_viewport->glProblem();
     m_glStatusLabel->setText(problem);
     qWarning().noquote() << "facet:" << problem;
+}
+
+void MainWindow::onFrameRendered()
+{
+    if (!m_viewport->lastError().isEmpty()) {
+        m_frameStatsLabel->setText(tr("frame failed"));
+        showStatusMessage(m_viewport->lastError());
+        return;
+    }
+    m_frameStatsLabel->setText(m_viewport->lastFrameStats().summary());
 }
 
 } // namespace facet

@@ -1,33 +1,101 @@
 #pragma once
-// Facet's main window. It wires: menus, the central viewport, the status bar. Panels and their
-// controllers get their own classes and are only connected here.
+// Facet's main window. It wires and does little else: the Document (model and undo stack), the
+// SceneController and the central ViewportWidget (the view), the CameraController (input), the
+// ProjectFileController (File menu) and the AutosaveController (recovery); menus, the status bar,
+// the dock layout and its QSettings. Panels are QDockWidgets made by their own controllers and
+// plugged in with addDock(); they edit the document() and never the renderer.
 
+#include <QByteArray>
 #include <QMainWindow>
 
+class QAction;
+class QDockWidget;
 class QLabel;
+class QMenu;
 
 namespace facet {
 
+class AutosaveController;
+class CameraController;
+class Document;
+class EnvironmentDock;
+class LightsDock;
+class MaterialDock;
+class ProjectFileController;
+class SceneController;
+class TextureMapsDock;
+class ViewDock;
 class ViewportWidget;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
-    explicit MainWindow(QWidget* parent = nullptr);
+    // `recoveryDirectory` empty: AutosaveController::defaultDirectory().
+    explicit MainWindow(QWidget* parent = nullptr, const QString& recoveryDirectory = {});
+    ~MainWindow() override;
 
+    Document* document() const { return m_document; }
+    SceneController* sceneController() const { return m_scene; }
     ViewportWidget* viewport() const { return m_viewport; }
+    CameraController* cameraController() const { return m_camera; }
+    ProjectFileController* projectFiles() const { return m_files; }
+    AutosaveController* autosave() const { return m_autosave; }
+    TextureMapsDock* textureMapsDock() const { return m_textureMapsDock; }
+    MaterialDock* materialDock() const { return m_materialDock; }
+    EnvironmentDock* environmentDock() const { return m_environmentDock; }
+    LightsDock* lightsDock() const { return m_lightsDock; }
+    ViewDock* viewDock() const { return m_viewDock; }
+
+    // Adds a panel: docked in `area`, movable, floatable, closable, tabbable; its toggle goes
+    // into View > Panels. The dock needs a unique objectName (the saved layout refers to it).
+    // Add docks before the window is first shown so that the saved layout applies to them.
+    void addDock(QDockWidget* dock, Qt::DockWidgetArea area = Qt::RightDockWidgetArea);
+    // View > Reset Layout: every panel back where addDock put it, visible, docked.
+    void resetLayout();
+
     // Shows a message in the status bar until the next one (e.g. a warning from the command line).
     void showStatusMessage(const QString& message);
+    QString statusMessage() const;
     // The About box's text: version, Qt, and the viewport's OpenGL (once initialised).
     QString aboutText() const;
+    // Asks whether to recover the work of a session that crashed (one question per recovery
+    // file, newest first); main() calls it once the window is shown.
+    void offerRecovery();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
 private:
     void createMenus();
+    void createFileMenu();
+    void createEditMenu();
+    void createViewMenu();
+    void createDocks();
+    void updateRecentFilesMenu();
+    void updateTitle();
     void showAbout();
     void onViewportGLInitialized();
+    void onFrameRendered();
 
+    Document* m_document = nullptr;
+    SceneController* m_scene = nullptr;
     ViewportWidget* m_viewport = nullptr;
+    CameraController* m_camera = nullptr;
+    ProjectFileController* m_files = nullptr;
+    AutosaveController* m_autosave = nullptr;
+    TextureMapsDock* m_textureMapsDock = nullptr;
+    MaterialDock* m_materialDock = nullptr;
+    EnvironmentDock* m_environmentDock = nullptr;
+    LightsDock* m_lightsDock = nullptr;
+    ViewDock* m_viewDock = nullptr;
     QLabel* m_glStatusLabel = nullptr;
+    QLabel* m_frameStatsLabel = nullptr;
+    QMenu* m_recentMenu = nullptr;
+    QMenu* m_panelsMenu = nullptr;
+    QAction* m_relinkAction = nullptr;
+    QByteArray m_defaultLayout;
+    bool m_layoutRestored = false;
 };
 
 } // namespace facet

@@ -1,5 +1,7 @@
 #include "ui/ViewportWidget.h"
 
+#include "ui/SceneController.h"
+
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 
@@ -10,11 +12,66 @@ ViewportWidget::ViewportWidget(QWidget* parent)
 {
     setObjectName(QStringLiteral("viewport"));
     setMinimumSize(160, 120);
+    setFocusPolicy(Qt::StrongFocus); // WASD and the camera keys
+    m_refineTimer.setSingleShot(true);
+    m_refineTimer.setInterval(kRefineDelayMs);
+    connect(&m_refineTimer, &QTimer::timeout, this, [this] {
+        m_previewing = false;
+        update();
+    });
+}
+
+ViewportWidget::~ViewportWidget()
+{
+    releaseRenderer();
+}
+
+void ViewportWidget::releaseRenderer()
+{
+    if (!m_renderer)
+        return;
+    makeCurrent();
+    m_renderer.reset();
+    doneCurrent();
 }
 
 QSize ViewportWidget::sizeHint() const
 {
     return {960, 640};
+}
+
+void ViewportWidget::setSceneController(SceneController* scene)
+{
+    if (m_scene)
+        disconnect(m_scene, nullptr, this, nullptr);
+    m_scene = scene;
+    if (m_scene)
+        connect(m_scene, &SceneController::sceneChanged, this, &ViewportWidget::onSceneChanged);
+    requestFrame();
+}
+
+void ViewportWidget::onSceneChanged(bool interactive)
+{
+    if (interactive)
+        markInteractive();
+    else
+        requestFrame();
+}
+
+void ViewportWidget::markInteractive()
+{
+    m_previewing = true;
+    m_refineTimer.start();
+    requestFrame();
+}
+
+void ViewportWidget::requestFrame()
+{
+    if (m_scene && m_renderer && !m_announcedIbl && m_renderer->needsIbl(*m_scene)) {
+        m_announcedIbl = true;
+        Q_EMIT iblPrecomputeStarting(m_scene->environmentName());
+    }
+    update();
 }
 
 void ViewportWidget::initializeGL()
@@ -27,14 +84,39 @@ void ViewportWidget::initializeGL()
     else if (!m_glInfo.atLeast(4, 1) || !m_glInfo.coreProfile)
         m_glProblem = m_glInfo.coreProfile ? tr("Facet needs OpenGL 4.1 core")
                                            : tr("Facet needs OpenGL 4.1 core, not a compatibility profile");
+    // A context can be replaced (re-parenting, a dock torn off): drop the renderer with the old one.
+    m_renderer.reset();
+    if (m_glProblem.isEmpty())
+        m_renderer = std::make_unique<ViewportRenderer>();
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseRenderer,
+        Qt::UniqueConnection);
     Q_EMIT glInitialized();
+    if (m_scene && m_renderer && m_renderer->needsIbl(*m_scene)) {
+        m_announcedIbl = true;
+        Q_EMIT iblPrecomputeStarting(m_scene->environmentName());
+    }
 }
 
 void ViewportWidget::paintGL()
 {
-    QOpenGLFunctions* gl = context()->functions();
-    gl->glClearColor(kClearGrey, kClearGrey, kClearGrey, 1.0f);
-    gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!m_scene || !m_renderer) {
+        QOpenGLFunctions* gl = context()->functions();
+        gl->glClearColor(kClearGrey, kClearGrey, kClearGrey, 1.0f);
+        gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        return;
+    }
+    const bool precompute = m_renderer->needsIbl(*m_scene);
+    const qreal ratio = devicePixelRatioF();
+    std::string error;
+    const bool ok = m_renderer->paint(*m_scene, defaultFramebufferObject(), int(width() * ratio),
+        int(height() * ratio), m_previewing ? kPreviewScale : 1.0, &error);
+    m_stats = m_renderer->lastFrame();
+    m_lastError = ok ? QString() : QString::fromStdString(error);
+    if (precompute) {
+        m_announcedIbl = false;
+        Q_EMIT iblPrecomputeFinished(m_scene->environmentName(), m_stats.iblMs);
+    }
+    Q_EMIT frameRendered();
 }
 
 } // namespace facet

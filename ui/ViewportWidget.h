@@ -1,45 +1,93 @@
 #pragma once
-// The 3D view. It presents frames and nothing else: the renderer (render/) draws a snapshot of
-// the document into its own framebuffer, and this widget shows it. Until the renderer lands it
-// shows the empty viewport, a flat dark grey.
+// The 3D view. It presents frames and nothing else: SceneController (the CPU side) keeps the
+// document's scene and its loaded assets, ViewportRenderer (the GPU side, in this widget's
+// context) draws them, and this widget asks for a frame when the scene changed and shows it.
+// Camera input is handled by CameraController through an event filter.
+//
+// Render on demand: paintGL() runs only after update() (a scene change, a resize, an expose),
+// never on a timer; an idle window draws nothing. While something is being dragged
+// (markInteractive()) frames are drawn at kPreviewScale of the resolution, and one full frame
+// follows kRefineDelayMs after the last interactive change.
 
 #include "render/GLInfo.h"
+#include "ui/ViewportRenderer.h"
 
 #include <QOpenGLWidget>
 #include <QString>
+#include <QTimer>
+
+#include <cstdint>
+#include <memory>
 
 namespace facet {
+
+class SceneController;
 
 class ViewportWidget : public QOpenGLWidget {
     Q_OBJECT
 public:
-    // The empty viewport's colour, the same in R, G and B (46/255 once in an 8-bit window).
+    // The empty viewport's colour (no scene, or a frame that failed), the same in R, G and B.
     static constexpr float kClearGrey = 0.18f;
+    // Resolution scale of interactive frames: a quarter of the pixels (llvmpipe: ~30 ms at 720p
+    // instead of ~110 ms).
+    static constexpr double kPreviewScale = 0.5;
+    // How long after the last interactive change the full-resolution frame is drawn.
+    static constexpr int kRefineDelayMs = 250;
 
     explicit ViewportWidget(QWidget* parent = nullptr);
+    ~ViewportWidget() override;
+
+    // The scene to draw; the widget redraws when it changes. Without one it shows kClearGrey.
+    void setSceneController(SceneController* scene);
+    SceneController* sceneController() const { return m_scene; }
 
     // What the widget's context is; valid once glInitialized() was emitted.
     const GLInfo& glInfo() const { return m_glInfo; }
     // Why the context is not good enough for Facet (below 4.1 core); empty when it is.
     const QString& glProblem() const { return m_glProblem; }
 
+    // Frames drawn with the renderer since the context was made (the idle test counts them).
+    std::uint64_t frameCount() const { return m_stats.frameNumber; }
+    const ViewportFrameStats& lastFrameStats() const { return m_stats; }
+    // Why the last frame failed; empty after a good frame.
+    const QString& lastError() const { return m_lastError; }
+
+    // An interaction is under way (camera drag, slider drag, turntable): draw the coming frames
+    // at kPreviewScale and refine kRefineDelayMs after the last call. Also requests a frame.
+    void markInteractive();
+    bool isPreviewing() const { return m_previewing; }
+
     QSize sizeHint() const override;
 
 Q_SIGNALS:
     // The context exists and glInfo() describes it (emitted from initializeGL, context current).
     void glInitialized();
+    // A frame was drawn (stats in lastFrameStats()), or failed (lastError() says why).
+    void frameRendered();
+    // The next frame runs the IBL precompute for `environmentName` (a few hundred ms on llvmpipe
+    // the first time; the disk cache makes the next start fast).
+    void iblPrecomputeStarting(const QString& environmentName);
+    // The precompute finished in `milliseconds` (0: it came from the cache).
+    void iblPrecomputeFinished(const QString& environmentName, double milliseconds);
 
 protected:
     void initializeGL() override;
     void paintGL() override;
 
 private:
-    // Seam for the renderer: a later setFrameSource(...) gives this widget an object that renders
-    // the current document snapshot into a render/Framebuffer on request; paintGL() then only
-    // blits that framebuffer into defaultFramebufferObject(). Rendering stays on demand: the
-    // widget calls update() when the document changes, never on a timer.
+    void onSceneChanged(bool interactive);
+    void requestFrame();
+    void releaseRenderer();
+
+    SceneController* m_scene = nullptr;
+    std::unique_ptr<ViewportRenderer> m_renderer;
+    ViewportFrameStats m_stats;
     GLInfo m_glInfo;
     QString m_glProblem;
+    QString m_lastError;
+    QTimer m_refineTimer;
+    bool m_previewing = false;
+    bool m_announcedIbl = false;
 };
 
 } // namespace facet

@@ -1,0 +1,530 @@
+// The five dock panels driven through their widgets, in the main window under Xvfb: a roughness
+// slider drag is one undo step that re-renders and undoes back into the control; an image dropped
+// on a map slot becomes its texture (and a non-image is refused with a message); a folder of maps
+// is assigned by name in one step with a message saying what went where; the environment library
+// switches the environment and relights; lights are added, edited and removed through the Lights
+// dock; the View dock changes exposure and the debug view; presets are saved, applied, deleted.
+
+#include "core/MaterialPresets.h"
+#include "render/ShaderVariant.h"
+#include "ui/Document.h"
+#include "ui/EnvironmentDock.h"
+#include "ui/LightsDock.h"
+#include "ui/MainWindow.h"
+#include "ui/MapNaming.h"
+#include "ui/MapSlotWidget.h"
+#include "ui/MaterialDock.h"
+#include "ui/SceneController.h"
+#include "ui/SurfaceFormat.h"
+#include "ui/TextureMapsDock.h"
+#include "ui/UserPresets.h"
+#include "ui/ValueSlider.h"
+#include "ui/ViewDock.h"
+#include "ui/ViewportWidget.h"
+
+#include "TestSupport.h"
+
+#include <QAbstractItemView>
+#include <QAction>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QImage>
+#include <QLabel>
+#include <QListWidget>
+#include <QMimeData>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QStyleOptionSlider>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QUrl>
+#include <QtTest/QTest>
+
+#include <memory>
+
+using namespace facet;
+
+namespace {
+
+// Waits (processing events) until `done` holds.
+template <typename Predicate> bool waitFor(Predicate done, int timeoutMs = 30000)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (!done()) {
+        if (clock.elapsed() > timeoutMs)
+            return false;
+        QTest::qWait(20);
+    }
+    return true;
+}
+
+// Where the slider's handle is, from the style (what a user would grab).
+QPoint handleCentre(QSlider* slider)
+{
+    QStyleOptionSlider option;
+    option.initFrom(slider);
+    option.orientation = slider->orientation();
+    option.minimum = slider->minimum();
+    option.maximum = slider->maximum();
+    option.sliderPosition = slider->sliderPosition();
+    option.sliderValue = slider->value();
+    option.singleStep = slider->singleStep();
+    option.pageStep = slider->pageStep();
+    option.upsideDown = slider->invertedAppearance();
+    option.subControls = QStyle::SC_All;
+    return slider->style()
+        ->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider)
+        .center();
+}
+
+// A user's drag: press on the handle, several moves, release.
+void dragSlider(QSlider* slider, int deltaX)
+{
+    const QPoint start = handleCentre(slider);
+    QTest::mousePress(slider, Qt::LeftButton, Qt::NoModifier, start);
+    constexpr int kMoves = 6;
+    for (int i = 1; i <= kMoves; ++i)
+        QTest::mouseMove(slider, start + QPoint(deltaX * i / kMoves, 0), 10);
+    QTest::mouseRelease(slider, Qt::LeftButton, Qt::NoModifier, start + QPoint(deltaX, 0), 10);
+}
+
+// Drags `urls` onto `target` and drops them there, as the desktop would.
+bool dropUrls(QWidget* target, const QList<QUrl>& urls)
+{
+    QMimeData mime;
+    mime.setUrls(urls);
+    const QPoint pos = target->rect().center();
+    QDragEnterEvent enter(pos, Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(target, &enter);
+    if (!enter.isAccepted())
+        return false;
+    QDropEvent drop(QPointF(pos), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(target, &drop);
+    return drop.isAccepted();
+}
+
+bool writePng(const QString& path, QColor color, QSize size = QSize(8, 8))
+{
+    QImage image(size, QImage::Format_RGB32);
+    image.fill(color);
+    return image.save(path);
+}
+
+// Picks `text` in a combo box through its popup, as a user does.
+bool chooseInCombo(QComboBox* combo, const QString& text)
+{
+    const int index = combo->findText(text);
+    if (index < 0)
+        return false;
+    combo->showPopup();
+    QAbstractItemView* view = combo->view();
+    if (!QTest::qWaitForWindowExposed(view->window()))
+        return false;
+    const QModelIndex modelIndex = view->model()->index(index, combo->modelColumn(), view->rootIndex());
+    view->scrollTo(modelIndex);
+    const QPoint centre = view->visualRect(modelIndex).center();
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, Qt::NoModifier, centre);
+    return waitFor([&] { return !view->isVisible(); }, 2000) && combo->currentIndex() == index;
+}
+
+} // namespace
+
+class DocksUiTest : public QObject {
+    Q_OBJECT
+public:
+    static void initMain()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        installViewportSurfaceFormat();
+    }
+
+private Q_SLOTS:
+    void initTestCase();
+    void cleanupTestCase();
+    void mapNaming_data();
+    void mapNaming();
+    void roughnessDragIsOneUndoStep();
+    void dropImageOnSlot();
+    void dropNonImageIsRefused();
+    void dropFolderAssignsByName();
+    void environmentLibrarySwitches();
+    void lightsAddEditRemove();
+    void viewDockExposureAndDebugView();
+    void presetsSaveApplyDelete();
+
+private:
+    QTemporaryDir m_dir;
+    std::unique_ptr<MainWindow> m_window;
+    Document* m_document = nullptr;
+    ViewportWidget* m_viewport = nullptr;
+};
+
+void DocksUiTest::initTestCase()
+{
+    QCoreApplication::setOrganizationName(QStringLiteral("FacetTests"));
+    QVERIFY(m_dir.isValid());
+    m_window = std::make_unique<MainWindow>(nullptr, m_dir.filePath(QStringLiteral("recovery")));
+    m_document = m_window->document();
+    m_viewport = m_window->viewport();
+    QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_window->resetLayout(); // another test's saved layout must not hide a dock
+    QVERIFY(rendered.count() > 0 || rendered.wait(60000));
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    for (QDockWidget* dock : m_window->findChildren<QDockWidget*>())
+        QVERIFY2(!dock->objectName().isEmpty(), qPrintable(dock->windowTitle()));
+}
+
+void DocksUiTest::cleanupTestCase()
+{
+    m_document->newProject(); // nothing to ask about on close
+    m_window.reset();
+}
+
+void DocksUiTest::mapNaming_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<int>("slot"); // -1: no map
+    QTest::addColumn<bool>("flipGreen");
+    QTest::newRow("basecolor") << "wood_basecolor.png" << int(MapSlot::BaseColor) << false;
+    QTest::newRow("albedo") << "Wood-Albedo.jpg" << int(MapSlot::BaseColor) << false;
+    QTest::newRow("diffuse") << "wood_diffuse.tga" << int(MapSlot::BaseColor) << false;
+    QTest::newRow("normal") << "wood_normal.png" << int(MapSlot::Normal) << false;
+    QTest::newRow("nrm") << "wood_NRM.png" << int(MapSlot::Normal) << false;
+    QTest::newRow("normal dx") << "wood_normal_dx.png" << int(MapSlot::Normal) << true;
+    QTest::newRow("metalness") << "wood_metalness.png" << int(MapSlot::Metallic) << false;
+    QTest::newRow("rough") << "wood_rough.exr" << int(MapSlot::Roughness) << false;
+    QTest::newRow("ao") << "wood_ao.png" << int(MapSlot::Occlusion) << false;
+    QTest::newRow("occlusion") << "wood occlusion.png" << int(MapSlot::Occlusion) << false;
+    QTest::newRow("no suffix") << "wood.png" << -1 << false;
+    QTest::newRow("suffix inside a word") << "woodao.png" << -1 << false;
+}
+
+void DocksUiTest::mapNaming()
+{
+    QFETCH(QString, file);
+    QFETCH(int, slot);
+    QFETCH(bool, flipGreen);
+    const MapNamingResult result = assignMapsByName({QStringLiteral("/textures/") + file});
+    if (slot < 0) {
+        QVERIFY(result.assignments.empty());
+        QCOMPARE(result.unmatched.size(), 1);
+        return;
+    }
+    QCOMPARE(result.assignments.size(), std::size_t(1));
+    QCOMPARE(int(result.assignments[0].slot), slot);
+    QCOMPARE(result.assignments[0].flipGreen, flipGreen);
+
+    // ORM: three slots from one file; a separate roughness file wins over its channel.
+    const MapNamingResult orm
+        = assignMapsByName({QStringLiteral("/t/metal_orm.png"), QStringLiteral("/t/metal_roughness.png")});
+    QCOMPARE(orm.assignments.size(), std::size_t(3));
+    for (const MapAssignment& a : orm.assignments) {
+        if (a.slot == MapSlot::Roughness)
+            QCOMPARE(a.path, QStringLiteral("/t/metal_roughness.png"));
+        else
+            QCOMPARE(a.channel, a.slot == MapSlot::Occlusion ? MapChannel::R : MapChannel::B);
+    }
+}
+
+void DocksUiTest::roughnessDragIsOneUndoStep()
+{
+    m_window->textureMapsDock()->raise();
+    auto* control = m_window->findChild<ValueSlider*>(QStringLiteral("factorSlider_roughness"));
+    QVERIFY(control);
+    QSlider* slider = control->slider();
+    const double before = m_document->project().material.roughness();
+    QCOMPARE(control->value(), before);
+    const int stepsBefore = m_document->undoStack()->index();
+    const SceneController::LoadCounts loadsBefore = m_window->sceneController()->loadCounts();
+    QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
+
+    dragSlider(slider, slider->width() / 4);
+
+    const double after = m_document->project().material.roughness();
+    QVERIFY2(after > before + 0.05, qPrintable(QStringLiteral("roughness %1 -> %2").arg(before).arg(after)));
+    QCOMPARE(control->value(), after);
+    QCOMPARE(control->spinBox()->value(), after);
+    QVERIFY(!m_document->interactiveEditOpen());
+    QCOMPARE(m_document->undoStack()->index(), stepsBefore + 1); // the whole drag: one step
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Roughness"));
+    QVERIFY(rendered.count() > 0 || rendered.wait(30000));
+    // A factor change reloads nothing.
+    QCOMPARE(m_window->sceneController()->loadCounts().maps, loadsBefore.maps);
+    QCOMPARE(m_window->sceneController()->loadCounts().environments, loadsBefore.environments);
+
+    // Undo through the Edit menu's action: the old value, in the document and in the control.
+    auto* undo = m_window->findChild<QAction*>(QStringLiteral("undoAction"));
+    QVERIFY(undo);
+    QCOMPARE(undo->text(), QStringLiteral("&Undo Roughness"));
+    rendered.clear();
+    undo->trigger();
+    QCOMPARE(m_document->project().material.roughness(), before);
+    QCOMPARE(control->value(), before);
+    QCOMPARE(control->spinBox()->value(), before);
+    QCOMPARE(slider->value(), int(std::lround(before * ValueSlider::kSteps)));
+    QVERIFY(rendered.count() > 0 || rendered.wait(30000));
+}
+
+void DocksUiTest::dropImageOnSlot()
+{
+    const QString file = m_dir.filePath(QStringLiteral("red.png"));
+    QVERIFY(writePng(file, QColor(200, 30, 30), QSize(16, 8)));
+    MapSlotWidget* slot = m_window->textureMapsDock()->slotWidget(MapSlot::BaseColor);
+    const int stepsBefore = m_document->undoStack()->index();
+    const int mapLoadsBefore = m_window->sceneController()->loadCounts().maps;
+    QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
+
+    QVERIFY(dropUrls(slot, {QUrl::fromLocalFile(file)}));
+
+    const MaterialMap& map = m_document->project().material.map(MapSlot::BaseColor);
+    QCOMPARE(QString::fromStdString(map.path), file);
+    QCOMPARE(map.colorSpace, ColorEncoding::SRGB);
+    QCOMPARE(m_document->undoStack()->index(), stepsBefore + 1);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Set Base Colour Map"));
+    QCOMPARE(m_window->sceneController()->loadCounts().maps, mapLoadsBefore + 1); // that map only
+    QVERIFY(rendered.count() > 0 || rendered.wait(30000));
+    // The slot shows the file, its resolution and a thumbnail (made off the GUI thread).
+    QVERIFY(waitFor([&] { return m_window->textureMapsDock()->pendingThumbnails() == 0; }));
+    QVERIFY2(
+        slot->fileLabel()->text().contains(QStringLiteral("red.png")), qPrintable(slot->fileLabel()->text()));
+    QVERIFY2(
+        slot->fileLabel()->text().contains(QStringLiteral("16×8")), qPrintable(slot->fileLabel()->text()));
+
+    // The file changes on disk: the watcher reloads that map (and nothing else).
+    const int loadsBeforeReload = m_window->sceneController()->loadCounts().maps;
+    QTest::qWait(1100); // file times have a resolution of a second on some file systems
+    QVERIFY(writePng(file, QColor(30, 200, 30), QSize(32, 8)));
+    QVERIFY(
+        waitFor([&] { return m_window->sceneController()->loadCounts().maps > loadsBeforeReload; }, 10000));
+    QVERIFY2(m_window->statusMessage().contains(QStringLiteral("Reloaded red.png")),
+        qPrintable(m_window->statusMessage()));
+    QVERIFY(waitFor([&] { return slot->fileLabel()->text().contains(QStringLiteral("32×8")); }, 10000));
+    QCOMPARE(m_document->undoStack()->index(), stepsBefore + 1); // a reload is not an edit
+
+    m_document->undoStack()->undo();
+    QVERIFY(!m_document->project().material.map(MapSlot::BaseColor).hasTexture());
+}
+
+void DocksUiTest::dropNonImageIsRefused()
+{
+    const QString file = m_dir.filePath(QStringLiteral("notes.txt"));
+    QFile text(file);
+    QVERIFY(text.open(QIODevice::WriteOnly));
+    text.write("not an image\n");
+    text.close();
+    const Project before = m_document->project();
+    const int stepsBefore = m_document->undoStack()->index();
+    QVERIFY(dropUrls(m_window->textureMapsDock()->slotWidget(MapSlot::Normal), {QUrl::fromLocalFile(file)}));
+    QCOMPARE(m_document->project(), before);
+    QCOMPARE(m_document->undoStack()->index(), stepsBefore);
+    const QString message = m_window->statusMessage();
+    QVERIFY2(
+        message.contains(QStringLiteral("notes.txt")) && message.contains(QStringLiteral("not an image")),
+        qPrintable(message));
+}
+
+void DocksUiTest::dropFolderAssignsByName()
+{
+    const QString folder = m_dir.filePath(QStringLiteral("wood"));
+    QVERIFY(QDir().mkpath(folder));
+    const QStringList names = {QStringLiteral("wood_basecolor.png"), QStringLiteral("wood_normal.png"),
+        QStringLiteral("wood_roughness.png"), QStringLiteral("wood_ao.png"),
+        QStringLiteral("wood_metallic.png")};
+    for (const QString& name : names)
+        QVERIFY(writePng(QDir(folder).filePath(name), QColor(128, 128, 255)));
+    QFile readme(QDir(folder).filePath(QStringLiteral("readme.txt")));
+    QVERIFY(readme.open(QIODevice::WriteOnly));
+    readme.close();
+    const Material before = m_document->project().material;
+    const int stepsBefore = m_document->undoStack()->index();
+    QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
+
+    QVERIFY(dropUrls(m_window->textureMapsDock(), {QUrl::fromLocalFile(folder)}));
+
+    const Material& material = m_document->project().material;
+    const auto pathOf = [&](MapSlot slot) { return QString::fromStdString(material.map(slot).path); };
+    QCOMPARE(pathOf(MapSlot::BaseColor), QDir(folder).filePath(QStringLiteral("wood_basecolor.png")));
+    QCOMPARE(pathOf(MapSlot::Normal), QDir(folder).filePath(QStringLiteral("wood_normal.png")));
+    QCOMPARE(pathOf(MapSlot::Roughness), QDir(folder).filePath(QStringLiteral("wood_roughness.png")));
+    QCOMPARE(pathOf(MapSlot::Occlusion), QDir(folder).filePath(QStringLiteral("wood_ao.png")));
+    QCOMPARE(pathOf(MapSlot::Metallic), QDir(folder).filePath(QStringLiteral("wood_metallic.png")));
+    QCOMPARE(material.map(MapSlot::Roughness).channel, MapChannel::R);
+    QCOMPARE(m_document->undoStack()->index(), stepsBefore + 1);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Assign Maps"));
+    const QString message = m_window->statusMessage();
+    QVERIFY2(message.startsWith(QStringLiteral("Assigned 5 maps")), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("Normal ← wood_normal.png")), qPrintable(message));
+    QVERIFY2(message.contains(QStringLiteral("readme.txt")), qPrintable(message));
+    QCOMPARE(m_window->textureMapsDock()->lastMessage(), message);
+    QVERIFY(rendered.count() > 0 || rendered.wait(30000));
+
+    m_document->undoStack()->undo(); // one step takes all five back
+    QCOMPARE(m_document->project().material, before);
+}
+
+void DocksUiTest::environmentLibrarySwitches()
+{
+    EnvironmentDock* dock = m_window->environmentDock();
+    dock->raise();
+    QListWidget* library = dock->library();
+    QVERIFY(waitFor([&] { return dock->pendingThumbnails() == 0; }, 120000));
+    qInfo("environment library: %d entries, thumbnails %.0f ms in all (one worker thread)", library->count(),
+        dock->thumbnailMilliseconds());
+    QListWidgetItem* sky = nullptr;
+    for (int row = 0; row < library->count(); ++row)
+        if (library->item(row)->data(Qt::UserRole).toString() == QStringLiteral("sky"))
+            sky = library->item(row);
+    QVERIFY(sky);
+    QVERIFY(!sky->icon().isNull());
+    QCOMPARE(m_document->project().environment.source, std::string("studio"));
+    const int environmentLoads = m_window->sceneController()->loadCounts().environments;
+    QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
+
+    library->scrollToItem(sky);
+    QTest::mouseClick(
+        library->viewport(), Qt::LeftButton, Qt::NoModifier, library->visualItemRect(sky).center());
+
+    QCOMPARE(m_document->project().environment.source, std::string("sky"));
+    QCOMPARE(m_window->sceneController()->loadCounts().environments, environmentLoads + 1);
+    QVERIFY(rendered.count() > 0 || rendered.wait(60000));
+    QVERIFY(waitFor([&] { return !m_viewport->lastFrameStats().reduced; }));
+
+    // Intensity in EV, stored linear.
+    auto* intensity = m_window->findChild<ValueSlider*>(QStringLiteral("environmentIntensitySlider"));
+    QVERIFY(intensity);
+    intensity->spinBox()->setValue(1.0); // what typing "1" + Enter does (keyboard tracking is off)
+    QCOMPARE(m_document->project().environment.intensity, 2.0);
+
+    m_document->undoStack()->undo();
+    m_document->undoStack()->undo();
+    QCOMPARE(m_document->project().environment.source, std::string("studio"));
+    QCOMPARE(library->currentItem()->data(Qt::UserRole).toString(), QStringLiteral("studio"));
+}
+
+void DocksUiTest::lightsAddEditRemove()
+{
+    LightsDock* dock = m_window->lightsDock();
+    dock->raise();
+    QVERIFY(m_document->project().lights.empty());
+    QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
+
+    dock->addLightAction(LightType::Spot)->trigger();
+    QCOMPARE(m_document->project().lights.size(), std::size_t(1));
+    QCOMPARE(m_document->project().lights[0].type, LightType::Spot);
+    QCOMPARE(dock->list()->count(), 1);
+    QCOMPARE(dock->currentLight(), 0);
+    QVERIFY(rendered.count() > 0 || rendered.wait(30000));
+
+    // Intensity: type 40 and Enter in the spin box (candela for a spot).
+    QDoubleSpinBox* spin = dock->intensitySlider()->spinBox();
+    QVERIFY2(spin->suffix().contains(QStringLiteral("cd")), qPrintable(spin->suffix()));
+    spin->selectAll();
+    QTest::keyClicks(spin, QStringLiteral("40"));
+    QTest::keyClick(spin, Qt::Key_Return);
+    QCOMPARE(m_document->project().lights[0].intensity, 40.0);
+    // The outer cone by dragging its slider: one step.
+    const int steps = m_document->undoStack()->index();
+    const double outerBefore = m_document->project().lights[0].outerConeAngle;
+    auto* outer = m_window->findChild<ValueSlider*>(QStringLiteral("lightOuterConeSlider"));
+    QVERIFY(outer);
+    dragSlider(outer->slider(), -outer->slider()->width() / 5);
+    const Light& edited = m_document->project().lights[0];
+    QVERIFY(edited.outerConeAngle < outerBefore);
+    QVERIFY(edited.innerConeAngle < edited.outerConeAngle);
+    QCOMPARE(m_document->undoStack()->index(), steps + 1);
+    // Disable through the list's check box.
+    dock->list()->item(0)->setCheckState(Qt::Unchecked);
+    QVERIFY(!m_document->project().lights[0].enabled);
+
+    // Duplicate, then remove the copy and the original.
+    QTest::mouseClick(
+        m_window->findChild<QPushButton*>(QStringLiteral("duplicateLightButton")), Qt::LeftButton);
+    QCOMPARE(m_document->project().lights.size(), std::size_t(2));
+    QTest::mouseClick(dock->removeButton(), Qt::LeftButton);
+    QTest::mouseClick(dock->removeButton(), Qt::LeftButton);
+    QVERIFY(m_document->project().lights.empty());
+    QCOMPARE(dock->list()->count(), 0);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Remove Light"));
+    m_document->undoStack()->undo();
+    QCOMPARE(m_document->project().lights.size(), std::size_t(1));
+    QCOMPARE(m_document->project().lights[0].intensity, 40.0);
+    QCOMPARE(dock->list()->count(), 1);
+    QCOMPARE(dock->intensitySlider()->value(), 40.0);
+}
+
+void DocksUiTest::viewDockExposureAndDebugView()
+{
+    ViewDock* dock = m_window->viewDock();
+    dock->raise();
+    QVERIFY(waitFor([&] { return !m_viewport->isPreviewing(); }));
+    QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
+    ValueSlider* exposure = dock->exposureSlider();
+    const double before = m_document->project().view.exposureEV;
+    const int steps = m_document->undoStack()->index();
+    dragSlider(exposure->slider(), exposure->slider()->width() / 6);
+    QVERIFY(m_document->project().view.exposureEV > before);
+    QCOMPARE(m_document->undoStack()->index(), steps + 1);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Exposure"));
+    QVERIFY(rendered.count() > 0 || rendered.wait(30000));
+
+    QVERIFY(chooseInCombo(dock->debugViewCombo(), QStringLiteral("roughness")));
+    QCOMPARE(m_document->project().view.debugView, std::string("roughness"));
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Debug View"));
+    rendered.clear();
+    QVERIFY(rendered.wait(30000));
+    QVERIFY2(m_viewport->lastError().isEmpty(), qPrintable(m_viewport->lastError()));
+    // Every renderer debug view is offered.
+    QCOMPARE(dock->debugViewCombo()->count(), kDebugViewCount);
+
+    // The statistics show the GL renderer and a frame time.
+    auto* glLabel = dock->findChild<QLabel*>(QStringLiteral("viewGlLabel"));
+    auto* frameLabel = dock->findChild<QLabel*>(QStringLiteral("viewFrameLabel"));
+    QVERIFY(glLabel->text().contains(QStringLiteral("OpenGL")));
+    QVERIFY2(frameLabel->text().contains(QStringLiteral("ms")), qPrintable(frameLabel->text()));
+
+    m_document->undoStack()->undo();
+    m_document->undoStack()->undo();
+    QCOMPARE(m_document->project().view.debugView, std::string("none"));
+    QCOMPARE(dock->debugViewCombo()->currentText(), QStringLiteral("none"));
+    QCOMPARE(exposure->value(), before);
+}
+
+void DocksUiTest::presetsSaveApplyDelete()
+{
+    MaterialDock* dock = m_window->materialDock();
+    dock->raise();
+    QListWidget* list = dock->presetList();
+    QCOMPARE(list->count(), int(builtinPresets().size()) + int(UserPresets::load(nullptr).size()));
+    QVERIFY(dock->saveCurrentAsPreset(QStringLiteral("My Plastic")));
+    const QString path = QDir(UserPresets::directory()).filePath(QStringLiteral("my-plastic.json"));
+    QVERIFY2(QFile::exists(path), qPrintable(path));
+    QVERIFY(list->currentItem() && list->currentItem()->text() == QStringLiteral("My Plastic (user)"));
+
+    const auto gold = list->findItems(QStringLiteral("Gold"), Qt::MatchExactly);
+    QCOMPARE(gold.size(), 1);
+    list->setCurrentItem(gold.first());
+    QTest::mouseClick(dock->findChild<QPushButton*>(QStringLiteral("applyPresetButton")), Qt::LeftButton);
+    QCOMPARE(m_document->project().material.name, std::string("Gold"));
+    QCOMPARE(m_document->project().material.metallic(), 1.0);
+    QVERIFY(!dock->findChild<QPushButton*>(QStringLiteral("deletePresetButton"))->isEnabled()); // built-in
+
+    list->setCurrentItem(list->findItems(QStringLiteral("My Plastic (user)"), Qt::MatchExactly).first());
+    QVERIFY(dock->applySelectedPreset());
+    QCOMPARE(m_document->project().material.name, std::string("My Plastic"));
+    QVERIFY(dock->deleteSelectedPreset());
+    QVERIFY(!QFile::exists(path));
+    QVERIFY(list->findItems(QStringLiteral("My Plastic (user)"), Qt::MatchExactly).isEmpty());
+    m_document->undoStack()->undo();
+    m_document->undoStack()->undo();
+}
+
+QTEST_MAIN(DocksUiTest)
+#include "DocksUiTest.moc"

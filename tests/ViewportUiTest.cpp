@@ -1,0 +1,334 @@
+// The viewport in the main window: the default project shows a lit object (screenshot saved as an
+// artefact), frames are drawn on demand only (none for a second without input), a material edit
+// re-renders without reloading anything, camera drags draw reduced previews and then one full
+// frame, the camera keys and the turntable work, number keys apply presets. Prints the measured
+// frame times. Needs a display (Xvfb via with-display.sh).
+
+#include "core/MaterialPresets.h"
+#include "ui/CameraController.h"
+#include "ui/Document.h"
+#include "ui/DocumentCommands.h"
+#include "ui/MainWindow.h"
+#include "ui/SceneController.h"
+#include "ui/SurfaceFormat.h"
+#include "ui/ViewportWidget.h"
+
+#include "TestSupport.h"
+
+#include <QAction>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest/QTest>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <memory>
+
+using namespace facet;
+
+namespace {
+
+// Waits until the viewport has drawn a frame after now.
+bool waitForFrame(ViewportWidget* viewport, int timeoutMs = 20000)
+{
+    QSignalSpy rendered(viewport, &ViewportWidget::frameRendered);
+    return rendered.wait(timeoutMs);
+}
+
+// Waits for the refined (full resolution) frame that follows an interaction.
+bool waitForFullFrame(ViewportWidget* viewport)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < 20000) {
+        if (!viewport->isPreviewing() && !viewport->lastFrameStats().reduced)
+            return true;
+        QTest::qWait(20);
+    }
+    return false;
+}
+
+struct PixelSummary {
+    double meanLuma = 0.0; // 0..255
+    double stddevLuma = 0.0;
+    int clearGreyPixels = 0; // within 1 code value of the empty viewport's grey
+    int count = 0;
+};
+
+PixelSummary summarize(const QImage& image, const QRect& area)
+{
+    PixelSummary s;
+    const int grey = int(std::lround(ViewportWidget::kClearGrey * 255.0f));
+    double sum = 0.0;
+    double sumSquares = 0.0;
+    for (int y = area.top(); y <= area.bottom(); y += 3)
+        for (int x = area.left(); x <= area.right(); x += 3) {
+            const QRgb p = image.pixel(x, y);
+            const double luma = 0.2126 * qRed(p) + 0.7152 * qGreen(p) + 0.0722 * qBlue(p);
+            sum += luma;
+            sumSquares += luma * luma;
+            if (std::abs(qRed(p) - grey) <= 1 && std::abs(qGreen(p) - grey) <= 1
+                && std::abs(qBlue(p) - grey) <= 1)
+                ++s.clearGreyPixels;
+            ++s.count;
+        }
+    s.meanLuma = sum / s.count;
+    s.stddevLuma = std::sqrt(std::max(0.0, sumSquares / s.count - s.meanLuma * s.meanLuma));
+    return s;
+}
+
+} // namespace
+
+class ViewportUiTest : public QObject {
+    Q_OBJECT
+public:
+    static void initMain()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        installViewportSurfaceFormat();
+    }
+
+private Q_SLOTS:
+    void initTestCase();
+    void cleanupTestCase();
+    void screenshotShowsLitObject();
+    void idleWindowDrawsNothing();
+    void materialEditRerendersWithoutReloading();
+    void cameraDragPreviewsThenRefines();
+    void cameraKeysAndWheel();
+    void turntableDrawsOnlyWhileRunning();
+    void numberKeyAppliesPreset();
+
+private:
+    QTemporaryDir m_recovery;
+    std::unique_ptr<MainWindow> m_window;
+    ViewportWidget* m_viewport = nullptr;
+};
+
+void ViewportUiTest::initTestCase()
+{
+    QCoreApplication::setOrganizationName(QStringLiteral("FacetTests"));
+    QElapsedTimer clock;
+    clock.start();
+    m_window = std::make_unique<MainWindow>(nullptr, m_recovery.path());
+    m_viewport = m_window->viewport();
+    QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QVERIFY(rendered.count() > 0 || rendered.wait(60000));
+    const qint64 firstFrameMs = clock.elapsed();
+    // Shortcuts (F, T, 1..9) need the window active; Xvfb has no window manager to do it.
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+    QVERIFY2(m_viewport->lastError().isEmpty(), qPrintable(m_viewport->lastError()));
+    const ViewportFrameStats& first = m_viewport->lastFrameStats();
+    qInfo("start-up to first lit frame: %lld ms (IBL precompute %.0f ms, %d passes, %d disk cache hits; "
+          "first frame %.0f ms incl. shader compiles)",
+        firstFrameMs, first.ibl.msTotal, first.ibl.passesRun, first.ibl.cacheHitsDisk, first.frameMs);
+}
+
+void ViewportUiTest::cleanupTestCase()
+{
+    m_window->document()->newProject(); // nothing to ask about on close
+    m_window.reset();
+}
+
+void ViewportUiTest::screenshotShowsLitObject()
+{
+    // A full frame (not a preview) is on screen.
+    m_viewport->update();
+    QVERIFY(waitForFrame(m_viewport));
+    const QImage window = m_window->grab().toImage().convertToFormat(QImage::Format_RGB32);
+    const QString path = test::outputDir() + QStringLiteral("/ViewportUiTest-window.png");
+    QVERIFY2(window.save(path), qPrintable(path));
+
+    const qreal scale = window.devicePixelRatio();
+    const QRect area(m_viewport->mapTo(m_window.get(), QPoint(0, 0)) * scale, m_viewport->size() * scale);
+    QVERIFY(window.rect().contains(area));
+    // The object: the reference camera sees the unit sphere filling ~85% of the height, so the
+    // central quarter of the view is all object.
+    const QRect object(area.center() - QPoint(area.height() / 8, area.height() / 8),
+        QSize(area.height() / 4, area.height() / 4));
+    const PixelSummary lit = summarize(window, object);
+    const PixelSummary whole = summarize(window, area);
+    const QString report
+        = QStringLiteral("object mean %1 sd %2, view mean %3 sd %4, clear-grey pixels %5/%6 (saved %7)")
+              .arg(lit.meanLuma)
+              .arg(lit.stddevLuma)
+              .arg(whole.meanLuma)
+              .arg(whole.stddevLuma)
+              .arg(whole.clearGreyPixels)
+              .arg(whole.count)
+              .arg(path);
+    qInfo("%s", qPrintable(report));
+    // Not blank, not the clear colour: hardly any pixel is the empty viewport's grey.
+    QVERIFY2(whole.clearGreyPixels < whole.count / 100, qPrintable(report));
+    // Lit and in range: the default red-orange plastic under the studio is mid-grey-ish on average
+    // (neither black nor clipped white), and shading varies across it (a flat colour would be an
+    // unlit or failed frame).
+    QVERIFY2(lit.meanLuma > 40.0 && lit.meanLuma < 230.0, qPrintable(report));
+    QVERIFY2(lit.stddevLuma > 3.0, qPrintable(report));
+    QVERIFY2(whole.stddevLuma > 5.0, qPrintable(report));
+    // The object's colour differs from the background's: red dominates on the plastic.
+    const QRgb centre = window.pixel(object.center());
+    QVERIFY2(qRed(centre) > qBlue(centre) + 20, qPrintable(QColor(centre).name()));
+}
+
+void ViewportUiTest::idleWindowDrawsNothing()
+{
+    QVERIFY(waitForFullFrame(m_viewport));
+    QTest::qWait(ViewportWidget::kRefineDelayMs + 100);
+    const std::uint64_t before = m_viewport->frameCount();
+    QTest::qWait(1000);
+    QCOMPARE(m_viewport->frameCount(), before);
+    qInfo("idle: %llu frames in 1 s without input", (unsigned long long)(m_viewport->frameCount() - before));
+}
+
+void ViewportUiTest::materialEditRerendersWithoutReloading()
+{
+    Document* document = m_window->document();
+    const SceneController::LoadCounts loadsBefore = m_window->sceneController()->loadCounts();
+    const std::uint64_t framesBefore = m_viewport->frameCount();
+    const double oldRoughness = document->project().material.roughness();
+    Material material = document->project().material;
+    material.setFactor(MapSlot::Roughness, 0.8);
+    document->setMaterial(material, QStringLiteral("Roughness"), MergeId::Roughness);
+    QVERIFY(waitForFrame(m_viewport));
+    QVERIFY(m_viewport->frameCount() > framesBefore);
+    const SceneController::LoadCounts& loadsAfter = m_window->sceneController()->loadCounts();
+    QCOMPARE(loadsAfter.environments, loadsBefore.environments);
+    QCOMPARE(loadsAfter.maps, loadsBefore.maps);
+    QCOMPARE(loadsAfter.meshes, loadsBefore.meshes);
+    QCOMPARE(m_viewport->lastFrameStats().iblMs, 0.0); // no precompute for a roughness change
+    QCOMPARE(m_viewport->lastFrameStats().render.texturesUploaded, 0);
+    qInfo("full-resolution frame %dx%d: %.1f ms", m_viewport->lastFrameStats().width,
+        m_viewport->lastFrameStats().height, m_viewport->lastFrameStats().frameMs);
+
+    // Undo through the Edit menu: the old value, and another frame.
+    auto* undo = m_window->findChild<QAction*>(QStringLiteral("undoAction"));
+    QVERIFY(undo);
+    QCOMPARE(undo->text(), QStringLiteral("&Undo Roughness"));
+    undo->trigger();
+    QCOMPARE(document->project().material.roughness(), oldRoughness);
+    QVERIFY(waitForFrame(m_viewport));
+}
+
+void ViewportUiTest::cameraDragPreviewsThenRefines()
+{
+    QVERIFY(waitForFullFrame(m_viewport));
+    Document* document = m_window->document();
+    const Camera before = document->project().camera;
+    const int undoCount = document->undoStack()->count();
+    const QPoint start = m_viewport->rect().center();
+    QTest::mousePress(m_viewport, Qt::LeftButton, {}, start);
+    QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
+    for (int step = 1; step <= 5; ++step) {
+        QMouseEvent move(QEvent::MouseMove, QPointF(start + QPoint(step * 10, step * 2)),
+            m_viewport->mapToGlobal(QPointF(start + QPoint(step * 10, step * 2))), Qt::NoButton,
+            Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(m_viewport, &move);
+        QTest::qWait(10);
+    }
+    QVERIFY(rendered.count() > 0 || rendered.wait(5000));
+    const ViewportFrameStats preview = m_viewport->lastFrameStats();
+    QVERIFY(preview.reduced);
+    QTest::mouseRelease(m_viewport, Qt::LeftButton, {}, start + QPoint(50, 10));
+    QVERIFY(document->project().camera != before);
+    QCOMPARE(document->undoStack()->count(), undoCount); // orbiting is not an undo step
+    QVERIFY(waitForFullFrame(m_viewport));
+    const ViewportFrameStats full = m_viewport->lastFrameStats();
+    QVERIFY(!full.reduced);
+    QCOMPARE(full.width, int(m_viewport->width() * m_viewport->devicePixelRatioF()));
+    qInfo("orbit preview %dx%d: %.1f ms; refined %dx%d: %.1f ms", preview.width, preview.height,
+        preview.frameMs, full.width, full.height, full.frameMs);
+    // Orbiting keeps the distance to the target.
+    const Camera after = document->project().camera;
+    QVERIFY(
+        std::abs(glm::length(after.position - after.target) - glm::length(before.position - before.target))
+        < 1e-9);
+}
+
+void ViewportUiTest::cameraKeysAndWheel()
+{
+    Document* document = m_window->document();
+    const auto distance = [document] {
+        const Camera& c = document->project().camera;
+        return glm::length(c.position - c.target);
+    };
+    const double start = distance();
+    QWheelEvent wheel(QPointF(m_viewport->rect().center()),
+        m_viewport->mapToGlobal(QPointF(m_viewport->rect().center())), QPoint(), QPoint(0, 120), Qt::NoButton,
+        Qt::NoModifier, Qt::NoScrollPhase, false);
+    QCoreApplication::sendEvent(m_viewport, &wheel);
+    QVERIFY(distance() < start); // closer
+
+    // Shift+drag pans: the target moves.
+    const glm::dvec3 target = document->project().camera.target;
+    QTest::mousePress(m_viewport, Qt::LeftButton, Qt::ShiftModifier, QPoint(100, 100));
+    QMouseEvent move(QEvent::MouseMove, QPointF(130, 100), m_viewport->mapToGlobal(QPointF(130, 100)),
+        Qt::NoButton, Qt::LeftButton, Qt::ShiftModifier);
+    QCoreApplication::sendEvent(m_viewport, &move);
+    QTest::mouseRelease(m_viewport, Qt::LeftButton, Qt::ShiftModifier, QPoint(130, 100));
+    QVERIFY(document->project().camera.target != target);
+
+    m_viewport->setFocus();
+    QTest::keyClick(m_viewport, Qt::Key_F); // frame: aimed at the origin again
+    QCOMPARE(document->project().camera.target, glm::dvec3(0.0));
+    QTest::keyClick(m_viewport, Qt::Key_Home); // reset
+    QCOMPARE(document->project().camera, Camera::referenceView());
+
+    // Fly mode: W moves forward while held.
+    m_window->cameraController()->setFlyMode(true);
+    QTest::keyPress(m_viewport, Qt::Key_W);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        document->project().camera.position.z < Camera::referenceView().position.z, 10000);
+    QTest::keyRelease(m_viewport, Qt::Key_W);
+    m_window->cameraController()->setFlyMode(false);
+    m_window->cameraController()->resetView();
+    QVERIFY(waitForFullFrame(m_viewport));
+}
+
+void ViewportUiTest::turntableDrawsOnlyWhileRunning()
+{
+    QVERIFY(waitForFullFrame(m_viewport));
+    auto* turntable = m_window->findChild<QAction*>(QStringLiteral("turntableAction"));
+    QVERIFY(turntable);
+    const std::uint64_t before = m_viewport->frameCount();
+    m_viewport->setFocus();
+    QTest::keyClick(m_viewport, Qt::Key_T);
+    QVERIFY(turntable->isChecked());
+    QVERIFY(m_window->cameraController()->turntableRunning());
+    QTest::qWait(1000);
+    const std::uint64_t spinning = m_viewport->frameCount() - before;
+    QVERIFY2(spinning >= 3, qPrintable(QString::number(spinning)));
+    QVERIFY(m_window->sceneController()->objectTurntableDegrees() > 0.0);
+    qInfo("turntable: %llu frames in 1 s (preview resolution)", (unsigned long long)spinning);
+    turntable->trigger();
+    QVERIFY(!m_window->cameraController()->turntableRunning());
+    QVERIFY(waitForFullFrame(m_viewport));
+    QTest::qWait(ViewportWidget::kRefineDelayMs + 100);
+    const std::uint64_t stopped = m_viewport->frameCount();
+    QTest::qWait(1000);
+    QCOMPARE(m_viewport->frameCount(), stopped);
+}
+
+void ViewportUiTest::numberKeyAppliesPreset()
+{
+    Document* document = m_window->document();
+    const MaterialPreset& first = builtinPresets().front();
+    m_viewport->setFocus();
+    QTest::keyClick(m_viewport, Qt::Key_1);
+    QCOMPARE(document->project().material.baseColorFactor(), first.material.baseColorFactor());
+    QCOMPARE(document->project().material.roughness(), first.material.roughness());
+    QVERIFY(waitForFrame(m_viewport));
+    document->undoStack()->undo();
+    QCOMPARE(document->project().material, Project::defaultProject().material);
+}
+
+QTEST_MAIN(ViewportUiTest)
+#include "ViewportUiTest.moc"

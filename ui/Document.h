@@ -1,0 +1,141 @@
+#pragma once
+// The open project and its editing history (Tiled's Document). One Document per window: it holds
+// the core::Project value, the file it came from, and the QUndoStack; it emits changed() with the
+// kinds of change (ui/DocumentChanges.h) after every edit, undo and redo. Panels read project()
+// and edit through the setters below, which push undo commands (ui/DocumentCommands.h); they never
+// touch the renderer. The viewport observes changed() and reloads only what changed.
+//
+// Undo: every setter except setCamera() is one undo step. A slider drag is ONE step:
+//
+//   document->beginInteractiveEdit();                       // slider pressed
+//   document->setMaterial(m, tr("Roughness"), kRoughnessId); // every valueChanged while dragging
+//   document->endInteractiveEdit();                          // slider released
+//
+// While an interactive edit is open, consecutive edits with the same non-zero mergeId merge into
+// the step the first one made (QUndoCommand::mergeWith); a later drag is a new step, and a drag
+// that ends where it began leaves no step at all. Outside an interactive edit nothing merges.
+// Merge ids are free to choose; ui/DocumentCommands.h lists the ones in use.
+//
+// Camera moves are not undoable (as in Marmoset Toolbag and Substance): they are saved with the
+// project but neither push a command nor mark the document modified.
+//
+// Files: open()/save()/saveAs() read and write core's "facet-project" JSON (docs/project-format.md).
+// Errors come back as one message naming the file and the reason; the document is unchanged then.
+// A project opens even when files it names are missing: missingFiles() lists them and
+// relinkFile() points them somewhere else (undoable).
+
+#include "core/MaterialPresets.h"
+#include "core/Project.h"
+#include "ui/DocumentChanges.h"
+
+#include <QObject>
+#include <QString>
+#include <QStringList>
+
+class QUndoStack;
+
+namespace facet {
+
+class Document : public QObject {
+    Q_OBJECT
+public:
+    explicit Document(QObject* parent = nullptr); // holds Project::defaultProject(), unmodified
+    ~Document() override;
+
+    const Project& project() const { return m_project; }
+    QUndoStack* undoStack() const { return m_undoStack; }
+
+    // --- Edits (each pushes one undo command unless noted; nothing happens when the value is
+    // unchanged). undoText is what Edit > Undo shows, e.g. tr("Roughness"). mergeId: see above.
+    void setMaterial(const Material& material, const QString& undoText, int mergeId = 0);
+    void setEnvironment(const EnvironmentSettings& environment, const QString& undoText, int mergeId = 0);
+    void setLights(const std::vector<Light>& lights, const QString& undoText, int mergeId = 0);
+    void setView(const ViewSettings& view, const QString& undoText, int mergeId = 0);
+    // The preset's look (name, IOR, shading, factors) on the current material; the texture paths
+    // and per-map options (channel, colour space, invert, flip green, UV) stay, so a preset can be
+    // tried on a texture set. Undo text "Apply Preset <name>".
+    void applyPreset(const MaterialPreset& preset);
+    // Any combination of the above as one step (e.g. assigning a folder of maps and the mesh).
+    // The camera part of `project` is ignored (see setCamera).
+    void setProject(const Project& project, const QString& undoText, int mergeId = 0);
+    // Not undoable, does not mark the document modified; emits changed(Camera).
+    void setCamera(const Camera& camera);
+
+    // Interactive edits (slider drags, colour-dialog previews): see the top of this file.
+    void beginInteractiveEdit();
+    void endInteractiveEdit();
+    bool interactiveEditOpen() const { return m_interactionSerial != 0; }
+
+    // --- Files
+    // Replaces the project with Project::defaultProject(); clears the history, the path and the
+    // missing files; unmodified. (Asking about unsaved changes is the window's job.)
+    void newProject();
+    // Loads `path`. On failure returns false, sets *error ("Project::load: <path>: <reason>")
+    // and changes nothing. On success the history is cleared, the document is unmodified,
+    // warnings() holds the loader's notes and missingFiles() the files the project names that do
+    // not exist.
+    bool open(const QString& path, QString* error);
+    // Writes to filePath() (must not be empty) / to `path` (which becomes filePath()). On success
+    // the document is unmodified. On failure the file on disk is untouched (atomic save).
+    bool save(QString* error);
+    bool saveAs(const QString& path, QString* error);
+    // Opens `recoveryPath` (written by writeRecoveryFile) as a modified document whose filePath()
+    // is the project the recovery copy was made from (empty for an untitled one).
+    bool recover(const QString& recoveryPath, QString* error);
+    // A copy of the current state for crash recovery; filePath() and the modified state stay.
+    bool writeRecoveryFile(const QString& recoveryPath, QString* error) const;
+    // The project file a recovery file was made from ("" for an untitled one, or when unreadable).
+    static QString recoveryOriginalPath(const QString& recoveryPath);
+
+    QString filePath() const { return m_filePath; }
+    // The file name without folder, or "Untitled".
+    QString displayName() const;
+    bool isModified() const;
+
+    // Texture, environment and mesh files the project names that do not exist (absolute paths,
+    // each once, in material-slot order, then environment, then mesh). Updated on open, recover
+    // and every edit.
+    const QStringList& missingFiles() const { return m_missingFiles; }
+    // Every reference to `oldPath` (map, environment source, mesh) becomes `newPath`; one undo
+    // step "Relink <file name>". Returns false if nothing referred to oldPath.
+    bool relinkFile(const QString& oldPath, const QString& newPath);
+    // Notes from the last open() / recover() (ignored keys), one per line; empty if none.
+    const QString& warnings() const { return m_warnings; }
+
+    // For the undo commands (ui/DocumentCommands.h) only: replaces the undoable part of the
+    // project (everything but the camera) and emits changed() with what differs.
+    void applyUndoableState(const Project& state);
+    int interactionSerial() const { return m_interactionSerial; }
+
+Q_SIGNALS:
+    // After every change of project(): edits, undo, redo, New, Open, recovery.
+    void changed(facet::DocumentChanges changes);
+    // The modified state flipped (QUndoStack::cleanChanged, and New/Open/Save).
+    void modifiedChanged(bool modified);
+    // filePath() changed (Open, Save As, New, recovery).
+    void filePathChanged(const QString& path);
+    // missingFiles() changed.
+    void missingFilesChanged(const QStringList& missing);
+    // An edit was refused because the result would not be a valid project (a panel let an
+    // out-of-range value through); `reason` names the field, e.g. "material.roughness.factor: ...".
+    void editRejected(const QString& reason);
+
+private:
+    void push(Project after, const QString& undoText, int mergeId);
+    void replaceProject(const Project& project, const QString& path, bool modified);
+    void updateMissingFiles();
+    void setFilePath(const QString& path);
+    void updateModified();
+
+    Project m_project;
+    QString m_filePath;
+    QUndoStack* m_undoStack = nullptr;
+    QStringList m_missingFiles;
+    QString m_warnings;
+    int m_interactionSerial = 0; // non-zero while an interactive edit is open
+    int m_nextInteractionSerial = 1;
+    bool m_forcedModified = false; // recovered documents are modified with an empty history
+    bool m_lastModified = false; // what modifiedChanged() last said
+};
+
+} // namespace facet

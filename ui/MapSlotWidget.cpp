@@ -1,0 +1,326 @@
+#include "ui/MapSlotWidget.h"
+
+#include "ui/ColorButton.h"
+#include "ui/Document.h"
+#include "ui/DocumentCommands.h"
+#include "ui/MapNaming.h"
+#include "ui/ValueSlider.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMimeData>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+namespace facet {
+
+namespace {
+
+constexpr int kThumbnailSize = 64;
+
+int mergeIdFor(MapSlot slot)
+{
+    switch (slot) {
+    case MapSlot::BaseColor:
+        return MergeId::BaseColor;
+    case MapSlot::Normal:
+        return MergeId::NormalStrength;
+    case MapSlot::Metallic:
+        return MergeId::Metallic;
+    case MapSlot::Roughness:
+        return MergeId::Roughness;
+    case MapSlot::Occlusion:
+        return MergeId::Occlusion;
+    }
+    return MergeId::None;
+}
+
+QString factorName(MapSlot slot)
+{
+    switch (slot) {
+    case MapSlot::Normal:
+        return QObject::tr("Normal Strength");
+    case MapSlot::Occlusion:
+        return QObject::tr("Occlusion Strength");
+    default:
+        return MapSlotWidget::title(slot);
+    }
+}
+
+QStringList localFiles(const QMimeData* mime)
+{
+    QStringList files;
+    if (!mime || !mime->hasUrls())
+        return files;
+    for (const QUrl& url : mime->urls())
+        if (url.isLocalFile())
+            files.append(url.toLocalFile());
+    return files;
+}
+
+} // namespace
+
+QString MapSlotWidget::title(MapSlot slot)
+{
+    switch (slot) {
+    case MapSlot::BaseColor:
+        return tr("Base Colour");
+    case MapSlot::Normal:
+        return tr("Normal");
+    case MapSlot::Metallic:
+        return tr("Metallic");
+    case MapSlot::Roughness:
+        return tr("Roughness");
+    case MapSlot::Occlusion:
+        return tr("Ambient Occlusion");
+    }
+    return {};
+}
+
+MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
+    : QWidget(parent)
+    , m_document(document)
+    , m_slot(slot)
+    , m_thumbnail(new QLabel(this))
+    , m_fileLabel(new QLabel(this))
+    , m_clear(new QPushButton(tr("Clear"), this))
+{
+    const QString key = QString::fromLatin1(toString(slot));
+    setObjectName(QStringLiteral("mapSlot_%1").arg(key));
+    setAcceptDrops(true);
+    m_thumbnail->setFixedSize(kThumbnailSize, kThumbnailSize);
+    m_thumbnail->setAlignment(Qt::AlignCenter);
+    m_thumbnail->setFrameShape(QFrame::StyledPanel);
+    m_thumbnail->setToolTip(tr("Drop an image file here"));
+    m_fileLabel->setObjectName(QStringLiteral("mapFileLabel_%1").arg(key));
+    m_fileLabel->setWordWrap(true);
+    m_fileLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto* open = new QPushButton(tr("Open…"), this);
+    open->setObjectName(QStringLiteral("mapOpenButton_%1").arg(key));
+    m_clear->setObjectName(QStringLiteral("mapClearButton_%1").arg(key));
+    connect(open, &QPushButton::clicked, this, &MapSlotWidget::openFile);
+    connect(m_clear, &QPushButton::clicked, this, &MapSlotWidget::clearFile);
+
+    auto* titleLabel = new QLabel(QStringLiteral("<b>%1</b>").arg(title(slot)), this);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(open);
+    buttons->addWidget(m_clear);
+    buttons->addStretch();
+    auto* info = new QVBoxLayout;
+    info->addWidget(titleLabel);
+    info->addWidget(m_fileLabel);
+    info->addLayout(buttons);
+    auto* header = new QHBoxLayout;
+    header->addWidget(m_thumbnail);
+    header->addLayout(info, 1);
+
+    auto* form = new QFormLayout;
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    const int mergeId = mergeIdFor(slot);
+    if (slot == MapSlot::BaseColor) {
+        m_color = new ColorButton(this);
+        m_color->setObjectName(QStringLiteral("baseColorButton"));
+        form->addRow(tr("Colour"), m_color);
+        connect(m_color, &ColorButton::colorEdited, this, [this](const glm::dvec3& linear) {
+            MaterialMap map = m_document->project().material.map(m_slot);
+            map.factor = glm::dvec4(linear, map.factor.w);
+            editMap(map, tr("Base Colour"));
+        });
+    } else {
+        const bool normal = slot == MapSlot::Normal;
+        m_factor = new ValueSlider(0.0, normal ? 2.0 : 1.0, 3, this);
+        m_factor->setObjectName(QStringLiteral("factorSlider_%1").arg(key));
+        form->addRow(normal || slot == MapSlot::Occlusion ? tr("Strength") : tr("Value"), m_factor);
+        connect(m_factor, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
+        connect(m_factor, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);
+        connect(m_factor, &ValueSlider::valueEdited, this, [this, mergeId](double value) {
+            MaterialMap map = m_document->project().material.map(m_slot);
+            map.factor = glm::dvec4(value);
+            editMap(map, factorName(m_slot), mergeId);
+        });
+    }
+    if (slot != MapSlot::Normal) {
+        m_channel = new QComboBox(this);
+        m_channel->setObjectName(QStringLiteral("mapChannel_%1").arg(key));
+        if (slot == MapSlot::BaseColor)
+            m_channel->addItem(tr("RGB"), int(MapChannel::Rgb));
+        m_channel->addItem(tr("Red"), int(MapChannel::R));
+        m_channel->addItem(tr("Green"), int(MapChannel::G));
+        m_channel->addItem(tr("Blue"), int(MapChannel::B));
+        m_channel->addItem(tr("Alpha"), int(MapChannel::A));
+        m_channel->setToolTip(tr("The channel to read: ORM textures pack occlusion in red, roughness in "
+                                 "green and metallic in blue"));
+        form->addRow(tr("Channel"), m_channel);
+        connect(m_channel, &QComboBox::activated, this, [this] {
+            MaterialMap map = m_document->project().material.map(m_slot);
+            map.channel = MapChannel(m_channel->currentData().toInt());
+            editMap(map, tr("%1 Channel").arg(title(m_slot)));
+        });
+    }
+    m_colorSpace = new QComboBox(this);
+    m_colorSpace->setObjectName(QStringLiteral("mapColorSpace_%1").arg(key));
+    m_colorSpace->addItem(tr("sRGB"), int(ColorEncoding::SRGB));
+    m_colorSpace->addItem(tr("Linear (data)"), int(ColorEncoding::Linear));
+    form->addRow(tr("Colour space"), m_colorSpace);
+    connect(m_colorSpace, &QComboBox::activated, this, [this] {
+        MaterialMap map = m_document->project().material.map(m_slot);
+        map.colorSpace = ColorEncoding(m_colorSpace->currentData().toInt());
+        editMap(map, tr("%1 Colour Space").arg(title(m_slot)));
+    });
+    if (isScalarSlot(slot)) {
+        m_invert = new QCheckBox(
+            slot == MapSlot::Roughness ? tr("Invert (smoothness / gloss map)") : tr("Invert"), this);
+        m_invert->setObjectName(QStringLiteral("mapInvert_%1").arg(key));
+        form->addRow(QString(), m_invert);
+        connect(m_invert, &QCheckBox::clicked, this, [this](bool on) {
+            MaterialMap map = m_document->project().material.map(m_slot);
+            map.invert = on;
+            editMap(map, tr("Invert %1").arg(title(m_slot)));
+        });
+    }
+    if (slot == MapSlot::Normal) {
+        m_flipGreen = new QCheckBox(tr("DirectX (flip green)"), this);
+        m_flipGreen->setObjectName(QStringLiteral("mapFlipGreen"));
+        form->addRow(QString(), m_flipGreen);
+        connect(m_flipGreen, &QCheckBox::clicked, this, [this](bool on) {
+            MaterialMap map = m_document->project().material.map(m_slot);
+            map.flipGreen = on;
+            editMap(map, tr("Flip Normal Green"));
+        });
+    }
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(header);
+    layout->addLayout(form);
+    refresh();
+}
+
+void MapSlotWidget::refresh()
+{
+    const MaterialMap& map = m_document->project().material.map(m_slot);
+    if (map.hasTexture()) {
+        const QFileInfo info(QString::fromStdString(map.path));
+        QString text = info.fileName();
+        if (m_sourceSize.isValid())
+            text += QStringLiteral("\n%1×%2").arg(m_sourceSize.width()).arg(m_sourceSize.height());
+        if (!info.exists())
+            text += tr("\n(missing)");
+        m_fileLabel->setText(text);
+        m_fileLabel->setToolTip(info.absoluteFilePath());
+    } else {
+        m_fileLabel->setText(tr("No file: the value below"));
+        m_fileLabel->setToolTip({});
+        m_thumbnail->clear();
+        m_sourceSize = {};
+    }
+    m_clear->setEnabled(map.hasTexture());
+    if (m_color)
+        m_color->setLinearColor(glm::dvec3(map.factor));
+    if (m_factor)
+        m_factor->setValue(map.factor.x);
+    const auto select = [](QComboBox* combo, int value) {
+        if (!combo)
+            return;
+        const QSignalBlocker blocker(combo);
+        combo->setCurrentIndex(combo->findData(value));
+    };
+    select(m_channel, int(map.channel));
+    select(m_colorSpace, int(map.colorSpace));
+    if (m_invert)
+        m_invert->setChecked(map.invert);
+    if (m_flipGreen)
+        m_flipGreen->setChecked(map.flipGreen);
+    for (QWidget* option : {static_cast<QWidget*>(m_channel), static_cast<QWidget*>(m_colorSpace),
+             static_cast<QWidget*>(m_invert), static_cast<QWidget*>(m_flipGreen)})
+        if (option)
+            option->setEnabled(map.hasTexture());
+}
+
+void MapSlotWidget::setThumbnail(const QImage& image, QSize sourceSize, const QString& error)
+{
+    m_sourceSize = sourceSize;
+    if (image.isNull()) {
+        m_thumbnail->setText(tr("?"));
+        m_thumbnail->setToolTip(error);
+    } else {
+        m_thumbnail->setPixmap(QPixmap::fromImage(image));
+        m_thumbnail->setToolTip(tr("Drop an image file here"));
+    }
+    refresh();
+}
+
+bool MapSlotWidget::assignFile(const QString& path)
+{
+    const QFileInfo info(path);
+    if (!info.isFile()) {
+        Q_EMIT message(tr("Cannot use %1 as the %2 map: no such file").arg(path, title(m_slot)));
+        return false;
+    }
+    if (!isImageFileName(path)) {
+        Q_EMIT message(tr("Cannot use %1 as the %2 map: not an image file Facet reads (PNG, JPEG, TGA, "
+                          "TIFF, EXR, HDR…)")
+                           .arg(info.fileName(), title(m_slot)));
+        return false;
+    }
+    const Material material = withAssignedMaps(m_document->project().material,
+        {MapAssignment {m_slot, info.absoluteFilePath(),
+            isScalarSlot(m_slot) ? MapChannel::R : MapChannel::Rgb,
+            m_document->project().material.map(m_slot).flipGreen}});
+    m_document->setMaterial(material, tr("Set %1 Map").arg(title(m_slot)));
+    Q_EMIT message(tr("%1 map: %2").arg(title(m_slot), info.fileName()));
+    return true;
+}
+
+void MapSlotWidget::clearFile()
+{
+    MaterialMap map = m_document->project().material.map(m_slot);
+    if (!map.hasTexture())
+        return;
+    map.path.clear();
+    editMap(map, tr("Clear %1 Map").arg(title(m_slot)));
+}
+
+void MapSlotWidget::editMap(const MaterialMap& map, const QString& undoText, int mergeId)
+{
+    Material material = m_document->project().material;
+    material.map(m_slot) = map;
+    m_document->setMaterial(material, undoText, mergeId);
+}
+
+void MapSlotWidget::openFile()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open %1 Map").arg(title(m_slot)), {},
+        tr("Images (*.png *.jpg *.jpeg *.tga *.tif *.tiff *.exr *.hdr *.bmp *.webp);;All files (*)"));
+    if (!path.isEmpty())
+        assignFile(path);
+}
+
+void MapSlotWidget::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (!localFiles(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+void MapSlotWidget::dropEvent(QDropEvent* event)
+{
+    const QStringList files = localFiles(event->mimeData());
+    if (files.isEmpty())
+        return;
+    event->acceptProposedAction();
+    if (files.size() == 1 && !QFileInfo(files.first()).isDir())
+        assignFile(files.first());
+    else
+        Q_EMIT filesDropped(files);
+}
+
+} // namespace facet

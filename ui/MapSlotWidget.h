@@ -1,0 +1,74 @@
+#pragma once
+// One material map in the Texture maps dock: a thumbnail, the file's name and resolution,
+// Open… / Clear, the factor used without a file (or multiplying it), and the per-map options:
+// channel (packed textures), colour space, invert (a smoothness map as roughness), the normal
+// map's strength and DirectX green flip. An image file dropped on it becomes its texture; a
+// folder or several files go to the dock (filesDropped) to be assigned by name. Every edit is an
+// undo step through the Document; a drag of the factor slider is one step.
+
+#include "core/Material.h"
+
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QPushButton;
+
+namespace facet {
+
+class ColorButton;
+class Document;
+class ValueSlider;
+
+class MapSlotWidget : public QWidget {
+    Q_OBJECT
+public:
+    MapSlotWidget(Document* document, MapSlot slot, QWidget* parent = nullptr);
+
+    MapSlot slot() const { return m_slot; }
+    // "Base colour", "Normal", ...
+    static QString title(MapSlot slot);
+
+    // Shows the document's state of this map (no edit).
+    void refresh();
+    // The thumbnail of the current file (null image: none / unreadable; `error` then says why).
+    void setThumbnail(const QImage& image, QSize sourceSize, const QString& error);
+    // Makes `path` this map's texture (one undo step). False with a message for a file that is
+    // not an image Facet reads.
+    bool assignFile(const QString& path);
+    void clearFile();
+
+    ValueSlider* factorSlider() const { return m_factor; } // null for base colour
+    ColorButton* colorButton() const { return m_color; } // base colour only
+    QLabel* fileLabel() const { return m_fileLabel; }
+
+Q_SIGNALS:
+    // For the status bar: what happened, or why a drop or a file was refused (naming the file).
+    void message(const QString& text);
+    // A folder or several files were dropped: assign them by name (the dock does).
+    void filesDropped(const QStringList& paths);
+
+protected:
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    void editMap(const MaterialMap& map, const QString& undoText, int mergeId = 0);
+    void openFile();
+
+    Document* m_document;
+    MapSlot m_slot;
+    QLabel* m_thumbnail;
+    QLabel* m_fileLabel;
+    QPushButton* m_clear;
+    ValueSlider* m_factor = nullptr;
+    ColorButton* m_color = nullptr;
+    QComboBox* m_channel = nullptr;
+    QComboBox* m_colorSpace = nullptr;
+    QCheckBox* m_invert = nullptr;
+    QCheckBox* m_flipGreen = nullptr;
+    QSize m_sourceSize;
+};
+
+} // namespace facet

@@ -1,0 +1,285 @@
+#include "ui/MaterialDock.h"
+
+#include "core/MaterialPresets.h"
+#include "ui/Document.h"
+#include "ui/DocumentCommands.h"
+#include "ui/ValueSlider.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QInputDialog>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+namespace facet {
+
+namespace {
+
+// List item data: the built-in preset's index, or the user preset's index + kUserOffset.
+constexpr int kPresetRole = Qt::UserRole;
+constexpr int kUserOffset = 100000;
+
+template <typename Enum>
+QComboBox* enumCombo(QWidget* parent, const char* name, std::initializer_list<std::pair<Enum, QString>> items)
+{
+    auto* combo = new QComboBox(parent);
+    combo->setObjectName(QLatin1String(name));
+    for (const auto& [value, text] : items)
+        combo->addItem(text, int(value));
+    return combo;
+}
+
+void select(QComboBox* combo, int value)
+{
+    const QSignalBlocker blocker(combo);
+    combo->setCurrentIndex(combo->findData(value));
+}
+
+} // namespace
+
+MaterialDock::MaterialDock(Document* document, QWidget* parent)
+    : QDockWidget(tr("Material"), parent)
+    , m_document(document)
+    , m_name(new QLineEdit(this))
+    , m_ior(new ValueSlider(1.0, 3.0, 3, this))
+    , m_f0(new QLabel(this))
+    , m_presets(new QListWidget(this))
+    , m_apply(new QPushButton(tr("Apply"), this))
+    , m_delete(new QPushButton(tr("Delete"), this))
+{
+    setObjectName(QStringLiteral("materialDock"));
+    m_composition = enumCombo<BrdfComposition>(this, "brdfComposition",
+        {{BrdfComposition::Gltf, tr("glTF 2.0")}, {BrdfComposition::LearnOpenGL, tr("LearnOpenGL / UE4")}});
+    m_distribution = enumCombo<Distribution>(
+        this, "brdfDistribution", {{Distribution::GGX, tr("GGX")}, {Distribution::Beckmann, tr("Beckmann")}});
+    m_visibility = enumCombo<Visibility>(this, "brdfVisibility",
+        {{Visibility::SmithGGXCorrelated, tr("Smith-GGX height-correlated")},
+            {Visibility::SmithGGXUncorrelated, tr("Smith-GGX separable")},
+            {Visibility::SchlickGGX, tr("Schlick-GGX")}});
+    m_fresnel = enumCombo<Fresnel>(this, "brdfFresnel",
+        {{Fresnel::Schlick, tr("Schlick")}, {Fresnel::Dielectric, tr("Exact dielectric")}});
+    m_coupling = enumCombo<DielectricCoupling>(this, "brdfCoupling",
+        {{DielectricCoupling::FresnelMix, tr("glTF fresnel_mix")},
+            {DielectricCoupling::EnergyPreserving, tr("Energy-preserving")}});
+    m_multiScatter = new QCheckBox(tr("Multiple-scattering compensation"), this);
+    m_multiScatter->setObjectName(QStringLiteral("multiScatterCheck"));
+    m_name->setObjectName(QStringLiteral("materialName"));
+    m_ior->setObjectName(QStringLiteral("iorSlider"));
+    m_ior->setSpinRange(1.0, 5.0);
+    m_f0->setObjectName(QStringLiteral("f0Label"));
+
+    auto* content = new QWidget(this);
+    auto* layout = new QVBoxLayout(content);
+    auto* form = new QFormLayout;
+    form->addRow(tr("Name"), m_name);
+    form->addRow(tr("IOR"), m_ior);
+    form->addRow(tr("F0"), m_f0);
+    layout->addLayout(form);
+    auto* brdfGroup = new QGroupBox(tr("BRDF"), content);
+    auto* brdfForm = new QFormLayout(brdfGroup);
+    brdfForm->addRow(tr("Composition"), m_composition);
+    brdfForm->addRow(tr("Distribution"), m_distribution);
+    brdfForm->addRow(tr("Visibility"), m_visibility);
+    brdfForm->addRow(tr("Fresnel"), m_fresnel);
+    brdfForm->addRow(tr("Dielectric"), m_coupling);
+    brdfForm->addRow(QString(), m_multiScatter);
+    layout->addWidget(brdfGroup);
+
+    auto* presetGroup = new QGroupBox(tr("Presets"), content);
+    auto* presetLayout = new QVBoxLayout(presetGroup);
+    m_presets->setObjectName(QStringLiteral("presetList"));
+    presetLayout->addWidget(m_presets);
+    auto* saveAs = new QPushButton(tr("Save As…"), presetGroup);
+    m_apply->setObjectName(QStringLiteral("applyPresetButton"));
+    saveAs->setObjectName(QStringLiteral("savePresetButton"));
+    m_delete->setObjectName(QStringLiteral("deletePresetButton"));
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_apply);
+    buttons->addWidget(saveAs);
+    buttons->addWidget(m_delete);
+    presetLayout->addLayout(buttons);
+    layout->addWidget(presetGroup, 1);
+    setWidget(content);
+
+    connect(m_name, &QLineEdit::editingFinished, this, [this] {
+        Material material = m_document->project().material;
+        const std::string name = m_name->text().trimmed().toStdString();
+        if (name.empty() || name == material.name)
+            return;
+        material.name = name;
+        m_document->setMaterial(material, tr("Rename Material"));
+    });
+    connect(m_ior, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
+    connect(m_ior, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);
+    connect(m_ior, &ValueSlider::valueEdited, this, [this](double ior) {
+        Material material = m_document->project().material;
+        material.ior = ior;
+        m_document->setMaterial(material, tr("IOR"), MergeId::Ior);
+    });
+    const auto connectCombo = [this](QComboBox* combo, const QString& undoText, auto apply) {
+        connect(combo, &QComboBox::activated, this, [this, combo, undoText, apply] {
+            const int value = combo->currentData().toInt();
+            editShading(undoText, [&](ShadingModel& model) { apply(model, value); });
+        });
+    };
+    connectCombo(m_composition, tr("BRDF Composition"),
+        [](ShadingModel& m, int v) { m.composition = BrdfComposition(v); });
+    connectCombo(m_distribution, tr("BRDF Distribution"),
+        [](ShadingModel& m, int v) { m.distribution = Distribution(v); });
+    connectCombo(
+        m_visibility, tr("BRDF Visibility"), [](ShadingModel& m, int v) { m.visibility = Visibility(v); });
+    connectCombo(m_fresnel, tr("BRDF Fresnel"), [](ShadingModel& m, int v) { m.fresnel = Fresnel(v); });
+    connectCombo(m_coupling, tr("Dielectric Coupling"),
+        [](ShadingModel& m, int v) { m.coupling = DielectricCoupling(v); });
+    connect(m_multiScatter, &QCheckBox::clicked, this, [this](bool on) {
+        editShading(on ? tr("Multiple Scattering On") : tr("Multiple Scattering Off"),
+            [on](ShadingModel& model) { model.multiScatter = on; });
+    });
+    connect(m_apply, &QPushButton::clicked, this, &MaterialDock::applySelectedPreset);
+    connect(m_presets, &QListWidget::itemDoubleClicked, this, &MaterialDock::applySelectedPreset);
+    connect(m_presets, &QListWidget::currentItemChanged, this, &MaterialDock::updatePresetButtons);
+    connect(saveAs, &QPushButton::clicked, this, &MaterialDock::askPresetName);
+    connect(m_delete, &QPushButton::clicked, this, [this] {
+        const QListWidgetItem* item = m_presets->currentItem();
+        if (!item)
+            return;
+        const auto answer = QMessageBox::question(this, tr("Delete Preset"),
+            tr("Delete the preset “%1”? This cannot be undone.").arg(item->text()));
+        if (answer == QMessageBox::Yes)
+            deleteSelectedPreset();
+    });
+    connect(m_document, &Document::changed, this, &MaterialDock::onDocumentChanged);
+    reloadPresets();
+    onDocumentChanged(DocumentChange::WholeProject);
+}
+
+MaterialDock::~MaterialDock() = default;
+
+void MaterialDock::onDocumentChanged(DocumentChanges changes)
+{
+    if (!(changes & (DocumentChanges(DocumentChange::MaterialFactors) | DocumentChange::Shading)))
+        return;
+    const Material& material = m_document->project().material;
+    if (!m_name->hasFocus())
+        m_name->setText(QString::fromStdString(material.name));
+    m_ior->setValue(material.ior);
+    m_f0->setText(QString::number(material.dielectricF0(), 'f', 4));
+    select(m_composition, int(material.shading.composition));
+    select(m_distribution, int(material.shading.distribution));
+    select(m_visibility, int(material.shading.visibility));
+    select(m_fresnel, int(material.shading.fresnel));
+    select(m_coupling, int(material.shading.coupling));
+    m_multiScatter->setChecked(material.shading.multiScatter);
+}
+
+void MaterialDock::editShading(const QString& undoText, const std::function<void(ShadingModel&)>& change)
+{
+    Material material = m_document->project().material;
+    change(material.shading);
+    m_document->setMaterial(material, undoText);
+}
+
+void MaterialDock::reloadPresets()
+{
+    const QString selected = m_presets->currentItem() ? m_presets->currentItem()->text() : QString();
+    m_presets->clear();
+    int index = 0;
+    for (const MaterialPreset& preset : builtinPresets()) {
+        auto* item = new QListWidgetItem(QString::fromStdString(preset.displayName), m_presets);
+        item->setData(kPresetRole, index++);
+        item->setToolTip(
+            tr("Built-in: F0 %1, roughness %2")
+                .arg(preset.material.metallic() > 0.5 ? tr("from the base colour (metal)")
+                                                      : QString::number(preset.material.dielectricF0()))
+                .arg(preset.material.roughness()));
+    }
+    QStringList problems;
+    m_userPresets = UserPresets::load(&problems);
+    index = 0;
+    for (const UserPreset& preset : m_userPresets) {
+        auto* item = new QListWidgetItem(
+            tr("%1 (user)").arg(QString::fromStdString(preset.preset.displayName)), m_presets);
+        item->setData(kPresetRole, kUserOffset + index++);
+        item->setToolTip(preset.path);
+    }
+    if (!problems.isEmpty())
+        Q_EMIT message(
+            tr("Some user presets could not be read: %1").arg(problems.join(QStringLiteral("; "))));
+    const auto matches = m_presets->findItems(selected, Qt::MatchExactly);
+    if (!matches.isEmpty())
+        m_presets->setCurrentItem(matches.first());
+    updatePresetButtons();
+}
+
+void MaterialDock::updatePresetButtons()
+{
+    const QListWidgetItem* item = m_presets->currentItem();
+    m_apply->setEnabled(item != nullptr);
+    m_delete->setEnabled(item && item->data(kPresetRole).toInt() >= kUserOffset);
+}
+
+bool MaterialDock::applySelectedPreset()
+{
+    const QListWidgetItem* item = m_presets->currentItem();
+    if (!item)
+        return false;
+    const int index = item->data(kPresetRole).toInt();
+    if (index >= kUserOffset)
+        m_document->applyPreset(m_userPresets.at(std::size_t(index - kUserOffset)).preset);
+    else
+        m_document->applyPreset(builtinPresets().at(std::size_t(index)));
+    return true;
+}
+
+void MaterialDock::askPresetName()
+{
+    bool ok = false;
+    const QString name = QInputDialog::getText(this, tr("Save As Preset"), tr("Preset name:"),
+        QLineEdit::Normal, QString::fromStdString(m_document->project().material.name), &ok);
+    if (ok)
+        saveCurrentAsPreset(name);
+}
+
+bool MaterialDock::saveCurrentAsPreset(const QString& name)
+{
+    QString error;
+    const QString path = UserPresets::save(name, m_document->project().material, &error);
+    if (path.isEmpty()) {
+        Q_EMIT message(tr("Could not save the preset: %1").arg(error));
+        return false;
+    }
+    reloadPresets();
+    for (int row = 0; row < m_presets->count(); ++row)
+        if (m_presets->item(row)->toolTip() == path)
+            m_presets->setCurrentRow(row);
+    Q_EMIT message(tr("Saved the preset “%1” to %2").arg(name.trimmed(), path));
+    return true;
+}
+
+bool MaterialDock::deleteSelectedPreset()
+{
+    const QListWidgetItem* item = m_presets->currentItem();
+    if (!item || item->data(kPresetRole).toInt() < kUserOffset) {
+        Q_EMIT message(tr("Only user presets can be deleted"));
+        return false;
+    }
+    const UserPreset& preset = m_userPresets.at(std::size_t(item->data(kPresetRole).toInt() - kUserOffset));
+    QString error;
+    if (!UserPresets::remove(preset.path, &error)) {
+        Q_EMIT message(tr("Could not delete the preset: %1").arg(error));
+        return false;
+    }
+    Q_EMIT message(tr("Deleted the preset “%1”").arg(QString::fromStdString(preset.preset.displayName)));
+    reloadPresets();
+    return true;
+}
+
+} // namespace facet

@@ -1,0 +1,72 @@
+#pragma once
+// The Material dock: the BRDF (composition, distribution, visibility, Fresnel, dielectric
+// coupling, multiple-scattering compensation), the IOR with the F0 it gives, and the preset
+// library: the built-in presets (core/MaterialPresets.h, the F0 table) and the user's
+// (ui/UserPresets.h). Apply, Save As Preset…, Delete (user presets only). Edits are undo steps.
+
+#include "core/ShadingModel.h"
+#include "ui/DocumentChanges.h"
+#include "ui/UserPresets.h"
+
+#include <QDockWidget>
+
+#include <functional>
+#include <vector>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QListWidgetItem;
+class QPushButton;
+
+namespace facet {
+
+class Document;
+class ValueSlider;
+
+class MaterialDock : public QDockWidget {
+    Q_OBJECT
+public:
+    explicit MaterialDock(Document* document, QWidget* parent = nullptr);
+    ~MaterialDock() override;
+
+    QListWidget* presetList() const { return m_presets; }
+    ValueSlider* iorSlider() const { return m_ior; }
+    // Applies the selected preset (one undo step). False when none is selected.
+    bool applySelectedPreset();
+    // Saves the current material as a user preset named `name` and selects it. False with a
+    // message (also emitted) on failure.
+    bool saveCurrentAsPreset(const QString& name);
+    // Deletes the selected user preset (built-ins cannot be deleted).
+    bool deleteSelectedPreset();
+    // Re-reads the user presets folder.
+    void reloadPresets();
+
+Q_SIGNALS:
+    void message(const QString& text);
+
+private:
+    void onDocumentChanged(DocumentChanges changes);
+    void editShading(const QString& undoText, const std::function<void(ShadingModel&)>& change);
+    void askPresetName();
+    void updatePresetButtons();
+
+    Document* m_document;
+    QLineEdit* m_name;
+    QComboBox* m_composition;
+    QComboBox* m_distribution;
+    QComboBox* m_visibility;
+    QComboBox* m_fresnel;
+    QComboBox* m_coupling;
+    QCheckBox* m_multiScatter;
+    ValueSlider* m_ior;
+    QLabel* m_f0;
+    QListWidget* m_presets;
+    QPushButton* m_apply;
+    QPushButton* m_delete;
+    std::vector<UserPreset> m_userPresets;
+};
+
+} // namespace facet

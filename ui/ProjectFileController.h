@@ -1,0 +1,82 @@
+#pragma once
+// File > New, Open, Open Recent, Save, Save As and the question before unsaved changes are lost
+// (not a widget: it owns no window, only the dialogs it opens on `dialogParent`). Every failure
+// reaches the user as a message naming the file and the reason: errorReported() (MainWindow puts
+// it in the status bar) and a non-modal message box; nothing is silently skipped. After an open
+// with missing files it says so and shows the MissingFilesDialog.
+//
+// Tests drive the *File(path) functions, which show no file dialog, and answer the unsaved-changes
+// question with setUnsavedChangesAnswer() so that no modal box waits for a click.
+
+#include <QMessageBox>
+#include <QObject>
+#include <QPointer>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+class QWidget;
+
+namespace facet {
+
+class Document;
+class MissingFilesDialog;
+
+class ProjectFileController : public QObject {
+    Q_OBJECT
+public:
+    static constexpr int kMaxRecentFiles = 8;
+
+    ProjectFileController(Document* document, QWidget* dialogParent, QObject* parent = nullptr);
+
+    // Menu entry points (may show dialogs). Each returns whether it went ahead.
+    bool newProject();
+    bool open(); // asks for a file
+    bool save(); // Save As when untitled
+    bool saveAs(); // asks for a file
+    // The same without file dialogs. openFile asks about unsaved changes first (maybeSave).
+    bool openFile(const QString& path);
+    bool saveToFile(const QString& path);
+    // Asks "Save changes to X?" when the document is modified: Save (then true if saved), Discard
+    // (true), Cancel (false). True at once when unmodified.
+    bool maybeSave();
+    // Test hook: answer maybeSave() with `answer` instead of asking (nullopt: ask again).
+    void setUnsavedChangesAnswer(std::optional<QMessageBox::StandardButton> answer)
+    {
+        m_unsavedAnswer = answer;
+    }
+    // Test hook: report errors in the status bar only, without message boxes.
+    void setErrorDialogsEnabled(bool enabled) { m_errorDialogs = enabled; }
+
+    QStringList recentFiles() const; // most recent first, from QSettings
+    void clearRecentFiles();
+    // The last error message ("" if none since the last success) and the last missing-files note.
+    const QString& lastError() const { return m_lastError; }
+    const QString& missingFilesMessage() const { return m_missingFilesMessage; }
+    // The relink dialog (null until a project with missing files was opened).
+    MissingFilesDialog* missingFilesDialog() const;
+    void showMissingFilesDialog();
+
+Q_SIGNALS:
+    void recentFilesChanged(const QStringList& files);
+    // Something for the status bar (successes and notes).
+    void statusMessage(const QString& text);
+    // A failure, naming the file and the reason.
+    void errorReported(const QString& text);
+
+private:
+    void reportError(const QString& text);
+    void addRecentFile(const QString& path);
+    void afterOpen();
+
+    Document* m_document;
+    QWidget* m_dialogParent;
+    QPointer<MissingFilesDialog> m_missingDialog;
+    std::optional<QMessageBox::StandardButton> m_unsavedAnswer;
+    bool m_errorDialogs = true;
+    QString m_lastError;
+    QString m_missingFilesMessage;
+};
+
+} // namespace facet

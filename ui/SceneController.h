@@ -1,0 +1,87 @@
+#pragma once
+// The CPU side of the viewport (not a widget, no GL): observes the Document, loads what an edit
+// made stale and nothing else (core/ProjectAssets.h: the environment via Environment::fromSpec, the
+// mesh via loadViewMesh, each material map via Image::load), and builds the RenderScene snapshot
+// the viewport's renderer draws (render/SceneFromProject.h). A roughness change loads nothing; a
+// new normal map loads that map only; rotating the environment changes a number.
+//
+// Problems (a missing map, an unreadable environment) never stop the frame: the slot falls back
+// to its factor, the environment and mesh keep their previous value (or the built-in default),
+// and message() names the file and the reason for the status bar.
+
+#include "core/ProjectAssets.h"
+#include "render/IblSettings.h"
+#include "render/RenderScene.h"
+#include "ui/DocumentChanges.h"
+
+#include <QObject>
+#include <QString>
+
+#include <cstdint>
+#include <memory>
+
+namespace facet {
+
+class Document;
+struct IblTextures;
+
+class SceneController : public QObject {
+    Q_OBJECT
+public:
+    // How many loads each kind of change caused (tests check that only stale assets reload).
+    struct LoadCounts {
+        int environments = 0;
+        int meshes = 0;
+        int maps = 0;
+    };
+
+    explicit SceneController(Document* document, QObject* parent = nullptr);
+
+    const Document* document() const { return m_document; }
+    const ProjectAssets& assets() const { return m_assets; }
+    const LoadCounts& loadCounts() const { return m_loadCounts; }
+
+    // Identifies the environment image and IBL quality the IBL textures must be made for: it
+    // changes when the environment source or the quality changes, not on rotation or intensity.
+    std::uint64_t iblKey() const { return m_iblKey; }
+    IblSettings iblSettings() const;
+    // A short name of the environment for messages ("studio", "forest.exr").
+    QString environmentName() const;
+
+    // The frame to draw, with the environment's IBL textures (null: background-only lighting).
+    RenderScene scene(const std::shared_ptr<const IblTextures>& ibl) const;
+
+    // Viewport-only turntable angles (not part of the project, not undoable): the object turns
+    // about +Y by objectTurntableDegrees, the environment by environmentTurntableDegrees on top of
+    // the project's rotation.
+    void setTurntableAngles(double objectDegrees, double environmentDegrees);
+    double objectTurntableDegrees() const { return m_objectTurntableDegrees; }
+    double environmentTurntableDegrees() const { return m_environmentTurntableDegrees; }
+
+Q_SIGNALS:
+    // The scene differs from the last frame: draw again. `interactive` is true while a slider drag
+    // (Document::interactiveEditOpen) or a turntable is running: the viewport may draw at reduced
+    // resolution and refine afterwards.
+    void sceneChanged(bool interactive);
+    // A problem or a note for the status bar, naming the file.
+    void message(const QString& text);
+
+private:
+    void onDocumentChanged(DocumentChanges changes);
+    void loadEnvironment();
+    void applyEnvironmentSettings();
+    void loadMesh();
+    void loadMaps(bool all);
+    void report(const std::string& text);
+
+    Document* m_document;
+    ProjectAssets m_assets;
+    std::string m_environmentSource; // what m_assets.environment was loaded from
+    std::string m_meshSource;
+    std::uint64_t m_iblKey = 0;
+    LoadCounts m_loadCounts;
+    double m_objectTurntableDegrees = 0.0;
+    double m_environmentTurntableDegrees = 0.0;
+};
+
+} // namespace facet

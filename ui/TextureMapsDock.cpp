@@ -1,0 +1,293 @@
+#include "ui/TextureMapsDock.h"
+
+#include "ui/Document.h"
+#include "ui/DocumentCommands.h"
+#include "ui/MapNaming.h"
+#include "ui/MapSlotWidget.h"
+#include "ui/ThumbnailLoader.h"
+#include "ui/ValueSlider.h"
+
+#include <QDateTime>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFileSystemWatcher>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QMimeData>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QTimer>
+#include <QVBoxLayout>
+
+namespace facet {
+
+namespace {
+
+constexpr int kThumbnailPixels = 64;
+constexpr int kReloadDelayMs = 200; // editors write a file in several steps; wait for the last
+
+QString slotKey(MapSlot slot)
+{
+    return QString::fromLatin1(toString(slot));
+}
+
+} // namespace
+
+TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
+    : QDockWidget(tr("Texture Maps"), parent)
+    , m_document(document)
+    , m_thumbnails(new ThumbnailLoader(this))
+    , m_watcher(new QFileSystemWatcher(this))
+    , m_reloadTimer(new QTimer(this))
+    , m_messageLabel(new QLabel(this))
+    , m_uvScale(new ValueSlider(0.1, 16.0, 2, this))
+    , m_uvOffsetU(new ValueSlider(-1.0, 1.0, 3, this))
+    , m_uvOffsetV(new ValueSlider(-1.0, 1.0, 3, this))
+    , m_uvRotation(new ValueSlider(-180.0, 180.0, 1, this))
+{
+    setObjectName(QStringLiteral("textureMapsDock"));
+    setAcceptDrops(true);
+    auto* content = new QWidget;
+    auto* layout = new QVBoxLayout(content);
+    auto* folderButton = new QPushButton(tr("Assign Folder…"), content);
+    folderButton->setObjectName(QStringLiteral("assignFolderButton"));
+    folderButton->setToolTip(tr("Assign a texture set by file names (*_basecolor, *_normal, *_roughness, "
+                                "*_metallic, *_ao, *_orm); you can also drop a folder or files here"));
+    connect(folderButton, &QPushButton::clicked, this, &TextureMapsDock::assignFolder);
+    layout->addWidget(folderButton);
+    m_messageLabel->setObjectName(QStringLiteral("textureMapsMessage"));
+    m_messageLabel->setWordWrap(true);
+    m_messageLabel->hide();
+    layout->addWidget(m_messageLabel);
+    for (MapSlot slot : kAllMapSlots) {
+        auto* widget = new MapSlotWidget(document, slot, content);
+        m_slots[std::size_t(slot)] = widget;
+        connect(widget, &MapSlotWidget::message, this, &TextureMapsDock::message);
+        connect(widget, &MapSlotWidget::filesDropped, this, &TextureMapsDock::assignFiles);
+        auto* frame = new QFrame(content);
+        frame->setFrameShape(QFrame::StyledPanel);
+        auto* frameLayout = new QVBoxLayout(frame);
+        frameLayout->setContentsMargins(0, 0, 0, 0);
+        frameLayout->addWidget(widget);
+        layout->addWidget(frame);
+    }
+
+    // One UV transform for the whole set (each map has its own in the project; the common case,
+    // tiling a texture set, edits them together).
+    auto* uvGroup = new QGroupBox(tr("UV Transform (all maps)"), content);
+    auto* uvForm = new QFormLayout(uvGroup);
+    m_uvScale->setObjectName(QStringLiteral("uvScaleSlider"));
+    m_uvOffsetU->setObjectName(QStringLiteral("uvOffsetUSlider"));
+    m_uvOffsetV->setObjectName(QStringLiteral("uvOffsetVSlider"));
+    m_uvRotation->setObjectName(QStringLiteral("uvRotationSlider"));
+    m_uvRotation->setSuffix(QStringLiteral("°"));
+    m_uvScale->setSpinRange(0.001, 1000.0);
+    uvForm->addRow(tr("Scale"), m_uvScale);
+    uvForm->addRow(tr("Offset U"), m_uvOffsetU);
+    uvForm->addRow(tr("Offset V"), m_uvOffsetV);
+    uvForm->addRow(tr("Rotation"), m_uvRotation);
+    const auto connectUv = [this](ValueSlider* slider, void (*apply)(UvTransform&, double)) {
+        connect(slider, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
+        connect(slider, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);
+        connect(slider, &ValueSlider::valueEdited, this, [this, apply](double value) {
+            Material material = m_document->project().material;
+            for (MaterialMap& map : material.maps)
+                apply(map.uv, value);
+            m_document->setMaterial(material, tr("UV Transform"), MergeId::UvTransform);
+        });
+    };
+    connectUv(m_uvScale, [](UvTransform& uv, double v) { uv.scale = glm::dvec2(v); });
+    connectUv(m_uvOffsetU, [](UvTransform& uv, double v) { uv.offset.x = v; });
+    connectUv(m_uvOffsetV, [](UvTransform& uv, double v) { uv.offset.y = v; });
+    connectUv(m_uvRotation, [](UvTransform& uv, double v) { uv.rotationDegrees = v; });
+    layout->addWidget(uvGroup);
+    layout->addStretch();
+
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidgetResizable(true);
+    scroll->setWidget(content);
+    setWidget(scroll);
+
+    m_reloadTimer->setSingleShot(true);
+    m_reloadTimer->setInterval(kReloadDelayMs);
+    connect(m_reloadTimer, &QTimer::timeout, this, &TextureMapsDock::reloadChangedFiles);
+    connect(m_watcher, &QFileSystemWatcher::fileChanged, this, &TextureMapsDock::onFileChanged);
+    connect(m_thumbnails, &ThumbnailLoader::ready, this,
+        [this](const QString& key, const QImage& image, QSize sourceSize, const QString& error, double) {
+            for (MapSlot slot : kAllMapSlots)
+                if (m_thumbnailKeys[std::size_t(slot)] == key)
+                    slotWidget(slot)->setThumbnail(image, sourceSize, error);
+        });
+    connect(m_document, &Document::changed, this, &TextureMapsDock::onDocumentChanged);
+    onDocumentChanged(DocumentChange::WholeProject);
+}
+
+TextureMapsDock::~TextureMapsDock() = default;
+
+void TextureMapsDock::onDocumentChanged(DocumentChanges changes)
+{
+    if (!(changes & (DocumentChanges(DocumentChange::MaterialFactors) | DocumentChange::MaterialMaps)))
+        return;
+    for (MapSlotWidget* widget : m_slots)
+        widget->refresh();
+    const UvTransform& uv = m_document->project().material.map(MapSlot::BaseColor).uv;
+    m_uvScale->setValue(uv.scale.x);
+    m_uvOffsetU->setValue(uv.offset.x);
+    m_uvOffsetV->setValue(uv.offset.y);
+    m_uvRotation->setValue(uv.rotationDegrees);
+    if (changes & DocumentChange::MaterialMaps) {
+        refreshThumbnails(false);
+        watchFiles();
+    }
+}
+
+void TextureMapsDock::refreshThumbnails(bool force)
+{
+    for (MapSlot slot : kAllMapSlots) {
+        const std::string& path = m_document->project().material.map(slot).path;
+        QString& key = m_thumbnailKeys[std::size_t(slot)];
+        if (path.empty()) {
+            key.clear();
+            continue;
+        }
+        const QString file = QString::fromStdString(path);
+        // The file's time is part of the key: a file rewritten on disk gets a new thumbnail.
+        const QString wanted = slotKey(slot) + u'|' + file + u'|'
+            + QString::number(QFileInfo(file).lastModified().toMSecsSinceEpoch());
+        if (wanted == key && !force)
+            continue;
+        key = wanted;
+        m_thumbnails->request(
+            key, file, ThumbnailLoader::Kind::Texture, QSize(kThumbnailPixels, kThumbnailPixels));
+    }
+}
+
+void TextureMapsDock::watchFiles()
+{
+    QStringList wanted;
+    for (const MaterialMap& map : m_document->project().material.maps)
+        if (map.hasTexture() && QFileInfo::exists(QString::fromStdString(map.path)))
+            wanted.append(QString::fromStdString(map.path));
+    wanted.removeDuplicates();
+    const QStringList watched = m_watcher->files();
+    for (const QString& file : watched)
+        if (!wanted.contains(file))
+            m_watcher->removePath(file);
+    for (const QString& file : wanted)
+        if (!watched.contains(file))
+            m_watcher->addPath(file);
+}
+
+void TextureMapsDock::onFileChanged(const QString& path)
+{
+    if (!m_changedFiles.contains(path))
+        m_changedFiles.append(path);
+    m_reloadTimer->start();
+}
+
+void TextureMapsDock::reloadChangedFiles()
+{
+    QStringList reloaded;
+    for (const QString& file : std::as_const(m_changedFiles)) {
+        // Editors often save by writing a new file and renaming it over the old one, which
+        // ends the watch: watch the new file.
+        if (QFileInfo::exists(file) && !m_watcher->files().contains(file))
+            m_watcher->addPath(file);
+        reloaded.append(QFileInfo(file).fileName());
+    }
+    m_changedFiles.clear();
+    if (reloaded.isEmpty())
+        return;
+    // The path did not change, so no edit happened: tell the observers that the maps may be
+    // stale. SceneController reloads only the maps whose file time changed, and draws again.
+    Q_EMIT m_document->changed(DocumentChange::MaterialMaps);
+    Q_EMIT message(tr("Reloaded %1 (changed on disk)").arg(reloaded.join(QStringLiteral(", "))));
+}
+
+QString TextureMapsDock::assignFiles(const QStringList& paths)
+{
+    const MapNamingResult result = assignMapsByName(paths);
+    QStringList parts;
+    for (const MapAssignment& assignment : result.assignments) {
+        QString part = MapSlotWidget::title(assignment.slot) + QStringLiteral(" ← ")
+            + QFileInfo(assignment.path).fileName();
+        if (isScalarSlot(assignment.slot) && assignment.channel != MapChannel::R)
+            part += QStringLiteral(" (%1)").arg(QString::fromLatin1(toString(assignment.channel)).toUpper());
+        if (assignment.flipGreen)
+            part += tr(" (DirectX)");
+        parts.append(part);
+    }
+    const auto names = [](const QStringList& files) {
+        QStringList out;
+        for (const QString& file : files)
+            out.append(QFileInfo(file).fileName());
+        return out.join(QStringLiteral(", "));
+    };
+    QString text;
+    if (result.assignments.empty()) {
+        text = tr("No texture maps found in %1: names should end in _basecolor, _normal, _metallic, "
+                  "_roughness, _ao or _orm")
+                   .arg(names(paths));
+    } else {
+        const Material material = withAssignedMaps(m_document->project().material, result.assignments);
+        m_document->setMaterial(material, tr("Assign Maps"));
+        text = (result.assignments.size() == 1 ? tr("Assigned 1 map: ")
+                                               : tr("Assigned %1 maps: ").arg(result.assignments.size()))
+            + parts.join(QStringLiteral(", "));
+    }
+    if (!result.unmatched.isEmpty())
+        text += tr("; not used: %1").arg(names(result.unmatched));
+    if (!result.notImages.isEmpty())
+        text += tr("; not images: %1").arg(names(result.notImages));
+    report(text);
+    return text;
+}
+
+void TextureMapsDock::report(const QString& text)
+{
+    m_messageLabel->setText(text);
+    m_messageLabel->show();
+    Q_EMIT message(text);
+}
+
+QString TextureMapsDock::lastMessage() const
+{
+    return m_messageLabel->text();
+}
+
+int TextureMapsDock::pendingThumbnails() const
+{
+    return m_thumbnails->pending();
+}
+
+void TextureMapsDock::assignFolder()
+{
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Assign Texture Folder"));
+    if (!folder.isEmpty())
+        assignFiles({folder});
+}
+
+void TextureMapsDock::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (event->mimeData()->hasUrls())
+        event->acceptProposedAction();
+}
+
+void TextureMapsDock::dropEvent(QDropEvent* event)
+{
+    QStringList files;
+    for (const QUrl& url : event->mimeData()->urls())
+        if (url.isLocalFile())
+            files.append(url.toLocalFile());
+    if (files.isEmpty()) {
+        report(tr("Nothing to assign: only local files and folders can be dropped"));
+        return;
+    }
+    event->acceptProposedAction();
+    assignFiles(files);
+}
+
+} // namespace facet

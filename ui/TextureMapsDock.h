@@ -1,0 +1,71 @@
+#pragma once
+// The Texture maps dock: one MapSlotWidget per material map, a UV transform for the whole set,
+// and the texture set as a whole: dropping a folder or several files (anywhere on the dock)
+// assigns maps by name (ui/MapNaming.h) in one undo step and says what it assigned. Texture
+// files that change on disk are reloaded (QFileSystemWatcher): that map only.
+
+#include "core/Material.h"
+#include "ui/DocumentChanges.h"
+
+#include <QDockWidget>
+#include <QHash>
+
+#include <array>
+
+class QFileSystemWatcher;
+class QLabel;
+class QTimer;
+
+namespace facet {
+
+class Document;
+class MapSlotWidget;
+class ThumbnailLoader;
+class ValueSlider;
+
+class TextureMapsDock : public QDockWidget {
+    Q_OBJECT
+public:
+    explicit TextureMapsDock(Document* document, QWidget* parent = nullptr);
+    ~TextureMapsDock() override;
+
+    MapSlotWidget* slotWidget(MapSlot slot) const { return m_slots[std::size_t(slot)]; }
+    // Assigns the files (folders are listed) by name as one undo step "Assign Maps" and returns
+    // the message it also emits: what went where, and what was not used.
+    QString assignFiles(const QStringList& paths);
+    // The last assignment message (also in the dock).
+    QString lastMessage() const;
+    // Thumbnail jobs still running (tests wait for 0).
+    int pendingThumbnails() const;
+
+Q_SIGNALS:
+    void message(const QString& text);
+
+protected:
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    void onDocumentChanged(DocumentChanges changes);
+    void refreshThumbnails(bool force);
+    void watchFiles();
+    void onFileChanged(const QString& path);
+    void reloadChangedFiles();
+    void assignFolder();
+    void report(const QString& text);
+
+    Document* m_document;
+    std::array<MapSlotWidget*, kMapSlotCount> m_slots {};
+    ThumbnailLoader* m_thumbnails;
+    QFileSystemWatcher* m_watcher;
+    QTimer* m_reloadTimer;
+    QStringList m_changedFiles;
+    QLabel* m_messageLabel;
+    std::array<QString, kMapSlotCount> m_thumbnailKeys; // what each slot's thumbnail shows
+    ValueSlider* m_uvScale;
+    ValueSlider* m_uvOffsetU;
+    ValueSlider* m_uvOffsetV;
+    ValueSlider* m_uvRotation;
+};
+
+} // namespace facet

@@ -1,0 +1,139 @@
+#include "ui/ThumbnailLoader.h"
+
+#include "core/Environment.h"
+#include "core/Project.h"
+#include "core/ToneMap.h"
+
+#include <QElapsedTimer>
+
+#include <algorithm>
+#include <cmath>
+
+namespace facet {
+
+namespace {
+
+// The average of the source texels under each thumbnail pixel (a box filter: an equirect's sun
+// must not vanish between point samples).
+std::vector<glm::vec4> boxDownsample(const Image& image, int width, int height)
+{
+    std::vector<glm::vec4> out(std::size_t(width) * std::size_t(height), glm::vec4(0.0f));
+    for (int y = 0; y < height; ++y) {
+        const int y0 = y * image.height() / height;
+        const int y1 = std::max(y0 + 1, (y + 1) * image.height() / height);
+        for (int x = 0; x < width; ++x) {
+            const int x0 = x * image.width() / width;
+            const int x1 = std::max(x0 + 1, (x + 1) * image.width() / width);
+            glm::dvec4 sum(0.0);
+            for (int sy = y0; sy < y1; ++sy)
+                for (int sx = x0; sx < x1; ++sx)
+                    sum += glm::dvec4(image.at(sx, sy));
+            out[std::size_t(y) * std::size_t(width) + std::size_t(x)]
+                = glm::vec4(sum / double((x1 - x0) * (y1 - y0)));
+        }
+    }
+    return out;
+}
+
+QSize fitted(QSize source, QSize box)
+{
+    return source.scaled(box, Qt::KeepAspectRatio).expandedTo(QSize(1, 1));
+}
+
+int toByte(double v)
+{
+    return int(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+}
+
+} // namespace
+
+ThumbnailLoader::ThumbnailLoader(QObject* parent)
+    : QObject(parent)
+{
+    m_pool.setMaxThreadCount(1);
+}
+
+ThumbnailLoader::~ThumbnailLoader()
+{
+    m_stopping = true;
+    m_pool.clear();
+    m_pool.waitForDone();
+}
+
+void ThumbnailLoader::request(const QString& key, const QString& source, Kind kind, QSize size)
+{
+    ++m_pending;
+    m_pool.start([this, key, source, kind, size] {
+        QElapsedTimer clock;
+        clock.start();
+        QImage thumbnail;
+        QSize sourceSize;
+        std::string error;
+        if (!m_stopping) {
+            if (kind == Kind::Environment) {
+                const std::string spec = source.toStdString();
+                std::optional<Environment> environment;
+                if (const auto builtin = Environment::builtinFromName(spec))
+                    environment = Environment::builtin(*builtin, 256); // procedural: make it small
+                else
+                    environment = Environment::fromSpec(spec, &error);
+                if (environment) {
+                    sourceSize = QSize(environment->image().width(), environment->image().height());
+                    thumbnail = environmentThumbnail(environment->image(), size);
+                }
+            } else if (std::optional<Image> image = Image::load(source.toStdString(), &error)) {
+                sourceSize = QSize(image->width(), image->height());
+                thumbnail = textureThumbnail(*image, size);
+            }
+        }
+        const double ms = double(clock.nsecsElapsed()) / 1e6;
+        const QString message = QString::fromStdString(error);
+        QMetaObject::invokeMethod(
+            this,
+            [this, key, thumbnail, sourceSize, message, ms] {
+                --m_pending;
+                Q_EMIT ready(key, thumbnail, sourceSize, message, ms);
+            },
+            Qt::QueuedConnection);
+    });
+}
+
+QImage ThumbnailLoader::environmentThumbnail(const Image& equirect, QSize size)
+{
+    if (equirect.isEmpty())
+        return {};
+    const QSize target = fitted(QSize(equirect.width(), equirect.height()), size);
+    const std::vector<glm::vec4> pixels = boxDownsample(equirect, target.width(), target.height());
+    QImage image(target, QImage::Format_RGB32);
+    for (int y = 0; y < target.height(); ++y) {
+        auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
+        for (int x = 0; x < target.width(); ++x) {
+            const glm::vec4& p = pixels[std::size_t(y) * std::size_t(target.width()) + std::size_t(x)];
+            const glm::dvec3 display = tonemap::displayTransform(
+                glm::dvec3(p.r, p.g, p.b), 0.0, ToneMapper::KhronosNeutral, DisplayEncoding::SRGB, 2.2);
+            line[x] = qRgb(toByte(display.r), toByte(display.g), toByte(display.b));
+        }
+    }
+    return image;
+}
+
+QImage ThumbnailLoader::textureThumbnail(const Image& source, QSize size)
+{
+    if (source.isEmpty())
+        return {};
+    const QSize target = fitted(QSize(source.width(), source.height()), size);
+    const std::vector<glm::vec4> pixels = boxDownsample(source, target.width(), target.height());
+    QImage image(target, QImage::Format_RGB32);
+    for (int y = 0; y < target.height(); ++y) {
+        auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
+        for (int x = 0; x < target.width(); ++x) {
+            // The stored numbers as they are: sRGB colour maps look as painted, data maps (normal,
+            // roughness) show their values, as image viewers show them.
+            const glm::vec4& p = pixels[std::size_t(y) * std::size_t(target.width()) + std::size_t(x)];
+            line[x] = qRgb(toByte(p.r), toByte(p.g), toByte(p.b));
+        }
+    }
+    return image;
+}
+
+} // namespace facet

@@ -1,0 +1,52 @@
+#pragma once
+// Small previews of images, made off the GUI thread: texture maps (the stored numbers, clamped)
+// and equirectangular environments (box-filtered down, tone-mapped with Khronos PBR Neutral and
+// sRGB-encoded, so an HDR shows as the viewport would show it at exposure 0). One worker thread:
+// the machine's cores are shared with the renderer.
+//
+// request() queues a job; ready() arrives on the GUI thread with the key it was asked for.
+// Destroying the loader drops queued jobs and waits for the running one.
+
+#include "core/Image.h"
+
+#include <QImage>
+#include <QObject>
+#include <QSize>
+#include <QString>
+#include <QThreadPool>
+
+#include <atomic>
+
+namespace facet {
+
+class ThumbnailLoader : public QObject {
+    Q_OBJECT
+public:
+    enum class Kind { Texture, Environment };
+
+    explicit ThumbnailLoader(QObject* parent = nullptr);
+    ~ThumbnailLoader() override;
+
+    // `source`: a file path, or for environments anything Environment::fromSpec() accepts
+    // ("studio", "sky", "uniform:1"). `size`: the thumbnail's bounding box.
+    void request(const QString& key, const QString& source, Kind kind, QSize size);
+    // Jobs queued or running.
+    int pending() const { return m_pending.load(); }
+
+    // The conversions the jobs run (public for tests and for callers that already hold an image).
+    static QImage environmentThumbnail(const Image& equirect, QSize size);
+    static QImage textureThumbnail(const Image& image, QSize size);
+
+Q_SIGNALS:
+    // `image` is null when the source could not be read (`error` says why, naming the file).
+    // `sourceSize` is the full image's size; `milliseconds` the time the job took.
+    void ready(
+        const QString& key, const QImage& image, QSize sourceSize, const QString& error, double milliseconds);
+
+private:
+    QThreadPool m_pool;
+    std::atomic<bool> m_stopping {false};
+    std::atomic<int> m_pending {0};
+};
+
+} // namespace facet

@@ -1,0 +1,142 @@
+// Includes epoxy (render/'s GL loader) and no Qt GL header: the two must not meet in one file.
+#include <epoxy/gl.h>
+
+#include "ui/ViewportRenderer.h"
+
+#include "render/Framebuffer.h"
+#include "render/Renderer.h"
+#include "ui/SceneController.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+
+#include <algorithm>
+#include <cmath>
+
+namespace facet {
+
+namespace {
+
+// The empty viewport's grey (ViewportWidget::kClearGrey), shown when a frame cannot be drawn.
+constexpr float kFailureGrey = 0.18f;
+
+} // namespace
+
+QString ViewportFrameStats::summary() const
+{
+    QString text = QCoreApplication::translate("ViewportRenderer", "%1×%2 · %3 ms")
+                       .arg(width)
+                       .arg(height)
+                       .arg(frameMs, 0, 'f', 0);
+    if (reduced)
+        text += QCoreApplication::translate("ViewportRenderer", " (preview)");
+    return text;
+}
+
+ViewportRenderer::ViewportRenderer(const QString& cacheDirectory)
+    : m_precompute(std::make_unique<IblPrecompute>(cacheDirectory))
+    , m_renderer(std::make_unique<Renderer>())
+{
+}
+
+ViewportRenderer::~ViewportRenderer()
+{
+    // GL objects go while the caller holds the context current: textures first, then their makers.
+    m_ibl.reset();
+    m_hdr.reset();
+    m_display.reset();
+    m_renderer.reset();
+    m_precompute.reset();
+}
+
+bool ViewportRenderer::needsIbl(const SceneController& scene) const
+{
+    return m_iblKey != scene.iblKey();
+}
+
+bool ViewportRenderer::ensureTarget(
+    std::unique_ptr<Framebuffer>& target, int width, int height, std::string* error)
+{
+    if (target && target->width() == width && target->height() == height)
+        return true;
+    target.reset();
+    std::optional<Framebuffer> made = Framebuffer::create(width, height, FramebufferFormat::RGBA16F, error);
+    if (!made)
+        return false;
+    target = std::make_unique<Framebuffer>(std::move(*made));
+    return true;
+}
+
+bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFramebuffer, int width, int height,
+    double scale, std::string* error)
+{
+    QElapsedTimer clock;
+    clock.start();
+    m_stats.iblMs = 0.0;
+    const auto fail = [&](const std::string& problem) {
+        *error = "ViewportRenderer::paint: " + problem;
+        glBindFramebuffer(GL_FRAMEBUFFER, targetFramebuffer);
+        glViewport(0, 0, width, height);
+        glClearColor(kFailureGrey, kFailureGrey, kFailureGrey, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        return false;
+    };
+
+    if (m_iblKey != scene.iblKey()) {
+        // A new environment or quality: fetch its IBL textures (memory, disk) or compute them.
+        m_iblKey = scene.iblKey();
+        m_iblError.clear();
+        std::string problem;
+        IblStats iblStats;
+        std::shared_ptr<const IblTextures> ibl
+            = m_precompute->prepare(scene.assets().environment, scene.iblSettings(), &iblStats, &problem);
+        m_stats.ibl = iblStats;
+        m_stats.iblMs = iblStats.msTotal;
+        if (ibl)
+            m_ibl = std::move(ibl);
+        else
+            m_iblError = problem;
+    }
+    if (!m_iblError.empty() && !m_ibl)
+        return fail(m_iblError);
+
+    scale = std::clamp(scale, 0.05, 1.0);
+    const bool reduced = scale < 1.0;
+    const int renderWidth = std::max(1, int(std::lround(width * scale)));
+    const int renderHeight = std::max(1, int(std::lround(height * scale)));
+    std::string problem;
+    if (!ensureTarget(m_hdr, renderWidth, renderHeight, &problem))
+        return fail(problem);
+
+    const RenderScene frame = scene.scene(m_ibl);
+    if (!m_renderer->render(frame, *m_hdr, &problem))
+        return fail(problem);
+    if (!reduced) {
+        if (!m_renderer->toneMapTo(*m_hdr, targetFramebuffer, frame.view, &problem))
+            return fail(problem);
+    } else {
+        if (!ensureTarget(m_display, renderWidth, renderHeight, &problem))
+            return fail(problem);
+        if (!m_renderer->toneMap(*m_hdr, *m_display, frame.view, &problem))
+            return fail(problem);
+        // Stretch the small display-encoded image over the widget (bilinear).
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, m_display->framebufferId());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);
+        glBlitFramebuffer(
+            0, 0, renderWidth, renderHeight, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, targetFramebuffer);
+    glViewport(0, 0, width, height);
+    // Honest frame times: wait for the GPU (llvmpipe renders on the CPU anyway).
+    glFinish();
+
+    ++m_stats.frameNumber;
+    m_stats.width = renderWidth;
+    m_stats.height = renderHeight;
+    m_stats.reduced = reduced;
+    m_stats.frameMs = double(clock.nsecsElapsed()) / 1e6 - m_stats.iblMs;
+    m_stats.render = m_renderer->lastFrameStats();
+    return true;
+}
+
+} // namespace facet
