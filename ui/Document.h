@@ -107,6 +107,11 @@ public:
     void applyUndoableState(const Project& state);
     int interactionSerial() const { return m_interactionSerial; }
 
+    // Files the project refers to changed on disk (a texture re-saved by an image editor): not
+    // an edit (no undo step, the project value is the same), but observers must re-read them.
+    // Emits changed(changes); SceneController reloads only files whose time changed.
+    void notifyFilesChangedOnDisk(DocumentChanges changes) { Q_EMIT changed(changes); }
+
 Q_SIGNALS:
     // After every change of project(): edits, undo, redo, New, Open, recovery.
     void changed(facet::DocumentChanges changes);

@@ -201,9 +201,8 @@ void TextureMapsDock::reloadChangedFiles()
     m_changedFiles.clear();
     if (reloaded.isEmpty())
         return;
-    // The path did not change, so no edit happened: tell the observers that the maps may be
-    // stale. SceneController reloads only the maps whose file time changed, and draws again.
-    Q_EMIT m_document->changed(DocumentChange::MaterialMaps);
+    // The path did not change, so no edit happened: the maps may just be stale.
+    m_document->notifyFilesChangedOnDisk(DocumentChange::MaterialMaps);
     Q_EMIT message(tr("Reloaded %1 (changed on disk)").arg(reloaded.join(QStringLiteral(", "))));
 }
 
