@@ -14,9 +14,9 @@
 // 47% -> 4%, studio r 0.7: 126% -> 45%).
 
 #include "core/GroundTruth.h"
+#include "core/ImageMetrics.h"
 #include "core/Project.h"
 #include "core/ProjectAssets.h"
-#include "core/ReferenceView.h"
 #include "render/Framebuffer.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblPrecompute.h"
@@ -63,22 +63,6 @@ Project accuracyProject(const QString& hdri, Kind kind, double roughness)
     }
     project.material.setFactor(MapSlot::Roughness, roughness);
     return project;
-}
-
-double relativeRmse(const Image& test, const Image& truth)
-{
-    double num = 0.0;
-    double den = 0.0;
-    for (int y = 0; y < truth.height(); ++y)
-        for (int x = 0; x < truth.width(); ++x) {
-            if (!referenceview::isInteriorSpherePixel(x, y, truth.width(), truth.height()))
-                continue;
-            const glm::dvec3 a(glm::vec3(test.at(x, y)));
-            const glm::dvec3 b(glm::vec3(truth.at(x, y)));
-            num += glm::dot(a - b, a - b);
-            den += glm::dot(b, b);
-        }
-    return den > 0.0 ? std::sqrt(num / den) : 0.0;
 }
 
 } // namespace
