@@ -1,5 +1,7 @@
 #include "BenchCommand.h"
 
+#include "CommandOptions.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -288,26 +290,14 @@ std::vector<BenchConfig> BenchCommand::configsFor(const QStringList& groups)
 QString BenchCommand::helpText()
 {
     Options options;
-    QString text = options.parser.helpText();
-    text.replace(QStringLiteral("<executable_name>"), QStringLiteral("facet bench"));
-    return text;
+    return commandHelpText(options.parser, QStringLiteral("facet bench"));
 }
 
 std::optional<BenchRequest> BenchCommand::parse(const QStringList& arguments, QString* error, int* exitCode)
 {
-    *exitCode = kExitUsage;
     Options o;
-    QStringList withProgram = arguments;
-    withProgram.prepend(QStringLiteral("facet bench"));
-    if (!o.parser.parse(withProgram)) {
-        *error = o.parser.errorText();
+    if (!parseCommandOptions(o, arguments, QStringLiteral("facet bench"), kExitUsage, error, exitCode))
         return std::nullopt;
-    }
-    if (o.parser.isSet(o.help)) {
-        *exitCode = 0;
-        *error = helpText();
-        return std::nullopt;
-    }
     if (!o.parser.positionalArguments().isEmpty()) {
         *error = QStringLiteral("unexpected argument '%1' (bench takes options only)")
                      .arg(o.parser.positionalArguments().first());

@@ -1,5 +1,6 @@
 #include "RenderCommand.h"
 
+#include "CommandOptions.h"
 #include "OffscreenRender.h"
 
 #include <cmath>
@@ -107,26 +108,14 @@ bool parseNumber(const QString& flag, const QString& text, double low, double hi
 QString RenderCommand::helpText()
 {
     Options options;
-    QString text = options.parser.helpText();
-    text.replace(QStringLiteral("<executable_name>"), QStringLiteral("facet render"));
-    return text;
+    return commandHelpText(options.parser, QStringLiteral("facet render"));
 }
 
 std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, QString* error, int* exitCode)
 {
-    *exitCode = kExitUsage;
     Options o;
-    QStringList withProgram = arguments;
-    withProgram.prepend(QStringLiteral("facet render"));
-    if (!o.parser.parse(withProgram)) {
-        *error = o.parser.errorText();
+    if (!parseCommandOptions(o, arguments, QStringLiteral("facet render"), kExitUsage, error, exitCode))
         return std::nullopt;
-    }
-    if (o.parser.isSet(o.help)) {
-        *exitCode = 0;
-        *error = helpText();
-        return std::nullopt;
-    }
 
     RenderRequest request;
     const QStringList positional = o.parser.positionalArguments();

@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include <QFile>
-#include <QProcess>
 #include <QProcessEnvironment>
 #include <QTemporaryDir>
 #include <QtTest/QTest>
@@ -14,32 +13,15 @@
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
+using Result = facet::test::ProcessResult;
 
 Result runFacet(const QStringList& arguments, const QString& cacheDir)
 {
-    QProcess process;
-    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    environment.remove(QStringLiteral("DISPLAY"));
-    environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
     // The test's own caches (never the user's) and the sample data the build was configured with.
-    environment.insert(QStringLiteral("FACET_CACHE_DIR"), cacheDir);
-    environment.insert(QStringLiteral("FACET_ASSETS_DIR"), facet::test::assetsDir());
-    process.setProcessEnvironment(environment);
-    process.start(QStringLiteral(FACET_EXECUTABLE), arguments);
-    Result result;
-    if (!process.waitForFinished(300000)) {
-        result.err = QStringLiteral("did not finish");
-        return result;
-    }
-    result.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-    result.out = QString::fromUtf8(process.readAllStandardOutput());
-    result.err = QString::fromUtf8(process.readAllStandardError());
-    return result;
+    QProcessEnvironment extra;
+    extra.insert(QStringLiteral("FACET_CACHE_DIR"), cacheDir);
+    extra.insert(QStringLiteral("FACET_ASSETS_DIR"), facet::test::assetsDir());
+    return facet::test::runWithoutDisplay(QStringLiteral(FACET_EXECUTABLE), arguments, extra);
 }
 
 struct Csv {

@@ -7,21 +7,13 @@
 // To (re)create the goldens after an intended change: FACET_UPDATE_GOLDEN=1 DebugViewGoldenGLTest,
 // then look at the images and say in the commit why they changed.
 
-#include "core/Environment.h"
 #include "core/Image.h"
 #include "core/Project.h"
-#include "core/ProjectAssets.h"
-#include "render/Framebuffer.h"
-#include "render/HeadlessGLContext.h"
-#include "render/IblPrecompute.h"
-#include "render/IblSettings.h"
-#include "render/Renderer.h"
-#include "render/SceneFromProject.h"
 
+#include "ReferenceViewRenderer.h"
 #include "TestSupport.h"
 
 #include <QDir>
-#include <QTemporaryDir>
 #include <QtTest/QTest>
 
 #include <algorithm>
@@ -71,32 +63,17 @@ public:
 
 private Q_SLOTS:
     void initTestCase();
-    void cleanupTestCase();
     void matchesGolden_data();
     void matchesGolden();
 
 private:
-    std::optional<HeadlessGLContext> m_context;
-    QTemporaryDir m_cacheDir;
-    std::optional<IblPrecompute> m_ibl;
-    std::optional<Renderer> m_renderer;
+    facet::test::ReferenceViewRenderer m_gpu;
 };
 
 void DebugViewGoldenGLTest::initTestCase()
 {
     std::string error;
-    m_context = HeadlessGLContext::create(&error);
-    QVERIFY2(m_context, error.c_str());
-    QVERIFY(m_cacheDir.isValid());
-    m_ibl.emplace(m_cacheDir.path(), /*useDiskCache=*/false);
-    m_renderer.emplace();
-}
-
-void DebugViewGoldenGLTest::cleanupTestCase()
-{
-    m_renderer.reset();
-    m_ibl.reset();
-    m_context.reset();
+    QVERIFY2(m_gpu.initialize(&error), error.c_str());
 }
 
 void DebugViewGoldenGLTest::matchesGolden_data()
@@ -144,19 +121,9 @@ void DebugViewGoldenGLTest::matchesGolden()
     project.material.setFactor(MapSlot::Metallic, 1.0);
     project.material.setFactor(MapSlot::Roughness, 0.4);
     std::string error;
-    const auto assets = loadProjectAssets(project, &error);
-    QVERIFY2(assets, error.c_str());
-    const auto settings = IblSettings::preset("draft");
-    QVERIFY(settings);
-    const auto ibl = m_ibl->prepare(assets->environment, *settings, nullptr, &error);
-    QVERIFY2(ibl, error.c_str());
-    SceneOptions options;
-    options.referenceView = true;
-    const RenderScene scene = sceneFromProject(project, *assets, ibl, options);
-    auto target = Framebuffer::create(kSize, kSize, FramebufferFormat::RGBA32F, &error);
-    QVERIFY2(target, error.c_str());
-    QVERIFY2(m_renderer->render(scene, *target, &error), error.c_str());
-    const Image actual = target->readPixels();
+    const auto rendered = m_gpu.render(project, "draft", kSize, &error);
+    QVERIFY2(rendered, error.c_str());
+    const Image& actual = *rendered;
 
     const QString goldenPath = facet::test::sourceDir() + QStringLiteral("/tests/data/golden/debug-") + view
         + QStringLiteral(".exr");
@@ -172,16 +139,17 @@ void DebugViewGoldenGLTest::matchesGolden()
 
     const Difference d = compare(actual, *golden);
     std::printf("  %-22s max %.5f (tolerance %.4g), mean %.6f (tolerance %.4g)\n", qPrintable(view), d.max,
-                maxTolerance, d.mean, meanTolerance);
+        maxTolerance, d.mean, meanTolerance);
     if (!(d.max <= maxTolerance && d.mean <= meanTolerance)) {
         const QString stem = facet::test::outputDir() + QStringLiteral("/golden-debug-") + view;
         std::string ignored;
         actual.save((stem + QStringLiteral("-actual.exr")).toStdString(), &ignored, false);
         d.image.save((stem + QStringLiteral("-diff.exr")).toStdString(), &ignored, false);
     }
-    QVERIFY2(d.max <= maxTolerance, qPrintable(QStringLiteral("max difference %1 > %2").arg(d.max).arg(maxTolerance)));
+    QVERIFY2(d.max <= maxTolerance,
+        qPrintable(QStringLiteral("max difference %1 > %2").arg(d.max).arg(maxTolerance)));
     QVERIFY2(d.mean <= meanTolerance,
-             qPrintable(QStringLiteral("mean difference %1 > %2").arg(d.mean).arg(meanTolerance)));
+        qPrintable(QStringLiteral("mean difference %1 > %2").arg(d.mean).arg(meanTolerance)));
 }
 
 QTEST_GUILESS_MAIN(DebugViewGoldenGLTest)

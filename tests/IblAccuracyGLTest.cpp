@@ -16,23 +16,14 @@
 #include "core/GroundTruth.h"
 #include "core/ImageMetrics.h"
 #include "core/Project.h"
-#include "core/ProjectAssets.h"
-#include "render/Framebuffer.h"
-#include "render/HeadlessGLContext.h"
-#include "render/IblPrecompute.h"
-#include "render/IblSettings.h"
-#include "render/Renderer.h"
-#include "render/SceneFromProject.h"
 
+#include "ReferenceViewRenderer.h"
 #include "TestSupport.h"
 
-#include <QTemporaryDir>
 #include <QtTest/QTest>
 
 #include <cmath>
 #include <cstdio>
-#include <map>
-#include <memory>
 #include <optional>
 #include <string>
 
@@ -74,32 +65,17 @@ public:
 
 private Q_SLOTS:
     void initTestCase();
-    void cleanupTestCase();
     void gpuAgainstGroundTruth_data();
     void gpuAgainstGroundTruth();
 
 private:
-    std::optional<HeadlessGLContext> m_context;
-    QTemporaryDir m_cacheDir;
-    std::optional<IblPrecompute> m_ibl;
-    std::optional<Renderer> m_renderer;
+    facet::test::ReferenceViewRenderer m_gpu;
 };
 
 void IblAccuracyGLTest::initTestCase()
 {
     std::string error;
-    m_context = HeadlessGLContext::create(&error);
-    QVERIFY2(m_context, error.c_str());
-    QVERIFY(m_cacheDir.isValid());
-    m_ibl.emplace(m_cacheDir.path(), /*useDiskCache=*/false); // memory cache: each HDRI once
-    m_renderer.emplace();
-}
-
-void IblAccuracyGLTest::cleanupTestCase()
-{
-    m_renderer.reset();
-    m_ibl.reset();
-    m_context.reset();
+    QVERIFY2(m_gpu.initialize(&error), error.c_str());
 }
 
 void IblAccuracyGLTest::gpuAgainstGroundTruth_data()
@@ -158,23 +134,10 @@ void IblAccuracyGLTest::gpuAgainstGroundTruth()
     FACET_REQUIRE_ASSET(path, qPrintable(hdri + QStringLiteral(".exr")));
 
     const Project project = accuracyProject(path, Kind(kind), roughness);
-    std::string error;
-    const auto assets = loadProjectAssets(project, &error);
-    QVERIFY2(assets, error.c_str());
-
     // The GPU: the default preset, the reference view, linear radiance in RGBA32F.
-    const auto settings = IblSettings::preset("default");
-    QVERIFY(settings);
-    const auto ibl = m_ibl->prepare(assets->environment, *settings, nullptr, &error);
-    QVERIFY2(ibl, error.c_str());
-    SceneOptions options;
-    options.referenceView = true;
-    options.irradianceFromSH = settings->irradiance == IblSettings::Irradiance::SH;
-    const RenderScene scene = sceneFromProject(project, *assets, ibl, options);
-    auto target = Framebuffer::create(kSize, kSize, FramebufferFormat::RGBA32F, &error);
-    QVERIFY2(target, error.c_str());
-    QVERIFY2(m_renderer->render(scene, *target, &error), error.c_str());
-    const Image gpu = target->readPixels();
+    std::string error;
+    const auto gpu = m_gpu.render(project, "default", kSize, &error);
+    QVERIFY2(gpu, error.c_str());
 
     // The ground truth of the same project.
     const auto truthScene = groundTruthSceneFromProject(project, &error);
@@ -185,20 +148,21 @@ void IblAccuracyGLTest::gpuAgainstGroundTruth()
     truthSettings.samplesPerPixel = kSamplesPerPixel;
     const Image truth = renderGroundTruth(*truthScene, truthSettings);
 
-    const double error2 = relativeRmse(gpu, truth);
+    const double error2 = relativeRmse(*gpu, truth);
     std::printf("  %-6s %-10s r %.2f: relative RMSE %.4f (bound %.3f)\n", qPrintable(hdri),
-                Kind(kind) == Kind::Metal ? "metal" : "dielectric", roughness, error2, bound);
+        Kind(kind) == Kind::Metal ? "metal" : "dielectric", roughness, error2, bound);
     if (!(error2 < bound)) {
-        const QString stem = facet::test::outputDir() + QStringLiteral("/accuracy-") + QString::fromLatin1(QTest::currentDataTag());
+        const QString stem = facet::test::outputDir() + QStringLiteral("/accuracy-")
+            + QString::fromLatin1(QTest::currentDataTag());
         std::string ignored;
-        gpu.save((stem + QStringLiteral("-gpu.exr")).toStdString(), &ignored);
+        gpu->save((stem + QStringLiteral("-gpu.exr")).toStdString(), &ignored);
         truth.save((stem + QStringLiteral("-truth.exr")).toStdString(), &ignored);
     }
     QVERIFY2(std::isfinite(error2) && error2 < bound,
-             qPrintable(QStringLiteral("relative RMSE %1 >= bound %2 (images in %3)")
-                            .arg(error2)
-                            .arg(bound)
-                            .arg(facet::test::outputDir())));
+        qPrintable(QStringLiteral("relative RMSE %1 >= bound %2 (images in %3)")
+                       .arg(error2)
+                       .arg(bound)
+                       .arg(facet::test::outputDir())));
 }
 
 QTEST_GUILESS_MAIN(IblAccuracyGLTest)

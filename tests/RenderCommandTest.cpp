@@ -1,8 +1,6 @@
 // `facet render` as scripts drive it: the executable run with no display server, its output
 // images read back, its errors and exit codes.
 
-#include <QProcess>
-#include <QProcessEnvironment>
 #include <QTemporaryDir>
 #include <QtTest/QTest>
 
@@ -18,29 +16,11 @@ using namespace facet;
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    QString out;
-    QString err;
-};
+using Result = facet::test::ProcessResult;
 
 Result runFacet(const QStringList& arguments)
 {
-    QProcess process;
-    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
-    environment.remove(QStringLiteral("DISPLAY"));
-    environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
-    process.setProcessEnvironment(environment);
-    process.start(QStringLiteral(FACET_EXECUTABLE), arguments);
-    Result result;
-    if (!process.waitForFinished(300000)) {
-        result.err = QStringLiteral("did not finish");
-        return result;
-    }
-    result.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
-    result.out = QString::fromUtf8(process.readAllStandardOutput());
-    result.err = QString::fromUtf8(process.readAllStandardError());
-    return result;
+    return facet::test::runWithoutDisplay(QStringLiteral(FACET_EXECUTABLE), arguments);
 }
 
 } // namespace

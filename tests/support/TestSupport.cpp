@@ -4,6 +4,7 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QProcess>
 
 namespace facet::test {
 
@@ -40,6 +41,27 @@ std::string describe(const glm::dvec3& v, int digits)
     char text[128];
     std::snprintf(text, sizeof text, "(%.*g, %.*g, %.*g)", digits, v.x, digits, v.y, digits, v.z);
     return text;
+}
+
+ProcessResult runWithoutDisplay(const QString& executable, const QStringList& arguments,
+                                const QProcessEnvironment& extra)
+{
+    QProcess process;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.remove(QStringLiteral("DISPLAY"));
+    environment.remove(QStringLiteral("WAYLAND_DISPLAY"));
+    environment.insert(extra);
+    process.setProcessEnvironment(environment);
+    process.start(executable, arguments);
+    ProcessResult result;
+    if (!process.waitForFinished(300000)) {
+        result.err = QStringLiteral("did not finish");
+        return result;
+    }
+    result.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -1;
+    result.out = QString::fromUtf8(process.readAllStandardOutput());
+    result.err = QString::fromUtf8(process.readAllStandardError());
+    return result;
 }
 
 } // namespace facet::test

@@ -3,7 +3,9 @@
 
 #include <string>
 
+#include <QProcessEnvironment>
 #include <QString>
+#include <QStringList>
 #include <QtTest/QTest>
 
 #include <glm/vec3.hpp>
@@ -27,6 +29,18 @@ bool runningInCi();
 // GL tests call this from initMain(), before any Q*Application: they must get their surfaceless
 // EGL context with no display server at all, as the headless commands do.
 void forgetDisplayServer();
+
+// What a finished child process said.
+struct ProcessResult {
+    int exitCode = -1; // -1: crashed or did not finish (then `err` says "did not finish")
+    QString out;
+    QString err;
+};
+// Runs `executable` as the headless commands must run: with no display server (DISPLAY and
+// WAYLAND_DISPLAY removed from the environment), plus the variables in `extra`. Waits up to five
+// minutes.
+ProcessResult runWithoutDisplay(const QString& executable, const QStringList& arguments,
+                                const QProcessEnvironment& extra = QProcessEnvironment());
 
 // "(x, y, z)" with `digits` significant digits, for failure messages.
 std::string describe(const glm::dvec3& v, int digits = 6);

@@ -1,0 +1,39 @@
+#pragma once
+// For GL tests that render DESIGN.md's reference view of a project on the GPU, as `facet render
+// --reference-view` does: one surfaceless EGL context, an IBL precompute with its memory cache
+// only (each environment is prepared once per test executable, never read from or written to
+// the user's disk cache) and one Renderer, torn down in the right order.
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/Image.h"
+
+namespace facet {
+struct Project;
+}
+
+namespace facet::test {
+
+class ReferenceViewRenderer {
+public:
+    ReferenceViewRenderer();
+    ~ReferenceViewRenderer();
+    ReferenceViewRenderer(const ReferenceViewRenderer&) = delete;
+    ReferenceViewRenderer& operator=(const ReferenceViewRenderer&) = delete;
+
+    // Makes the context, the precompute and the renderer; false with *error if there is no GL.
+    bool initialize(std::string* error);
+
+    // Linear radiance (RGBA32F read back) of `project`'s reference view, size x size, with the IBL
+    // preset `preset` ("draft", "default", "high"). nullopt with *error on any failure.
+    std::optional<Image> render(
+        const Project& project, const std::string& preset, int size, std::string* error);
+
+private:
+    struct State;
+    std::unique_ptr<State> m_state;
+};
+
+} // namespace facet::test
