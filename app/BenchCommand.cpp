@@ -21,7 +21,7 @@
 
 #include "BenchReport.h"
 #include "GroundTruthCache.h"
-#include "OffscreenRender.h"
+#include "render/OffscreenRender.h"
 
 #include "core/Environment.h"
 #include "core/GroundTruth.h"

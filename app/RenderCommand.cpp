@@ -1,7 +1,7 @@
 #include "RenderCommand.h"
 
 #include "CommandOptions.h"
-#include "OffscreenRender.h"
+#include "render/OffscreenRender.h"
 
 #include <cmath>
 #include <cstdio>

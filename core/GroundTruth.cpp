@@ -172,6 +172,9 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
         }
     }
     glm::dvec3 radiance = sum / double(count);
+    // Emission is part of the outgoing radiance (the rendering equation's L_e term).
+    if (!lambertOnly)
+        radiance += material.emissive;
 
     // Punctual lights: the position on the unit sphere is its normal.
     for (const Light& light : scene.lights) {
@@ -202,7 +205,10 @@ Image renderGroundTruth(const GroundTruthScene& scene, const GroundTruthSettings
             for (int x = 0; x < settings.width; ++x) {
                 const glm::dvec3 direction = referenceview::rayDirection(x, y, settings.width, settings.height);
                 glm::dvec3 radiance;
-                if (const auto hit = referenceview::intersectSphere(direction)) {
+                // A masked-out material (constant alpha below the cutoff) lets the environment through.
+                const bool culled = scene.alphaMode == AlphaMode::Mask && scene.material.alpha < scene.alphaCutoff;
+                const auto hit = culled ? std::nullopt : referenceview::intersectSphere(direction);
+                if (hit) {
                     const std::uint64_t stream = std::uint64_t(y) * std::uint64_t(settings.width) + std::uint64_t(x);
                     radiance = integrateOutgoingRadiance(scene, brdf, sampler, *hit, -direction,
                                                          settings.samplesPerPixel, settings.seed, stream, settings.lobes);
@@ -242,9 +248,19 @@ std::optional<GroundTruthScene> groundTruthSceneFromProject(const Project& proje
             return std::nullopt;
         }
     }
+    if (material.alphaMode == AlphaMode::Blend) {
+        if (error)
+            *error = "groundTruthSceneFromProject: the ground truth renders opaque and masked materials, not alpha "
+                     "mode \"blend\"";
+        return std::nullopt;
+    }
     GroundTruthScene scene;
     const glm::dvec4 base = material.baseColorFactor();
     scene.material.baseColor = glm::dvec3(base);
+    scene.material.alpha = base.a;
+    scene.material.emissive = material.emissive();
+    scene.alphaMode = material.alphaMode;
+    scene.alphaCutoff = material.alphaCutoff;
     scene.material.metallic = material.metallic();
     scene.material.perceptualRoughness = material.roughness();
     scene.material.ior = material.ior;

@@ -23,6 +23,7 @@
 #include "core/Environment.h"
 #include "core/Image.h"
 #include "core/Light.h"
+#include "core/Material.h" // AlphaMode
 #include "core/MaterialBrdf.h"
 
 namespace facet {
@@ -43,8 +44,10 @@ struct GroundTruthSettings {
 };
 
 struct GroundTruthScene {
-    MaterialInfo material;
+    MaterialInfo material; // material.emissive adds to every hit; alpha counts for AlphaMode::Mask
     ShadingModel model;
+    AlphaMode alphaMode = AlphaMode::Opaque; // Mask: alpha < alphaCutoff shows the environment
+    double alphaCutoff = 0.5;
     Environment environment; // must not be empty
     std::vector<Light> lights;
 };

@@ -13,7 +13,9 @@ namespace facet {
 namespace {
 constexpr std::pair<MapSlot, const char*> kSlots[]
     = {{MapSlot::BaseColor, "baseColor"}, {MapSlot::Normal, "normal"}, {MapSlot::Metallic, "metallic"},
-        {MapSlot::Roughness, "roughness"}, {MapSlot::Occlusion, "occlusion"}};
+        {MapSlot::Roughness, "roughness"}, {MapSlot::Occlusion, "occlusion"}, {MapSlot::Emissive, "emissive"}};
+constexpr std::pair<AlphaMode, const char*> kAlphaModes[]
+    = {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}};
 constexpr std::pair<MapChannel, const char*> kChannels[] = {{MapChannel::Rgb, "rgb"}, {MapChannel::R, "r"},
     {MapChannel::G, "g"}, {MapChannel::B, "b"}, {MapChannel::A, "a"}};
 constexpr std::pair<ColorEncoding, const char*> kEncodings[]
@@ -46,7 +48,7 @@ bool fail(const std::string& message, std::string* problem)
 bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
 {
     const std::string key = toString(slot);
-    if (slot == MapSlot::BaseColor) {
+    if (isColorSlot(slot)) {
         static const char* const kComponents[] = {"r", "g", "b", "a"};
         for (int i = 0; i < 4; ++i)
             if (!checkRange(map.factor[i], 0.0, 1.0, key + ".factor." + kComponents[i], problem))
@@ -61,8 +63,9 @@ bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
             return fail(key + ".factor: a scalar factor must have equal components (use Material::setFactor)",
                 problem);
     }
-    if (slot == MapSlot::Normal && map.channel != MapChannel::Rgb)
-        return fail(key + ".channel: a normal map reads \"rgb\"", problem);
+    if ((slot == MapSlot::Normal || slot == MapSlot::Emissive) && map.channel != MapChannel::Rgb)
+        return fail(key + ".channel: a" + (slot == MapSlot::Normal ? " normal" : "n emissive") + " map reads \"rgb\"",
+            problem);
     if (isScalarSlot(slot) && map.channel == MapChannel::Rgb)
         return fail(
             key + ".channel: a " + key + " map reads one channel (\"r\", \"g\", \"b\" or \"a\"), not \"rgb\"",
@@ -94,6 +97,14 @@ const char* toString(MapSlot slot)
 std::optional<MapSlot> mapSlotFromString(std::string_view name)
 {
     return enumFromName(kSlots, name);
+}
+const char* toString(AlphaMode mode)
+{
+    return enumName(kAlphaModes, mode);
+}
+std::optional<AlphaMode> alphaModeFromString(std::string_view name)
+{
+    return enumFromName(kAlphaModes, name);
 }
 const char* toString(MapChannel channel)
 {
@@ -146,6 +157,10 @@ std::array<MaterialMap, kMapSlotCount> Material::defaultMaps()
     maps[std::size_t(MapSlot::Occlusion)].factor = glm::dvec4(1.0);
     maps[std::size_t(MapSlot::Occlusion)].channel = MapChannel::R;
     maps[std::size_t(MapSlot::Normal)].factor = glm::dvec4(1.0);
+    // glTF's emissiveFactor default: no emission until a colour (or a texture and factor) is given.
+    MaterialMap& emissive = maps[std::size_t(MapSlot::Emissive)];
+    emissive.factor = glm::dvec4(0.0, 0.0, 0.0, 1.0);
+    emissive.colorSpace = ColorEncoding::SRGB;
     return maps;
 }
 
@@ -159,6 +174,10 @@ bool Material::validate(std::string* problem) const
     // IOR: 1 is vacuum; 5 is above every transparent dielectric an artist might want (diamond
     // 2.42, rutile 2.9, germanium ~4 in the infrared).
     if (!checkRange(ior, 1.0, 5.0, "ior", problem))
+        return false;
+    if (!checkRange(emissiveStrength, 0.0, kMaxEmissiveStrength, "emissiveStrength", problem))
+        return false;
+    if (!checkRange(alphaCutoff, 0.0, 1.0, "alphaCutoff", problem))
         return false;
     for (MapSlot slot : kAllMapSlots)
         if (!validateMap(slot, map(slot), problem))

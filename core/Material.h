@@ -10,6 +10,8 @@
 //   metallic   scalar in x (glTF metallicFactor)
 //   roughness  perceptual roughness in x (glTF roughnessFactor); alpha = roughness^2
 //   occlusion  strength in x (glTF occlusionTexture.strength: mix(1, ao, strength), not a multiplier)
+//   emissive   linear RGB in [0, 1] (glTF emissiveFactor), alpha unused; the emitted radiance is
+//              factor x texture x Material::emissiveStrength (KHR_materials_emissive_strength)
 // For the four scalar slots the factor is kept as (v, v, v, v) (setFactor(slot, v) does that) so
 // that a vec4 uniform reads the same from any component and operator== compares what matters.
 // docs/project-format.md lists every field with its unit and default.
@@ -29,19 +31,33 @@
 
 namespace facet {
 
-enum class MapSlot { BaseColor, Normal, Metallic, Roughness, Occlusion };
-inline constexpr int kMapSlotCount = 5;
-inline constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots
-    = {MapSlot::BaseColor, MapSlot::Normal, MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion};
+enum class MapSlot { BaseColor, Normal, Metallic, Roughness, Occlusion, Emissive };
+inline constexpr int kMapSlotCount = 6;
+inline constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots = {MapSlot::BaseColor, MapSlot::Normal,
+    MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion, MapSlot::Emissive};
 
-// "baseColor", "normal", "metallic", "roughness", "occlusion" (the project file's keys).
+// "baseColor", "normal", "metallic", "roughness", "occlusion", "emissive" (the project file's keys).
 const char* toString(MapSlot slot);
 std::optional<MapSlot> mapSlotFromString(std::string_view name);
 // Metallic, roughness and occlusion hold one number; base colour and normal hold a vector.
 inline bool isScalarSlot(MapSlot slot)
 {
-    return slot != MapSlot::BaseColor && slot != MapSlot::Normal;
+    return slot == MapSlot::Metallic || slot == MapSlot::Roughness || slot == MapSlot::Occlusion;
 }
+// Base colour and emissive hold colours: sRGB-encoded textures by default, an RGB factor.
+inline bool isColorSlot(MapSlot slot)
+{
+    return slot == MapSlot::BaseColor || slot == MapSlot::Emissive;
+}
+
+// How the base colour's alpha is used (glTF 2.0 material.alphaMode).
+enum class AlphaMode {
+    Opaque, // alpha ignored
+    Mask,   // fragments with alpha < alphaCutoff are discarded, the rest are opaque
+    Blend,  // composited over what is behind with the "over" operator (premultiplied by alpha)
+};
+const char* toString(AlphaMode mode); // "opaque", "mask", "blend"
+std::optional<AlphaMode> alphaModeFromString(std::string_view name);
 
 // Which channel(s) of the texture a map reads. Scalar maps read one channel, so a packed texture
 // can feed several maps (ORM: R occlusion, G roughness, B metallic; glTF's metallicRoughness
@@ -95,8 +111,17 @@ struct Material {
     // F0 from the base colour.
     double ior = kDefaultIor;
     ShadingModel shading;
+    // Multiplies the emissive colour (KHR_materials_emissive_strength): emitted radiance in the
+    // scene's linear units, so values above 1 make a light source. [0, kMaxEmissiveStrength].
+    double emissiveStrength = 1.0;
+    static constexpr double kMaxEmissiveStrength = 10000.0; // RGBA16F holds 65504
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    double alphaCutoff = 0.5; // AlphaMode::Mask threshold, [0, 1]
+    // False: faces seen from behind are culled (glTF default). Facet's own materials default to
+    // true so an open mesh shows its inside.
+    bool doubleSided = true;
     // Indexed by MapSlot. Defaults: base colour 0.8 grey (sRGB texture), metallic 0, roughness
-    // 0.5, occlusion 1, normal strength 1. (glTF's defaults, metallic 1 and roughness 1, describe
+    // 0.5, occlusion 1, normal strength 1, emissive black. (glTF's defaults, metallic 1 and roughness 1, describe
     // a rough white metal: fine as texture multipliers, poor as a starting material.)
     std::array<MaterialMap, kMapSlotCount> maps = defaultMaps();
 
@@ -108,6 +133,8 @@ struct Material {
     double roughness() const { return map(MapSlot::Roughness).factor.x; }
     double occlusionStrength() const { return map(MapSlot::Occlusion).factor.x; }
     double normalStrength() const { return map(MapSlot::Normal).factor.x; }
+    // Emitted radiance of an untextured point: the emissive factor times the strength.
+    glm::dvec3 emissive() const { return glm::dvec3(map(MapSlot::Emissive).factor) * emissiveStrength; }
     // Scalar slots: stores (v, v, v, v). Base colour: use map(MapSlot::BaseColor).factor.
     void setFactor(MapSlot slot, double value) { map(slot).factor = glm::dvec4(value); }
     void setBaseColor(const glm::dvec3& linearRgb, double alpha = 1.0)

@@ -22,6 +22,13 @@ struct MaterialInfo {
     double metallic = 0.0;
     double perceptualRoughness = 0.5; // clamped to kMinPerceptualRoughness when used
     double ior = 1.5;
+    // Ambient occlusion: multiplies image-based (indirect) light only, as the real-time shader
+    // does; the ground truth ignores it (it traces no occluders).
+    double occlusion = 1.0;
+    // Emitted radiance (emissive factor x texture x strength), added to what the surface reflects.
+    glm::dvec3 emissive{0.0};
+    // Coverage from the base colour's alpha (factor x texture); used by AlphaMode Mask and Blend.
+    double alpha = 1.0;
 };
 
 // Where the light comes from. It only matters for the LearnOpenGL variant, whose Schlick-GGX

@@ -240,6 +240,7 @@ constexpr Distribution kAllDistributions[] = {Distribution::GGX, Distribution::B
 constexpr Visibility kAllVisibilities[]
     = {Visibility::SmithGGXCorrelated, Visibility::SmithGGXUncorrelated, Visibility::SchlickGGX};
 constexpr Fresnel kAllFresnels[] = {Fresnel::Schlick, Fresnel::Dielectric};
+constexpr AlphaMode kAllAlphaModes[] = {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend};
 constexpr DielectricCoupling kAllCouplings[]
     = {DielectricCoupling::FresnelMix, DielectricCoupling::EnergyPreserving};
 
@@ -284,6 +285,8 @@ QJsonObject mapToJson(
         o[QLatin1String("texture")] = qs(json::storedPath(map.path, baseDir));
     if (slot == MapSlot::BaseColor)
         o[QLatin1String("factor")] = toArray(map.factor);
+    else if (slot == MapSlot::Emissive)
+        o[QLatin1String("factor")] = toArray(glm::dvec3(map.factor));
     else
         o[QLatin1String("factor")] = map.factor.x;
     o[QLatin1String("channel")] = QLatin1String(toString(map.channel));
@@ -303,10 +306,10 @@ void readMap(Messages& messages, MapSlot slot, const QJsonObject& object, const 
     std::string texture;
     r.string("texture", texture);
     map.path = json::resolvedPath(texture, baseDir);
-    if (slot == MapSlot::BaseColor) {
-        // [r, g, b] or [r, g, b, a]; alpha defaults to 1.
+    if (isColorSlot(slot)) {
+        // [r, g, b] or (base colour) [r, g, b, a]; alpha defaults to 1.
         double factor[4] = {map.factor.x, map.factor.y, map.factor.z, 1.0};
-        if (r.numbers("factor", factor, 3, 4) > 0)
+        if (r.numbers("factor", factor, 3, slot == MapSlot::BaseColor ? 4 : 3) > 0)
             map.factor = glm::dvec4(factor[0], factor[1], factor[2], factor[3]);
     } else {
         double factor = map.factor.x;
@@ -335,6 +338,10 @@ void readMaterial(Messages& messages, const QJsonObject& object, const std::stri
     ObjectReader r(messages, object, path);
     r.string("name", material.name);
     r.number("ior", material.ior);
+    r.number("emissiveStrength", material.emissiveStrength);
+    readEnum(r, "alphaMode", material.alphaMode, kAllAlphaModes);
+    r.number("alphaCutoff", material.alphaCutoff);
+    r.boolean("doubleSided", material.doubleSided);
     if (const std::optional<QJsonObject> shading = r.object("shading"))
         readShading(messages, *shading, r.pathOf("shading"), material.shading);
     for (MapSlot slot : kAllMapSlots)
@@ -708,6 +715,10 @@ QJsonObject materialToJson(const Material& material, const std::string& baseDir,
     QJsonObject o;
     o[QLatin1String("name")] = qs(material.name);
     o[QLatin1String("ior")] = material.ior;
+    o[QLatin1String("emissiveStrength")] = material.emissiveStrength;
+    o[QLatin1String("alphaMode")] = QLatin1String(toString(material.alphaMode));
+    o[QLatin1String("alphaCutoff")] = material.alphaCutoff;
+    o[QLatin1String("doubleSided")] = material.doubleSided;
     o[QLatin1String("shading")] = shadingToJson(material.shading);
     for (MapSlot slot : kAllMapSlots)
         o[QLatin1String(toString(slot))] = mapToJson(slot, material.map(slot), baseDir, includeTexturePaths);

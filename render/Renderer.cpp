@@ -3,6 +3,7 @@
 #include "render/Renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -22,14 +23,14 @@ namespace facet {
 namespace {
 
 // Texture units of the surface and background programs.
-constexpr int kMapUnit0 = 0; // 0..4: MapSlot order
-constexpr int kDfgUnit = 5;
-constexpr int kPrefilteredUnit = 6;
-constexpr int kIrradianceUnit = 7;
-constexpr int kEnvironmentUnit = 8;
+constexpr int kMapUnit0 = 0; // 0..5: MapSlot order
+constexpr int kDfgUnit = kMapUnit0 + kMapSlotCount;
+constexpr int kPrefilteredUnit = kDfgUnit + 1;
+constexpr int kIrradianceUnit = kDfgUnit + 2;
+constexpr int kEnvironmentUnit = kDfgUnit + 3;
 
-constexpr const char* kMapSamplers[kMapSlotCount]
-    = {"uBaseColorMap", "uNormalMap", "uMetallicMap", "uRoughnessMap", "uOcclusionMap"};
+constexpr std::array<const char*, kMapSlotCount> kMapSamplers
+    = {"uBaseColorMap", "uNormalMap", "uMetallicMap", "uRoughnessMap", "uOcclusionMap", "uEmissiveMap"};
 
 // World -> environment image frame: Environment::toImageFrame, rotateAboutY(d, -rotation), as a
 // matrix built by applying it to the basis (so the two cannot disagree on signs).
@@ -225,16 +226,21 @@ bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::str
 
     const glm::dmat4 view = scene.camera.viewMatrix();
     const glm::dmat4 projection = scene.camera.projectionMatrix(double(width) / double(height));
-    // Surface first, then the background where the depth buffer is still clear (far plane,
-    // GL_LEQUAL): covered pixels run no background shader.
+    // Opaque (and masked) surfaces first, then the background where the depth buffer is still
+    // clear (far plane, GL_LEQUAL): covered pixels run no background shader. Blended surfaces
+    // come last, over both.
     bool ok = true;
     {
         StepTimer timer(m_timing, &m_frame.surfaceMs);
-        ok = drawSurface(scene, view, projection, error);
+        ok = drawSurface(scene, view, projection, SurfacePass::Opaque, error);
     }
     {
         StepTimer timer(m_timing, &m_frame.backgroundMs);
         drawBackground(scene, view, projection);
+    }
+    if (ok) {
+        StepTimer timer(m_timing, &m_frame.surfaceMs);
+        ok = drawSurface(scene, view, projection, SurfacePass::Blended, error);
     }
     if (samples > 1) {
         StepTimer timer(m_timing, &m_frame.resolveMs);
@@ -290,11 +296,15 @@ void Renderer::drawBackground(const RenderScene& scene, const glm::dmat4& view, 
 }
 
 bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection,
-                           std::string* error)
+                           SurfacePass pass, std::string* error)
 {
     if (!scene.mesh || scene.mesh->indices.empty())
         return true;
     const SurfaceVariantKey key = variantKeyFor(scene);
+    // Debug views show a blended material's values opaque.
+    const bool blended = hasFeature(key.features, SurfaceFeature::AlphaBlend) && key.debugView == DebugView::None;
+    if (blended != (pass == SurfacePass::Blended))
+        return true;
     const int compilesBefore = m_surfacePrograms.compileCount();
     std::string message;
     const ShaderProgram* program = m_surfacePrograms.get(key, &message);
@@ -328,19 +338,20 @@ bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, con
     program->setFloat("uNormalStrength", float(material.normalStrength()));
     program->setFloat("uIor", float(material.ior));
     program->setFloat("uDielectricAverageAlbedo", float(scene.dielectricAverageAlbedo));
+    setVec3(*program, "uEmissiveFactor", material.emissive());
+    if (hasFeature(key.features, SurfaceFeature::AlphaMask))
+        program->setFloat("uAlphaCutoff", float(material.alphaCutoff));
     program->setInt("uFlipGreen", material.map(MapSlot::Normal).flipGreen ? 1 : 0);
-    constexpr SurfaceFeature kMapBits[kMapSlotCount]
-        = {SurfaceFeature::HasBaseColorMap, SurfaceFeature::HasNormalMap, SurfaceFeature::HasMetallicMap,
-           SurfaceFeature::HasRoughnessMap, SurfaceFeature::HasOcclusionMap};
     for (int i = 0; i < kMapSlotCount; ++i) {
         const MaterialMap& map = material.maps[std::size_t(i)];
         const glm::mat3 uv(map.uv.matrix());
         setMat3(*program, IndexedName("uUvTransform", i).c_str(), uv);
         program->setInt(IndexedName("uChannel", i).c_str(), int(map.channel));
         program->setInt(IndexedName("uInvert", i).c_str(), map.invert ? 1 : 0);
-        if (!hasFeature(key.features, kMapBits[i]))
+        if (!hasFeature(key.features, mapFeature(MapSlot(i))))
             continue;
         const RenderMapImage& image = scene.maps[std::size_t(i)];
+        glActiveTexture(GLenum(GL_TEXTURE0 + kMapUnit0 + i));
         bool uploaded = false;
         unsigned texture = 0;
         {
@@ -350,9 +361,8 @@ bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, con
         }
         if (uploaded)
             ++m_frame.texturesUploaded;
-        glActiveTexture(GLenum(GL_TEXTURE0 + kMapUnit0 + i));
         glBindTexture(GL_TEXTURE_2D, texture);
-        program->setInt(kMapSamplers[i], kMapUnit0 + i);
+        program->setInt(kMapSamplers[std::size_t(i)], kMapUnit0 + i);
     }
 
     // Environment.
@@ -400,8 +410,28 @@ bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, con
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glDisable(GL_CULL_FACE); // two-sided: open meshes show their inside
+    // Two-sided materials show the inside of open meshes (the shader flips the normal); glTF's
+    // single-sided ones cull the faces seen from behind (counter-clockwise is the front).
+    if (material.doubleSided) {
+        glDisable(GL_CULL_FACE);
+    } else {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+        glFrontFace(GL_CCW);
+    }
+    if (blended) {
+        // Premultiplied "over"; blended surfaces test depth but do not write it, so what is
+        // behind them stays visible through them (glTF alphaMode BLEND).
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        glDepthMask(GL_FALSE);
+    }
     m_frame.drawCalls += m_mesh->draw(*scene.mesh);
+    if (blended) {
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+    }
+    glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
     glActiveTexture(GL_TEXTURE0);
     return true;

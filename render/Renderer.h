@@ -56,7 +56,8 @@ private:
     bool ensureMsaaTarget(int width, int height, int samples, bool fullFloat, std::string* error);
     void destroyMsaaTarget();
     void drawBackground(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection);
-    bool drawSurface(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection,
+    enum class SurfacePass { Opaque, Blended };
+    bool drawSurface(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection, SurfacePass pass,
                      std::string* error);
 
     SurfaceProgramCache m_surfacePrograms;

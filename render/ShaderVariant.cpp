@@ -12,14 +12,14 @@ constexpr std::array<const char*, kSurfaceFeatureBits> kFeatureDefines = {
     "HAS_BASE_COLOR_MAP", "HAS_NORMAL_MAP",        "HAS_METALLIC_MAP",          "HAS_ROUGHNESS_MAP",
     "HAS_OCCLUSION_MAP",  "HAS_PUNCTUAL_LIGHTS",   "IRRADIANCE_SH",             "MULTI_SCATTER",
     "COMPOSITION_LEARNOPENGL", "COUPLING_ENERGY_PRESERVING", "DISTRIBUTION_BECKMANN", "VISIBILITY_UNCORRELATED",
-    "VISIBILITY_SCHLICK", "FRESNEL_DIELECTRIC",
+    "VISIBILITY_SCHLICK", "FRESNEL_DIELECTRIC", "HAS_EMISSIVE_MAP", "ALPHA_MASK", "ALPHA_BLEND",
 };
 
 constexpr std::array<const char*, kDebugViewCount> kDebugViewNames = {
     "none",       "base-color", "shading-normal",       "geometric-normal", "metallic",     "roughness",
     "occlusion",  "d",          "v",                    "f",                "irradiance",   "ibl-diffuse",
     "prefiltered-radiance",     "brdf-lut",             "ibl-specular",     "ibl-total",    "direct-light",
-    "white-furnace",
+    "white-furnace", "uv", "tangent", "emissive", "alpha", "non-finite",
 };
 
 } // namespace
@@ -36,6 +36,25 @@ std::optional<DebugView> debugViewFromString(const std::string& name)
         if (name == kDebugViewNames[std::size_t(i)])
             return DebugView(i);
     return std::nullopt;
+}
+
+SurfaceFeature mapFeature(MapSlot slot)
+{
+    switch (slot) {
+    case MapSlot::BaseColor:
+        return SurfaceFeature::HasBaseColorMap;
+    case MapSlot::Normal:
+        return SurfaceFeature::HasNormalMap;
+    case MapSlot::Metallic:
+        return SurfaceFeature::HasMetallicMap;
+    case MapSlot::Roughness:
+        return SurfaceFeature::HasRoughnessMap;
+    case MapSlot::Occlusion:
+        return SurfaceFeature::HasOcclusionMap;
+    case MapSlot::Emissive:
+        break;
+    }
+    return SurfaceFeature::HasEmissiveMap;
 }
 
 SurfaceFeatures surfaceFeaturesFor(const ShadingModel& model)
@@ -62,12 +81,13 @@ SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMap
                                    bool hasPunctualLights, bool irradianceFromSH)
 {
     SurfaceFeatures f = surfaceFeaturesFor(material.shading);
-    constexpr SurfaceFeature kMapBits[kMapSlotCount] = {SurfaceFeature::HasBaseColorMap, SurfaceFeature::HasNormalMap,
-                                                        SurfaceFeature::HasMetallicMap, SurfaceFeature::HasRoughnessMap,
-                                                        SurfaceFeature::HasOcclusionMap};
     for (int i = 0; i < kMapSlotCount; ++i)
         if (hasMapImage[i] && material.maps[std::size_t(i)].hasTexture())
-            f = f | kMapBits[i];
+            f = f | mapFeature(MapSlot(i));
+    if (material.alphaMode == AlphaMode::Mask)
+        f = f | SurfaceFeature::AlphaMask;
+    else if (material.alphaMode == AlphaMode::Blend)
+        f = f | SurfaceFeature::AlphaBlend;
     if (hasPunctualLights)
         f = f | SurfaceFeature::HasPunctualLights;
     if (irradianceFromSH)

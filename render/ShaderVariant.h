@@ -39,8 +39,11 @@ enum class SurfaceFeature : uint32_t {
     VisibilityUncorrelated = 1u << 11,  // VISIBILITY_UNCORRELATED (separable Smith-GGX)
     VisibilitySchlick = 1u << 12,       // VISIBILITY_SCHLICK (Smith with Schlick-GGX G1)
     FresnelDielectric = 1u << 13,       // FRESNEL_DIELECTRIC (exact dielectric Fresnel, lights only)
+    HasEmissiveMap = 1u << 14,          // HAS_EMISSIVE_MAP
+    AlphaMask = 1u << 15,               // ALPHA_MASK: discard below uAlphaCutoff (glTF alphaMode MASK)
+    AlphaBlend = 1u << 16,              // ALPHA_BLEND: premultiplied colour and alpha out (glTF BLEND)
 };
-inline constexpr int kSurfaceFeatureBits = 14;
+inline constexpr int kSurfaceFeatureBits = 17;
 
 using SurfaceFeatures = uint32_t;
 inline constexpr SurfaceFeatures operator|(SurfaceFeature a, SurfaceFeature b) { return uint32_t(a) | uint32_t(b); }
@@ -69,11 +72,18 @@ enum class DebugView : int {
     IblTotal,         // IBL diffuse + specular (with occlusion)
     DirectLight,      // punctual lights only
     WhiteFurnace,     // white material (base colour 1) under a uniform environment of radiance 1
+    Uv,               // texture coordinate 0 as it reaches the maps' UV transforms: (u, v, 0), not wrapped
+    Tangent,          // the unit tangent (after Gram-Schmidt against the geometric normal) * 0.5 + 0.5;
+                      // 0.5 grey without a normal map (no tangent frame in that variant)
+    Emissive,         // emitted radiance
+    Alpha,            // base colour alpha (factor x texture)
+    NonFinite,        // 1 where the shaded radiance is NaN, Inf or negative before the output guard, else 0
 };
-inline constexpr int kDebugViewCount = 18;
+inline constexpr int kDebugViewCount = 23;
 // "none", "base-color", "shading-normal", "geometric-normal", "metallic", "roughness",
 // "occlusion", "d", "v", "f", "irradiance", "ibl-diffuse", "prefiltered-radiance", "brdf-lut",
-// "ibl-specular", "ibl-total", "direct-light", "white-furnace" (ViewSettings::debugView).
+// "ibl-specular", "ibl-total", "direct-light", "white-furnace", "uv", "tangent", "emissive", "alpha", "non-finite"
+// (ViewSettings::debugView).
 const char* toString(DebugView view);
 std::optional<DebugView> debugViewFromString(const std::string& name);
 
@@ -85,10 +95,12 @@ struct SurfaceVariantKey {
 };
 
 // The flags a material + scene need: map bits from the material's textures (only where an image
-// is given), model bits from its ShadingModel, lights when any enabled light exists.
+// is given), model bits from its ShadingModel, the alpha mode, lights when any enabled light exists.
 SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMapImage)[kMapSlotCount],
                                    bool hasPunctualLights, bool irradianceFromSH);
 SurfaceFeatures surfaceFeaturesFor(const ShadingModel& model);
+// The Has*Map bit of a slot.
+SurfaceFeature mapFeature(MapSlot slot);
 
 // One "#define NAME" per set bit, in bit order, then "DEBUG_VIEW <n>" and "MAX_LIGHTS <n>".
 std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key);

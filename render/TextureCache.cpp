@@ -15,6 +15,11 @@ unsigned upload(const Image& image, ColorEncoding colorSpace)
 {
     const int width = image.width();
     const int height = image.height();
+    // The upload binds on the active unit: put back what was bound there, so uploading a texture
+    // never unbinds another one (a renderer binding map i - 1 and then uploading map i must find
+    // map i - 1 still bound).
+    GLint previous = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &previous);
     GLuint texture = 0;
     glGenTextures(1, &texture);
     glBindTexture(GL_TEXTURE_2D, texture);
@@ -48,7 +53,7 @@ unsigned upload(const Image& image, ColorEncoding colorSpace)
         glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY_EXT, &maxAnisotropy);
         glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT, std::min(8.0f, maxAnisotropy));
     }
-    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindTexture(GL_TEXTURE_2D, GLuint(previous));
     return texture;
 }
 

@@ -9,6 +9,7 @@
 
 #include "core/Image.h"
 #include "core/Project.h"
+#include "core/ReferenceView.h"
 
 #include "ReferenceViewRenderer.h"
 #include "TestSupport.h"
@@ -34,14 +35,20 @@ struct Difference {
     Image image;
 };
 
-// Absolute RGB differences over the whole image (background included: it is part of the view).
+// Absolute RGB differences over the interior sphere pixels (core/ReferenceView.h, margin 1): the
+// view is the sphere's; whether a silhouette pixel's centre falls on the tessellated sphere or on
+// the background is the rasteriser's call, and one such flip would force a tolerance of 1.
 Difference compare(const Image& actual, const Image& golden)
 {
     Difference d;
     d.image = Image(actual.width(), actual.height(), glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     double sum = 0.0;
+    int count = 0;
     for (int y = 0; y < actual.height(); ++y)
         for (int x = 0; x < actual.width(); ++x) {
+            if (!referenceview::isInteriorSpherePixel(x, y, actual.width(), actual.height()))
+                continue;
+            ++count;
             const glm::vec4 a = actual.at(x, y);
             const glm::vec4 b = golden.at(x, y);
             const glm::vec3 diff = glm::abs(glm::vec3(a) - glm::vec3(b));
@@ -50,7 +57,7 @@ Difference compare(const Image& actual, const Image& golden)
             sum += m;
             d.image.at(x, y) = glm::vec4(diff, 1.0f);
         }
-    d.mean = sum / (double(actual.width()) * actual.height());
+    d.mean = count > 0 ? sum / double(count) : INFINITY;
     return d;
 }
 
@@ -81,28 +88,27 @@ void DebugViewGoldenGLTest::matchesGolden_data()
     QTest::addColumn<QString>("view");
     QTest::addColumn<double>("maxTolerance");
     QTest::addColumn<double>("meanTolerance");
-    // base-color: a constant uniform written as is. The goldens are stored as half floats, which
-    // round 0.9 by up to 2.4e-4 (measured max 2.4e-4, mean 7.4e-5); nothing else may differ.
+    // Interior sphere pixels only (compare()). The goldens are half-float EXRs: a value in
+    // [0.5, 1) is stored to 2.4e-4, one in [4, 8) to 3.9e-3. Measured on llvmpipe (Mesa 22.3)
+    // against its own goldens: max 1e-4 to 3.9e-3, mean 8e-5 to 5e-4 (printed by this test).
+    // The bounds leave room for another driver's texture-filter weights (llvmpipe uses 8-bit
+    // bilinear weights) and nothing more: a wrong map, a dropped term or a flipped normal moves
+    // interior pixels by 0.05 to 1.
+    // base-color: a constant uniform written as is; only the storage rounds it.
     QTest::newRow("base-color") << QStringLiteral("base-color") << 1e-3 << 5e-4;
-    // shading-normal: interpolated vertex normals, 0.5 n + 0.5. Drivers may interpolate and
-    // rasterise silhouette pixels differently (coverage at the edge flips a pixel between sphere
-    // and background: up to ~1 there); the mean stays small.
-    QTest::newRow("shading-normal") << QStringLiteral("shading-normal") << 1.0 << 0.01;
-    // brdf-lut: the DFG LUT sampled at (n.v, r), made on the GPU from Hammersley points: fp16
-    // storage (5e-4 of ~1) plus the silhouette flips above.
-    QTest::newRow("brdf-lut") << QStringLiteral("brdf-lut") << 1.0 << 0.01;
-    // prefiltered-radiance: the prefiltered map along the dominant direction. Radiance of the
-    // built-in studio reaches ~8 on the soft box; another GPU's filtering (8-bit bilinear weights
-    // on llvmpipe, finer on NVIDIA) and mip selection move values by a few percent there.
-    QTest::newRow("prefiltered-radiance") << QStringLiteral("prefiltered-radiance") << 1.0 << 0.03;
-    // irradiance: a smooth function (E / pi); the same filtering differences, much smaller.
-    QTest::newRow("irradiance") << QStringLiteral("irradiance") << 0.2 << 0.01;
-    // white-furnace: the surface lit by a uniform radiance of 1 (the studio behind it): for this
-    // metal its compensated directional albedo, from the DFG LUT only, so tight (LUT fp16 5e-4
-    // plus bilinear weights); silhouette pixels may flip to the background.
-    QTest::newRow("white-furnace-surface") << QStringLiteral("white-furnace") << 1.0 << 2e-3;
-    // none: the shaded image, everything together.
-    QTest::newRow("shaded") << QStringLiteral("none") << 1.0 << 0.03;
+    // shading-normal: interpolated vertex normals, 0.5 n + 0.5 (storage rounding, interpolation order).
+    QTest::newRow("shading-normal") << QStringLiteral("shading-normal") << 2e-3 << 5e-4;
+    // brdf-lut: the DFG LUT sampled at (n.v, r): fp16 LUT plus bilinear weights.
+    QTest::newRow("brdf-lut") << QStringLiteral("brdf-lut") << 2e-3 << 5e-4;
+    // prefiltered-radiance: up to ~8 on the built-in studio's soft box, where storage alone
+    // rounds by 3.9e-3 and a filter weight of 1/256 moves a value by ~0.03 on the box's edge.
+    QTest::newRow("prefiltered-radiance") << QStringLiteral("prefiltered-radiance") << 0.04 << 2e-3;
+    // irradiance: a smooth function (E / pi) below ~2.
+    QTest::newRow("irradiance") << QStringLiteral("irradiance") << 0.01 << 2e-3;
+    // white-furnace: this metal's compensated directional albedo from the DFG LUT, in [0, 1].
+    QTest::newRow("white-furnace-surface") << QStringLiteral("white-furnace") << 2e-3 << 5e-4;
+    // none: the shaded image, everything together, up to ~4 where the soft box reflects.
+    QTest::newRow("shaded") << QStringLiteral("none") << 0.04 << 2e-3;
 }
 
 void DebugViewGoldenGLTest::matchesGolden()

@@ -61,7 +61,8 @@ class MaterialTest : public QObject {
 private Q_SLOTS:
     void mapSlotNamesRoundTrip()
     {
-        const char* const expected[] = {"baseColor", "normal", "metallic", "roughness", "occlusion"};
+        const char* const expected[] = {"baseColor", "normal", "metallic", "roughness", "occlusion", "emissive"};
+        static_assert(std::size(expected) == kAllMapSlots.size());
         int i = 0;
         for (MapSlot slot : kAllMapSlots) {
             QCOMPARE(toString(slot), expected[i]);

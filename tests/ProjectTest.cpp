@@ -89,6 +89,15 @@ Project everythingChanged(const QString& root)
     occlusion.channel = MapChannel::B;
     occlusion.invert = true;
     occlusion.uv.scale = {-1.0, 1.0};
+    MaterialMap& emissive = m.map(MapSlot::Emissive);
+    emissive.path = under("textures/emission.png");
+    emissive.factor = {0.2, 0.4, 0.6, 1.0}; // emissive alpha is not stored: it stays 1
+    emissive.colorSpace = ColorEncoding::Linear;
+    emissive.uv.offset = {0.5, 0.0};
+    m.emissiveStrength = 12.5;
+    m.alphaMode = AlphaMode::Mask;
+    m.alphaCutoff = 0.25;
+    m.doubleSided = false;
 
     p.environment.source = under("hdri/room.exr");
     p.environment.rotationDegrees = 123.5;
@@ -214,6 +223,10 @@ private Q_SLOTS:
         const Project defaults;
         QVERIFY(original.material.name != defaults.material.name
             && original.material.ior != defaults.material.ior);
+        QVERIFY(original.material.emissiveStrength != defaults.material.emissiveStrength
+            && original.material.alphaMode != defaults.material.alphaMode
+            && original.material.alphaCutoff != defaults.material.alphaCutoff
+            && original.material.doubleSided != defaults.material.doubleSided);
         QVERIFY(original.material.shading != defaults.material.shading);
         for (MapSlot slot : kAllMapSlots)
             QVERIFY2(original.material.map(slot) != defaults.material.map(slot), toString(slot));

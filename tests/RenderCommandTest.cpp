@@ -11,6 +11,12 @@
 #include "core/MaterialPresets.h"
 #include "core/Project.h"
 #include "core/ReferenceView.h"
+#include "core/ToneMap.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <array>
+#include <vector>
 
 using namespace facet;
 
@@ -245,6 +251,93 @@ private Q_SLOTS:
                                    QStringLiteral("/no/such/dir/out.exr")});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains(QStringLiteral("/no/such/dir/out.exr")), qPrintable(r.err));
+    }
+
+    // Issue 8's report, as it was typed: a project with a base colour and a normal map rendered
+    // with --view base-color came out black (uploading the second map unbound the first). Every
+    // debug view of a material input must show that input with the other maps present.
+    void multiMapProjectShowsEveryMap_data()
+    {
+        QTest::addColumn<QString>("view");
+        QTest::addColumn<QVector<double>>("expected"); // RGB at the sphere's centre
+        // Constant textures: base colour sRGB (204, 51, 26) -> linear, a flat normal map, ORM
+        // (occlusion 0.25, roughness 0.75, metallic 1.0), emissive sRGB (128, 128, 128) x 2.
+        const double r = tonemap::srgbToLinear(204.0 / 255.0);
+        const double g = tonemap::srgbToLinear(51.0 / 255.0);
+        const double b = tonemap::srgbToLinear(26.0 / 255.0);
+        const double e = 2.0 * tonemap::srgbToLinear(128.0 / 255.0);
+        QTest::newRow("base-color") << QStringLiteral("base-color") << QVector<double>{r, g, b};
+        // Empty: the sphere's own normal at the pixel (the flat map's 128/255 tilts it by 0.4%).
+        QTest::newRow("shading-normal") << QStringLiteral("shading-normal") << QVector<double>{};
+        QTest::newRow("occlusion") << QStringLiteral("occlusion") << QVector<double>{64 / 255.0, 64 / 255.0, 64 / 255.0};
+        QTest::newRow("roughness") << QStringLiteral("roughness") << QVector<double>{191 / 255.0, 191 / 255.0, 191 / 255.0};
+        QTest::newRow("metallic") << QStringLiteral("metallic") << QVector<double>{1.0, 1.0, 1.0};
+        QTest::newRow("emissive") << QStringLiteral("emissive") << QVector<double>{e, e, e};
+    }
+    void multiMapProjectShowsEveryMap()
+    {
+        QFETCH(QString, view);
+        QFETCH(QVector<double>, expected);
+        const auto writeConstant = [this](const QString& name, int channels, std::array<int, 3> value) {
+            const QString file = path(name);
+            auto output = OIIO::ImageOutput::create(file.toStdString());
+            std::vector<unsigned char> pixels(8 * 8 * std::size_t(channels));
+            for (std::size_t i = 0; i < pixels.size(); ++i)
+                pixels[i] = static_cast<unsigned char>(value[i % std::size_t(channels)]);
+            const OIIO::ImageSpec spec(8, 8, channels, OIIO::TypeDesc::UINT8);
+            return output && output->open(file.toStdString(), spec)
+                && output->write_image(OIIO::TypeDesc::UINT8, pixels.data()) && output->close();
+        };
+        QVERIFY(writeConstant(QStringLiteral("set_basecolor.png"), 3, {204, 51, 26}));
+        QVERIFY(writeConstant(QStringLiteral("set_normal.png"), 3, {128, 128, 255}));
+        QVERIFY(writeConstant(QStringLiteral("set_orm.png"), 3, {64, 191, 255}));
+        QVERIFY(writeConstant(QStringLiteral("set_emissive.png"), 3, {128, 128, 128}));
+        Project project = Project::defaultProject();
+        project.environment.source = "uniform:0.5";
+        Material& m = project.material;
+        m.setBaseColor(glm::dvec3(1.0));
+        m.map(MapSlot::BaseColor).path = path(QStringLiteral("set_basecolor.png")).toStdString();
+        m.map(MapSlot::Normal).path = path(QStringLiteral("set_normal.png")).toStdString();
+        for (MapSlot slot : {MapSlot::Occlusion, MapSlot::Roughness, MapSlot::Metallic}) {
+            m.map(slot).path = path(QStringLiteral("set_orm.png")).toStdString();
+            m.setFactor(slot, 1.0);
+        }
+        m.map(MapSlot::Emissive).path = path(QStringLiteral("set_emissive.png")).toStdString();
+        m.map(MapSlot::Emissive).factor = glm::dvec4(1.0);
+        m.emissiveStrength = 2.0;
+        const QString projectPath = path(QStringLiteral("texture-set.json"));
+        std::string error;
+        QVERIFY2(project.save(projectPath.toStdString(), &error), error.c_str());
+
+        const QString out = path(QStringLiteral("view-%1.exr").arg(view));
+        const Result result = runFacet({QStringLiteral("render"), projectPath, QStringLiteral("--view"), view,
+                                        QStringLiteral("--reference-view"), QStringLiteral("--quality"),
+                                        QStringLiteral("draft"), QStringLiteral("--size"), QStringLiteral("32x32"),
+                                        QStringLiteral("-o"), out});
+        QVERIFY2(result.exitCode == 0, qPrintable(result.err));
+        const auto image = Image::load(out.toStdString(), &error);
+        QVERIFY2(image, error.c_str());
+        // The centre 2 x 2 pixels; 8-bit texels and RGBA16F output: 2e-3 covers both roundings
+        // (5e-3 for the normal: the flat map's tilt and the tessellated sphere).
+        for (int y = 15; y <= 16; ++y)
+            for (int x = 15; x <= 16; ++x) {
+                const double tolerance = expected.isEmpty() ? 5e-3 : 2e-3;
+                if (expected.isEmpty()) {
+                    const glm::dvec3 n = *referenceview::intersectSphere(referenceview::rayDirection(x, y, 32, 32));
+                    expected = {0.5 * n.x + 0.5, 0.5 * n.y + 0.5, 0.5 * n.z + 0.5};
+                }
+                for (int c = 0; c < 3; ++c)
+                    QVERIFY2(std::abs(image->at(x, y)[c] - expected[c]) < tolerance,
+                             qPrintable(QStringLiteral("%1 view, pixel (%2, %3) channel %4: %5, expected %6")
+                                            .arg(view)
+                                            .arg(x)
+                                            .arg(y)
+                                            .arg(c)
+                                            .arg(image->at(x, y)[c])
+                                            .arg(expected[c])));
+                if (view == QStringLiteral("shading-normal"))
+                    expected.clear();
+            }
     }
 };
 

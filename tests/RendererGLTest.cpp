@@ -471,6 +471,24 @@ void RendererGLTest::extremesStayFinite()
                 for (FramebufferFormat format : {FramebufferFormat::RGBA16F, FramebufferFormat::RGBA32F}) {
                     scene.material.setFactor(MapSlot::Roughness, roughness);
                     scene.material.setFactor(MapSlot::Metallic, metallic);
+                    // The shader replaces NaN by 0 before writing, so the image alone cannot show
+                    // one: the non-finite view marks every pixel whose radiance was NaN, Inf or
+                    // negative before that guard.
+                    scene.view.debugView = "non-finite";
+                    scene.view.background = BackgroundMode::Color; // black: only the surface marks
+                    scene.view.backgroundColor = glm::dvec3(0.0);
+                    const Image marks = renderScene(scene, format, 32);
+                    scene.view.background = BackgroundMode::Environment;
+                    int marked = 0;
+                    for (int y = 0; y < marks.height(); ++y)
+                        for (int x = 0; x < marks.width(); ++x)
+                            marked += marks.at(x, y).r != 0.0f ? 1 : 0;
+
+                    QVERIFY2(marked == 0, (std::to_string(marked) + " pixels non-finite or negative before the guard, radiance "
+                                              + std::to_string(radiance) + " roughness " + std::to_string(roughness)
+                                              + " metallic " + std::to_string(metallic))
+                                              .c_str());
+                    scene.view.debugView = "none";
                     const Image image = renderScene(scene, format, 32);
                     for (int y = 0; y < image.height(); ++y)
                         for (int x = 0; x < image.width(); ++x) {

@@ -40,6 +40,8 @@ int mergeIdFor(MapSlot slot)
         return MergeId::Roughness;
     case MapSlot::Occlusion:
         return MergeId::Occlusion;
+    case MapSlot::Emissive:
+        break;
     }
     return MergeId::None;
 }
@@ -82,6 +84,8 @@ QString MapSlotWidget::title(MapSlot slot)
         return tr("Roughness");
     case MapSlot::Occlusion:
         return tr("Ambient Occlusion");
+    case MapSlot::Emissive:
+        return tr("Emissive");
     }
     return {};
 }
@@ -148,7 +152,7 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
             editMap(map, factorName(m_slot), mergeId);
         });
     }
-    if (slot != MapSlot::Normal) {
+    if (slot != MapSlot::Normal && slot != MapSlot::Emissive) {
         m_channel = new QComboBox(this);
         m_channel->setObjectName(QStringLiteral("mapChannel_%1").arg(key));
         if (slot == MapSlot::BaseColor)

@@ -2,7 +2,8 @@
 // factors and, where the variant says HAS_*_MAP, one texture each. Twin of what core's
 // MaterialInfo holds after textures (core/Material.h explains every factor).
 //
-// Slots (core/Material.h MapSlot): 0 base colour, 1 normal, 2 metallic, 3 roughness, 4 occlusion.
+// Slots (core/Material.h MapSlot): 0 base colour, 1 normal, 2 metallic, 3 roughness, 4 occlusion,
+// 5 emissive.
 // Per slot: uUvTransform (KHR_texture_transform matrix, core UvTransform::matrix()), uChannel
 // (0 rgb, 1 r, 2 g, 3 b, 4 a: core MapChannel), uInvert (scalar maps: 1 - value).
 // sRGB-encoded maps are uploaded as GL_SRGB8_ALPHA8, so texture() returns linear values
@@ -14,6 +15,8 @@ struct MaterialInfo {
     float perceptualRoughness; // clamped to kMinPerceptualRoughness where used
     float ior;
     float occlusion;           // multiplies indirect light only
+    vec3 emissive;             // emitted radiance (factor x texture x strength)
+    float alpha;               // base colour alpha (factor x texture), for ALPHA_MASK / ALPHA_BLEND
 };
 
 uniform vec4 uBaseColorFactor;
@@ -22,9 +25,10 @@ uniform float uRoughnessFactor;
 uniform float uOcclusionStrength;
 uniform float uNormalStrength;
 uniform float uIor;
-uniform mat3 uUvTransform[5];
-uniform int uChannel[5];
-uniform int uInvert[5];
+uniform vec3 uEmissiveFactor; // core Material::emissive(): factor x strength
+uniform mat3 uUvTransform[6];
+uniform int uChannel[6];
+uniform int uInvert[6];
 uniform int uFlipGreen;
 
 #ifdef HAS_BASE_COLOR_MAP
@@ -41,6 +45,9 @@ uniform sampler2D uRoughnessMap;
 #endif
 #ifdef HAS_OCCLUSION_MAP
 uniform sampler2D uOcclusionMap;
+#endif
+#ifdef HAS_EMISSIVE_MAP
+uniform sampler2D uEmissiveMap;
 #endif
 
 vec2 mapUv(int slot, vec2 uv) { return (uUvTransform[slot] * vec3(uv, 1.0)).xy; }
@@ -66,9 +73,17 @@ MaterialInfo materialInputs(vec2 uv)
 {
     MaterialInfo m;
     m.baseColor = uBaseColorFactor.rgb;
+    m.alpha = uBaseColorFactor.a;
 #ifdef HAS_BASE_COLOR_MAP
     vec4 base = texture(uBaseColorMap, mapUv(0, uv));
     m.baseColor *= uChannel[0] == 0 ? base.rgb : vec3(pickChannel(base, uChannel[0]));
+    // A single-channel pick is a greyscale colour without coverage of its own.
+    if (uChannel[0] == 0)
+        m.alpha *= base.a;
+#endif
+    m.emissive = uEmissiveFactor;
+#ifdef HAS_EMISSIVE_MAP
+    m.emissive *= texture(uEmissiveMap, mapUv(5, uv)).rgb;
 #endif
     m.metallic = uMetallicFactor;
 #ifdef HAS_METALLIC_MAP
@@ -84,6 +99,8 @@ MaterialInfo materialInputs(vec2 uv)
     m.occlusion = 1.0 + uOcclusionStrength * (scalarMapValue(4, texture(uOcclusionMap, mapUv(4, uv))) - 1.0);
 #endif
     m.baseColor = max(m.baseColor, vec3(0.0));
+    m.emissive = max(m.emissive, vec3(0.0));
+    m.alpha = clamp(m.alpha, 0.0, 1.0);
     m.metallic = clamp(m.metallic, 0.0, 1.0);
     m.perceptualRoughness = clamp(m.perceptualRoughness, 0.0, 1.0);
     m.ior = uIor;
@@ -94,13 +111,20 @@ MaterialInfo materialInputs(vec2 uv)
 // tangent-space normal map (OpenGL convention, +Y green; uFlipGreen for DirectX maps) scaled in
 // X and Y by the strength (glTF normalTexture.scale).
 #ifdef HAS_NORMAL_MAP
-vec3 shadingNormal(vec3 ng, vec4 tangent, vec2 uv)
+// The unit tangent perpendicular to ng (Gram-Schmidt: the interpolated tangent is neither), or
+// vec3(0) when the tangent is degenerate.
+vec3 surfaceTangent(vec3 ng, vec4 tangent)
 {
     vec3 t = tangent.xyz - ng * dot(ng, tangent.xyz);
     float tLength = length(t);
-    if (tLength < 1e-8)
+    return tLength < 1e-8 ? vec3(0.0) : t / tLength;
+}
+
+vec3 shadingNormal(vec3 ng, vec4 tangent, vec2 uv)
+{
+    vec3 t = surfaceTangent(ng, tangent);
+    if (t == vec3(0.0))
         return ng; // degenerate tangent: no frame to map in
-    t /= tLength;
     vec3 b = cross(ng, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
     vec3 tn = texture(uNormalMap, mapUv(1, uv)).rgb * 2.0 - 1.0;
     if (uFlipGreen != 0)

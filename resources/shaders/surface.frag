@@ -20,6 +20,9 @@ uniform vec3 uCameraPosition;
 // The largest value the target holds: 65504 for RGBA16F, so radiance beyond it (a 1e6 sun)
 // saturates instead of becoming +Inf, which tone mappers would turn into NaN.
 uniform float uMaxRadiance;
+#ifdef ALPHA_MASK
+uniform float uAlphaCutoff;
+#endif
 
 out vec4 fragColor;
 
@@ -30,6 +33,11 @@ void main()
     if (!gl_FrontFacing)
         ng = -ng; // two-sided: shade the side the camera sees
     MaterialInfo m = materialInputs(vUv);
+#ifdef ALPHA_MASK
+    // glTF alphaMode MASK: below the cutoff nothing is drawn, above it the surface is opaque.
+    if (m.alpha < uAlphaCutoff)
+        discard;
+#endif
 #if DEBUG_VIEW == DEBUG_WHITE_FURNACE
     m.baseColor = vec3(1.0);
     m.occlusion = 1.0;
@@ -57,7 +65,8 @@ void main()
 #endif
     // Ambient occlusion darkens indirect light only.
     vec3 indirect = (ibl.diffuse + ibl.specular) * m.occlusion;
-    vec3 color = indirect + direct;
+    // Emission is not occluded: it leaves the surface itself.
+    vec3 color = indirect + direct + m.emissive;
 
 #if DEBUG_VIEW != DEBUG_NONE
     // The l that the D, V and F views evaluate: the first light, else the mirror direction.
@@ -107,8 +116,30 @@ void main()
     color = direct;
 #elif DEBUG_VIEW == DEBUG_WHITE_FURNACE
     color = ibl.diffuse + ibl.specular;
+#elif DEBUG_VIEW == DEBUG_UV
+    color = vec3(vUv, 0.0);
+#elif DEBUG_VIEW == DEBUG_NON_FINITE
+    // 1 where the shaded radiance is NaN, infinite or negative before the guard below hides it
+    // (tests of numerical stability read this; artists see where a material breaks).
+    color = vec3(any(isnan(color)) || any(isinf(color)) || any(lessThan(color, vec3(0.0))) ? 1.0 : 0.0);
+#elif DEBUG_VIEW == DEBUG_EMISSIVE
+    color = m.emissive;
+#elif DEBUG_VIEW == DEBUG_ALPHA
+    color = vec3(m.alpha);
+#elif DEBUG_VIEW == DEBUG_TANGENT
+#ifdef HAS_NORMAL_MAP
+    color = surfaceTangent(ng, vTangent) * 0.5 + 0.5;
+#else
+    color = vec3(0.5);
+#endif
 #endif
     if (any(isnan(color)))
         color = vec3(0.0);
-    fragColor = vec4(min(color, vec3(uMaxRadiance)), 1.0);
+    color = min(color, vec3(uMaxRadiance));
+#if defined(ALPHA_BLEND) && DEBUG_VIEW == DEBUG_NONE
+    // glTF alphaMode BLEND: "over" with premultiplied colour (blend ONE, ONE_MINUS_SRC_ALPHA).
+    fragColor = vec4(color * m.alpha, m.alpha);
+#else
+    fragColor = vec4(color, 1.0);
+#endif
 }

@@ -1,4 +1,4 @@
-#include "OffscreenRender.h"
+#include "render/OffscreenRender.h"
 
 #include "render/Framebuffer.h"
 #include "render/IblSettings.h"

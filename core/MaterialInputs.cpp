@@ -1,0 +1,145 @@
+#include "core/MaterialInputs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include <glm/geometric.hpp>
+
+#include "core/ToneMap.h"
+
+namespace facet {
+
+double pickChannel(const glm::dvec4& texel, MapChannel channel)
+{
+    switch (channel) {
+    case MapChannel::G:
+        return texel.g;
+    case MapChannel::B:
+        return texel.b;
+    case MapChannel::A:
+        return texel.a;
+    case MapChannel::R:
+    case MapChannel::Rgb:
+        break;
+    }
+    return texel.r;
+}
+
+double scalarMapValue(const MaterialMap& map, const glm::dvec4& texel)
+{
+    const double value = pickChannel(texel, map.channel);
+    return map.invert ? 1.0 - value : value;
+}
+
+glm::dvec3 shadingNormal(const glm::dvec3& ng, const glm::dvec4& tangent, const glm::dvec4& normalTexel,
+                         double strength, bool flipGreen)
+{
+    // Gram-Schmidt: the interpolated tangent is neither unit nor perpendicular to ng.
+    glm::dvec3 t = glm::dvec3(tangent) - ng * glm::dot(ng, glm::dvec3(tangent));
+    const double tLength = glm::length(t);
+    if (tLength < 1e-8)
+        return ng;
+    t /= tLength;
+    const glm::dvec3 b = glm::cross(ng, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
+    glm::dvec3 tn = glm::dvec3(normalTexel) * 2.0 - 1.0;
+    if (flipGreen)
+        tn.y = -tn.y;
+    tn.x *= strength;
+    tn.y *= strength;
+    const glm::dvec3 n = t * tn.x + b * tn.y + ng * tn.z;
+    const double nLength = glm::length(n);
+    return nLength > 1e-8 ? n / nLength : ng;
+}
+
+namespace {
+
+// One texel as the GPU holds it: sRGB maps are 8-bit encoded values decoded when read.
+glm::dvec4 texelValue(const Image& image, int x, int y, ColorEncoding colorSpace)
+{
+    const glm::dvec4 stored(image.at(x, y));
+    if (colorSpace != ColorEncoding::SRGB)
+        return stored;
+    glm::dvec4 linear;
+    for (int c = 0; c < 4; ++c) {
+        const double quantised = std::round(std::clamp(stored[c], 0.0, 1.0) * 255.0) / 255.0;
+        linear[c] = c < 3 ? tonemap::srgbToLinear(quantised) : quantised;
+    }
+    return linear;
+}
+
+int wrap(int i, int size)
+{
+    const int r = i % size;
+    return r < 0 ? r + size : r;
+}
+
+} // namespace
+
+glm::dvec4 sampleTexture(const Image& image, ColorEncoding colorSpace, const glm::dvec2& uv)
+{
+    if (image.isEmpty())
+        return glm::dvec4(0.0, 0.0, 0.0, 1.0);
+    const int width = image.width();
+    const int height = image.height();
+    // Texel space with centres at integers; t = 0 is the bottom row, which Image stores last.
+    const double x = uv.x * width - 0.5;
+    const double y = uv.y * height - 0.5;
+    const double x0 = std::floor(x);
+    const double y0 = std::floor(y);
+    const double fx = x - x0;
+    const double fy = y - y0;
+    const auto at = [&](double tx, double ty) {
+        const int column = wrap(int(std::fmod(tx, double(width))), width);
+        const int rowFromBottom = wrap(int(std::fmod(ty, double(height))), height);
+        return texelValue(image, column, height - 1 - rowFromBottom, colorSpace);
+    };
+    const glm::dvec4 bottom = glm::mix(at(x0, y0), at(x0 + 1.0, y0), fx);
+    const glm::dvec4 top = glm::mix(at(x0, y0 + 1.0), at(x0 + 1.0, y0 + 1.0), fx);
+    return glm::mix(bottom, top, fy);
+}
+
+MaterialInfo materialInputs(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv)
+{
+    const auto read = [&](MapSlot slot) -> std::optional<glm::dvec4> {
+        const Image* image = images[std::size_t(slot)];
+        const MaterialMap& map = material.map(slot);
+        if (!image || image->isEmpty() || !map.hasTexture())
+            return std::nullopt;
+        return sampleTexture(*image, map.colorSpace, map.uv.apply(uv));
+    };
+
+    MaterialInfo m;
+    m.baseColor = glm::dvec3(material.baseColorFactor());
+    m.alpha = material.baseColorFactor().a;
+    if (const auto base = read(MapSlot::BaseColor)) {
+        const MapChannel channel = material.map(MapSlot::BaseColor).channel;
+        m.baseColor *= channel == MapChannel::Rgb ? glm::dvec3(*base) : glm::dvec3(pickChannel(*base, channel));
+        // A single-channel pick is a greyscale colour without coverage of its own.
+        if (channel == MapChannel::Rgb)
+            m.alpha *= base->a;
+    }
+    m.emissive = material.emissive();
+    if (const auto emissive = read(MapSlot::Emissive))
+        m.emissive *= glm::dvec3(*emissive);
+    m.metallic = material.metallic();
+    if (const auto texel = read(MapSlot::Metallic))
+        m.metallic *= scalarMapValue(material.map(MapSlot::Metallic), *texel);
+    m.perceptualRoughness = material.roughness();
+    if (const auto texel = read(MapSlot::Roughness))
+        m.perceptualRoughness *= scalarMapValue(material.map(MapSlot::Roughness), *texel);
+    m.occlusion = 1.0;
+    if (const auto texel = read(MapSlot::Occlusion))
+        // glTF occlusionTexture.strength: mix(1, ao, strength).
+        m.occlusion = 1.0
+            + material.occlusionStrength() * (scalarMapValue(material.map(MapSlot::Occlusion), *texel) - 1.0);
+    m.baseColor = glm::max(m.baseColor, glm::dvec3(0.0));
+    m.emissive = glm::max(m.emissive, glm::dvec3(0.0));
+    m.alpha = std::clamp(m.alpha, 0.0, 1.0);
+    m.metallic = std::clamp(m.metallic, 0.0, 1.0);
+    m.perceptualRoughness = std::clamp(m.perceptualRoughness, 0.0, 1.0);
+    m.ior = material.ior;
+    return m;
+}
+
+} // namespace facet

@@ -1,0 +1,51 @@
+#pragma once
+// The material's inputs at a surface point, from its factors and texture maps: the CPU twin of
+// resources/shaders/material_inputs.glsl (same function names), so tests can hold the GPU's
+// texture reads, channel picks, inversion, colour decoding, UV transforms and normal mapping to
+// an independent evaluation (tests/MaterialMapsGLTest.cpp).
+//
+// Texture reads follow OpenGL's rules for the textures render/TextureCache makes: uv (0, 0) is the
+// image's bottom-left corner (core/Mesh.h; Image stores the top row first), texel centres sit at
+// (i + 0.5) / size, wrap mode REPEAT, bilinear between the four nearest texels of level 0. An
+// sRGB-encoded map is decoded per texel before filtering, as GL_SRGB8_ALPHA8 does (the sRGB
+// specification's intent); its texels are quantised to 8 bits first, as the upload does.
+// Mipmapping is not modelled: compare where the GPU magnifies or the texture is smooth.
+
+#include <array>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/Image.h"
+#include "core/Material.h"
+#include "core/MaterialBrdf.h"
+
+namespace facet {
+
+// One image per MapSlot (null: the slot uses its factor alone, like a variant without HAS_*_MAP).
+using MaterialMapImages = std::array<const Image*, kMapSlotCount>;
+
+// The value of `channel` of a texel; Rgb on a scalar map reads red (GLSL pickChannel).
+double pickChannel(const glm::dvec4& texel, MapChannel channel);
+
+// A scalar map's value: the picked channel, inverted when the map says so (GLSL scalarMapValue).
+double scalarMapValue(const MaterialMap& map, const glm::dvec4& texel);
+
+// The shading normal from the unit geometric normal `ng` (facing the viewer), the vertex tangent
+// (xyz along dP/du, any length; w = handedness, glTF 2.0) and the normal map's texel (values in
+// [0, 1], OpenGL convention +Y green; `flipGreen` for DirectX maps), X and Y scaled by `strength`
+// (glTF normalTexture.scale). Returns ng where the tangent frame or the result degenerates.
+glm::dvec3 shadingNormal(const glm::dvec3& ng, const glm::dvec4& tangent, const glm::dvec4& normalTexel,
+                         double strength, bool flipGreen);
+
+// Bilinear, repeating read of level 0 at `uv` (see the top of this file); sRGB-encoded images are
+// decoded to linear RGB (alpha stays as it is). An empty image reads (0, 0, 0, 1).
+glm::dvec4 sampleTexture(const Image& image, ColorEncoding colorSpace, const glm::dvec2& uv);
+
+// The material's inputs at texture coordinate `uv` (before any UV transform: each map applies its
+// own, core/Material.h UvTransform): base colour and its alpha, metallic, perceptual roughness
+// (clamped to [0, 1]), occlusion (glTF strength mix), emitted radiance and IOR (GLSL materialInputs).
+MaterialInfo materialInputs(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv);
+
+} // namespace facet

@@ -1,0 +1,479 @@
+// The material's texture maps on the GPU against their CPU twin (core/MaterialInputs.h), one row
+// per map input and feature (Magnum's per-feature golden rows): each map alone, all five
+// together, a packed texture feeding three slots, every channel, inversion, colour space, normal
+// strength, the DirectX green flip and the UV transform. Each row is a project with texture files
+// on disk, rendered the way `facet render --reference-view` renders it (core/ProjectAssets loads
+// the maps, render/SceneFromProject builds the scene, render/OffscreenRender draws and reads back
+// the RGBA16F target) by a fresh Renderer, so every map is uploaded in the row's first frame, as
+// after opening a project.
+//
+// The GPU writes the inputs through debug views (base-color, metallic, roughness, occlusion,
+// shading-normal). The CPU evaluates the same inputs from the texture coordinate, the geometric
+// normal and the tangent that the GPU interpolated (the uv, geometric-normal and tangent debug
+// views), so the comparison isolates the material inputs from the tessellation.
+
+#include "core/Image.h"
+#include "core/MaterialInputs.h"
+#include "core/Project.h"
+#include "core/ProjectAssets.h"
+#include "core/ReferenceView.h"
+#include "render/Framebuffer.h"
+#include "render/HeadlessGLContext.h"
+#include "render/IblPrecompute.h"
+#include "render/IblSettings.h"
+#include "render/OffscreenRender.h"
+#include "render/Renderer.h"
+#include "render/SceneFromProject.h"
+
+#include "TestSupport.h"
+
+#include <QTemporaryDir>
+#include <QtTest/QTest>
+
+#include <OpenImageIO/imageio.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <vector>
+
+using namespace facet;
+
+namespace {
+
+constexpr int kRenderSize = 96;
+constexpr int kTextureSize = 64;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// Writes an 8-bit PNG with OpenImageIO directly (not Image::save, so a bug there cannot hide one
+// in the loader). `texel` gets (x, y) with y = 0 the top row and returns values in [0, 1].
+bool writePng(const QString& path, int channels, const std::function<glm::dvec4(int, int)>& texel)
+{
+    std::vector<unsigned char> pixels(std::size_t(kTextureSize) * kTextureSize * std::size_t(channels));
+    for (int y = 0; y < kTextureSize; ++y)
+        for (int x = 0; x < kTextureSize; ++x) {
+            const glm::dvec4 value = texel(x, y);
+            for (int c = 0; c < channels; ++c)
+                pixels[(std::size_t(y) * kTextureSize + std::size_t(x)) * std::size_t(channels) + std::size_t(c)]
+                    = static_cast<unsigned char>(std::lround(std::clamp(value[c], 0.0, 1.0) * 255.0));
+        }
+    auto output = OIIO::ImageOutput::create(path.toStdString());
+    if (!output)
+        return false;
+    OIIO::ImageSpec spec(kTextureSize, kTextureSize, channels, OIIO::TypeDesc::UINT8);
+    // The values are unassociated (as PNG stores them): without this OIIO divides colour by alpha.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    return output->open(path.toStdString(), spec) && output->write_image(OIIO::TypeDesc::UINT8, pixels.data())
+        && output->close();
+}
+
+// Smooth, periodic signals: one period across the texture, so repeat wrapping has no seam and a
+// mip level's box filter changes them by less than 0.5% (cos(pi / 64) for the first level).
+double wave(int i, double phase = 0.0)
+{
+    return std::cos(kTwoPi * (double(i) + 0.5) / kTextureSize + phase);
+}
+
+// What one row sets up on top of the default material.
+struct Row {
+    const char* name;
+    std::function<void(Material&, const QString& folder)> setup;
+};
+
+QString file(const QString& folder, const char* name)
+{
+    return folder + QLatin1Char('/') + QLatin1String(name);
+}
+
+void useMap(Material& m, MapSlot slot, const QString& path, MapChannel channel, ColorEncoding colorSpace)
+{
+    MaterialMap& map = m.map(slot);
+    map.path = path.toStdString();
+    map.channel = channel;
+    map.colorSpace = colorSpace;
+}
+
+void useBaseColor(Material& m, const QString& folder)
+{
+    useMap(m, MapSlot::BaseColor, file(folder, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+}
+void useNormal(Material& m, const QString& folder)
+{
+    useMap(m, MapSlot::Normal, file(folder, "normal.png"), MapChannel::Rgb, ColorEncoding::Linear);
+}
+void useScalar(Material& m, MapSlot slot, const QString& path, MapChannel channel)
+{
+    useMap(m, slot, path, channel, ColorEncoding::Linear);
+}
+
+const std::vector<Row>& rows()
+{
+    static const std::vector<Row> table = {
+        {"base-color", [](Material& m, const QString& f) { useBaseColor(m, f); }},
+        {"base-color-linear",
+         [](Material& m, const QString& f) {
+             useBaseColor(m, f);
+             m.map(MapSlot::BaseColor).colorSpace = ColorEncoding::Linear;
+         }},
+        {"base-color-channel-g",
+         [](Material& m, const QString& f) {
+             useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::G, ColorEncoding::SRGB);
+         }},
+        {"normal", [](Material& m, const QString& f) { useNormal(m, f); }},
+        {"normal-strength-0.5",
+         [](Material& m, const QString& f) {
+             useNormal(m, f);
+             m.setFactor(MapSlot::Normal, 0.5);
+         }},
+        {"normal-strength-2",
+         [](Material& m, const QString& f) {
+             useNormal(m, f);
+             m.setFactor(MapSlot::Normal, 2.0);
+         }},
+        {"normal-directx",
+         [](Material& m, const QString& f) {
+             useNormal(m, f);
+             m.map(MapSlot::Normal).flipGreen = true;
+         }},
+        {"metallic", [](Material& m, const QString& f) { useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R); }},
+        {"roughness", [](Material& m, const QString& f) { useScalar(m, MapSlot::Roughness, file(f, "grey.png"), MapChannel::R); }},
+        {"occlusion",
+         [](Material& m, const QString& f) {
+             useScalar(m, MapSlot::Occlusion, file(f, "grey.png"), MapChannel::R);
+             m.setFactor(MapSlot::Occlusion, 0.7);
+         }},
+        {"roughness-channel-r", [](Material& m, const QString& f) { useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::R); }},
+        {"roughness-channel-g", [](Material& m, const QString& f) { useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G); }},
+        {"roughness-channel-b", [](Material& m, const QString& f) { useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::B); }},
+        {"roughness-channel-a", [](Material& m, const QString& f) { useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::A); }},
+        {"metallic-channel-a", [](Material& m, const QString& f) { useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::A); }},
+        {"metallic-invert",
+         [](Material& m, const QString& f) {
+             useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::B);
+             m.map(MapSlot::Metallic).invert = true;
+         }},
+        {"roughness-invert",
+         [](Material& m, const QString& f) {
+             useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::A);
+             m.map(MapSlot::Roughness).invert = true;
+         }},
+        {"occlusion-invert",
+         [](Material& m, const QString& f) {
+             useScalar(m, MapSlot::Occlusion, file(f, "grey.png"), MapChannel::R);
+             m.map(MapSlot::Occlusion).invert = true;
+         }},
+        {"roughness-srgb",
+         [](Material& m, const QString& f) {
+             useMap(m, MapSlot::Roughness, file(f, "grey.png"), MapChannel::R, ColorEncoding::SRGB);
+         }},
+        {"orm-packed",
+         [](Material& m, const QString& f) {
+             useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
+             useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+             useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::B);
+         }},
+        {"uv-scale",
+         [](Material& m, const QString& f) {
+             useBaseColor(m, f);
+             m.map(MapSlot::BaseColor).uv.scale = {2.0, 3.0};
+         }},
+        {"uv-offset",
+         [](Material& m, const QString& f) {
+             useScalar(m, MapSlot::Roughness, file(f, "grey.png"), MapChannel::R);
+             m.map(MapSlot::Roughness).uv.offset = {0.25, -0.1};
+         }},
+        {"uv-rotation",
+         [](Material& m, const QString& f) {
+             useNormal(m, f);
+             m.map(MapSlot::Normal).uv.rotationDegrees = 30.0;
+         }},
+        {"emissive",
+         [](Material& m, const QString& f) {
+             useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+             m.map(MapSlot::Emissive).factor = glm::dvec4(1.0, 0.5, 0.25, 1.0);
+             m.emissiveStrength = 2.0;
+         }},
+        {"emissive-factor-only",
+         [](Material& m, const QString&) {
+             m.map(MapSlot::Emissive).factor = glm::dvec4(0.2, 0.4, 0.6, 1.0);
+             m.emissiveStrength = 3.0;
+         }},
+        {"base-color-alpha",
+         [](Material& m, const QString& f) {
+             useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+             m.map(MapSlot::BaseColor).factor.a = 0.8;
+         }},
+        {"all-five",
+         [](Material& m, const QString& f) {
+             useBaseColor(m, f);
+             useNormal(m, f);
+             useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
+             useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+             useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
+         }},
+        {"all-six",
+         [](Material& m, const QString& f) {
+             useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+             useNormal(m, f);
+             useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
+             useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+             useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
+             useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+             m.map(MapSlot::Emissive).factor = glm::dvec4(1.0);
+         }},
+        {"all-five-transformed",
+         [](Material& m, const QString& f) {
+             useBaseColor(m, f);
+             useNormal(m, f);
+             useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
+             useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+             useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
+             m.map(MapSlot::BaseColor).uv.scale = {2.0, 2.0};
+             m.map(MapSlot::Normal).uv.rotationDegrees = -45.0;
+             m.map(MapSlot::Metallic).uv.offset = {0.5, 0.5};
+             m.map(MapSlot::Roughness).uv = UvTransform {{1.5, 0.5}, {0.1, 0.2}, 90.0};
+             m.map(MapSlot::Occlusion).invert = true;
+             m.map(MapSlot::Normal).flipGreen = true;
+             m.setFactor(MapSlot::Normal, 1.5);
+         }},
+    };
+    return table;
+}
+
+// The views compared, and what each shows of the CPU twin's MaterialInfo.
+struct ViewCheck {
+    const char* view;
+    std::function<glm::dvec3(const MaterialInfo&, const glm::dvec3& shadingNormal)> expected;
+};
+const std::vector<ViewCheck>& viewChecks()
+{
+    static const std::vector<ViewCheck> checks = {
+        {"base-color", [](const MaterialInfo& m, const glm::dvec3&) { return m.baseColor; }},
+        {"metallic", [](const MaterialInfo& m, const glm::dvec3&) { return glm::dvec3(m.metallic); }},
+        // The view shows the roughness used in shading, after the clamp to the minimum.
+        {"roughness",
+         [](const MaterialInfo& m, const glm::dvec3&) {
+             return glm::dvec3(std::max(m.perceptualRoughness, Material::kMinPerceptualRoughness));
+         }},
+        {"occlusion", [](const MaterialInfo& m, const glm::dvec3&) { return glm::dvec3(m.occlusion); }},
+        {"shading-normal", [](const MaterialInfo&, const glm::dvec3& n) { return n * 0.5 + 0.5; }},
+        {"emissive", [](const MaterialInfo& m, const glm::dvec3&) { return m.emissive; }},
+        {"alpha", [](const MaterialInfo& m, const glm::dvec3&) { return glm::dvec3(m.alpha); }},
+    };
+    return checks;
+}
+
+glm::dvec3 rgb(const Image& image, int x, int y)
+{
+    return glm::dvec3(glm::vec3(image.at(x, y)));
+}
+
+} // namespace
+
+class MaterialMapsGLTest : public QObject {
+    Q_OBJECT
+public:
+    static void initMain() { facet::test::forgetDisplayServer(); }
+
+private Q_SLOTS:
+    void initTestCase();
+    void cleanupTestCase();
+    void matchesCpuTwin_data();
+    void matchesCpuTwin();
+
+private:
+    std::optional<Image> render(const Project& project, const std::string& view, std::string* error);
+
+    QTemporaryDir m_folder;
+    std::optional<HeadlessGLContext> m_context;
+    std::optional<IblPrecompute> m_ibl;
+    // What the GPU interpolated, per pixel (constant for the sphere): texture coordinate,
+    // geometric normal (0.5 n + 0.5), tangent (0.5 t + 0.5, from a normal-mapped variant).
+    std::optional<Image> m_uv;
+    std::optional<Image> m_geometricNormal;
+    std::optional<Image> m_tangent;
+    std::vector<glm::ivec2> m_pixels; // the pixels compared
+};
+
+std::optional<Image> MaterialMapsGLTest::render(const Project& project, const std::string& view, std::string* error)
+{
+    Project p = project;
+    p.view.debugView = view;
+    const auto assets = loadProjectAssets(p, error);
+    if (!assets)
+        return std::nullopt;
+    const IblSettings settings = *IblSettings::preset("draft");
+    const auto ibl = m_ibl->prepare(assets->environment, settings, nullptr, error);
+    if (!ibl)
+        return std::nullopt;
+    const RenderScene scene = sceneFromProject(p, *assets, ibl, sceneOptionsFor(settings, /*referenceView=*/true));
+    // A fresh renderer per image: every map is uploaded in this frame, as after opening a project.
+    Renderer renderer;
+    return renderOffscreen(renderer, scene, kRenderSize, kRenderSize, OffscreenOutput::LinearRadiance, error);
+}
+
+void MaterialMapsGLTest::initTestCase()
+{
+    QVERIFY(m_folder.isValid());
+    const QString folder = m_folder.path();
+    // basecolor: three independent smooth signals; packed: four distinct ones (one per channel);
+    // grey: one channel; normal: a tangent-space normal tilted both ways, encoded 0.5 n + 0.5.
+    QVERIFY(writePng(file(folder, "basecolor.png"), 3, [](int x, int y) {
+        return glm::dvec4(0.5 + 0.4 * wave(x), 0.5 + 0.4 * wave(y), 0.5 + 0.4 * wave(x + y, 1.0), 1.0);
+    }));
+    QVERIFY(writePng(file(folder, "packed.png"), 4, [](int x, int y) {
+        return glm::dvec4(0.5 + 0.45 * wave(x), 0.5 + 0.45 * wave(y, 0.7), 0.5 + 0.45 * wave(x - y, 2.0),
+                          0.5 + 0.45 * wave(x, 1.9));
+    }));
+    QVERIFY(writePng(file(folder, "grey.png"), 1, [](int x, int y) {
+        return glm::dvec4(0.5 + 0.45 * wave(x + y, 0.3));
+    }));
+    QVERIFY(writePng(file(folder, "normal.png"), 3, [](int x, int y) {
+        const glm::dvec3 n = glm::normalize(glm::dvec3(0.35 * wave(x), 0.35 * wave(y, 1.2), 1.0));
+        return glm::dvec4(n * 0.5 + 0.5, 1.0);
+    }));
+
+    std::string error;
+    m_context = HeadlessGLContext::create(&error);
+    QVERIFY2(m_context, error.c_str());
+    m_ibl.emplace(folder + QStringLiteral("/ibl-cache"), /*useDiskCache=*/false);
+
+    Project project = Project::defaultProject();
+    project.environment.source = "uniform:0.5";
+    project.lights.clear();
+    m_uv = render(project, "uv", &error);
+    QVERIFY2(m_uv, error.c_str());
+    m_geometricNormal = render(project, "geometric-normal", &error);
+    QVERIFY2(m_geometricNormal, error.c_str());
+    useNormal(project.material, folder);
+    m_tangent = render(project, "tangent", &error);
+    QVERIFY2(m_tangent, error.c_str());
+
+    // Interior sphere pixels, away from the silhouette (margin 2), from grazing angles (n.v > 0.4)
+    // and from the poles (|n.y| < 0.8): there the sphere's u changes fast across a pixel and the
+    // GPU reads coarser mip levels than the CPU twin's level 0. Pixels next to the UV seam
+    // (u jumps from 1 to 0) are left out too: the GPU picks the mip level from UV derivatives over
+    // 2 x 2 pixels, which across the seam say "the whole texture in one pixel".
+    const auto nearSeam = [this](int x, int y) {
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx)
+                if (std::abs(m_uv->at(x + dx, y + dy).x - m_uv->at(x, y).x) > 0.5f)
+                    return true;
+        return false;
+    };
+    for (int y = 0; y < kRenderSize; ++y)
+        for (int x = 0; x < kRenderSize; ++x) {
+            if (!referenceview::isInteriorSpherePixel(x, y, kRenderSize, kRenderSize, 2) || nearSeam(x, y))
+                continue;
+            const glm::dvec3 d = referenceview::rayDirection(x, y, kRenderSize, kRenderSize);
+            const glm::dvec3 n = *referenceview::intersectSphere(d);
+            if (glm::dot(n, -d) > 0.4 && std::abs(n.y) < 0.8)
+                m_pixels.emplace_back(x, y);
+        }
+    QVERIFY2(m_pixels.size() > 2000, qPrintable(QStringLiteral("%1 pixels compared").arg(m_pixels.size())));
+
+    // The inputs are what they claim: uv in [0, 1], unit normals facing the camera, unit tangents
+    // perpendicular to them (a broken view would make every row below meaningless).
+    for (const glm::ivec2& p : m_pixels) {
+        const glm::dvec3 uv = rgb(*m_uv, p.x, p.y);
+        QVERIFY(uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0 && uv.z == 0.0);
+        const glm::dvec3 ng = rgb(*m_geometricNormal, p.x, p.y) * 2.0 - 1.0;
+        const glm::dvec3 t = rgb(*m_tangent, p.x, p.y) * 2.0 - 1.0;
+        QVERIFY(std::abs(glm::length(ng) - 1.0) < 0.01 && ng.z > 0.0);
+        QVERIFY(std::abs(glm::length(t) - 1.0) < 0.01 && std::abs(glm::dot(t, ng)) < 0.01);
+    }
+}
+
+void MaterialMapsGLTest::cleanupTestCase()
+{
+    m_ibl.reset(); // GL objects go while the context is current
+    m_context.reset();
+}
+
+void MaterialMapsGLTest::matchesCpuTwin_data()
+{
+    QTest::addColumn<int>("row");
+    for (std::size_t i = 0; i < rows().size(); ++i)
+        QTest::newRow(rows()[i].name) << int(i);
+}
+
+void MaterialMapsGLTest::matchesCpuTwin()
+{
+    QFETCH(int, row);
+    Project project = Project::defaultProject();
+    project.environment.source = "uniform:0.5";
+    project.lights.clear();
+    // Factors other than 1, so that "the factor multiplies the texture" is checked too.
+    Material& material = project.material;
+    material.setBaseColor(glm::dvec3(0.9, 0.8, 1.0));
+    material.setFactor(MapSlot::Metallic, 0.8);
+    material.setFactor(MapSlot::Roughness, 0.9);
+    rows()[std::size_t(row)].setup(material, m_folder.path());
+    std::string error;
+    QVERIFY2(material.validate(&error), error.c_str());
+
+    // The CPU twin reads the same files through the same loader.
+    const auto assets = loadProjectAssets(project, &error);
+    QVERIFY2(assets, error.c_str());
+    MaterialMapImages images {};
+    for (MapSlot slot : kAllMapSlots)
+        images[std::size_t(slot)] = assets->maps[std::size_t(slot)].image.get();
+
+    for (const ViewCheck& check : viewChecks()) {
+        const auto gpu = render(project, check.view, &error);
+        QVERIFY2(gpu, error.c_str());
+        double maxError = 0.0;
+        double sumError = 0.0;
+        glm::ivec2 worst {0};
+        for (const glm::ivec2& p : m_pixels) {
+            const glm::dvec2 uv(rgb(*m_uv, p.x, p.y));
+            const glm::dvec3 ng = glm::normalize(rgb(*m_geometricNormal, p.x, p.y) * 2.0 - 1.0);
+            const glm::dvec3 t = rgb(*m_tangent, p.x, p.y) * 2.0 - 1.0;
+            const MaterialInfo info = materialInputs(material, images, uv);
+            glm::dvec3 n = ng;
+            if (const Image* normalMap = images[std::size_t(MapSlot::Normal)]) {
+                const MaterialMap& map = material.map(MapSlot::Normal);
+                const glm::dvec4 texel = sampleTexture(*normalMap, map.colorSpace, map.uv.apply(uv));
+                // The sphere's tangents all have handedness +1 (core/MeshPrimitives).
+                n = shadingNormal(ng, glm::dvec4(t, 1.0), texel, map.factor.x, map.flipGreen);
+            }
+            const glm::dvec3 expected = check.expected(info, n);
+            const glm::dvec3 actual = rgb(*gpu, p.x, p.y);
+
+            const glm::dvec3 d = glm::abs(actual - expected);
+            const double e = std::max({d.x, d.y, d.z});
+            if (!(e <= maxError)) {
+                maxError = std::isfinite(e) ? e : INFINITY;
+                worst = p;
+            }
+            sumError += e;
+        }
+        const double meanError = sumError / double(m_pixels.size());
+        // Bounds: the GPU filters trilinearly (llvmpipe: 8-bit bilinear weights) and picks coarser
+        // mip levels toward the masked-out limb, where the twin reads level 0; its sRGB decode and
+        // the RGBA16F target round by ~5e-4. Measured over every row on llvmpipe (Mesa 22.3):
+        // max 0.012, mean 0.0025, both base colour with UV scale 2 x 3 (more minification); the
+        // emissive rows scale the same errors by up to 2. A map bound to the wrong unit or not at
+        // all is off by 0.1 to 1 (the texture-unit defect of issue 8 measured max 0.78, mean 0.56).
+        constexpr double kMaxBound = 0.025;
+        constexpr double kMeanBound = 0.005;
+        std::printf("  %-22s %-15s max %.5f (at %d,%d), mean %.6f\n", rows()[std::size_t(row)].name, check.view,
+                    maxError, worst.x, worst.y, meanError);
+        QVERIFY2(maxError <= kMaxBound && meanError <= kMeanBound,
+                 qPrintable(QStringLiteral("%1 view: max %2 (pixel %3,%4), mean %5 against the CPU twin")
+                                .arg(QLatin1String(check.view))
+                                .arg(maxError)
+                                .arg(worst.x)
+                                .arg(worst.y)
+                                .arg(meanError)));
+    }
+}
+
+QTEST_GUILESS_MAIN(MaterialMapsGLTest)
+#include "MaterialMapsGLTest.moc"
