@@ -10,7 +10,10 @@
 
 #include <QtGlobal>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+
+#include "core/GltfImport.h"
 
 namespace facet {
 
@@ -103,6 +106,30 @@ std::string temporaryPathFor(const std::string& path)
     return path + ".tmp-" + std::to_string(std::uniform_int_distribution<unsigned>()(generator));
 }
 
+// ".png", ".jpg", ".webp", ... for encoded bytes, by their signature (the MIME type a glTF asset
+// gives is optional and sometimes wrong).
+std::string extensionForEncodedImage(const std::vector<unsigned char>& bytes, const std::string& mimeType)
+{
+    const auto startsWith = [&bytes](std::initializer_list<unsigned char> signature, std::size_t at = 0) {
+        if (bytes.size() < at + signature.size())
+            return false;
+        return std::equal(signature.begin(), signature.end(), bytes.begin() + std::ptrdiff_t(at));
+    };
+    if (startsWith({0x89, 'P', 'N', 'G'}))
+        return ".png";
+    if (startsWith({0xFF, 0xD8, 0xFF}))
+        return ".jpg";
+    if (startsWith({'R', 'I', 'F', 'F'}) && startsWith({'W', 'E', 'B', 'P'}, 8))
+        return ".webp";
+    if (startsWith({0x76, 0x2F, 0x31, 0x01}))
+        return ".exr";
+    if (mimeType == "image/jpeg")
+        return ".jpg";
+    if (mimeType == "image/webp")
+        return ".webp";
+    return ".png";
+}
+
 } // namespace
 
 Image::Image(int width, int height, glm::vec4 fill)
@@ -170,14 +197,37 @@ std::optional<Image> Image::load(const std::string& path, std::string* error, Im
     if (stats)
         *stats = {};
     try {
+        // An image embedded in a glTF asset ("asset.glb#images/2", core/GltfImport.h) is decoded
+        // from memory: OpenImageIO picks the reader by the name's extension, which comes from the
+        // bytes' signature.
+        std::vector<unsigned char> embedded;
+        std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
+        std::string openName = path;
         std::error_code ec;
         const std::filesystem::file_status status = std::filesystem::status(path, ec);
         if (status.type() == std::filesystem::file_type::not_found) {
-            setError(error, kFunction, path, "no such file");
-            return std::nullopt;
-        }
-        if (std::filesystem::is_directory(status)) {
+            const std::optional<GltfImageReference> reference = parseGltfImageReference(path);
+            if (!reference) {
+                setError(error, kFunction, path, "no such file");
+                return std::nullopt;
+            }
+            std::string mimeType;
+            std::string problem;
+            auto bytes = readGltfImage(*reference, &mimeType, &problem);
+            if (!bytes) {
+                if (error)
+                    *error = std::string(kFunction) + ": " + problem;
+                return std::nullopt;
+            }
+            embedded = std::move(*bytes);
+            memory = std::make_unique<OIIO::Filesystem::IOMemReader>(embedded.data(), embedded.size());
+            openName = "embedded" + extensionForEncodedImage(embedded, mimeType);
+        } else if (std::filesystem::is_directory(status)) {
             setError(error, kFunction, path, "is a directory, not an image");
+            return std::nullopt;
+        } else if (!std::filesystem::is_regular_file(status)) {
+            // A device (/dev/zero), a FIFO or a socket would be read forever or block.
+            setError(error, kFunction, path, "is not a regular file");
             return std::nullopt;
         }
 
@@ -186,7 +236,12 @@ std::optional<Image> Image::load(const std::string& path, std::string* error, Im
         // must keep its colour where alpha is 0.
         OIIO::ImageSpec config;
         config.attribute("oiio:UnassociatedAlpha", 1);
-        std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(path, &config);
+        // OIIO 2.4's open(name, config, ioproxy) ignores the proxy when a config is given: the
+        // proxy travels in the config instead (a pointer to the pointer, TypeDesc::PTR).
+        void* proxy = memory.get();
+        if (proxy)
+            config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(openName, &config);
         if (!input) {
             setError(error, kFunction, path, OIIO::geterror());
             return std::nullopt;

@@ -1,7 +1,7 @@
 #pragma once
-// Mesh files through Assimp (glTF/GLB, OBJ, FBX, PLY, DAE, STL, ... whatever Assimp 5.2 reads),
-// flattened into one facet::Mesh with a sub-mesh per mesh instance. docs/meshes.md describes
-// the pipeline and its limits.
+// Mesh files through Assimp (OBJ, FBX, PLY, DAE, STL, ... whatever Assimp 5.2 reads) and glTF/GLB
+// through core/GltfImport, flattened into one facet::Mesh with a sub-mesh per mesh instance.
+// docs/meshes.md describes the pipeline and its limits.
 
 #include <cstddef>
 #include <optional>

@@ -1,0 +1,1023 @@
+#include "core/GltfImport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <map>
+#include <numbers>
+#include <set>
+#include <utility>
+
+#include <QFile>
+#include <QFileInfo>
+#include <QUrl>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include "core/GltfSupport.h"
+#include "core/TinyGltf.h"
+
+#include <draco/compression/decode.h>
+#include <nlohmann/json.hpp>
+#include "core/MeshFinish.h"
+
+namespace facet {
+
+namespace {
+
+using gltfsupport::Notes;
+
+// ---- Reading the file ---------------------------------------------------------------------
+
+// tinygltf's file callbacks, replaced so that a buffer or image URI can never make Facet read a
+// device, a FIFO or an enormous file (issue 12: /dev/zero and FIFOs given as inputs hang), and
+// so that `~` or `$VAR` in a URI is not expanded.
+struct FileAccess {
+    std::size_t maxBytes = 0;
+};
+
+// Any existing entry "exists", so that readWholeFile() can say what is wrong with it.
+bool fileExists(const std::string& path, void*)
+{
+    return QFileInfo::exists(QString::fromStdString(path));
+}
+
+std::string expandFilePath(const std::string& path, void*)
+{
+    return path;
+}
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* userData)
+{
+    const auto* access = static_cast<const FileAccess*>(userData);
+    const QFileInfo info(QString::fromStdString(path));
+    if (!info.exists()) {
+        *err = "no such file";
+        return false;
+    }
+    if (!info.isFile()) {
+        *err = "not a regular file";
+        return false;
+    }
+    if (std::size_t(info.size()) > access->maxBytes) {
+        *err = "larger than " + std::to_string(access->maxBytes >> 20) + " MiB";
+        return false;
+    }
+    QFile file(info.filePath());
+    if (!file.open(QIODevice::ReadOnly)) {
+        *err = file.errorString().toStdString();
+        return false;
+    }
+    const QByteArray data = file.read(qint64(access->maxBytes) + 1);
+    if (file.error() != QFileDevice::NoError || std::size_t(data.size()) > access->maxBytes) {
+        *err = file.error() != QFileDevice::NoError ? file.errorString().toStdString() : "file grew while reading";
+        return false;
+    }
+    out->assign(data.begin(), data.end());
+    return true;
+}
+
+bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsigned char>&, void*)
+{
+    *err = "Facet does not write through the glTF reader";
+    return false;
+}
+
+// Keeps the encoded bytes of data-URI images (tinygltf keeps no URI for them) and decodes
+// nothing: embedded images are read on demand by readGltfImage().
+bool keepEncodedImage(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+    const unsigned char* bytes, int size, void*)
+{
+    if (image->uri.empty() && image->bufferView < 0 && bytes && size > 0) {
+        image->image.assign(bytes, bytes + size);
+        image->as_is = true;
+    }
+    return true;
+}
+
+// tinygltf's messages are several lines; Facet's are one.
+std::string oneLine(std::string text)
+{
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+        text.pop_back();
+    std::string result;
+    for (char c : text)
+        result += c == '\n' ? std::string("; ") : std::string(1, c);
+    return result;
+}
+
+// tinygltf refuses a primitive whose "indices" accessor has no buffer view, which is how
+// KHR_draco_mesh_compression stores them (the CC0 sample meshes do), and its own Draco support
+// indexes buffer views without bounds checks. So Draco primitives lose their "indices" before
+// tinygltf sees the JSON, and decodeDraco() reads the indices from the bitstream, checked.
+// Returns the JSON unchanged when there is nothing to strip or it does not parse (tinygltf then
+// reports the syntax error).
+std::string withoutDracoIndices(const std::string& text)
+{
+    nlohmann::json json = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
+    if (json.is_discarded() || !json.is_object() || !json.contains("meshes") || !json["meshes"].is_array())
+        return text;
+    bool changed = false;
+    for (auto& mesh : json["meshes"]) {
+        if (!mesh.is_object() || !mesh.contains("primitives") || !mesh["primitives"].is_array())
+            continue;
+        for (auto& primitive : mesh["primitives"]) {
+            if (primitive.is_object() && primitive.contains("extensions") && primitive["extensions"].is_object()
+                && primitive["extensions"].contains("KHR_draco_mesh_compression") && primitive.contains("indices")) {
+                primitive.erase("indices");
+                changed = true;
+            }
+        }
+    }
+    return changed ? json.dump() : text;
+}
+
+std::uint32_t readUint32(const std::vector<unsigned char>& bytes, std::size_t at)
+{
+    std::uint32_t value = 0;
+    std::memcpy(&value, bytes.data() + at, 4);
+    return value; // glTF binary is little-endian, as every machine Facet builds for
+}
+
+// Parses the asset with Facet's file callbacks. False with *problem (no prefix).
+bool loadModel(const std::string& path, std::size_t maxBytes, tinygltf::Model& model, std::string* problem,
+    std::string* warning)
+{
+    const QFileInfo info(QString::fromStdString(path));
+    if (path.empty())
+        return gltfsupport::fail("no file name given", problem);
+    if (!info.exists())
+        return gltfsupport::fail("file does not exist", problem);
+    if (info.isDir())
+        return gltfsupport::fail("is a directory, not a glTF file", problem);
+    if (!info.isFile())
+        return gltfsupport::fail("is not a regular file", problem);
+    if (info.size() == 0)
+        return gltfsupport::fail("file is empty", problem);
+    FileAccess access {maxBytes};
+    std::vector<unsigned char> bytes;
+    std::string readError;
+    if (!readWholeFile(&bytes, &readError, path, &access))
+        return gltfsupport::fail("cannot read it: " + readError, problem);
+
+    tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks({&fileExists, &expandFilePath, &readWholeFile, &writeWholeFile, &access});
+    loader.SetImageLoader(&keepEncodedImage, nullptr);
+    const std::string baseDir = info.absolutePath().toStdString();
+    std::string err;
+    std::string warn;
+    bool ok = false;
+    try {
+        const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+        if (binary) {
+            if (bytes.size() < 12)
+                return gltfsupport::fail("cut short: a .glb header is 12 bytes, the file has "
+                        + std::to_string(bytes.size()),
+                    problem);
+            if (readUint32(bytes, 8) > bytes.size())
+                return gltfsupport::fail("cut short: its header says " + std::to_string(readUint32(bytes, 8))
+                        + " bytes, the file has " + std::to_string(bytes.size()),
+                    problem);
+            // Header (magic, version, length) and the JSON chunk's header: rewrite the JSON
+            // chunk when Draco primitives need it, keep everything after it as it is.
+            if (bytes.size() >= 20 && readUint32(bytes, 16) == 0x4E4F534A /* "JSON" */) {
+                const std::size_t jsonLength = readUint32(bytes, 12);
+                if (20 + std::uint64_t(jsonLength) <= bytes.size()) {
+                    const std::string json(bytes.begin() + 20, bytes.begin() + std::ptrdiff_t(20 + jsonLength));
+                    std::string rewritten = withoutDracoIndices(json);
+                    if (rewritten != json) {
+                        while (rewritten.size() % 4 != 0)
+                            rewritten += ' ';
+                        std::vector<unsigned char> glb(bytes.begin(), bytes.begin() + 12);
+                        const auto appendUint32 = [&glb](std::uint32_t v) {
+                            const auto* p = reinterpret_cast<const unsigned char*>(&v);
+                            glb.insert(glb.end(), p, p + 4);
+                        };
+                        appendUint32(std::uint32_t(rewritten.size()));
+                        appendUint32(0x4E4F534A);
+                        glb.insert(glb.end(), rewritten.begin(), rewritten.end());
+                        glb.insert(glb.end(), bytes.begin() + std::ptrdiff_t(20 + jsonLength), bytes.end());
+                        const std::uint32_t total = std::uint32_t(glb.size());
+                        std::memcpy(glb.data() + 8, &total, 4);
+                        bytes = std::move(glb);
+                    }
+                }
+            }
+            ok = loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir);
+        } else {
+            const std::string text = withoutDracoIndices(std::string(bytes.begin(), bytes.end()));
+            ok = loader.LoadASCIIFromString(&model, &err, &warn, text.data(), unsigned(text.size()), baseDir);
+        }
+    } catch (const std::exception& e) {
+        return gltfsupport::fail(std::string("the glTF reader failed: ") + e.what(), problem);
+    } catch (...) {
+        return gltfsupport::fail("the glTF reader failed with an unknown exception", problem);
+    }
+    if (!ok)
+        return gltfsupport::fail(
+            "not a readable glTF file: " + oneLine(err.empty() ? std::string("unknown error") : err), problem);
+    if (warning)
+        *warning = oneLine(warn);
+    return true;
+}
+
+// ---- Accessors ----------------------------------------------------------------------------
+
+// A checked view of an accessor's elements: every byte it addresses lies inside its buffer.
+struct AccessorView {
+    const unsigned char* data = nullptr;
+    std::size_t count = 0;
+    std::size_t stride = 0;
+    int componentType = 0;
+    int components = 0;
+    bool normalized = false;
+};
+
+int componentSize(int componentType)
+{
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return 4;
+    default:
+        return 0;
+    }
+}
+
+int componentCount(int type)
+{
+    switch (type) {
+    case TINYGLTF_TYPE_SCALAR:
+        return 1;
+    case TINYGLTF_TYPE_VEC2:
+        return 2;
+    case TINYGLTF_TYPE_VEC3:
+        return 3;
+    case TINYGLTF_TYPE_VEC4:
+        return 4;
+    default:
+        return 0;
+    }
+}
+
+std::optional<AccessorView> accessorView(const tinygltf::Model& model, int index, int expectedComponents,
+    const std::string& what, std::string* problem)
+{
+    const auto failed = [&](const std::string& text) -> std::optional<AccessorView> {
+        gltfsupport::fail(what + " (accessor " + std::to_string(index) + "): " + text, problem);
+        return std::nullopt;
+    };
+    if (index < 0 || std::size_t(index) >= model.accessors.size())
+        return failed("no such accessor (the file has " + std::to_string(model.accessors.size()) + ")");
+    const tinygltf::Accessor& accessor = model.accessors[std::size_t(index)];
+    const int size = componentSize(accessor.componentType);
+    const int components = componentCount(accessor.type);
+    if (size == 0)
+        return failed("unknown component type " + std::to_string(accessor.componentType));
+    if (components != expectedComponents)
+        return failed("expected " + std::to_string(expectedComponents) + " components per element, got "
+            + std::to_string(components));
+    if (accessor.sparse.isSparse)
+        return failed("sparse accessors are not supported");
+    if (accessor.count == 0)
+        return failed("it has no elements");
+    if (accessor.bufferView < 0 || std::size_t(accessor.bufferView) >= model.bufferViews.size())
+        return failed("no buffer view (data compressed by an extension, or a broken reference)");
+    const tinygltf::BufferView& view = model.bufferViews[std::size_t(accessor.bufferView)];
+    if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size())
+        return failed("buffer view " + std::to_string(accessor.bufferView) + " names no buffer");
+    const tinygltf::Buffer& buffer = model.buffers[std::size_t(view.buffer)];
+    const std::uint64_t elementSize = std::uint64_t(size) * std::uint64_t(components);
+    const std::uint64_t stride = view.byteStride == 0 ? elementSize : std::uint64_t(view.byteStride);
+    if (stride < elementSize || stride % std::uint64_t(size) != 0)
+        return failed("byte stride " + std::to_string(view.byteStride) + " does not fit its elements");
+    const std::uint64_t viewEnd = std::uint64_t(view.byteOffset) + std::uint64_t(view.byteLength);
+    if (viewEnd > buffer.data.size())
+        return failed("buffer view " + std::to_string(accessor.bufferView) + " reaches past the end of its buffer ("
+            + std::to_string(viewEnd) + " > " + std::to_string(buffer.data.size()) + " bytes)");
+    if (accessor.count > (std::uint64_t(1) << 32))
+        return failed(std::to_string(accessor.count) + " elements is more than a mesh can hold");
+    const std::uint64_t last = std::uint64_t(accessor.byteOffset) + stride * (std::uint64_t(accessor.count) - 1)
+        + elementSize;
+    if (last > std::uint64_t(view.byteLength))
+        return failed(std::to_string(accessor.count) + " elements reach past the end of buffer view "
+            + std::to_string(accessor.bufferView) + " (" + std::to_string(last) + " > "
+            + std::to_string(view.byteLength) + " bytes)");
+    if ((std::uint64_t(view.byteOffset) + std::uint64_t(accessor.byteOffset)) % std::uint64_t(size) != 0)
+        return failed("its data is not aligned to its component size");
+    AccessorView result;
+    result.data = buffer.data.data() + view.byteOffset + accessor.byteOffset;
+    result.count = accessor.count;
+    result.stride = std::size_t(stride);
+    result.componentType = accessor.componentType;
+    result.components = components;
+    result.normalized = accessor.normalized;
+    return result;
+}
+
+// Component `c` of element `i` as a float (glTF 2.0 section 3.11: normalised integers map to
+// [0, 1] or [-1, 1]).
+float component(const AccessorView& view, std::size_t i, int c)
+{
+    const unsigned char* p = view.data + i * view.stride + std::size_t(c) * std::size_t(componentSize(view.componentType));
+    switch (view.componentType) {
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+        float value;
+        std::memcpy(&value, p, 4);
+        return value;
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return view.normalized ? float(*p) / 255.0f : float(*p);
+    case TINYGLTF_COMPONENT_TYPE_BYTE: {
+        const auto value = static_cast<std::int8_t>(*p);
+        return view.normalized ? std::max(float(value) / 127.0f, -1.0f) : float(value);
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        std::uint16_t value;
+        std::memcpy(&value, p, 2);
+        return view.normalized ? float(value) / 65535.0f : float(value);
+    }
+    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+        std::int16_t value;
+        std::memcpy(&value, p, 2);
+        return view.normalized ? std::max(float(value) / 32767.0f, -1.0f) : float(value);
+    }
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+        std::uint32_t value;
+        std::memcpy(&value, p, 4);
+        return float(value);
+    }
+    default:
+        return 0.0f;
+    }
+}
+
+std::uint32_t indexAt(const AccessorView& view, std::size_t i)
+{
+    const unsigned char* p = view.data + i * view.stride;
+    switch (view.componentType) {
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return *p;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+        std::uint16_t value;
+        std::memcpy(&value, p, 2);
+        return value;
+    }
+    default: {
+        std::uint32_t value;
+        std::memcpy(&value, p, 4);
+        return value;
+    }
+    }
+}
+
+// ---- Nodes --------------------------------------------------------------------------------
+
+glm::mat4 localTransform(const tinygltf::Node& node)
+{
+    if (node.matrix.size() == 16) {
+        glm::mat4 m;
+        for (int column = 0; column < 4; ++column)
+            for (int row = 0; row < 4; ++row)
+                m[column][row] = float(node.matrix[std::size_t(column * 4 + row)]); // column-major, as glm
+        return m;
+    }
+    glm::mat4 t(1.0f);
+    if (node.translation.size() == 3)
+        t[3] = glm::vec4(float(node.translation[0]), float(node.translation[1]), float(node.translation[2]), 1.0f);
+    glm::mat4 r(1.0f);
+    if (node.rotation.size() == 4) {
+        // glTF stores (x, y, z, w); glm::quat's constructor takes (w, x, y, z).
+        const glm::quat q(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]),
+            float(node.rotation[2]));
+        r = glm::mat4_cast(glm::length(q) > 0.0f ? glm::normalize(q) : glm::quat(1.0f, 0.0f, 0.0f, 0.0f));
+    }
+    glm::mat4 s(1.0f);
+    if (node.scale.size() == 3) {
+        s[0][0] = float(node.scale[0]);
+        s[1][1] = float(node.scale[1]);
+        s[2][2] = float(node.scale[2]);
+    }
+    return t * r * s;
+}
+
+bool isFiniteMatrix(const glm::mat4& m)
+{
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(m[c][r]))
+                return false;
+    return true;
+}
+
+struct MeshInstance {
+    int mesh = -1;
+    int node = -1;
+    glm::mat4 transform {1.0f};
+};
+
+// The mesh instances of the scene to show, depth first with an explicit stack. A node reached a
+// second time means a cycle or a node with two parents, both invalid glTF (section 3.5.1).
+std::optional<std::vector<MeshInstance>> meshInstances(const tinygltf::Model& model, const GltfImportOptions& options,
+    std::string* problem)
+{
+    std::vector<int> roots;
+    const int sceneIndex = model.defaultScene >= 0 ? model.defaultScene : (model.scenes.empty() ? -1 : 0);
+    if (sceneIndex >= 0) {
+        if (std::size_t(sceneIndex) >= model.scenes.size()) {
+            gltfsupport::fail("the default scene " + std::to_string(sceneIndex) + " does not exist", problem);
+            return std::nullopt;
+        }
+        roots = model.scenes[std::size_t(sceneIndex)].nodes;
+    } else {
+        // No scene: every node that is nobody's child is a root.
+        std::vector<bool> isChild(model.nodes.size(), false);
+        for (const tinygltf::Node& node : model.nodes)
+            for (int child : node.children)
+                if (child >= 0 && std::size_t(child) < model.nodes.size())
+                    isChild[std::size_t(child)] = true;
+        for (std::size_t i = 0; i < model.nodes.size(); ++i)
+            if (!isChild[i])
+                roots.push_back(int(i));
+    }
+    std::vector<MeshInstance> instances;
+    std::vector<bool> visited(model.nodes.size(), false);
+    std::vector<std::pair<int, glm::mat4>> stack;
+    for (auto it = roots.rbegin(); it != roots.rend(); ++it)
+        stack.emplace_back(*it, glm::mat4(1.0f));
+    std::size_t visits = 0;
+    while (!stack.empty()) {
+        const auto [index, parent] = stack.back();
+        stack.pop_back();
+        if (index < 0 || std::size_t(index) >= model.nodes.size()) {
+            gltfsupport::fail("node " + std::to_string(index) + " does not exist (the file has "
+                    + std::to_string(model.nodes.size()) + " nodes)",
+                problem);
+            return std::nullopt;
+        }
+        if (visited[std::size_t(index)]) {
+            gltfsupport::fail("node " + std::to_string(index)
+                    + " is reached twice: the node graph has a cycle or a node with two parents",
+                problem);
+            return std::nullopt;
+        }
+        visited[std::size_t(index)] = true;
+        if (++visits > options.maxNodes) {
+            gltfsupport::fail("more than " + std::to_string(options.maxNodes) + " nodes", problem);
+            return std::nullopt;
+        }
+        const tinygltf::Node& node = model.nodes[std::size_t(index)];
+        const glm::mat4 global = parent * localTransform(node);
+        if (node.mesh >= 0) {
+            if (std::size_t(node.mesh) >= model.meshes.size()) {
+                gltfsupport::fail("node " + std::to_string(index) + " names mesh " + std::to_string(node.mesh)
+                        + ", which does not exist",
+                    problem);
+                return std::nullopt;
+            }
+            instances.push_back({node.mesh, index, global});
+        }
+        for (auto it = node.children.rbegin(); it != node.children.rend(); ++it)
+            stack.emplace_back(*it, global);
+    }
+    return instances;
+}
+
+// ---- Primitives ---------------------------------------------------------------------------
+
+struct PartFacts {
+    bool hasUvs = false;
+    bool hasTangents = false;
+    bool flatNormals = false;
+};
+
+// One vertex attribute of a primitive: read in place from a checked accessor, or decoded (Draco).
+struct Attribute {
+    std::optional<AccessorView> view;
+    std::vector<float> decoded; // count x components
+    int components = 0;
+    bool present() const { return view.has_value() || !decoded.empty(); }
+    float at(std::size_t i, int c) const
+    {
+        return view ? component(*view, i, c) : decoded[i * std::size_t(components) + std::size_t(c)];
+    }
+};
+
+// A primitive's vertex attributes and its index list (0, 1, 2, ... when it has no indices).
+struct PrimitiveData {
+    std::size_t vertexCount = 0;
+    Attribute position, normal, tangent, uv;
+    std::vector<std::uint32_t> indices;
+};
+
+// Reads the accessors a primitive names, each checked (accessorView) and consistent in count.
+std::optional<PrimitiveData> readAccessors(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+    const std::string& where, const GltfImportOptions& options, std::string* problem)
+{
+    PrimitiveData data;
+    const auto attribute = [&](const char* name) {
+        const auto it = primitive.attributes.find(name);
+        return it == primitive.attributes.end() ? -1 : it->second;
+    };
+    const int positionIndex = attribute("POSITION");
+    if (positionIndex < 0) {
+        gltfsupport::fail(where + ": no POSITION attribute", problem);
+        return std::nullopt;
+    }
+    data.position.view = accessorView(model, positionIndex, 3, where + " POSITION", problem);
+    if (!data.position.view)
+        return std::nullopt;
+    data.position.components = 3;
+    data.vertexCount = data.position.view->count;
+    if (data.vertexCount > options.mesh.maxVertices) {
+        gltfsupport::fail(where + ": " + std::to_string(data.vertexCount) + " vertices are over the "
+                + std::to_string(options.mesh.maxVertices) + " Facet previews (docs/meshes.md, limits)",
+            problem);
+        return std::nullopt;
+    }
+    const auto optional = [&](const char* name, int components, Attribute& out) {
+        const int index = attribute(name);
+        if (index < 0)
+            return true;
+        out.view = accessorView(model, index, components, where + " " + name, problem);
+        if (!out.view)
+            return false;
+        out.components = components;
+        if (out.view->count != data.vertexCount)
+            return gltfsupport::fail(where + " " + name + ": " + std::to_string(out.view->count)
+                    + " elements, but POSITION has " + std::to_string(data.vertexCount),
+                problem);
+        return true;
+    };
+    if (!optional("NORMAL", 3, data.normal) || !optional("TANGENT", 4, data.tangent)
+        || !optional("TEXCOORD_0", 2, data.uv))
+        return std::nullopt;
+    if (primitive.indices >= 0) {
+        const auto indices = accessorView(model, primitive.indices, 1, where + " indices", problem);
+        if (!indices)
+            return std::nullopt;
+        if (indices->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE
+            && indices->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT
+            && indices->componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
+            gltfsupport::fail(where + " indices: must be unsigned integers", problem);
+            return std::nullopt;
+        }
+        if (indices->count > 3 * options.mesh.maxTriangles) {
+            gltfsupport::fail(where + ": " + std::to_string(indices->count) + " indices, over the limit", problem);
+            return std::nullopt;
+        }
+        data.indices.resize(indices->count);
+        for (std::size_t i = 0; i < indices->count; ++i)
+            data.indices[i] = indexAt(*indices, i);
+    } else {
+        data.indices.resize(data.vertexCount);
+        for (std::size_t i = 0; i < data.vertexCount; ++i)
+            data.indices[i] = std::uint32_t(i);
+    }
+    return data;
+}
+
+// KHR_draco_mesh_compression: the primitive's geometry is one Draco bitstream in a buffer view,
+// decoded here with Debian's libdraco. Every reference the extension makes (buffer view, attribute
+// ids, component counts) is checked before use.
+std::optional<PrimitiveData> decodeDraco(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
+    const tinygltf::Value& extension, const std::string& where, const GltfImportOptions& options,
+    std::string* problem)
+{
+    const auto failed = [&](const std::string& text) -> std::optional<PrimitiveData> {
+        gltfsupport::fail(where + " (KHR_draco_mesh_compression): " + text, problem);
+        return std::nullopt;
+    };
+    if (!extension.Has("bufferView") || !extension.Get("bufferView").IsInt() || !extension.Has("attributes")
+        || !extension.Get("attributes").IsObject())
+        return failed("needs a bufferView and an attributes object");
+    const int viewIndex = extension.Get("bufferView").GetNumberAsInt();
+    if (viewIndex < 0 || std::size_t(viewIndex) >= model.bufferViews.size())
+        return failed("buffer view " + std::to_string(viewIndex) + " does not exist");
+    const tinygltf::BufferView& view = model.bufferViews[std::size_t(viewIndex)];
+    if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size()
+        || std::uint64_t(view.byteOffset) + std::uint64_t(view.byteLength) > model.buffers[std::size_t(view.buffer)].data.size())
+        return failed("buffer view " + std::to_string(viewIndex) + " reaches past the end of its buffer");
+    const unsigned char* bytes = model.buffers[std::size_t(view.buffer)].data.data() + view.byteOffset;
+
+    draco::DecoderBuffer buffer;
+    buffer.Init(reinterpret_cast<const char*>(bytes), view.byteLength);
+    draco::Decoder decoder;
+    auto decoded = decoder.DecodeMeshFromBuffer(&buffer);
+    if (!decoded.ok())
+        return failed("Draco cannot decode it: " + decoded.status().error_msg_string());
+    const std::unique_ptr<draco::Mesh> mesh = std::move(decoded).value();
+    if (!mesh)
+        return failed("Draco decoded no mesh");
+    PrimitiveData data;
+    data.vertexCount = mesh->num_points();
+    if (data.vertexCount == 0 || mesh->num_faces() == 0)
+        return failed("the bitstream holds no triangles");
+    if (data.vertexCount > options.mesh.maxVertices || std::size_t(mesh->num_faces()) > options.mesh.maxTriangles)
+        return failed(std::to_string(data.vertexCount) + " vertices and " + std::to_string(mesh->num_faces())
+            + " triangles are over the " + std::to_string(options.mesh.maxVertices) + " / "
+            + std::to_string(options.mesh.maxTriangles) + " Facet previews (docs/meshes.md, limits)");
+
+    const tinygltf::Value& ids = extension.Get("attributes");
+    const auto read = [&](const char* name, int components, Attribute& out, bool required) {
+        if (!ids.Has(name)) {
+            if (required)
+                return gltfsupport::fail(where + " (KHR_draco_mesh_compression): no " + std::string(name), problem);
+            return true;
+        }
+        if (!ids.Get(name).IsInt())
+            return gltfsupport::fail(where + " (KHR_draco_mesh_compression): attribute id of " + std::string(name)
+                    + " is not an integer",
+                problem);
+        const draco::PointAttribute* attribute = mesh->GetAttributeByUniqueId(std::uint32_t(ids.Get(name).GetNumberAsInt()));
+        if (!attribute || attribute->num_components() != components)
+            return gltfsupport::fail(where + " (KHR_draco_mesh_compression): " + std::string(name)
+                    + " is missing from the bitstream or has the wrong number of components",
+                problem);
+        // The glTF accessor says whether integer data means [0, 1] (normalized).
+        const auto it = primitive.attributes.find(name);
+        const bool normalized = it != primitive.attributes.end() && it->second >= 0
+            && std::size_t(it->second) < model.accessors.size() && model.accessors[std::size_t(it->second)].normalized;
+        float scale = 1.0f;
+        if (normalized && !attribute->normalized()) {
+            switch (attribute->data_type()) {
+            case draco::DT_UINT8: scale = 1.0f / 255.0f; break;
+            case draco::DT_UINT16: scale = 1.0f / 65535.0f; break;
+            case draco::DT_INT8: scale = 1.0f / 127.0f; break;
+            case draco::DT_INT16: scale = 1.0f / 32767.0f; break;
+            default: break;
+            }
+        }
+        out.components = components;
+        out.decoded.resize(data.vertexCount * std::size_t(components));
+        float values[4] = {0, 0, 0, 0};
+        for (draco::PointIndex i(0); i < mesh->num_points(); ++i) {
+            if (!attribute->ConvertValue<float>(attribute->mapped_index(i), std::int8_t(components), values))
+                return gltfsupport::fail(where + " (KHR_draco_mesh_compression): " + std::string(name)
+                        + " cannot be read as numbers",
+                    problem);
+            for (int c = 0; c < components; ++c)
+                out.decoded[std::size_t(i.value()) * std::size_t(components) + std::size_t(c)] = values[c] * scale;
+        }
+        return true;
+    };
+    if (!read("POSITION", 3, data.position, true) || !read("NORMAL", 3, data.normal, false)
+        || !read("TANGENT", 4, data.tangent, false) || !read("TEXCOORD_0", 2, data.uv, false))
+        return std::nullopt;
+    data.indices.reserve(std::size_t(mesh->num_faces()) * 3);
+    for (draco::FaceIndex f(0); f < mesh->num_faces(); ++f)
+        for (int k = 0; k < 3; ++k)
+            data.indices.push_back(mesh->face(f)[k].value());
+    return data;
+}
+
+// Appends one primitive instance as a sub-mesh. nullopt with *problem on broken data; a
+// PartFacts without a new sub-mesh for points, lines or no triangles.
+std::optional<PartFacts> appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
+    std::size_t primitiveIndex, int materialIndex, const GltfImportOptions& options, Mesh& out,
+    std::string* problem)
+{
+    const tinygltf::Mesh& gltfMesh = model.meshes[std::size_t(instance.mesh)];
+    const tinygltf::Primitive& primitive = gltfMesh.primitives[primitiveIndex];
+    const std::string where = "mesh " + std::to_string(instance.mesh) + " primitive " + std::to_string(primitiveIndex);
+    const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+    if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
+        return PartFacts {}; // points and lines: the caller counts and drops them
+
+    const auto draco = primitive.extensions.find("KHR_draco_mesh_compression");
+    const std::optional<PrimitiveData> data = draco != primitive.extensions.end()
+        ? decodeDraco(model, primitive, draco->second, where, options, problem)
+        : readAccessors(model, primitive, where, options, problem);
+    if (!data)
+        return std::nullopt;
+    const std::size_t vertexCount = data->vertexCount;
+
+    // Triangle corners as vertex indices of this primitive.
+    const std::vector<std::uint32_t>& list = data->indices;
+    std::vector<std::uint32_t> corners;
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        corners.assign(list.begin(), list.begin() + std::ptrdiff_t(list.size() / 3 * 3));
+    } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+        // Every other triangle flips its winding back (glTF 2.0 section 3.7.2.1).
+        for (std::size_t i = 0; i + 2 < list.size(); ++i)
+            if (i % 2 == 0)
+                corners.insert(corners.end(), {list[i], list[i + 1], list[i + 2]});
+            else
+                corners.insert(corners.end(), {list[i + 1], list[i], list[i + 2]});
+    } else {
+        for (std::size_t i = 1; i + 1 < list.size(); ++i)
+            corners.insert(corners.end(), {list[0], list[i], list[i + 1]});
+    }
+    for (std::uint32_t c : corners)
+        if (c >= vertexCount) {
+            gltfsupport::fail(where + ": index " + std::to_string(c) + " is out of range (" + std::to_string(vertexCount)
+                    + " vertices)",
+                problem);
+            return std::nullopt;
+        }
+    if (corners.empty())
+        return PartFacts {};
+
+    const glm::mat3 linear(instance.transform);
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
+    const bool mirrored = glm::determinant(linear) < 0.0f;
+    PartFacts facts;
+    facts.hasUvs = data->uv.present();
+    facts.hasTangents = data->tangent.present() && data->normal.present();
+    facts.flatNormals = !data->normal.present();
+
+    SubMesh sub;
+    sub.name = !gltfMesh.name.empty() ? gltfMesh.name : model.nodes[std::size_t(instance.node)].name;
+    if (sub.name.empty())
+        sub.name = "mesh " + std::to_string(instance.mesh);
+    if (gltfMesh.primitives.size() > 1)
+        sub.name += " #" + std::to_string(primitiveIndex);
+    sub.materialIndex = materialIndex;
+    sub.firstIndex = std::uint32_t(out.indices.size());
+
+    const auto vertexAt = [&](std::uint32_t i) {
+        Vertex v;
+        const glm::vec3 p(data->position.at(i, 0), data->position.at(i, 1), data->position.at(i, 2));
+        v.position = glm::vec3(instance.transform * glm::vec4(p, 1.0f));
+        if (data->normal.present())
+            v.normal = normalizedOrZero(
+                normalMatrix * glm::vec3(data->normal.at(i, 0), data->normal.at(i, 1), data->normal.at(i, 2)));
+        if (data->tangent.present()) {
+            const glm::vec3 t(data->tangent.at(i, 0), data->tangent.at(i, 1), data->tangent.at(i, 2));
+            const float w = data->tangent.at(i, 3) < 0.0f ? -1.0f : 1.0f;
+            // A mirroring transform flips cross(n, t) against the transformed bitangent.
+            v.tangent = glm::vec4(linear * t, mirrored ? -w : w);
+        }
+        if (data->uv.present())
+            v.uv = glm::vec2(data->uv.at(i, 0), 1.0f - data->uv.at(i, 1)); // top-left -> bottom-left
+        return v;
+    };
+
+    const auto base = std::uint32_t(out.vertices.size());
+    if (facts.flatNormals) {
+        // glTF 2.0 section 3.7.2.1: without normals a client MUST compute flat normals, so each
+        // triangle gets vertices of its own with the face normal.
+        for (std::size_t t = 0; t + 2 < corners.size(); t += 3) {
+            Vertex a = vertexAt(corners[t]), b = vertexAt(corners[t + 1]), c = vertexAt(corners[t + 2]);
+            if (mirrored)
+                std::swap(b, c);
+            const glm::vec3 n = normalizedOrZero(glm::cross(b.position - a.position, c.position - a.position));
+            a.normal = b.normal = c.normal = n;
+            const auto first = std::uint32_t(out.vertices.size());
+            out.vertices.insert(out.vertices.end(), {a, b, c});
+            out.indices.insert(out.indices.end(), {first, first + 1, first + 2});
+        }
+    } else {
+        for (std::uint32_t i = 0; i < vertexCount; ++i)
+            out.vertices.push_back(vertexAt(i));
+        for (std::size_t t = 0; t + 2 < corners.size(); t += 3) {
+            std::uint32_t a = base + corners[t], b = base + corners[t + 1], c = base + corners[t + 2];
+            if (mirrored)
+                std::swap(b, c);
+            out.indices.insert(out.indices.end(), {a, b, c});
+        }
+    }
+    sub.indexCount = std::uint32_t(out.indices.size()) - sub.firstIndex;
+    out.subMeshes.push_back(std::move(sub));
+    return facts;
+}
+
+bool isPointOrLineMode(int mode)
+{
+    return mode == TINYGLTF_MODE_POINTS || mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_LOOP
+        || mode == TINYGLTF_MODE_LINE_STRIP;
+}
+
+// Extensions a file may require that Facet reads (everything else it requires is refused).
+const std::set<std::string>& supportedRequiredExtensions()
+{
+    static const std::set<std::string> kSupported = {"KHR_texture_transform", "KHR_materials_emissive_strength",
+        "KHR_materials_ior", "KHR_mesh_quantization", "EXT_texture_webp", "KHR_draco_mesh_compression"};
+    return kSupported;
+}
+
+std::optional<GltfAsset> importChecked(const std::string& path, const GltfImportOptions& options, std::string* problem,
+    Notes& notes)
+{
+    tinygltf::Model model;
+    std::string readerWarning;
+    if (!loadModel(path, options.maxFileBytes, model, problem, &readerWarning))
+        return std::nullopt;
+    if (!readerWarning.empty())
+        notes.add(readerWarning);
+    for (const std::string& extension : model.extensionsRequired)
+        if (!supportedRequiredExtensions().count(extension)) {
+            gltfsupport::fail("requires the extension " + extension + ", which Facet does not read", problem);
+            return std::nullopt;
+        }
+    if (model.materials.size() > options.maxMaterials) {
+        gltfsupport::fail(std::to_string(model.materials.size()) + " materials, over the limit of "
+                + std::to_string(options.maxMaterials),
+            problem);
+        return std::nullopt;
+    }
+
+    const auto instances = meshInstances(model, options, problem);
+    if (!instances)
+        return std::nullopt;
+
+    GltfAsset asset;
+    for (std::size_t i = 0; i < model.materials.size(); ++i)
+        asset.materials.push_back(gltfsupport::convertMaterial(model, int(i), path, notes));
+    int defaultMaterial = -1;
+    const auto materialFor = [&](int index) -> std::optional<int> {
+        if (index >= 0 && std::size_t(index) < model.materials.size())
+            return index;
+        if (index >= 0)
+            return std::nullopt;
+        if (defaultMaterial < 0) {
+            defaultMaterial = int(asset.materials.size());
+            asset.materials.push_back(gltfsupport::defaultGltfMaterial());
+        }
+        return defaultMaterial;
+    };
+
+    Mesh& mesh = asset.mesh;
+    mesh.name = QFileInfo(QString::fromStdString(path)).completeBaseName().toStdString();
+    ImportedParts parts;
+    parts.allHaveTangents = true;
+    std::size_t pointsAndLines = 0;
+    std::size_t flat = 0;
+    for (const MeshInstance& instance : *instances) {
+        if (!isFiniteMatrix(instance.transform) || glm::determinant(glm::mat3(instance.transform)) == 0.0f) {
+            notes.add("node " + std::to_string(instance.node) + " has a singular or non-finite transform: skipped");
+            continue;
+        }
+        const tinygltf::Mesh& gltfMesh = model.meshes[std::size_t(instance.mesh)];
+        for (std::size_t p = 0; p < gltfMesh.primitives.size(); ++p) {
+            const tinygltf::Primitive& primitive = gltfMesh.primitives[p];
+            if (isPointOrLineMode(primitive.mode)) {
+                ++pointsAndLines;
+                continue;
+            }
+            const std::optional<int> material = materialFor(primitive.material);
+            if (!material) {
+                gltfsupport::fail("mesh " + std::to_string(instance.mesh) + " primitive " + std::to_string(p)
+                        + " names material " + std::to_string(primitive.material) + ", which does not exist",
+                    problem);
+                return std::nullopt;
+            }
+            if (mesh.subMeshes.size() >= options.maxParts) {
+                gltfsupport::fail("more than " + std::to_string(options.maxParts) + " mesh parts", problem);
+                return std::nullopt;
+            }
+            const std::size_t before = mesh.subMeshes.size();
+            const auto facts = appendPrimitive(model, instance, p, *material, options, mesh, problem);
+            if (!facts)
+                return std::nullopt;
+            if (mesh.subMeshes.size() == before)
+                continue; // no triangles
+            if (!facts->hasUvs)
+                parts.withoutUvs.push_back(before);
+            parts.allHaveTangents = parts.allHaveTangents && facts->hasTangents;
+            flat += facts->flatNormals ? 1 : 0;
+            if (mesh.vertices.size() > options.mesh.maxVertices || mesh.triangleCount() > options.mesh.maxTriangles) {
+                gltfsupport::fail(std::to_string(mesh.vertices.size()) + " vertices and " + std::to_string(mesh.triangleCount())
+                        + " triangles are over the " + std::to_string(options.mesh.maxVertices) + " / "
+                        + std::to_string(options.mesh.maxTriangles) + " Facet previews (docs/meshes.md, limits)",
+                    problem);
+                return std::nullopt;
+            }
+        }
+    }
+    if (pointsAndLines > 0)
+        notes.add(std::to_string(pointsAndLines) + " primitive(s) made of points or lines dropped");
+    if (flat > 0)
+        notes.add("no normals in " + std::to_string(flat) + " primitive(s): flat normals generated (glTF 2.0 3.7.2.1)");
+    if (mesh.subMeshes.empty()) {
+        gltfsupport::fail("contains no triangles", problem);
+        return std::nullopt;
+    }
+    std::vector<std::string> repairs;
+    if (!finishImportedMesh(mesh, parts, options.mesh.uvFallback, repairs, problem))
+        return std::nullopt;
+    for (const std::string& repair : repairs)
+        notes.add(repair);
+    return asset;
+}
+
+} // namespace
+
+bool isGltfFileName(const std::string& path)
+{
+    const QString suffix = QFileInfo(QString::fromStdString(path)).suffix().toLower();
+    return suffix == QLatin1String("gltf") || suffix == QLatin1String("glb");
+}
+
+std::optional<GltfAsset> importGltf(const std::string& path, std::string* error, std::string* warning,
+    const GltfImportOptions& options)
+{
+    if (warning)
+        warning->clear();
+    Notes notes;
+    std::string problem;
+    std::optional<GltfAsset> asset;
+    try {
+        asset = importChecked(path, options, &problem, notes);
+    } catch (const std::bad_alloc&) {
+        problem = "out of memory";
+    } catch (const std::exception& e) {
+        problem = std::string("the glTF reader failed: ") + e.what();
+    }
+    if (!asset) {
+        if (error)
+            *error = "importGltf: " + path + ": " + problem;
+        return std::nullopt;
+    }
+    if (warning && !notes.empty())
+        *warning = "importGltf: " + path + ": " + notes.joined();
+    return asset;
+}
+
+std::string gltfImageReference(const std::string& assetPath, int imageIndex)
+{
+    return assetPath + "#images/" + std::to_string(imageIndex);
+}
+
+std::optional<GltfImageReference> parseGltfImageReference(const std::string& path)
+{
+    const std::string marker = "#images/";
+    const std::size_t at = path.rfind(marker);
+    if (at == std::string::npos)
+        return std::nullopt;
+    const std::string asset = path.substr(0, at);
+    const std::string digits = path.substr(at + marker.size());
+    if (!isGltfFileName(asset) || digits.empty() || digits.size() > 9
+        || !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+        return std::nullopt;
+    return GltfImageReference {asset, std::stoi(digits)};
+}
+
+std::string fileOfImagePath(const std::string& path)
+{
+    if (QFileInfo::exists(QString::fromStdString(path)))
+        return path;
+    if (const auto reference = parseGltfImageReference(path))
+        return reference->assetPath;
+    return path;
+}
+
+std::optional<std::vector<unsigned char>> readGltfImage(const GltfImageReference& reference, std::string* mimeType,
+    std::string* error)
+{
+    const auto failed = [&](const std::string& problem) -> std::optional<std::vector<unsigned char>> {
+        if (error)
+            *error = "readGltfImage: " + gltfImageReference(reference.assetPath, reference.imageIndex) + ": " + problem;
+        return std::nullopt;
+    };
+    tinygltf::Model model;
+    std::string problem;
+    if (!loadModel(reference.assetPath, GltfImportOptions {}.maxFileBytes, model, &problem, nullptr))
+        return failed(problem);
+    if (reference.imageIndex < 0 || std::size_t(reference.imageIndex) >= model.images.size())
+        return failed("the asset has " + std::to_string(model.images.size()) + " images");
+    const tinygltf::Image& image = model.images[std::size_t(reference.imageIndex)];
+    if (mimeType)
+        *mimeType = image.mimeType;
+    if (image.bufferView >= 0) {
+        if (std::size_t(image.bufferView) >= model.bufferViews.size())
+            return failed("its buffer view " + std::to_string(image.bufferView) + " does not exist");
+        const tinygltf::BufferView& view = model.bufferViews[std::size_t(image.bufferView)];
+        if (view.buffer < 0 || std::size_t(view.buffer) >= model.buffers.size())
+            return failed("its buffer view names no buffer");
+        const std::vector<unsigned char>& data = model.buffers[std::size_t(view.buffer)].data;
+        if (std::uint64_t(view.byteOffset) + std::uint64_t(view.byteLength) > data.size() || view.byteLength == 0)
+            return failed("its bytes reach past the end of the buffer (the file may be cut short)");
+        return std::vector<unsigned char>(data.begin() + std::ptrdiff_t(view.byteOffset),
+            data.begin() + std::ptrdiff_t(view.byteOffset + view.byteLength));
+    }
+    if (image.as_is && !image.image.empty())
+        return image.image; // a data URI, kept encoded by keepEncodedImage()
+    return failed(image.uri.empty() ? "no image data" : "it is the external file '" + image.uri + "', not embedded");
+}
+
+UvTransform gltfTextureTransform(const glm::dvec2& offset, double rotationRadians, const glm::dvec2& scale)
+{
+    // F M F with F(u, v) = (u, 1 - v), M = T(o) R(theta) S(s) (KHR_texture_transform's GLSL):
+    // D R(theta) D = R(-theta) and D S D = S for D = diag(1, -1), so the linear part is
+    // R(-theta) S; the translation is D R(theta) S (0, 1) + D o + (0, 1)
+    // = (o.x - s.y sin(theta), 1 - o.y - s.y cos(theta)).
+    UvTransform uv;
+    uv.scale = scale;
+    uv.rotationDegrees = -rotationRadians * 180.0 / std::numbers::pi;
+    uv.offset = {offset.x - scale.y * std::sin(rotationRadians), 1.0 - offset.y - scale.y * std::cos(rotationRadians)};
+    return uv;
+}
+
+} // namespace facet
