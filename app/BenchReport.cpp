@@ -5,7 +5,7 @@
 #include <map>
 #include <utility>
 
-#include <QSaveFile>
+#include "core/AtomicFile.h"
 
 namespace facet {
 
@@ -148,19 +148,15 @@ std::string benchCsvHeader()
 
 bool writeBenchCsv(const QString& path, const std::vector<BenchRow>& rows, std::string* error)
 {
-    QSaveFile file(path);
-    auto fail = [&]() {
-        if (error)
-            *error = "facet bench: --csv " + path.toStdString() + ": " + file.errorString().toStdString();
-        return false;
-    };
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
-        return fail();
     std::string text = benchCsvHeader() + "\n";
     for (const BenchRow& row : rows)
         text += joinCsv(rowColumns(row), false) + "\n";
-    if (file.write(text.data(), qint64(text.size())) != qint64(text.size()) || !file.commit())
-        return fail();
+    std::string reason;
+    if (!writeFileAtomically(path.toStdString(), text, &reason)) {
+        if (error)
+            *error = "facet bench: --csv " + path.toStdString() + ": " + reason;
+        return false;
+    }
     return true;
 }
 

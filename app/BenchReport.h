@@ -36,7 +36,7 @@ struct BenchRow {
 
 // The CSV header, comma-separated, no trailing newline: settings, times, errors.
 std::string benchCsvHeader();
-// Writes the header and one line per row through QSaveFile (atomic). False with `error`
+// Writes the header and one line per row through writeFileAtomically (core/AtomicFile.h). False with `error`
 // ("facet bench: --csv <path>: <reason>") when it cannot.
 bool writeBenchCsv(const QString& path, const std::vector<BenchRow>& rows, std::string* error);
 

@@ -1,5 +1,7 @@
 #include "GroundTruthCache.h"
 
+#include "core/AtomicFile.h"
+
 #include <cstdio>
 #include <cstring>
 
@@ -7,7 +9,6 @@
 #include <QDataStream>
 #include <QDir>
 #include <QFile>
-#include <QSaveFile>
 #include <QStandardPaths>
 
 namespace facet {
@@ -133,10 +134,10 @@ bool GroundTruthCache::store(const GroundTruthScene& scene, const GroundTruthSet
     };
     if (!QDir().mkpath(m_directory))
         return fail(QStringLiteral("cannot create the directory"));
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return fail(file.errorString());
-    QDataStream out(&file);
+    // Encoded in memory, then one checked atomic write (core/AtomicFile.h): a full disk leaves
+    // no truncated entry.
+    QByteArray bytes;
+    QDataStream out(&bytes, QIODevice::WriteOnly);
     out.setByteOrder(QDataStream::LittleEndian);
     out.setFloatingPointPrecision(QDataStream::SinglePrecision);
     out.writeRawData(kMagic, sizeof kMagic);
@@ -146,8 +147,12 @@ bool GroundTruthCache::store(const GroundTruthScene& scene, const GroundTruthSet
         const glm::vec4& p = image.data()[i];
         out << p.r << p.g << p.b << p.a;
     }
-    if (out.status() != QDataStream::Ok || !file.commit())
-        return fail(file.errorString());
+    if (out.status() != QDataStream::Ok)
+        return fail(QStringLiteral("encoding the entry failed"));
+    std::string reason;
+    if (!writeFileAtomically(
+            path.toStdString(), std::string_view(bytes.constData(), std::size_t(bytes.size())), &reason))
+        return fail(QStringLiteral("cannot write it: ") + QString::fromStdString(reason));
     return true;
 }
 

@@ -5,7 +5,8 @@
 // environment's content hash, rotation and intensity, the material, the shading model and the
 // integrator's settings), so a changed input is a miss, never a stale image.
 //
-// Files: <directory>/<40 hex of SHA-1 of the key text>.fgt, written with QSaveFile (atomic):
+// Files: <directory>/<40 hex of SHA-1 of the key text>.fgt, written with writeFileAtomically
+// (core/AtomicFile.h):
 //   "FACETGT1", uint32 version, uint32 width, uint32 height, uint32 key-text length, key text,
 //   width x height x RGBA float32, all little-endian (QDataStream).
 // A file whose header or key text does not match is ignored (with a warning) and overwritten.

@@ -1,16 +1,18 @@
 #include "WindowScreenshot.h"
 
+#include <QBuffer>
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QImageWriter>
 #include <QOpenGLWidget>
 #include <QPixmap>
-#include <QSaveFile>
 #include <QWidget>
 
 #include <utility>
 
 #include <cstdio>
+
+#include "core/AtomicFile.h"
 
 namespace facet {
 
@@ -57,19 +59,19 @@ void WindowScreenshot::save()
     }
     const QByteArray format = QFileInfo(m_path).suffix().toLower().toLatin1();
     const QPixmap picture = m_window->grab();
-    // Through a temporary file and a rename: a failed save never leaves half a picture.
-    QSaveFile file(m_path);
-    if (!file.open(QIODevice::WriteOnly)) {
-        fail(file.errorString());
-        return;
-    }
-    if (!picture.save(&file, format.constData())) {
-        file.cancelWriting();
+    // Encoded in memory, then written through a checked temporary file and a rename
+    // (core/AtomicFile.h): a failed save never leaves half a picture or harms an older one.
+    QByteArray encoded;
+    QBuffer buffer(&encoded);
+    buffer.open(QIODevice::WriteOnly);
+    if (!picture.save(&buffer, format.constData())) {
         fail(QStringLiteral("encoding the picture failed"));
         return;
     }
-    if (!file.commit()) {
-        fail(file.errorString());
+    std::string reason;
+    if (!writeFileAtomically(m_path.toStdString(),
+            std::string_view(encoded.constData(), std::size_t(encoded.size())), &reason)) {
+        fail(QString::fromStdString(reason));
         return;
     }
     std::fprintf(stdout, "facet: saved %dx%d screenshot to %s\n", picture.width(), picture.height(),

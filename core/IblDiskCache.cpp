@@ -1,8 +1,9 @@
 #include "core/IblDiskCache.h"
 
+#include "core/AtomicFile.h"
+
 #include <QDir>
 #include <QFile>
-#include <QSaveFile>
 #include <QStandardPaths>
 
 #include <cstdio>
@@ -134,13 +135,13 @@ bool IblDiskCache::store(std::uint64_t key, const IblCacheEntry& entry, std::str
 
     if (!QDir().mkpath(m_directory))
         return fail("cannot create the directory");
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly))
-        return fail(file.errorString().toStdString());
-    if (file.write(header) != header.size() || file.write(payload) != payload.size())
-        return fail(file.errorString().toStdString());
-    if (!file.commit())
-        return fail(file.errorString().toStdString());
+    // One buffer, one checked atomic write: a full disk leaves the old entry (or none), never a
+    // 0-byte or truncated one (core/AtomicFile.h).
+    const QByteArray bytes = header + payload;
+    std::string reason;
+    if (!writeFileAtomically(
+            path.toStdString(), std::string_view(bytes.constData(), std::size_t(bytes.size())), &reason))
+        return fail("cannot write it: " + reason);
     return true;
 }
 

@@ -11,9 +11,11 @@
 //             uint32 extra count, uint64 payload byte count, uint64 FNV-1a 64 of the payload
 //   payload : per layer uint32 width, height, faces, level, format (1 = RGBA half, 2 = RGBA
 //             float), then width * height * faces * 4 values; then `extra count` float64.
-// Files are written through QSaveFile (temporary file + atomic rename): a reader never sees a
-// half-written file. A file that is truncated, has the wrong magic/version/key, or whose
-// checksum does not match is ignored with a warning (the caller recomputes and overwrites it).
+// Files are written through writeFileAtomically (core/AtomicFile.h: a checked temporary file,
+// then an atomic rename): a reader never sees a half-written file, and a full disk leaves the
+// old entry (or none) rather than an empty one. A file that is truncated, has the wrong
+// magic/version/key, or whose checksum does not match is ignored with a warning (the caller
+// recomputes and overwrites it).
 
 #include <cstdint>
 #include <optional>

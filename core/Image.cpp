@@ -1,11 +1,12 @@
 #include "core/Image.h"
 
+#include "core/AtomicFile.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <limits>
-#include <random>
 #include <system_error>
 
 #include <QtGlobal>
@@ -85,25 +86,6 @@ float srgbToLinear(float encoded)
     if (encoded <= 0.04045f)
         return encoded / 12.92f;
     return std::pow((encoded + 0.055f) / 1.055f, 2.4f);
-}
-
-std::string temporaryPathFor(const std::string& path)
-{
-    // Same directory as the target, so the final rename stays on one file system and is
-    // atomic (POSIX rename(2)); a random suffix, so two saves of one file cannot collide.
-    static const char kDigits[] = "0123456789abcdef";
-    std::random_device device;
-    std::mt19937 generator(device());
-    std::uniform_int_distribution<int> digit(0, 15);
-    for (int attempt = 0; attempt < 16; ++attempt) {
-        std::string candidate = path + ".tmp-";
-        for (int i = 0; i < 6; ++i)
-            candidate += kDigits[digit(generator)];
-        std::error_code ec;
-        if (!std::filesystem::exists(candidate, ec))
-            return candidate;
-    }
-    return path + ".tmp-" + std::to_string(std::uniform_int_distribution<unsigned>()(generator));
 }
 
 // ".png", ".jpg", ".webp", ... for encoded bytes, by their signature (the MIME type a glTF asset
@@ -340,22 +322,33 @@ bool Image::save(const std::string& path, std::string* error, bool alpha) const
         setError(error, kFunction, path, "the image is empty");
         return false;
     }
-    std::string temporary;
-    const auto removeTemporary = [&temporary] {
-        if (!temporary.empty()) {
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-        }
-    };
     try {
-        // The writer is chosen by the final name's extension; it then writes to the temporary
-        // name, whose ".tmp-XXXXXX" suffix no writer looks at.
+        // How a failed write is noticed: OpenImageIO encodes into memory (an IOVecOutput proxy,
+        // "oiio:ioproxy"), and the bytes go to disk through writeFileAtomically, which checks
+        // every write, fsyncs, compares the size on disk and only then renames over `path`.
+        // Letting OIIO write the file itself cannot be trusted: its PNG writer reports success
+        // on a full disk and leaves a 0-byte file (issue 12, "A rendered PNG can be lost"; its
+        // file writers do not check what fwrite/fclose return). The alternative, re-reading the
+        // written temporary to validate it, costs a full decode and still trusts each decoder to
+        // notice a truncation. Encoding in memory cannot fail silently, and costs one copy of the
+        // encoded file (smaller than the float buffer below). With OIIO 2.4.7 the bytes are
+        // identical to what the writer puts in a file (compared for exr, png, hdr, jpg, tif, tga,
+        // bmp, webp, ppm). The writer is chosen by the extension of `path`.
         std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
         if (!output) {
             setError(error, kFunction, path, OIIO::geterror());
             return false;
         }
         const std::string formatName = output->format_name();
+        // A few writers (sgi, ico, rla, fits, heif in OIIO 2.4) only write to a file by name;
+        // they are refused rather than written unchecked.
+        if (!output->supports("ioproxy")) {
+            setError(error, kFunction, path,
+                "cannot write " + formatName
+                    + " files safely (OpenImageIO cannot encode them in memory to check the write); "
+                      "use .exr, .png, .hdr, .tif, .jpg or .tga");
+            return false;
+        }
         const bool isExr = formatName == "openexr";
         // Formats that store floats and nothing else; everything else gets 8 bits.
         const bool isFloatOnly = formatName == "hdr" || formatName == "pfm";
@@ -394,11 +387,12 @@ bool Image::save(const std::string& path, std::string* error, bool alpha) const
             }
         }
 
-        temporary = temporaryPathFor(path);
-        if (!output->open(temporary, spec)) {
-            const std::string reason = output->geterror();
-            removeTemporary();
-            setError(error, kFunction, path, "cannot write: " + reason);
+        std::vector<unsigned char> encoded;
+        OIIO::Filesystem::IOVecOutput memory(encoded);
+        OIIO::Filesystem::IOProxy* proxy = &memory;
+        spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        if (!output->open(path, spec)) {
+            setError(error, kFunction, path, "cannot encode: " + output->geterror());
             return false;
         }
         const bool written = output->write_image(OIIO::TypeDesc::FLOAT, buffer.data());
@@ -407,17 +401,16 @@ bool Image::save(const std::string& path, std::string* error, bool alpha) const
         if (reason.empty() && !closed)
             reason = output->geterror();
         if (!written || !closed) {
-            removeTemporary();
-            setError(error, kFunction, path, "write failed: " + reason);
+            setError(error, kFunction, path, "encoding failed: " + reason);
             return false;
         }
         output.reset();
+        buffer = {};
 
-        std::error_code ec;
-        std::filesystem::rename(temporary, path, ec);
-        if (ec) {
-            removeTemporary();
-            setError(error, kFunction, path, "cannot replace the file: " + ec.message());
+        std::string problem;
+        if (!writeFileAtomically(path,
+                std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()), &problem)) {
+            setError(error, kFunction, path, "cannot write: " + problem);
             return false;
         }
         return true;
@@ -428,7 +421,6 @@ bool Image::save(const std::string& path, std::string* error, bool alpha) const
     } catch (...) {
         setError(error, kFunction, path, "unknown error while writing");
     }
-    removeTemporary();
     return false;
 }
 

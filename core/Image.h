@@ -80,8 +80,11 @@ public:
     // `alpha` is false; values clamped to the finite half range), .hdr/.pfm floats, every other
     // format 8 bits with the values as they are, clamped to [0,1] (the caller encodes; an SRGB
     // image is tagged sRGB; alpha is written unassociated, and dropped where the format has none).
-    // Writes to "<path>.tmp-XXXXXX" in the same directory and renames it over `path`, so a failed
-    // write never leaves half a file nor harms an existing one. Errors: "Image::save: <path>: <reason>".
+    // OpenImageIO encodes into memory and the bytes go through writeFileAtomically
+    // (core/AtomicFile.h: a checked "<path>.tmp-XXXXXX" in the same folder, then a rename), so a
+    // failed write, a full disk included, never leaves half a file nor harms an existing one.
+    // Formats OpenImageIO cannot encode into memory (sgi, ico, rla, fits, heif) are refused.
+    // Errors: "Image::save: <path>: <reason>", e.g. "...: cannot write: No space left on device".
     bool save(const std::string& path, std::string* error, bool alpha = true) const;
 
 private:

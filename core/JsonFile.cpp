@@ -7,9 +7,9 @@
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonParseError>
-#include <QSaveFile>
 #include <QStorageInfo>
 
+#include "core/AtomicFile.h"
 #include "core/JsonSupport.h"
 #include "core/Project.h"
 
@@ -189,19 +189,12 @@ bool writeObjectFile(const std::string& path, const QJsonObject& object, std::st
     if (!info.absoluteDir().exists())
         return fail("the folder " + ss(info.absolutePath()) + " does not exist", problem);
     const QByteArray data = QJsonDocument(object).toJson(QJsonDocument::Indented);
-    // QSaveFile writes a temporary file next to the target and renames it over the target on
-    // commit(): a failure at any point leaves the old file as it was (DESIGN.md "Bad input").
-    // Direct-write fallback stays off, so an unwritable folder fails instead of writing in place.
-    QSaveFile file(fileName);
-    if (!file.open(QIODevice::WriteOnly))
-        return fail("cannot write it: " + ss(file.errorString()), problem);
-    if (file.write(data) != data.size()) {
-        const std::string reason = ss(file.errorString());
-        file.cancelWriting();
+    // Through a temporary file, checked at every step, then an atomic rename: a failure at any
+    // point (a full disk included) leaves the old file as it was (core/AtomicFile.h says why
+    // QSaveFile could not be trusted with that).
+    std::string reason;
+    if (!writeFileAtomically(path, std::string_view(data.constData(), std::size_t(data.size())), &reason))
         return fail("cannot write it: " + reason, problem);
-    }
-    if (!file.commit())
-        return fail("cannot write it: " + ss(file.errorString()), problem);
     return true;
 }
 

@@ -47,7 +47,7 @@ QJsonObject presetToJson(
 std::optional<MaterialPreset> presetFromJson(const QJsonObject& object, const std::string& baseDir,
     std::string* error, std::string* warning = nullptr);
 
-// Writes through QSaveFile (the old file stays intact on failure). Texture paths, when included,
+// Writes through writeFileAtomically (the old file stays intact on failure). Texture paths, when included,
 // are stored relative to the preset file's folder. Messages: "savePreset: <path>: <problem>".
 bool savePreset(const MaterialPreset& preset, const std::string& path, std::string* error,
     bool includeTexturePaths = false);

@@ -111,8 +111,9 @@ struct Project {
     static std::optional<Project> fromJson(const QJsonObject& object, const std::string& baseDir,
         std::string* error, std::string* warning = nullptr);
 
-    // Writes through QSaveFile (a temporary file, then an atomic rename): on any failure the file
-    // at `path` is untouched. Refuses an invalid project (validate()).
+    // Writes through writeFileAtomically (core/AtomicFile.h: a checked temporary file, then an
+    // atomic rename): on any failure, a full disk included, the file at `path` is untouched.
+    // Refuses an invalid project (validate()).
     bool save(const std::string& path, std::string* error) const;
     static std::optional<Project> load(
         const std::string& path, std::string* error, std::string* warning = nullptr);
@@ -152,7 +153,8 @@ bool checkFormat(const QJsonObject& object, const char* formatName, int newestVe
 // Reads a file holding one JSON object. On failure returns nullopt and sets *problem (no prefix)
 // to e.g. "no such file", "the file is empty", "line 3, column 7: unterminated string".
 std::optional<QJsonObject> readObjectFile(const std::string& path, qint64 maxBytes, std::string* problem);
-// Writes `object` (indented) through QSaveFile. On failure the old file is untouched.
+// Writes `object` (indented) through writeFileAtomically (core/AtomicFile.h). On failure the old
+// file is untouched and *problem says why, e.g. "cannot write it: No space left on device".
 bool writeObjectFile(const std::string& path, const QJsonObject& object, std::string* problem);
 } // namespace json
 

@@ -79,7 +79,7 @@ void IblDiskCacheTest::roundTrip()
     QVERIFY2(loaded, warning.c_str());
     QVERIFY(warning.empty());
     QVERIFY(sameEntry(*loaded, sampleEntry()));
-    // Overwriting replaces the file atomically (QSaveFile) and leaves no temporary behind.
+    // Overwriting replaces the file atomically (writeFileAtomically) and leaves no temporary behind.
     QVERIFY2(cache.store(key, sampleEntry(), &error), error.c_str());
     QCOMPARE(QDir(cache.directory()).entryList(QDir::Files).size(), 1);
 }

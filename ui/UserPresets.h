@@ -1,8 +1,8 @@
 #pragma once
 // The user's material presets: one JSON file per preset ("facet-material-preset", see
-// core/MaterialPresets.h) in QStandardPaths::AppDataLocation/presets. Writes are atomic
-// (core's savePreset goes through QSaveFile); a file that does not read is reported by name and
-// skipped, never deleted.
+// core/MaterialPresets.h) in QStandardPaths::AppDataLocation/presets. Writes are atomic (core's
+// savePreset goes through writeFileAtomically); a file that does not read is reported by name
+// and skipped, never deleted.
 
 #include "core/MaterialPresets.h"
 
