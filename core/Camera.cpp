@@ -1,5 +1,6 @@
 #include "core/Camera.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -31,6 +32,18 @@ glm::dmat4 Camera::viewMatrix() const
 glm::dmat4 Camera::projectionMatrix(double aspect) const
 {
     return glm::perspectiveRH_NO(glm::radians(verticalFovDegrees), aspect, nearPlane, farPlane);
+}
+
+double Camera::horizontalFovDegrees(double aspect) const
+{
+    return glm::degrees(2.0 * std::atan(aspect * std::tan(glm::radians(verticalFovDegrees) / 2.0)));
+}
+
+double Camera::framingDistance(double radius, double aspect) const
+{
+    const double smallerHalfFov
+        = glm::radians(std::min(verticalFovDegrees, horizontalFovDegrees(aspect))) / 2.0;
+    return radius / std::sin(std::atan(kFramingFill * std::tan(smallerHalfFov)));
 }
 
 bool Camera::validate(std::string* problem) const

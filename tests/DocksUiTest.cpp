@@ -1,7 +1,8 @@
 // The five dock panels driven through their widgets, in the main window under Xvfb: a roughness
 // slider drag is one undo step that re-renders and undoes back into the control; an image dropped
 // on a map slot becomes its texture (and a non-image is refused with a message); a folder of maps
-// is assigned by name in one step with a message saying what went where; the environment library
+// is assigned by name in one step with a message saying what went where (the naming table is
+// MapNamingTest's, packed channels and whole-set replacement TextureSetUiTest's); the environment library
 // switches the environment and relights; lights are added, edited and removed through the Lights
 // dock; the View dock changes exposure and the debug view; presets are saved, applied, deleted.
 
@@ -11,7 +12,6 @@
 #include "ui/EnvironmentDock.h"
 #include "ui/LightsDock.h"
 #include "ui/MainWindow.h"
-#include "ui/MapNaming.h"
 #include "ui/MapSlotWidget.h"
 #include "ui/MaterialDock.h"
 #include "ui/SceneController.h"
@@ -146,8 +146,6 @@ public:
 private Q_SLOTS:
     void initTestCase();
     void cleanupTestCase();
-    void mapNaming_data();
-    void mapNaming();
     void roughnessDragIsOneUndoStep();
     void dropImageOnSlot();
     void dropNonImageIsRefused();
@@ -186,52 +184,6 @@ void DocksUiTest::cleanupTestCase()
 {
     m_document->newProject(); // nothing to ask about on close
     m_window.reset();
-}
-
-void DocksUiTest::mapNaming_data()
-{
-    QTest::addColumn<QString>("file");
-    QTest::addColumn<int>("slot"); // -1: no map
-    QTest::addColumn<bool>("flipGreen");
-    QTest::newRow("basecolor") << "wood_basecolor.png" << int(MapSlot::BaseColor) << false;
-    QTest::newRow("albedo") << "Wood-Albedo.jpg" << int(MapSlot::BaseColor) << false;
-    QTest::newRow("diffuse") << "wood_diffuse.tga" << int(MapSlot::BaseColor) << false;
-    QTest::newRow("normal") << "wood_normal.png" << int(MapSlot::Normal) << false;
-    QTest::newRow("nrm") << "wood_NRM.png" << int(MapSlot::Normal) << false;
-    QTest::newRow("normal dx") << "wood_normal_dx.png" << int(MapSlot::Normal) << true;
-    QTest::newRow("metalness") << "wood_metalness.png" << int(MapSlot::Metallic) << false;
-    QTest::newRow("rough") << "wood_rough.exr" << int(MapSlot::Roughness) << false;
-    QTest::newRow("ao") << "wood_ao.png" << int(MapSlot::Occlusion) << false;
-    QTest::newRow("occlusion") << "wood occlusion.png" << int(MapSlot::Occlusion) << false;
-    QTest::newRow("no suffix") << "wood.png" << -1 << false;
-    QTest::newRow("suffix inside a word") << "woodao.png" << -1 << false;
-}
-
-void DocksUiTest::mapNaming()
-{
-    QFETCH(QString, file);
-    QFETCH(int, slot);
-    QFETCH(bool, flipGreen);
-    const MapNamingResult result = assignMapsByName({QStringLiteral("/textures/") + file});
-    if (slot < 0) {
-        QVERIFY(result.assignments.empty());
-        QCOMPARE(result.unmatched.size(), 1);
-        return;
-    }
-    QCOMPARE(result.assignments.size(), std::size_t(1));
-    QCOMPARE(int(result.assignments[0].slot), slot);
-    QCOMPARE(result.assignments[0].flipGreen, flipGreen);
-
-    // ORM: three slots from one file; a separate roughness file wins over its channel.
-    const MapNamingResult orm
-        = assignMapsByName({QStringLiteral("/t/metal_orm.png"), QStringLiteral("/t/metal_roughness.png")});
-    QCOMPARE(orm.assignments.size(), std::size_t(3));
-    for (const MapAssignment& a : orm.assignments) {
-        if (a.slot == MapSlot::Roughness)
-            QCOMPARE(a.path, QStringLiteral("/t/metal_roughness.png"));
-        else
-            QCOMPARE(a.channel, a.slot == MapSlot::Occlusion ? MapChannel::R : MapChannel::B);
-    }
 }
 
 void DocksUiTest::roughnessDragIsOneUndoStep()

@@ -4,11 +4,13 @@
 // to a recovery file and the recovery offer, Reset Layout. Needs a display (Xvfb).
 
 #include "ui/AutosaveController.h"
+#include "ui/CameraController.h"
 #include "ui/Document.h"
 #include "ui/MainWindow.h"
 #include "ui/MissingFilesDialog.h"
 #include "ui/ProjectFileController.h"
 #include "ui/SurfaceFormat.h"
+#include "ui/ViewportWidget.h"
 
 #include "TestSupport.h"
 
@@ -122,7 +124,11 @@ void ProjectFileUiTest::saveAndReopenGiveSameProject()
     QCOMPARE(m_window->projectFiles()->recentFiles().value(0), path);
 
     QVERIFY(m_window->projectFiles()->newProject());
-    QCOMPARE(document->project(), Project::defaultProject());
+    // The default project, its camera framed for the viewport's shape (CameraController).
+    Project fresh = Project::defaultProject();
+    fresh.camera = CameraController::defaultView(
+        double(m_window->viewport()->width()) / m_window->viewport()->height());
+    QCOMPARE(document->project(), fresh);
     QVERIFY(m_window->projectFiles()->openFile(path));
     QCOMPARE(document->project(), saved);
     QCOMPARE(document->filePath(), path);

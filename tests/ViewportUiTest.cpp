@@ -2,7 +2,8 @@
 // artefact), frames are drawn on demand only (none for a second without input), a material edit
 // re-renders without reloading anything, camera drags draw reduced previews and then one full
 // frame, the camera keys and the turntable work, number keys apply presets. Prints the measured
-// frame times. Needs a display (Xvfb via with-display.sh).
+// frame times. Framing (the first view of a project, F, Home) shows the whole object in a tall and
+// in a wide viewport, filling the smaller dimension. Needs a display (Xvfb via with-display.sh).
 
 #include "core/MaterialPresets.h"
 #include "ui/CameraController.h"
@@ -16,16 +17,19 @@
 #include "TestSupport.h"
 
 #include <QAction>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QImage>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest/QTest>
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -103,6 +107,7 @@ private Q_SLOTS:
     void cameraKeysAndWheel();
     void turntableDrawsOnlyWhileRunning();
     void numberKeyAppliesPreset();
+    void framingFitsTallAndWideViewports();
 
 private:
     QTemporaryDir m_recovery;
@@ -279,14 +284,14 @@ void ViewportUiTest::cameraKeysAndWheel()
     m_viewport->setFocus();
     QTest::keyClick(m_viewport, Qt::Key_F); // frame: aimed at the origin again
     QCOMPARE(document->project().camera.target, glm::dvec3(0.0));
-    QTest::keyClick(m_viewport, Qt::Key_Home); // reset
-    QCOMPARE(document->project().camera, Camera::referenceView());
+    QTest::keyClick(m_viewport, Qt::Key_Home); // reset: the reference view, backed off if the view is tall
+    const Camera home = CameraController::defaultView(double(m_viewport->width()) / m_viewport->height());
+    QCOMPARE(document->project().camera, home);
 
     // Fly mode: W moves forward while held.
     m_window->cameraController()->setFlyMode(true);
     QTest::keyPress(m_viewport, Qt::Key_W);
-    QTRY_VERIFY_WITH_TIMEOUT(
-        document->project().camera.position.z < Camera::referenceView().position.z, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(document->project().camera.position.z < home.position.z, 10000);
     QTest::keyRelease(m_viewport, Qt::Key_W);
     m_window->cameraController()->setFlyMode(false);
     m_window->cameraController()->resetView();
@@ -328,6 +333,133 @@ void ViewportUiTest::numberKeyAppliesPreset()
     QVERIFY(waitForFrame(m_viewport));
     document->undoStack()->undo();
     QCOMPARE(document->project().material, Project::defaultProject().material);
+}
+
+void ViewportUiTest::framingFitsTallAndWideViewports()
+{
+    // The viewport alone (no docks), so its shape is the window's; a black background, so the
+    // object is every pixel that is not black.
+    Document* document = m_window->document();
+    CameraController* camera = m_window->cameraController();
+    const QSize windowSize = m_window->size();
+    QList<QDockWidget*> hidden;
+    for (QDockWidget* dock : m_window->findChildren<QDockWidget*>())
+        if (dock->toggleViewAction()->isChecked()) { // in the layout (a tabbed-away dock is not visible)
+            dock->hide();
+            hidden.append(dock);
+        }
+    // The status bar's labels (the GL renderer's name) would keep the window wider than a tall view.
+    m_window->statusBar()->hide();
+    const auto blackBackground = [document] {
+        ViewSettings view = document->project().view;
+        view.background = BackgroundMode::Color;
+        view.backgroundColor = glm::dvec3(0.0);
+        document->setView(view, QStringLiteral("Background"));
+    };
+    // Resizes the window and waits until the viewport has drawn a full frame of its new size.
+    const auto resizeTo = [&](QSize size) {
+        QElapsedTimer clock;
+        clock.start();
+        while (clock.elapsed() < 20000) {
+            // Again until it takes: right after docks are hidden the layout still holds their width.
+            if (m_window->size() != size)
+                m_window->resize(size);
+            QTest::qWait(50);
+            const ViewportFrameStats& stats = m_viewport->lastFrameStats();
+            if (m_window->size() == size && !m_viewport->isPreviewing() && !stats.reduced
+                && stats.width == int(m_viewport->width() * m_viewport->devicePixelRatioF())
+                && stats.height == int(m_viewport->height() * m_viewport->devicePixelRatioF()))
+                return true;
+        }
+        return false;
+    };
+    // The object's bounding box in the viewport (pixels brighter than the black background).
+    const auto objectBox = [&](QRect* area) {
+        m_viewport->update();
+        waitForFrame(m_viewport);
+        waitForFullFrame(m_viewport);
+        const QImage window = m_window->grab().toImage().convertToFormat(QImage::Format_RGB32);
+        const qreal scale = window.devicePixelRatio();
+        *area = QRect(m_viewport->mapTo(m_window.get(), QPoint(0, 0)) * scale, m_viewport->size() * scale);
+        QRect box;
+        for (int y = area->top(); y <= area->bottom(); ++y)
+            for (int x = area->left(); x <= area->right(); ++x) {
+                const QRgb p = window.pixel(x, y);
+                if (std::max({qRed(p), qGreen(p), qBlue(p)}) > 24)
+                    box |= QRect(x, y, 1, 1);
+            }
+        return box.translated(-area->topLeft());
+    };
+    // The whole object is in the view, centred, with a margin, and fills the smaller dimension
+    // (Camera::kFramingFill, 85%, less the few pixels antialiasing dims below the threshold).
+    const auto framingProblem = [&](const char* what) -> QString {
+        QRect area;
+        const QRect box = objectBox(&area);
+        const int smaller = std::min(area.width(), area.height());
+        const double fill = double(area.width() < area.height() ? box.width() : box.height()) / smaller;
+        const int margin = std::min(
+            {box.left(), box.top(), area.width() - 1 - box.right(), area.height() - 1 - box.bottom()});
+        const QString report
+            = QStringLiteral("%1: view %2x%3, object %4x%5 at (%6, %7), fill %8, margin %9 px")
+                  .arg(QLatin1String(what))
+                  .arg(area.width())
+                  .arg(area.height())
+                  .arg(box.width())
+                  .arg(box.height())
+                  .arg(box.left())
+                  .arg(box.top())
+                  .arg(fill)
+                  .arg(margin);
+        qInfo("%s", qPrintable(report));
+        const bool framed = fill > 0.78 && fill < 0.90 && margin >= smaller / 50
+            && std::abs(box.center().x() - area.width() / 2) <= smaller / 50
+            && std::abs(box.center().y() - area.height() / 2) <= smaller / 50;
+        return framed ? QString() : report;
+    };
+#define CHECK_FRAMED(what)                                                                                   \
+    do {                                                                                                     \
+        const QString problem = framingProblem(what);                                                        \
+        QVERIFY2(problem.isEmpty(), qPrintable(problem));                                                    \
+    } while (false)
+
+    // A tall viewport: a new project's first view shows the whole sphere, fitted to the width.
+    QVERIFY(resizeTo(QSize(440, 980)));
+    QVERIFY2(m_viewport->height() > 1.3 * m_viewport->width(),
+        qPrintable(QStringLiteral("%1x%2").arg(m_viewport->width()).arg(m_viewport->height())));
+    document->newProject();
+    QVERIFY(document->project().camera.position.z > Camera::referenceView().position.z); // backed off
+    QVERIFY(!document->isModified()); // framing is not an edit
+    blackBackground();
+    CHECK_FRAMED("tall, new project");
+    // F after orbiting and dollying in: framed again from the new direction.
+    camera->orbit(120.0, -40.0);
+    camera->dolly(4.0);
+    camera->frameObject();
+    CHECK_FRAMED("tall, F");
+    const Camera framed = document->project().camera;
+    QCOMPARE(framed.target, glm::dvec3(0.0));
+    // The same camera in a wide viewport: not moved since F, so the resize fits it again.
+    QVERIFY(resizeTo(QSize(1240, 440)));
+    QVERIFY2(m_viewport->width() > 2.0 * m_viewport->height(),
+        qPrintable(QStringLiteral("%1x%2").arg(m_viewport->width()).arg(m_viewport->height())));
+    CHECK_FRAMED("wide, F, after the resize");
+    QVERIFY(glm::length(document->project().camera.position) < glm::length(framed.position));
+    // Home in a wide viewport is the reference view itself.
+    camera->resetView();
+    QCOMPARE(document->project().camera, Camera::referenceView());
+    CHECK_FRAMED("wide, Home");
+    // A camera the user moved stays where it is when the viewport changes shape.
+    camera->orbit(30.0, 0.0);
+    const Camera moved = document->project().camera;
+    QVERIFY(resizeTo(QSize(600, 900)));
+    QCOMPARE(document->project().camera, moved);
+
+#undef CHECK_FRAMED
+    document->newProject();
+    for (QDockWidget* dock : hidden)
+        dock->show();
+    m_window->statusBar()->show();
+    QVERIFY(resizeTo(windowSize));
 }
 
 QTEST_MAIN(ViewportUiTest)

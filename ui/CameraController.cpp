@@ -22,6 +22,7 @@ constexpr double kMinDistance = 0.2;
 constexpr double kMaxDistance = 50.0;
 constexpr double kMaxElevationDegrees = 89.0;
 constexpr double kDollyPerStep = 0.9; // distance factor per wheel notch (120 units)
+constexpr int kMinFramingPixels = 16; // a viewport narrower (or lower) than this is not framed for
 
 glm::dvec3 rotateAbout(const glm::dvec3& v, const glm::dvec3& axis, double degrees)
 {
@@ -48,6 +49,69 @@ CameraController::CameraController(
     connect(&m_turntable, &QTimer::timeout, this, &CameraController::turntableTick);
     m_flyTimer.setInterval(kTickMs);
     connect(&m_flyTimer, &QTimer::timeout, this, &CameraController::flyTick);
+    connect(m_document, &Document::projectReplaced, this, &CameraController::onProjectReplaced);
+    onProjectReplaced(); // the document's first project gets its first view too
+}
+
+void CameraController::onProjectReplaced()
+{
+    m_fit.reset();
+    // A camera that is exactly the reference view was never moved (the default project, or a
+    // project saved without touching the camera): show it whole in this viewport. A camera the
+    // user placed stays as saved.
+    if (m_document->project().camera == Camera::referenceView()) {
+        m_fit = Fit::Default;
+        m_fitted = m_document->project().camera;
+        fitToViewport(Fit::Default, false);
+    }
+}
+
+double CameraController::viewportAspect() const
+{
+    const int width = m_viewport->width();
+    const int height = m_viewport->height();
+    if (width < kMinFramingPixels || height < kMinFramingPixels)
+        return 0.0;
+    return double(width) / double(height);
+}
+
+void CameraController::fitToViewport(Fit fit, bool interactive)
+{
+    double aspect = viewportAspect();
+    if (aspect <= 0.0) {
+        if (!interactive)
+            return; // fitted when the viewport gets a size (eventFilter, QEvent::Resize)
+        aspect = 1.0; // F or Home before the viewport has a size: frame for a square
+    }
+    const Camera& current = m_document->project().camera;
+    m_fit = fit;
+    m_fitted = fit == Fit::Default ? defaultView(aspect) : framed(current, aspect);
+    if (interactive)
+        setCamera(m_fitted);
+    else
+        m_document->setCamera(m_fitted);
+}
+
+Camera CameraController::defaultView(double aspect)
+{
+    Camera camera = Camera::referenceView();
+    const glm::dvec3 offset = camera.position - camera.target;
+    const double distance = std::min(camera.framingDistance(1.0, aspect), kMaxDistance);
+    // Only ever farther: in a wide viewport the reference view itself, to the last bit.
+    if (distance > glm::length(offset))
+        camera.position = camera.target + glm::normalize(offset) * distance;
+    return camera;
+}
+
+Camera CameraController::framed(Camera camera, double aspect)
+{
+    // Meshes are normalised to the unit bounding sphere at the origin (core/ProjectAssets.h):
+    // keep the view direction, aim at the origin, back off until the sphere fits with a margin.
+    glm::dvec3 direction = camera.position - camera.target;
+    direction = glm::length(direction) > 0.0 ? glm::normalize(direction) : glm::dvec3(0.0, 0.0, 1.0);
+    camera.target = glm::dvec3(0.0);
+    camera.position = direction * std::min(camera.framingDistance(1.0, aspect), kMaxDistance);
+    return camera;
 }
 
 void CameraController::setCamera(const Camera& camera)
@@ -111,21 +175,12 @@ void CameraController::dolly(double wheelSteps)
 
 void CameraController::frameObject()
 {
-    // Meshes are normalised to the unit bounding sphere at the origin (core/ProjectAssets.h):
-    // keep the view direction, aim at the origin, back off until the sphere fits with a margin.
-    Camera camera = m_document->project().camera;
-    glm::dvec3 direction = camera.position - camera.target;
-    direction = glm::length(direction) > 0.0 ? glm::normalize(direction) : glm::dvec3(0.0, 0.0, 1.0);
-    const double halfFov = glm::radians(camera.verticalFovDegrees) / 2.0;
-    const double distance = 1.1 / std::sin(halfFov);
-    camera.target = glm::dvec3(0.0);
-    camera.position = direction * distance;
-    setCamera(camera);
+    fitToViewport(Fit::Frame, true);
 }
 
 void CameraController::resetView()
 {
-    setCamera(Camera::referenceView());
+    fitToViewport(Fit::Default, true);
 }
 
 void CameraController::look(double deltaXPixels, double deltaYPixels)
@@ -219,6 +274,11 @@ bool CameraController::eventFilter(QObject* watched, QEvent* event)
     if (watched != m_viewport)
         return false;
     switch (event->type()) {
+    case QEvent::Resize:
+        // The viewport changed shape: a camera the last fit set (not moved since) fits again.
+        if (m_fit && m_document->project().camera == m_fitted)
+            fitToViewport(*m_fit, false);
+        return false;
     case QEvent::MouseButtonPress:
         return mousePress(static_cast<QMouseEvent*>(event));
     case QEvent::MouseMove:

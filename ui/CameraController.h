@@ -4,9 +4,16 @@
 // plus the turntable, which spins the object or the environment in the view only.
 //
 //   left drag            orbit about the target          F        frame the object
-//   middle / Shift+left  pan                             Home     reset to the reference view
+//   middle / Shift+left  pan                             Home     reset to the default view
 //   wheel                dolly                           T        turntable on/off
 //   fly mode (setFlyMode): left drag looks around, W A S D move, Q E down/up, Shift faster
+//
+// Framing fits the object's bounding sphere to the smaller of the viewport's two fields of view
+// (core/Camera.h framingDistance), so a tall viewport shows the whole object too. The default view
+// (Home, and the first view of a project whose camera is the reference view: the default project,
+// or one saved without moving the camera) is the reference view backed off as far as the viewport's
+// shape needs. Until the camera is moved, a resize of the viewport fits it again (the layout
+// settling at start-up, a dock dragged wider); a project's saved camera is never changed.
 //
 // Timers run only while the turntable is on or a fly key is held; otherwise nothing ticks.
 
@@ -17,6 +24,8 @@
 #include <QPoint>
 #include <QSet>
 #include <QTimer>
+
+#include <optional>
 
 class QKeyEvent;
 class QMouseEvent;
@@ -47,6 +56,12 @@ public:
     void dolly(double wheelSteps); // > 0: closer
     void frameObject();
     void resetView();
+    // The reference view (Camera::referenceView(), unchanged when the viewport is at least as wide
+    // as tall) moved back along +Z until the unit bounding sphere fits a viewport `aspect` wide.
+    static Camera defaultView(double aspect);
+    // `camera` aimed at the origin along its current direction, at the distance where the unit
+    // bounding sphere fits a viewport `aspect` wide.
+    static Camera framed(Camera camera, double aspect);
     void look(double deltaXPixels, double deltaYPixels); // fly mode: turn the view direction
     void fly(const glm::dvec3& moveInViewSpace); // fly mode: move position and target together
 
@@ -71,6 +86,13 @@ private:
     bool keyPress(QKeyEvent* event);
     bool keyRelease(QKeyEvent* event);
     void setCamera(const Camera& camera);
+    enum class Fit { Default, Frame };
+    // The viewport's width / height, or 0 while it is too small to frame for.
+    double viewportAspect() const;
+    // Sets the camera `fit` gives for the viewport's shape (nothing while it has none yet) and
+    // remembers it, so that a resize fits again while the camera is still that one.
+    void fitToViewport(Fit fit, bool interactive);
+    void onProjectReplaced();
     void turntableTick();
     void flyTick();
 
@@ -87,6 +109,8 @@ private:
     TurntableTarget m_turntableTarget = TurntableTarget::Object;
     QTimer m_turntable;
     QElapsedTimer m_turntableClock;
+    std::optional<Fit> m_fit; // how the camera was last fitted; none after a project's own camera
+    Camera m_fitted; // the camera that fit set (or the one waiting for a viewport size)
 };
 
 } // namespace facet

@@ -144,6 +144,7 @@ void Document::replaceProject(const Project& project, const QString& path, bool 
     setFilePath(path);
     updateMissingFiles();
     updateModified();
+    Q_EMIT projectReplaced();
     Q_EMIT changed(DocumentChange::WholeProject);
 }
 

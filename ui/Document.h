@@ -115,6 +115,9 @@ public:
 Q_SIGNALS:
     // After every change of project(): edits, undo, redo, New, Open, recovery.
     void changed(facet::DocumentChanges changes);
+    // Another project replaced this one (New, Open, recovery), just before changed(WholeProject):
+    // per-project notes (what the last folder assignment did) and view state are stale.
+    void projectReplaced();
     // The modified state flipped (QUndoStack::cleanChanged, and New/Open/Save).
     void modifiedChanged(bool modified);
     // filePath() changed (Open, Save As, New, recovery).

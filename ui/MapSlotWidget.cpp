@@ -1,9 +1,9 @@
 #include "ui/MapSlotWidget.h"
 
+#include "core/MapNaming.h"
 #include "ui/ColorButton.h"
 #include "ui/Document.h"
 #include "ui/DocumentCommands.h"
-#include "ui/MapNaming.h"
 #include "ui/ValueSlider.h"
 
 #include <QCheckBox>
@@ -88,6 +88,37 @@ QString MapSlotWidget::title(MapSlot slot)
         return tr("Emissive");
     }
     return {};
+}
+
+QString MapSlotWidget::readNote(
+    MapSlot slot, MapChannel channel, bool invert, bool flipGreen, const QString& convention)
+{
+    QStringList parts;
+    if (!convention.isEmpty())
+        parts.append(convention);
+    if (isScalarSlot(slot) && (channel != MapChannel::R || !convention.isEmpty())) {
+        switch (channel) {
+        case MapChannel::R:
+            parts.append(tr("red"));
+            break;
+        case MapChannel::G:
+            parts.append(tr("green"));
+            break;
+        case MapChannel::B:
+            parts.append(tr("blue"));
+            break;
+        case MapChannel::A:
+            parts.append(tr("alpha"));
+            break;
+        case MapChannel::Rgb:
+            break;
+        }
+    }
+    if (isScalarSlot(slot) && invert)
+        parts.append(tr("inverted"));
+    if (slot == MapSlot::Normal && flipGreen)
+        parts.append(tr("DirectX"));
+    return parts.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(parts.join(QStringLiteral(", ")));
 }
 
 MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
@@ -276,12 +307,19 @@ bool MapSlotWidget::assignFile(const QString& path)
                            .arg(info.fileName(), title(m_slot)));
         return false;
     }
-    const Material material = withAssignedMaps(m_document->project().material,
-        {MapAssignment {m_slot, info.absoluteFilePath(),
-            isScalarSlot(m_slot) ? MapChannel::R : MapChannel::Rgb,
-            m_document->project().material.map(m_slot).flipGreen}});
+    // The channel (and invert, green flip) this slot reads, from the file's naming convention: a
+    // packed ORM opened on the metallic slot reads blue, a Unity mask map on roughness reads alpha
+    // inverted. A normal map whose name does not say OpenGL or DirectX keeps the slot's setting.
+    const QString file = info.absoluteFilePath();
+    const MapRead read = mapReadFor(m_slot, file);
+    const TextureNaming naming = textureNaming(file);
+    const Material& current = m_document->project().material;
+    const Material material = withAssignedMaps(current,
+        {MapAssignment {m_slot, file, read.channel, read.invert,
+            read.flipGreen.value_or(current.map(m_slot).flipGreen), naming.convention}});
     m_document->setMaterial(material, tr("Set %1 Map").arg(title(m_slot)));
-    Q_EMIT message(tr("%1 map: %2").arg(title(m_slot), info.fileName()));
+    Q_EMIT message(tr("%1 map: %2").arg(title(m_slot), info.fileName())
+        + readNote(m_slot, read.channel, read.invert, material.map(m_slot).flipGreen, naming.convention));
     return true;
 }
 

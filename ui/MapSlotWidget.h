@@ -29,13 +29,19 @@ public:
     MapSlot slot() const { return m_slot; }
     // "Base colour", "Normal", ...
     static QString title(MapSlot slot);
+    // How a map reads its file, for messages: "" for a plain single map, else e.g. " (ORM, blue)",
+    // " (Unity mask map, alpha, inverted)", " (inverted)", " (DirectX)".
+    static QString readNote(
+        MapSlot slot, MapChannel channel, bool invert, bool flipGreen, const QString& convention);
 
     // Shows the document's state of this map (no edit).
     void refresh();
     // The thumbnail of the current file (null image: none / unreadable; `error` then says why).
     void setThumbnail(const QImage& image, QSize sourceSize, const QString& error);
-    // Makes `path` this map's texture (one undo step). False with a message for a file that is
-    // not an image Facet reads.
+    // Makes `path` this map's texture (one undo step), reading the channel its name's packing
+    // convention gives this slot (core/MapNaming.h mapReadFor: an ORM on metallic reads blue).
+    // False with a message for a file that is not an image Facet reads. Open… and a drop of one
+    // file come here.
     bool assignFile(const QString& path);
     void clearFile();
 

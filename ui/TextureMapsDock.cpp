@@ -1,8 +1,8 @@
 #include "ui/TextureMapsDock.h"
 
+#include "core/MapNaming.h"
 #include "ui/Document.h"
 #include "ui/DocumentCommands.h"
-#include "ui/MapNaming.h"
 #include "ui/MapSlotWidget.h"
 #include "ui/ThumbnailLoader.h"
 #include "ui/ValueSlider.h"
@@ -21,6 +21,8 @@
 #include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace facet {
 
@@ -54,8 +56,10 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     auto* layout = new QVBoxLayout(content);
     auto* folderButton = new QPushButton(tr("Assign Folder…"), content);
     folderButton->setObjectName(QStringLiteral("assignFolderButton"));
-    folderButton->setToolTip(tr("Assign a texture set by file names (*_basecolor, *_normal, *_roughness, "
-                                "*_metallic, *_ao, *_orm); you can also drop a folder or files here"));
+    folderButton->setToolTip(tr("Assign a texture set by file names, replacing the current set: *_basecolor, "
+                                "*_normal, *_roughness, *_metallic, *_ao; packed *_orm, *_arm, "
+                                "*metallicRoughness*, *_MaskMap; Unreal T_*_D, _N, _R, _M. You can also drop "
+                                "a folder or files here"));
     connect(folderButton, &QPushButton::clicked, this, &TextureMapsDock::assignFolder);
     layout->addWidget(folderButton);
     m_messageLabel->setObjectName(QStringLiteral("textureMapsMessage"));
@@ -122,6 +126,12 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
                     slotWidget(slot)->setThumbnail(image, sourceSize, error);
         });
     connect(m_document, &Document::changed, this, &TextureMapsDock::onDocumentChanged);
+    // "Assigned 3 maps: …" is about this project's set: another project (New, Open, recovery) starts
+    // without the note.
+    connect(m_document, &Document::projectReplaced, this, [this] {
+        m_messageLabel->clear();
+        m_messageLabel->hide();
+    });
     onDocumentChanged(DocumentChange::WholeProject);
 }
 
@@ -209,16 +219,16 @@ void TextureMapsDock::reloadChangedFiles()
 QString TextureMapsDock::assignFiles(const QStringList& paths)
 {
     const MapNamingResult result = assignMapsByName(paths);
+    // A folder or several files is a texture set: it replaces the whole set, so no map of the
+    // previous set survives in a slot the new one does not fill. One file adds to the set.
+    const bool wholeSet = paths.size() > 1
+        || std::any_of(paths.begin(), paths.end(), [](const QString& p) { return QFileInfo(p).isDir(); });
     QStringList parts;
-    for (const MapAssignment& assignment : result.assignments) {
-        QString part = MapSlotWidget::title(assignment.slot) + QStringLiteral(" ← ")
-            + QFileInfo(assignment.path).fileName();
-        if (isScalarSlot(assignment.slot) && assignment.channel != MapChannel::R)
-            part += QStringLiteral(" (%1)").arg(QString::fromLatin1(toString(assignment.channel)).toUpper());
-        if (assignment.flipGreen)
-            part += tr(" (DirectX)");
-        parts.append(part);
-    }
+    for (const MapAssignment& assignment : result.assignments)
+        parts.append(MapSlotWidget::title(assignment.slot) + QStringLiteral(" ← ")
+            + QFileInfo(assignment.path).fileName()
+            + MapSlotWidget::readNote(assignment.slot, assignment.channel, assignment.invert,
+                assignment.flipGreen, assignment.convention));
     const auto names = [](const QStringList& files) {
         QStringList out;
         for (const QString& file : files)
@@ -228,14 +238,26 @@ QString TextureMapsDock::assignFiles(const QStringList& paths)
     QString text;
     if (result.assignments.empty()) {
         text = tr("No texture maps found in %1: names should end in _basecolor, _normal, _metallic, "
-                  "_roughness, _ao or _orm")
+                  "_roughness, _ao, _orm (see the Assign Folder button's tip)")
                    .arg(names(paths));
     } else {
-        const Material material = withAssignedMaps(m_document->project().material, result.assignments);
+        const Material& before = m_document->project().material;
+        std::vector<MapSlot> cleared;
+        const Material material = wholeSet ? withTextureSet(before, result.assignments, &cleared)
+                                           : withAssignedMaps(before, result.assignments);
         m_document->setMaterial(material, tr("Assign Maps"));
         text = (result.assignments.size() == 1 ? tr("Assigned 1 map: ")
                                                : tr("Assigned %1 maps: ").arg(result.assignments.size()))
             + parts.join(QStringLiteral(", "));
+        QStringList clearedParts;
+        for (MapSlot slot : cleared) {
+            QString part = MapSlotWidget::title(slot);
+            if (slot == MapSlot::Metallic || slot == MapSlot::Roughness)
+                part += tr(" (now %1)").arg(material.map(slot).factor.x);
+            clearedParts.append(part);
+        }
+        if (!clearedParts.isEmpty())
+            text += tr("; cleared (not in this set): %1").arg(clearedParts.join(QStringLiteral(", ")));
     }
     if (!result.unmatched.isEmpty())
         text += tr("; not used: %1").arg(names(result.unmatched));

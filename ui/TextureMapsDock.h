@@ -1,8 +1,9 @@
 #pragma once
 // The Texture maps dock: one MapSlotWidget per material map, a UV transform for the whole set,
-// and the texture set as a whole: dropping a folder or several files (anywhere on the dock)
-// assigns maps by name (ui/MapNaming.h) in one undo step and says what it assigned. Texture
-// files that change on disk are reloaded (QFileSystemWatcher): that map only.
+// and the texture set as a whole: dropping a folder or several files (anywhere on the dock) or
+// Assign Folder assigns maps by name (core/MapNaming.h) in one undo step, replacing the whole set,
+// and says what it assigned and cleared. The note is cleared when another project replaces the
+// document. Texture files that change on disk are reloaded (QFileSystemWatcher): that map only.
 
 #include "core/Material.h"
 #include "ui/DocumentChanges.h"
@@ -31,9 +32,11 @@ public:
 
     MapSlotWidget* slotWidget(MapSlot slot) const { return m_slots[std::size_t(slot)]; }
     // Assigns the files (folders are listed) by name as one undo step "Assign Maps" and returns
-    // the message it also emits: what went where, and what was not used.
+    // the message it also emits: what went where, what was cleared and what was not used. A
+    // folder or several files is a texture set and replaces the whole set (core/MapNaming.h
+    // withTextureSet: slots it does not fill lose their texture); one file only adds its maps.
     QString assignFiles(const QStringList& paths);
-    // The last assignment message (also in the dock).
+    // The last assignment message (also in the dock); empty after New/Open/recovery.
     QString lastMessage() const;
     // Thumbnail jobs still running (tests wait for 0).
     int pendingThumbnails() const;
