@@ -26,6 +26,7 @@
 #include "render/RenderScene.h"
 #include "render/SceneFromProject.h"
 #include "render/Renderer.h"
+#include "render/ShaderVariant.h"
 
 namespace facet {
 
@@ -55,8 +56,9 @@ struct Options {
                                     QStringLiteral("on|off")};
     QCommandLineOption mesh{QStringLiteral("mesh"), QStringLiteral("A built-in mesh name or a mesh file."),
                             QStringLiteral("name|path")};
-    QCommandLineOption view{QStringLiteral("view"), QStringLiteral("Debug view name (none: the shaded image)."),
-                            QStringLiteral("name")};
+    QCommandLineOption view {QStringLiteral("view"),
+        QStringLiteral("Debug view: %1.").arg(QString::fromStdString(debugViewNameList())),
+        QStringLiteral("name")};
     QCommandLineOption size{QStringLiteral("size"), QStringLiteral("Image size, e.g. 512x512."), QStringLiteral("WxH")};
     QCommandLineOption referenceView{QStringLiteral("reference-view"),
                                      QStringLiteral("Use DESIGN.md's reference camera (unit sphere, camera at "
@@ -258,6 +260,17 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
     std::string problem;
     if (!project.validate(&problem)) {
         *error = QString::fromStdString(problem);
+        return std::nullopt;
+    }
+    // An unknown debug view would silently render the shaded image: refuse it, naming the field.
+    if (!debugViewFromString(project.view.debugView)) {
+        const QString names = QString::fromStdString(debugViewNameList());
+        const QString name = QString::fromStdString(project.view.debugView);
+        *error = o.parser.isSet(o.view)
+            ? QStringLiteral("--view: unknown debug view '%1' (expected one of: %2)").arg(name, names)
+            : QStringLiteral("%1: view.debugView: unknown debug view \"%2\" (expected one of: %3)")
+                  .arg(positional.first(), name, names);
+        *exitCode = o.parser.isSet(o.view) ? kExitUsage : kExitFailure;
         return std::nullopt;
     }
     *exitCode = 0;

@@ -1,5 +1,7 @@
 #include "core/Environment.h"
 
+#include "core/AssetLibrary.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -9,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include <QFileInfo>
 #include <QtGlobal>
 
 #include <glm/geometric.hpp>
@@ -383,10 +386,36 @@ std::optional<Environment> Environment::fromSpec(
             numbers.size() == 1 ? glm::dvec3(numbers[0]) : glm::dvec3(numbers[0], numbers[1], numbers[2]));
     }
     // A built-in name wins over a file of the same name in the working directory ("./studio"
-    // reaches the file).
+    // reaches the file) and over the installed sample of that name (library:installed/hdri/studio.exr).
     if (const std::optional<Builtin> which = builtinFromName(spec))
         return builtin(*which);
-    return load(spec, error, warning);
+    std::string path = spec;
+    if (AssetLibrary::isSpec(spec)) {
+        std::string problem;
+        const std::optional<std::string> resolved = AssetLibrary::resolveSpec(spec, &problem);
+        if (!resolved) {
+            if (error) {
+                *error = "Environment::fromSpec: " + problem;
+                if (const std::string advice = AssetLibrary::missingFileAdvice(spec); !advice.empty())
+                    *error += "; " + advice;
+            }
+            return std::nullopt;
+        }
+        path = *resolved;
+    }
+    std::optional<Environment> environment = load(path, error, warning);
+    if (!environment && error && !QFileInfo::exists(QString::fromStdString(path))) {
+        // Say where a missing file was meant to come from, and how to get it.
+        if (const std::string advice = AssetLibrary::missingFileAdvice(path); !advice.empty())
+            *error += "; " + advice;
+        else if (path.find_first_of("/.") == std::string::npos
+            && QFileInfo(QString::fromStdString(AssetLibrary::installed().folder + "/hdri/" + path + ".exr"))
+                   .isFile())
+            *error += "; the built-in environments are studio and sky; the installed sample is "
+                      "library:installed/hdri/"
+                + path + ".exr";
+    }
+    return environment;
 }
 
 std::optional<Environment::Builtin> Environment::builtinFromName(const std::string& name)

@@ -47,8 +47,10 @@ public:
     // the image is not 2:1 (allowed, stretched over the sphere).
     static std::optional<Environment> load(const std::string& path, std::string* error,
                                            std::string* warning = nullptr);
-    // Accepts a path, a built-in name ("studio", "sky"; a file of that name needs "./studio") or
-    // "uniform:VALUE" / "uniform:R,G,B" with finite non-negative numbers; else an error naming the spec.
+    // Accepts a path, a built-in name ("studio", "sky"; a file of that name needs "./studio"), a
+    // library reference ("library:installed/hdri/night.exr", core/AssetLibrary.h) or
+    // "uniform:VALUE" / "uniform:R,G,B" with finite non-negative numbers; else an error naming the
+    // spec. A missing file of a library says how to get it (AssetLibrary::missingFileAdvice).
     static std::optional<Environment> fromSpec(const std::string& spec, std::string* error,
                                                std::string* warning = nullptr);
     static std::optional<Builtin> builtinFromName(const std::string& name);

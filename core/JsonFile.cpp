@@ -1,5 +1,5 @@
 // The project-independent parts of Facet's JSON files: paths stored relative to the file,
-// built-in specs, the format/version check, and reading/writing one object per file.
+// built-in and library specs, the format/version check, and reading/writing one object per file.
 // Declared in core/Project.h (namespace facet::json).
 
 #include <QDir>
@@ -9,6 +9,7 @@
 #include <QJsonParseError>
 #include <QStorageInfo>
 
+#include "core/AssetLibrary.h"
 #include "core/AtomicFile.h"
 #include "core/JsonSupport.h"
 #include "core/Project.h"
@@ -32,6 +33,23 @@ QString volumeRoot(const QString& path)
     }
     const QStorageInfo storage(existing);
     return storage.isValid() ? storage.rootPath() : QString();
+}
+
+// Version-1 files stored an installed sample file as a path climbing out of the project folder
+// ("../../home/ana/.local/share/facet/assets/hdri/night.exr"), which breaks once the project
+// moves. Such a path that leads nowhere, but names a file under ".../facet/assets/" that the
+// installed library has, is taken to mean that file.
+std::optional<std::string> rescuedInstalledPath(const std::string& path)
+{
+    static const std::string kMarker = "/facet/assets/";
+    const std::size_t marker = path.rfind(kMarker);
+    if (marker == std::string::npos || QFileInfo::exists(qs(path)))
+        return std::nullopt;
+    const std::string candidate
+        = AssetLibrary::installed().folder + "/" + path.substr(marker + kMarker.size());
+    if (!QFileInfo(qs(candidate)).isFile())
+        return std::nullopt;
+    return candidate;
 }
 
 } // namespace
@@ -83,15 +101,27 @@ bool isBuiltinSpec(const std::string& spec)
 
 std::string storedSpec(const std::string& spec, const std::string& baseDir)
 {
-    if (spec.empty() || isBuiltinSpec(spec))
+    if (spec.empty() || isBuiltinSpec(spec) || AssetLibrary::isSpec(spec))
         return spec;
+    // A file in a library is stored by the library's name: the project then opens wherever the
+    // library is on another machine, and wherever the project folder is moved.
+    if (!baseDir.empty())
+        if (const std::optional<std::string> library = AssetLibrary::specForPath(spec))
+            return *library;
     const std::string stored = storedPath(spec, baseDir);
-    return isBuiltinSpec(stored) ? "./" + stored : stored;
+    return isBuiltinSpec(stored) || AssetLibrary::isSpec(stored) ? "./" + stored : stored;
 }
 
 std::string resolvedSpec(const std::string& spec, const std::string& baseDir)
 {
-    return isBuiltinSpec(spec) ? spec : resolvedPath(spec, baseDir);
+    if (isBuiltinSpec(spec))
+        return spec;
+    // A library this machine does not have keeps its reference: the project opens, lists it as
+    // missing, and saves it back unchanged unless it is relinked.
+    if (AssetLibrary::isSpec(spec))
+        return AssetLibrary::resolveSpec(spec, nullptr).value_or(spec);
+    const std::string path = resolvedPath(spec, baseDir);
+    return rescuedInstalledPath(path).value_or(path);
 }
 
 bool checkFormat(const QJsonObject& object, const char* formatName, int newestVersion, const char* what,

@@ -4,7 +4,9 @@
 // docs/project-format.md). Plain values (Tiled's libtiled model); the undoable editing lives in ui/.
 //
 // Files: paths (textures, environment image, mesh) are absolute in memory and stored relative to
-// the project file's folder when on the same volume, so a project folder can be moved or shared.
+// the project file's folder when on the same volume, so a project folder can be moved or shared;
+// an environment or mesh inside an asset library is stored by the library's name instead
+// ("library:installed/hdri/night.exr", core/AssetLibrary.h, json::storedSpec).
 // Loading never crashes and never throws: every problem comes back as one message naming the
 // function, the file and the JSON path, e.g.
 //   "Project::load: /x/y.json: lights[1].intensity: expected a number, got a string".
@@ -69,8 +71,9 @@ struct ViewSettings {
 };
 
 struct EnvironmentSettings {
-    // What Environment::fromSpec() accepts: an image path, a built-in name ("studio", "sky") or
-    // "uniform:VALUE" / "uniform:R,G,B". Only paths are relativised in files.
+    // What Environment::fromSpec() accepts: an image path, a built-in name ("studio", "sky"), a
+    // library reference ("library:NAME/PATH", kept only when this computer lacks the library) or
+    // "uniform:VALUE" / "uniform:R,G,B". Files store it with json::storedSpec.
     std::string source = "studio";
     double rotationDegrees = 0.0; // about +Y (DESIGN.md)
     double intensity = 1.0; // linear radiance multiplier, >= 0 (the UI shows log2 as EV)
@@ -138,9 +141,14 @@ namespace json {
 std::string storedPath(const std::string& path, const std::string& baseDir);
 // The inverse: a relative path is resolved against baseDir and cleaned.
 std::string resolvedPath(const std::string& path, const std::string& baseDir);
-// A "spec" (environment source, mesh) is either a built-in name (lower-case letters, digits and
-// '-', or "uniform:...") that is kept as is, or a path. A relative path that would read as a
-// built-in name is written as "./name".
+// A "spec" (environment source, mesh) is a built-in name (lower-case letters, digits and '-', or
+// "uniform:...") kept as is, a library reference ("library:NAME/PATH", core/AssetLibrary.h), or
+// a path. storedSpec writes a file inside a library's folder as its library reference (when
+// baseDir is not empty), other files as storedPath does, and a relative path that would read as a
+// name or a reference as "./path". resolvedSpec turns a reference into this machine's path (one
+// to a library this machine lacks stays a reference) and a path as resolvedPath does; a
+// version-1 path into the installed samples that leads nowhere is redirected to the installed
+// library when it has that file (docs/project-format.md, "Paths").
 std::string storedSpec(const std::string& spec, const std::string& baseDir);
 std::string resolvedSpec(const std::string& spec, const std::string& baseDir);
 bool isBuiltinSpec(const std::string& spec);

@@ -3,6 +3,7 @@
 #include <QDateTime>
 #include <QFileInfo>
 
+#include "core/AssetLibrary.h"
 #include "core/MeshImport.h"
 #include "core/MeshPrimitives.h"
 #include "core/Project.h"
@@ -42,13 +43,32 @@ std::optional<Mesh> loadViewMesh(const std::string& nameOrPath, std::string* err
         primitive->normalizeToUnitSphere();
         return primitive;
     }
+    std::string path = nameOrPath;
+    if (AssetLibrary::isSpec(nameOrPath)) {
+        std::string problem;
+        const std::optional<std::string> resolved = AssetLibrary::resolveSpec(nameOrPath, &problem);
+        if (!resolved) {
+            if (error) {
+                *error = "loadViewMesh: " + problem;
+                if (const std::string advice = AssetLibrary::missingFileAdvice(nameOrPath); !advice.empty())
+                    *error += "; " + advice;
+            }
+            return std::nullopt;
+        }
+        path = *resolved;
+    }
     std::string importError;
     std::string importWarning;
-    auto mesh = importMesh(nameOrPath, &importError, &importWarning);
+    auto mesh = importMesh(path, &importError, &importWarning);
     appendWarning(warning, importWarning);
     if (!mesh) {
-        if (error)
+        if (error) {
             *error = importError;
+            // Say where a missing library file was meant to come from, and how to get it.
+            if (!QFileInfo::exists(QString::fromStdString(path)))
+                if (const std::string advice = AssetLibrary::missingFileAdvice(path); !advice.empty())
+                    *error += "; " + advice;
+        }
         return std::nullopt;
     }
     mesh->normalizeToUnitSphere();

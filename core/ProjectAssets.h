@@ -37,8 +37,10 @@ struct ProjectAssets {
 std::optional<ProjectAssets> loadProjectAssets(const Project& project, std::string* error,
                                                std::string* warning = nullptr);
 
-// The mesh a view names: a built-in primitive ("sphere", "cube", ...) or a mesh file, normalised
-// to the unit bounding sphere (the built-in sphere is already the unit sphere of the reference view).
+// The mesh a view names: a built-in primitive ("sphere", "cube", ...), a mesh file or a library
+// reference ("library:installed/models/bunny.glb", core/AssetLibrary.h), normalised to the unit
+// bounding sphere (the built-in sphere is already the unit sphere of the reference view). A
+// missing library file says how to get it (AssetLibrary::missingFileAdvice).
 std::optional<Mesh> loadViewMesh(const std::string& nameOrPath, std::string* error, std::string* warning = nullptr);
 
 } // namespace facet

@@ -81,11 +81,17 @@ enum class DebugView : int {
 };
 inline constexpr int kDebugViewCount = 23;
 // "none", "base-color", "shading-normal", "geometric-normal", "metallic", "roughness",
-// "occlusion", "d", "v", "f", "irradiance", "ibl-diffuse", "prefiltered-radiance", "brdf-lut",
-// "ibl-specular", "ibl-total", "direct-light", "white-furnace", "uv", "tangent", "emissive", "alpha", "non-finite"
-// (ViewSettings::debugView).
+// "occlusion", "distribution", "visibility", "fresnel", "irradiance", "ibl-diffuse",
+// "prefiltered-radiance", "brdf-lut", "ibl-specular", "ibl-total", "direct-light",
+// "white-furnace", "uv", "tangent", "emissive", "alpha", "non-finite" (ViewSettings::debugView,
+// facet render --view).
 const char* toString(DebugView view);
+// What the window shows: "Off (shaded image)", "Base colour", ..., "Distribution D", ...
+const char* debugViewLabel(DebugView view);
+// Also accepts the older "d", "v" and "f" for distribution, visibility and fresnel.
 std::optional<DebugView> debugViewFromString(const std::string& name);
+// "none, base-color, ..., distribution (or d), ...": the accepted names, for messages.
+std::string debugViewNameList();
 
 struct SurfaceVariantKey {
     SurfaceFeatures features = 0;

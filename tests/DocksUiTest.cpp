@@ -2,9 +2,12 @@
 // slider drag is one undo step that re-renders and undoes back into the control; an image dropped
 // on a map slot becomes its texture (and a non-image is refused with a message); a folder of maps
 // is assigned by name in one step with a message saying what went where (the naming table is
-// MapNamingTest's, packed channels and whole-set replacement TextureSetUiTest's); the environment library
-// switches the environment and relights; lights are added, edited and removed through the Lights
-// dock; the View dock changes exposure and the debug view; presets are saved, applied, deleted.
+// MapNamingTest's, packed channels and whole-set replacement TextureSetUiTest's); the environment
+// library switches the environment and relights, and tells the built-in studio/sky from the
+// installed samples of those names; lights are added, edited and removed through the Lights dock;
+// the View dock changes exposure and the debug view, which have descriptive names; a mesh warning
+// reaches the status bar in the window's wording (ui/WindowMessages.h); presets are saved,
+// applied, deleted.
 
 #include "core/MaterialPresets.h"
 #include "render/ShaderVariant.h"
@@ -14,6 +17,7 @@
 #include "ui/MainWindow.h"
 #include "ui/MapSlotWidget.h"
 #include "ui/MaterialDock.h"
+#include "ui/ProjectFileController.h"
 #include "ui/SceneController.h"
 #include "ui/SurfaceFormat.h"
 #include "ui/TextureMapsDock.h"
@@ -33,8 +37,10 @@
 #include <QImage>
 #include <QLabel>
 #include <QListWidget>
+#include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
+#include <QSet>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
@@ -151,8 +157,13 @@ private Q_SLOTS:
     void dropNonImageIsRefused();
     void dropFolderAssignsByName();
     void environmentLibrarySwitches();
+    void environmentLibraryTellsStudiosApart_data();
+    void environmentLibraryTellsStudiosApart();
     void lightsAddEditRemove();
     void viewDockExposureAndDebugView();
+    void debugViewsHaveDescriptiveNames_data();
+    void debugViewsHaveDescriptiveNames();
+    void meshWarningInWindowWording();
     void presetsSaveApplyDelete();
 
 private:
@@ -166,6 +177,8 @@ void DocksUiTest::initTestCase()
 {
     QCoreApplication::setOrganizationName(QStringLiteral("FacetTests"));
     QVERIFY(m_dir.isValid());
+    // The library lists the installed samples where the tests find them too.
+    qputenv("FACET_ASSETS_DIR", test::assetsDir().toLocal8Bit());
     m_window = std::make_unique<MainWindow>(nullptr, m_dir.filePath(QStringLiteral("recovery")));
     m_document = m_window->document();
     m_viewport = m_window->viewport();
@@ -361,6 +374,68 @@ void DocksUiTest::environmentLibrarySwitches()
     QCOMPARE(library->currentItem()->data(Qt::UserRole).toString(), QStringLiteral("studio"));
 }
 
+void DocksUiTest::environmentLibraryTellsStudiosApart_data()
+{
+    QTest::addColumn<QString>("source"); // {installed}: the installed samples' hdri folder
+    QTest::addColumn<QString>("label");
+    QTest::addColumn<QString>("toolTip");
+    QTest::newRow("built-in studio") << "studio" << "Studio (built-in)" << "built into Facet";
+    QTest::newRow("installed studio") << "{installed}/studio.exr" << "Studio (CC0 sample)"
+                                      << "library:installed/hdri/studio.exr";
+    QTest::newRow("built-in sky") << "sky" << "Sky (built-in)" << "built into Facet";
+    QTest::newRow("installed sky") << "{installed}/sky.exr" << "Sky (CC0 sample)" << "library:installed/hdri/sky.exr";
+}
+
+// The built-in procedural "studio"/"sky" and the installed CC0 HDRIs of the same names are
+// different environments: each has its own label and tooltip, choosing it selects exactly it, and
+// a saved project reopens with it selected.
+void DocksUiTest::environmentLibraryTellsStudiosApart()
+{
+    QFETCH(QString, source);
+    QFETCH(QString, label);
+    QFETCH(QString, toolTip);
+    FACET_REQUIRE_ASSET(test::hdriPath(QStringLiteral("studio")), "hdri/studio.exr");
+    FACET_REQUIRE_ASSET(test::hdriPath(QStringLiteral("sky")), "hdri/sky.exr");
+    source.replace(QLatin1String("{installed}"), EnvironmentDock::installedHdriFolder());
+    EnvironmentDock* dock = m_window->environmentDock();
+    dock->raise();
+    QListWidget* library = dock->library();
+    QStringList labels;
+    QListWidgetItem* item = nullptr;
+    for (int row = 0; row < library->count(); ++row) {
+        labels.append(library->item(row)->text());
+        if (library->item(row)->data(Qt::UserRole).toString() == source)
+            item = library->item(row);
+    }
+    QVERIFY2(item, qPrintable(source));
+    QCOMPARE(item->text(), label);
+    QVERIFY2(item->toolTip().contains(toolTip), qPrintable(item->toolTip()));
+    QCOMPARE(labels.count(label), 1); // no other entry reads the same
+    QCOMPARE(labels.size(), QSet<QString>(labels.begin(), labels.end()).size());
+
+    library->scrollToItem(item);
+    QTest::mouseClick(library->viewport(), Qt::LeftButton, Qt::NoModifier, library->visualItemRect(item).center());
+    QCOMPARE(QString::fromStdString(m_document->project().environment.source), source);
+    QCOMPARE(library->currentItem(), item);
+
+    // Saved, something else chosen, reopened: the same entry is selected again.
+    ProjectFileController* files = m_window->projectFiles();
+    files->setErrorDialogsEnabled(false);
+    files->setUnsavedChangesAnswer(QMessageBox::Discard);
+    const QString path = m_dir.filePath(QStringLiteral("library-choice.json"));
+    QVERIFY(files->saveToFile(path));
+    EnvironmentSettings other = m_document->project().environment;
+    other.source = source.contains(QLatin1String("studio")) ? "sky" : "studio";
+    m_document->setEnvironment(other, QStringLiteral("Other"));
+    QVERIFY(library->currentItem() != item);
+    QVERIFY(files->openFile(path));
+    QCOMPARE(QString::fromStdString(m_document->project().environment.source), source);
+    QVERIFY(library->currentItem());
+    QCOMPARE(library->currentItem()->data(Qt::UserRole).toString(), source);
+    QCOMPARE(library->currentItem()->text(), label);
+    m_document->newProject();
+}
+
 void DocksUiTest::lightsAddEditRemove()
 {
     LightsDock* dock = m_window->lightsDock();
@@ -427,7 +502,7 @@ void DocksUiTest::viewDockExposureAndDebugView()
     QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Exposure"));
     QVERIFY(rendered.count() > 0 || rendered.wait(30000));
 
-    QVERIFY(chooseInCombo(dock->debugViewCombo(), QStringLiteral("roughness")));
+    QVERIFY(chooseInCombo(dock->debugViewCombo(), QStringLiteral("Roughness")));
     QCOMPARE(m_document->project().view.debugView, std::string("roughness"));
     QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Debug View"));
     rendered.clear();
@@ -445,8 +520,72 @@ void DocksUiTest::viewDockExposureAndDebugView()
     m_document->undoStack()->undo();
     m_document->undoStack()->undo();
     QCOMPARE(m_document->project().view.debugView, std::string("none"));
-    QCOMPARE(dock->debugViewCombo()->currentText(), QStringLiteral("none"));
+    QCOMPARE(dock->debugViewCombo()->currentText(), QStringLiteral("Off (shaded image)"));
     QCOMPARE(exposure->value(), before);
+}
+
+void DocksUiTest::debugViewsHaveDescriptiveNames_data()
+{
+    QTest::addColumn<QString>("label"); // what the View dock shows
+    QTest::addColumn<QString>("name"); // what the project stores
+    QTest::addColumn<QString>("alias"); // an older name that selects it too ("" for none)
+    QTest::newRow("distribution") << "Distribution D" << "distribution" << "d";
+    QTest::newRow("visibility") << "Visibility V" << "visibility" << "v";
+    QTest::newRow("fresnel") << "Fresnel F" << "fresnel" << "f";
+    QTest::newRow("none") << "Off (shaded image)" << "none" << "";
+    QTest::newRow("base colour") << "Base colour" << "base-color" << "";
+    QTest::newRow("occlusion") << "Ambient occlusion" << "occlusion" << "";
+    QTest::newRow("brdf table") << "BRDF lookup table (DFG)" << "brdf-lut" << "";
+}
+
+void DocksUiTest::debugViewsHaveDescriptiveNames()
+{
+    QFETCH(QString, label);
+    QFETCH(QString, name);
+    QFETCH(QString, alias);
+    ViewDock* dock = m_window->viewDock();
+    dock->raise();
+    QComboBox* combo = dock->debugViewCombo();
+    // Every entry reads as words (no one-letter names), each differently.
+    QStringList texts;
+    for (int i = 0; i < combo->count(); ++i) {
+        QVERIFY2(combo->itemText(i).size() > 3, qPrintable(combo->itemText(i)));
+        texts.append(combo->itemText(i));
+    }
+    QCOMPARE(QSet<QString>(texts.begin(), texts.end()).size(), int(texts.size()));
+
+    QVERIFY(chooseInCombo(combo, label));
+    QCOMPARE(QString::fromStdString(m_document->project().view.debugView), name);
+    if (!alias.isEmpty()) {
+        // A project of an older Facet stores the one-letter name: it shows as the same entry.
+        ViewSettings view = m_document->project().view;
+        view.debugView = "none";
+        m_document->setView(view, QStringLiteral("Reset"));
+        view.debugView = alias.toStdString();
+        m_document->setView(view, QStringLiteral("Old Name"));
+        QCOMPARE(combo->currentText(), label);
+    }
+    m_document->newProject();
+    QCOMPARE(combo->currentText(), QStringLiteral("Off (shaded image)"));
+}
+
+// A mesh without UVs, imported through the View dock: the status bar says so in the window's
+// words, naming the file, without core's function name or folders.
+void DocksUiTest::meshWarningInWindowWording()
+{
+    const QString path = m_dir.filePath(QStringLiteral("meshes/triangle.obj"));
+    QVERIFY(QDir().mkpath(QFileInfo(path).absolutePath()));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n");
+    file.close();
+    QVERIFY(m_window->viewDock()->importMesh(path));
+    const QString message = m_window->statusMessage();
+    QVERIFY2(message.startsWith(
+                 QStringLiteral("triangle.obj has no texture coordinates; Facet generated them by box projection")),
+        qPrintable(message));
+    QVERIFY2(!message.contains(QStringLiteral("importMesh")) && !message.contains(m_dir.path()), qPrintable(message));
+    m_document->newProject();
 }
 
 void DocksUiTest::presetsSaveApplyDelete()

@@ -1,14 +1,19 @@
 // Projects through the main window: the dirty marker in the title, save and reopen give the same
-// project, a broken file is reported with its name and changes nothing, a missing texture opens
-// anyway with a relink message and dialog, the unsaved-changes question, recent files, autosave
-// to a recovery file and the recovery offer, Reset Layout. Needs a display (Xvfb).
+// project, a broken file is reported with its name (the window's wording) and changes nothing, an
+// unknown debug view is refused, a missing texture opens anyway with a relink message and dialog,
+// an installed or user-library environment chosen in the library survives moving the project
+// folder, a missing library file opens with the relink dialog saying how to get it, the
+// unsaved-changes question, recent files, autosave to a recovery file and the recovery offer,
+// Reset Layout. Needs a display (Xvfb).
 
 #include "ui/AutosaveController.h"
 #include "ui/CameraController.h"
+#include "ui/EnvironmentDock.h"
 #include "ui/Document.h"
 #include "ui/MainWindow.h"
 #include "ui/MissingFilesDialog.h"
 #include "ui/ProjectFileController.h"
+#include "ui/SceneController.h"
 #include "ui/SurfaceFormat.h"
 #include "ui/ViewportWidget.h"
 
@@ -19,7 +24,9 @@
 #include <QDockWidget>
 #include <QFile>
 #include <QFileInfo>
+#include <QListWidget>
 #include <QMessageBox>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -58,7 +65,12 @@ private Q_SLOTS:
     void titleShowsDirtyMarker();
     void saveAndReopenGiveSameProject();
     void brokenFileIsReportedAndChangesNothing();
+    void unknownDebugViewIsRefused();
     void missingTextureOpensWithRelinkMessage();
+    void libraryEnvironmentSurvivesAMove_data();
+    void libraryEnvironmentSurvivesAMove();
+    void missingLibraryFileOpensWithRelinkDialog_data();
+    void missingLibraryFileOpensWithRelinkDialog();
     void unsavedChangesQuestion();
     void autosaveWritesRecoveryFile();
     void recoveryOfferRestoresWork();
@@ -68,12 +80,22 @@ private:
     QTemporaryDir m_dir;
     std::unique_ptr<MainWindow> m_window;
     QString recoveryDir() const { return m_dir.filePath(QStringLiteral("recovery")); }
+    // This test's installed samples ($FACET_ASSETS_DIR) and a user library folder.
+    QString installedDir() const { return m_dir.filePath(QStringLiteral("assets")); }
+    QString userLibraryDir() const { return m_dir.filePath(QStringLiteral("My HDRIs")); }
 };
 
 void ProjectFileUiTest::initTestCase()
 {
     QCoreApplication::setOrganizationName(QStringLiteral("FacetTests"));
     QVERIFY(m_dir.isValid());
+    // Environments of this test's own, so the library holds exactly what the test expects; every
+    // window made in init() lists them.
+    qputenv("FACET_ASSETS_DIR", installedDir().toLocal8Bit());
+    QSettings().remove(QStringLiteral("assetLibraries"));
+    QVERIFY(test::writeConstantExr(installedDir() + QStringLiteral("/hdri/night.exr"), 0.05f));
+    QVERIFY(test::writeConstantExr(installedDir() + QStringLiteral("/hdri/studio.exr"), 0.8f));
+    QVERIFY(test::writeConstantExr(userLibraryDir() + QStringLiteral("/loft.exr"), 0.4f));
 }
 
 void ProjectFileUiTest::init()
@@ -145,16 +167,44 @@ void ProjectFileUiTest::brokenFileIsReportedAndChangesNothing()
     file.close();
     const Project before = m_window->document()->project();
     QVERIFY(!m_window->projectFiles()->openFile(path));
+    // The precise message (stderr, logs) names the function and the whole path; the window says
+    // the same about the file in its own words.
     const QString error = m_window->projectFiles()->lastError();
-    QVERIFY2(error.contains(path) && error.contains(QStringLiteral("material")), qPrintable(error));
-    QCOMPARE(m_window->statusMessage(), error);
+    QVERIFY2(error.contains(path) && error.contains(QStringLiteral("Project::load"))
+            && error.contains(QStringLiteral("material")),
+        qPrintable(error));
+    const QString shown = m_window->statusMessage();
+    QCOMPARE(shown, QStringLiteral("Could not open the project: broken.json: material: expected an object, got a number"));
     QCOMPARE(m_window->document()->project(), before);
     // Shown in a non-modal message box: nothing waits for a click.
     auto* box = m_window->findChild<QMessageBox*>(QStringLiteral("errorMessageBox"));
     QVERIFY(box);
     QVERIFY(box->isVisible());
-    QVERIFY(box->text().contains(path));
+    QCOMPARE(box->text(), shown);
     box->close();
+}
+
+void ProjectFileUiTest::unknownDebugViewIsRefused()
+{
+    // Core does not know the renderer's names; the window refuses the file like any bad name,
+    // instead of silently showing the shaded image.
+    const QString path = m_dir.filePath(QStringLiteral("bad-view.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("{\"format\": \"facet-project\", \"version\": 1, \"view\": {\"debugView\": \"bogus\"}}");
+    file.close();
+    const Project before = m_window->document()->project();
+    QVERIFY(!m_window->projectFiles()->openFile(path));
+    const QString error = m_window->projectFiles()->lastError();
+    QVERIFY2(error.contains(QStringLiteral("view.debugView: unknown debug view \"bogus\" (expected one of: none, "))
+            && error.contains(QStringLiteral("distribution (or d)")) && error.contains(path),
+        qPrintable(error));
+    QVERIFY2(m_window->statusMessage().startsWith(
+                 QStringLiteral("Could not open the project: bad-view.json: view.debugView: unknown debug view")),
+        qPrintable(m_window->statusMessage()));
+    QCOMPARE(m_window->document()->project(), before);
+    if (auto* box = m_window->findChild<QMessageBox*>(QStringLiteral("errorMessageBox")))
+        box->close();
 }
 
 void ProjectFileUiTest::missingTextureOpensWithRelinkMessage()
@@ -190,6 +240,117 @@ void ProjectFileUiTest::missingTextureOpensWithRelinkMessage()
     QCOMPARE(QString::fromStdString(m_window->document()->project().material.map(MapSlot::BaseColor).path),
         QDir(folder).filePath(QStringLiteral("brick_albedo.png")));
     QVERIFY(m_window->isWindowModified()); // relinking is an edit: save to keep it
+}
+
+void ProjectFileUiTest::libraryEnvironmentSurvivesAMove_data()
+{
+    QTest::addColumn<QString>("file"); // under the library's folder
+    QTest::addColumn<bool>("userLibrary");
+    QTest::addColumn<QString>("stored");
+    QTest::addColumn<QString>("label");
+    QTest::newRow("installed sample") << "hdri/night.exr" << false << "library:installed/hdri/night.exr"
+                                      << "Night (CC0 sample)";
+    QTest::newRow("installed studio.exr, not the built-in")
+        << "hdri/studio.exr" << false << "library:installed/hdri/studio.exr" << "Studio (CC0 sample)";
+    QTest::newRow("user library") << "loft.exr" << true << "library:my-hdris/loft.exr" << "Loft (my-hdris)";
+}
+
+// As an artist does it: pick an environment from the library, save the project, move the project
+// folder one level deeper, open it again: the same environment, selected in the library, nothing
+// missing.
+void ProjectFileUiTest::libraryEnvironmentSurvivesAMove()
+{
+    QFETCH(QString, file);
+    QFETCH(bool, userLibrary);
+    QFETCH(QString, stored);
+    QFETCH(QString, label);
+    EnvironmentDock* dock = m_window->environmentDock();
+    if (userLibrary)
+        QVERIFY(dock->addFolder(userLibraryDir()));
+    const QString source = (userLibrary ? userLibraryDir() : installedDir()) + QLatin1Char('/') + file;
+    QListWidget* library = dock->library();
+    QListWidgetItem* item = nullptr;
+    for (int row = 0; row < library->count(); ++row)
+        if (library->item(row)->data(Qt::UserRole).toString() == source)
+            item = library->item(row);
+    QVERIFY2(item, qPrintable(source));
+    QCOMPARE(item->text(), label);
+    dock->raise();
+    library->scrollToItem(item);
+    QTest::mouseClick(library->viewport(), Qt::LeftButton, Qt::NoModifier, library->visualItemRect(item).center());
+    QCOMPARE(QString::fromStdString(m_window->document()->project().environment.source), source);
+
+    const QString folder = m_dir.filePath(QStringLiteral("artist/scene"));
+    QDir(m_dir.filePath(QStringLiteral("artist"))).removeRecursively();
+    QVERIFY(QDir().mkpath(folder));
+    QVERIFY(m_window->projectFiles()->saveToFile(folder + QStringLiteral("/scene.json")));
+    QFile saved(folder + QStringLiteral("/scene.json"));
+    QVERIFY(saved.open(QIODevice::ReadOnly));
+    QVERIFY2(saved.readAll().contains(QStringLiteral("\"source\": \"%1\"").arg(stored).toUtf8()), qPrintable(stored));
+    saved.close();
+    QVERIFY(m_window->projectFiles()->newProject());
+
+    const QString moved = m_dir.filePath(QStringLiteral("artist/deeper/scene"));
+    QVERIFY(QDir().mkpath(QFileInfo(moved).absolutePath()));
+    QVERIFY(QDir().rename(folder, moved));
+    QVERIFY(m_window->projectFiles()->openFile(moved + QStringLiteral("/scene.json")));
+    QCOMPARE(QString::fromStdString(m_window->document()->project().environment.source), source);
+    QVERIFY2(m_window->document()->missingFiles().isEmpty(),
+        qPrintable(m_window->document()->missingFiles().join(QLatin1Char(' '))));
+    QVERIFY(library->currentItem());
+    QCOMPARE(library->currentItem()->data(Qt::UserRole).toString(), source);
+    QCOMPARE(library->currentItem()->text(), label);
+    QCOMPARE(m_window->sceneController()->environmentName(), QFileInfo(source).fileName());
+    QVERIFY(m_window->sceneController()->environmentProblem().isEmpty());
+}
+
+void ProjectFileUiTest::missingLibraryFileOpensWithRelinkDialog_data()
+{
+    QTest::addColumn<QString>("stored");
+    QTest::addColumn<QString>("missing"); // as Document::missingFiles lists it
+    QTest::addColumn<QString>("advice"); // in the dialog's entry
+    QTest::newRow("installed sample not installed")
+        << "library:installed/hdri/gone.exr" << installedDir() + QStringLiteral("/hdri/gone.exr")
+        << "run packaging/fetch-assets.sh";
+    QTest::newRow("library this computer lacks") << "library:nobody/gone.exr" << "library:nobody/gone.exr"
+                                                 << "Add Folder… in the Environment dock";
+}
+
+// A project naming a library file this computer does not have opens anyway, with the relink dialog
+// saying where the file comes from; relinking from a folder fixes it.
+void ProjectFileUiTest::missingLibraryFileOpensWithRelinkDialog()
+{
+    QFETCH(QString, stored);
+    QFETCH(QString, missing);
+    QFETCH(QString, advice);
+    const QString path = m_dir.filePath(QStringLiteral("uses-library.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(QStringLiteral("{\"format\": \"facet-project\", \"version\": 1, \"environment\": {\"source\": \"%1\"}}")
+                   .arg(stored)
+                   .toUtf8());
+    file.close();
+
+    QVERIFY(m_window->projectFiles()->openFile(path)); // opens, does not fail
+    QCOMPARE(m_window->document()->missingFiles(), QStringList {missing});
+    MissingFilesDialog* dialog = m_window->projectFiles()->missingFilesDialog();
+    QVERIFY(dialog);
+    QVERIFY(dialog->isVisible());
+    QCOMPARE(dialog->entries().size(), 1);
+    QVERIFY2(dialog->entries()[0].contains(QStringLiteral("gone.exr")) && dialog->entries()[0].contains(advice),
+        qPrintable(dialog->entries()[0]));
+    // The window never claims the missing environment is lit.
+    QVERIFY2(m_window->sceneController()->environmentProblem().contains(QStringLiteral("gone.exr")),
+        qPrintable(m_window->sceneController()->environmentProblem()));
+
+    const QString folder = m_dir.filePath(QStringLiteral("found"));
+    QVERIFY(test::writeConstantExr(folder + QStringLiteral("/gone.exr"), 0.3f));
+    QCOMPARE(dialog->relinkFromFolder(folder), 1);
+    QVERIFY(m_window->document()->missingFiles().isEmpty());
+    QCOMPARE(QString::fromStdString(m_window->document()->project().environment.source),
+        folder + QStringLiteral("/gone.exr"));
+    QVERIFY(m_window->sceneController()->environmentProblem().isEmpty());
+    QVERIFY(QDir(folder).removeRecursively());
 }
 
 void ProjectFileUiTest::unsavedChangesQuestion()

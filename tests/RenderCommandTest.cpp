@@ -1,6 +1,11 @@
 // `facet render` as scripts drive it: the executable run with no display server, its output
 // images read back, its errors and exit codes.
 
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QProcessEnvironment>
+#include <QSettings>
 #include <QTemporaryDir>
 #include <QtTest/QTest>
 
@@ -24,9 +29,35 @@ namespace {
 
 using Result = facet::test::ProcessResult;
 
-Result runFacet(const QStringList& arguments)
+Result runFacet(const QStringList& arguments, const QProcessEnvironment& extra = QProcessEnvironment())
 {
-    return facet::test::runWithoutDisplay(QStringLiteral(FACET_EXECUTABLE), arguments);
+    return facet::test::runWithoutDisplay(QStringLiteral(FACET_EXECUTABLE), arguments, extra);
+}
+
+// A QStringList from literals (QT_NO_CAST_FROM_ASCII forbids the implicit conversion).
+QStringList strings(std::initializer_list<const char*> items)
+{
+    QStringList list;
+    for (const char* item : items)
+        list.append(QString::fromUtf8(item));
+    return list;
+}
+
+bool writeText(const QString& path, const QByteArray& text)
+{
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(text) == text.size();
+}
+
+// A project file holding only an environment source, a mesh and a debug view.
+QByteArray projectJson(const QString& source, const QString& mesh = QStringLiteral("sphere"),
+    const QString& debugView = QStringLiteral("none"))
+{
+    return QStringLiteral("{\"format\": \"facet-project\", \"version\": 1, \"environment\": {\"source\": \"%1\"}, "
+                          "\"view\": {\"mesh\": \"%2\", \"debugView\": \"%3\"}}")
+        .arg(source, mesh, debugView)
+        .toUtf8();
 }
 
 } // namespace
@@ -37,7 +68,170 @@ class RenderCommandTest : public QObject {
     QTemporaryDir m_dir;
     QString path(const QString& name) const { return m_dir.filePath(name); }
 
+    // The child's asset libraries: this test's installed samples and user settings only.
+    QProcessEnvironment libraryEnvironment() const
+    {
+        QProcessEnvironment extra;
+        extra.insert(QStringLiteral("FACET_ASSETS_DIR"), path(QStringLiteral("assets")));
+        extra.insert(QStringLiteral("XDG_CONFIG_HOME"), path(QStringLiteral("config")));
+        extra.insert(QStringLiteral("FACET_CACHE_DIR"), path(QStringLiteral("library-ibl-cache")));
+        return extra;
+    }
+    // {dir} in an argument is this test's folder.
+    QStringList expand(QStringList arguments) const
+    {
+        for (QString& argument : arguments)
+            argument.replace(QLatin1String("{dir}"), m_dir.path());
+        return arguments;
+    }
+
 private Q_SLOTS:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        // Installed samples: a night and a "studio" of a radiance the built-in studio never has.
+        QVERIFY(facet::test::writeConstantExr(path(QStringLiteral("assets/hdri/night.exr")), 0.25f));
+        QVERIFY(facet::test::writeConstantExr(path(QStringLiteral("assets/hdri/studio.exr")), 5.0f));
+        // A user library "my-hdris", as the window's Add Folder registers it (QSettings of facet).
+        QVERIFY(facet::test::writeConstantExr(path(QStringLiteral("My HDRIs/loft.exr")), 2.0f));
+        QSettings settings(path(QStringLiteral("config/Facet/facet.conf")), QSettings::IniFormat);
+        settings.beginWriteArray(QStringLiteral("assetLibraries"), 1);
+        settings.setArrayIndex(0);
+        settings.setValue(QStringLiteral("name"), QStringLiteral("my-hdris"));
+        settings.setValue(QStringLiteral("folder"), path(QStringLiteral("My HDRIs")));
+        settings.endArray();
+        settings.sync();
+        QCOMPARE(settings.status(), QSettings::NoError);
+        // Projects naming library files, in folders of different depths.
+        QVERIFY(writeText(path(QStringLiteral("projects/installed.json")),
+            projectJson(QStringLiteral("library:installed/hdri/night.exr"))));
+        QVERIFY(writeText(path(QStringLiteral("projects/a/b/c/user.json")),
+            projectJson(QStringLiteral("library:my-hdris/loft.exr"))));
+        QVERIFY(writeText(path(QStringLiteral("projects/gone.json")),
+            projectJson(QStringLiteral("library:installed/hdri/gone.exr"))));
+        QVERIFY(writeText(path(QStringLiteral("projects/unknown-library.json")),
+            projectJson(QStringLiteral("library:nobody/x.exr"))));
+        QVERIFY(writeText(path(QStringLiteral("projects/gone-mesh.json")),
+            projectJson(QStringLiteral("uniform:1"), QStringLiteral("library:installed/models/gone.glb"))));
+        QVERIFY(writeText(path(QStringLiteral("projects/bad-view.json")),
+            projectJson(QStringLiteral("uniform:1"), QStringLiteral("sphere"), QStringLiteral("bogus"))));
+        QVERIFY(writeText(path(QStringLiteral("projects/old-view.json")),
+            projectJson(QStringLiteral("uniform:1"), QStringLiteral("sphere"), QStringLiteral("d"))));
+        QVERIFY(writeText(path(QStringLiteral("projects/new-view.json")),
+            projectJson(QStringLiteral("uniform:1"), QStringLiteral("sphere"), QStringLiteral("distribution"))));
+    }
+
+    // Every way of naming an environment renders that environment: the background of the ground
+    // truth's corner pixels is its radiance. `studio` stays the built-in procedural one.
+    void environmentSpecsRender_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<double>("radiance"); // < 0: the built-in studio (not a constant)
+        const QString loft = path(QStringLiteral("My HDRIs/loft.exr"));
+        QTest::newRow("installed reference") << strings({"--env", "library:installed/hdri/night.exr"}) << 0.25;
+        QTest::newRow("user library reference") << strings({"--env", "library:my-hdris/loft.exr"}) << 2.0;
+        QTest::newRow("absolute path") << QStringList {QStringLiteral("--env"), loft} << 2.0;
+        QTest::newRow("relative path") << QStringList {QStringLiteral("--env"), QDir::current().relativeFilePath(loft)} << 2.0;
+        QTest::newRow("uniform") << strings({"--env", "uniform:0.5"}) << 0.5;
+        QTest::newRow("studio is built-in") << strings({"--env", "studio"}) << -1.0;
+        QTest::newRow("project, installed") << strings({"{dir}/projects/installed.json"}) << 0.25;
+        QTest::newRow("project deeper, user library") << strings({"{dir}/projects/a/b/c/user.json"}) << 2.0;
+    }
+    void environmentSpecsRender()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(double, radiance);
+        const QString out = path(QStringLiteral("spec.exr"));
+        QFile::remove(out);
+        const Result r = runFacet(QStringList {QStringLiteral("render")} + expand(arguments)
+                + QStringList {QStringLiteral("--spp"), QStringLiteral("1"), QStringLiteral("--size"),
+                    QStringLiteral("8x8"), QStringLiteral("-o"), out},
+            libraryEnvironment());
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        std::string error;
+        const auto image = Image::load(out.toStdString(), &error);
+        QVERIFY2(image, error.c_str());
+        QVERIFY(!referenceview::intersectSphere(referenceview::rayDirection(0, 0, 8, 8)));
+        const float corner = image->at(0, 0).g;
+        if (radiance < 0.0)
+            QVERIFY2(std::abs(corner - 5.0f) > 0.5f && image->at(0, 0) != image->at(0, 7), qPrintable(QString::number(corner)));
+        else
+            QVERIFY2(std::abs(corner - float(radiance)) < 1e-3f, qPrintable(QString::number(corner)));
+    }
+
+    // A library file missing on this machine: the message names it and says how to get it.
+    void missingLibraryFilesAreNamed_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QStringList>("mentions");
+        QTest::newRow("project, installed sample") << strings({"{dir}/projects/gone.json", "--spp", "1"})
+                                                   << strings({"gone.exr", "packaging/fetch-assets.sh"});
+        QTest::newRow("project, gpu path") << strings({"{dir}/projects/gone.json"})
+                                           << strings({"gone.exr", "packaging/fetch-assets.sh"});
+        QTest::newRow("project, unknown library") << strings({"{dir}/projects/unknown-library.json"})
+                                                  << strings({"x.exr", "\"nobody\"", "Add Folder"});
+        QTest::newRow("project, installed mesh") << strings({"{dir}/projects/gone-mesh.json"})
+                                                 << strings({"gone.glb", "packaging/fetch-assets.sh"});
+        QTest::newRow("--env reference") << strings({"--env", "library:installed/hdri/gone.exr", "--spp", "1"})
+                                         << strings({"gone.exr", "packaging/fetch-assets.sh"});
+        QTest::newRow("--env bare sample name") << strings({"--env", "night", "--spp", "1"})
+                                                << strings({"library:installed/hdri/night.exr"});
+    }
+    void missingLibraryFilesAreNamed()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QStringList, mentions);
+        const QString out = path(QStringLiteral("never.exr"));
+        const Result r = runFacet(QStringList {QStringLiteral("render")} + expand(arguments)
+                + QStringList {QStringLiteral("--size"), QStringLiteral("8x8"), QStringLiteral("-o"), out},
+            libraryEnvironment());
+        QCOMPARE(r.exitCode, 1);
+        QVERIFY(r.err.startsWith(QStringLiteral("facet render: ")));
+        for (const QString& part : mentions)
+            QVERIFY2(r.err.contains(part), qPrintable(part + QStringLiteral(" not in: ") + r.err));
+        QVERIFY(!QFile::exists(out));
+    }
+
+    // Descriptive debug view names and the old one-letter ones render the same view, and not the
+    // shaded image (an unknown name used to fall back to it silently).
+    void debugViewNamesAndAliases_data()
+    {
+        QTest::addColumn<QStringList>("name");
+        QTest::addColumn<QStringList>("alias");
+        QTest::newRow("distribution") << strings({"--view", "distribution"}) << strings({"--view", "d"});
+        QTest::newRow("visibility") << strings({"--view", "visibility"}) << strings({"--view", "v"});
+        QTest::newRow("fresnel") << strings({"--view", "fresnel"}) << strings({"--view", "f"});
+        QTest::newRow("project's old name") << strings({"{dir}/projects/new-view.json"})
+                                            << strings({"{dir}/projects/old-view.json"});
+    }
+    void debugViewNamesAndAliases()
+    {
+        QFETCH(QStringList, name);
+        QFETCH(QStringList, alias);
+        const QStringList common {QStringLiteral("--env"), QStringLiteral("uniform:1"), QStringLiteral("--quality"),
+            QStringLiteral("draft"), QStringLiteral("--size"), QStringLiteral("16x16"), QStringLiteral("--reference-view")};
+        std::optional<Image> images[3];
+        // The same request with the shaded image (the last --view wins).
+        const QStringList variants[3] = {name, alias, name + QStringList {QStringLiteral("--view"), QStringLiteral("none")}};
+        for (int i = 0; i < 3; ++i) {
+            const QString out = path(QStringLiteral("view-%1.exr").arg(i));
+            const Result r = runFacet(QStringList {QStringLiteral("render")} + expand(variants[i]) + common
+                    + QStringList {QStringLiteral("-o"), out},
+                libraryEnvironment());
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+            std::string error;
+            images[i] = Image::load(out.toStdString(), &error);
+            QVERIFY2(images[i], error.c_str());
+        }
+        int differsFromShaded = 0;
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x) {
+                QVERIFY2(images[1]->at(x, y) == images[0]->at(x, y), qPrintable(QStringLiteral("(%1,%2)").arg(x).arg(y)));
+                differsFromShaded += images[0]->at(x, y) != images[2]->at(x, y);
+            }
+        QVERIFY2(differsFromShaded > 20, qPrintable(QString::number(differsFromShaded)));
+    }
+
     // The white furnace through the command line: with compensation a white metal disappears.
     void groundTruthWhiteFurnace()
     {
@@ -221,6 +415,14 @@ private Q_SLOTS:
                                                         QStringLiteral("uniform:-1"), QStringLiteral("--spp"),
                                                         QStringLiteral("4"), QStringLiteral("-o"), out}
                                          << 1 << QStringLiteral("uniform:-1");
+        QTest::newRow("unknown debug view") << QStringList{QStringLiteral("render"), QStringLiteral("--view"),
+                                                           QStringLiteral("bogus"), QStringLiteral("-o"), out}
+                                            << 2
+                                            << QStringLiteral("--view: unknown debug view 'bogus' (expected one of: "
+                                                              "none, base-color, ");
+        QTest::newRow("project's unknown debug view")
+            << QStringList{QStringLiteral("render"), path(QStringLiteral("projects/bad-view.json")), QStringLiteral("-o"), out}
+            << 1 << QStringLiteral("bad-view.json: view.debugView: unknown debug view \"bogus\" (expected one of: none, ");
         QTest::newRow("ground truth mesh") << QStringList{QStringLiteral("render"), QStringLiteral("--mesh"),
                                                           QStringLiteral("cube"), QStringLiteral("--spp"),
                                                           QStringLiteral("4"), QStringLiteral("-o"), out}

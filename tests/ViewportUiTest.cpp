@@ -1,15 +1,18 @@
 // The viewport in the main window: the default project shows a lit object (screenshot saved as an
 // artefact), frames are drawn on demand only (none for a second without input), a material edit
 // re-renders without reloading anything, camera drags draw reduced previews and then one full
-// frame, the camera keys and the turntable work, number keys apply presets. Prints the measured
-// frame times. Framing (the first view of a project, F, Home) shows the whole object in a tall and
-// in a wide viewport, filling the smaller dimension. Needs a display (Xvfb via with-display.sh).
+// frame, the camera keys and the turntable work, number keys apply presets, an environment that
+// cannot be used is named and never said to be lit. Prints the measured frame times. Framing (the
+// first view of a project, F, Home) shows the whole object in a tall and in a wide viewport,
+// filling the smaller dimension. Needs a display (Xvfb via with-display.sh).
 
 #include "core/MaterialPresets.h"
 #include "ui/CameraController.h"
 #include "ui/Document.h"
 #include "ui/DocumentCommands.h"
 #include "ui/MainWindow.h"
+#include "ui/MissingFilesDialog.h"
+#include "ui/ProjectFileController.h"
 #include "ui/SceneController.h"
 #include "ui/SurfaceFormat.h"
 #include "ui/ViewportWidget.h"
@@ -19,7 +22,9 @@
 #include <QAction>
 #include <QDockWidget>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QImage>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -108,6 +113,9 @@ private Q_SLOTS:
     void turntableDrawsOnlyWhileRunning();
     void numberKeyAppliesPreset();
     void framingFitsTallAndWideViewports();
+    void unusableEnvironmentIsNamedNeverReady_data();
+    void unusableEnvironmentIsNamedNeverReady();
+    void projectWithMissingEnvironmentAtStartUp();
 
 private:
     QTemporaryDir m_recovery;
@@ -462,5 +470,83 @@ void ViewportUiTest::framingFitsTallAndWideViewports()
     QVERIFY(resizeTo(windowSize));
 }
 
+void ViewportUiTest::unusableEnvironmentIsNamedNeverReady_data()
+{
+    QTest::addColumn<QString>("source"); // {dir}: a temporary folder
+    QTest::addColumn<QString>("file"); // the name the messages must use
+    QTest::addColumn<QString>("problem"); // how the window says what is wrong
+    QTest::newRow("missing file") << "{dir}/night.exr" << "night.exr" << "night.exr is missing";
+    QTest::newRow("not an image") << "{dir}/broken.exr" << "broken.exr" << "broken.exr";
+    QTest::newRow("library this computer lacks")
+        << "library:nobody/night.exr" << "night.exr" << "night.exr comes from the library “nobody”";
+}
+
+// An environment that cannot be used is named, with the reason, in the status bar and the
+// Environment dock, and the lighting is never said to be its (the previous one stays lit).
+void ViewportUiTest::unusableEnvironmentIsNamedNeverReady()
+{
+    QFETCH(QString, source);
+    QFETCH(QString, file);
+    QFETCH(QString, problem);
+    QTemporaryDir dir;
+    QFile garbage(dir.filePath(QStringLiteral("broken.exr")));
+    QVERIFY(garbage.open(QIODevice::WriteOnly) && garbage.write("not an EXR at all") > 0);
+    garbage.close();
+    source.replace(QLatin1String("{dir}"), dir.path());
+    Document* document = m_window->document();
+    SceneController* scene = m_window->sceneController();
+    const QString shown = scene->environmentName();
+    EnvironmentSettings environment = document->project().environment;
+    environment.source = source.toStdString();
+    document->setEnvironment(environment, QStringLiteral("Environment"));
+    waitForFrame(m_viewport, 3000); // nothing to relight: a frame may or may not follow
+
+    const auto* dockStatus = m_window->findChild<QLabel*>(QStringLiteral("environmentStatus"));
+    QVERIFY(dockStatus);
+    for (const QString& text : {m_window->statusMessage(), dockStatus->text(), scene->environmentProblem()}) {
+        QVERIFY2(text.contains(problem), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("ready")), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("Environment::")), qPrintable(text));
+    }
+    QVERIFY2(dockStatus->text().contains(QStringLiteral("Showing %1 instead").arg(shown)), qPrintable(dockStatus->text()));
+    QCOMPARE(scene->environmentName(), shown);
+    QVERIFY(scene->environmentName() != file);
+
+    document->undoStack()->undo();
+    QVERIFY(scene->environmentProblem().isEmpty());
+}
+
+// What `facet P.json` does when P.json names a missing environment: the project opens before the
+// viewport has drawn anything, and the first lighting is the built-in studio's. The window must
+// say the project's file is missing, not "Lighting of night.exr ready".
+void ViewportUiTest::projectWithMissingEnvironmentAtStartUp()
+{
+    QTemporaryDir dir;
+    Project project = Project::defaultProject();
+    project.environment.source = dir.filePath(QStringLiteral("night.exr")).toStdString();
+    const QString path = dir.filePath(QStringLiteral("missing-environment.json"));
+    std::string error;
+    QVERIFY2(project.save(path.toStdString(), &error), error.c_str());
+
+    MainWindow window(nullptr, dir.filePath(QStringLiteral("recovery")));
+    window.projectFiles()->setErrorDialogsEnabled(false);
+    QVERIFY(window.projectFiles()->openFile(path));
+    QSignalSpy finished(window.viewport(), &ViewportWidget::iblPrecomputeFinished);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QVERIFY(finished.count() > 0 || finished.wait(60000));
+    const auto* dockStatus = window.findChild<QLabel*>(QStringLiteral("environmentStatus"));
+    for (const QString& text : {window.statusMessage(), dockStatus->text()}) {
+        QVERIFY2(text.contains(QStringLiteral("night.exr is missing")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("Showing studio instead")), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("ready")), qPrintable(text));
+    }
+    QCOMPARE(finished.first().first().toString(), QStringLiteral("studio")); // what was lit
+    if (auto* dialog = window.projectFiles()->missingFilesDialog())
+        dialog->close();
+    window.document()->newProject();
+}
+
 QTEST_MAIN(ViewportUiTest)
 #include "ViewportUiTest.moc"
+

@@ -1,9 +1,11 @@
 #include "ui/AutosaveController.h"
 
 #include "ui/Document.h"
+#include "ui/WindowMessages.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
+#include <QDebug>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -78,7 +80,8 @@ bool AutosaveController::autosaveNow()
         return true;
     QString error;
     if (!m_document->writeRecoveryFile(m_recoveryPath, &error)) {
-        Q_EMIT failed(tr("Autosave failed: %1").arg(error));
+        qWarning().noquote() << "facet: autosave failed:" << error;
+        Q_EMIT failed(tr("Autosave failed: %1").arg(WindowMessages::fromCore(error)));
         return false;
     }
     m_changedSinceAutosave = false;

@@ -1,5 +1,6 @@
 #include "ui/Document.h"
 
+#include "render/ShaderVariant.h"
 #include "ui/DocumentCommands.h"
 
 #include <QDebug>
@@ -21,6 +22,17 @@ const QLatin1String kRecoveryKey("facetRecoveryOf");
 QString fromStd(const std::string& text)
 {
     return QString::fromStdString(text);
+}
+
+// What core cannot check because the names are render/'s: a project whose debug view the renderer
+// does not know would silently show the shaded image, so it is refused like any other bad name.
+bool checkRendererNames(const Project& project, std::string* problem)
+{
+    if (debugViewFromString(project.view.debugView))
+        return true;
+    *problem = "view.debugView: unknown debug view \"" + project.view.debugView
+        + "\" (expected one of: " + debugViewNameList() + ")";
+    return false;
 }
 
 } // namespace
@@ -164,6 +176,10 @@ bool Document::open(const QString& path, QString* error)
         *error = fromStd(problem);
         return false;
     }
+    if (!checkRendererNames(*project, &problem)) {
+        *error = QStringLiteral("Document::open: %1: %2").arg(absolute, fromStd(problem));
+        return false;
+    }
     m_warnings = fromStd(warning).trimmed();
     replaceProject(*project, absolute, false);
     return true;
@@ -224,7 +240,7 @@ bool Document::recover(const QString& recoveryPath, QString* error)
     std::string warning;
     const std::string baseDir = QFileInfo(recoveryPath).absolutePath().toStdString();
     std::optional<Project> project = Project::fromJson(*object, baseDir, &problem, &warning);
-    if (!project) {
+    if (!project || !checkRendererNames(*project, &problem)) {
         *error = QStringLiteral("Document::recover: %1: %2").arg(recoveryPath, fromStd(problem));
         return false;
     }

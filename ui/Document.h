@@ -71,9 +71,10 @@ public:
     // missing files; unmodified. (Asking about unsaved changes is the window's job.)
     void newProject();
     // Loads `path`. On failure returns false, sets *error ("Project::load: <path>: <reason>")
-    // and changes nothing. On success the history is cleared, the document is unmodified,
-    // warnings() holds the loader's notes and missingFiles() the files the project names that do
-    // not exist.
+    // and changes nothing; a debug view the renderer does not know is refused too
+    // ("Document::open: <path>: view.debugView: unknown debug view ..."). On success the history
+    // is cleared, the document is unmodified, warnings() holds the loader's notes and
+    // missingFiles() the files the project names that do not exist.
     bool open(const QString& path, QString* error);
     // Writes to filePath() (must not be empty) / to `path` (which becomes filePath()). On success
     // the document is unmodified. On failure the file on disk is untouched (atomic save).

@@ -1,5 +1,7 @@
 #include "ui/EnvironmentDock.h"
 
+#include "core/AssetLibrary.h"
+#include "core/Environment.h"
 #include "core/Project.h"
 #include "render/IblSettings.h"
 #include "ui/ColorButton.h"
@@ -7,6 +9,7 @@
 #include "ui/DocumentCommands.h"
 #include "ui/ThumbnailLoader.h"
 #include "ui/ValueSlider.h"
+#include "ui/WindowMessages.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -23,12 +26,16 @@
 #include <QVBoxLayout>
 
 #include <cmath>
+#include <optional>
+#include <utility>
 
 namespace facet {
 
 namespace {
 
-const QLatin1String kFoldersKey("environmentLibrary/folders");
+// Where versions before asset libraries remembered added folders; read once and moved into
+// core's library list (AssetLibrary::addUserLibrary), which names each folder.
+const QLatin1String kLegacyFoldersKey("environmentLibrary/folders");
 constexpr int kSourceRole = Qt::UserRole;
 
 QStringList environmentFiles(const QString& folder)
@@ -41,14 +48,72 @@ QStringList environmentFiles(const QString& folder)
     return files;
 }
 
+// "night_city-2k" -> "Night city 2k": a file name as a title.
+QString title(const QString& baseName)
+{
+    QString text = baseName;
+    text.replace(QLatin1Char('_'), QLatin1Char(' ')).replace(QLatin1Char('-'), QLatin1Char(' '));
+    text = text.simplified();
+    if (!text.isEmpty())
+        text[0] = text[0].toUpper();
+    return text;
+}
+
+// The library a file or reference belongs to (nullopt for a loose file) and its reference.
+std::optional<std::pair<AssetLibrary, QString>> libraryOf(const QString& source)
+{
+    const std::string text = source.toStdString();
+    const std::optional<std::string> spec
+        = AssetLibrary::isSpec(text) ? std::optional<std::string>(text) : AssetLibrary::specForPath(text);
+    if (!spec)
+        return std::nullopt;
+    const std::string rest = spec->substr(std::char_traits<char>::length(AssetLibrary::kSpecPrefix));
+    const std::string name = rest.substr(0, rest.find('/'));
+    AssetLibrary library
+        = AssetLibrary::named(name).value_or(AssetLibrary {AssetLibrary::Kind::User, name, {}});
+    return std::make_pair(std::move(library), QString::fromStdString(*spec));
+}
+
 } // namespace
 
 QString EnvironmentDock::installedHdriFolder()
 {
-    const QString overridden = qEnvironmentVariable("FACET_ASSETS_DIR");
-    const QString assets
-        = overridden.isEmpty() ? QDir::homePath() + QStringLiteral("/.local/share/facet/assets") : overridden;
-    return assets + QStringLiteral("/hdri");
+    return QString::fromStdString(AssetLibrary::installed().folder) + QStringLiteral("/hdri");
+}
+
+QString EnvironmentDock::entryLabel(const QString& source)
+{
+    if (const auto builtin = Environment::builtinFromName(source.toStdString()))
+        return *builtin == Environment::Builtin::Studio ? tr("Studio (built-in)") : tr("Sky (built-in)");
+    const QString name = title(QFileInfo(source).completeBaseName());
+    const auto library = libraryOf(source);
+    if (!library)
+        return QFileInfo(source).fileName();
+    if (library->first.kind == AssetLibrary::Kind::Installed)
+        return tr("%1 (CC0 sample)").arg(name);
+    return tr("%1 (%2)").arg(name, QString::fromStdString(library->first.name));
+}
+
+QString EnvironmentDock::entryToolTip(const QString& source)
+{
+    if (const auto builtin = Environment::builtinFromName(source.toStdString()))
+        return *builtin == Environment::Builtin::Studio
+            ? tr("Studio, built into Facet: a procedural grey room with a large soft box overhead and two "
+                 "strip lights.\nNo file: the same on every computer. Saved in projects as “studio”.")
+            : tr("Sky, built into Facet: a procedural clear sky with a soft sun over a ground plane.\nNo "
+                 "file: the same on every computer. Saved in projects as “sky”.");
+    const QString file = QFileInfo(source).fileName();
+    const QString path = QDir::toNativeSeparators(source);
+    const auto library = libraryOf(source);
+    if (!library)
+        return tr("%1\nSaved in projects relative to the project's folder.").arg(path);
+    if (library->first.kind == AssetLibrary::Kind::Installed)
+        return tr("%1 from Facet's installed CC0 samples (packaging/fetch-assets.sh)\n%2\nSaved in projects "
+                  "as %3, found wherever the samples are installed.")
+            .arg(file, path, library->second);
+    return tr("%1 from your library “%2”\n%3\nSaved in projects as %4, found wherever a library of that "
+              "name is set up.")
+        .arg(file, QString::fromStdString(library->first.name), path, library->second);
 }
 
 EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
@@ -144,7 +209,7 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
                 if (item->data(kSourceRole).toString() != key)
                     continue;
                 if (image.isNull())
-                    item->setToolTip(error);
+                    item->setToolTip(entryToolTip(key) + QLatin1Char('\n') + WindowMessages::fromCore(error));
                 else
                     item->setIcon(QIcon(QPixmap::fromImage(image)));
             }
@@ -182,6 +247,10 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
         m_document->setEnvironment(environment, tr("IBL Quality"));
     });
     connect(m_document, &Document::changed, this, &EnvironmentDock::onDocumentChanged);
+    QSettings settings;
+    for (const QString& folder : settings.value(kLegacyFoldersKey).toStringList())
+        AssetLibrary::addUserLibrary(folder.toStdString(), nullptr); // a folder gone since is dropped
+    settings.remove(kLegacyFoldersKey);
     rebuildLibrary();
     onDocumentChanged(DocumentChange::WholeProject);
 }
@@ -197,26 +266,28 @@ void EnvironmentDock::rebuildLibrary()
 {
     const QSignalBlocker blocker(m_library);
     m_library->clear();
-    addEntry(QStringLiteral("studio"), tr("Studio (built-in)"));
-    addEntry(QStringLiteral("sky"), tr("Sky (built-in)"));
-    QStringList folders {installedHdriFolder()};
-    folders += QSettings().value(kFoldersKey).toStringList();
-    folders.removeDuplicates();
-    for (const QString& folder : folders)
+    addEntry(QString::fromLatin1(Environment::builtinName(Environment::Builtin::Studio)));
+    addEntry(QString::fromLatin1(Environment::builtinName(Environment::Builtin::Sky)));
+    for (const AssetLibrary& library : AssetLibrary::all()) {
+        // The installed samples keep their environments in hdri/; a user library is a folder of them.
+        QString folder = QString::fromStdString(library.folder);
+        if (library.kind == AssetLibrary::Kind::Installed)
+            folder += QStringLiteral("/hdri");
         for (const QString& file : environmentFiles(folder))
-            addEntry(QFileInfo(file).absoluteFilePath(), QFileInfo(file).completeBaseName());
+            addEntry(QFileInfo(file).absoluteFilePath());
+    }
 }
 
-QListWidgetItem* EnvironmentDock::addEntry(const QString& source, const QString& label)
+QListWidgetItem* EnvironmentDock::addEntry(const QString& source)
 {
     for (int row = 0; row < m_library->count(); ++row)
         if (m_library->item(row)->data(kSourceRole).toString() == source)
             return m_library->item(row);
     QPixmap placeholder(kThumbnailWidth, kThumbnailWidth / 2);
     placeholder.fill(Qt::darkGray);
-    auto* item = new QListWidgetItem(QIcon(placeholder), label, m_library);
+    auto* item = new QListWidgetItem(QIcon(placeholder), entryLabel(source), m_library);
     item->setData(kSourceRole, source);
-    item->setToolTip(source);
+    item->setToolTip(entryToolTip(source));
     m_thumbnails->request(
         source, source, ThumbnailLoader::Kind::Environment, QSize(kThumbnailWidth, kThumbnailWidth / 2));
     return item;
@@ -229,17 +300,26 @@ bool EnvironmentDock::addFolder(const QString& folder)
         Q_EMIT message(tr("%1 holds no .exr or .hdr environment").arg(QDir::toNativeSeparators(folder)));
         return false;
     }
-    QSettings settings;
-    QStringList folders = settings.value(kFoldersKey).toStringList();
-    const QString absolute = QFileInfo(folder).absoluteFilePath();
-    if (!folders.contains(absolute))
-        folders.append(absolute);
-    settings.setValue(kFoldersKey, folders);
-    const QSignalBlocker blocker(m_library);
-    for (const QString& file : files)
-        addEntry(QFileInfo(file).absoluteFilePath(), QFileInfo(file).completeBaseName());
-    Q_EMIT message(
-        tr("Added %1 environment(s) from %2").arg(files.size()).arg(QDir::toNativeSeparators(folder)));
+    std::string error;
+    const std::optional<AssetLibrary> library = AssetLibrary::addUserLibrary(folder.toStdString(), &error);
+    if (!library) {
+        Q_EMIT message(WindowMessages::fromCore(error));
+        return false;
+    }
+    {
+        const QSignalBlocker blocker(m_library);
+        for (const QString& file : files) {
+            // A file listed before as a loose file or under another library gets its new label.
+            const QString source = QFileInfo(file).absoluteFilePath();
+            QListWidgetItem* item = addEntry(source);
+            item->setText(entryLabel(source));
+            item->setToolTip(entryToolTip(source));
+        }
+    }
+    Q_EMIT message(tr("Added %n environment(s) from %1 as the library “%2”; projects refer to them by that "
+                      "name",
+        nullptr, int(files.size()))
+                       .arg(QDir::toNativeSeparators(folder), QString::fromStdString(library->name)));
     return true;
 }
 
@@ -254,7 +334,7 @@ bool EnvironmentDock::chooseEnvironment(const QString& source)
     QListWidgetItem* item = nullptr;
     {
         const QSignalBlocker blocker(m_library);
-        item = addEntry(spec, builtin ? spec : QFileInfo(spec).completeBaseName());
+        item = addEntry(spec);
     }
     m_library->setCurrentItem(item); // sets the document through onItemActivated
     return true;
@@ -283,7 +363,7 @@ void EnvironmentDock::onDocumentChanged(DocumentChanges changes)
             if (m_library->item(row)->data(kSourceRole).toString() == source)
                 item = m_library->item(row);
         if (!item && !source.startsWith(QStringLiteral("uniform:")))
-            item = addEntry(source, QFileInfo(source).completeBaseName());
+            item = addEntry(source);
         m_library->setCurrentItem(item);
     }
     m_rotation->setValue(project.environment.rotationDegrees);
@@ -300,18 +380,10 @@ void EnvironmentDock::onDocumentChanged(DocumentChanges changes)
     m_backgroundColor->setLinearColor(project.view.backgroundColor);
 }
 
-void EnvironmentDock::showPrecomputeStarting(const QString& name)
+void EnvironmentDock::showLightingStatus(const QString& text, bool busy)
 {
-    m_status->setText(tr("Preparing the lighting of %1…").arg(name));
-    m_busy->show();
-}
-
-void EnvironmentDock::showPrecomputeFinished(const QString& name, double milliseconds)
-{
-    m_busy->hide();
-    m_status->setText(milliseconds > 0.0
-            ? tr("Lighting of %1 ready (%2 ms)").arg(name).arg(milliseconds, 0, 'f', 0)
-            : tr("Lighting of %1 ready (cached)").arg(name));
+    m_busy->setVisible(busy);
+    m_status->setText(text);
 }
 
 } // namespace facet

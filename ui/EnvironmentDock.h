@@ -1,11 +1,13 @@
 #pragma once
 // The Environment library dock: thumbnails of the built-in environments (studio, sky), of the
-// CC0 HDRIs the setup installs ($FACET_ASSETS_DIR/hdri, else ~/.local/share/facet/assets/hdri)
-// and of folders the user adds (remembered in QSettings). Thumbnails are made off the GUI
-// thread (ThumbnailLoader). Choosing one relights the viewport (one undo step). Below: rotation,
-// intensity in EV (stored as the linear intensity 2^EV), the background (environment, blurred by
-// a roughness, or a solid colour) and the IBL quality preset; a busy bar while an environment's
-// lighting is computed.
+// installed CC0 samples' HDRIs (AssetLibrary::installed(), hdri/) and of the user's libraries
+// (folders added with Add Folder…, each named once: core/AssetLibrary.h), so that projects refer
+// to them by library name. Labels say where each comes from ("Studio (built-in)", "Studio (CC0
+// sample)", "Loft (my-hdris)"), tooltips give the file and how projects store it. Thumbnails are
+// made off the GUI thread (ThumbnailLoader). Choosing one relights the viewport (one undo step).
+// Below: rotation, intensity in EV (stored as the linear intensity 2^EV), the background
+// (environment, blurred by a roughness, or a solid colour) and the IBL quality preset; a busy bar
+// and the lighting's status (ui/WindowMessages.h).
 
 #include "ui/DocumentChanges.h"
 
@@ -36,8 +38,11 @@ public:
     QListWidget* library() const { return m_library; }
     // The folder of the installed CC0 HDRIs.
     static QString installedHdriFolder();
-    // Adds a folder of .exr/.hdr images to the library (and to QSettings). False with a message
-    // when it holds none.
+    // The label and tooltip of an entry for `source` (an environment spec or absolute path).
+    static QString entryLabel(const QString& source);
+    static QString entryToolTip(const QString& source);
+    // Adds a folder of .exr/.hdr images to the library as a user library (AssetLibrary::
+    // addUserLibrary names it). False with a message when it holds none.
     bool addFolder(const QString& folder);
     // Selects the library entry of `source` (an environment spec) and sets it on the document.
     bool chooseEnvironment(const QString& source);
@@ -46,16 +51,15 @@ public:
     double thumbnailMilliseconds() const { return m_thumbnailMs; }
 
 public Q_SLOTS:
-    // From the viewport: the lighting of `name` is being computed / is ready.
-    void showPrecomputeStarting(const QString& name);
-    void showPrecomputeFinished(const QString& name, double milliseconds);
+    // The lighting's status (ui/WindowMessages.h wording), with the busy bar while it is computed.
+    void showLightingStatus(const QString& text, bool busy);
 
 Q_SIGNALS:
     void message(const QString& text);
 
 private:
     void rebuildLibrary();
-    QListWidgetItem* addEntry(const QString& source, const QString& label);
+    QListWidgetItem* addEntry(const QString& source);
     void onDocumentChanged(DocumentChanges changes);
     void onItemActivated(QListWidgetItem* item);
 
@@ -68,7 +72,7 @@ private:
     ValueSlider* m_blur;
     ColorButton* m_backgroundColor;
     QComboBox* m_quality;
-    QLabel* m_status;
+    QLabel* m_status; // objectName "environmentStatus"
     QProgressBar* m_busy;
     double m_thumbnailMs = 0.0;
 };

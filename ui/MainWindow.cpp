@@ -12,6 +12,7 @@
 #include "ui/TextureMapsDock.h"
 #include "ui/ViewDock.h"
 #include "ui/ViewportWidget.h"
+#include "ui/WindowMessages.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -63,11 +64,23 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
 
     connect(m_viewport, &ViewportWidget::glInitialized, this, &MainWindow::onViewportGLInitialized);
     connect(m_viewport, &ViewportWidget::frameRendered, this, &MainWindow::onFrameRendered);
-    connect(m_viewport, &ViewportWidget::iblPrecomputeStarting, this,
-        [this](const QString& name) { showStatusMessage(tr("Preparing the lighting of %1…").arg(name)); });
+    // The lighting's status, in the status bar and the Environment dock. When the project's
+    // environment could not be loaded, the lighting drawn is another one's: say so, never "ready".
+    connect(m_viewport, &ViewportWidget::iblPrecomputeStarting, this, [this](const QString& name) {
+        showStatusMessage(WindowMessages::lightingPreparing(name));
+        m_environmentDock->showLightingStatus(WindowMessages::lightingPreparing(name), true);
+    });
     connect(m_viewport, &ViewportWidget::iblPrecomputeFinished, this, [this](const QString& name, double ms) {
-        showStatusMessage(ms > 0.0 ? tr("Lighting of %1 ready (%2 ms)").arg(name).arg(ms, 0, 'f', 0)
-                                   : tr("Lighting of %1 ready").arg(name));
+        const QString& problem = m_scene->environmentProblem();
+        const QString text = problem.isEmpty() ? WindowMessages::lightingReady(name, ms)
+                                               : WindowMessages::environmentNotUsed(problem, name);
+        showStatusMessage(text);
+        m_environmentDock->showLightingStatus(text, false);
+    });
+    connect(m_scene, &SceneController::environmentProblemChanged, this, [this](const QString& problem) {
+        if (!problem.isEmpty())
+            m_environmentDock->showLightingStatus(
+                WindowMessages::environmentNotUsed(problem, m_scene->environmentName()), false);
     });
     connect(m_scene, &SceneController::message, this, &MainWindow::showStatusMessage);
     connect(m_document, &Document::editRejected, this, &MainWindow::showStatusMessage);
@@ -237,10 +250,6 @@ void MainWindow::createDocks()
     connect(m_lightsDock, &LightsDock::message, this, &MainWindow::showStatusMessage);
     connect(m_viewDock, &ViewDock::message, this, &MainWindow::showStatusMessage);
     connect(m_viewDock, &ViewDock::resetCameraRequested, m_camera, &CameraController::resetView);
-    connect(m_viewport, &ViewportWidget::iblPrecomputeStarting, m_environmentDock,
-        &EnvironmentDock::showPrecomputeStarting);
-    connect(m_viewport, &ViewportWidget::iblPrecomputeFinished, m_environmentDock,
-        &EnvironmentDock::showPrecomputeFinished);
     connect(m_viewport, &ViewportWidget::glInitialized, m_viewDock,
         [this] { m_viewDock->showGLInfo(m_viewport->glInfo()); });
     connect(m_viewport, &ViewportWidget::frameRendered, m_viewDock,
@@ -392,7 +401,8 @@ void MainWindow::onFrameRendered()
 {
     if (!m_viewport->lastError().isEmpty()) {
         m_frameStatsLabel->setText(tr("frame failed"));
-        showStatusMessage(m_viewport->lastError());
+        qWarning().noquote() << "facet:" << m_viewport->lastError();
+        showStatusMessage(WindowMessages::fromCore(m_viewport->lastError()));
         return;
     }
     m_frameStatsLabel->setText(m_viewport->lastFrameStats().summary());

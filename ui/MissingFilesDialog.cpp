@@ -1,6 +1,8 @@
 #include "ui/MissingFilesDialog.h"
 
+#include "core/AssetLibrary.h"
 #include "ui/Document.h"
+#include "ui/WindowMessages.h"
 
 #include <QDialogButtonBox>
 #include <QDir>
@@ -24,6 +26,7 @@ MissingFilesDialog::MissingFilesDialog(Document* document, QWidget* parent)
     setModal(false);
     m_message->setWordWrap(true);
     m_list->setObjectName(QStringLiteral("missingFilesList"));
+    m_list->setWordWrap(true); // a library file's advice is a sentence
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, this);
     QPushButton* locate = buttons->addButton(tr("&Locate…"), QDialogButtonBox::ActionRole);
     QPushButton* search = buttons->addButton(tr("&Search Folder…"), QDialogButtonBox::ActionRole);
@@ -43,11 +46,29 @@ QString MissingFilesDialog::message() const
     return m_message->text();
 }
 
+QStringList MissingFilesDialog::entries() const
+{
+    QStringList texts;
+    for (int row = 0; row < m_list->count(); ++row)
+        texts.append(m_list->item(row)->text());
+    return texts;
+}
+
 void MissingFilesDialog::refresh()
 {
     const QStringList& missing = m_document->missingFiles();
     m_list->clear();
-    m_list->addItems(missing);
+    for (const QString& file : missing) {
+        // The file (as the project names it) and, for a library's file, how to get it back.
+        auto* item = new QListWidgetItem(QDir::toNativeSeparators(file), m_list);
+        item->setData(Qt::UserRole, file);
+        const std::string advice = AssetLibrary::missingFileAdvice(file.toStdString());
+        if (!advice.empty()) {
+            const QString text = WindowMessages::fromCore(QString::fromStdString(advice));
+            item->setText(item->text() + QStringLiteral("\n    ") + text);
+            item->setToolTip(text);
+        }
+    }
     if (!missing.isEmpty())
         m_list->setCurrentRow(0);
     m_message->setText(tr("%n file(s) used by %1 are missing. The project is open without them; locate "
@@ -63,9 +84,11 @@ void MissingFilesDialog::locateSelected()
     const QListWidgetItem* item = m_list->currentItem();
     if (!item)
         return;
-    const QString missing = item->text();
-    const QString replacement = QFileDialog::getOpenFileName(
-        this, tr("Locate %1").arg(QFileInfo(missing).fileName()), QFileInfo(missing).absolutePath());
+    const QString missing = item->data(Qt::UserRole).toString();
+    // A reference to a library this computer lacks names no folder: start in the home folder.
+    const QString start = QFileInfo(missing).isAbsolute() ? QFileInfo(missing).absolutePath() : QString();
+    const QString replacement
+        = QFileDialog::getOpenFileName(this, tr("Locate %1").arg(QFileInfo(missing).fileName()), start);
     if (!replacement.isEmpty())
         m_document->relinkFile(missing, replacement);
 }

@@ -1,6 +1,8 @@
 #pragma once
-// Lists the files the open project names that do not exist and lets the user point each one at
-// another file ("Locate…") or search a folder for files of the same names ("Search Folder…").
+// Lists the files the open project names that do not exist (a file of a library says which
+// library and how to get it back, e.g. packaging/fetch-assets.sh for the installed CC0 samples)
+// and lets the user point each one at another file ("Locate…") or search a folder for files of
+// the same names ("Search Folder…").
 // Non-modal: the project is already open and usable; relinking is an undoable edit
 // (Document::relinkFile). It follows Document::missingFilesChanged and closes itself when none
 // are left.
@@ -21,6 +23,8 @@ public:
 
     // The text above the list, e.g. "2 files used by scene.json are missing. ..."
     QString message() const;
+    // The list's entries as shown (the file, then any advice on a second line).
+    QStringList entries() const;
     // Looks in `folder` (not recursively) for a file with each missing file's name and relinks
     // those it finds; returns how many it relinked.
     int relinkFromFolder(const QString& folder);

@@ -2,7 +2,9 @@
 
 #include "ui/Document.h"
 #include "ui/MissingFilesDialog.h"
+#include "ui/WindowMessages.h"
 
+#include <QDebug>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -64,7 +66,8 @@ bool ProjectFileController::openFile(const QString& path)
         return false;
     QString error;
     if (!m_document->open(path, &error)) {
-        reportError(tr("Could not open %1: %2").arg(QDir::toNativeSeparators(path), error));
+        reportError(tr("Could not open %1: %2").arg(QDir::toNativeSeparators(path), error),
+            tr("Could not open the project: %1").arg(WindowMessages::fromCore(error)));
         return false;
     }
     m_lastError.clear();
@@ -133,7 +136,8 @@ bool ProjectFileController::saveToFile(const QString& path)
 {
     QString error;
     if (!m_document->saveAs(path, &error)) {
-        reportError(tr("Could not save %1: %2").arg(QDir::toNativeSeparators(path), error));
+        reportError(tr("Could not save %1: %2").arg(QDir::toNativeSeparators(path), error),
+            tr("Could not save the project: %1").arg(WindowMessages::fromCore(error)));
         return false;
     }
     m_lastError.clear();
@@ -164,9 +168,10 @@ bool ProjectFileController::maybeSave()
     }
 }
 
-void ProjectFileController::reportError(const QString& text)
+void ProjectFileController::reportError(const QString& precise, const QString& text)
 {
-    m_lastError = text;
+    m_lastError = precise;
+    qWarning().noquote() << "facet:" << precise;
     Q_EMIT errorReported(text);
     if (!m_errorDialogs)
         return;

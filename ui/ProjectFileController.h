@@ -1,8 +1,9 @@
 #pragma once
 // File > New, Open, Open Recent, Save, Save As and the question before unsaved changes are lost
 // (not a widget: it owns no window, only the dialogs it opens on `dialogParent`). Every failure
-// reaches the user as a message naming the file and the reason: errorReported() (MainWindow puts
-// it in the status bar) and a non-modal message box; nothing is silently skipped. After an open
+// reaches the user as a message naming the file and the reason, in the window's wording:
+// errorReported() (MainWindow puts it in the status bar) and a non-modal message box; nothing is
+// silently skipped. After an open
 // with missing files it says so and shows the MissingFilesDialog.
 //
 // Tests drive the *File(path) functions, which show no file dialog, and answer the unsaved-changes
@@ -51,7 +52,9 @@ public:
 
     QStringList recentFiles() const; // most recent first, from QSettings
     void clearRecentFiles();
-    // The last error message ("" if none since the last success) and the last missing-files note.
+    // The last error message, precise (core's message with the function and the full path, for
+    // stderr and logs; the window shows it in its own wording, ui/WindowMessages.h); "" if none
+    // since the last success. And the last missing-files note.
     const QString& lastError() const { return m_lastError; }
     const QString& missingFilesMessage() const { return m_missingFilesMessage; }
     // The relink dialog (null until a project with missing files was opened).
@@ -66,7 +69,8 @@ Q_SIGNALS:
     void errorReported(const QString& text);
 
 private:
-    void reportError(const QString& text);
+    // `precise` goes to lastError() and the log, `text` (window wording) to the window.
+    void reportError(const QString& precise, const QString& text);
     void addRecentFile(const QString& path);
     void afterOpen();
 

@@ -3,8 +3,10 @@
 #include "core/Project.h"
 #include "render/SceneFromProject.h"
 #include "ui/Document.h"
+#include "ui/WindowMessages.h"
 
 #include <QDateTime>
+#include <QDebug>
 #include <QFileInfo>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -51,8 +53,19 @@ void SceneController::onDocumentChanged(DocumentChanges changes)
 
 void SceneController::report(const std::string& text)
 {
-    if (!text.empty())
-        Q_EMIT message(QString::fromStdString(text));
+    if (text.empty())
+        return;
+    // The log keeps core's precise message; the window gets its wording (ui/WindowMessages.h).
+    qWarning().noquote() << "facet:" << QString::fromStdString(text);
+    Q_EMIT message(WindowMessages::fromCore(text));
+}
+
+void SceneController::setEnvironmentProblem(const QString& problem)
+{
+    if (problem == m_environmentProblem)
+        return;
+    m_environmentProblem = problem;
+    Q_EMIT environmentProblemChanged(problem);
 }
 
 void SceneController::loadEnvironment()
@@ -68,12 +81,19 @@ void SceneController::loadEnvironment()
             // Keep showing the previous one; a relink or another choice will replace it.
             m_environmentSource = source;
             applyEnvironmentSettings();
+            setEnvironmentProblem(WindowMessages::fromCore(error));
             return;
         }
         environment = Environment::builtin(Environment::Builtin::Studio);
-    } else {
-        report(warning);
+        m_assets.environment = std::move(*environment);
+        m_environmentSource = source;
+        ++m_iblKey;
+        applyEnvironmentSettings();
+        setEnvironmentProblem(WindowMessages::fromCore(error));
+        return;
     }
+    report(warning);
+    setEnvironmentProblem({});
     m_assets.environment = std::move(*environment);
     m_environmentSource = source;
     ++m_iblKey;
@@ -151,8 +171,10 @@ IblSettings SceneController::iblSettings() const
 
 QString SceneController::environmentName() const
 {
-    const QString source = QString::fromStdString(m_environmentSource);
-    return json::isBuiltinSpec(m_environmentSource) ? source : QFileInfo(source).fileName();
+    // The environment in use, which is not the project's when that one could not be loaded.
+    const std::string& name = m_assets.environment.name();
+    const QString source = QString::fromStdString(name);
+    return json::isBuiltinSpec(name) ? source : QFileInfo(source).fileName();
 }
 
 RenderScene SceneController::scene(const std::shared_ptr<const IblTextures>& ibl) const

@@ -7,7 +7,8 @@
 //
 // Problems (a missing map, an unreadable environment) never stop the frame: the slot falls back
 // to its factor, the environment and mesh keep their previous value (or the built-in default),
-// and message() names the file and the reason for the status bar.
+// and message() names the file and the reason for the status bar; environmentProblem() stays set
+// while the project's environment is not the one shown.
 
 #include "core/ProjectAssets.h"
 #include "render/IblSettings.h"
@@ -45,8 +46,13 @@ public:
     // changes when the environment source or the quality changes, not on rotation or intensity.
     std::uint64_t iblKey() const { return m_iblKey; }
     IblSettings iblSettings() const;
-    // A short name of the environment for messages ("studio", "forest.exr").
+    // A short name of the environment in use, for messages ("studio", "forest.exr"). When the
+    // project's environment could not be loaded this is the one shown instead (the previous one,
+    // or the built-in studio) and environmentProblem() says why.
     QString environmentName() const;
+    // Why the project's environment is not the one in use, in the window's wording and naming the
+    // file ("night.exr is missing; ..."); empty when it is in use.
+    const QString& environmentProblem() const { return m_environmentProblem; }
 
     // The frame to draw, with the environment's IBL textures (null: background-only lighting).
     RenderScene scene(const std::shared_ptr<const IblTextures>& ibl) const;
@@ -63,8 +69,11 @@ Q_SIGNALS:
     // (Document::interactiveEditOpen) or a turntable is running: the viewport may draw at reduced
     // resolution and refine afterwards.
     void sceneChanged(bool interactive);
-    // A problem or a note for the status bar, naming the file.
+    // A problem or a note for the status bar, naming the file, in the window's wording
+    // (ui/WindowMessages.h); the precise message goes to the log.
     void message(const QString& text);
+    // environmentProblem() changed.
+    void environmentProblemChanged(const QString& problem);
 
 private:
     void onDocumentChanged(DocumentChanges changes);
@@ -73,10 +82,12 @@ private:
     void loadMesh();
     void loadMaps(bool all);
     void report(const std::string& text);
+    void setEnvironmentProblem(const QString& problem);
 
     Document* m_document;
     ProjectAssets m_assets;
-    std::string m_environmentSource; // what m_assets.environment was loaded from
+    std::string m_environmentSource; // the project's source last loaded (or tried)
+    QString m_environmentProblem;
     std::string m_meshSource;
     std::uint64_t m_iblKey = 0;
     LoadCounts m_loadCounts;

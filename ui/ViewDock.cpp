@@ -90,8 +90,11 @@ ViewDock::ViewDock(Document* document, QWidget* parent)
     }
     m_debugView->setObjectName(QStringLiteral("debugViewCombo"));
     for (int i = 0; i < kDebugViewCount; ++i) {
+        // Descriptive labels from render/'s one name table; the data is the name files store.
         const QString name = QString::fromLatin1(toString(DebugView(i)));
-        m_debugView->addItem(name, name);
+        m_debugView->addItem(QString::fromUtf8(debugViewLabel(DebugView(i))), name);
+        m_debugView->setItemData(
+            i, tr("“%1” in project files and facet render --view").arg(name), Qt::ToolTipRole);
     }
     m_msaa->setObjectName(QStringLiteral("msaaCombo"));
     for (int samples : {1, 2, 4, 8, 16})
@@ -275,7 +278,9 @@ void ViewDock::onDocumentChanged(DocumentChanges changes)
     selectData(m_ocioDisplay, QString::fromStdString(view.ocioDisplay));
     fillOcioViews(ocio ? QString::fromStdString(view.ocioDisplay) : m_ocioDisplay->currentData().toString());
     selectData(m_ocioView, QString::fromStdString(view.ocioView));
-    selectData(m_debugView, QString::fromStdString(view.debugView));
+    // An older file's alias ("d") selects its view ("distribution").
+    const std::optional<DebugView> debugView = debugViewFromString(view.debugView);
+    selectData(m_debugView, QString::fromLatin1(toString(debugView.value_or(DebugView::None))));
     selectData(m_msaa, view.msaaSamples);
     m_encoding->setEnabled(!ocio);
     m_gamma->setEnabled(!ocio && view.displayEncoding == DisplayEncoding::Gamma);

@@ -1,10 +1,14 @@
 #include "TestSupport.h"
 
 #include <cstdio>
+#include <memory>
+#include <vector>
 
 #include <QDir>
 #include <QFileInfo>
 #include <QProcess>
+
+#include <OpenImageIO/imageio.h>
 
 namespace facet::test {
 
@@ -34,6 +38,18 @@ void forgetDisplayServer()
 {
     qunsetenv("DISPLAY");
     qunsetenv("WAYLAND_DISPLAY");
+}
+
+bool writeConstantExr(const QString& path, float radiance, int width)
+{
+    if (!QDir().mkpath(QFileInfo(path).absolutePath()))
+        return false;
+    const int height = width / 2;
+    const std::vector<float> pixels(std::size_t(width * height * 3), radiance);
+    std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path.toStdString());
+    const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::FLOAT);
+    return output && output->open(path.toStdString(), spec)
+        && output->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && output->close();
 }
 
 std::string describe(const glm::dvec3& v, int digits)

@@ -42,6 +42,11 @@ struct ProcessResult {
 ProcessResult runWithoutDisplay(const QString& executable, const QStringList& arguments,
                                 const QProcessEnvironment& extra = QProcessEnvironment());
 
+// Writes a width x width/2 float EXR of constant `radiance` (R = G = B) through OpenImageIO (not
+// core's Image::save, so that a bug there cannot hide one in loading), making its folder. For
+// tests that need environment files of their own (libraries, relinking).
+bool writeConstantExr(const QString& path, float radiance, int width = 16);
+
 // "(x, y, z)" with `digits` significant digits, for failure messages.
 std::string describe(const glm::dvec3& v, int digits = 6);
 
