@@ -428,11 +428,11 @@ Project benchProject(const BenchEnvironment& environment, const BenchMaterial& m
     project.environment.intensity = 1.0;
     project.view.mesh = "sphere";
     project.view.debugView = "none";
-    project.material.name = material.name;
-    project.material.setBaseColor(material.baseColor);
-    project.material.setFactor(MapSlot::Metallic, material.metallic);
-    project.material.setFactor(MapSlot::Roughness, roughness);
-    project.material.ior = Material::kDefaultIor;
+    project.material().name = material.name;
+    project.material().setBaseColor(material.baseColor);
+    project.material().setFactor(MapSlot::Metallic, material.metallic);
+    project.material().setFactor(MapSlot::Roughness, roughness);
+    project.material().ior = Material::kDefaultIor;
     return project;
 }
 

@@ -168,9 +168,9 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
             *error = QStringLiteral("--material: no preset '%1' (built-in: %2)").arg(id, ids.join(QStringLiteral(", ")));
             return std::nullopt;
         }
-        const ShadingModel shading = project.material.shading;
-        project.material = preset->material;
-        project.material.shading = shading;
+        const ShadingModel shading = project.material().shading;
+        project.material() = preset->material;
+        project.material().shading = shading;
     }
     if (o.parser.isSet(o.baseColor)) {
         const QStringList parts = o.parser.value(o.baseColor).split(QLatin1Char(','));
@@ -182,31 +182,31 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
         for (int i = 0; i < 3; ++i)
             if (!parseNumber(QStringLiteral("base-color"), parts[i], 0.0, 1.0, &rgb[i], error))
                 return std::nullopt;
-        project.material.setBaseColor(rgb, project.material.baseColorFactor().a);
+        project.material().setBaseColor(rgb, project.material().baseColorFactor().a);
     }
     double value = 0.0;
     if (o.parser.isSet(o.metallic)) {
         if (!parseNumber(QStringLiteral("metallic"), o.parser.value(o.metallic), 0.0, 1.0, &value, error))
             return std::nullopt;
-        project.material.setFactor(MapSlot::Metallic, value);
+        project.material().setFactor(MapSlot::Metallic, value);
     }
     if (o.parser.isSet(o.roughness)) {
         if (!parseNumber(QStringLiteral("roughness"), o.parser.value(o.roughness), 0.0, 1.0, &value, error))
             return std::nullopt;
-        project.material.setFactor(MapSlot::Roughness, value);
+        project.material().setFactor(MapSlot::Roughness, value);
     }
     if (o.parser.isSet(o.brdf)) {
         const QString name = o.parser.value(o.brdf);
-        const bool multiScatter = project.material.shading.multiScatter;
+        const bool multiScatter = project.material().shading.multiScatter;
         if (name == QStringLiteral("gltf"))
-            project.material.shading = ShadingModel{};
+            project.material().shading = ShadingModel{};
         else if (name == QStringLiteral("learnopengl"))
-            project.material.shading = ShadingModel::learnOpenGL();
+            project.material().shading = ShadingModel::learnOpenGL();
         else {
             *error = QStringLiteral("--brdf: '%1' is not gltf or learnopengl").arg(name);
             return std::nullopt;
         }
-        project.material.shading.multiScatter = multiScatter;
+        project.material().shading.multiScatter = multiScatter;
     }
     if (o.parser.isSet(o.multiScatter)) {
         const QString state = o.parser.value(o.multiScatter);
@@ -214,7 +214,7 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
             *error = QStringLiteral("--multiscatter: '%1' is not on or off").arg(state);
             return std::nullopt;
         }
-        project.material.shading.multiScatter = state == QStringLiteral("on");
+        project.material().shading.multiScatter = state == QStringLiteral("on");
     }
     if (o.parser.isSet(o.mesh))
         project.view.mesh = o.parser.value(o.mesh).toStdString();

@@ -238,7 +238,7 @@ namespace facet {
 std::optional<GroundTruthScene> groundTruthSceneFromProject(const Project& project, std::string* error,
                                                             std::string* warning)
 {
-    const Material& material = project.material;
+    const Material& material = project.material();
     for (MapSlot slot : kAllMapSlots) {
         if (material.map(slot).hasTexture()) {
             if (error)

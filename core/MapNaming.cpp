@@ -28,6 +28,7 @@ enum class Layout {
     UnityMetallicSmoothness,
     Mra,
     Rma,
+    Emissive,
 };
 
 MapRead scalar(MapSlot slot, MapChannel channel, bool invert = false)
@@ -89,6 +90,8 @@ TextureNaming namingOf(Layout layout)
     case Layout::Rma:
         return packed(
             "RMA", {scalar(S::Roughness, C::R), scalar(S::Metallic, C::G), scalar(S::Occlusion, C::B)});
+    case Layout::Emissive:
+        return single(scalar(S::Emissive, C::Rgb));
     }
     return {};
 }
@@ -156,6 +159,10 @@ constexpr NameRule kRules[] = {
     {"mra", Where::LastWords, Layout::Mra},
     {"rma", Where::LastWords, Layout::Rma},
     {"mr", Where::LastWords, Layout::GltfMetallicRoughness},
+    {"emissive", Where::LastWords, Layout::Emissive},
+    {"emission", Where::LastWords, Layout::Emissive}, // Poly Haven, ambientCG
+    {"emit", Where::LastWords, Layout::Emissive},
+    {"glow", Where::LastWords, Layout::Emissive},
 
     // Unreal texture suffixes (Allar's / Gamemakin UE style guide, 1.2.6): only after a T_ prefix,
     // where a one-letter word is not something else. Unreal's normal maps are DirectX (Y-).
@@ -165,6 +172,7 @@ constexpr NameRule kRules[] = {
     {"m", Where::Unreal, Layout::Metallic}, // "metallic or mask": read as metallic
     {"mt", Where::Unreal, Layout::Metallic},
     {"o", Where::Unreal, Layout::Occlusion},
+    {"e", Where::Unreal, Layout::Emissive},
 };
 
 // The words of a file's base name, lower case, without trailing resolution words ("4k", "2048").
@@ -291,11 +299,13 @@ Material withAssignedMaps(Material material, const std::vector<MapAssignment>& a
         MaterialMap& map = material.map(assignment.slot);
         map.path = assignment.path.toStdString();
         map.channel = assignment.channel;
-        map.colorSpace = assignment.slot == MapSlot::BaseColor ? ColorEncoding::SRGB : ColorEncoding::Linear;
+        map.colorSpace = isColorSlot(assignment.slot) ? ColorEncoding::SRGB : ColorEncoding::Linear;
         map.invert = isScalarSlot(assignment.slot) && assignment.invert;
         map.flipGreen = assignment.slot == MapSlot::Normal && assignment.flipGreen;
         if (assignment.slot == MapSlot::BaseColor)
             map.factor = glm::dvec4(1.0, 1.0, 1.0, map.factor.w);
+        else if (assignment.slot == MapSlot::Emissive)
+            map.factor = glm::dvec4(1.0); // the default emissive factor, black, would hide the texture
         else if (assignment.slot == MapSlot::Metallic || assignment.slot == MapSlot::Roughness)
             material.setFactor(assignment.slot, 1.0);
     }

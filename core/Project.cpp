@@ -505,8 +505,48 @@ std::optional<Project> readProject(const QJsonObject& object, const std::string&
     r.value("generator"); // informative only
 
     Project project;
+    // Version 1 has one "material"; version 2 a "materials" array, the current one and the parts.
     if (const std::optional<QJsonObject> material = r.object("material"))
-        readMaterial(messages, *material, "material", baseDir, project.material);
+        readMaterial(messages, *material, "material", baseDir, project.material());
+    if (const std::optional<QJsonArray> materials = r.array("materials")) {
+        if (materials->isEmpty())
+            messages.fail("materials", "needs at least one material");
+        else if (materials->size() > Project::kMaxMaterials)
+            messages.fail("materials", std::to_string(materials->size()) + " materials, more than the "
+                + std::to_string(Project::kMaxMaterials) + " Facet reads");
+        else
+            project.materials.assign(std::size_t(materials->size()), Material {});
+        for (int i = 0; i < int(project.materials.size()) && !messages.failed(); ++i) {
+            const std::string path = "materials[" + std::to_string(i) + "]";
+            const QJsonValue value = materials->at(i);
+            if (!value.isObject()) {
+                messages.fail(path, std::string("expected an object, got ") + typeName(value));
+                break;
+            }
+            readMaterial(messages, value.toObject(), path, baseDir, project.materials[std::size_t(i)]);
+        }
+    }
+    r.integer("currentMaterial", project.currentMaterial);
+    if (const std::optional<QJsonArray> parts = r.array("parts")) {
+        if (parts->size() > Project::kMaxParts)
+            messages.fail("parts", std::to_string(parts->size()) + " parts, more than the "
+                + std::to_string(Project::kMaxParts) + " Facet reads");
+        for (int i = 0; i < int(parts->size()) && !messages.failed(); ++i) {
+            const std::string path = "parts[" + std::to_string(i) + "]";
+            const QJsonValue value = parts->at(i);
+            if (!value.isObject()) {
+                messages.fail(path, std::string("expected an object, got ") + typeName(value));
+                break;
+            }
+            MeshPart part;
+            ObjectReader pr(messages, value.toObject(), path);
+            pr.string("name", part.name);
+            pr.integer("material", part.material);
+            pr.boolean("visible", part.visible);
+            pr.warnAboutUnknownKeys();
+            project.parts.push_back(std::move(part));
+        }
+    }
     if (const std::optional<QJsonObject> environment = r.object("environment"))
         readEnvironment(messages, *environment, "environment", baseDir, project.environment);
     if (const std::optional<QJsonArray> lights = r.array("lights")) {
@@ -530,7 +570,14 @@ std::optional<Project> readProject(const QJsonObject& object, const std::string&
 
     if (messages.failed())
         return failed(messages.error, problem);
+    // A material's own problems name it as the file does: "material." in version 1 files,
+    // "materials[i]." in version 2.
     std::string invalid;
+    const bool single = !object.contains(QLatin1String("materials"));
+    for (std::size_t i = 0; i < project.materials.size(); ++i)
+        if (!project.materials[i].validate(&invalid))
+            return failed((single ? std::string("material.") : "materials[" + std::to_string(i) + "].") + invalid,
+                problem);
     if (!project.validate(&invalid))
         return failed(invalid, problem);
     warnings = std::move(messages.warnings);
@@ -619,8 +666,24 @@ bool EnvironmentSettings::validate(std::string* problem) const
 bool Project::validate(std::string* problem) const
 {
     std::string local;
-    if (!material.validate(&local))
-        return fail("material." + local, problem);
+    if (materials.empty())
+        return fail("materials: needs at least one material", problem);
+    if (materials.size() > std::size_t(kMaxMaterials))
+        return fail("materials: more than " + std::to_string(kMaxMaterials), problem);
+    for (std::size_t i = 0; i < materials.size(); ++i)
+        if (!materials[i].validate(&local))
+            return fail("materials[" + std::to_string(i) + "]." + local, problem);
+    if (currentMaterial < 0 || std::size_t(currentMaterial) >= materials.size())
+        return fail("currentMaterial: " + std::to_string(currentMaterial) + " is not a material (there are "
+                + std::to_string(materials.size()) + ")",
+            problem);
+    if (parts.size() > std::size_t(kMaxParts))
+        return fail("parts: more than " + std::to_string(kMaxParts), problem);
+    for (std::size_t i = 0; i < parts.size(); ++i)
+        if (parts[i].material < 0 || std::size_t(parts[i].material) >= materials.size())
+            return fail("parts[" + std::to_string(i) + "].material: " + std::to_string(parts[i].material)
+                    + " is not a material (there are " + std::to_string(materials.size()) + ")",
+                problem);
     if (!environment.validate(&local))
         return fail("environment." + local, problem);
     for (std::size_t i = 0; i < lights.size(); ++i)
@@ -635,14 +698,38 @@ bool Project::validate(std::string* problem) const
 
 // ---- Project ----------------------------------------------------------------------------
 
+Material& Project::material()
+{
+    Q_ASSERT(currentMaterial >= 0 && std::size_t(currentMaterial) < materials.size());
+    return materials[std::size_t(currentMaterial)];
+}
+
+const Material& Project::material() const
+{
+    Q_ASSERT(currentMaterial >= 0 && std::size_t(currentMaterial) < materials.size());
+    return materials[std::size_t(currentMaterial)];
+}
+
+int Project::materialOfPart(std::size_t part) const
+{
+    if (part < parts.size() && parts[part].material >= 0 && std::size_t(parts[part].material) < materials.size())
+        return parts[part].material;
+    return 0;
+}
+
+bool Project::isPartVisible(std::size_t part) const
+{
+    return part >= parts.size() || parts[part].visible;
+}
+
 Project Project::defaultProject()
 {
     Project project;
-    project.material.name = "Glossy plastic";
-    project.material.setBaseColor(
-        glm::dvec3(0.8, 0.3, 0.2)); // a red-orange that shows diffuse and specular apart
-    project.material.setFactor(MapSlot::Roughness, 0.35);
-    project.material.setFactor(MapSlot::Metallic, 0.0);
+    Material& material = project.material();
+    material.name = "Glossy plastic";
+    material.setBaseColor(glm::dvec3(0.8, 0.3, 0.2)); // a red-orange that shows diffuse and specular apart
+    material.setFactor(MapSlot::Roughness, 0.35);
+    material.setFactor(MapSlot::Metallic, 0.0);
     project.environment = EnvironmentSettings {};
     project.camera = Camera::referenceView();
     project.view = ViewSettings {};
@@ -657,7 +744,22 @@ QJsonObject Project::toJson(const std::string& baseDir) const
 #ifdef FACET_VERSION
     o[QLatin1String("generator")] = QStringLiteral("Facet " FACET_VERSION);
 #endif
-    o[QLatin1String("material")] = materialToJson(material, baseDir, true);
+    QJsonArray materialArray;
+    for (const Material& m : materials)
+        materialArray.append(materialToJson(m, baseDir, true));
+    o[QLatin1String("materials")] = materialArray;
+    o[QLatin1String("currentMaterial")] = currentMaterial;
+    if (!parts.empty()) {
+        QJsonArray partArray;
+        for (const MeshPart& part : parts) {
+            QJsonObject p;
+            p[QLatin1String("name")] = qs(part.name);
+            p[QLatin1String("material")] = part.material;
+            p[QLatin1String("visible")] = part.visible;
+            partArray.append(p);
+        }
+        o[QLatin1String("parts")] = partArray;
+    }
     o[QLatin1String("environment")] = environmentToJson(environment, baseDir);
     QJsonArray lightArray;
     for (const Light& light : lights)

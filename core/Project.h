@@ -84,20 +84,48 @@ struct EnvironmentSettings {
     bool operator==(const EnvironmentSettings&) const = default;
 };
 
+// One part of the view's mesh (a sub-mesh, core/Mesh.h SubMesh, in the mesh's order): which of
+// the project's materials it shows and whether it is drawn. A mesh part without an entry uses
+// material 0 and is visible (a primitive or a single-part mesh needs no entries at all).
+struct MeshPart {
+    std::string name; // the sub-mesh's name when the entry was made (shown in the UI; informative)
+    int material = 0; // index into Project::materials
+    bool visible = true;
+    bool operator==(const MeshPart&) const = default;
+};
+
 struct Project {
     static constexpr const char* kFormatName = "facet-project";
     // The version this Facet writes and the newest it reads. Bump it when a field changes meaning
     // or a required field appears; adding an optional field with a default does not need a bump
     // (older Facets ignore it with a warning). docs/project-format.md, "Versioning".
-    static constexpr int kFormatVersion = 1;
+    // Version 2: several materials ("materials", "currentMaterial") and mesh parts ("parts");
+    // version 1 files (one "material") still open.
+    static constexpr int kFormatVersion = 2;
+    // More is refused when loading: far beyond any asset an artist previews, and each material
+    // costs a shader variant and its textures.
+    static constexpr int kMaxMaterials = 4096;
+    static constexpr int kMaxParts = 65536;
     // Larger files are refused before parsing: a project is a few kilobytes.
     static constexpr qint64 kMaxFileBytes = 16 * 1024 * 1024;
 
-    Material material;
+    // The materials (at least one); the docks edit materials[currentMaterial] (material()).
+    std::vector<Material> materials {Material {}};
+    int currentMaterial = 0;
+    // Per sub-mesh of the view's mesh, in order; see MeshPart.
+    std::vector<MeshPart> parts;
     EnvironmentSettings environment;
     std::vector<Light> lights;
     Camera camera; // the reference view by default
     ViewSettings view;
+
+    // The material the docks edit. Q_ASSERTs that currentMaterial is in range (validate() checks it).
+    Material& material();
+    const Material& material() const;
+    // The material of sub-mesh `part` (MeshPart rule: material 0 without an entry; an index out of
+    // range also falls back to 0), and whether it is drawn.
+    int materialOfPart(std::size_t part) const;
+    bool isPartVisible(std::size_t part) const;
 
     // File > New: a glossy red-orange plastic on the sphere in the studio environment, reference
     // camera, no punctual lights (the studio's soft boxes light it, and the no-light shader

@@ -1,9 +1,12 @@
 #include "core/ProjectAssets.h"
 
+#include <map>
+
 #include <QDateTime>
 #include <QFileInfo>
 
 #include "core/AssetLibrary.h"
+#include "core/GltfImport.h"
 #include "core/MeshImport.h"
 #include "core/MeshPrimitives.h"
 #include "core/Project.h"
@@ -33,6 +36,14 @@ std::uint64_t fnv1a(const std::string& text, std::uint64_t hash = 0xcbf29ce48422
 std::int64_t modificationTime(const std::string& path)
 {
     return QFileInfo(QString::fromStdString(path)).lastModified().toMSecsSinceEpoch();
+}
+
+// "material 'Visor' " in messages when the project has several materials, else nothing.
+std::string materialLabel(const Project& project, std::size_t material)
+{
+    if (project.materials.size() < 2)
+        return {};
+    return "material '" + project.materials[material].name + "' ";
 }
 
 } // namespace
@@ -101,26 +112,33 @@ std::optional<ProjectAssets> loadProjectAssets(const Project& project, std::stri
     const bool isFile = QFileInfo::exists(QString::fromStdString(project.view.mesh));
     assets.meshKey = fnv1a(project.view.mesh, isFile ? std::uint64_t(modificationTime(project.view.mesh)) : 1u);
 
-    for (MapSlot slot : kAllMapSlots) {
-        const MaterialMap& map = project.material.map(slot);
-        if (!map.hasTexture())
-            continue;
-        note.clear();
-        ImageLoadStats stats;
-        auto image = Image::load(map.path, &problem, &stats);
-        if (!image) {
-            if (error)
-                *error = std::string("loadProjectAssets: ") + toString(slot) + " map: " + problem;
-            return std::nullopt;
+    std::map<std::string, std::shared_ptr<const Image>> decoded; // by path: each file once
+    assets.maps.resize(project.materials.size());
+    for (std::size_t m = 0; m < project.materials.size(); ++m) {
+        for (MapSlot slot : kAllMapSlots) {
+            const MaterialMap& map = project.materials[m].map(slot);
+            if (!map.hasTexture())
+                continue;
+            std::shared_ptr<const Image>& image = decoded[map.path];
+            if (!image) {
+                ImageLoadStats stats;
+                auto loaded = Image::load(map.path, &problem, &stats);
+                if (!loaded) {
+                    if (error)
+                        *error = "loadProjectAssets: " + materialLabel(project, m) + toString(slot) + " map: " + problem;
+                    return std::nullopt;
+                }
+                if (stats.total() > 0)
+                    appendWarning(warning, map.path + ": replaced " + std::to_string(stats.nanCount) + " NaN, "
+                            + std::to_string(stats.infCount) + " Inf, " + std::to_string(stats.negativeCount)
+                            + " negative samples");
+                image = std::make_shared<const Image>(std::move(*loaded));
+            }
+            LoadedMapImage& slotImage = assets.maps[m][std::size_t(slot)];
+            slotImage.image = image;
+            slotImage.path = map.path;
+            slotImage.timestamp = modificationTime(fileOfImagePath(map.path));
         }
-        if (stats.total() > 0)
-            appendWarning(warning, map.path + ": replaced " + std::to_string(stats.nanCount) + " NaN, "
-                                       + std::to_string(stats.infCount) + " Inf, "
-                                       + std::to_string(stats.negativeCount) + " negative samples");
-        LoadedMapImage& loaded = assets.maps[std::size_t(slot)];
-        loaded.image = std::make_shared<const Image>(std::move(*image));
-        loaded.path = map.path;
-        loaded.timestamp = modificationTime(map.path);
     }
     return assets;
 }

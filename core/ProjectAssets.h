@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/Environment.h"
 #include "core/Image.h"
@@ -28,7 +29,10 @@ struct ProjectAssets {
     Environment environment; // rotation and intensity applied
     std::shared_ptr<const Mesh> mesh; // normalised to the unit bounding sphere
     std::uint64_t meshKey = 0;        // changes when the mesh source or its file changes
-    std::array<LoadedMapImage, kMapSlotCount> maps{};
+    // The map images of every material of the project, indexed [material][MapSlot]. A file used
+    // by several slots or materials (a packed ORM texture, a shared normal map) is decoded once
+    // and shared.
+    std::vector<std::array<LoadedMapImage, kMapSlotCount>> maps;
 };
 
 // Loads everything `project` names. Errors name the file and the problem (the environment,

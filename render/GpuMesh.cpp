@@ -102,4 +102,15 @@ int GpuMesh::draw(const Mesh& mesh) const
     return calls;
 }
 
+int GpuMesh::drawRange(std::uint32_t firstIndex, std::uint32_t indexCount) const
+{
+    if (!m_vao || indexCount == 0 || std::uint64_t(firstIndex) + indexCount > m_indexCount)
+        return 0;
+    glBindVertexArray(m_vao);
+    glDrawElements(GL_TRIANGLES, GLsizei(indexCount), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(std::size_t(firstIndex) * sizeof(std::uint32_t)));
+    glBindVertexArray(0);
+    return 1;
+}
+
 } // namespace facet

@@ -24,6 +24,9 @@ public:
     std::uint64_t key() const { return m_key; }
     // Draws every visible sub-mesh (or all indices when there are none); returns draw calls made.
     int draw(const Mesh& mesh) const;
+    // Draws `indexCount` indices from `firstIndex` (a sub-mesh's range); 0 when the range is not
+    // inside the uploaded index buffer, else 1 (draw calls made).
+    int drawRange(std::uint32_t firstIndex, std::uint32_t indexCount) const;
 
 private:
     void destroy();

@@ -73,21 +73,44 @@ inline EnvironmentLighting environmentLighting(const std::shared_ptr<const IblTe
     return lighting;
 }
 
-struct RenderScene {
-    std::shared_ptr<const Mesh> mesh; // drawn with the model matrix; null: background only
-    std::uint64_t meshKey = 0;        // content key: a new key re-uploads, the same key never does
-    glm::dmat4 modelMatrix {1.0};
+// One material of the scene with the images of its maps.
+struct RenderMaterial {
     Material material;
     std::array<RenderMapImage, kMapSlotCount> maps {}; // indexed by MapSlot
     // E_s,avg of the compensated dielectric layer at the material's constant roughness
     // (MaterialBrdf::dielectricSpecularAverageAlbedo): used by the energy-preserving coupling.
     double dielectricAverageAlbedo = 0.0;
+};
+
+// What one sub-mesh of the scene's mesh shows (core/Project.h MeshPart).
+struct RenderPart {
+    int material = 0; // index into RenderScene::materials
+    bool visible = true;
+};
+
+struct RenderScene {
+    std::shared_ptr<const Mesh> mesh; // drawn with the model matrix; null: background only
+    std::uint64_t meshKey = 0;        // content key: a new key re-uploads, the same key never does
+    glm::dmat4 modelMatrix {1.0};
+    // At least one. Sub-mesh i of `mesh` is drawn with materials[parts[i].material]; a sub-mesh
+    // without an entry in `parts` (or a mesh without sub-meshes) uses material 0 and is visible.
+    std::vector<RenderMaterial> materials {RenderMaterial {}};
+    std::vector<RenderPart> parts;
     std::vector<Light> lights; // enabled ones are drawn, at most kMaxPunctualLights
     Camera camera;
     EnvironmentLighting environment;
     // exposureEV, toneMapper, displayEncoding, gamma (tone-map pass); debugView, msaaSamples,
     // background, backgroundColor, backgroundBlurRoughness (surface pass).
     ViewSettings view;
+
+    // The material of sub-mesh `part` (0 without an entry or for an index out of range) and
+    // whether it is drawn.
+    int materialOfPart(std::size_t part) const
+    {
+        const int m = part < parts.size() ? parts[part].material : 0;
+        return m >= 0 && std::size_t(m) < materials.size() ? m : 0;
+    }
+    bool isPartVisible(std::size_t part) const { return part >= parts.size() || parts[part].visible; }
 };
 
 } // namespace facet

@@ -7,6 +7,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <vector>
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -121,15 +123,17 @@ Renderer::~Renderer()
         glDeleteVertexArrays(1, &m_emptyVao);
 }
 
-SurfaceVariantKey Renderer::variantKeyFor(const RenderScene& scene)
+SurfaceVariantKey Renderer::variantKeyFor(const RenderScene& scene, int materialIndex)
 {
+    const RenderMaterial& material = scene.materials[std::size_t(materialIndex)];
     bool hasImage[kMapSlotCount] = {};
     for (int i = 0; i < kMapSlotCount; ++i) {
-        const auto& image = scene.maps[std::size_t(i)].image;
+        const auto& image = material.maps[std::size_t(i)].image;
         hasImage[i] = image && !image->isEmpty();
     }
     SurfaceVariantKey key;
-    key.features = surfaceFeaturesFor(scene.material, hasImage, enabledLightCount(scene) > 0, scene.environment.useSH);
+    key.features
+        = surfaceFeaturesFor(material.material, hasImage, enabledLightCount(scene) > 0, scene.environment.useSH);
     key.debugView = debugViewFromString(scene.view.debugView).value_or(DebugView::None);
     return key;
 }
@@ -295,62 +299,88 @@ void Renderer::drawBackground(const RenderScene& scene, const glm::dmat4& view, 
     glDepthFunc(GL_LESS);
 }
 
-bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection,
-                           SurfacePass pass, std::string* error)
+// Everything the surface program needs that does not depend on the material: transforms, the
+// environment's IBL textures, the punctual lights. Set once per program switch.
+void Renderer::setFrameUniforms(const ShaderProgram& program, const SurfaceVariantKey& key, const RenderScene& scene,
+                                const glm::dmat4& view, const glm::dmat4& projection)
 {
-    if (!scene.mesh || scene.mesh->indices.empty())
-        return true;
-    const SurfaceVariantKey key = variantKeyFor(scene);
-    // Debug views show a blended material's values opaque.
-    const bool blended = hasFeature(key.features, SurfaceFeature::AlphaBlend) && key.debugView == DebugView::None;
-    if (blended != (pass == SurfacePass::Blended))
-        return true;
-    const int compilesBefore = m_surfacePrograms.compileCount();
-    std::string message;
-    const ShaderProgram* program = m_surfacePrograms.get(key, &message);
-    m_frame.programsCompiled += m_surfacePrograms.compileCount() - compilesBefore;
-    if (!program) {
-        if (error)
-            *error = "Renderer::render: " + message;
-        return false;
-    }
-    {
-        StepTimer timer(m_timing, &m_frame.uploadMs);
-        if (m_mesh->update(*scene.mesh, scene.meshKey))
-            ++m_frame.meshesUploaded;
-    }
-
-    const Material& material = scene.material;
     const EnvironmentLighting& env = scene.environment;
-    program->use();
-    setMat4(*program, "uModel", scene.modelMatrix);
-    setMat3(*program, "uNormalMatrix", glm::mat3(glm::inverseTranspose(glm::dmat3(scene.modelMatrix))));
-    setMat4(*program, "uViewProjection", projection * view);
-    setVec3(*program, "uCameraPosition", scene.camera.position);
-    program->setFloat("uMaxRadiance", m_maxRadiance);
+    setMat4(program, "uModel", scene.modelMatrix);
+    setMat3(program, "uNormalMatrix", glm::mat3(glm::inverseTranspose(glm::dmat3(scene.modelMatrix))));
+    setMat4(program, "uViewProjection", projection * view);
+    setVec3(program, "uCameraPosition", scene.camera.position);
+    program.setFloat("uMaxRadiance", m_maxRadiance);
 
-    // Material factors (core/Material.h: what each slot's factor means).
+    glActiveTexture(GL_TEXTURE0 + kDfgUnit);
+    glBindTexture(GL_TEXTURE_2D, env.dfgLut);
+    program.setInt("uDfgLut", kDfgUnit);
+    program.setFloat("uDfgSize", float(std::max(env.dfgSize, 1)));
+    glActiveTexture(GL_TEXTURE0 + kPrefilteredUnit);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, env.prefilteredCubemap);
+    program.setInt("uPrefilteredMap", kPrefilteredUnit);
+    program.setFloat("uPrefilteredLevels", float(std::max(env.prefilteredLevels, 1)));
+    if (env.useSH) {
+        for (int i = 0; i < 9; ++i) {
+            const glm::vec3& c = env.irradianceSH[std::size_t(i)];
+            program.setVec3(IndexedName("uIrradianceSH", i).c_str(), c.x, c.y, c.z);
+        }
+    } else {
+        glActiveTexture(GL_TEXTURE0 + kIrradianceUnit);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, env.irradianceCubemap);
+        program.setInt("uIrradianceMap", kIrradianceUnit);
+    }
+    setMat3(program, "uEnvironmentRotation", environmentRotation(env.rotationDegrees));
+    program.setFloat("uEnvironmentIntensity", float(env.intensity));
+
+    // Punctual lights (KHR_lights_punctual units), enabled ones, at most kMaxPunctualLights.
+    if (hasFeature(key.features, SurfaceFeature::HasPunctualLights)) {
+        int count = 0;
+        for (const Light& light : scene.lights) {
+            if (!light.enabled || count == kMaxPunctualLights)
+                continue;
+            const int type = light.type == LightType::Directional ? 0 : light.type == LightType::Point ? 1 : 2;
+            program.setInt(IndexedName("uLightType", count).c_str(), type);
+            setVec3(program, IndexedName("uLightIntensity", count).c_str(), light.linearColor() * light.intensity);
+            setVec3(program, IndexedName("uLightPosition", count).c_str(), light.position);
+            const double length = glm::length(light.direction);
+            setVec3(program, IndexedName("uLightDirection", count).c_str(),
+                    length > 0.0 ? light.direction / length : glm::dvec3(0.0, 0.0, -1.0));
+            program.setFloat(IndexedName("uLightRange", count).c_str(), float(light.range));
+            program.setVec2(IndexedName("uLightConeCos", count).c_str(), float(std::cos(light.outerConeAngle)),
+                            float(std::cos(light.innerConeAngle)));
+            ++count;
+        }
+        program.setInt("uLightCount", count);
+    }
+}
+
+// The material's factors, per-map options and textures (core/Material.h: what each slot's factor
+// means), and its face culling.
+void Renderer::setMaterialUniforms(const ShaderProgram& program, const SurfaceVariantKey& key,
+                                   const RenderMaterial& renderMaterial)
+{
+    const Material& material = renderMaterial.material;
     const glm::dvec4 base = material.baseColorFactor();
-    program->setVec4("uBaseColorFactor", float(base.r), float(base.g), float(base.b), float(base.a));
-    program->setFloat("uMetallicFactor", float(material.metallic()));
-    program->setFloat("uRoughnessFactor", float(material.roughness()));
-    program->setFloat("uOcclusionStrength", float(material.occlusionStrength()));
-    program->setFloat("uNormalStrength", float(material.normalStrength()));
-    program->setFloat("uIor", float(material.ior));
-    program->setFloat("uDielectricAverageAlbedo", float(scene.dielectricAverageAlbedo));
-    setVec3(*program, "uEmissiveFactor", material.emissive());
+    program.setVec4("uBaseColorFactor", float(base.r), float(base.g), float(base.b), float(base.a));
+    program.setFloat("uMetallicFactor", float(material.metallic()));
+    program.setFloat("uRoughnessFactor", float(material.roughness()));
+    program.setFloat("uOcclusionStrength", float(material.occlusionStrength()));
+    program.setFloat("uNormalStrength", float(material.normalStrength()));
+    program.setFloat("uIor", float(material.ior));
+    program.setFloat("uDielectricAverageAlbedo", float(renderMaterial.dielectricAverageAlbedo));
+    setVec3(program, "uEmissiveFactor", material.emissive());
     if (hasFeature(key.features, SurfaceFeature::AlphaMask))
-        program->setFloat("uAlphaCutoff", float(material.alphaCutoff));
-    program->setInt("uFlipGreen", material.map(MapSlot::Normal).flipGreen ? 1 : 0);
+        program.setFloat("uAlphaCutoff", float(material.alphaCutoff));
+    program.setInt("uFlipGreen", material.map(MapSlot::Normal).flipGreen ? 1 : 0);
     for (int i = 0; i < kMapSlotCount; ++i) {
         const MaterialMap& map = material.maps[std::size_t(i)];
         const glm::mat3 uv(map.uv.matrix());
-        setMat3(*program, IndexedName("uUvTransform", i).c_str(), uv);
-        program->setInt(IndexedName("uChannel", i).c_str(), int(map.channel));
-        program->setInt(IndexedName("uInvert", i).c_str(), map.invert ? 1 : 0);
+        setMat3(program, IndexedName("uUvTransform", i).c_str(), uv);
+        program.setInt(IndexedName("uChannel", i).c_str(), int(map.channel));
+        program.setInt(IndexedName("uInvert", i).c_str(), map.invert ? 1 : 0);
         if (!hasFeature(key.features, mapFeature(MapSlot(i))))
             continue;
-        const RenderMapImage& image = scene.maps[std::size_t(i)];
+        const RenderMapImage& image = renderMaterial.maps[std::size_t(i)];
         glActiveTexture(GLenum(GL_TEXTURE0 + kMapUnit0 + i));
         bool uploaded = false;
         unsigned texture = 0;
@@ -362,54 +392,8 @@ bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, con
         if (uploaded)
             ++m_frame.texturesUploaded;
         glBindTexture(GL_TEXTURE_2D, texture);
-        program->setInt(kMapSamplers[std::size_t(i)], kMapUnit0 + i);
+        program.setInt(kMapSamplers[std::size_t(i)], kMapUnit0 + i);
     }
-
-    // Environment.
-    glActiveTexture(GL_TEXTURE0 + kDfgUnit);
-    glBindTexture(GL_TEXTURE_2D, env.dfgLut);
-    program->setInt("uDfgLut", kDfgUnit);
-    program->setFloat("uDfgSize", float(std::max(env.dfgSize, 1)));
-    glActiveTexture(GL_TEXTURE0 + kPrefilteredUnit);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, env.prefilteredCubemap);
-    program->setInt("uPrefilteredMap", kPrefilteredUnit);
-    program->setFloat("uPrefilteredLevels", float(std::max(env.prefilteredLevels, 1)));
-    if (env.useSH) {
-        for (int i = 0; i < 9; ++i) {
-            const glm::vec3& c = env.irradianceSH[std::size_t(i)];
-            program->setVec3(IndexedName("uIrradianceSH", i).c_str(), c.x, c.y, c.z);
-        }
-    } else {
-        glActiveTexture(GL_TEXTURE0 + kIrradianceUnit);
-        glBindTexture(GL_TEXTURE_CUBE_MAP, env.irradianceCubemap);
-        program->setInt("uIrradianceMap", kIrradianceUnit);
-    }
-    setMat3(*program, "uEnvironmentRotation", environmentRotation(env.rotationDegrees));
-    program->setFloat("uEnvironmentIntensity", float(env.intensity));
-
-    // Punctual lights (KHR_lights_punctual units), enabled ones, at most kMaxPunctualLights.
-    if (hasFeature(key.features, SurfaceFeature::HasPunctualLights)) {
-        int count = 0;
-        for (const Light& light : scene.lights) {
-            if (!light.enabled || count == kMaxPunctualLights)
-                continue;
-            const int type = light.type == LightType::Directional ? 0 : light.type == LightType::Point ? 1 : 2;
-            program->setInt(IndexedName("uLightType", count).c_str(), type);
-            setVec3(*program, IndexedName("uLightIntensity", count).c_str(), light.linearColor() * light.intensity);
-            setVec3(*program, IndexedName("uLightPosition", count).c_str(), light.position);
-            const double length = glm::length(light.direction);
-            setVec3(*program, IndexedName("uLightDirection", count).c_str(),
-                    length > 0.0 ? light.direction / length : glm::dvec3(0.0, 0.0, -1.0));
-            program->setFloat(IndexedName("uLightRange", count).c_str(), float(light.range));
-            program->setVec2(IndexedName("uLightConeCos", count).c_str(), float(std::cos(light.outerConeAngle)),
-                             float(std::cos(light.innerConeAngle)));
-            ++count;
-        }
-        program->setInt("uLightCount", count);
-    }
-
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
     // Two-sided materials show the inside of open meshes (the shader flips the normal); glTF's
     // single-sided ones cull the faces seen from behind (counter-clockwise is the front).
     if (material.doubleSided) {
@@ -419,22 +403,119 @@ bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, con
         glCullFace(GL_BACK);
         glFrontFace(GL_CCW);
     }
-    if (blended) {
+}
+
+void Renderer::updatePartCentres(const Mesh& mesh)
+{
+    m_partCentres.assign(std::max<std::size_t>(mesh.subMeshes.size(), 1), glm::dvec3(0.0));
+    for (std::size_t p = 0; p < mesh.subMeshes.size(); ++p) {
+        const SubMesh& sub = mesh.subMeshes[p];
+        Bounds bounds;
+        for (std::uint32_t i = sub.firstIndex; i < sub.firstIndex + sub.indexCount && i < mesh.indices.size(); ++i)
+            bounds.add(mesh.vertices[mesh.indices[i]].position);
+        m_partCentres[p] = glm::dvec3(bounds.center());
+    }
+    if (mesh.subMeshes.empty())
+        m_partCentres[0] = glm::dvec3(mesh.bounds.center());
+}
+
+bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection,
+                           SurfacePass pass, std::string* error)
+{
+    if (!scene.mesh || scene.mesh->indices.empty() || scene.materials.empty())
+        return true;
+    const Mesh& mesh = *scene.mesh;
+    if (pass == SurfacePass::Opaque) {
+        StepTimer timer(m_timing, &m_frame.uploadMs);
+        if (m_mesh->update(mesh, scene.meshKey)) {
+            ++m_frame.meshesUploaded;
+            updatePartCentres(mesh);
+        }
+    }
+
+    // The draws of this pass: each visible part with its material's variant. Debug views show a
+    // blended material's values opaque.
+    struct Draw {
+        int material;
+        SurfaceVariantKey key;
+        std::uint32_t firstIndex;
+        std::uint32_t indexCount;
+        double distance; // from the camera to the part's centre, for sorting blended parts
+    };
+    std::vector<Draw> draws;
+    std::vector<std::optional<SurfaceVariantKey>> keys(scene.materials.size());
+    const std::size_t partCount = std::max<std::size_t>(mesh.subMeshes.size(), 1);
+    for (std::size_t p = 0; p < partCount; ++p) {
+        const bool whole = mesh.subMeshes.empty();
+        if (!scene.isPartVisible(p) || (!whole && !mesh.subMeshes[p].visible))
+            continue;
+        const int material = scene.materialOfPart(p);
+        auto& key = keys[std::size_t(material)];
+        if (!key)
+            key = variantKeyFor(scene, material);
+        const bool blended = hasFeature(key->features, SurfaceFeature::AlphaBlend) && key->debugView == DebugView::None;
+        if (blended != (pass == SurfacePass::Blended))
+            continue;
+        const glm::dvec3 centre = p < m_partCentres.size()
+            ? glm::dvec3(scene.modelMatrix * glm::dvec4(m_partCentres[p], 1.0))
+            : glm::dvec3(0.0);
+        draws.push_back({material, *key, whole ? 0u : mesh.subMeshes[p].firstIndex,
+                         whole ? std::uint32_t(mesh.indices.size()) : mesh.subMeshes[p].indexCount,
+                         glm::length(centre - scene.camera.position)});
+    }
+    if (draws.empty())
+        return true;
+    if (pass == SurfacePass::Opaque) {
+        // Grouped by material: one program and one set of textures per material.
+        std::stable_sort(draws.begin(), draws.end(), [](const Draw& a, const Draw& b) { return a.material < b.material; });
+    } else {
+        // Back to front, part by part (glTF alphaMode BLEND; within a part the depth test and
+        // the order of its triangles decide, docs/rendering.md).
+        std::stable_sort(draws.begin(), draws.end(), [](const Draw& a, const Draw& b) { return a.distance > b.distance; });
+    }
+
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    if (pass == SurfacePass::Blended) {
         // Premultiplied "over"; blended surfaces test depth but do not write it, so what is
-        // behind them stays visible through them (glTF alphaMode BLEND).
+        // behind them stays visible through them.
         glEnable(GL_BLEND);
         glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
         glDepthMask(GL_FALSE);
     }
-    m_frame.drawCalls += m_mesh->draw(*scene.mesh);
-    if (blended) {
+    bool ok = true;
+    const ShaderProgram* current = nullptr;
+    int currentMaterial = -1;
+    for (const Draw& draw : draws) {
+        if (draw.material != currentMaterial) {
+            const int compilesBefore = m_surfacePrograms.compileCount();
+            std::string message;
+            const ShaderProgram* program = m_surfacePrograms.get(draw.key, &message);
+            m_frame.programsCompiled += m_surfacePrograms.compileCount() - compilesBefore;
+            if (!program) {
+                if (error)
+                    *error = "Renderer::render: " + message;
+                ok = false;
+                break;
+            }
+            if (program != current) {
+                program->use();
+                setFrameUniforms(*program, draw.key, scene, view, projection);
+                current = program;
+            }
+            setMaterialUniforms(*program, draw.key, scene.materials[std::size_t(draw.material)]);
+            currentMaterial = draw.material;
+        }
+        m_frame.drawCalls += m_mesh->drawRange(draw.firstIndex, draw.indexCount);
+    }
+    if (pass == SurfacePass::Blended) {
         glDisable(GL_BLEND);
         glDepthMask(GL_TRUE);
     }
     glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
     glActiveTexture(GL_TEXTURE0);
-    return true;
+    return ok;
 }
 
 bool Renderer::toneMap(const Framebuffer& hdr, Framebuffer& output, const ViewSettings& view, std::string* error)

@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "render/RenderScene.h"
 #include "render/RenderStats.h"
@@ -43,8 +44,8 @@ public:
     // The same into any framebuffer (0: the default one, e.g. a widget's), width x height = hdr's size.
     bool toneMapTo(const Framebuffer& hdr, unsigned framebuffer, const ViewSettings& view, std::string* error);
 
-    // The variant key render() would use for `scene`.
-    static SurfaceVariantKey variantKeyFor(const RenderScene& scene);
+    // The variant key render() uses for material `materialIndex` of `scene`.
+    static SurfaceVariantKey variantKeyFor(const RenderScene& scene, int materialIndex = 0);
 
     const RenderStats& lastFrameStats() const { return m_frame; }
     const RenderStats& totalStats() const { return m_total; }
@@ -57,6 +58,11 @@ private:
     void destroyMsaaTarget();
     void drawBackground(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection);
     enum class SurfacePass { Opaque, Blended };
+    void setFrameUniforms(const ShaderProgram& program, const SurfaceVariantKey& key, const RenderScene& scene,
+                          const glm::dmat4& view, const glm::dmat4& projection);
+    void setMaterialUniforms(const ShaderProgram& program, const SurfaceVariantKey& key,
+                             const RenderMaterial& material);
+    void updatePartCentres(const Mesh& mesh);
     bool drawSurface(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection, SurfacePass pass,
                      std::string* error);
 
@@ -74,6 +80,7 @@ private:
     int m_msaaSamples = 0;
     bool m_msaaFullFloat = false;
     float m_maxRadiance = 65504.0f;
+    std::vector<glm::dvec3> m_partCentres; // per sub-mesh of the uploaded mesh, model space
     RenderStats m_frame;
     RenderStats m_total;
     bool m_timing = false;

@@ -12,9 +12,9 @@
 
 namespace facet {
 
-double dielectricAverageAlbedoFor(const Project& project)
+double dielectricAverageAlbedoFor(const Material& material)
 {
-    const ShadingModel& shading = project.material.shading;
+    const ShadingModel& shading = material.shading;
     if (shading.coupling != DielectricCoupling::EnergyPreserving)
         return 0.0;
     // One 32 x 32 table per visibility term for the process: E_s,avg is an integral over n.v, so
@@ -30,8 +30,7 @@ double dielectricAverageAlbedoFor(const Project& project)
         table = slot;
     }
     const MaterialBrdf brdf(shading, *table);
-    return brdf.dielectricSpecularAverageAlbedo(shading::f0FromIor(project.material.ior),
-                                                project.material.roughness());
+    return brdf.dielectricSpecularAverageAlbedo(shading::f0FromIor(material.ior), material.roughness());
 }
 
 RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets,
@@ -40,11 +39,21 @@ RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets
     RenderScene scene;
     scene.mesh = assets.mesh;
     scene.meshKey = assets.meshKey;
-    scene.material = project.material;
-    for (MapSlot slot : kAllMapSlots) {
-        const LoadedMapImage& map = assets.maps[std::size_t(slot)];
-        scene.maps[std::size_t(slot)] = RenderMapImage{map.image, map.path, map.timestamp};
+    scene.materials.assign(project.materials.size(), RenderMaterial {});
+    for (std::size_t m = 0; m < project.materials.size(); ++m) {
+        RenderMaterial& material = scene.materials[m];
+        material.material = project.materials[m];
+        material.dielectricAverageAlbedo = dielectricAverageAlbedoFor(material.material);
+        if (m >= assets.maps.size())
+            continue; // not loaded (yet): the factors alone
+        for (MapSlot slot : kAllMapSlots) {
+            const LoadedMapImage& map = assets.maps[m][std::size_t(slot)];
+            material.maps[std::size_t(slot)] = RenderMapImage {map.image, map.path, map.timestamp};
+        }
     }
+    scene.parts.reserve(project.parts.size());
+    for (const MeshPart& part : project.parts)
+        scene.parts.push_back(RenderPart {part.material, part.visible});
     scene.lights = project.lights;
     scene.view = project.view;
     scene.camera = project.camera;
@@ -55,7 +64,6 @@ RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets
     }
     scene.environment = environmentLighting(ibl, assets.environment.rotationDegrees(), assets.environment.intensity(),
                                             options.irradianceFromSH);
-    scene.dielectricAverageAlbedo = dielectricAverageAlbedoFor(project);
     return scene;
 }
 

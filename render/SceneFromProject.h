@@ -9,6 +9,7 @@
 
 namespace facet {
 
+struct Material;
 struct Project;
 struct ProjectAssets;
 struct IblTextures;
@@ -27,8 +28,8 @@ struct SceneOptions {
 RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets,
                              const std::shared_ptr<const IblTextures>& ibl, const SceneOptions& options = {});
 
-// The dielectric layer's average albedo E_s,avg for the project's material (0 unless the
-// material uses the energy-preserving coupling); cheap after the first call per visibility term.
-double dielectricAverageAlbedoFor(const Project& project);
+// The dielectric layer's average albedo E_s,avg of `material` (0 unless it uses the
+// energy-preserving coupling); cheap after the first call per visibility term.
+double dielectricAverageAlbedoFor(const Material& material);
 
 } // namespace facet

@@ -123,9 +123,9 @@ void DebugViewGoldenGLTest::matchesGolden()
     project.view.mesh = "sphere";
     project.view.debugView = view.toStdString();
     project.lights.clear();
-    project.material.setBaseColor(glm::dvec3(0.9, 0.6, 0.3));
-    project.material.setFactor(MapSlot::Metallic, 1.0);
-    project.material.setFactor(MapSlot::Roughness, 0.4);
+    project.material().setBaseColor(glm::dvec3(0.9, 0.6, 0.3));
+    project.material().setFactor(MapSlot::Metallic, 1.0);
+    project.material().setFactor(MapSlot::Roughness, 0.4);
     std::string error;
     const auto rendered = m_gpu.render(project, "draft", kSize, &error);
     QVERIFY2(rendered, error.c_str());

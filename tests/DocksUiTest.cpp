@@ -205,7 +205,7 @@ void DocksUiTest::roughnessDragIsOneUndoStep()
     auto* control = m_window->findChild<ValueSlider*>(QStringLiteral("factorSlider_roughness"));
     QVERIFY(control);
     QSlider* slider = control->slider();
-    const double before = m_document->project().material.roughness();
+    const double before = m_document->project().material().roughness();
     QCOMPARE(control->value(), before);
     const int stepsBefore = m_document->undoStack()->index();
     const SceneController::LoadCounts loadsBefore = m_window->sceneController()->loadCounts();
@@ -213,7 +213,7 @@ void DocksUiTest::roughnessDragIsOneUndoStep()
 
     dragSlider(slider, slider->width() / 4);
 
-    const double after = m_document->project().material.roughness();
+    const double after = m_document->project().material().roughness();
     QVERIFY2(after > before + 0.05, qPrintable(QStringLiteral("roughness %1 -> %2").arg(before).arg(after)));
     QCOMPARE(control->value(), after);
     QCOMPARE(control->spinBox()->value(), after);
@@ -231,7 +231,7 @@ void DocksUiTest::roughnessDragIsOneUndoStep()
     QCOMPARE(undo->text(), QStringLiteral("&Undo Roughness"));
     rendered.clear();
     undo->trigger();
-    QCOMPARE(m_document->project().material.roughness(), before);
+    QCOMPARE(m_document->project().material().roughness(), before);
     QCOMPARE(control->value(), before);
     QCOMPARE(control->spinBox()->value(), before);
     QCOMPARE(slider->value(), int(std::lround(before * ValueSlider::kSteps)));
@@ -249,7 +249,7 @@ void DocksUiTest::dropImageOnSlot()
 
     QVERIFY(dropUrls(slot, {QUrl::fromLocalFile(file)}));
 
-    const MaterialMap& map = m_document->project().material.map(MapSlot::BaseColor);
+    const MaterialMap& map = m_document->project().material().map(MapSlot::BaseColor);
     QCOMPARE(QString::fromStdString(map.path), file);
     QCOMPARE(map.colorSpace, ColorEncoding::SRGB);
     QCOMPARE(m_document->undoStack()->index(), stepsBefore + 1);
@@ -275,7 +275,7 @@ void DocksUiTest::dropImageOnSlot()
     QCOMPARE(m_document->undoStack()->index(), stepsBefore + 1); // a reload is not an edit
 
     m_document->undoStack()->undo();
-    QVERIFY(!m_document->project().material.map(MapSlot::BaseColor).hasTexture());
+    QVERIFY(!m_document->project().material().map(MapSlot::BaseColor).hasTexture());
 }
 
 void DocksUiTest::dropNonImageIsRefused()
@@ -308,13 +308,13 @@ void DocksUiTest::dropFolderAssignsByName()
     QFile readme(QDir(folder).filePath(QStringLiteral("readme.txt")));
     QVERIFY(readme.open(QIODevice::WriteOnly));
     readme.close();
-    const Material before = m_document->project().material;
+    const Material before = m_document->project().material();
     const int stepsBefore = m_document->undoStack()->index();
     QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
 
     QVERIFY(dropUrls(m_window->textureMapsDock(), {QUrl::fromLocalFile(folder)}));
 
-    const Material& material = m_document->project().material;
+    const Material& material = m_document->project().material();
     const auto pathOf = [&](MapSlot slot) { return QString::fromStdString(material.map(slot).path); };
     QCOMPARE(pathOf(MapSlot::BaseColor), QDir(folder).filePath(QStringLiteral("wood_basecolor.png")));
     QCOMPARE(pathOf(MapSlot::Normal), QDir(folder).filePath(QStringLiteral("wood_normal.png")));
@@ -332,7 +332,7 @@ void DocksUiTest::dropFolderAssignsByName()
     QVERIFY(rendered.count() > 0 || rendered.wait(30000));
 
     m_document->undoStack()->undo(); // one step takes all five back
-    QCOMPARE(m_document->project().material, before);
+    QCOMPARE(m_document->project().material(), before);
 }
 
 void DocksUiTest::environmentLibrarySwitches()
@@ -603,13 +603,13 @@ void DocksUiTest::presetsSaveApplyDelete()
     QCOMPARE(gold.size(), 1);
     list->setCurrentItem(gold.first());
     QTest::mouseClick(dock->findChild<QPushButton*>(QStringLiteral("applyPresetButton")), Qt::LeftButton);
-    QCOMPARE(m_document->project().material.name, std::string("Gold"));
-    QCOMPARE(m_document->project().material.metallic(), 1.0);
+    QCOMPARE(m_document->project().material().name, std::string("Gold"));
+    QCOMPARE(m_document->project().material().metallic(), 1.0);
     QVERIFY(!dock->findChild<QPushButton*>(QStringLiteral("deletePresetButton"))->isEnabled()); // built-in
 
     list->setCurrentItem(list->findItems(QStringLiteral("My Plastic (user)"), Qt::MatchExactly).first());
     QVERIFY(dock->applySelectedPreset());
-    QCOMPARE(m_document->project().material.name, std::string("My Plastic"));
+    QCOMPARE(m_document->project().material().name, std::string("My Plastic"));
     QVERIFY(dock->deleteSelectedPreset());
     QVERIFY(!QFile::exists(path));
     QVERIFY(list->findItems(QStringLiteral("My Plastic (user)"), Qt::MatchExactly).isEmpty());

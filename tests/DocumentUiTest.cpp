@@ -25,7 +25,7 @@ DocumentChanges lastChanges(const QSignalSpy& spy)
 
 Material withRoughness(const Document& document, double roughness)
 {
-    Material material = document.project().material;
+    Material material = document.project().material();
     material.setFactor(MapSlot::Roughness, roughness);
     return material;
 }
@@ -69,20 +69,20 @@ void DocumentUiTest::startsOnDefaultProjectUnmodified()
 void DocumentUiTest::editUndoRedo()
 {
     Document document;
-    const double before = document.project().material.roughness();
+    const double before = document.project().material().roughness();
     QSignalSpy changed(&document, &Document::changed);
     document.setMaterial(withRoughness(document, 0.8), QStringLiteral("Roughness"), MergeId::Roughness);
-    QCOMPARE(document.project().material.roughness(), 0.8);
+    QCOMPARE(document.project().material().roughness(), 0.8);
     QCOMPARE(changed.count(), 1);
     QCOMPARE(document.undoStack()->count(), 1);
     QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Roughness"));
 
     document.undoStack()->undo();
-    QCOMPARE(document.project().material.roughness(), before);
+    QCOMPARE(document.project().material().roughness(), before);
     QCOMPARE(changed.count(), 2);
     QCOMPARE(lastChanges(changed), DocumentChanges(DocumentChange::MaterialFactors));
     document.undoStack()->redo();
-    QCOMPARE(document.project().material.roughness(), 0.8);
+    QCOMPARE(document.project().material().roughness(), 0.8);
     QCOMPARE(changed.count(), 3);
 }
 
@@ -90,7 +90,7 @@ void DocumentUiTest::unchangedValuePushesNothing()
 {
     Document document;
     QSignalSpy changed(&document, &Document::changed);
-    document.setMaterial(document.project().material, QStringLiteral("Nothing"));
+    document.setMaterial(document.project().material(), QStringLiteral("Nothing"));
     document.setLights(document.project().lights, QStringLiteral("Nothing"));
     QCOMPARE(changed.count(), 0);
     QCOMPARE(document.undoStack()->count(), 0);
@@ -106,14 +106,14 @@ void DocumentUiTest::changeFlagsSayWhatChanged()
         QCOMPARE(changesBetween(base, after), expected);
     };
     // A roughness change must not reload textures or rerun the IBL.
-    check([](Project& p) { p.material.setFactor(MapSlot::Roughness, 0.9); }, DocumentChange::MaterialFactors);
+    check([](Project& p) { p.material().setFactor(MapSlot::Roughness, 0.9); }, DocumentChange::MaterialFactors);
     check(
-        [](Project& p) { p.material.map(MapSlot::Normal).path = "/x/n.png"; }, DocumentChange::MaterialMaps);
-    check([](Project& p) { p.material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::Linear; },
+        [](Project& p) { p.material().map(MapSlot::Normal).path = "/x/n.png"; }, DocumentChange::MaterialMaps);
+    check([](Project& p) { p.material().map(MapSlot::BaseColor).colorSpace = ColorEncoding::Linear; },
         DocumentChange::MaterialMaps);
-    check([](Project& p) { p.material.map(MapSlot::Normal).flipGreen = true; },
+    check([](Project& p) { p.material().map(MapSlot::Normal).flipGreen = true; },
         DocumentChange::MaterialFactors);
-    check([](Project& p) { p.material.shading.multiScatter = !p.material.shading.multiScatter; },
+    check([](Project& p) { p.material().shading.multiScatter = !p.material().shading.multiScatter; },
         DocumentChange::Shading);
     check([](Project& p) { p.environment.source = "sky"; }, DocumentChange::EnvironmentSource);
     check([](Project& p) { p.environment.rotationDegrees = 90; }, DocumentChange::EnvironmentRotation);
@@ -157,7 +157,7 @@ void DocumentUiTest::changeFlagsOfHelpers()
 void DocumentUiTest::dragMergesIntoOneStep()
 {
     Document document;
-    const double start = document.project().material.roughness();
+    const double start = document.project().material().roughness();
     QSignalSpy changed(&document, &Document::changed);
     document.beginInteractiveEdit();
     for (int step = 1; step <= 20; ++step)
@@ -166,11 +166,11 @@ void DocumentUiTest::dragMergesIntoOneStep()
     document.endInteractiveEdit();
     QCOMPARE(changed.count(), 20); // the viewport sees every step of the drag
     QCOMPARE(document.undoStack()->count(), 1); // but it is one undo step
-    QCOMPARE(document.project().material.roughness(), 1.0);
+    QCOMPARE(document.project().material().roughness(), 1.0);
     document.undoStack()->undo();
-    QCOMPARE(document.project().material.roughness(), start);
+    QCOMPARE(document.project().material().roughness(), start);
     document.undoStack()->redo();
-    QCOMPARE(document.project().material.roughness(), 1.0);
+    QCOMPARE(document.project().material().roughness(), 1.0);
 }
 
 void DocumentUiTest::separateDragsAreSeparateSteps()
@@ -186,13 +186,13 @@ void DocumentUiTest::separateDragsAreSeparateSteps()
     }
     QCOMPARE(document.undoStack()->count(), 2);
     document.undoStack()->undo();
-    QCOMPARE(document.project().material.roughness(), 0.7);
+    QCOMPARE(document.project().material().roughness(), 0.7);
 
     // Another merge id in the same interaction is its own step.
     Document other;
     other.beginInteractiveEdit();
     other.setMaterial(withRoughness(other, 0.6), QStringLiteral("Roughness"), MergeId::Roughness);
-    Material metal = other.project().material;
+    Material metal = other.project().material();
     metal.setFactor(MapSlot::Metallic, 1.0);
     other.setMaterial(metal, QStringLiteral("Metallic"), MergeId::Metallic);
     other.endInteractiveEdit();
@@ -202,7 +202,7 @@ void DocumentUiTest::separateDragsAreSeparateSteps()
 void DocumentUiTest::dragBackToStartLeavesNoStep()
 {
     Document document;
-    const double start = document.project().material.roughness();
+    const double start = document.project().material().roughness();
     document.beginInteractiveEdit();
     document.setMaterial(withRoughness(document, 0.9), QStringLiteral("Roughness"), MergeId::Roughness);
     document.setMaterial(withRoughness(document, start), QStringLiteral("Roughness"), MergeId::Roughness);
@@ -254,13 +254,13 @@ void DocumentUiTest::invalidEditIsRejected()
 void DocumentUiTest::presetKeepsTextures()
 {
     Document document;
-    Material material = document.project().material;
+    Material material = document.project().material();
     material.map(MapSlot::Normal).path = "/textures/normal.png";
     document.setMaterial(material, QStringLiteral("Normal Map"));
     const MaterialPreset* gold = findPreset("gold");
     QVERIFY(gold);
     document.applyPreset(*gold);
-    const Material& applied = document.project().material;
+    const Material& applied = document.project().material();
     QCOMPARE(applied.map(MapSlot::Normal).path, std::string("/textures/normal.png"));
     QCOMPARE(applied.metallic(), gold->material.metallic());
     QCOMPARE(applied.baseColorFactor(), gold->material.baseColorFactor());
@@ -293,7 +293,7 @@ void DocumentUiTest::saveAndReopenGiveSameProject()
     const QString path = dir.filePath(QStringLiteral("scene.json"));
     Document document;
     QSignalSpy pathChanged(&document, &Document::filePathChanged);
-    Material material = document.project().material;
+    Material material = document.project().material();
     material.setFactor(MapSlot::Metallic, 1.0);
     material.setBaseColor({0.9, 0.7, 0.3});
     document.setMaterial(material, QStringLiteral("Metal"));
@@ -354,7 +354,7 @@ void DocumentUiTest::missingFilesAndRelink()
 
     Document document;
     QSignalSpy missingChanged(&document, &Document::missingFilesChanged);
-    Material material = document.project().material;
+    Material material = document.project().material();
     material.map(MapSlot::BaseColor).path = missing.toStdString();
     document.setMaterial(material, QStringLiteral("Base Color Map"));
     QCOMPARE(document.missingFiles(), QStringList {missing});
@@ -370,7 +370,7 @@ void DocumentUiTest::missingFilesAndRelink()
 
     QVERIFY(reopened.relinkFile(missing, present));
     QVERIFY(reopened.missingFiles().isEmpty());
-    QCOMPARE(reopened.project().material.map(MapSlot::BaseColor).path, present.toStdString());
+    QCOMPARE(reopened.project().material().map(MapSlot::BaseColor).path, present.toStdString());
     QVERIFY(reopened.undoStack()->undoText().startsWith(QStringLiteral("Relink")));
     reopened.undoStack()->undo();
     QCOMPARE(reopened.missingFiles(), QStringList {missing});

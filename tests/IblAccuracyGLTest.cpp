@@ -46,13 +46,13 @@ Project accuracyProject(const QString& hdri, Kind kind, double roughness)
     project.view.mesh = "sphere";
     project.lights.clear();
     if (kind == Kind::Metal) {
-        project.material.setBaseColor(glm::dvec3(1.0, 0.78, 0.34)); // gold-like F0
-        project.material.setFactor(MapSlot::Metallic, 1.0);
+        project.material().setBaseColor(glm::dvec3(1.0, 0.78, 0.34)); // gold-like F0
+        project.material().setFactor(MapSlot::Metallic, 1.0);
     } else {
-        project.material.setBaseColor(glm::dvec3(0.8, 0.1, 0.1));
-        project.material.setFactor(MapSlot::Metallic, 0.0);
+        project.material().setBaseColor(glm::dvec3(0.8, 0.1, 0.1));
+        project.material().setFactor(MapSlot::Metallic, 0.0);
     }
-    project.material.setFactor(MapSlot::Roughness, roughness);
+    project.material().setFactor(MapSlot::Roughness, roughness);
     return project;
 }
 

@@ -85,6 +85,10 @@ void MapNamingTest::channelForSlot_data()
                                      << kUnknown << true << none;
     QTest::newRow("Poliigon COL") << "WoodFlooring044_COL_4K.jpg" << S::BaseColor << C::Rgb << false
                                   << kUnknown << true << none;
+    QTest::newRow("emissive") << "lamp_emissive.png" << S::Emissive << C::Rgb << false << kUnknown << true << none;
+    QTest::newRow("Poly Haven emission 4k")
+        << "lamp_emission_4k.jpg" << S::Emissive << C::Rgb << false << kUnknown << true << none;
+    QTest::newRow("Unreal E") << "T_Crate_E.png" << S::Emissive << C::Rgb << false << kUnknown << true << none;
     QTest::newRow("normal") << "wood_normal.png" << S::Normal << C::Rgb << false << kUnknown << true << none;
     QTest::newRow("nrm") << "wood_NRM.png" << S::Normal << C::Rgb << false << kUnknown << true << none;
     QTest::newRow("normal_gl") << "wood_normal_gl.png" << S::Normal << C::Rgb << false << 0 << true << none;
@@ -258,7 +262,6 @@ void MapNamingTest::namesThatSayNothing_data()
     QTest::newRow("T_ without code") << "T_Rock.png";
     QTest::newRow("height (no slot)") << "rock_height.png";
     QTest::newRow("displacement (no slot)") << "rock_disp_4k.png";
-    QTest::newRow("emissive (no slot)") << "T_Crate_E.png";
     QTest::newRow("mask alone is not a mask map") << "rock_mask.png";
 }
 

@@ -351,7 +351,7 @@ void MaterialMapsGLTest::initTestCase()
     QVERIFY2(m_uv, error.c_str());
     m_geometricNormal = render(project, "geometric-normal", &error);
     QVERIFY2(m_geometricNormal, error.c_str());
-    useNormal(project.material, folder);
+    useNormal(project.material(), folder);
     m_tangent = render(project, "tangent", &error);
     QVERIFY2(m_tangent, error.c_str());
 
@@ -410,7 +410,7 @@ void MaterialMapsGLTest::matchesCpuTwin()
     project.environment.source = "uniform:0.5";
     project.lights.clear();
     // Factors other than 1, so that "the factor multiplies the texture" is checked too.
-    Material& material = project.material;
+    Material& material = project.material();
     material.setBaseColor(glm::dvec3(0.9, 0.8, 1.0));
     material.setFactor(MapSlot::Metallic, 0.8);
     material.setFactor(MapSlot::Roughness, 0.9);
@@ -423,7 +423,7 @@ void MaterialMapsGLTest::matchesCpuTwin()
     QVERIFY2(assets, error.c_str());
     MaterialMapImages images {};
     for (MapSlot slot : kAllMapSlots)
-        images[std::size_t(slot)] = assets->maps[std::size_t(slot)].image.get();
+        images[std::size_t(slot)] = assets->maps[0][std::size_t(slot)].image.get();
 
     for (const ViewCheck& check : viewChecks()) {
         const auto gpu = render(project, check.view, &error);

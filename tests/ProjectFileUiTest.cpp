@@ -42,7 +42,7 @@ namespace {
 
 Material withRoughness(const Document& document, double roughness)
 {
-    Material material = document.project().material;
+    Material material = document.project().material();
     material.setFactor(MapSlot::Roughness, roughness);
     return material;
 }
@@ -217,7 +217,7 @@ void ProjectFileUiTest::missingTextureOpensWithRelinkMessage()
     image.fill(QColor(200, 100, 50));
     QVERIFY(image.save(QDir(folder).filePath(QStringLiteral("brick_albedo.png"))));
     Project project = Project::defaultProject();
-    project.material.map(MapSlot::BaseColor).path = gone.toStdString();
+    project.material().map(MapSlot::BaseColor).path = gone.toStdString();
     const QString path = m_dir.filePath(QStringLiteral("missing.json"));
     std::string error;
     QVERIFY2(project.save(path.toStdString(), &error), error.c_str());
@@ -237,7 +237,7 @@ void ProjectFileUiTest::missingTextureOpensWithRelinkMessage()
     QCOMPARE(dialog->relinkFromFolder(folder), 1);
     QVERIFY(m_window->document()->missingFiles().isEmpty());
     QVERIFY(!dialog->isVisible()); // nothing left to relink
-    QCOMPARE(QString::fromStdString(m_window->document()->project().material.map(MapSlot::BaseColor).path),
+    QCOMPARE(QString::fromStdString(m_window->document()->project().material().map(MapSlot::BaseColor).path),
         QDir(folder).filePath(QStringLiteral("brick_albedo.png")));
     QVERIFY(m_window->isWindowModified()); // relinking is an edit: save to keep it
 }
@@ -361,7 +361,7 @@ void ProjectFileUiTest::unsavedChangesQuestion()
     files->setUnsavedChangesAnswer(QMessageBox::Cancel);
     QVERIFY(!files->newProject());
     QVERIFY(document->isModified());
-    QCOMPARE(document->project().material.roughness(), 0.9);
+    QCOMPARE(document->project().material().roughness(), 0.9);
     // Closing the window is refused the same way.
     QVERIFY(!m_window->close());
     QVERIFY(m_window->isVisible());
@@ -415,7 +415,7 @@ void ProjectFileUiTest::recoveryOfferRestoresWork()
     });
     m_window->offerRecovery();
     QVERIFY(answered);
-    QCOMPARE(m_window->document()->project().material.roughness(), 0.66);
+    QCOMPARE(m_window->document()->project().material().roughness(), 0.66);
     QVERIFY(m_window->isWindowModified());
     QVERIFY(!QFileInfo::exists(orphan));
     QVERIFY2(m_window->statusMessage().contains(QStringLiteral("Recovered")),

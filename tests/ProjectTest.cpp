@@ -51,7 +51,7 @@ Project everythingChanged(const QString& root)
     const auto under
         = [&](const char* relative) { return QDir(root).filePath(QLatin1String(relative)).toStdString(); };
     Project p;
-    Material& m = p.material;
+    Material& m = p.material();
     m.name = "Worn brass \"test\" \u00e9";
     m.ior = 1.7;
     m.shading.composition = BrdfComposition::LearnOpenGL;
@@ -179,8 +179,8 @@ private Q_SLOTS:
         QCOMPARE(p.view.mesh, std::string("sphere"));
         QCOMPARE(p.environment.source, std::string("studio"));
         QCOMPARE(p.view.toneMapper, ToneMapper::KhronosNeutral);
-        QCOMPARE(p.material.roughness(), 0.35);
-        QVERIFY(p.material.baseColorFactor().x > p.material.baseColorFactor().z);
+        QCOMPARE(p.material().roughness(), 0.35);
+        QVERIFY(p.material().baseColorFactor().x > p.material().baseColorFactor().z);
 
         // DESIGN.md's reference view.
         const Camera reference = Camera::referenceView();
@@ -221,15 +221,15 @@ private Q_SLOTS:
         QVERIFY2(original.validate(&problem), problem.c_str());
         // Each part really differs from its default, so the comparison below checks them all.
         const Project defaults;
-        QVERIFY(original.material.name != defaults.material.name
-            && original.material.ior != defaults.material.ior);
-        QVERIFY(original.material.emissiveStrength != defaults.material.emissiveStrength
-            && original.material.alphaMode != defaults.material.alphaMode
-            && original.material.alphaCutoff != defaults.material.alphaCutoff
-            && original.material.doubleSided != defaults.material.doubleSided);
-        QVERIFY(original.material.shading != defaults.material.shading);
+        QVERIFY(original.material().name != defaults.material().name
+            && original.material().ior != defaults.material().ior);
+        QVERIFY(original.material().emissiveStrength != defaults.material().emissiveStrength
+            && original.material().alphaMode != defaults.material().alphaMode
+            && original.material().alphaCutoff != defaults.material().alphaCutoff
+            && original.material().doubleSided != defaults.material().doubleSided);
+        QVERIFY(original.material().shading != defaults.material().shading);
         for (MapSlot slot : kAllMapSlots)
-            QVERIFY2(original.material.map(slot) != defaults.material.map(slot), toString(slot));
+            QVERIFY2(original.material().map(slot) != defaults.material().map(slot), toString(slot));
         QVERIFY(original.environment != defaults.environment && original.camera != defaults.camera);
         QVERIFY(original.view != defaults.view && original.lights.size() == 3);
 
@@ -242,7 +242,7 @@ private Q_SLOTS:
         QVERIFY2(loaded, error.c_str());
         QVERIFY2(warning.empty(), warning.c_str());
         QVERIFY(*loaded == original);
-        QVERIFY(loaded->material == original.material);
+        QVERIFY(loaded->material() == original.material());
         QVERIFY(loaded->lights == original.lights);
         QVERIFY(loaded->view == original.view);
 
@@ -254,7 +254,8 @@ private Q_SLOTS:
         // The file says what it is.
         const QJsonObject object = QJsonDocument::fromJson(readAll(qs(path))).object();
         QCOMPARE(object.value(QLatin1String("format")).toString(), QStringLiteral("facet-project"));
-        QCOMPARE(object.value(QLatin1String("version")).toInt(), 1);
+        QCOMPARE(object.value(QLatin1String("version")).toInt(), Project::kFormatVersion);
+        QCOMPARE(object.value(QLatin1String("version")).toInt(), 2);
     }
 
     void defaultProjectRoundTrips()
@@ -277,7 +278,7 @@ private Q_SLOTS:
         const QString root = QDir(dir.path()).filePath(QStringLiteral("project"));
         Project p = everythingChanged(root);
         // A texture beside the project folder is reached with "..".
-        p.material.map(MapSlot::Occlusion).path
+        p.material().map(MapSlot::Occlusion).path
             = QDir(dir.path()).filePath(QStringLiteral("shared/ao.png")).toStdString();
         const QString path = QDir(root).filePath(QStringLiteral("p.json"));
         QVERIFY(QDir().mkpath(root));
@@ -294,13 +295,13 @@ private Q_SLOTS:
 
         const std::optional<Project> loaded = Project::load(path.toStdString(), &error);
         QVERIFY2(loaded, error.c_str());
-        QCOMPARE(qs(loaded->material.map(MapSlot::BaseColor).path),
+        QCOMPARE(qs(loaded->material().map(MapSlot::BaseColor).path),
             QDir(root).filePath(QStringLiteral("textures/albedo.png")));
-        QCOMPARE(qs(loaded->material.map(MapSlot::Occlusion).path),
+        QCOMPARE(qs(loaded->material().map(MapSlot::Occlusion).path),
             QDir(dir.path()).filePath(QStringLiteral("shared/ao.png")));
         QCOMPARE(qs(loaded->environment.source), QDir(root).filePath(QStringLiteral("hdri/room.exr")));
         QCOMPARE(qs(loaded->view.mesh), QDir(root).filePath(QStringLiteral("meshes/bunny.glb")));
-        QVERIFY(!loaded->material.map(MapSlot::BaseColor).path.empty());
+        QVERIFY(!loaded->material().map(MapSlot::BaseColor).path.empty());
         QVERIFY(*loaded == p);
     }
 
@@ -345,9 +346,9 @@ private Q_SLOTS:
         const QString before = QDir(dir.path()).filePath(QStringLiteral("before"));
         const QString after = QDir(dir.path()).filePath(QStringLiteral("elsewhere/after"));
         Project p = Project::defaultProject();
-        p.material.map(MapSlot::BaseColor).path
+        p.material().map(MapSlot::BaseColor).path
             = QDir(before).filePath(QStringLiteral("tex/albedo.png")).toStdString();
-        p.material.map(MapSlot::Normal).path
+        p.material().map(MapSlot::Normal).path
             = QDir(before).filePath(QStringLiteral("tex/normal.png")).toStdString();
         p.environment.source = QDir(before).filePath(QStringLiteral("env.exr")).toStdString();
         QVERIFY(writeAll(QDir(before).filePath(QStringLiteral("tex/albedo.png")), "png"));
@@ -363,17 +364,75 @@ private Q_SLOTS:
             = Project::load(QDir(after).filePath(QStringLiteral("p.json")).toStdString(), &error);
         QVERIFY2(loaded, error.c_str());
         for (MapSlot slot : {MapSlot::BaseColor, MapSlot::Normal}) {
-            const QString texture = qs(loaded->material.map(slot).path);
+            const QString texture = qs(loaded->material().map(slot).path);
             QVERIFY2(texture.startsWith(after) && QFileInfo::exists(texture), qPrintable(texture));
         }
         QVERIFY(QFileInfo::exists(qs(loaded->environment.source)));
-        QVERIFY(loaded->material.map(MapSlot::Metallic).path.empty());
+        QVERIFY(loaded->material().map(MapSlot::Metallic).path.empty());
+    }
+
+    // Version 2: several materials, the current one, and which part shows which material.
+    void severalMaterialsAndPartsRoundTrip()
+    {
+        Project p = Project::defaultProject();
+        Material visor = p.material();
+        visor.name = "Visor";
+        visor.setFactor(MapSlot::Metallic, 1.0);
+        visor.alphaMode = AlphaMode::Blend;
+        p.materials.push_back(visor);
+        p.currentMaterial = 1;
+        p.parts = {MeshPart {"shell", 0, true}, MeshPart {"glass", 1, false}, MeshPart {"trim", 1, true}};
+        std::string problem;
+        QVERIFY2(p.validate(&problem), problem.c_str());
+        QTemporaryDir dir;
+        const std::string path = dir.filePath(QStringLiteral("two.json")).toStdString();
+        std::string error;
+        QVERIFY2(p.save(path, &error), error.c_str());
+        const auto loaded = Project::load(path, &error);
+        QVERIFY2(loaded, error.c_str());
+        QVERIFY(*loaded == p);
+        QCOMPARE(loaded->material().name, std::string("Visor"));
+        QCOMPARE(loaded->materialOfPart(1), 1);
+        QVERIFY(!loaded->isPartVisible(1));
+        // Parts beyond the list use material 0 and are drawn.
+        QCOMPARE(loaded->materialOfPart(7), 0);
+        QVERIFY(loaded->isPartVisible(7));
+    }
+
+    // A version 1 file (one "material") still opens, as the only material.
+    void version1FileOpens()
+    {
+        const QByteArray text = R"({"format": "facet-project", "version": 1,
+            "material": {"name": "Old", "roughness": {"factor": 0.25}}})";
+        std::string error;
+        const auto project
+            = Project::fromJson(QJsonDocument::fromJson(text).object(), {}, &error);
+        QVERIFY2(project, error.c_str());
+        QCOMPARE(project->materials.size(), std::size_t(1));
+        QCOMPARE(project->material().name, std::string("Old"));
+        QCOMPARE(project->material().roughness(), 0.25);
+        QVERIFY(project->parts.empty());
+        QCOMPARE(project->currentMaterial, 0);
     }
 
     void brokenFilesGiveClearErrors_data()
     {
         QTest::addColumn<QByteArray>("content");
         QTest::addColumn<QString>("expected");
+        QTest::newRow("no materials") << QByteArray(R"({"format": "facet-project", "version": 2, "materials": []})")
+                                      << QStringLiteral("materials: needs at least one material");
+        QTest::newRow("current material out of range")
+            << QByteArray(R"({"format": "facet-project", "version": 2, "materials": [{}], "currentMaterial": 3})")
+            << QStringLiteral("currentMaterial: 3 is not a material (there are 1)");
+        QTest::newRow("part's material out of range")
+            << QByteArray(R"({"format": "facet-project", "version": 2, "materials": [{}], "parts": [{"material": 1}]})")
+            << QStringLiteral("parts[0].material: 1 is not a material (there are 1)");
+        QTest::newRow("second material invalid")
+            << QByteArray(R"({"format": "facet-project", "version": 2, "materials": [{}, {"ior": 0.5}]})")
+            << QStringLiteral("materials[1].ior: 0.5 is outside [1, 5]");
+        QTest::newRow("part not an object")
+            << QByteArray(R"({"format": "facet-project", "version": 2, "parts": [3]})")
+            << QStringLiteral("parts[0]: expected an object, got a number");
         QTest::newRow("empty") << QByteArray() << QStringLiteral("the file is empty");
         QTest::newRow("whitespace") << QByteArray(" \n\t\n") << QStringLiteral("the file is empty");
         QTest::newRow("broken JSON") << QByteArray(
@@ -397,7 +456,7 @@ private Q_SLOTS:
         QTest::newRow("newer version")
             << QByteArray(
                    R"({"format": "facet-project", "version": 3, "material": {"roughness": "new syntax"}})")
-            << QStringLiteral("written by a newer Facet (version 3); this Facet reads up to version 1");
+            << QStringLiteral("written by a newer Facet (version 3); this Facet reads up to version 2");
         QTest::newRow("version zero") << QByteArray(R"({"format": "facet-project", "version": 0})")
                                       << QStringLiteral("version: 0 is not a valid version");
         QTest::newRow("version string") << QByteArray(R"({"format": "facet-project", "version": "1"})")
@@ -530,7 +589,7 @@ private Q_SLOTS:
         QVERIFY2(p, error.c_str());
         Material expected;
         expected.setFactor(MapSlot::Roughness, 0.2);
-        QVERIFY(p->material == expected);
+        QVERIFY(p->material() == expected);
         QCOMPARE(p->lights.size(), std::size_t(1));
         Light spot;
         spot.type = LightType::Spot;
@@ -542,7 +601,7 @@ private Q_SLOTS:
                 .object(),
             {}, &error);
         QVERIFY2(p, error.c_str());
-        QCOMPARE(p->material.baseColorFactor(), glm::dvec4(0.1, 0.2, 0.3, 1.0));
+        QCOMPARE(p->material().baseColorFactor(), glm::dvec4(0.1, 0.2, 0.3, 1.0));
     }
 
     void unknownKeysAreWarnedAboutNotFatal()
@@ -600,7 +659,7 @@ private Q_SLOTS:
 
         // A read-only folder: the save fails and the old file survives, with no temporary left.
         Project changed = Project::defaultProject();
-        changed.material.name = "Changed";
+        changed.material().name = "Changed";
         QVERIFY(QFile::setPermissions(folder, QFileDevice::ReadOwner | QFileDevice::ExeOwner));
         QFile probe(QDir(folder).filePath(QStringLiteral("probe")));
         const bool folderStillWritable = probe.open(QIODevice::WriteOnly);

@@ -316,10 +316,10 @@ private Q_SLOTS:
         project.environment.source = "sky";
         const MaterialPreset* gold = findPreset("gold");
         QVERIFY(gold);
-        const ShadingModel shading = project.material.shading;
-        project.material = gold->material;
-        project.material.shading = shading;
-        project.material.setFactor(MapSlot::Roughness, 0.3);
+        const ShadingModel shading = project.material().shading;
+        project.material() = gold->material;
+        project.material().shading = shading;
+        project.material().setFactor(MapSlot::Roughness, 0.3);
         auto scene = groundTruthSceneFromProject(project, &error);
         QVERIFY2(scene, error.c_str());
         GroundTruthSettings settings;
@@ -354,8 +354,8 @@ private Q_SLOTS:
     {
         Project project = Project::defaultProject();
         project.environment.source = "uniform:0.5";
-        project.material.setBaseColor(glm::dvec3(1.0));
-        project.material.setFactor(MapSlot::Metallic, 1.0);
+        project.material().setBaseColor(glm::dvec3(1.0));
+        project.material().setFactor(MapSlot::Metallic, 1.0);
         const QString projectPath = path(QStringLiteral("p.json"));
         std::string error;
         QVERIFY2(project.save(projectPath.toStdString(), &error), error.c_str());
@@ -496,7 +496,7 @@ private Q_SLOTS:
         QVERIFY(writeConstant(QStringLiteral("set_emissive.png"), 3, {128, 128, 128}));
         Project project = Project::defaultProject();
         project.environment.source = "uniform:0.5";
-        Material& m = project.material;
+        Material& m = project.material();
         m.setBaseColor(glm::dvec3(1.0));
         m.map(MapSlot::BaseColor).path = path(QStringLiteral("set_basecolor.png")).toStdString();
         m.map(MapSlot::Normal).path = path(QStringLiteral("set_normal.png")).toStdString();

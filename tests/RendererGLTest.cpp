@@ -306,12 +306,12 @@ void RendererGLTest::whiteFurnaceMetal()
     // A white metal with multi-scatter compensation reflects everything: (scale + bias) M(1) = 1.
     TinyIbl ibl(glm::vec3(1.0f), dfgTable(Visibility::SmithGGXCorrelated));
     RenderScene scene = referenceScene(ibl);
-    scene.material.setBaseColor(glm::dvec3(1.0));
-    scene.material.setFactor(MapSlot::Metallic, 1.0);
+    scene.materials[0].material.setBaseColor(glm::dvec3(1.0));
+    scene.materials[0].material.setFactor(MapSlot::Metallic, 1.0);
     const std::vector<SpherePixel> pixels = interiorPixels(kSize);
     QVERIFY(pixels.size() > 500);
     for (double roughness : {0.0, 0.25, 0.5, 0.75, 1.0}) {
-        scene.material.setFactor(MapSlot::Roughness, roughness);
+        scene.materials[0].material.setFactor(MapSlot::Roughness, roughness);
         const Image image = renderScene(scene);
         double worst = 0.0;
         for (const SpherePixel& p : pixels)
@@ -329,13 +329,13 @@ void RendererGLTest::whiteFurnaceDebugView()
     TinyIbl ibl(glm::vec3(0.3f, 2.0f, 7.0f), dfgTable(Visibility::SmithGGXCorrelated));
     RenderScene scene = referenceScene(ibl);
     scene.view.debugView = "white-furnace";
-    scene.material.setBaseColor(glm::dvec3(0.2, 0.4, 0.1));
-    scene.material.shading.coupling = DielectricCoupling::EnergyPreserving;
+    scene.materials[0].material.setBaseColor(glm::dvec3(0.2, 0.4, 0.1));
+    scene.materials[0].material.shading.coupling = DielectricCoupling::EnergyPreserving;
     const std::vector<SpherePixel> pixels = interiorPixels(kSize);
     for (double metallic : {0.0, 1.0})
         for (double roughness : {0.1, 0.6}) {
-            scene.material.setFactor(MapSlot::Metallic, metallic);
-            scene.material.setFactor(MapSlot::Roughness, roughness);
+            scene.materials[0].material.setFactor(MapSlot::Metallic, metallic);
+            scene.materials[0].material.setFactor(MapSlot::Roughness, roughness);
             const Image image = renderScene(scene);
             double worst = 0.0;
             for (const SpherePixel& p : pixels)
@@ -374,13 +374,13 @@ void RendererGLTest::splitSumMatchesCpu()
     TinyIbl ibl(L, table);
     RenderScene scene = referenceScene(ibl);
     scene.environment.intensity = 1.5;
-    scene.material.shading = shading;
-    scene.material.setBaseColor(glm::dvec3(0.9, 0.5, 0.2));
-    scene.material.setFactor(MapSlot::Metallic, metallic);
-    scene.material.setFactor(MapSlot::Roughness, roughness);
+    scene.materials[0].material.shading = shading;
+    scene.materials[0].material.setBaseColor(glm::dvec3(0.9, 0.5, 0.2));
+    scene.materials[0].material.setFactor(MapSlot::Metallic, metallic);
+    scene.materials[0].material.setFactor(MapSlot::Roughness, roughness);
     const MaterialBrdf brdf(shading, table);
-    const MaterialInfo info = materialInfo(scene.material);
-    scene.dielectricAverageAlbedo = brdf.dielectricSpecularAverageAlbedo(f0FromIor(info.ior), roughness);
+    const MaterialInfo info = materialInfo(scene.materials[0].material);
+    scene.materials[0].dielectricAverageAlbedo = brdf.dielectricSpecularAverageAlbedo(f0FromIor(info.ior), roughness);
     const Image image = renderScene(scene);
     SplitSumLighting lighting;
     lighting.prefilteredRadiance = glm::dvec3(L) * 1.5;
@@ -408,9 +408,9 @@ void RendererGLTest::directLightMatchesCpu()
     const DfgTable& table = dfgTable(Visibility::SmithGGXCorrelated);
     TinyIbl ibl(glm::vec3(0.0f), table);
     RenderScene scene = referenceScene(ibl);
-    scene.material.setBaseColor(glm::dvec3(0.7, 0.3, 0.2));
-    scene.material.setFactor(MapSlot::Roughness, 0.4);
-    scene.material.setFactor(MapSlot::Metallic, 0.3);
+    scene.materials[0].material.setBaseColor(glm::dvec3(0.7, 0.3, 0.2));
+    scene.materials[0].material.setFactor(MapSlot::Roughness, 0.4);
+    scene.materials[0].material.setFactor(MapSlot::Metallic, 0.3);
     Light sun;
     sun.type = LightType::Directional;
     sun.direction = glm::dvec3(-0.3, -0.5, -1.0);
@@ -423,8 +423,8 @@ void RendererGLTest::directLightMatchesCpu()
     lamp.range = 6.0;
     scene.lights = {sun, lamp};
     const Image image = renderScene(scene);
-    const MaterialBrdf brdf(scene.material.shading, table);
-    const MaterialInfo info = materialInfo(scene.material);
+    const MaterialBrdf brdf(scene.materials[0].material.shading, table);
+    const MaterialInfo info = materialInfo(scene.materials[0].material);
     double worst = 0.0;
     std::string where;
     for (const SpherePixel& p : interiorPixels(kSize)) {
@@ -469,8 +469,8 @@ void RendererGLTest::extremesStayFinite()
         for (double roughness : {0.0, 1.0})
             for (double metallic : {0.0, 1.0})
                 for (FramebufferFormat format : {FramebufferFormat::RGBA16F, FramebufferFormat::RGBA32F}) {
-                    scene.material.setFactor(MapSlot::Roughness, roughness);
-                    scene.material.setFactor(MapSlot::Metallic, metallic);
+                    scene.materials[0].material.setFactor(MapSlot::Roughness, roughness);
+                    scene.materials[0].material.setFactor(MapSlot::Metallic, metallic);
                     // The shader replaces NaN by 0 before writing, so the image alone cannot show
                     // one: the non-finite view marks every pixel whose radiance was NaN, Inf or
                     // negative before that guard.
@@ -511,9 +511,9 @@ void RendererGLTest::skippedWorkIsCounted()
     TinyIbl ibl(glm::vec3(1.0f), dfgTable(Visibility::SmithGGXCorrelated));
     RenderScene scene = referenceScene(ibl);
     auto image = std::make_shared<Image>(4, 4, glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
-    scene.material.map(MapSlot::BaseColor).path = "/textures/base.png";
-    scene.material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::SRGB;
-    scene.maps[std::size_t(MapSlot::BaseColor)] = {image, "/textures/base.png", 1};
+    scene.materials[0].material.map(MapSlot::BaseColor).path = "/textures/base.png";
+    scene.materials[0].material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::SRGB;
+    scene.materials[0].maps[std::size_t(MapSlot::BaseColor)] = {image, "/textures/base.png", 1};
     std::string error;
     std::optional<Framebuffer> target = Framebuffer::create(32, 32, FramebufferFormat::RGBA16F, &error);
     QVERIFY2(target, error.c_str());
@@ -531,13 +531,13 @@ void RendererGLTest::skippedWorkIsCounted()
     QCOMPARE(renderer.lastFrameStats().meshesUploaded, 0);
 
     // A roughness change is a uniform: still nothing.
-    scene.material.setFactor(MapSlot::Roughness, 0.9);
+    scene.materials[0].material.setFactor(MapSlot::Roughness, 0.9);
     QVERIFY2(renderer.render(scene, *target, &error), error.c_str());
     QCOMPARE(renderer.lastFrameStats().programsCompiled, 0);
     QCOMPARE(renderer.lastFrameStats().texturesUploaded, 0);
 
     // A new file timestamp re-uploads that texture only; a new mesh key re-uploads the mesh.
-    scene.maps[std::size_t(MapSlot::BaseColor)].timestamp = 2;
+    scene.materials[0].maps[std::size_t(MapSlot::BaseColor)].timestamp = 2;
     scene.meshKey = 2;
     QVERIFY2(renderer.render(scene, *target, &error), error.c_str());
     QCOMPARE(renderer.lastFrameStats().programsCompiled, 0);
@@ -562,7 +562,7 @@ void RendererGLTest::baseColorDebugView()
     RenderScene scene = referenceScene(ibl);
     scene.view.debugView = "base-color";
     const glm::dvec3 base(0.2, 0.5, 0.8);
-    scene.material.setBaseColor(base);
+    scene.materials[0].material.setBaseColor(base);
     Image image = renderScene(scene);
     const std::vector<SpherePixel> pixels = interiorPixels(kSize);
     for (const SpherePixel& p : pixels)
@@ -572,9 +572,9 @@ void RendererGLTest::baseColorDebugView()
     // the factor; a constant texture makes filtering irrelevant.
     auto texture
         = std::make_shared<Image>(8, 8, glm::vec4(128.0f / 255.0f, 128.0f / 255.0f, 128.0f / 255.0f, 1.0f));
-    scene.material.map(MapSlot::BaseColor).path = "/t/base.png";
-    scene.material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::SRGB;
-    scene.maps[std::size_t(MapSlot::BaseColor)] = {texture, "/t/base.png", 7};
+    scene.materials[0].material.map(MapSlot::BaseColor).path = "/t/base.png";
+    scene.materials[0].material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::SRGB;
+    scene.materials[0].maps[std::size_t(MapSlot::BaseColor)] = {texture, "/t/base.png", 7};
     image = renderScene(scene);
     const glm::dvec3 expected = base * tonemap::srgbToLinear(128.0 / 255.0);
     for (const SpherePixel& p : pixels) {
@@ -593,12 +593,12 @@ void RendererGLTest::everyFeatureAndDebugViewCompiles()
     RenderScene scene = referenceScene(ibl);
     auto texture = std::make_shared<Image>(4, 4, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
     for (MapSlot slot : kAllMapSlots) {
-        scene.material.map(slot).path = std::string("/t/") + toString(slot) + ".png";
-        scene.material.map(slot).channel = isScalarSlot(slot) ? MapChannel::G : MapChannel::Rgb;
-        scene.maps[std::size_t(slot)] = {texture, scene.material.map(slot).path, 1};
+        scene.materials[0].material.map(slot).path = std::string("/t/") + toString(slot) + ".png";
+        scene.materials[0].material.map(slot).channel = isScalarSlot(slot) ? MapChannel::G : MapChannel::Rgb;
+        scene.materials[0].maps[std::size_t(slot)] = {texture, scene.materials[0].material.map(slot).path, 1};
     }
-    scene.material.map(MapSlot::Normal).flipGreen = true;
-    scene.material.map(MapSlot::BaseColor).uv.rotationDegrees = 30.0;
+    scene.materials[0].material.map(MapSlot::Normal).flipGreen = true;
+    scene.materials[0].material.map(MapSlot::BaseColor).uv.rotationDegrees = 30.0;
     Light spot;
     spot.type = LightType::Spot;
     spot.position = glm::dvec3(0.0, 0.0, 3.0);
@@ -621,7 +621,7 @@ void RendererGLTest::everyFeatureAndDebugViewCompiles()
         for (int view = 0; view < kDebugViewCount; ++view) {
             if (model != models[0] && view != 0)
                 continue; // debug views once, with the default model
-            scene.material.shading = model;
+            scene.materials[0].material.shading = model;
             scene.view.debugView = toString(DebugView(view));
             std::string error;
             std::optional<Framebuffer> target
@@ -636,7 +636,7 @@ void RendererGLTest::everyFeatureAndDebugViewCompiles()
                             toString(DebugView(view)));
         }
     // SH irradiance of a constant E = pi gives the furnace's irradiance view: E / pi = 1.
-    scene.material.shading = models[0];
+    scene.materials[0].material.shading = models[0];
     scene.view.debugView = "irradiance";
     const Image image = renderScene(scene);
     for (const SpherePixel& p : interiorPixels(kSize))

@@ -52,8 +52,8 @@ bool contains(const std::string& text, const QString& part)
 Project projectVariant(int variant, int lights)
 {
     Project project = Project::defaultProject();
-    project.material.name = variant == 0 ? "Old" : "New";
-    project.material.setFactor(MapSlot::Roughness, variant == 0 ? 0.3 : 0.7);
+    project.material().name = variant == 0 ? "Old" : "New";
+    project.material().setFactor(MapSlot::Roughness, variant == 0 ? 0.3 : 0.7);
     for (int i = 0; i < lights; ++i) {
         project.lights.push_back(Light::defaultDirectional());
         project.lights.back().intensity = 1.0 + i;
@@ -115,7 +115,7 @@ bool writeWith(Writer writer, const QString& path, int variant, std::string* err
         MaterialPreset preset;
         preset.id = "mine";
         preset.displayName = variant == 0 ? "Old look" : "New look";
-        preset.material = projectVariant(variant, 0).material;
+        preset.material = projectVariant(variant, 0).material();
         return savePreset(preset, file, error);
     }
     case Writer::RecoveryFile: {

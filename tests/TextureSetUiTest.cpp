@@ -227,7 +227,7 @@ void TextureSetUiTest::slotReadsItsChannelOfAPackedFile()
         QVERIFY(clickAndAnswerFileDialog(open, path));
     }
 
-    const MaterialMap& map = m_document->project().material.map(slot);
+    const MaterialMap& map = m_document->project().material().map(slot);
     QVERIFY2(map.path == path.toStdString() && map.channel == channel && map.invert == invert,
         qPrintable(describe(map)));
     QCOMPARE(m_document->undoStack()->index(), steps + 1);
@@ -248,16 +248,17 @@ void TextureSetUiTest::dockAssignsPackedChannels_data()
     QTest::addColumn<QStringList>("files");
     QTest::addColumn<QString>("expected"); // "<slot>:<channel>[!]" per slot, '!' inverted, '^' DirectX
     const QStringList orm = {QStringLiteral("metal_basecolor.png"), QStringLiteral("metal_normal.png"),
-        QStringLiteral("metal_orm.png")};
+        QStringLiteral("metal_orm.png"), QStringLiteral("metal_emissive.png")};
     const QStringList mask = {QStringLiteral("Rock_BaseColor.png"), QStringLiteral("Rock_Normal.png"),
-        QStringLiteral("Rock_MaskMap.png")};
-    const QStringList unreal = {
-        QStringLiteral("T_Crate_BC.png"), QStringLiteral("T_Crate_N.png"), QStringLiteral("T_Crate_ORM.png")};
-    const QString ormExpected = QStringLiteral("baseColor:rgb normal:rgb metallic:b roughness:g occlusion:r");
+        QStringLiteral("Rock_MaskMap.png"), QStringLiteral("Rock_Emission.png")};
+    const QStringList unreal = {QStringLiteral("T_Crate_BC.png"), QStringLiteral("T_Crate_N.png"),
+        QStringLiteral("T_Crate_ORM.png"), QStringLiteral("T_Crate_E.png")};
+    const QString ormExpected
+        = QStringLiteral("baseColor:rgb normal:rgb metallic:b roughness:g occlusion:r emissive:rgb");
     const QString maskExpected
-        = QStringLiteral("baseColor:rgb normal:rgb metallic:r roughness:a! occlusion:g");
+        = QStringLiteral("baseColor:rgb normal:rgb metallic:r roughness:a! occlusion:g emissive:rgb");
     const QString unrealExpected
-        = QStringLiteral("baseColor:rgb normal:rgb^ metallic:b roughness:g occlusion:r");
+        = QStringLiteral("baseColor:rgb normal:rgb^ metallic:b roughness:g occlusion:r emissive:rgb");
     for (const char* how : {"files", "folder", "button"}) {
         QTest::addRow("%s ORM", how) << QString::fromLatin1(how) << orm << ormExpected;
         QTest::addRow("%s mask map", how) << QString::fromLatin1(how) << mask << maskExpected;
@@ -291,7 +292,7 @@ void TextureSetUiTest::dockAssignsPackedChannels()
 
     QStringList got;
     for (MapSlot slot : kAllMapSlots) {
-        const MaterialMap& map = m_document->project().material.map(slot);
+        const MaterialMap& map = m_document->project().material().map(slot);
         QVERIFY2(map.hasTexture(), toString(slot));
         QString entry = QStringLiteral("%1:%2").arg(
             QString::fromLatin1(toString(slot)), QString::fromLatin1(toString(map.channel)));
@@ -304,7 +305,7 @@ void TextureSetUiTest::dockAssignsPackedChannels()
     QCOMPARE(got.join(u' '), expected);
     QCOMPARE(m_document->undoStack()->index(), steps + 1);
     QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Assign Maps"));
-    QVERIFY2(m_dock->lastMessage().startsWith(QStringLiteral("Assigned 5 maps")),
+    QVERIFY2(m_dock->lastMessage().startsWith(QStringLiteral("Assigned 6 maps")),
         qPrintable(m_dock->lastMessage()));
 }
 
@@ -318,7 +319,7 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
     auto* button = m_dock->findChild<QPushButton*>(QStringLiteral("assignFolderButton"));
     QVERIFY(button);
     QVERIFY(clickAndAnswerFileDialog(button, a));
-    const Material setA = m_document->project().material;
+    const Material setA = m_document->project().material();
     for (MapSlot slot : kAllMapSlots)
         QVERIFY(setA.map(slot).hasTexture());
     QCOMPARE(setA.metallic(), 1.0); // the texture shows as painted
@@ -330,7 +331,7 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
     makeFiles(b, {QStringLiteral("b_basecolor.png"), QStringLiteral("b_roughness.png")});
     QVERIFY(clickAndAnswerFileDialog(button, b));
 
-    const Material& setB = m_document->project().material;
+    const Material& setB = m_document->project().material();
     QCOMPARE(QFileInfo(QString::fromStdString(setB.map(MapSlot::BaseColor).path)).fileName(),
         QStringLiteral("b_basecolor.png"));
     QCOMPARE(QFileInfo(QString::fromStdString(setB.map(MapSlot::Roughness).path)).fileName(),
@@ -352,9 +353,9 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
 
     // One undo brings set A back whole; redo B again.
     m_document->undoStack()->undo();
-    QCOMPARE(m_document->project().material, setA);
+    QCOMPARE(m_document->project().material(), setA);
     m_document->undoStack()->redo();
-    QVERIFY(!m_document->project().material.map(MapSlot::Normal).hasTexture());
+    QVERIFY(!m_document->project().material().map(MapSlot::Normal).hasTexture());
 }
 
 void TextureSetUiTest::oneFileDroppedOnTheDockAddsToTheSet()
@@ -365,7 +366,7 @@ void TextureSetUiTest::oneFileDroppedOnTheDockAddsToTheSet()
     const QString extra
         = makeFiles(m_dir.filePath(QStringLiteral("add/b")), {QStringLiteral("b_orm.png")}).value(0);
     QVERIFY(dropUrls(m_dock, {QUrl::fromLocalFile(extra)}));
-    const Material& material = m_document->project().material;
+    const Material& material = m_document->project().material();
     QCOMPARE(QString::fromStdString(material.map(MapSlot::BaseColor).path), set[0]);
     QCOMPARE(QString::fromStdString(material.map(MapSlot::Normal).path), set[1]);
     QCOMPARE(QString::fromStdString(material.map(MapSlot::Metallic).path), extra);
@@ -409,7 +410,7 @@ void TextureSetUiTest::noteGoesWithTheProject()
         QVERIFY2(m_document->recover(recovery, &error), qPrintable(error));
     }
 
-    QVERIFY(!m_document->project().material.map(MapSlot::BaseColor).hasTexture());
+    QVERIFY(!m_document->project().material().map(MapSlot::BaseColor).hasTexture());
     QVERIFY2(m_dock->lastMessage().isEmpty(), qPrintable(m_dock->lastMessage()));
     QVERIFY(!label->isVisible());
 }

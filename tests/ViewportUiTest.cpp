@@ -207,8 +207,8 @@ void ViewportUiTest::materialEditRerendersWithoutReloading()
     Document* document = m_window->document();
     const SceneController::LoadCounts loadsBefore = m_window->sceneController()->loadCounts();
     const std::uint64_t framesBefore = m_viewport->frameCount();
-    const double oldRoughness = document->project().material.roughness();
-    Material material = document->project().material;
+    const double oldRoughness = document->project().material().roughness();
+    Material material = document->project().material();
     material.setFactor(MapSlot::Roughness, 0.8);
     document->setMaterial(material, QStringLiteral("Roughness"), MergeId::Roughness);
     QVERIFY(waitForFrame(m_viewport));
@@ -227,7 +227,7 @@ void ViewportUiTest::materialEditRerendersWithoutReloading()
     QVERIFY(undo);
     QCOMPARE(undo->text(), QStringLiteral("&Undo Roughness"));
     undo->trigger();
-    QCOMPARE(document->project().material.roughness(), oldRoughness);
+    QCOMPARE(document->project().material().roughness(), oldRoughness);
     QVERIFY(waitForFrame(m_viewport));
 }
 
@@ -336,11 +336,11 @@ void ViewportUiTest::numberKeyAppliesPreset()
     const MaterialPreset& first = builtinPresets().front();
     m_viewport->setFocus();
     QTest::keyClick(m_viewport, Qt::Key_1);
-    QCOMPARE(document->project().material.baseColorFactor(), first.material.baseColorFactor());
-    QCOMPARE(document->project().material.roughness(), first.material.roughness());
+    QCOMPARE(document->project().material().baseColorFactor(), first.material.baseColorFactor());
+    QCOMPARE(document->project().material().roughness(), first.material.roughness());
     QVERIFY(waitForFrame(m_viewport));
     document->undoStack()->undo();
-    QCOMPARE(document->project().material, Project::defaultProject().material);
+    QCOMPARE(document->project().material(), Project::defaultProject().material());
 }
 
 void ViewportUiTest::framingFitsTallAndWideViewports()

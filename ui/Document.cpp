@@ -1,5 +1,6 @@
 #include "ui/Document.h"
 
+#include "core/GltfImport.h"
 #include "render/ShaderVariant.h"
 #include "ui/DocumentCommands.h"
 
@@ -72,7 +73,7 @@ void Document::push(Project after, const QString& undoText, int mergeId)
 void Document::setMaterial(const Material& material, const QString& undoText, int mergeId)
 {
     Project after = m_project;
-    after.material = material;
+    after.material() = material;
     push(std::move(after), undoText, mergeId);
 }
 
@@ -104,7 +105,7 @@ void Document::setProject(const Project& project, const QString& undoText, int m
 
 void Document::applyPreset(const MaterialPreset& preset)
 {
-    Material material = m_project.material;
+    Material material = m_project.material();
     const Material& look = preset.material;
     material.name = look.name;
     material.ior = look.ior;
@@ -112,6 +113,21 @@ void Document::applyPreset(const MaterialPreset& preset)
     for (MapSlot slot : kAllMapSlots)
         material.map(slot).factor = look.map(slot).factor;
     setMaterial(material, tr("Apply Preset %1").arg(fromStd(preset.displayName)));
+}
+
+void Document::setCurrentMaterial(int index)
+{
+    if (index < 0 || std::size_t(index) >= m_project.materials.size() || index == m_project.currentMaterial)
+        return;
+    m_project.currentMaterial = index;
+    Q_EMIT changed(DocumentChange::CurrentMaterial);
+}
+
+void Document::setParts(const std::vector<MeshPart>& parts, const QString& undoText)
+{
+    Project after = m_project;
+    after.parts = parts;
+    push(std::move(after), undoText, MergeId::None);
 }
 
 void Document::setCamera(const Camera& camera)
@@ -286,8 +302,10 @@ void Document::updateMissingFiles()
         if (!file.isEmpty() && !missing.contains(file) && !QFileInfo::exists(file))
             missing.append(file);
     };
-    for (MapSlot slot : kAllMapSlots)
-        check(m_project.material.map(slot).path);
+    // An image embedded in a glTF asset is missing when the asset is (core/GltfImport.h).
+    for (const Material& material : m_project.materials)
+        for (MapSlot slot : kAllMapSlots)
+            check(fileOfImagePath(material.map(slot).path));
     if (!json::isBuiltinSpec(m_project.environment.source))
         check(m_project.environment.source);
     if (!json::isBuiltinSpec(m_project.view.mesh))
@@ -304,13 +322,17 @@ bool Document::relinkFile(const QString& oldPath, const QString& newPath)
     const std::string to = QDir::cleanPath(QFileInfo(newPath).absoluteFilePath()).toStdString();
     Project after = m_project;
     bool found = false;
-    for (MapSlot slot : kAllMapSlots) {
-        MaterialMap& map = after.material.map(slot);
-        if (map.path == from) {
-            map.path = to;
-            found = true;
+    for (Material& material : after.materials)
+        for (MapSlot slot : kAllMapSlots) {
+            MaterialMap& map = material.map(slot);
+            if (map.path == from) {
+                map.path = to;
+                found = true;
+            } else if (const auto embedded = parseGltfImageReference(map.path); embedded && embedded->assetPath == from) {
+                map.path = gltfImageReference(to, embedded->imageIndex); // the relinked asset's image
+                found = true;
+            }
         }
-    }
     if (after.environment.source == from) {
         after.environment.source = to;
         found = true;

@@ -60,6 +60,11 @@ public:
     void setProject(const Project& project, const QString& undoText, int mergeId = 0);
     // Not undoable, does not mark the document modified; emits changed(Camera).
     void setCamera(const Camera& camera);
+    // Which material the docks edit (picked from the list or by clicking a part). A selection,
+    // not an edit: no undo step, not modified; emits changed(CurrentMaterial). Out of range: ignored.
+    void setCurrentMaterial(int index);
+    // Which material each mesh part shows and which parts are drawn: one undo step.
+    void setParts(const std::vector<MeshPart>& parts, const QString& undoText);
 
     // Interactive edits (slider drags, colour-dialog previews): see the top of this file.
     void beginInteractiveEdit();

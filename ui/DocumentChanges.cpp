@@ -2,6 +2,8 @@
 
 #include "core/Project.h"
 
+#include <algorithm>
+
 namespace facet {
 
 namespace {
@@ -12,13 +14,9 @@ bool sameTexture(const MaterialMap& a, const MaterialMap& b)
     return a.path == b.path && a.colorSpace == b.colorSpace;
 }
 
-} // namespace
-
-DocumentChanges changesBetween(const Project& before, const Project& after)
+DocumentChanges materialChanges(const Material& a, const Material& b)
 {
     DocumentChanges changes;
-    const Material& a = before.material;
-    const Material& b = after.material;
     for (MapSlot slot : kAllMapSlots) {
         if (!sameTexture(a.map(slot), b.map(slot)))
             changes |= DocumentChange::MaterialMaps;
@@ -29,10 +27,27 @@ DocumentChanges changesBetween(const Project& before, const Project& after)
         if (aRest != bRest)
             changes |= DocumentChange::MaterialFactors;
     }
-    if (a.name != b.name || a.ior != b.ior)
+    if (a.name != b.name || a.ior != b.ior || a.emissiveStrength != b.emissiveStrength || a.alphaMode != b.alphaMode
+        || a.alphaCutoff != b.alphaCutoff || a.doubleSided != b.doubleSided)
         changes |= DocumentChange::MaterialFactors;
     if (a.shading != b.shading)
         changes |= DocumentChange::Shading;
+    return changes;
+}
+
+} // namespace
+
+DocumentChanges changesBetween(const Project& before, const Project& after)
+{
+    DocumentChanges changes;
+    if (before.materials.size() != after.materials.size())
+        changes |= DocumentChange::MaterialFactors | DocumentChange::MaterialMaps | DocumentChange::Shading;
+    for (std::size_t m = 0; m < std::min(before.materials.size(), after.materials.size()); ++m)
+        changes |= materialChanges(before.materials[m], after.materials[m]);
+    if (before.currentMaterial != after.currentMaterial)
+        changes |= DocumentChange::CurrentMaterial;
+    if (before.parts != after.parts)
+        changes |= DocumentChange::Parts;
 
     const EnvironmentSettings& ea = before.environment;
     const EnvironmentSettings& eb = after.environment;

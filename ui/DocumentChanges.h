@@ -11,7 +11,9 @@ struct Project;
 
 enum class DocumentChange : unsigned {
     None = 0,
-    MaterialFactors = 1u << 0, // factors, IOR, name, per-map channel/invert/flipGreen/UV transform
+    // The three material kinds below are reported for a change of ANY of the project's materials
+    // (and all three when materials are added or removed).
+    MaterialFactors = 1u << 0, // factors, IOR, name, alpha, sidedness, per-map channel/invert/flipGreen/UV
     MaterialMaps = 1u << 1, // a map's texture path or colour space (reload that map only)
     Shading = 1u << 2, // Material::shading (BRDF terms, coupling: another shader variant)
     EnvironmentSource = 1u << 3, // environment.source (load an image, rerun or fetch the IBL)
@@ -22,8 +24,10 @@ enum class DocumentChange : unsigned {
     View = 1u << 8, // view settings other than the mesh (exposure, tone mapper, background, MSAA)
     Camera = 1u << 9, // the camera (orbit, pan, dolly, frame, fly)
     Mesh = 1u << 10, // view.mesh (load another mesh)
+    CurrentMaterial = 1u << 11, // which material the docks edit (Project::currentMaterial)
+    Parts = 1u << 12, // which material each mesh part shows, and which parts are drawn
     // A different project altogether (New, Open, recovery): observers reload everything.
-    WholeProject = (1u << 11) - 1u,
+    WholeProject = (1u << 13) - 1u,
 };
 Q_DECLARE_FLAGS(DocumentChanges, DocumentChange)
 Q_DECLARE_OPERATORS_FOR_FLAGS(DocumentChanges)

@@ -166,7 +166,7 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
         m_color->setObjectName(QStringLiteral("baseColorButton"));
         form->addRow(tr("Colour"), m_color);
         connect(m_color, &ColorButton::colorEdited, this, [this](const glm::dvec3& linear) {
-            MaterialMap map = m_document->project().material.map(m_slot);
+            MaterialMap map = m_document->project().material().map(m_slot);
             map.factor = glm::dvec4(linear, map.factor.w);
             editMap(map, tr("Base Colour"));
         });
@@ -178,7 +178,7 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
         connect(m_factor, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
         connect(m_factor, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);
         connect(m_factor, &ValueSlider::valueEdited, this, [this, mergeId](double value) {
-            MaterialMap map = m_document->project().material.map(m_slot);
+            MaterialMap map = m_document->project().material().map(m_slot);
             map.factor = glm::dvec4(value);
             editMap(map, factorName(m_slot), mergeId);
         });
@@ -196,7 +196,7 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
                                  "green and metallic in blue"));
         form->addRow(tr("Channel"), m_channel);
         connect(m_channel, &QComboBox::activated, this, [this] {
-            MaterialMap map = m_document->project().material.map(m_slot);
+            MaterialMap map = m_document->project().material().map(m_slot);
             map.channel = MapChannel(m_channel->currentData().toInt());
             editMap(map, tr("%1 Channel").arg(title(m_slot)));
         });
@@ -207,7 +207,7 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
     m_colorSpace->addItem(tr("Linear (data)"), int(ColorEncoding::Linear));
     form->addRow(tr("Colour space"), m_colorSpace);
     connect(m_colorSpace, &QComboBox::activated, this, [this] {
-        MaterialMap map = m_document->project().material.map(m_slot);
+        MaterialMap map = m_document->project().material().map(m_slot);
         map.colorSpace = ColorEncoding(m_colorSpace->currentData().toInt());
         editMap(map, tr("%1 Colour Space").arg(title(m_slot)));
     });
@@ -217,7 +217,7 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
         m_invert->setObjectName(QStringLiteral("mapInvert_%1").arg(key));
         form->addRow(QString(), m_invert);
         connect(m_invert, &QCheckBox::clicked, this, [this](bool on) {
-            MaterialMap map = m_document->project().material.map(m_slot);
+            MaterialMap map = m_document->project().material().map(m_slot);
             map.invert = on;
             editMap(map, tr("Invert %1").arg(title(m_slot)));
         });
@@ -227,7 +227,7 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
         m_flipGreen->setObjectName(QStringLiteral("mapFlipGreen"));
         form->addRow(QString(), m_flipGreen);
         connect(m_flipGreen, &QCheckBox::clicked, this, [this](bool on) {
-            MaterialMap map = m_document->project().material.map(m_slot);
+            MaterialMap map = m_document->project().material().map(m_slot);
             map.flipGreen = on;
             editMap(map, tr("Flip Normal Green"));
         });
@@ -242,7 +242,7 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
 
 void MapSlotWidget::refresh()
 {
-    const MaterialMap& map = m_document->project().material.map(m_slot);
+    const MaterialMap& map = m_document->project().material().map(m_slot);
     if (map.hasTexture()) {
         const QFileInfo info(QString::fromStdString(map.path));
         QString text = info.fileName();
@@ -313,7 +313,7 @@ bool MapSlotWidget::assignFile(const QString& path)
     const QString file = info.absoluteFilePath();
     const MapRead read = mapReadFor(m_slot, file);
     const TextureNaming naming = textureNaming(file);
-    const Material& current = m_document->project().material;
+    const Material& current = m_document->project().material();
     const Material material = withAssignedMaps(current,
         {MapAssignment {m_slot, file, read.channel, read.invert,
             read.flipGreen.value_or(current.map(m_slot).flipGreen), naming.convention}});
@@ -325,7 +325,7 @@ bool MapSlotWidget::assignFile(const QString& path)
 
 void MapSlotWidget::clearFile()
 {
-    MaterialMap map = m_document->project().material.map(m_slot);
+    MaterialMap map = m_document->project().material().map(m_slot);
     if (!map.hasTexture())
         return;
     map.path.clear();
@@ -334,7 +334,7 @@ void MapSlotWidget::clearFile()
 
 void MapSlotWidget::editMap(const MaterialMap& map, const QString& undoText, int mergeId)
 {
-    Material material = m_document->project().material;
+    Material material = m_document->project().material();
     material.map(m_slot) = map;
     m_document->setMaterial(material, undoText, mergeId);
 }

@@ -110,7 +110,7 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     setWidget(content);
 
     connect(m_name, &QLineEdit::editingFinished, this, [this] {
-        Material material = m_document->project().material;
+        Material material = m_document->project().material();
         const std::string name = m_name->text().trimmed().toStdString();
         if (name.empty() || name == material.name)
             return;
@@ -120,7 +120,7 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     connect(m_ior, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
     connect(m_ior, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);
     connect(m_ior, &ValueSlider::valueEdited, this, [this](double ior) {
-        Material material = m_document->project().material;
+        Material material = m_document->project().material();
         material.ior = ior;
         m_document->setMaterial(material, tr("IOR"), MergeId::Ior);
     });
@@ -167,7 +167,7 @@ void MaterialDock::onDocumentChanged(DocumentChanges changes)
 {
     if (!(changes & (DocumentChanges(DocumentChange::MaterialFactors) | DocumentChange::Shading)))
         return;
-    const Material& material = m_document->project().material;
+    const Material& material = m_document->project().material();
     if (!m_name->hasFocus())
         m_name->setText(QString::fromStdString(material.name));
     m_ior->setValue(material.ior);
@@ -182,7 +182,7 @@ void MaterialDock::onDocumentChanged(DocumentChanges changes)
 
 void MaterialDock::editShading(const QString& undoText, const std::function<void(ShadingModel&)>& change)
 {
-    Material material = m_document->project().material;
+    Material material = m_document->project().material();
     change(material.shading);
     m_document->setMaterial(material, undoText);
 }
@@ -243,7 +243,7 @@ void MaterialDock::askPresetName()
 {
     bool ok = false;
     const QString name = QInputDialog::getText(this, tr("Save As Preset"), tr("Preset name:"),
-        QLineEdit::Normal, QString::fromStdString(m_document->project().material.name), &ok);
+        QLineEdit::Normal, QString::fromStdString(m_document->project().material().name), &ok);
     if (ok)
         saveCurrentAsPreset(name);
 }
@@ -251,7 +251,7 @@ void MaterialDock::askPresetName()
 bool MaterialDock::saveCurrentAsPreset(const QString& name)
 {
     QString error;
-    const QString path = UserPresets::save(name, m_document->project().material, &error);
+    const QString path = UserPresets::save(name, m_document->project().material(), &error);
     if (path.isEmpty()) {
         Q_EMIT message(tr("Could not save the preset: %1").arg(error));
         return false;

@@ -1,5 +1,6 @@
 #include "ui/SceneController.h"
 
+#include "core/GltfImport.h"
 #include "core/Project.h"
 #include "render/SceneFromProject.h"
 #include "ui/Document.h"
@@ -12,6 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <functional>
+#include <map>
 
 namespace facet {
 
@@ -132,34 +134,48 @@ void SceneController::loadMesh()
 
 void SceneController::loadMaps(bool all)
 {
-    const Material& material = m_document->project().material;
-    for (MapSlot slot : kAllMapSlots) {
-        const MaterialMap& map = material.map(slot);
-        LoadedMapImage& loaded = m_assets.maps[std::size_t(slot)];
-        if (!map.hasTexture()) {
-            loaded = LoadedMapImage {};
-            continue;
+    // Every material's maps; a file used by several slots or materials is decoded once (m_images,
+    // by path) and reloaded only when its modification time changes.
+    const Project& project = m_document->project();
+    std::map<std::string, CachedImage> images;
+    m_assets.maps.assign(project.materials.size(), {});
+    for (std::size_t m = 0; m < project.materials.size(); ++m) {
+        for (MapSlot slot : kAllMapSlots) {
+            const MaterialMap& map = project.materials[m].map(slot);
+            if (!map.hasTexture())
+                continue;
+            const std::int64_t timestamp = modificationTime(fileOfImagePath(map.path));
+            auto cached = images.find(map.path);
+            if (cached == images.end()) {
+                const auto previous = m_images.find(map.path);
+                if (!all && previous != m_images.end() && previous->second.timestamp == timestamp
+                    && (previous->second.image || timestamp == 0)) {
+                    cached = images.emplace(map.path, previous->second).first; // already loaded (or reported missing)
+                } else {
+                    CachedImage entry;
+                    entry.timestamp = timestamp;
+                    ++m_loadCounts.maps;
+                    std::string error;
+                    ImageLoadStats stats;
+                    std::optional<Image> image = Image::load(map.path, &error, &stats);
+                    if (!image) {
+                        report(std::string(toString(slot)) + " map: " + error);
+                    } else {
+                        if (stats.total() > 0)
+                            report(map.path + ": replaced " + std::to_string(stats.total())
+                                + " NaN, Inf or negative samples");
+                        entry.image = std::make_shared<const Image>(std::move(*image));
+                    }
+                    cached = images.emplace(map.path, std::move(entry)).first;
+                }
+            }
+            LoadedMapImage& loaded = m_assets.maps[m][std::size_t(slot)];
+            loaded.image = cached->second.image;
+            loaded.path = map.path;
+            loaded.timestamp = timestamp;
         }
-        const std::int64_t timestamp = modificationTime(map.path);
-        if (!all && loaded.path == map.path && loaded.timestamp == timestamp
-            && (loaded.image || timestamp == 0))
-            continue; // the same file, already loaded (or already reported missing)
-        loaded = LoadedMapImage {};
-        loaded.path = map.path;
-        loaded.timestamp = timestamp;
-        ++m_loadCounts.maps;
-        std::string error;
-        ImageLoadStats stats;
-        std::optional<Image> image = Image::load(map.path, &error, &stats);
-        if (!image) {
-            report(std::string(toString(slot)) + " map: " + error);
-            continue;
-        }
-        if (stats.total() > 0)
-            report(
-                map.path + ": replaced " + std::to_string(stats.total()) + " NaN, Inf or negative samples");
-        loaded.image = std::make_shared<const Image>(std::move(*image));
     }
+    m_images = std::move(images);
 }
 
 IblSettings SceneController::iblSettings() const

@@ -19,6 +19,8 @@
 #include <QString>
 
 #include <cstdint>
+#include <map>
+#include <string>
 #include <memory>
 
 namespace facet {
@@ -84,8 +86,14 @@ private:
     void report(const std::string& text);
     void setEnvironmentProblem(const QString& problem);
 
+    struct CachedImage {
+        std::shared_ptr<const Image> image; // null: the file could not be read (reported once)
+        std::int64_t timestamp = 0;
+    };
+
     Document* m_document;
     ProjectAssets m_assets;
+    std::map<std::string, CachedImage> m_images; // the decoded map files, by path
     std::string m_environmentSource; // the project's source last loaded (or tried)
     QString m_environmentProblem;
     std::string m_meshSource;

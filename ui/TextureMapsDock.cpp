@@ -97,7 +97,7 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
         connect(slider, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
         connect(slider, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);
         connect(slider, &ValueSlider::valueEdited, this, [this, apply](double value) {
-            Material material = m_document->project().material;
+            Material material = m_document->project().material();
             for (MaterialMap& map : material.maps)
                 apply(map.uv, value);
             m_document->setMaterial(material, tr("UV Transform"), MergeId::UvTransform);
@@ -143,7 +143,7 @@ void TextureMapsDock::onDocumentChanged(DocumentChanges changes)
         return;
     for (MapSlotWidget* widget : m_slots)
         widget->refresh();
-    const UvTransform& uv = m_document->project().material.map(MapSlot::BaseColor).uv;
+    const UvTransform& uv = m_document->project().material().map(MapSlot::BaseColor).uv;
     m_uvScale->setValue(uv.scale.x);
     m_uvOffsetU->setValue(uv.offset.x);
     m_uvOffsetV->setValue(uv.offset.y);
@@ -157,7 +157,7 @@ void TextureMapsDock::onDocumentChanged(DocumentChanges changes)
 void TextureMapsDock::refreshThumbnails(bool force)
 {
     for (MapSlot slot : kAllMapSlots) {
-        const std::string& path = m_document->project().material.map(slot).path;
+        const std::string& path = m_document->project().material().map(slot).path;
         QString& key = m_thumbnailKeys[std::size_t(slot)];
         if (path.empty()) {
             key.clear();
@@ -178,7 +178,7 @@ void TextureMapsDock::refreshThumbnails(bool force)
 void TextureMapsDock::watchFiles()
 {
     QStringList wanted;
-    for (const MaterialMap& map : m_document->project().material.maps)
+    for (const MaterialMap& map : m_document->project().material().maps)
         if (map.hasTexture() && QFileInfo::exists(QString::fromStdString(map.path)))
             wanted.append(QString::fromStdString(map.path));
     wanted.removeDuplicates();
@@ -241,7 +241,7 @@ QString TextureMapsDock::assignFiles(const QStringList& paths)
                   "_roughness, _ao, _orm (see the Assign Folder button's tip)")
                    .arg(names(paths));
     } else {
-        const Material& before = m_document->project().material;
+        const Material& before = m_document->project().material();
         std::vector<MapSlot> cleared;
         const Material material = wholeSet ? withTextureSet(before, result.assignments, &cleared)
                                            : withAssignedMaps(before, result.assignments);
