@@ -202,6 +202,16 @@ bool Renderer::ensureMsaaTarget(int width, int height, int samples, bool fullFlo
 bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::string* error)
 {
     m_frame = {};
+    // The split-sum table must be the one integrated with the drawn material's own V (another V's
+    // is 3.5-11% off, docs/ibl.md): a scene without it is refused, never drawn with a stand-in.
+    const Visibility visibility = scene.material.shading.visibility;
+    if (scene.mesh && !scene.mesh->indices.empty() && !scene.environment.dfgLutFor(visibility)) {
+        const std::string name = toString(visibility);
+        if (error)
+            *error = "Renderer::render: the scene has no split-sum DFG table for the visibility term '" + name
+                + "' of its material (EnvironmentLighting::setDfgLut, addDfgTables)";
+        return false;
+    }
     const int width = hdrTarget.width();
     const int height = hdrTarget.height();
     const bool fullFloat = hdrTarget.format() == FramebufferFormat::RGBA32F;
@@ -365,11 +375,12 @@ bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, con
         program->setInt(kMapSamplers[std::size_t(i)], kMapUnit0 + i);
     }
 
-    // Environment.
+    // Environment. The DFG table of the material's visibility term (render() checked it is there).
+    const DfgLutBinding* dfg = env.dfgLutFor(material.shading.visibility);
     glActiveTexture(GL_TEXTURE0 + kDfgUnit);
-    glBindTexture(GL_TEXTURE_2D, env.dfgLut);
+    glBindTexture(GL_TEXTURE_2D, dfg ? dfg->texture : 0);
     program->setInt("uDfgLut", kDfgUnit);
-    program->setFloat("uDfgSize", float(std::max(env.dfgSize, 1)));
+    program->setFloat("uDfgSize", float(std::max(dfg ? dfg->size : 1, 1)));
     glActiveTexture(GL_TEXTURE0 + kPrefilteredUnit);
     glBindTexture(GL_TEXTURE_CUBE_MAP, env.prefilteredCubemap);
     program->setInt("uPrefilteredMap", kPrefilteredUnit);

@@ -8,6 +8,7 @@
 #include "core/MaterialBrdf.h"
 #include "core/Project.h"
 #include "core/ProjectAssets.h"
+#include "render/IblPrecompute.h"
 #include "render/IblTextures.h"
 
 namespace facet {
@@ -32,6 +33,18 @@ double dielectricAverageAlbedoFor(const Project& project)
     const MaterialBrdf brdf(shading, *table);
     return brdf.dielectricSpecularAverageAlbedo(shading::f0FromIor(project.material.ior),
                                                 project.material.roughness());
+}
+
+bool addDfgTables(IblPrecompute& precompute, const IblSettings& settings, RenderScene& scene, IblStats* stats,
+    std::string* error)
+{
+    for (Visibility visibility : dfgVisibilitiesFor(scene)) {
+        const std::shared_ptr<const DfgLut> table = precompute.dfgTable(settings, visibility, stats, error);
+        if (!table)
+            return false;
+        scene.environment.setDfgLut(table);
+    }
+    return true;
 }
 
 RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets,
