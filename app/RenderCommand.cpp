@@ -367,11 +367,15 @@ int runGpu(const RenderRequest& request)
             std::fprintf(stderr, "facet render: %s\n", error.c_str());
             return RenderCommand::kExitFailure;
         }
+
+        RenderScene scene
+            = sceneFromProject(project, *assets, ibl, sceneOptionsFor(*settings, request.referenceView));
+        if (!addDfgTables(precompute, *settings, scene, &iblStats, &error)) {
+            std::fprintf(stderr, "facet render: %s\n", error.c_str());
+            return RenderCommand::kExitFailure;
+        }
         if (!precompute.lastWarning().empty())
             std::fprintf(stderr, "facet render: %s\n", precompute.lastWarning().c_str());
-
-        const RenderScene scene
-            = sceneFromProject(project, *assets, ibl, sceneOptionsFor(*settings, request.referenceView));
 
         Renderer renderer;
         renderer.setTimingEnabled(request.printStats);

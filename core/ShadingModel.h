@@ -23,6 +23,11 @@ enum class Visibility {
     SmithGGXUncorrelated, // separable Smith-GGX
     SchlickGGX,           // separable Smith with the Schlick-GGX G1 (k = (r+1)^2/8 lights, alpha/2 IBL)
 };
+// Every Visibility, in declaration order (int(v) indexes arrays of per-visibility data, e.g. the
+// split-sum tables of render/RenderScene.h EnvironmentLighting).
+inline constexpr int kVisibilityCount = 3;
+inline constexpr Visibility kAllVisibilities[kVisibilityCount]
+    = {Visibility::SmithGGXCorrelated, Visibility::SmithGGXUncorrelated, Visibility::SchlickGGX};
 
 // Fresnel term for the specular lobe.
 enum class Fresnel {

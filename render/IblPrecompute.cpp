@@ -151,7 +151,6 @@ struct IblPrecompute::Programs {
     ShaderProgram prefilterCopy;
     ShaderProgram prefilter;
     ShaderProgram irradiance;
-    ShaderProgram dfg;
 };
 
 IblPrecompute::IblPrecompute(QString cacheDirectory, bool useDiskCache)
@@ -165,6 +164,8 @@ IblPrecompute::~IblPrecompute()
     m_memory.clear();
     m_dfg.clear();
     m_programs.reset();
+    for (auto& program : m_dfgPrograms)
+        program.reset();
     if (m_vertexArray)
         glDeleteVertexArrays(1, &m_vertexArray);
     if (m_framebuffer)
@@ -200,8 +201,7 @@ bool IblPrecompute::ensurePrograms(std::string* error)
     if (!make(programs->equirectToCube, "iblEquirectToCube", "ibl_equirect_to_cube.frag", {})
         || !make(programs->prefilterCopy, "iblPrefilterCopy", "ibl_prefilter.frag", {"PREFILTER_COPY"})
         || !make(programs->prefilter, "iblPrefilter", "ibl_prefilter.frag", {})
-        || !make(programs->irradiance, "iblIrradiance", "ibl_irradiance.frag", {})
-        || !make(programs->dfg, "iblDfg", "ibl_dfg.frag", {})) {
+        || !make(programs->irradiance, "iblIrradiance", "ibl_irradiance.frag", {})) {
         if (error)
             *error = "IblPrecompute::prepare: " + *error;
         return false;
@@ -210,24 +210,59 @@ bool IblPrecompute::ensurePrograms(std::string* error)
                              &programs->irradiance})
         p->setInt("uEnvironment", 0), p->setInt("uEquirect", 0);
     m_programs = std::move(programs);
+    ensureDrawObjects();
+    return true;
+}
+
+void IblPrecompute::ensureDrawObjects()
+{
     if (!m_vertexArray)
         glGenVertexArrays(1, &m_vertexArray);
     if (!m_framebuffer)
         glGenFramebuffers(1, &m_framebuffer);
-    return true;
+}
+
+const ShaderProgram* IblPrecompute::dfgProgram(Visibility visibility, std::string* error)
+{
+    // ibl_dfg.frag's DFG_VISIBILITY values, spelled out so that reordering the enum cannot
+    // silently select another term.
+    const char* define = "DFG_VISIBILITY 0";
+    switch (visibility) {
+    case Visibility::SmithGGXCorrelated: define = "DFG_VISIBILITY 0"; break;
+    case Visibility::SmithGGXUncorrelated: define = "DFG_VISIBILITY 1"; break;
+    case Visibility::SchlickGGX: define = "DFG_VISIBILITY 2"; break;
+    }
+    std::unique_ptr<ShaderProgram>& slot = m_dfgPrograms[std::size_t(visibility)];
+    if (!slot) {
+        std::string message;
+        std::optional<ShaderProgram> program
+            = ShaderProgram::create(std::string("iblDfg-") + toString(visibility),
+                {{ShaderStageSource::Stage::Vertex, "ibl_fullscreen.vert"},
+                    {ShaderStageSource::Stage::Fragment, "ibl_dfg.frag"}},
+                {define}, &message);
+        if (!program) {
+            if (error)
+                *error = "IblPrecompute::dfgTable: " + message;
+            return nullptr;
+        }
+        slot = std::make_unique<ShaderProgram>(std::move(*program));
+    }
+    return slot.get();
 }
 
 namespace {
 
 // Renders one full-viewport triangle into `level` of `face` (-1: a 2D texture) of `texture`.
-bool drawInto(const GLTexture& texture, int face, int level, int size, std::string* error)
+// `caller` prefixes the error ("IblPrecompute::prepare").
+bool drawInto(const GLTexture& texture, int face, int level, int size, std::string* error,
+              const char* caller = "IblPrecompute::prepare")
 {
     const GLenum target = face < 0 ? GLenum(GL_TEXTURE_2D) : GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, texture.id(), level);
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         if (error)
-            *error = "IblPrecompute::prepare: framebuffer incomplete (status " + std::to_string(status)
+            *error = std::string(caller) + ": framebuffer incomplete (status " + std::to_string(status)
                 + ") rendering into level " + std::to_string(level);
         return false;
     }
@@ -238,12 +273,29 @@ bool drawInto(const GLTexture& texture, int face, int level, int size, std::stri
 
 } // namespace
 
-std::shared_ptr<const GLTexture> IblPrecompute::prepareDfg(const IblSettings& settings, IblStats* stats,
-                                                           std::string* error)
+std::shared_ptr<const DfgLut> IblPrecompute::dfgTable(
+    const IblSettings& requested, Visibility visibility, IblStats* stats, std::string* error)
 {
-    const std::uint64_t key = IblDiskCache::key(0, settings.dfgHash());
+    const Clock::time_point start = Clock::now();
+    IblStats ignored;
+    if (!stats)
+        stats = &ignored;
+    auto finish = [&](std::shared_ptr<const DfgLut> result) {
+        stats->msTotal += msSince(start);
+        return result;
+    };
+    const IblSettings settings = requested.sanitized();
+    // One key for memory and disk, and it holds the visibility: a table made for another V is
+    // never found under this one.
+    const std::uint64_t key = IblDiskCache::key(0, settings.dfgHash(visibility));
     if (const auto it = m_dfg.find(key); it != m_dfg.end())
-        return it->second;
+        return finish(it->second);
+
+    auto lut = std::make_shared<DfgLut>();
+    lut->size = settings.dfgSize;
+    lut->sampleCount = settings.dfgSamples;
+    lut->visibility = visibility;
+    GLStateGuard guard;
     const IblDiskCache disk(m_cacheDirectory);
     if (m_useDiskCache) {
         std::string warning;
@@ -251,26 +303,43 @@ std::shared_ptr<const GLTexture> IblPrecompute::prepareDfg(const IblSettings& se
         if (!warning.empty())
             warn(warning);
         if (entry && entry->layers.size() == 1 && entry->layers[0].width == settings.dfgSize
-            && entry->layers[0].height == settings.dfgSize && entry->layers[0].format == IblCacheLayer::Format::Half) {
-            auto texture = makeDfgTexture(settings.dfgSize, entry->layers[0].half.data());
+            && entry->layers[0].height == settings.dfgSize && entry->layers[0].faces == 1
+            && entry->layers[0].format == IblCacheLayer::Format::Half) {
+            lut->texture = makeDfgTexture(settings.dfgSize, entry->layers[0].half.data());
             ++stats->cacheHitsDisk;
-            m_dfg[key] = texture;
-            return texture;
+            m_dfg[key] = lut;
+            return finish(lut);
         }
         if (entry)
             warn("IblDiskCache: " + disk.pathFor(key).toStdString() + ": unexpected layout; ignoring it");
     }
-    const Clock::time_point start = Clock::now();
+
+    const ShaderProgram* program = dfgProgram(visibility, error);
+    if (!program)
+        return nullptr;
+    ensureDrawObjects();
+    glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer);
+    glBindVertexArray(m_vertexArray);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    const Clock::time_point passStart = Clock::now();
     auto texture = makeDfgTexture(settings.dfgSize);
-    m_programs->dfg.use();
-    m_programs->dfg.setInt("uSize", settings.dfgSize);
-    m_programs->dfg.setInt("uSampleCount", settings.dfgSamples);
-    if (!drawInto(*texture, -1, 0, settings.dfgSize, error))
+    program->use();
+    program->setInt("uSize", settings.dfgSize);
+    program->setInt("uSampleCount", settings.dfgSamples);
+    if (!drawInto(*texture, -1, 0, settings.dfgSize, error, "IblPrecompute::dfgTable"))
         return nullptr;
     glFinish();
-    stats->msDfg = msSince(start);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
+    if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
+        if (error)
+            *error = "IblPrecompute::dfgTable: " + glErrorText(glError) + " during the pass";
+        return nullptr;
+    }
+    stats->msDfg += msSince(passStart);
     ++stats->passesRun;
-    m_dfg[key] = texture;
+    lut->texture = texture;
+    m_dfg[key] = lut;
     if (m_useDiskCache) {
         IblCacheEntry entry;
         IblCacheLayer layer;
@@ -280,7 +349,7 @@ std::shared_ptr<const GLTexture> IblPrecompute::prepareDfg(const IblSettings& se
         if (!disk.store(key, entry, &storeError))
             warn(storeError);
     }
-    return texture;
+    return finish(lut);
 }
 
 std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& environment, const IblSettings& requested,
@@ -329,11 +398,6 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
     result->prefilteredSize = settings.prefilterSize;
     result->prefilteredMipLevels = settings.prefilterMipLevels;
     result->irradianceSize = settings.irradianceSize;
-    result->dfgSize = settings.dfgSize;
-
-    result->dfg = prepareDfg(settings, stats, error);
-    if (!result->dfg)
-        return nullptr;
 
     // 2. Disk.
     const IblDiskCache disk(m_cacheDirectory);

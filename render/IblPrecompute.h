@@ -1,8 +1,10 @@
 #pragma once
 // The image-based-lighting precompute on the GPU (OpenGL 4.1 core, fragment-shader passes that
 // render into cubemap faces and mip levels; no compute shaders). For an environment and
-// IblSettings it produces IblTextures: the environment cubemap, the prefiltered specular
-// cubemap, the irradiance cubemap, the DFG LUT and the SH9 irradiance coefficients.
+// IblSettings, prepare() produces IblTextures: the environment cubemap, the prefiltered specular
+// cubemap, the irradiance cubemap and the SH9 irradiance coefficients. For IblSettings and a
+// visibility term V, dfgTable() produces the split-sum DFG LUT integrated with that V (a frame
+// needs one per V its materials use: render/RenderScene.h EnvironmentLighting).
 // docs/ibl.md has each pass's equations, the layouts, the cache and measured numbers; the CPU
 // twins are core/Prefilter.h, core/Irradiance.h, core/DfgTable.h, core/SphericalHarmonics.h.
 //
@@ -11,18 +13,21 @@
 //
 // Caching by content: results are keyed by (Environment::contentHash(), IblSettings::hash()),
 // kept in memory (the last kMemoryEntries) and on disk (core/IblDiskCache, $FACET_CACHE_DIR or
-// QStandardPaths::CacheLocation/ibl). The DFG LUT depends on the settings only and is cached
-// separately (memory and disk), shared by every environment's IblTextures.
+// QStandardPaths::CacheLocation/ibl). A DFG LUT is keyed by IblSettings::dfgHash(visibility)
+// (its size, samples and V; no environment), in memory for the object's life and on disk.
 //
 // Threading and lifetime: every call needs the same GL context (or one sharing with it)
 // current; destroy the IblPrecompute and drop every IblTextures with it current.
 
 #include "core/Environment.h"
+#include "core/ShadingModel.h"
+#include "render/DfgLut.h"
 #include "render/IblSettings.h"
 #include "render/IblTextures.h"
 
 #include <QString>
 
+#include <array>
 #include <cstdint>
 #include <list>
 #include <map>
@@ -31,19 +36,21 @@
 
 namespace facet {
 
-// What one prepare() call did. Times in milliseconds, measured with glFinish() before reading
-// the clock at the end of each pass (GPU work is asynchronous: without it a pass would look free
-// and the next one would pay for it). A pass skipped thanks to a cache counts 0 ms.
+// What one prepare() call, and the dfgTable() calls after it, did: prepare() resets it, dfgTable()
+// adds to it, so one IblStats describes an environment and the tables of its frame. Times in
+// milliseconds, measured with glFinish() before reading the clock at the end of each pass (GPU
+// work is asynchronous: without it a pass would look free and the next one would pay for it). A
+// pass skipped thanks to a cache counts 0 ms.
 struct IblStats {
-    int passesRun = 0;       // GPU passes run: equirect->cube, prefilter, irradiance, DFG (0..4)
+    int passesRun = 0; // equirect->cube, prefilter, irradiance (0..3), + 1 per DFG LUT made
     int cacheHitsMemory = 0; // 1 when the environment's textures came from the memory cache
-    int cacheHitsDisk = 0;   // environment entry and/or DFG LUT loaded from disk (0..2)
+    int cacheHitsDisk = 0; // environment entry (0..1) + DFG LUTs loaded from disk
     double msEquirectToCube = 0.0; // upload + resample + mip generation
     double msPrefilter = 0.0;
     double msIrradiance = 0.0;
-    double msDfg = 0.0;
+    double msDfg = 0.0; // every DFG LUT made
     double msSh = 0.0;             // SH9 projection on the CPU
-    double msTotal = 0.0;          // the whole call, including cache look-ups and disk I/O
+    double msTotal = 0.0; // the whole calls, including cache look-ups and disk I/O
 };
 
 class ShaderProgram;
@@ -65,6 +72,16 @@ public:
     std::shared_ptr<const IblTextures> prepare(const Environment& environment, const IblSettings& settings,
                                                IblStats* stats, std::string* error);
 
+    // The split-sum DFG LUT of `settings` (dfgSize, dfgSamples) integrated with `visibility`
+    // (ibl_dfg.frag with DFG_VISIBILITY; CPU twin DfgTable::compute(size, samples, visibility)).
+    // The variant is an argument, not a default, like Filament's CubemapIBL::DFG(js, dst,
+    // multiscatter, cloth), and part of the key (IblSettings::dfgHash), so a material is never
+    // shaded with another V's table. Needs a current GL 4.1 core context only when the table is
+    // in no cache. Returns the cached table when there is one. On failure returns null and sets
+    // `error` to "IblPrecompute::dfgTable: <problem>". `stats` (optional) is ADDED to, not reset.
+    std::shared_ptr<const DfgLut> dfgTable(
+        const IblSettings& settings, Visibility visibility, IblStats* stats, std::string* error);
+
     // Drops the in-memory results (the disk cache stays): the next prepare() reads the disk.
     void clearMemoryCache();
     // The last warning (e.g. a corrupt disk-cache file that was ignored); also sent to qWarning().
@@ -74,16 +91,19 @@ public:
 private:
     struct Programs;
     bool ensurePrograms(std::string* error);
-    std::shared_ptr<const GLTexture> prepareDfg(const IblSettings& settings, IblStats* stats, std::string* error);
+    // The DFG program for `visibility`, compiled on first use (a disk hit compiles nothing).
+    const ShaderProgram* dfgProgram(Visibility visibility, std::string* error);
+    void ensureDrawObjects();
     void warn(const std::string& message);
 
     QString m_cacheDirectory;
     bool m_useDiskCache = true;
     std::unique_ptr<Programs> m_programs;
+    std::array<std::unique_ptr<ShaderProgram>, kVisibilityCount> m_dfgPrograms; // by int(Visibility)
     unsigned m_vertexArray = 0;
     unsigned m_framebuffer = 0;
     std::list<std::pair<std::uint64_t, std::shared_ptr<const IblTextures>>> m_memory; // most recent first
-    std::map<std::uint64_t, std::shared_ptr<const GLTexture>> m_dfg;
+    std::map<std::uint64_t, std::shared_ptr<const DfgLut>> m_dfg; // by IblDiskCache::key(0, dfgHash(V))
     std::string m_lastWarning;
 };
 

@@ -19,7 +19,9 @@ std::uint64_t fnv1a(std::uint64_t hash, std::int32_t value)
 
 constexpr std::uint64_t kFnvOffset = 0xcbf29ce484222325ULL;
 // Bumped whenever a pass's algorithm changes, so that old disk-cache files stop matching.
-constexpr std::int32_t kAlgorithmVersion = 2; // 2: roughness-to-level map r (2 - r)
+// 2: roughness-to-level map r (2 - r); 3: the DFG key holds the visibility term (version 2's DFG
+// entries were all height-correlated Smith whatever the material's V).
+constexpr std::int32_t kAlgorithmVersion = 3;
 
 int mipChainLength(int size) { return std::bit_width(unsigned(std::max(size, 1))); }
 
@@ -34,12 +36,17 @@ std::uint64_t IblSettings::hash() const
     return h;
 }
 
-std::uint64_t IblSettings::dfgHash() const
+std::uint64_t IblSettings::dfgHash(Visibility visibility) const
 {
+    // The visibility by its name's bytes, not int(visibility): reordering the enum must not
+    // make one variant's disk entries answer for another's.
     std::uint64_t h = fnv1a(kFnvOffset, kAlgorithmVersion);
     h = fnv1a(h, 0x44464700); // "DFG": a different key space from hash()
     h = fnv1a(h, dfgSize);
-    return fnv1a(h, dfgSamples);
+    h = fnv1a(h, dfgSamples);
+    for (const char* c = toString(visibility); *c; ++c)
+        h = fnv1a(h, std::int32_t(static_cast<unsigned char>(*c)));
+    return h;
 }
 
 IblSettings IblSettings::sanitized() const

@@ -1,8 +1,12 @@
 #pragma once
 // Quality settings of the IBL precompute (render/IblPrecompute.h). Every field changes the
 // result, so every field is part of hash(), the cache key (with the environment's content hash).
-// Rotation and intensity are NOT settings: they are applied at shading time, never baked.
+// Rotation and intensity are NOT settings: they are applied at shading time, never baked. The
+// split-sum DFG table's variant (the material's Visibility) is not a setting either: it is an
+// argument of every DFG call and of its key, dfgHash(visibility), so no caller can leave it out.
 // docs/ibl.md lists the presets and their measured times and errors.
+
+#include "core/ShadingModel.h"
 
 #include <cstdint>
 #include <optional>
@@ -32,8 +36,11 @@ struct IblSettings {
     bool operator==(const IblSettings&) const = default;
     // FNV-1a 64 over every field (as int32, little-endian order of declaration): stable across runs.
     std::uint64_t hash() const;
-    // Only the fields the DFG LUT depends on (dfgSize, dfgSamples): the LUT is cached per this.
-    std::uint64_t dfgHash() const;
+    // The key of one DFG LUT: the fields it depends on (dfgSize, dfgSamples) and the visibility
+    // term V it is integrated with [as Filament's CubemapIBL::DFG(js, dst, multiscatter, cloth)
+    // takes its variant]: one table per (settings, V), in memory and on disk. Another V's table
+    // put 11% RMSE (21% near the silhouette) on a LearnOpenGL metal (docs/ibl.md, "DFG LUT").
+    std::uint64_t dfgHash(Visibility visibility) const;
 
     // Clamps every field into its valid range (sizes >= 1, levels within the size's mip chain,
     // samples >= 1); prepare() works on the sanitised copy.

@@ -1,9 +1,10 @@
 #pragma once
-// What the surface shader consumes from the IBL precompute (render/IblPrecompute.h). A plain
-// struct of shared, immutable GL textures: IblPrecompute's cache and any number of renderers may
-// hold the same IblTextures (std::shared_ptr<const IblTextures>); the textures are deleted when
-// the last holder lets go, which must happen with the GL context current. The DFG LUT depends on
-// the settings only, so IblTextures of different environments share one.
+// What the surface shader consumes from the IBL precompute (render/IblPrecompute.h) for one
+// environment. A plain struct of shared, immutable GL textures: IblPrecompute's cache and any
+// number of renderers may hold the same IblTextures (std::shared_ptr<const IblTextures>); the
+// textures are deleted when the last holder lets go, which must happen with the GL context
+// current. The split-sum DFG LUT is not here: it depends on the material's visibility term, not
+// on the environment, and comes from IblPrecompute::dfgTable (render/DfgLut.h), one per variant.
 //
 // Everything is in the environment IMAGE's frame, unrotated, at intensity 1: the renderer turns
 // a world lookup direction into the image frame (Environment::toImageFrame, a rotation about +Y)
@@ -41,12 +42,6 @@ struct IblTextures {
     std::shared_ptr<const GLTexture> irradiance;
     int irradianceSize = 0;
 
-    // GL_TEXTURE_2D, RGBA16F, dfgSize^2: R = scale, G = bias, B = scale + bias (core/DfgTable.h),
-    // x = n.v, y = perceptual roughness; texel i holds the value at i / (N - 1), row 0 (t = 0)
-    // is roughness 0. LINEAR, CLAMP_TO_EDGE; read it at dfgTexCoord(n.v, r, N).
-    std::shared_ptr<const GLTexture> dfg;
-    int dfgSize = 0;
-
     // SH9 irradiance coefficients, premultiplied by the cosine-lobe A_l (core/SphericalHarmonics.h
     // IrradianceSH9), in the image frame: uniform vec3 uIrradianceSH[9] of irradianceSH(n), which
     // gives E(n) (not divided by pi) like the irradiance map.
@@ -55,7 +50,6 @@ struct IblTextures {
     unsigned environmentCubemap() const { return environment ? environment->id() : 0; }
     unsigned prefilteredCubemap() const { return prefiltered ? prefiltered->id() : 0; }
     unsigned irradianceCubemap() const { return irradiance ? irradiance->id() : 0; }
-    unsigned dfgLut() const { return dfg ? dfg->id() : 0; }
 };
 
 // Level of the prefiltered cubemap for a perceptual roughness r; GLSL twin of the same name in

@@ -5,6 +5,7 @@
 // No GL header here: GL objects that the scene refers to (the IBL textures of
 // render/IblPrecompute) travel as plain names.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -20,6 +21,8 @@
 #include "core/Material.h"
 #include "core/Mesh.h"
 #include "core/Project.h"
+#include "core/ShadingModel.h"
+#include "render/DfgLut.h"
 #include "render/IblTextures.h"
 
 namespace facet {
@@ -32,27 +35,59 @@ struct RenderMapImage {
     std::int64_t timestamp = 0;         // file modification time (any unit, e.g. ms since epoch)
 };
 
+// One split-sum DFG table as the renderer binds it (render/DfgLut.h has the layout).
+struct DfgLutBinding {
+    unsigned texture = 0; // GL_TEXTURE_2D, RGB = scale, bias, E (core/DfgTable.h layout), LINEAR; 0: none
+    int size = 0;
+};
+
 // The IBL textures of the environment (render/IblTextures.h, made by render/IblPrecompute), as
-// GL names owned by whoever made them (or by `textures`); they must outlive the render() call.
-// Tests build tiny ones by hand (a uniform environment needs no precompute).
+// GL names owned by whoever made them (or by `textures` and `dfgTables`); they must outlive the
+// render() call. Tests build tiny ones by hand (a uniform environment needs no precompute).
 struct EnvironmentLighting {
     unsigned environmentCubemap = 0; // radiance, for the background (level 0)
     unsigned prefilteredCubemap = 0; // level i: perceptual roughness i / (levels - 1)
     int prefilteredLevels = 1;
     unsigned irradianceCubemap = 0; // irradiance E (not / pi); unused when useSH
-    unsigned dfgLut = 0;            // RGB = scale, bias, E (core/DfgTable.h layout), LINEAR filtered
-    int dfgSize = 0;
-    // Computed with the visibility term of the material's ShadingModel (the LearnOpenGL variant
-    // needs a Schlick-GGX table); the renderer does not check it.
+    // The split-sum tables by the visibility term V they were integrated with, index int(V): a
+    // table holds integrals of D V F (n.l), so each material needs the one of its own
+    // ShadingModel::visibility, and one frame may hold several. Renderer::render draws a material
+    // only with dfgLutFor(its V) and fails when that is missing: it never falls back to another
+    // V's table (a Schlick-GGX material on the correlated table was 3.5-11% too bright).
+    std::array<DfgLutBinding, kVisibilityCount> dfgLuts {};
     bool useSH = false;
     std::array<glm::vec3, 9> irradianceSH {}; // premultiplied c_i A_l of the UNROTATED environment
     double rotationDegrees = 0.0; // about +Y (Environment::toImageFrame)
     double intensity = 1.0;       // linear radiance multiplier
-    // Keeps the textures above alive while the scene is held (optional).
+    // Keep the textures above alive while the scene is held (optional).
     std::shared_ptr<const IblTextures> textures;
+    std::array<std::shared_ptr<const DfgLut>, kVisibilityCount> dfgTables {};
+
+    // The table for materials of visibility term `visibility`; null when the scene has none.
+    const DfgLutBinding* dfgLutFor(Visibility visibility) const
+    {
+        const DfgLutBinding& binding = dfgLuts[std::size_t(visibility)];
+        return binding.texture ? &binding : nullptr;
+    }
+    // A table made by hand (tests): `visibility` is the V it was integrated with.
+    void setDfgLut(Visibility visibility, unsigned texture, int size)
+    {
+        dfgLuts[std::size_t(visibility)] = DfgLutBinding {texture, size};
+        dfgTables[std::size_t(visibility)].reset();
+    }
+    // A table of IblPrecompute::dfgTable: filed under the V it carries, and kept alive.
+    void setDfgLut(const std::shared_ptr<const DfgLut>& table)
+    {
+        if (!table)
+            return;
+        dfgLuts[std::size_t(table->visibility)] = DfgLutBinding {table->id(), table->size};
+        dfgTables[std::size_t(table->visibility)] = table;
+    }
 };
 
-// The lighting of engineer A's precompute result, rotated and scaled as the environment says.
+// The lighting of an IblPrecompute::prepare() result, rotated and scaled as the environment says,
+// with no DFG table yet: add the ones the scene needs with addDfgTables() (render/SceneFromProject.h)
+// or EnvironmentLighting::setDfgLut.
 inline EnvironmentLighting environmentLighting(const std::shared_ptr<const IblTextures>& ibl, double rotationDegrees,
                                                double intensity, bool useSH)
 {
@@ -62,8 +97,6 @@ inline EnvironmentLighting environmentLighting(const std::shared_ptr<const IblTe
         lighting.prefilteredCubemap = ibl->prefilteredCubemap();
         lighting.prefilteredLevels = ibl->prefilteredMipLevels;
         lighting.irradianceCubemap = ibl->irradianceCubemap();
-        lighting.dfgLut = ibl->dfgLut();
-        lighting.dfgSize = ibl->dfgSize;
         lighting.irradianceSH = ibl->irradianceSH;
         lighting.textures = ibl;
     }
@@ -112,5 +145,24 @@ struct RenderScene {
     }
     bool isPartVisible(std::size_t part) const { return part >= parts.size() || parts[part].visible; }
 };
+
+// The visibility terms whose split-sum table a frame of `scene` needs (the
+// ShadingModel::visibility of each material a visible part draws with), without repeats: what a
+// caller asks IblPrecompute::dfgTable for and Renderer::render looks up.
+inline std::vector<Visibility> dfgVisibilitiesFor(const RenderScene& scene)
+{
+    std::vector<Visibility> needed;
+    if (!scene.mesh || scene.mesh->indices.empty())
+        return needed;
+    const std::size_t partCount = std::max<std::size_t>(scene.mesh->subMeshes.size(), 1);
+    for (std::size_t p = 0; p < partCount; ++p) {
+        if (!scene.isPartVisible(p))
+            continue;
+        const Visibility v = scene.materials[std::size_t(scene.materialOfPart(p))].material.shading.visibility;
+        if (std::find(needed.begin(), needed.end(), v) == needed.end())
+            needed.push_back(v);
+    }
+    return needed;
+}
 
 } // namespace facet

@@ -206,6 +206,16 @@ bool Renderer::ensureMsaaTarget(int width, int height, int samples, bool fullFlo
 bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::string* error)
 {
     m_frame = {};
+    // The split-sum table must be the one integrated with each drawn material's own V (another
+    // V's is 3.5-11% off, docs/ibl.md): a scene without it is refused, never drawn with a stand-in.
+    for (const Visibility visibility : dfgVisibilitiesFor(scene))
+        if (!scene.environment.dfgLutFor(visibility)) {
+            const std::string name = toString(visibility);
+            if (error)
+                *error = "Renderer::render: the scene has no split-sum DFG table for the visibility term '" + name
+                    + "' of its material (EnvironmentLighting::setDfgLut, addDfgTables)";
+            return false;
+        }
     const int width = hdrTarget.width();
     const int height = hdrTarget.height();
     const bool fullFloat = hdrTarget.format() == FramebufferFormat::RGBA32F;
@@ -311,10 +321,6 @@ void Renderer::setFrameUniforms(const ShaderProgram& program, const SurfaceVaria
     setVec3(program, "uCameraPosition", scene.camera.position);
     program.setFloat("uMaxRadiance", m_maxRadiance);
 
-    glActiveTexture(GL_TEXTURE0 + kDfgUnit);
-    glBindTexture(GL_TEXTURE_2D, env.dfgLut);
-    program.setInt("uDfgLut", kDfgUnit);
-    program.setFloat("uDfgSize", float(std::max(env.dfgSize, 1)));
     glActiveTexture(GL_TEXTURE0 + kPrefilteredUnit);
     glBindTexture(GL_TEXTURE_CUBE_MAP, env.prefilteredCubemap);
     program.setInt("uPrefilteredMap", kPrefilteredUnit);
@@ -357,7 +363,7 @@ void Renderer::setFrameUniforms(const ShaderProgram& program, const SurfaceVaria
 // The material's factors, per-map options and textures (core/Material.h: what each slot's factor
 // means), and its face culling.
 void Renderer::setMaterialUniforms(const ShaderProgram& program, const SurfaceVariantKey& key,
-                                   const RenderMaterial& renderMaterial)
+                                   const RenderMaterial& renderMaterial, const EnvironmentLighting& env)
 {
     const Material& material = renderMaterial.material;
     const glm::dvec4 base = material.baseColorFactor();
@@ -394,6 +400,12 @@ void Renderer::setMaterialUniforms(const ShaderProgram& program, const SurfaceVa
         glBindTexture(GL_TEXTURE_2D, texture);
         program.setInt(kMapSamplers[std::size_t(i)], kMapUnit0 + i);
     }
+    // The split-sum table of the material's own visibility term (render() checked it is there).
+    const DfgLutBinding* dfg = env.dfgLutFor(material.shading.visibility);
+    glActiveTexture(GL_TEXTURE0 + kDfgUnit);
+    glBindTexture(GL_TEXTURE_2D, dfg ? dfg->texture : 0);
+    program.setInt("uDfgLut", kDfgUnit);
+    program.setFloat("uDfgSize", float(std::max(dfg ? dfg->size : 1, 1)));
     // Two-sided materials show the inside of open meshes (the shader flips the normal); glTF's
     // single-sided ones cull the faces seen from behind (counter-clockwise is the front).
     if (material.doubleSided) {
@@ -503,7 +515,7 @@ bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, con
                 setFrameUniforms(*program, draw.key, scene, view, projection);
                 current = program;
             }
-            setMaterialUniforms(*program, draw.key, scene.materials[std::size_t(draw.material)]);
+            setMaterialUniforms(*program, draw.key, scene.materials[std::size_t(draw.material)], scene.environment);
             currentMaterial = draw.material;
         }
         m_frame.drawCalls += m_mesh->drawRange(draw.firstIndex, draw.indexCount);

@@ -36,7 +36,9 @@ public:
     // Draws the scene into `hdrTarget` (its size is the viewport; aspect from it): background,
     // then the mesh with the scene's surface variant, into an MSAA target resolved into
     // `hdrTarget` when view.msaaSamples > 1. False with *error ("Renderer::render: ...") when a
-    // program does not compile or the MSAA target cannot be made; nothing is drawn then.
+    // program does not compile or the MSAA target cannot be made; nothing is drawn then. Each
+    // material is shaded with the DFG table of its own visibility term
+    // (EnvironmentLighting::dfgLutFor): a scene without it is refused before anything is drawn.
     bool render(const RenderScene& scene, Framebuffer& hdrTarget, std::string* error);
 
     // Display transform of `hdr` into `output` (same size). Writes display-encoded values.
@@ -61,7 +63,7 @@ private:
     void setFrameUniforms(const ShaderProgram& program, const SurfaceVariantKey& key, const RenderScene& scene,
                           const glm::dmat4& view, const glm::dmat4& projection);
     void setMaterialUniforms(const ShaderProgram& program, const SurfaceVariantKey& key,
-                             const RenderMaterial& material);
+                             const RenderMaterial& material, const EnvironmentLighting& environment);
     void updatePartCentres(const Mesh& mesh);
     bool drawSurface(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection, SurfacePass pass,
                      std::string* error);

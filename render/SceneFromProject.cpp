@@ -8,6 +8,7 @@
 #include "core/MaterialBrdf.h"
 #include "core/Project.h"
 #include "core/ProjectAssets.h"
+#include "render/IblPrecompute.h"
 #include "render/IblTextures.h"
 
 namespace facet {
@@ -31,6 +32,18 @@ double dielectricAverageAlbedoFor(const Material& material)
     }
     const MaterialBrdf brdf(shading, *table);
     return brdf.dielectricSpecularAverageAlbedo(shading::f0FromIor(material.ior), material.roughness());
+}
+
+bool addDfgTables(IblPrecompute& precompute, const IblSettings& settings, RenderScene& scene, IblStats* stats,
+    std::string* error)
+{
+    for (Visibility visibility : dfgVisibilitiesFor(scene)) {
+        const std::shared_ptr<const DfgLut> table = precompute.dfgTable(settings, visibility, stats, error);
+        if (!table)
+            return false;
+        scene.environment.setDfgLut(table);
+    }
+    return true;
 }
 
 RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets,

@@ -4,6 +4,7 @@
 // same thing for the same project.
 
 #include <memory>
+#include <string>
 
 #include "render/RenderScene.h"
 
@@ -13,6 +14,9 @@ struct Material;
 struct Project;
 struct ProjectAssets;
 struct IblTextures;
+struct IblSettings;
+struct IblStats;
+class IblPrecompute;
 
 struct SceneOptions {
     // DESIGN.md's reference view: the reference camera, one sample through each pixel centre
@@ -25,8 +29,17 @@ struct SceneOptions {
 // The frame `project` describes, with `assets` (core/ProjectAssets.h: loadProjectAssets) and the
 // environment's IBL textures `ibl` (render/IblPrecompute; may be null for a background-only or
 // debug frame). Computes the dielectric average albedo the energy-preserving coupling needs.
+// The scene has no split-sum DFG table yet: addDfgTables() below adds the ones it needs.
 RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets,
                              const std::shared_ptr<const IblTextures>& ibl, const SceneOptions& options = {});
+
+// Puts into scene.environment the split-sum DFG table of every visibility term the scene's
+// materials use (dfgVisibilitiesFor), from `precompute` (memory, disk, or one GPU pass each), so
+// that Renderer::render finds the table of each material's own variant. Needs the precompute's
+// GL context current. `stats` (optional) is added to (IblStats). False with *error
+// ("IblPrecompute::dfgTable: ...") when a table cannot be made.
+bool addDfgTables(IblPrecompute& precompute, const IblSettings& settings, RenderScene& scene, IblStats* stats,
+    std::string* error);
 
 // The dielectric layer's average albedo E_s,avg of `material` (0 unless it uses the
 // energy-preserving coupling); cheap after the first call per visibility term.

@@ -105,7 +105,10 @@ private Q_SLOTS:
     void cubemapDirectionTwinsAgree();
     void equirectToCubeMatchesEnvironment();
     void faceOrientation();
+    void dfgMatchesCpuTable_data();
     void dfgMatchesCpuTable();
+    void dfgCacheKeyHoldsVisibility();
+    void dfgDiskCachePerVisibility();
     void whiteFurnace();
     void irradianceAgainstBruteForce();
     void irradianceAgainstBruteForceStudioHdri();
@@ -193,7 +196,7 @@ void IblGLTest::equirectToCubeMatchesEnvironment()
     std::string error;
     const auto ibl = m_ibl->prepare(env, smallSettings(), &stats, &error);
     QVERIFY2(ibl, error.c_str());
-    QCOMPARE(stats.passesRun, 4);
+    QCOMPARE(stats.passesRun, 3); // equirect->cube, prefilter, irradiance (the DFG LUT is dfgTable's)
     double worst = 0.0;
     for (int face = 0; face < 6; ++face) {
         const Level level = readLevel(ibl->environment, face, 0);
@@ -255,29 +258,166 @@ void IblGLTest::faceOrientation()
     }
 }
 
+void IblGLTest::dfgMatchesCpuTable_data()
+{
+    QTest::addColumn<int>("visibility");
+    for (Visibility visibility : kAllVisibilities)
+        QTest::addRow("%s", toString(visibility)) << int(visibility);
+}
+
 void IblGLTest::dfgMatchesCpuTable()
 {
+    // Each variant's GPU table against the CPU table of the SAME variant: a pass that ignored its
+    // visibility (e.g. always DFG_VISIBILITY 0) fails the two other rows by up to 0.25.
+    QFETCH(int, visibility);
+    const Visibility variant = Visibility(visibility);
     const IblSettings settings = smallSettings();
-    const Environment env = Environment::uniform(glm::dvec3(1.0));
     std::string error;
-    const auto ibl = m_ibl->prepare(env, settings, nullptr, &error);
-    QVERIFY2(ibl, error.c_str());
-    const DfgTable table = DfgTable::compute(settings.dfgSize, settings.dfgSamples);
-    const Level lut = readLevel(ibl->dfg, 0, 0);
-    QCOMPARE(lut.width, settings.dfgSize);
+    IblStats stats;
+    const auto lut = m_ibl->dfgTable(settings, variant, &stats, &error);
+    QVERIFY2(lut, error.c_str());
+    // QVERIFY2, not QCOMPARE: QTest would delete[] the static name facet::toString returns.
+    QVERIFY2(lut->visibility == variant, toString(lut->visibility));
+    QCOMPARE(lut->size, settings.dfgSize);
+    QCOMPARE(lut->sampleCount, settings.dfgSamples);
+    const DfgTable table = DfgTable::compute(settings.dfgSize, settings.dfgSamples, variant);
+    const Level level = readLevel(lut->texture, 0, 0);
+    QCOMPARE(level.width, settings.dfgSize);
     double worst = 0.0;
-    for (int y = 0; y < lut.height; ++y)
-        for (int x = 0; x < lut.width; ++x) {
+    double otherVariants = 0.0; // how far the other variants' CPU tables are: what the test can see
+    for (int y = 0; y < level.height; ++y)
+        for (int x = 0; x < level.width; ++x) {
             const DfgValue& cpu = table.texel(x, y);
-            const glm::dvec3 gpu = lut.at(x, y);
+            const glm::dvec3 gpu = level.at(x, y);
             worst = std::max({worst, std::abs(gpu.x - cpu.scale), std::abs(gpu.y - cpu.bias),
                 std::abs(gpu.z - cpu.albedo())});
+            for (Visibility other : kAllVisibilities)
+                if (other != variant)
+                    otherVariants = std::max(otherVariants,
+                        std::abs(gpu.z
+                            - integrateDfg(DfgTable::texelPosition(x, level.width),
+                                DfgTable::texelPosition(y, level.height), settings.dfgSamples, other)
+                                  .albedo()));
         }
-    qInfo("DFG GPU vs CPU (%d^2, %d samples): max abs error %.3g", settings.dfgSize, settings.dfgSamples,
-        worst);
+    qInfo("DFG %s GPU vs CPU (%d^2, %d samples): max abs error %.3g (another V's table: %.3g)",
+        toString(variant), settings.dfgSize, settings.dfgSamples, worst, otherVariants);
     // Same Hammersley points and formulas: what remains is float vs double arithmetic (~1e-6)
     // and half-float storage of values in [0, 1] (2^-11 = 4.9e-4 at 1).
     QVERIFY2(worst < 1e-3, std::to_string(worst).c_str());
+    QVERIFY(otherVariants > 0.05); // the variants differ far beyond the bound: the row can fail
+}
+
+void IblGLTest::dfgCacheKeyHoldsVisibility()
+{
+    // The key of a DFG LUT holds its visibility term: three variants, three keys, three tables in
+    // memory, each made once.
+    const IblSettings settings = smallSettings();
+    const std::uint64_t keys[] = {settings.dfgHash(Visibility::SmithGGXCorrelated),
+        settings.dfgHash(Visibility::SmithGGXUncorrelated), settings.dfgHash(Visibility::SchlickGGX)};
+    QVERIFY(keys[0] != keys[1] && keys[0] != keys[2] && keys[1] != keys[2]);
+    QCOMPARE(settings.dfgHash(Visibility::SchlickGGX), keys[2]); // stable
+    IblSettings moreSamples = settings;
+    moreSamples.dfgSamples *= 2;
+    QVERIFY(moreSamples.dfgHash(Visibility::SchlickGGX) != keys[2]);
+    IblSettings otherPrefilter = settings; // not a DFG input: the same table
+    otherPrefilter.prefilterSamples *= 2;
+    QCOMPARE(otherPrefilter.dfgHash(Visibility::SchlickGGX), keys[2]);
+
+    IblPrecompute ibl(QString(), false);
+    std::string error;
+    std::shared_ptr<const DfgLut> made[kVisibilityCount];
+    for (Visibility visibility : kAllVisibilities) {
+        IblStats stats;
+        made[int(visibility)] = ibl.dfgTable(settings, visibility, &stats, &error);
+        QVERIFY2(made[int(visibility)], error.c_str());
+        QCOMPARE(stats.passesRun, 1); // not the table of a variant asked before
+        QVERIFY2(
+            made[int(visibility)]->visibility == visibility, toString(made[int(visibility)]->visibility));
+    }
+    QVERIFY(
+        made[0]->id() != made[1]->id() && made[0]->id() != made[2]->id() && made[1]->id() != made[2]->id());
+    for (Visibility visibility : kAllVisibilities) {
+        IblStats stats;
+        const auto again = ibl.dfgTable(settings, visibility, &stats, &error);
+        QCOMPARE(again.get(), made[int(visibility)].get()); // memory hit, its own variant
+        QCOMPARE(stats.passesRun, 0);
+    }
+    // The environment's textures do not depend on the variant, and the tables not on the
+    // environment: prepare() runs no DFG pass.
+    IblStats stats;
+    QVERIFY2(ibl.prepare(Environment::uniform(glm::dvec3(1.0)), settings, &stats, &error), error.c_str());
+    QCOMPARE(stats.passesRun, 3);
+    QCOMPARE(stats.msDfg, 0.0);
+}
+
+void IblGLTest::dfgDiskCachePerVisibility()
+{
+    // On disk: one file per variant, read back bit for bit by a fresh precompute, and an entry
+    // written under version 2's key (which had no visibility: always the correlated table) is
+    // never served for any variant.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const IblSettings settings = smallSettings();
+    std::string error;
+    std::vector<std::vector<float>> written;
+    {
+        IblPrecompute writer(dir.path());
+        for (Visibility visibility : kAllVisibilities) {
+            IblStats stats;
+            const auto lut = writer.dfgTable(settings, visibility, &stats, &error);
+            QVERIFY2(lut, error.c_str());
+            QCOMPARE(stats.passesRun, 1);
+            QCOMPARE(stats.cacheHitsDisk, 0);
+            written.push_back(readLevel(lut->texture, 0, 0).rgba);
+            QVERIFY(QFile::exists(
+                IblDiskCache(dir.path()).pathFor(IblDiskCache::key(0, settings.dfgHash(visibility)))));
+        }
+    }
+    QCOMPARE(QDir(dir.path()).entryList({QStringLiteral("*.fibl")}).size(), kVisibilityCount);
+    QVERIFY(written[0] != written[1] && written[0] != written[2] && written[1] != written[2]);
+    {
+        IblPrecompute reader(dir.path());
+        for (Visibility visibility : kAllVisibilities) {
+            IblStats stats;
+            const auto lut = reader.dfgTable(settings, visibility, &stats, &error);
+            QVERIFY2(lut, error.c_str());
+            QCOMPARE(stats.passesRun, 0);
+            QCOMPARE(stats.cacheHitsDisk, 1);
+            QVERIFY2(lut->visibility == visibility, toString(lut->visibility));
+            QVERIFY(readLevel(lut->texture, 0, 0).rgba == written[std::size_t(visibility)]);
+        }
+    }
+
+    // Version 2's key: FNV-1a 64 over int32 (2, "DFG", dfgSize, dfgSamples), no visibility. Put a
+    // valid entry of the correlated table there (what version 2 wrote) in an empty folder.
+    auto fnv = [](std::uint64_t h, std::int32_t value) {
+        for (int i = 0; i < 4; ++i) {
+            h ^= (std::uint32_t(value) >> (8 * i)) & 0xffu;
+            h *= 0x100000001b3ULL;
+        }
+        return h;
+    };
+    std::uint64_t oldHash = fnv(0xcbf29ce484222325ULL, 2);
+    for (std::int32_t v : {0x44464700, settings.dfgSize, settings.dfgSamples})
+        oldHash = fnv(oldHash, v);
+    QTemporaryDir oldDir;
+    QVERIFY(oldDir.isValid());
+    const IblDiskCache oldCache(oldDir.path());
+    IblCacheEntry stale;
+    IblCacheLayer layer;
+    layer.width = layer.height = settings.dfgSize;
+    layer.format = IblCacheLayer::Format::Float;
+    layer.single = written[std::size_t(Visibility::SmithGGXCorrelated)];
+    stale.layers.push_back(layer);
+    QVERIFY2(oldCache.store(IblDiskCache::key(0, oldHash), stale, &error), error.c_str());
+    IblPrecompute upgraded(oldDir.path());
+    for (Visibility visibility : kAllVisibilities) {
+        QVERIFY(IblDiskCache::key(0, settings.dfgHash(visibility)) != IblDiskCache::key(0, oldHash));
+        IblStats stats;
+        QVERIFY2(upgraded.dfgTable(settings, visibility, &stats, &error), error.c_str());
+        QCOMPARE(stats.cacheHitsDisk, 0);
+        QCOMPARE(stats.passesRun, 1);
+    }
 }
 
 void IblGLTest::whiteFurnace()
@@ -544,7 +684,7 @@ void IblGLTest::memoryCacheAndRotationIntensity()
     IblStats stats;
     const auto first = ibl.prepare(env, smallSettings(), &stats, &error);
     QVERIFY2(first, error.c_str());
-    QCOMPARE(stats.passesRun, 4);
+    QCOMPARE(stats.passesRun, 3);
     QCOMPARE(stats.cacheHitsMemory, 0);
 
     const auto second = ibl.prepare(env, smallSettings(), &stats, &error);
@@ -560,12 +700,15 @@ void IblGLTest::memoryCacheAndRotationIntensity()
     QCOMPARE(stats.passesRun, 0);
 
     // Other settings with the same DFG parameters: the DFG LUT is reused, the rest reruns.
+    const auto lut = ibl.dfgTable(smallSettings(), Visibility::SmithGGXCorrelated, &stats, &error);
+    QVERIFY2(lut, error.c_str());
     IblSettings other = smallSettings();
     other.prefilterSamples = 32;
     const auto third = ibl.prepare(env, other, &stats, &error);
     QVERIFY2(third, error.c_str());
     QCOMPARE(stats.passesRun, 3);
-    QCOMPARE(third->dfg.get(), first->dfg.get());
+    QCOMPARE(ibl.dfgTable(other, Visibility::SmithGGXCorrelated, &stats, &error).get(), lut.get());
+    QCOMPARE(stats.passesRun, 3); // added to, and nothing added
     QVERIFY(third.get() != first.get());
 }
 
@@ -578,12 +721,15 @@ void IblGLTest::diskCacheReproducesTexels()
     std::string error;
     IblStats stats;
     std::shared_ptr<const IblTextures> computed;
+    std::shared_ptr<const DfgLut> lut;
     std::vector<std::vector<float>> before;
     {
         IblPrecompute writer; // default directory: $FACET_CACHE_DIR
         QCOMPARE(writer.cacheDirectory(), dir.path());
         computed = writer.prepare(env, smallSettings(), &stats, &error);
         QVERIFY2(computed, error.c_str());
+        lut = writer.dfgTable(smallSettings(), Visibility::SmithGGXCorrelated, &stats, &error);
+        QVERIFY2(lut, error.c_str());
         QCOMPARE(stats.passesRun, 4);
         QCOMPARE(stats.cacheHitsDisk, 0);
         for (int face = 0; face < 6; ++face) {
@@ -592,13 +738,15 @@ void IblGLTest::diskCacheReproducesTexels()
                 before.push_back(readLevel(computed->prefiltered, face, level).rgba);
             before.push_back(readLevel(computed->irradiance, face, 0).rgba);
         }
-        before.push_back(readLevel(computed->dfg, 0, 0).rgba);
+        before.push_back(readLevel(lut->texture, 0, 0).rgba);
     }
     QCOMPARE(QDir(dir.path()).entryList({QStringLiteral("*.fibl")}).size(), 2); // environment + DFG
 
     IblPrecompute reader;
     const auto loaded = reader.prepare(env, smallSettings(), &stats, &error);
     QVERIFY2(loaded, error.c_str());
+    const auto loadedLut = reader.dfgTable(smallSettings(), Visibility::SmithGGXCorrelated, &stats, &error);
+    QVERIFY2(loadedLut, error.c_str());
     QCOMPARE(stats.passesRun, 0);
     QCOMPARE(stats.cacheHitsDisk, 2);
     std::size_t i = 0;
@@ -608,7 +756,7 @@ void IblGLTest::diskCacheReproducesTexels()
             QVERIFY(readLevel(loaded->prefiltered, face, level).rgba == before[i++]);
         QVERIFY(readLevel(loaded->irradiance, face, 0).rgba == before[i++]);
     }
-    QVERIFY(readLevel(loaded->dfg, 0, 0).rgba == before[i++]);
+    QVERIFY(readLevel(loadedLut->texture, 0, 0).rgba == before[i++]);
     QVERIFY(loaded->irradianceSH == computed->irradianceSH);
     qputenv("FACET_CACHE_DIR", m_cacheDir.path().toUtf8());
 }
@@ -633,8 +781,8 @@ void IblGLTest::corruptDiskCacheIsRecomputed()
     QTest::ignoreMessage(QtWarningMsg, QRegularExpression(QStringLiteral("IblDiskCache::load: .*truncated")));
     const auto result = reader.prepare(env, smallSettings(), &stats, &error);
     QVERIFY2(result, error.c_str());
-    QCOMPARE(stats.passesRun, 3); // DFG from disk, the environment's passes rerun
-    QCOMPARE(stats.cacheHitsDisk, 1);
+    QCOMPARE(stats.passesRun, 3); // the environment's passes rerun
+    QCOMPARE(stats.cacheHitsDisk, 0);
     QVERIFY(reader.lastWarning().find("truncated") != std::string::npos);
     // ... and the file was rewritten whole.
     IblPrecompute again(dir.path());
@@ -657,6 +805,7 @@ void IblGLTest::presetTimings()
         IblStats stats;
         std::string error;
         QVERIFY2(ibl.prepare(env, *settings, &stats, &error), error.c_str());
+        QVERIFY2(ibl.dfgTable(*settings, Visibility::SmithGGXCorrelated, &stats, &error), error.c_str());
         qInfo("preset %-7s: equirect->cube %.1f ms, prefilter %.1f ms, irradiance %.1f ms, DFG %.1f ms, "
               "SH9 %.1f ms, total %.1f ms",
             name.c_str(), stats.msEquirectToCube, stats.msPrefilter, stats.msIrradiance, stats.msDfg,

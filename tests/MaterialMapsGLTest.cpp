@@ -312,7 +312,9 @@ std::optional<Image> MaterialMapsGLTest::render(const Project& project, const st
     const auto ibl = m_ibl->prepare(assets->environment, settings, nullptr, error);
     if (!ibl)
         return std::nullopt;
-    const RenderScene scene = sceneFromProject(p, *assets, ibl, sceneOptionsFor(settings, /*referenceView=*/true));
+    RenderScene scene = sceneFromProject(p, *assets, ibl, sceneOptionsFor(settings, /*referenceView=*/true));
+    if (!addDfgTables(*m_ibl, settings, scene, nullptr, error)) // the material's own split-sum table
+        return std::nullopt;
     // A fresh renderer per image: every map is uploaded in this frame, as after opening a project.
     Renderer renderer;
     return renderOffscreen(renderer, scene, kRenderSize, kRenderSize, OffscreenOutput::LinearRadiance, error);

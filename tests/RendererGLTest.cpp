@@ -16,6 +16,7 @@
 #include "core/ReferenceView.h"
 #include "core/SplitSum.h"
 #include "core/ToneMap.h"
+#include "render/DfgLut.h"
 #include "render/Framebuffer.h"
 #include "render/HeadlessGLContext.h"
 #include "render/Renderer.h"
@@ -26,6 +27,7 @@
 #include <QtTest/QTest>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -42,33 +44,47 @@ namespace {
 
 constexpr int kSize = 48;
 
-// GL textures of a uniform environment and a DFG LUT. Deleted with the context current.
+const DfgTable& dfgTable(Visibility visibility)
+{
+    static std::map<Visibility, DfgTable> tables;
+    auto found = tables.find(visibility);
+    if (found == tables.end())
+        found = tables.emplace(visibility, DfgTable::compute(32, 512, visibility)).first;
+    return found->second;
+}
+
+// GL textures of a uniform environment and a DFG LUT per visibility term (each from
+// DfgTable::compute(32, 512, V)). Deleted with the context current.
 struct TinyIbl {
     GLuint radiance = 0; // cubemap, 4x4 faces, one level
     GLuint irradiance = 0; // cubemap, pi L
-    GLuint dfg = 0;
+    std::array<GLuint, kVisibilityCount> dfg {}; // by int(Visibility)
     int dfgSize = 0;
 
-    TinyIbl(const glm::vec3& L, const DfgTable& table)
+    explicit TinyIbl(const glm::vec3& L)
     {
         radiance = uniformCube(L);
         irradiance = uniformCube(L * float(shading::kPi));
-        dfgSize = table.size();
-        const std::vector<float> rgb = table.toRgbFloats();
-        glGenTextures(1, &dfg);
-        glBindTexture(GL_TEXTURE_2D, dfg);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, dfgSize, dfgSize, 0, GL_RGB, GL_FLOAT, rgb.data());
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        for (Visibility visibility : kAllVisibilities) {
+            const DfgTable& table = dfgTable(visibility);
+            dfgSize = table.size();
+            const std::vector<float> rgb = table.toRgbFloats();
+            GLuint& texture = dfg[std::size_t(visibility)];
+            glGenTextures(1, &texture);
+            glBindTexture(GL_TEXTURE_2D, texture);
+            glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, dfgSize, dfgSize, 0, GL_RGB, GL_FLOAT, rgb.data());
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        }
     }
     ~TinyIbl()
     {
         glDeleteTextures(1, &radiance);
         glDeleteTextures(1, &irradiance);
-        glDeleteTextures(1, &dfg);
+        glDeleteTextures(GLsizei(dfg.size()), dfg.data());
     }
     TinyIbl(const TinyIbl&) = delete;
     TinyIbl& operator=(const TinyIbl&) = delete;
@@ -89,6 +105,7 @@ struct TinyIbl {
         return texture;
     }
 
+    // Every visibility term's table, each filed under its own V.
     EnvironmentLighting lighting(double intensity = 1.0) const
     {
         EnvironmentLighting env;
@@ -96,21 +113,12 @@ struct TinyIbl {
         env.prefilteredCubemap = radiance;
         env.prefilteredLevels = 1;
         env.irradianceCubemap = irradiance;
-        env.dfgLut = dfg;
-        env.dfgSize = dfgSize;
+        for (Visibility visibility : kAllVisibilities)
+            env.setDfgLut(visibility, dfg[std::size_t(visibility)], dfgSize);
         env.intensity = intensity;
         return env;
     }
 };
-
-const DfgTable& dfgTable(Visibility visibility)
-{
-    static std::map<Visibility, DfgTable> tables;
-    auto found = tables.find(visibility);
-    if (found == tables.end())
-        found = tables.emplace(visibility, DfgTable::compute(32, 512, visibility)).first;
-    return found->second;
-}
 
 std::shared_ptr<const Mesh> sphereMesh()
 {
@@ -176,6 +184,9 @@ private Q_SLOTS:
     void whiteFurnaceDebugView();
     void splitSumMatchesCpu_data();
     void splitSumMatchesCpu();
+    void missingDfgTableIsRefused_data();
+    void missingDfgTableIsRefused();
+    void dfgTableIsFiledUnderItsVisibility();
     void directLightMatchesCpu();
     void extremesStayFinite();
     void skippedWorkIsCounted();
@@ -304,7 +315,7 @@ void RendererGLTest::toneMappingMatchesCpu()
 void RendererGLTest::whiteFurnaceMetal()
 {
     // A white metal with multi-scatter compensation reflects everything: (scale + bias) M(1) = 1.
-    TinyIbl ibl(glm::vec3(1.0f), dfgTable(Visibility::SmithGGXCorrelated));
+    TinyIbl ibl {glm::vec3(1.0f)};
     RenderScene scene = referenceScene(ibl);
     scene.materials[0].material.setBaseColor(glm::dvec3(1.0));
     scene.materials[0].material.setFactor(MapSlot::Metallic, 1.0);
@@ -326,7 +337,7 @@ void RendererGLTest::whiteFurnaceDebugView()
 {
     // The white-furnace view replaces the environment by radiance 1 and the base colour by white:
     // with the energy-preserving coupling a white dielectric is exactly 1 as well (E_s + 1 - E_s).
-    TinyIbl ibl(glm::vec3(0.3f, 2.0f, 7.0f), dfgTable(Visibility::SmithGGXCorrelated));
+    TinyIbl ibl {glm::vec3(0.3f, 2.0f, 7.0f)};
     RenderScene scene = referenceScene(ibl);
     scene.view.debugView = "white-furnace";
     scene.materials[0].material.setBaseColor(glm::dvec3(0.2, 0.4, 0.1));
@@ -352,7 +363,10 @@ void RendererGLTest::splitSumMatchesCpu_data()
     QTest::addColumn<int>("model");
     QTest::addColumn<double>("metallic");
     QTest::addColumn<double>("roughness");
-    for (int model : {0, 1, 2})
+    // Models: 0 glTF fresnel_mix, 1 glTF energy-preserving, 2 LearnOpenGL (Schlick-GGX V),
+    // 3 glTF with the uncorrelated Smith V. The scene holds every V's table: each model must
+    // read its own (another V's is off by more than the bound at grazing n.v).
+    for (int model : {0, 1, 2, 3})
         for (double metallic : {0.0, 1.0})
             for (double roughness : {0.05, 0.5, 1.0})
                 QTest::addRow("model%d-m%.0f-r%.2f", model, metallic, roughness)
@@ -369,9 +383,11 @@ void RendererGLTest::splitSumMatchesCpu()
         shading.coupling = DielectricCoupling::EnergyPreserving;
     if (model == 2)
         shading = ShadingModel::learnOpenGL();
+    if (model == 3)
+        shading.visibility = Visibility::SmithGGXUncorrelated;
     const DfgTable& table = dfgTable(shading.visibility);
     const glm::vec3 L(0.8f, 1.0f, 1.3f);
-    TinyIbl ibl(L, table);
+    TinyIbl ibl {L};
     RenderScene scene = referenceScene(ibl);
     scene.environment.intensity = 1.5;
     scene.materials[0].material.shading = shading;
@@ -402,11 +418,83 @@ void RendererGLTest::splitSumMatchesCpu()
     QVERIFY2(worst < 0.01, ("relative error " + std::to_string(worst) + " at " + where).c_str());
 }
 
+void RendererGLTest::missingDfgTableIsRefused_data()
+{
+    QTest::addColumn<int>("visibility");
+    for (Visibility visibility : kAllVisibilities)
+        QTest::addRow("%s", toString(visibility)) << int(visibility);
+}
+
+void RendererGLTest::missingDfgTableIsRefused()
+{
+    // A material whose visibility term has no table in the scene is refused, even when the
+    // other variants' tables are there: no frame is drawn with a stand-in table.
+    QFETCH(int, visibility);
+    const Visibility own = Visibility(visibility);
+    TinyIbl ibl {glm::vec3(1.0f)};
+    RenderScene scene = referenceScene(ibl);
+    scene.materials[0].material.shading.visibility = own;
+    scene.environment.setDfgLut(own, 0, 0);
+    std::string error;
+    std::optional<Framebuffer> target = Framebuffer::create(16, 16, FramebufferFormat::RGBA32F, &error);
+    QVERIFY2(target, error.c_str());
+    target->bind();
+    glViewport(0, 0, 16, 16);
+    glClearColor(0.25f, 0.5f, 0.75f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    QVERIFY(!m_renderer->render(scene, *target, &error));
+    QCOMPARE(error,
+        std::string("Renderer::render: the scene has no split-sum DFG table for the visibility term '")
+            + toString(own) + "' of its material (EnvironmentLighting::setDfgLut, addDfgTables)");
+    const Image untouched = target->readPixels();
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x)
+            QVERIFY(untouched.at(x, y) == glm::vec4(0.25f, 0.5f, 0.75f, 1.0f)); // nothing drawn
+
+    // Its own table alone is enough.
+    EnvironmentLighting only = ibl.lighting();
+    for (Visibility other : kAllVisibilities)
+        if (other != own)
+            only.setDfgLut(other, 0, 0);
+    scene.environment = only;
+    QVERIFY2(m_renderer->render(scene, *target, &error), error.c_str());
+    QVERIFY(target->readPixels().at(8, 8) != glm::vec4(0.25f, 0.5f, 0.75f, 1.0f));
+
+    // Nothing to shade, nothing needed: a background-only frame renders without any table.
+    scene.mesh.reset();
+    scene.environment.setDfgLut(own, 0, 0);
+    QVERIFY(dfgVisibilitiesFor(scene).empty());
+    QVERIFY2(m_renderer->render(scene, *target, &error), error.c_str());
+}
+
+void RendererGLTest::dfgTableIsFiledUnderItsVisibility()
+{
+    // A table from IblPrecompute carries its V, and setDfgLut files it there and nowhere else.
+    auto table = std::make_shared<DfgLut>();
+    table->texture = std::make_shared<GLTexture>(GLTexture::create(GL_TEXTURE_2D));
+    table->size = 8;
+    table->visibility = Visibility::SchlickGGX;
+    EnvironmentLighting lighting;
+    lighting.setDfgLut(table);
+    for (Visibility visibility : kAllVisibilities) {
+        const DfgLutBinding* binding = lighting.dfgLutFor(visibility);
+        if (visibility == Visibility::SchlickGGX) {
+            QVERIFY(binding);
+            QCOMPARE(binding->texture, table->id());
+            QCOMPARE(binding->size, 8);
+            QCOMPARE(lighting.dfgTables[std::size_t(visibility)].get(), table.get()); // kept alive
+        } else {
+            QVERIFY2(!binding, toString(visibility));
+        }
+    }
+}
+
 void RendererGLTest::directLightMatchesCpu()
 {
     // Black environment, one directional and one point light: the GPU against MaterialBrdf.
     const DfgTable& table = dfgTable(Visibility::SmithGGXCorrelated);
-    TinyIbl ibl(glm::vec3(0.0f), table);
+    TinyIbl ibl {glm::vec3(0.0f)};
     RenderScene scene = referenceScene(ibl);
     scene.materials[0].material.setBaseColor(glm::dvec3(0.7, 0.3, 0.2));
     scene.materials[0].material.setFactor(MapSlot::Roughness, 0.4);
@@ -461,7 +549,7 @@ void RendererGLTest::extremesStayFinite()
     // Roughness 0 and 1, metallic 0 and 1, radiance 1e-6 and 1e6, with a light: every pixel finite
     // and non-negative, in both target formats (RGBA16F saturates at 65504 instead of +Inf).
     for (float radiance : {1e-6f, 1e6f}) {
-        TinyIbl ibl(glm::vec3(radiance), dfgTable(Visibility::SmithGGXCorrelated));
+        TinyIbl ibl {glm::vec3(radiance)};
         RenderScene scene = referenceScene(ibl);
         Light light;
         light.intensity = 1e6;
@@ -508,7 +596,7 @@ void RendererGLTest::skippedWorkIsCounted()
 {
     // A fresh renderer so that earlier tests' caches do not hide the first compile.
     Renderer renderer;
-    TinyIbl ibl(glm::vec3(1.0f), dfgTable(Visibility::SmithGGXCorrelated));
+    TinyIbl ibl {glm::vec3(1.0f)};
     RenderScene scene = referenceScene(ibl);
     auto image = std::make_shared<Image>(4, 4, glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
     scene.materials[0].material.map(MapSlot::BaseColor).path = "/textures/base.png";
@@ -558,7 +646,7 @@ void RendererGLTest::skippedWorkIsCounted()
 
 void RendererGLTest::baseColorDebugView()
 {
-    TinyIbl ibl(glm::vec3(1.0f), dfgTable(Visibility::SmithGGXCorrelated));
+    TinyIbl ibl {glm::vec3(1.0f)};
     RenderScene scene = referenceScene(ibl);
     scene.view.debugView = "base-color";
     const glm::dvec3 base(0.2, 0.5, 0.8);
@@ -589,7 +677,7 @@ void RendererGLTest::everyFeatureAndDebugViewCompiles()
 {
     // Every map with a texture (normal map: tangent frame), a spot and a point light, SH
     // irradiance, each model switch, and each debug view: compiles, renders finite values.
-    TinyIbl ibl(glm::vec3(1.0f), dfgTable(Visibility::SmithGGXCorrelated));
+    TinyIbl ibl {glm::vec3(1.0f)};
     RenderScene scene = referenceScene(ibl);
     auto texture = std::make_shared<Image>(4, 4, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
     for (MapSlot slot : kAllMapSlots) {
@@ -646,7 +734,7 @@ void RendererGLTest::everyFeatureAndDebugViewCompiles()
 void RendererGLTest::timings()
 {
     // Not a benchmark: prints what one frame costs here, for docs/rendering.md.
-    TinyIbl ibl(glm::vec3(1.0f), dfgTable(Visibility::SmithGGXCorrelated));
+    TinyIbl ibl {glm::vec3(1.0f)};
     RenderScene scene = referenceScene(ibl);
     scene.lights = {Light::defaultDirectional(), Light::defaultDirectional()};
     std::string error;

@@ -108,6 +108,7 @@ private Q_SLOTS:
     void screenshotShowsLitObject();
     void idleWindowDrawsNothing();
     void materialEditRerendersWithoutReloading();
+    void brdfSwitchFetchesItsOwnTable();
     void cameraDragPreviewsThenRefines();
     void cameraKeysAndWheel();
     void turntableDrawsOnlyWhileRunning();
@@ -229,6 +230,33 @@ void ViewportUiTest::materialEditRerendersWithoutReloading()
     undo->trigger();
     QCOMPARE(document->project().material().roughness(), oldRoughness);
     QVERIFY(waitForFrame(m_viewport));
+}
+
+void ViewportUiTest::brdfSwitchFetchesItsOwnTable()
+{
+    // The LearnOpenGL BRDF needs the Schlick-GGX split-sum table (the renderer refuses a frame
+    // without it): the switch loads or makes that one table and nothing else; switching back
+    // finds the glTF table in memory.
+    QVERIFY(waitForFullFrame(m_viewport));
+    Document* document = m_window->document();
+    const SceneController::LoadCounts loadsBefore = m_window->sceneController()->loadCounts();
+    Material material = document->project().material();
+    const ShadingModel gltf = material.shading;
+    QVERIFY(gltf.visibility != Visibility::SchlickGGX);
+    material.shading = ShadingModel::learnOpenGL();
+    document->setMaterial(material, QStringLiteral("BRDF"), MergeId::None);
+    QVERIFY(waitForFrame(m_viewport));
+    QVERIFY2(m_viewport->lastError().isEmpty(), qPrintable(m_viewport->lastError()));
+    const ViewportFrameStats& switched = m_viewport->lastFrameStats();
+    QCOMPARE(switched.ibl.passesRun + switched.ibl.cacheHitsDisk, 1); // the one table
+    QVERIFY(switched.iblMs > 0.0);
+    QCOMPARE(m_window->sceneController()->loadCounts().environments, loadsBefore.environments);
+
+    material.shading = gltf;
+    document->setMaterial(material, QStringLiteral("BRDF"), MergeId::None);
+    QVERIFY(waitForFrame(m_viewport));
+    QVERIFY2(m_viewport->lastError().isEmpty(), qPrintable(m_viewport->lastError()));
+    QCOMPARE(m_viewport->lastFrameStats().iblMs, 0.0); // its table is still in memory
 }
 
 void ViewportUiTest::cameraDragPreviewsThenRefines()

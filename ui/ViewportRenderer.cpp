@@ -5,6 +5,7 @@
 
 #include "render/Framebuffer.h"
 #include "render/Renderer.h"
+#include "render/SceneFromProject.h"
 #include "ui/SceneController.h"
 
 #include <QCoreApplication>
@@ -82,6 +83,7 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
         return false;
     };
 
+    bool iblPrepared = false;
     if (m_iblKey != scene.iblKey()) {
         // A new environment or quality: fetch its IBL textures (memory, disk) or compute them.
         m_iblKey = scene.iblKey();
@@ -92,6 +94,7 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
             = m_precompute->prepare(scene.assets().environment, scene.iblSettings(), &iblStats, &problem);
         m_stats.ibl = iblStats;
         m_stats.iblMs = iblStats.msTotal;
+        iblPrepared = true;
         if (ibl)
             m_ibl = std::move(ibl);
         else
@@ -108,7 +111,21 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
     if (!ensureTarget(m_hdr, renderWidth, renderHeight, &problem))
         return fail(problem);
 
-    const RenderScene frame = scene.scene(m_ibl);
+    RenderScene frame = scene.scene(m_ibl);
+    // The split-sum table of the material's visibility term: a memory hit in IblPrecompute after
+    // the first frame that needed it; a BRDF switch loads or makes one table, nothing else.
+    IblStats dfgStats;
+    if (!addDfgTables(*m_precompute, scene.iblSettings(), frame, &dfgStats, &problem))
+        return fail(problem);
+    if (dfgStats.passesRun > 0 || dfgStats.cacheHitsDisk > 0) {
+        m_stats.iblMs += dfgStats.msTotal;
+        if (!iblPrepared)
+            m_stats.ibl = IblStats {};
+        m_stats.ibl.passesRun += dfgStats.passesRun;
+        m_stats.ibl.cacheHitsDisk += dfgStats.cacheHitsDisk;
+        m_stats.ibl.msDfg += dfgStats.msDfg;
+        m_stats.ibl.msTotal += dfgStats.msTotal;
+    }
     if (!m_renderer->render(frame, *m_hdr, &problem))
         return fail(problem);
     if (!reduced) {

@@ -2,9 +2,11 @@
 // The GPU side of the viewport (not a widget): owns the render::Renderer, the IBL precompute and
 // the HDR target in the viewport's GL context, and draws the SceneController's snapshot into the
 // widget's framebuffer. It runs the IBL precompute only when SceneController::iblKey() changed
-// (a new environment image or quality; the disk cache makes a second start fast) and otherwise
-// only renders. At a scale below 1 it renders and tone-maps a smaller image and stretches it onto
-// the widget (the interactive preview; llvmpipe's cost is per pixel).
+// (a new environment image or quality; the disk cache makes a second start fast), fetches the
+// split-sum DFG table of the material's visibility term when the frame needs one it has not
+// made yet (IblPrecompute caches them per variant), and otherwise only renders. At a scale
+// below 1 it renders and tone-maps a smaller image and stretches it onto the widget (the
+// interactive preview; llvmpipe's cost is per pixel).
 //
 // Every call needs the viewport's context current; destroy it with the context current.
 

@@ -1,7 +1,8 @@
 // The split-sum DFG table on the GPU; twin of core/DfgTable.cpp integrateDfg() (visible-normal
 // sampling, Hammersley points). Texel (x, y) of an N x N target holds n.v = x / (N - 1) and
 // perceptual roughness y / (N - 1) (core/DfgTable.h), R = scale, G = bias, B = scale + bias.
-// DFG_VISIBILITY: 0 SmithGGXCorrelated (default), 1 SmithGGX, 2 SchlickGGX (k = alpha / 2).
+// DFG_VISIBILITY: 0 SmithGGXCorrelated (default), 1 SmithGGX, 2 SchlickGGX (k = alpha / 2); set by
+// IblPrecompute::dfgTable from the Visibility it is asked for (one table per variant).
 #include "common_sampling.glsl"
 #include "brdf_visibility.glsl"
 

@@ -68,7 +68,9 @@ std::optional<Image> ReferenceViewRenderer::render(
     SceneOptions options;
     options.referenceView = true;
     options.irradianceFromSH = settings->irradiance == IblSettings::Irradiance::SH;
-    const RenderScene scene = sceneFromProject(project, *assets, ibl, options);
+    RenderScene scene = sceneFromProject(project, *assets, ibl, options);
+    if (!addDfgTables(*m_state->ibl, *settings, scene, nullptr, error))
+        return std::nullopt;
     auto target = Framebuffer::create(size, size, FramebufferFormat::RGBA32F, error);
     if (!target || !m_state->renderer->render(scene, *target, error))
         return std::nullopt;
