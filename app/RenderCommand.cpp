@@ -12,6 +12,7 @@
 
 #include <chrono>
 
+#include "core/AssetProject.h"
 #include "core/Brdf.h"
 #include "core/DfgTable.h"
 #include "core/GroundTruth.h"
@@ -83,8 +84,9 @@ struct Options {
                                                  &multiScatter, &mesh, &view, &size, &referenceView, &spp, &quality,
                                                  &stats, &output})
             parser.addOption(*option);
-        parser.addPositionalArgument(QStringLiteral("project"), QStringLiteral("Project file (JSON)."),
-                                     QStringLiteral("[PROJECT.json]"));
+        parser.addPositionalArgument(QStringLiteral("input"),
+                                     QStringLiteral("A project file (JSON) or a glTF asset (.gltf, .glb) with its materials."),
+                                     QStringLiteral("[PROJECT.json|ASSET.glb|ASSET.gltf]"));
     }
 };
 
@@ -122,7 +124,7 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
     RenderRequest request;
     const QStringList positional = o.parser.positionalArguments();
     if (positional.size() > 1) {
-        *error = QStringLiteral("too many arguments: expected at most one project file, got '%1'")
+        *error = QStringLiteral("too many arguments: expected at most one project or glTF file, got '%1'")
                      .arg(positional.join(QStringLiteral("' '")));
         return std::nullopt;
     }
@@ -138,11 +140,13 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
         return std::nullopt;
     }
 
-    // The project: the file, or the built-in default.
+    // The project: the file (a project, or a glTF asset with its own materials), or the built-in default.
     if (!positional.isEmpty()) {
         std::string loadError;
         std::string warning;
-        auto project = Project::load(positional.first().toStdString(), &loadError, &warning);
+        const std::string input = positional.first().toStdString();
+        auto project = isAssetFileName(input) ? projectFromAsset(input, &loadError, &warning)
+                                              : Project::load(input, &loadError, &warning);
         if (!project) {
             *error = QString::fromStdString(loadError);
             *exitCode = kExitFailure;
@@ -155,6 +159,11 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
         request.project = Project::defaultProject();
     }
     Project& project = request.project;
+    // --material and the factor flags override every material of the project or asset.
+    const auto everyMaterial = [&project](const auto& edit) {
+        for (Material& material : project.materials)
+            edit(material);
+    };
 
     if (o.parser.isSet(o.env))
         project.environment.source = o.parser.value(o.env).toStdString();
@@ -168,9 +177,11 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
             *error = QStringLiteral("--material: no preset '%1' (built-in: %2)").arg(id, ids.join(QStringLiteral(", ")));
             return std::nullopt;
         }
-        const ShadingModel shading = project.material().shading;
-        project.material() = preset->material;
-        project.material().shading = shading;
+        everyMaterial([preset](Material& material) {
+            const ShadingModel shading = material.shading;
+            material = preset->material;
+            material.shading = shading;
+        });
     }
     if (o.parser.isSet(o.baseColor)) {
         const QStringList parts = o.parser.value(o.baseColor).split(QLatin1Char(','));
@@ -182,31 +193,31 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
         for (int i = 0; i < 3; ++i)
             if (!parseNumber(QStringLiteral("base-color"), parts[i], 0.0, 1.0, &rgb[i], error))
                 return std::nullopt;
-        project.material().setBaseColor(rgb, project.material().baseColorFactor().a);
+        everyMaterial([rgb](Material& material) { material.setBaseColor(rgb, material.baseColorFactor().a); });
     }
     double value = 0.0;
     if (o.parser.isSet(o.metallic)) {
         if (!parseNumber(QStringLiteral("metallic"), o.parser.value(o.metallic), 0.0, 1.0, &value, error))
             return std::nullopt;
-        project.material().setFactor(MapSlot::Metallic, value);
+        everyMaterial([value](Material& material) { material.setFactor(MapSlot::Metallic, value); });
     }
     if (o.parser.isSet(o.roughness)) {
         if (!parseNumber(QStringLiteral("roughness"), o.parser.value(o.roughness), 0.0, 1.0, &value, error))
             return std::nullopt;
-        project.material().setFactor(MapSlot::Roughness, value);
+        everyMaterial([value](Material& material) { material.setFactor(MapSlot::Roughness, value); });
     }
     if (o.parser.isSet(o.brdf)) {
         const QString name = o.parser.value(o.brdf);
-        const bool multiScatter = project.material().shading.multiScatter;
-        if (name == QStringLiteral("gltf"))
-            project.material().shading = ShadingModel{};
-        else if (name == QStringLiteral("learnopengl"))
-            project.material().shading = ShadingModel::learnOpenGL();
-        else {
+        if (name != QStringLiteral("gltf") && name != QStringLiteral("learnopengl")) {
             *error = QStringLiteral("--brdf: '%1' is not gltf or learnopengl").arg(name);
             return std::nullopt;
         }
-        project.material().shading.multiScatter = multiScatter;
+        const ShadingModel model = name == QStringLiteral("gltf") ? ShadingModel {} : ShadingModel::learnOpenGL();
+        everyMaterial([&model](Material& material) {
+            const bool multiScatter = material.shading.multiScatter;
+            material.shading = model;
+            material.shading.multiScatter = multiScatter;
+        });
     }
     if (o.parser.isSet(o.multiScatter)) {
         const QString state = o.parser.value(o.multiScatter);
@@ -214,7 +225,8 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
             *error = QStringLiteral("--multiscatter: '%1' is not on or off").arg(state);
             return std::nullopt;
         }
-        project.material().shading.multiScatter = state == QStringLiteral("on");
+        const bool on = state == QStringLiteral("on");
+        everyMaterial([on](Material& material) { material.shading.multiScatter = on; });
     }
     if (o.parser.isSet(o.mesh))
         project.view.mesh = o.parser.value(o.mesh).toStdString();

@@ -17,14 +17,8 @@
 #include "core/Project.h"
 #include "core/ProjectAssets.h"
 #include "core/ReferenceView.h"
-#include "render/Framebuffer.h"
-#include "render/HeadlessGLContext.h"
-#include "render/IblPrecompute.h"
-#include "render/IblSettings.h"
-#include "render/OffscreenRender.h"
-#include "render/Renderer.h"
-#include "render/SceneFromProject.h"
 
+#include "ReferenceViewRenderer.h"
 #include "TestSupport.h"
 
 #include <QTemporaryDir>
@@ -283,7 +277,6 @@ public:
 
 private Q_SLOTS:
     void initTestCase();
-    void cleanupTestCase();
     void matchesCpuTwin_data();
     void matchesCpuTwin();
 
@@ -291,8 +284,7 @@ private:
     std::optional<Image> render(const Project& project, const std::string& view, std::string* error);
 
     QTemporaryDir m_folder;
-    std::optional<HeadlessGLContext> m_context;
-    std::optional<IblPrecompute> m_ibl;
+    facet::test::ReferenceViewRenderer m_gpu;
     // What the GPU interpolated, per pixel (constant for the sphere): texture coordinate,
     // geometric normal (0.5 n + 0.5), tangent (0.5 t + 0.5, from a normal-mapped variant).
     std::optional<Image> m_uv;
@@ -305,19 +297,7 @@ std::optional<Image> MaterialMapsGLTest::render(const Project& project, const st
 {
     Project p = project;
     p.view.debugView = view;
-    const auto assets = loadProjectAssets(p, error);
-    if (!assets)
-        return std::nullopt;
-    const IblSettings settings = *IblSettings::preset("draft");
-    const auto ibl = m_ibl->prepare(assets->environment, settings, nullptr, error);
-    if (!ibl)
-        return std::nullopt;
-    RenderScene scene = sceneFromProject(p, *assets, ibl, sceneOptionsFor(settings, /*referenceView=*/true));
-    if (!addDfgTables(*m_ibl, settings, scene, nullptr, error)) // the material's own split-sum table
-        return std::nullopt;
-    // A fresh renderer per image: every map is uploaded in this frame, as after opening a project.
-    Renderer renderer;
-    return renderOffscreen(renderer, scene, kRenderSize, kRenderSize, OffscreenOutput::LinearRadiance, error);
+    return m_gpu.renderAsCommand(p, "draft", kRenderSize, error);
 }
 
 void MaterialMapsGLTest::initTestCase()
@@ -342,9 +322,7 @@ void MaterialMapsGLTest::initTestCase()
     }));
 
     std::string error;
-    m_context = HeadlessGLContext::create(&error);
-    QVERIFY2(m_context, error.c_str());
-    m_ibl.emplace(folder + QStringLiteral("/ibl-cache"), /*useDiskCache=*/false);
+    QVERIFY2(m_gpu.initialize(&error), error.c_str());
 
     Project project = Project::defaultProject();
     project.environment.source = "uniform:0.5";
@@ -392,11 +370,6 @@ void MaterialMapsGLTest::initTestCase()
     }
 }
 
-void MaterialMapsGLTest::cleanupTestCase()
-{
-    m_ibl.reset(); // GL objects go while the context is current
-    m_context.reset();
-}
 
 void MaterialMapsGLTest::matchesCpuTwin_data()
 {

@@ -132,7 +132,7 @@ void SafeWriteUiTest::saveOnFullDiskIsReportedAndStaysModified()
     // The window names the file by its name (ui/WindowMessages); the precise message keeps the path.
     QVERIFY2(message.contains(QFileInfo(path).fileName()) && message.contains(kNoSpace), qPrintable(message));
     QVERIFY2(files->lastError().contains(path), qPrintable(files->lastError()));
-    QCOMPARE(files->lastError(), message);
+    QVERIFY(files->lastError() != message); // the precise message (function, full path) is kept apart
     QVERIFY(document->isModified());
     QVERIFY(m_window->isWindowModified());
     QCOMPARE(fileBytes(path), old);

@@ -311,11 +311,11 @@ void TextureSetUiTest::dockAssignsPackedChannels()
 
 void TextureSetUiTest::assigningASetReplacesTheWholeSet()
 {
-    // Set A: five separate maps, through Assign Folder….
+    // Set A: six separate maps, through Assign Folder….
     const QString a = m_dir.filePath(QStringLiteral("replace/a"));
     makeFiles(a,
         {QStringLiteral("a_basecolor.png"), QStringLiteral("a_normal.png"), QStringLiteral("a_metallic.png"),
-            QStringLiteral("a_roughness.png"), QStringLiteral("a_ao.png")});
+            QStringLiteral("a_roughness.png"), QStringLiteral("a_ao.png"), QStringLiteral("a_emissive.png")});
     auto* button = m_dock->findChild<QPushButton*>(QStringLiteral("assignFolderButton"));
     QVERIFY(button);
     QVERIFY(clickAndAnswerFileDialog(button, a));
@@ -336,14 +336,14 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
         QStringLiteral("b_basecolor.png"));
     QCOMPARE(QFileInfo(QString::fromStdString(setB.map(MapSlot::Roughness).path)).fileName(),
         QStringLiteral("b_roughness.png"));
-    for (MapSlot slot : {MapSlot::Normal, MapSlot::Metallic, MapSlot::Occlusion})
+    for (MapSlot slot : {MapSlot::Normal, MapSlot::Metallic, MapSlot::Occlusion, MapSlot::Emissive})
         QVERIFY2(!setB.map(slot).hasTexture(), toString(slot));
     QCOMPARE(setB.metallic(), 0.0); // a dielectric, not A's metallic factor of 1 alone
     QCOMPARE(m_document->undoStack()->index(), steps + 1); // one step
     const QString message = m_dock->lastMessage();
     QVERIFY2(message.startsWith(QStringLiteral("Assigned 2 maps")), qPrintable(message));
     QVERIFY2(message.contains(
-                 QStringLiteral("cleared (not in this set): Normal, Metallic (now 0), Ambient Occlusion")),
+                 QStringLiteral("cleared (not in this set): Normal, Metallic (now 0), Ambient Occlusion, Emissive")),
         qPrintable(message));
     QCOMPARE(m_window->statusMessage(), message);
     // The slots say so too.

@@ -8,6 +8,7 @@
 #include "render/HeadlessGLContext.h"
 #include "render/IblPrecompute.h"
 #include "render/IblSettings.h"
+#include "render/OffscreenRender.h"
 #include "render/Renderer.h"
 #include "render/SceneFromProject.h"
 
@@ -47,8 +48,8 @@ bool ReferenceViewRenderer::initialize(std::string* error)
     return true;
 }
 
-std::optional<Image> ReferenceViewRenderer::render(
-    const Project& project, const std::string& preset, int size, std::string* error)
+std::optional<RenderScene> ReferenceViewRenderer::prepareScene(
+    const Project& project, const std::string& preset, std::string* error)
 {
     if (!m_state || !m_state->renderer) {
         *error = "ReferenceViewRenderer::render: not initialised";
@@ -65,16 +66,33 @@ std::optional<Image> ReferenceViewRenderer::render(
     const auto ibl = m_state->ibl->prepare(assets->environment, *settings, nullptr, error);
     if (!ibl)
         return std::nullopt;
-    SceneOptions options;
-    options.referenceView = true;
-    options.irradianceFromSH = settings->irradiance == IblSettings::Irradiance::SH;
-    RenderScene scene = sceneFromProject(project, *assets, ibl, options);
+    RenderScene scene = sceneFromProject(project, *assets, ibl, sceneOptionsFor(*settings, /*referenceView=*/true));
     if (!addDfgTables(*m_state->ibl, *settings, scene, nullptr, error))
         return std::nullopt;
+    return scene;
+}
+
+std::optional<Image> ReferenceViewRenderer::render(
+    const Project& project, const std::string& preset, int size, std::string* error)
+{
+    const auto scene = prepareScene(project, preset, error);
+    if (!scene)
+        return std::nullopt;
     auto target = Framebuffer::create(size, size, FramebufferFormat::RGBA32F, error);
-    if (!target || !m_state->renderer->render(scene, *target, error))
+    if (!target || !m_state->renderer->render(*scene, *target, error))
         return std::nullopt;
     return target->readPixels();
+}
+
+std::optional<Image> ReferenceViewRenderer::renderAsCommand(
+    const Project& project, const std::string& preset, int size, std::string* error)
+{
+    const auto scene = prepareScene(project, preset, error);
+    if (!scene)
+        return std::nullopt;
+    // A fresh renderer: every map and the mesh are uploaded in this frame, as after opening a project.
+    Renderer renderer;
+    return renderOffscreen(renderer, *scene, size, size, OffscreenOutput::LinearRadiance, error);
 }
 
 } // namespace facet::test

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/Image.h"
+#include "render/RenderScene.h"
 
 namespace facet {
 struct Project;
@@ -30,8 +31,14 @@ public:
     // preset `preset` ("draft", "default", "high"). nullopt with *error on any failure.
     std::optional<Image> render(
         const Project& project, const std::string& preset, int size, std::string* error);
+    // The same through `facet render --reference-view`'s own path: a fresh Renderer (every map and
+    // the mesh uploaded in this frame, as after opening a project), an RGBA16F target read back by
+    // render/OffscreenRender.
+    std::optional<Image> renderAsCommand(
+        const Project& project, const std::string& preset, int size, std::string* error);
 
 private:
+    std::optional<RenderScene> prepareScene(const Project& project, const std::string& preset, std::string* error);
     struct State;
     std::unique_ptr<State> m_state;
 };
