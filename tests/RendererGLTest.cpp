@@ -598,7 +598,8 @@ void RendererGLTest::skippedWorkIsCounted()
     Renderer renderer;
     TinyIbl ibl {glm::vec3(1.0f)};
     RenderScene scene = referenceScene(ibl);
-    auto image = std::make_shared<Image>(4, 4, glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
+    auto image = std::make_shared<const MapImage>(MapImage::fromImage(
+        Image(4, 4, glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)), MapLayout::Rgb, MapSampleType::UInt8));
     scene.materials[0].material.map(MapSlot::BaseColor).path = "/textures/base.png";
     scene.materials[0].material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::SRGB;
     scene.materials[0].maps[std::size_t(MapSlot::BaseColor)] = {image, "/textures/base.png", 1};
@@ -658,8 +659,9 @@ void RendererGLTest::baseColorDebugView()
 
     // An sRGB-encoded texture (encoded 128/255 everywhere) is decoded to linear and multiplied by
     // the factor; a constant texture makes filtering irrelevant.
-    auto texture
-        = std::make_shared<Image>(8, 8, glm::vec4(128.0f / 255.0f, 128.0f / 255.0f, 128.0f / 255.0f, 1.0f));
+    auto texture = std::make_shared<const MapImage>(
+        MapImage::fromImage(Image(8, 8, glm::vec4(128.0f / 255.0f, 128.0f / 255.0f, 128.0f / 255.0f, 1.0f)),
+            MapLayout::Rgb, MapSampleType::UInt8));
     scene.materials[0].material.map(MapSlot::BaseColor).path = "/t/base.png";
     scene.materials[0].material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::SRGB;
     scene.materials[0].maps[std::size_t(MapSlot::BaseColor)] = {texture, "/t/base.png", 7};
@@ -679,7 +681,8 @@ void RendererGLTest::everyFeatureAndDebugViewCompiles()
     // irradiance, each model switch, and each debug view: compiles, renders finite values.
     TinyIbl ibl {glm::vec3(1.0f)};
     RenderScene scene = referenceScene(ibl);
-    auto texture = std::make_shared<Image>(4, 4, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
+    auto texture = std::make_shared<const MapImage>(MapImage::fromImage(
+        Image(4, 4, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f)), MapLayout::Rgba, MapSampleType::UInt8));
     for (MapSlot slot : kAllMapSlots) {
         scene.materials[0].material.map(slot).path = std::string("/t/") + toString(slot) + ".png";
         scene.materials[0].material.map(slot).channel = isScalarSlot(slot) ? MapChannel::G : MapChannel::Rgb;

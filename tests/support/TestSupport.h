@@ -47,6 +47,11 @@ ProcessResult runWithoutDisplay(const QString& executable, const QStringList& ar
 // tests that need environment files of their own (libraries, relinking).
 bool writeConstantExr(const QString& path, float radiance, int width = 16);
 
+// Writes a PNG that claims to be width x height 8-bit RGB and holds no pixels (signature, IHDR, an
+// empty IDAT, IEND, with correct CRCs): enough for a reader to see the size in the header, and for
+// a loader that checks sizes before decoding to refuse it at no cost (a 16384² "map" in 57 bytes).
+bool writePngHeaderOnly(const QString& path, int width, int height);
+
 // "(x, y, z)" with `digits` significant digits, for failure messages.
 std::string describe(const glm::dvec3& v, int digits = 6);
 
