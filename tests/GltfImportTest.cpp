@@ -79,6 +79,7 @@ private Q_SLOTS:
     void brokenFilesGiveClearMessages();
     void deepNodeGraphDoesNotOverflow();
     void meshImportReadsGltfThroughThisReader();
+    void materialsOnlyListsTheSameParts();
 };
 
 void GltfImportTest::materialFactorsAndMaps_data()
@@ -524,6 +525,40 @@ void GltfImportTest::meshImportReadsGltfThroughThisReader()
     QVERIFY2(QString::fromStdString(error).startsWith(QStringLiteral("importMesh: ") + file)
                  && QString::fromStdString(error).contains(QStringLiteral("reached twice")),
              error.c_str());
+}
+
+// The quick read a project uses (materialsOnly) lists exactly the parts the full import makes:
+// the same names and material indices, in the same order, also with a Draco sample mesh.
+void GltfImportTest::materialsOnlyListsTheSameParts()
+{
+    GltfWriter w;
+    QJsonObject red;
+    red[QLatin1String("pbrMetallicRoughness")] = QJsonObject {{QStringLiteral("baseColorFactor"), numbers({1, 0, 0, 1})}};
+    const int material = w.addMaterial(red);
+    w.addNode(w.addQuad(material, 0.0f, QStringLiteral("front")));
+    w.addNode(w.addQuad(-1, -1.0f, QStringLiteral("back")));
+    w.addNode(w.addSphere(material));
+    const QString file = path(QStringLiteral("parts.glb"));
+    QVERIFY(w.write(file, Storage::Glb));
+    QStringList files {file};
+    if (const QString sample = facet::test::modelPath(QStringLiteral("pmndrs")); !sample.isEmpty())
+        files.append(sample); // Draco-compressed, one textured material
+    for (const QString& f : files) {
+        std::string error;
+        const auto full = importGltf(f.toStdString(), &error);
+        QVERIFY2(full, error.c_str());
+        GltfImportOptions options;
+        options.materialsOnly = true;
+        const auto quick = importGltf(f.toStdString(), &error, nullptr, options);
+        QVERIFY2(quick, error.c_str());
+        QVERIFY(quick->mesh.vertices.empty());
+        QCOMPARE(quick->materials, full->materials);
+        QCOMPARE(quick->mesh.subMeshes.size(), full->mesh.subMeshes.size());
+        for (std::size_t i = 0; i < full->mesh.subMeshes.size(); ++i) {
+            QCOMPARE(quick->mesh.subMeshes[i].name, full->mesh.subMeshes[i].name);
+            QCOMPARE(quick->mesh.subMeshes[i].materialIndex, full->mesh.subMeshes[i].materialIndex);
+        }
+    }
 }
 
 QTEST_GUILESS_MAIN(GltfImportTest)
