@@ -24,28 +24,15 @@
 
 using namespace facet;
 using facet::test::GltfWriter;
+using facet::test::jsonNumbers;
+using facet::test::textureInfo;
 using Storage = GltfWriter::BufferStorage;
 
 Q_DECLARE_METATYPE(GltfWriter::BufferStorage)
 
 namespace {
 
-QJsonArray numbers(std::initializer_list<double> values)
-{
-    QJsonArray a;
-    for (double v : values)
-        a.append(v);
-    return a;
-}
 
-QJsonObject textureInfo(int texture, const QJsonObject& extensions = {})
-{
-    QJsonObject info;
-    info[QLatin1String("index")] = texture;
-    if (!extensions.isEmpty())
-        info[QLatin1String("extensions")] = extensions;
-    return info;
-}
 
 // A 4 x 4 RGBA texture whose channels hold distinct constant values: R 0.2, G 0.4, B 0.6, A 0.8.
 QByteArray packedPng()
@@ -98,7 +85,7 @@ void GltfImportTest::materialFactorsAndMaps()
     const int packed = w.addTexture(w.addImageEmbedded(packedPng(), QStringLiteral("image/png")));
     const int color = w.addTexture(w.addImageUri(QStringLiteral("base%20colour.png")));
     QJsonObject pbr;
-    pbr[QLatin1String("baseColorFactor")] = numbers({0.5, 0.25, 0.125, 0.75});
+    pbr[QLatin1String("baseColorFactor")] = jsonNumbers({0.5, 0.25, 0.125, 0.75});
     pbr[QLatin1String("baseColorTexture")] = textureInfo(color);
     pbr[QLatin1String("metallicFactor")] = 0.3;
     pbr[QLatin1String("roughnessFactor")] = 0.7;
@@ -113,13 +100,13 @@ void GltfImportTest::materialFactorsAndMaps()
     occlusion[QLatin1String("strength")] = 0.6;
     material[QLatin1String("occlusionTexture")] = occlusion;
     QJsonObject transform;
-    transform[QLatin1String("offset")] = numbers({0.25, 0.5});
+    transform[QLatin1String("offset")] = jsonNumbers({0.25, 0.5});
     transform[QLatin1String("rotation")] = 0.3;
-    transform[QLatin1String("scale")] = numbers({2.0, 3.0});
+    transform[QLatin1String("scale")] = jsonNumbers({2.0, 3.0});
     QJsonObject transformExtension;
     transformExtension[QLatin1String("KHR_texture_transform")] = transform;
     material[QLatin1String("emissiveTexture")] = textureInfo(color, transformExtension);
-    material[QLatin1String("emissiveFactor")] = numbers({1.0, 0.5, 0.0});
+    material[QLatin1String("emissiveFactor")] = jsonNumbers({1.0, 0.5, 0.0});
     material[QLatin1String("alphaMode")] = QLatin1String("MASK");
     material[QLatin1String("alphaCutoff")] = 0.35;
     material[QLatin1String("doubleSided")] = true;
@@ -258,8 +245,8 @@ void GltfImportTest::severalMaterialsKeepTheirParts()
     GltfWriter w;
     QJsonObject red, blue;
     QJsonObject redPbr, bluePbr;
-    redPbr[QLatin1String("baseColorFactor")] = numbers({1, 0, 0, 1});
-    bluePbr[QLatin1String("baseColorFactor")] = numbers({0, 0, 1, 1});
+    redPbr[QLatin1String("baseColorFactor")] = jsonNumbers({1, 0, 0, 1});
+    bluePbr[QLatin1String("baseColorFactor")] = jsonNumbers({0, 0, 1, 1});
     red[QLatin1String("name")] = QLatin1String("Red");
     red[QLatin1String("pbrMetallicRoughness")] = redPbr;
     blue[QLatin1String("name")] = QLatin1String("Blue");
@@ -323,9 +310,9 @@ void GltfImportTest::nodeTransformsAndModes()
     const int quad = w.addQuad(-1);
     QJsonObject child;
     child[QLatin1String("mesh")] = quad;
-    child[QLatin1String("scale")] = numbers({-1, 1, 1});
+    child[QLatin1String("scale")] = jsonNumbers({-1, 1, 1});
     QJsonObject parent;
-    parent[QLatin1String("translation")] = numbers({10, 0, 0});
+    parent[QLatin1String("translation")] = jsonNumbers({10, 0, 0});
     parent[QLatin1String("children")] = QJsonArray {1};
     w.json()[QLatin1String("nodes")] = QJsonArray {parent, child};
     QJsonObject scene;
@@ -533,7 +520,7 @@ void GltfImportTest::materialsOnlyListsTheSameParts()
 {
     GltfWriter w;
     QJsonObject red;
-    red[QLatin1String("pbrMetallicRoughness")] = QJsonObject {{QStringLiteral("baseColorFactor"), numbers({1, 0, 0, 1})}};
+    red[QLatin1String("pbrMetallicRoughness")] = QJsonObject {{QStringLiteral("baseColorFactor"), jsonNumbers({1, 0, 0, 1})}};
     const int material = w.addMaterial(red);
     w.addNode(w.addQuad(material, 0.0f, QStringLiteral("front")));
     w.addNode(w.addQuad(-1, -1.0f, QStringLiteral("back")));

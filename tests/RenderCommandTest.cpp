@@ -29,6 +29,8 @@
 #include <vector>
 
 using namespace facet;
+using facet::test::strings;
+using facet::test::writeText;
 
 namespace {
 
@@ -40,20 +42,7 @@ Result runFacet(const QStringList& arguments, const QProcessEnvironment& extra =
 }
 
 // A QStringList from literals (QT_NO_CAST_FROM_ASCII forbids the implicit conversion).
-QStringList strings(std::initializer_list<const char*> items)
-{
-    QStringList list;
-    for (const char* item : items)
-        list.append(QString::fromUtf8(item));
-    return list;
-}
 
-bool writeText(const QString& path, const QByteArray& text)
-{
-    QDir().mkpath(QFileInfo(path).absolutePath());
-    QFile file(path);
-    return file.open(QIODevice::WriteOnly) && file.write(text) == text.size();
-}
 
 // A project file holding only an environment source, a mesh and a debug view.
 QByteArray projectJson(const QString& source, const QString& mesh = QStringLiteral("sphere"),

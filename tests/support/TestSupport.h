@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the test executables: where the CC0 sample data and the test artefacts are.
 
+#include <initializer_list>
 #include <string>
 
 #include <QProcessEnvironment>
@@ -46,6 +47,11 @@ ProcessResult runWithoutDisplay(const QString& executable, const QStringList& ar
 // core's Image::save, so that a bug there cannot hide one in loading), making its folder. For
 // tests that need environment files of their own (libraries, relinking).
 bool writeConstantExr(const QString& path, float radiance, int width = 16);
+
+// Writes `text` to `path` (its folder made first), replacing what was there. False on any error.
+bool writeText(const QString& path, const QByteArray& text);
+// A QStringList of UTF-8 literals.
+QStringList strings(std::initializer_list<const char*> items);
 
 // "(x, y, z)" with `digits` significant digits, for failure messages.
 std::string describe(const glm::dvec3& v, int digits = 6);
