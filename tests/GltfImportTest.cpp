@@ -67,6 +67,7 @@ private Q_SLOTS:
     void deepNodeGraphDoesNotOverflow();
     void meshImportReadsGltfThroughThisReader();
     void materialsOnlyListsTheSameParts();
+    void corruptedFilesNeverCrash();
 };
 
 void GltfImportTest::materialFactorsAndMaps_data()
@@ -546,6 +547,82 @@ void GltfImportTest::materialsOnlyListsTheSameParts()
             QCOMPARE(quick->mesh.subMeshes[i].materialIndex, full->mesh.subMeshes[i].materialIndex);
         }
     }
+}
+
+// Deterministic mutation: bytes of valid assets (a .glb of Facet's writer with a packed texture,
+// the same as .gltf JSON, and the Draco-compressed CC0 sample) overwritten at random places,
+// truncated or extended. Every outcome is an asset that validates or a message naming the file;
+// nothing crashes, hangs or throws (run under the asan preset too).
+void GltfImportTest::corruptedFilesNeverCrash()
+{
+    GltfWriter w;
+    QJsonObject values;
+    values[QLatin1String("baseColorTexture")] = textureInfo(w.addTexture(w.addImageEmbedded(packedPng(), QStringLiteral("image/png"))));
+    QJsonObject material;
+    material[QLatin1String("pbrMetallicRoughness")] = values;
+    const int m = w.addMaterial(material);
+    w.addNode(w.addQuad(m));
+    w.addNode(w.addSphere(m, 12, 6));
+    const QString glb = path(QStringLiteral("seed.glb"));
+    const QString gltf = path(QStringLiteral("seed.gltf"));
+    QVERIFY(w.write(glb, Storage::Glb));
+    QVERIFY(w.write(gltf, Storage::DataUri));
+    QStringList seeds {glb, gltf};
+    if (const QString sample = facet::test::modelPath(QStringLiteral("pmndrs")); !sample.isEmpty())
+        seeds.append(sample);
+
+    std::uint64_t state = 0x9E3779B97F4A7C15ULL;
+    const auto next = [&state] { // xorshift64*
+        state ^= state >> 12;
+        state ^= state << 25;
+        state ^= state >> 27;
+        return state * 0x2545F4914F6CDD1DULL;
+    };
+    int accepted = 0, refused = 0;
+    for (const QString& seed : seeds) {
+        QFile in(seed);
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        const QByteArray original = in.readAll();
+        for (int round = 0; round < 150; ++round) {
+            QByteArray bytes = original;
+            const int kind = int(next() % 4);
+            if (kind == 0) { // a few bytes overwritten
+                for (int i = 0, n = 1 + int(next() % 8); i < n; ++i)
+                    bytes[qsizetype(next() % std::uint64_t(bytes.size()))] = char(next());
+            } else if (kind == 1) { // cut short
+                bytes.truncate(qsizetype(next() % std::uint64_t(bytes.size())));
+            } else if (kind == 2) { // a run of one byte value (zeros, 0xff, digits in JSON)
+                const qsizetype at = qsizetype(next() % std::uint64_t(bytes.size()));
+                static constexpr char kValues[] = {'\0', '\x7f', '9', '-', '['};
+                const char value = kValues[next() % 5];
+                for (qsizetype i = at; i < std::min(bytes.size(), at + qsizetype(1 + next() % 64)); ++i)
+                    bytes[i] = value;
+            } else { // garbage appended
+                for (int i = 0, n = 1 + int(next() % 256); i < n; ++i)
+                    bytes.append(char(next()));
+            }
+            const QString file = path(QStringLiteral("mutant%1").arg(QFileInfo(seed).suffix().prepend(u'.')));
+            QFile out(file);
+            QVERIFY(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            out.write(bytes);
+            out.close();
+            std::string error;
+            const auto asset = importGltf(file.toStdString(), &error);
+            if (asset) {
+                ++accepted;
+                std::string problem;
+                QVERIFY2(asset->mesh.validate(&problem), problem.c_str());
+                for (const Material& each : asset->materials)
+                    QVERIFY2(each.validate(&problem), problem.c_str());
+            } else {
+                ++refused;
+                QVERIFY2(QString::fromStdString(error).startsWith(QStringLiteral("importGltf: ") + file + QStringLiteral(": ")),
+                         error.c_str());
+            }
+        }
+    }
+    qInfo("%d mutants accepted (valid), %d refused with a message", accepted, refused);
+    QVERIFY(refused > 0);
 }
 
 QTEST_GUILESS_MAIN(GltfImportTest)
