@@ -73,12 +73,15 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
         *err = file.errorString().toStdString();
         return false;
     }
-    const QByteArray data = file.read(qint64(access->maxBytes) + 1);
-    if (file.error() != QFileDevice::NoError || std::size_t(data.size()) > access->maxBytes) {
-        *err = file.error() != QFileDevice::NoError ? file.errorString().toStdString() : "file grew while reading";
+    // Exactly the size the file has (a regular file's size is known): QIODevice::read(n) reserves
+    // n bytes up front, so asking for the limit would allocate it for every small file.
+    const qint64 size = file.size();
+    out->resize(std::size_t(size));
+    const qint64 got = size > 0 ? file.read(reinterpret_cast<char*>(out->data()), size) : 0;
+    if (got != size || file.error() != QFileDevice::NoError) {
+        *err = file.error() != QFileDevice::NoError ? file.errorString().toStdString() : "the file changed while reading";
         return false;
     }
-    out->assign(data.begin(), data.end());
     return true;
 }
 
