@@ -200,10 +200,14 @@ RenderScene SceneController::scene(const std::shared_ptr<const IblTextures>& ibl
     options.irradianceFromSH = settings.irradiance == IblSettings::Irradiance::SH;
     RenderScene scene = sceneFromProject(m_document->project(), m_assets, ibl, options);
     if (m_objectTurntableDegrees != 0.0)
-        scene.modelMatrix
-            = glm::rotate(glm::dmat4(1.0), glm::radians(m_objectTurntableDegrees), glm::dvec3(0.0, 1.0, 0.0));
+        scene.modelMatrix = modelMatrix();
     scene.environment.rotationDegrees += m_environmentTurntableDegrees;
     return scene;
+}
+
+glm::dmat4 SceneController::modelMatrix() const
+{
+    return glm::rotate(glm::dmat4(1.0), glm::radians(m_objectTurntableDegrees), glm::dvec3(0.0, 1.0, 0.0));
 }
 
 void SceneController::setTurntableAngles(double objectDegrees, double environmentDegrees)
