@@ -46,6 +46,7 @@
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QFileDialog>
 #include <QImage>
 #include <QLabel>
@@ -216,6 +217,8 @@ private Q_SLOTS:
     void cleanupTestCase();
     void openingAnAssetListsItsMaterialsAndParts();
     void importNotesReachTheStatusBar();
+    void mapSlotNamesTheImage_data();
+    void mapSlotNamesTheImage();
     void choosingAMaterialEditsOnlyIt();
     void clickPicksThePart_data();
     void clickPicksThePart();
@@ -230,11 +233,14 @@ private Q_SLOTS:
 private:
     // Opens `asset` (File > Open's path) and sets the scene up for pixel checks: a uniform grey
     // environment behind, the base colour debug view (unless `debugView` says otherwise), the
-    // turntable stopped at 0, the default view; the history is cleared.
-    void openForPixels(const QString& asset, const std::string& debugView = "base-color");
+    // turntable stopped at 0, the default view; the history is cleared. False when it did not open.
+    bool openForPixels(const QString& asset, const std::string& debugView = "base-color");
     // Where `part`'s centre (the mean of its vertices, in the loaded, normalised mesh) is drawn,
     // in viewport widget coordinates.
     QPoint pixelOfPart(int part) const;
+    // Where the point `objectPoint` of the loaded mesh is drawn (with the model matrix when
+    // `turned`, else as if the turntable were at 0).
+    QPoint pixelOf(const glm::dvec3& objectPoint, bool turned = true) const;
     // The colour of the finished (full-resolution) frame at `point` (widget coordinates).
     QColor framePixel(const QPoint& point);
     QColor backgroundPixel() { return framePixel(QPoint(6, 6)); }
@@ -277,9 +283,10 @@ void MaterialsUiTest::cleanupTestCase()
     m_window.reset();
 }
 
-void MaterialsUiTest::openForPixels(const QString& asset, const std::string& debugView)
+bool MaterialsUiTest::openForPixels(const QString& asset, const std::string& debugView)
 {
-    QVERIFY(m_window->projectFiles()->openFile(asset));
+    if (!m_window->projectFiles()->openFile(asset) || m_document->project().parts.size() != 2)
+        return false;
     m_window->sceneController()->setTurntableAngles(0.0, 0.0);
     m_window->cameraController()->resetView();
     EnvironmentSettings environment = m_document->project().environment;
@@ -289,6 +296,7 @@ void MaterialsUiTest::openForPixels(const QString& asset, const std::string& deb
     view.debugView = debugView;
     m_document->setView(view, QStringLiteral("test setup"));
     m_document->undoStack()->clear();
+    return true;
 }
 
 QPoint MaterialsUiTest::pixelOfPart(int part) const
@@ -298,12 +306,17 @@ QPoint MaterialsUiTest::pixelOfPart(int part) const
     glm::dvec3 sum(0.0);
     for (uint32_t i = sub.firstIndex; i < sub.firstIndex + sub.indexCount; ++i)
         sum += glm::dvec3(mesh.vertices[mesh.indices[i]].position);
-    const glm::dvec3 centre = sum / double(sub.indexCount);
+    return pixelOf(sum / double(sub.indexCount));
+}
+
+QPoint MaterialsUiTest::pixelOf(const glm::dvec3& objectPoint, bool turned) const
+{
     const Camera& camera = m_document->project().camera;
     const double width = m_viewport->width();
     const double height = m_viewport->height();
     const glm::dvec4 clip = camera.projectionMatrix(width / height) * camera.viewMatrix()
-        * m_window->sceneController()->modelMatrix() * glm::dvec4(centre, 1.0);
+        * (turned ? m_window->sceneController()->modelMatrix() : glm::dmat4(1.0))
+        * glm::dvec4(objectPoint, 1.0);
     const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
     return QPoint(
         int(std::floor((ndc.x + 1.0) * 0.5 * width)), int(std::floor((1.0 - ndc.y) * 0.5 * height)));
@@ -400,6 +413,57 @@ void MaterialsUiTest::importNotesReachTheStatusBar()
     QCOMPARE(m_document->missingFiles().size(), 1);
 }
 
+void MaterialsUiTest::mapSlotNamesTheImage_data()
+{
+    QTest::addColumn<QString>("image"); // "embedded", or an external file name
+    QTest::addColumn<bool>("writeImage");
+    QTest::addColumn<QString>("label"); // how the Base Colour slot's label starts
+    QTest::addColumn<bool>("missing");
+    QTest::newRow("embedded in the .glb")
+        << QStringLiteral("embedded") << true << QStringLiteral("slot-embedded.glb, image 0\n4×4") << false;
+    QTest::newRow("external, present")
+        << QStringLiteral("here_basecolor.png") << true << QStringLiteral("here_basecolor.png\n4×4") << false;
+    QTest::newRow("external, missing")
+        << QStringLiteral("gone_basecolor.png") << false << QStringLiteral("gone_basecolor.png") << true;
+}
+
+void MaterialsUiTest::mapSlotNamesTheImage()
+{
+    QFETCH(QString, image);
+    QFETCH(bool, writeImage);
+    QFETCH(QString, label);
+    QFETCH(bool, missing);
+    const QByteArray png
+        = test::encodePng(4, 4, 4, std::vector<glm::vec4>(16, glm::vec4(0.2f, 0.6f, 0.3f, 1.0f)));
+    test::GltfWriter w;
+    const bool embedded = image == QLatin1String("embedded");
+    const int source = embedded ? w.addImageEmbedded(png, QStringLiteral("image/png")) : w.addImageUri(image);
+    if (!embedded && writeImage) {
+        QFile file(m_dir.filePath(image));
+        QVERIFY(file.open(QIODevice::WriteOnly) && file.write(png) == png.size());
+    }
+    QJsonObject info;
+    info[QLatin1String("index")] = w.addTexture(source);
+    QJsonObject pbr;
+    pbr[QLatin1String("baseColorTexture")] = info;
+    QJsonObject material;
+    material[QLatin1String("pbrMetallicRoughness")] = pbr;
+    w.addNode(w.addQuad(w.addMaterial(material)));
+    const QString path
+        = m_dir.filePath(QStringLiteral("slot-%1.glb").arg(embedded ? QStringLiteral("embedded") : image));
+    QString error;
+    QVERIFY2(w.write(path, test::GltfWriter::BufferStorage::Glb, &error), qPrintable(error));
+
+    QVERIFY(m_window->projectFiles()->openFile(path));
+    MapSlotWidget* slot = m_window->textureMapsDock()->slotWidget(MapSlot::BaseColor);
+    // The thumbnail (and with it the resolution) comes from a worker thread.
+    if (writeImage)
+        QVERIFY(waitFor([&] { return slot->fileLabel()->text().contains(QStringLiteral("×")); }, 10000));
+    const QString text = slot->fileLabel()->text();
+    QVERIFY2(text.startsWith(label), qPrintable(text));
+    QCOMPARE(text.contains(QStringLiteral("(missing)")), missing);
+}
+
 void MaterialsUiTest::choosingAMaterialEditsOnlyIt()
 {
     QVERIFY(m_window->projectFiles()->openFile(m_twoMaterials));
@@ -447,31 +511,39 @@ void MaterialsUiTest::choosingAMaterialEditsOnlyIt()
 
 void MaterialsUiTest::clickPicksThePart_data()
 {
-    QTest::addColumn<int>("part"); // where to click; -1: the background
+    QTest::addColumn<int>("part"); // where to click (its centre as drawn); -1: the background
+    // Instead, where the right part's outer half was before the object turned: (0.6, 0, 0) of the
+    // normalised mesh, which spans x in [0.035, 0.707] there.
+    QTest::addColumn<bool>("whereItWas");
     QTest::addColumn<bool>("drag"); // press there, move 40 pixels, release
     QTest::addColumn<double>("turntableDegrees");
     QTest::addColumn<int>("startMaterial");
     QTest::addColumn<int>("expectedMaterial");
-    QTest::newRow("left part") << 0 << false << 0.0 << 1 << 0;
-    QTest::newRow("right part") << 1 << false << 0.0 << 0 << 1;
-    QTest::newRow("background: nothing") << -1 << false << 0.0 << 1 << 1;
-    QTest::newRow("drag over the right part: an orbit") << 1 << true << 0.0 << 0 << 0;
-    QTest::newRow("turned 35 degrees: where it is drawn") << 1 << false << 35.0 << 0 << 1;
+    QTest::newRow("left part") << 0 << false << false << 0.0 << 1 << 0;
+    QTest::newRow("right part") << 1 << false << false << 0.0 << 0 << 1;
+    QTest::newRow("background: nothing") << -1 << false << false << 0.0 << 1 << 1;
+    QTest::newRow("drag over the right part: an orbit") << 1 << false << true << 0.0 << 0 << 0;
+    QTest::newRow("turned 35 degrees: where it is drawn") << 1 << false << false << 35.0 << 0 << 1;
+    // Turned 60 degrees the right part spans only x < 0.36 in front of the camera: nothing there.
+    QTest::newRow("turned 60 degrees: not where it was") << 1 << true << false << 60.0 << 0 << 0;
 }
 
 void MaterialsUiTest::clickPicksThePart()
 {
     QFETCH(int, part);
+    QFETCH(bool, whereItWas);
     QFETCH(bool, drag);
     QFETCH(double, turntableDegrees);
     QFETCH(int, startMaterial);
     QFETCH(int, expectedMaterial);
-    openForPixels(m_twoMaterials);
+    QVERIFY(openForPixels(m_twoMaterials));
     m_window->sceneController()->setTurntableAngles(turntableDegrees, 0.0);
     m_document->setCurrentMaterial(startMaterial);
     const Camera cameraBefore = m_document->project().camera;
 
-    const QPoint at = part >= 0 ? pixelOfPart(part) : QPoint(6, 6);
+    const QPoint at = whereItWas ? pixelOf({0.6, 0.0, 0.0}, false)
+        : part >= 0              ? pixelOfPart(part)
+                                 : QPoint(6, 6);
     QVERIFY2(m_viewport->rect().contains(at), qPrintable(QStringLiteral("%1, %2").arg(at.x()).arg(at.y())));
     QSignalSpy picked(m_window->partPicker(), &PartPicker::partPicked);
     if (drag) {
@@ -485,9 +557,10 @@ void MaterialsUiTest::clickPicksThePart()
         QCOMPARE(m_document->project().camera, cameraBefore); // a click does not move the camera
     }
     QCOMPARE(m_document->project().currentMaterial, expectedMaterial);
-    QCOMPARE(picked.count(), part >= 0 && !drag ? 1 : 0);
+    const bool picks = part >= 0 && !drag && !whereItWas;
+    QCOMPARE(picked.count(), picks ? 1 : 0);
     QCOMPARE(m_document->undoStack()->count(), 0); // picking is not an edit
-    if (part >= 0 && !drag) {
+    if (picks) {
         QCOMPARE(m_window->materialsDock()->partList()->currentItem(),
             m_window->materialsDock()->partList()->topLevelItem(part));
         QCOMPARE(m_window->materialsDock()->materialList()->currentRow(), expectedMaterial);
@@ -497,7 +570,7 @@ void MaterialsUiTest::clickPicksThePart()
 
 void MaterialsUiTest::hidingAPartShowsTheBackground()
 {
-    openForPixels(m_twoMaterials);
+    QVERIFY(openForPixels(m_twoMaterials));
     const QPoint right = pixelOfPart(1);
     const QColor background = backgroundPixel();
     const QColor shown = framePixel(right);
@@ -525,7 +598,7 @@ void MaterialsUiTest::hidingAPartShowsTheBackground()
 
 void MaterialsUiTest::assigningAnotherMaterialToAPart()
 {
-    openForPixels(m_twoMaterials);
+    QVERIFY(openForPixels(m_twoMaterials));
     const QPoint right = pixelOfPart(1);
     QComboBox* combo = m_window->materialsDock()->partMaterialCombo(1);
     QVERIFY(combo);
@@ -638,7 +711,10 @@ void MaterialsUiTest::emissiveAndAlphaEditsReachTheFrame()
     const bool emissive = edit == Edit::EmissiveColour || edit == Edit::EmissiveStrength;
     // The right part's alpha is 0.3 (drawn opaque until the alpha mode says otherwise). Blending
     // shows in the shaded image (the debug views write the value itself).
-    openForPixels(m_translucent, emissive ? "emissive" : edit == Edit::AlphaBlend ? "none" : "base-color");
+    QVERIFY(openForPixels(m_translucent,
+        emissive                       ? "emissive"
+            : edit == Edit::AlphaBlend ? "none"
+                                       : "base-color"));
     m_window->materialsDock()->materialList()->setCurrentRow(1); // the blue material
     QCOMPARE(m_document->project().currentMaterial, 1);
     TextureMapsDock* maps = m_window->textureMapsDock();

@@ -257,7 +257,7 @@ void MainWindow::createDocks()
     m_textureMapsDock->raise();
     m_environmentDock->raise();
     resizeDocks({m_textureMapsDock, m_environmentDock}, {300, 290}, Qt::Horizontal);
-    resizeDocks({m_materialsDock, m_textureMapsDock}, {220, 560}, Qt::Vertical);
+    resizeDocks({m_materialsDock, m_textureMapsDock}, {300, 480}, Qt::Vertical);
 
     connect(m_textureMapsDock, &TextureMapsDock::message, this, &MainWindow::showStatusMessage);
     connect(m_materialDock, &MaterialDock::message, this, &MainWindow::showStatusMessage);

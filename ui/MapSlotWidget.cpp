@@ -1,5 +1,6 @@
 #include "ui/MapSlotWidget.h"
 
+#include "core/GltfImport.h"
 #include "core/MapNaming.h"
 #include "ui/ColorButton.h"
 #include "ui/Document.h"
@@ -267,14 +268,20 @@ void MapSlotWidget::refresh()
 {
     const MaterialMap& map = m_document->project().material().map(m_slot);
     if (map.hasTexture()) {
-        const QFileInfo info(QString::fromStdString(map.path));
-        QString text = info.fileName();
+        // An image embedded in a glTF asset ("helmet.glb#images/2") is named after the asset and
+        // is there when the asset is (core/GltfImport.h).
+        const std::optional<GltfImageReference> embedded = parseGltfImageReference(map.path);
+        const QFileInfo info(QString::fromStdString(embedded ? embedded->assetPath : map.path));
+        QString text
+            = embedded ? tr("%1, image %2").arg(info.fileName()).arg(embedded->imageIndex) : info.fileName();
         if (m_sourceSize.isValid())
             text += QStringLiteral("\n%1×%2").arg(m_sourceSize.width()).arg(m_sourceSize.height());
         if (!info.exists())
             text += tr("\n(missing)");
         m_fileLabel->setText(text);
-        m_fileLabel->setToolTip(info.absoluteFilePath());
+        m_fileLabel->setToolTip(embedded
+                ? tr("Image %1 embedded in %2").arg(embedded->imageIndex).arg(info.absoluteFilePath())
+                : info.absoluteFilePath());
     } else {
         m_fileLabel->setText(tr("No file: the value below"));
         m_fileLabel->setToolTip({});

@@ -63,6 +63,10 @@ MaterialsDock::MaterialsDock(Document* document, SceneController* scene, QWidget
     m_parts->header()->setStretchLastSection(false);
     m_parts->setToolTip(tr("The parts of the mesh: tick to show, untick to hide; the material each shows. "
                            "Click a part in the viewport to edit its material."));
+    // Room for a few rows of each before the dock scrolls (a dock's first size comes from its
+    // content: resizeDocks before the window is shown does not hold).
+    m_materials->setMinimumHeight(m_materials->fontMetrics().height() * 3);
+    m_parts->setMinimumHeight(m_parts->fontMetrics().height() * 6);
     m_partsNote->setObjectName(QStringLiteral("partsNote"));
     m_partsNote->setWordWrap(true);
     m_partsNote->setText(tr("Click a part in the viewport to edit its material."));

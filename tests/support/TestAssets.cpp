@@ -107,7 +107,10 @@ bool writeShowcaseAsset(const QString& path, QString* error)
             const bool odd = ((x / 8) + (y / 8)) % 2 == 1;
             checker.push_back(
                 odd ? glm::vec4(0.92f, 0.78f, 0.35f, 1.0f) : glm::vec4(0.12f, 0.28f, 0.55f, 1.0f));
-            const float noise = 0.55f + 0.25f * float(std::sin(x * 12.9898 + y * 78.233) * 0.5 + 0.5);
+            // A speckle from an integer hash of the texel (no visible pattern).
+            std::uint32_t h = std::uint32_t(x) * 73856093u ^ std::uint32_t(y) * 19349663u;
+            h = (h ^ (h >> 13)) * 1274126177u;
+            const float noise = 0.55f + 0.25f * float(h >> 24) / 255.0f;
             speckle.push_back(glm::vec4(noise, noise * 0.97f, noise * 0.92f, 1.0f));
         }
     const int checkerTexture
