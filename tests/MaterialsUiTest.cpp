@@ -217,6 +217,8 @@ private Q_SLOTS:
     void cleanupTestCase();
     void openingAnAssetListsItsMaterialsAndParts();
     void importNotesReachTheStatusBar();
+    void logarithmicSliderSpansTheDecades_data();
+    void logarithmicSliderSpansTheDecades();
     void mapSlotNamesTheImage_data();
     void mapSlotNamesTheImage();
     void choosingAMaterialEditsOnlyIt();
@@ -413,6 +415,37 @@ void MaterialsUiTest::importNotesReachTheStatusBar()
     QCOMPARE(m_document->missingFiles().size(), 1);
 }
 
+void MaterialsUiTest::logarithmicSliderSpansTheDecades_data()
+{
+    // The emissive strength's slider: 0 at position 0, then 0.01 to 10000 geometrically over
+    // positions 1 to 1000 (six decades in 999 steps: 333 steps a decade).
+    QTest::addColumn<double>("value");
+    QTest::addColumn<int>("position");
+    QTest::newRow("0") << 0.0 << 0;
+    QTest::newRow("0.01, the first step") << 0.01 << 1;
+    QTest::newRow("1") << 1.0 << 334;
+    QTest::newRow("100") << 100.0 << 667;
+    QTest::newRow("10000, the last") << 10000.0 << 1000;
+}
+
+void MaterialsUiTest::logarithmicSliderSpansTheDecades()
+{
+    QFETCH(double, value);
+    QFETCH(int, position);
+    ValueSlider slider(0.0, Material::kMaxEmissiveStrength, 3);
+    slider.setLogarithmic(0.01);
+    slider.setValue(value);
+    QCOMPARE(slider.slider()->value(), position);
+    QCOMPARE(slider.spinBox()->value(), value);
+    // Moving the slider to the position gives the value back (to the spin box's 3 decimals).
+    slider.setValue(123.0);
+    QSignalSpy edited(&slider, &ValueSlider::valueEdited);
+    slider.slider()->setValue(position);
+    QCOMPARE(edited.count(), 1);
+    QVERIFY2(std::abs(edited.at(0).at(0).toDouble() - value) <= 5e-4 * std::max(1.0, value),
+        qPrintable(QString::number(edited.at(0).at(0).toDouble())));
+}
+
 void MaterialsUiTest::mapSlotNamesTheImage_data()
 {
     QTest::addColumn<QString>("image"); // "embedded", or an external file name
@@ -468,11 +501,13 @@ void MaterialsUiTest::choosingAMaterialEditsOnlyIt()
 {
     QVERIFY(m_window->projectFiles()->openFile(m_twoMaterials));
     QListWidget* list = m_window->materialsDock()->materialList();
+    QSignalSpy sceneChanged(m_window->sceneController(), &SceneController::sceneChanged);
     QTest::mouseClick(
         list->viewport(), Qt::LeftButton, Qt::NoModifier, list->visualItemRect(list->item(1)).center());
     QCOMPARE(m_document->project().currentMaterial, 1);
     QCOMPARE(m_document->undoStack()->count(), 0); // a selection, not an edit
     QVERIFY(!m_document->isModified());
+    QCOMPARE(sceneChanged.count(), 0); // nothing drawn changed: no frame
 
     // Both docks show the blue material.
     TextureMapsDock* maps = m_window->textureMapsDock();

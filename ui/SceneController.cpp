@@ -38,6 +38,9 @@ SceneController::SceneController(Document* document, QObject* parent)
 
 void SceneController::onDocumentChanged(DocumentChanges changes)
 {
+    // Which material the docks edit is not drawn: choosing one must not cost a frame.
+    if (changes == DocumentChanges(DocumentChange::CurrentMaterial))
+        return;
     if (changes.testFlag(DocumentChange::EnvironmentSource)
         && m_document->project().environment.source != m_environmentSource)
         loadEnvironment();
