@@ -13,32 +13,17 @@ namespace facet::test {
 
 namespace {
 
-QJsonArray numbers(std::initializer_list<double> values)
-{
-    QJsonArray a;
-    for (double v : values)
-        a.append(v);
-    return a;
-}
-
 QJsonObject material(
     const QString& name, std::initializer_list<double> baseColor, double metallic, double roughness)
 {
     QJsonObject pbr;
-    pbr[QLatin1String("baseColorFactor")] = numbers(baseColor);
+    pbr[QLatin1String("baseColorFactor")] = jsonNumbers(baseColor);
     pbr[QLatin1String("metallicFactor")] = metallic;
     pbr[QLatin1String("roughnessFactor")] = roughness;
     QJsonObject m;
     m[QLatin1String("name")] = name;
     m[QLatin1String("pbrMetallicRoughness")] = pbr;
     return m;
-}
-
-QJsonObject textureInfo(int texture)
-{
-    QJsonObject info;
-    info[QLatin1String("index")] = texture;
-    return info;
 }
 
 // A quad spanning [x0, x1] x [-1, 1] at z = 0 facing +Z, glTF UVs.
@@ -78,8 +63,8 @@ int addOpenBox(GltfWriter& w, int material, const QString& name)
 QJsonObject placed(std::initializer_list<double> translation, std::initializer_list<double> scale)
 {
     QJsonObject transform;
-    transform[QLatin1String("translation")] = numbers(translation);
-    transform[QLatin1String("scale")] = numbers(scale);
+    transform[QLatin1String("translation")] = jsonNumbers(translation);
+    transform[QLatin1String("scale")] = jsonNumbers(scale);
     return transform;
 }
 
@@ -130,7 +115,7 @@ bool writeShowcaseAsset(const QString& path, QString* error)
     glass[QLatin1String("alphaMode")] = QLatin1String("BLEND");
     glass[QLatin1String("doubleSided")] = true;
     QJsonObject lamp = material(QStringLiteral("Lamp"), {0.1, 0.1, 0.1, 1}, 0.0, 0.6);
-    lamp[QLatin1String("emissiveFactor")] = numbers({1.0, 0.55, 0.2});
+    lamp[QLatin1String("emissiveFactor")] = jsonNumbers({1.0, 0.55, 0.2});
     QJsonObject strength;
     strength[QLatin1String("emissiveStrength")] = 8.0;
     QJsonObject extensions;
@@ -151,7 +136,7 @@ bool writeShowcaseAsset(const QString& path, QString* error)
         // The quad faces +Z: turned -90 degrees about X it faces +Y, on top of the slab.
         QJsonObject t = placed({0, -0.8, 0}, {1.6, 1.2, 1});
         const double s = std::sqrt(0.5);
-        t[QLatin1String("rotation")] = numbers({-s, 0, 0, s});
+        t[QLatin1String("rotation")] = jsonNumbers({-s, 0, 0, s});
         return t;
     }());
     const auto sphere = [&](int materialIndex, const QString& name) {
