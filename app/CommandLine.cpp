@@ -1,5 +1,7 @@
 #include "CommandLine.h"
 
+#include "core/AssetProject.h"
+
 #include <QCommandLineOption>
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -24,7 +26,8 @@ struct Parser {
     {
         parser.setApplicationDescription(
             QStringLiteral("Facet authors and previews physically based materials.\n"
-                           "With no command it opens the main window, on PROJECT.json if given.\n"
+                           "With no command it opens the main window, on PROJECT.json if given, or on a new\n"
+                           "project made from a glTF asset (.gltf, .glb) with its meshes and materials.\n"
                            "Commands (each has --help):\n"
                            "  render   render a project to an EXR or PNG without a display\n"
                            "  bench    time against error of the IBL quality settings (table and CSV)"));
@@ -33,8 +36,9 @@ struct Parser {
         parser.addOption(help);
         parser.addOption(version);
         parser.addOption(screenshot);
-        parser.addPositionalArgument(QStringLiteral("project"), QStringLiteral("Project file to open."),
-            QStringLiteral("[PROJECT.json]"));
+        parser.addPositionalArgument(QStringLiteral("project"),
+            QStringLiteral("Project file (.json) or glTF asset (.gltf, .glb) to open."),
+            QStringLiteral("[PROJECT.json|ASSET.glb]"));
     }
 };
 
@@ -120,12 +124,14 @@ CommandLine CommandLine::parse(const QStringList& arguments)
         if (!project.isFile() || !project.isReadable()) {
             result.action = Action::Error;
             const QString& path = positional.first();
+            const QString what
+                = isAssetFileName(path.toStdString()) ? QStringLiteral("asset") : QStringLiteral("project");
             if (!project.exists())
-                result.error = QStringLiteral("project '%1' does not exist").arg(path);
+                result.error = QStringLiteral("%1 '%2' does not exist").arg(what, path);
             else if (project.isDir())
-                result.error = QStringLiteral("project '%1' is a directory, not a project file").arg(path);
+                result.error = QStringLiteral("%1 '%2' is a directory, not a file").arg(what, path);
             else
-                result.error = QStringLiteral("cannot read project '%1'").arg(path);
+                result.error = QStringLiteral("cannot read %1 '%2'").arg(what, path);
             return result;
         }
         result.projectPath = positional.first();

@@ -74,8 +74,11 @@ void WindowScreenshot::save()
         fail(QString::fromStdString(reason));
         return;
     }
-    std::fprintf(stdout, "facet: saved %dx%d screenshot to %s\n", picture.width(), picture.height(),
-        qPrintable(m_path));
+    // The title says what the window showed (the project, or the asset it was made from).
+    QString title = m_window->windowTitle();
+    title.remove(QStringLiteral("[*]"));
+    std::fprintf(stdout, "facet: saved %dx%d screenshot of \"%s\" to %s\n", picture.width(), picture.height(),
+        qPrintable(title), qPrintable(m_path));
     std::fflush(stdout);
     QCoreApplication::exit(0);
 }

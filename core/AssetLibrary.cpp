@@ -248,4 +248,19 @@ std::string AssetLibrary::missingFileAdvice(const std::string& pathOrSpec)
         + ": put the file back there, or relink it";
 }
 
+std::optional<std::string> AssetLibrary::fileForSpec(const std::string& specOrPath, const char* function,
+    std::string* error)
+{
+    if (!isSpec(specOrPath))
+        return specOrPath;
+    std::string problem;
+    std::optional<std::string> resolved = resolveSpec(specOrPath, &problem);
+    if (!resolved && error) {
+        *error = std::string(function) + ": " + problem;
+        if (const std::string advice = missingFileAdvice(specOrPath); !advice.empty())
+            *error += "; " + advice;
+    }
+    return resolved;
+}
+
 } // namespace facet

@@ -62,6 +62,10 @@ struct AssetLibrary {
     // samples (library:installed/hdri/night.exr), which are not in /x/assets: run
     // packaging/fetch-assets.sh". Empty for other files.
     static std::string missingFileAdvice(const std::string& pathOrSpec);
+    // The file a spec or path names: a library reference resolved (resolveSpec), anything else as
+    // it is. On failure nullopt with *error "<function>: <problem>; <advice>" (missingFileAdvice).
+    static std::optional<std::string> fileForSpec(const std::string& specOrPath, const char* function,
+        std::string* error);
 };
 
 } // namespace facet

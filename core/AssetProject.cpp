@@ -23,7 +23,9 @@ std::optional<Project> projectFromAsset(const std::string& path, std::string* er
 {
     const std::string absolute = QDir::cleanPath(QFileInfo(QString::fromStdString(path)).absoluteFilePath()).toStdString();
     std::string importWarning;
-    const std::optional<GltfAsset> asset = importGltf(absolute, error, &importWarning);
+    GltfImportOptions options;
+    options.materialsOnly = true; // the view's mesh import reads (and checks) the geometry
+    const std::optional<GltfAsset> asset = importGltf(absolute, error, &importWarning, options);
     if (warning)
         *warning = importWarning;
     if (!asset)

@@ -389,20 +389,10 @@ std::optional<Environment> Environment::fromSpec(
     // reaches the file) and over the installed sample of that name (library:installed/hdri/studio.exr).
     if (const std::optional<Builtin> which = builtinFromName(spec))
         return builtin(*which);
-    std::string path = spec;
-    if (AssetLibrary::isSpec(spec)) {
-        std::string problem;
-        const std::optional<std::string> resolved = AssetLibrary::resolveSpec(spec, &problem);
-        if (!resolved) {
-            if (error) {
-                *error = "Environment::fromSpec: " + problem;
-                if (const std::string advice = AssetLibrary::missingFileAdvice(spec); !advice.empty())
-                    *error += "; " + advice;
-            }
-            return std::nullopt;
-        }
-        path = *resolved;
-    }
+    const std::optional<std::string> file = AssetLibrary::fileForSpec(spec, "Environment::fromSpec", error);
+    if (!file)
+        return std::nullopt;
+    std::string path = *file;
     std::optional<Environment> environment = load(path, error, warning);
     if (!environment && error && !QFileInfo::exists(QString::fromStdString(path))) {
         // Say where a missing file was meant to come from, and how to get it.

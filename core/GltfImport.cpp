@@ -73,12 +73,15 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
         *err = file.errorString().toStdString();
         return false;
     }
-    const QByteArray data = file.read(qint64(access->maxBytes) + 1);
-    if (file.error() != QFileDevice::NoError || std::size_t(data.size()) > access->maxBytes) {
-        *err = file.error() != QFileDevice::NoError ? file.errorString().toStdString() : "file grew while reading";
+    // Exactly the size the file has (a regular file's size is known): QIODevice::read(n) reserves
+    // n bytes up front, so asking for the limit would allocate it for every small file.
+    const qint64 size = file.size();
+    out->resize(std::size_t(size));
+    const qint64 got = size > 0 ? file.read(reinterpret_cast<char*>(out->data()), size) : 0;
+    if (got != size || file.error() != QFileDevice::NoError) {
+        *err = file.error() != QFileDevice::NoError ? file.errorString().toStdString() : "the file changed while reading";
         return false;
     }
-    out->assign(data.begin(), data.end());
     return true;
 }
 
@@ -682,6 +685,39 @@ std::optional<PrimitiveData> decodeDraco(const tinygltf::Model& model, const tin
     return data;
 }
 
+// A primitive instance's sub-mesh name: its mesh's name (else its node's), "#i" when the mesh
+// has several primitives.
+std::string partName(const tinygltf::Model& model, const MeshInstance& instance, std::size_t primitiveIndex)
+{
+    const tinygltf::Mesh& gltfMesh = model.meshes[std::size_t(instance.mesh)];
+    std::string name = !gltfMesh.name.empty() ? gltfMesh.name : model.nodes[std::size_t(instance.node)].name;
+    if (name.empty())
+        name = "mesh " + std::to_string(instance.mesh);
+    if (gltfMesh.primitives.size() > 1)
+        name += " #" + std::to_string(primitiveIndex);
+    return name;
+}
+
+// Whether a primitive has at least one triangle, from its accessors' declared counts (what
+// appendPrimitive would append a sub-mesh for), without reading any vertex data.
+bool declaresTriangles(const tinygltf::Model& model, const tinygltf::Primitive& primitive)
+{
+    const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+    const auto count = [&model](int accessor) -> std::size_t {
+        return accessor >= 0 && std::size_t(accessor) < model.accessors.size() ? model.accessors[std::size_t(accessor)].count
+                                                                               : 0;
+    };
+    const auto position = primitive.attributes.find("POSITION");
+    const std::size_t corners = primitive.indices >= 0 ? count(primitive.indices)
+        : position != primitive.attributes.end()       ? count(position->second)
+                                                        : 0;
+    // A Draco primitive's indices are in its bitstream (loadModel strips "indices"): its
+    // POSITION accessor still declares the vertex count.
+    if (mode == TINYGLTF_MODE_TRIANGLES)
+        return corners >= 3 || primitive.extensions.count("KHR_draco_mesh_compression");
+    return corners >= 3;
+}
+
 // Appends one primitive instance as a sub-mesh. nullopt with *problem on broken data; a
 // PartFacts without a new sub-mesh for points, lines or no triangles.
 std::optional<PartFacts> appendPrimitive(const tinygltf::Model& model, const MeshInstance& instance,
@@ -738,11 +774,7 @@ std::optional<PartFacts> appendPrimitive(const tinygltf::Model& model, const Mes
     facts.flatNormals = !data->normal.present();
 
     SubMesh sub;
-    sub.name = !gltfMesh.name.empty() ? gltfMesh.name : model.nodes[std::size_t(instance.node)].name;
-    if (sub.name.empty())
-        sub.name = "mesh " + std::to_string(instance.mesh);
-    if (gltfMesh.primitives.size() > 1)
-        sub.name += " #" + std::to_string(primitiveIndex);
+    sub.name = partName(model, instance, primitiveIndex);
     sub.materialIndex = materialIndex;
     sub.firstIndex = std::uint32_t(out.indices.size());
 
@@ -877,6 +909,16 @@ std::optional<GltfAsset> importChecked(const std::string& path, const GltfImport
                 gltfsupport::fail("more than " + std::to_string(options.maxParts) + " mesh parts", problem);
                 return std::nullopt;
             }
+            if (options.materialsOnly) {
+                // The parts as the full import makes them, without reading a vertex.
+                if (declaresTriangles(model, primitive)) {
+                    SubMesh sub;
+                    sub.name = partName(model, instance, p);
+                    sub.materialIndex = *material;
+                    mesh.subMeshes.push_back(std::move(sub));
+                }
+                continue;
+            }
             const std::size_t before = mesh.subMeshes.size();
             const auto facts = appendPrimitive(model, instance, p, *material, options, mesh, problem);
             if (!facts)
@@ -904,6 +946,8 @@ std::optional<GltfAsset> importChecked(const std::string& path, const GltfImport
         gltfsupport::fail("contains no triangles", problem);
         return std::nullopt;
     }
+    if (options.materialsOnly)
+        return asset;
     std::vector<std::string> repairs;
     if (!finishImportedMesh(mesh, parts, options.mesh.uvFallback, repairs, problem))
         return std::nullopt;

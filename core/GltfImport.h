@@ -34,6 +34,10 @@ struct GltfImportOptions {
     std::size_t maxNodes = 100'000;    // node instances visited in the scene graph
     std::size_t maxParts = 65'536;     // primitive instances (sub-meshes)
     std::size_t maxMaterials = 4'096;
+    // The materials and the parts (sub-meshes with their names and material indices, no vertices):
+    // what a project needs from an asset whose mesh the view loads separately. Faster, and the
+    // mesh's own repairs are noted once, by the mesh import.
+    bool materialsOnly = false;
 };
 
 struct GltfAsset {

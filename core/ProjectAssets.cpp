@@ -55,20 +55,10 @@ std::optional<Mesh> loadViewMesh(const std::string& nameOrPath, std::string* err
         primitive->normalizeToUnitSphere();
         return primitive;
     }
-    std::string path = nameOrPath;
-    if (AssetLibrary::isSpec(nameOrPath)) {
-        std::string problem;
-        const std::optional<std::string> resolved = AssetLibrary::resolveSpec(nameOrPath, &problem);
-        if (!resolved) {
-            if (error) {
-                *error = "loadViewMesh: " + problem;
-                if (const std::string advice = AssetLibrary::missingFileAdvice(nameOrPath); !advice.empty())
-                    *error += "; " + advice;
-            }
-            return std::nullopt;
-        }
-        path = *resolved;
-    }
+    const std::optional<std::string> file = AssetLibrary::fileForSpec(nameOrPath, "loadViewMesh", error);
+    if (!file)
+        return std::nullopt;
+    std::string path = *file;
     std::string importError;
     std::string importWarning;
     auto mesh = importMesh(path, &importError, &importWarning);

@@ -445,8 +445,8 @@ bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, con
         }
     }
 
-    // The draws of this pass: each visible part with its material's variant. Debug views show a
-    // blended material's values opaque.
+    // The draws of this pass: each visible part with its material's variant. Blended materials
+    // blend in the debug views too (surface.frag), except the alpha and non-finite views.
     struct Draw {
         int material;
         SurfaceVariantKey key;
@@ -465,7 +465,8 @@ bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, con
         auto& key = keys[std::size_t(material)];
         if (!key)
             key = variantKeyFor(scene, material);
-        const bool blended = hasFeature(key->features, SurfaceFeature::AlphaBlend) && key->debugView == DebugView::None;
+        const bool blended = hasFeature(key->features, SurfaceFeature::AlphaBlend) && key->debugView != DebugView::Alpha
+            && key->debugView != DebugView::NonFinite;
         if (blended != (pass == SurfacePass::Blended))
             continue;
         const glm::dvec3 centre = p < m_partCentres.size()

@@ -12,6 +12,8 @@
 #include <QTemporaryDir>
 #include <QtTest/QTest>
 
+#include "TestSupport.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -19,6 +21,7 @@
 #include <vector>
 
 using namespace facet;
+using facet::test::writeText;
 
 namespace {
 
@@ -39,11 +42,6 @@ std::array<float, 3> apply(const OCIO::ConstCPUProcessorRcPtr& processor, float 
     return pixel;
 }
 
-bool writeText(const QString& path, const QByteArray& text)
-{
-    QFile file(path);
-    return file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(text) == text.size();
-}
 
 // A minimal OCIO v2 config: one scene-linear space, a display with a square-root view (the
 // inverse of an exponent of 2) and Raw, and a second display.

@@ -24,28 +24,15 @@
 
 using namespace facet;
 using facet::test::GltfWriter;
+using facet::test::jsonNumbers;
+using facet::test::textureInfo;
 using Storage = GltfWriter::BufferStorage;
 
 Q_DECLARE_METATYPE(GltfWriter::BufferStorage)
 
 namespace {
 
-QJsonArray numbers(std::initializer_list<double> values)
-{
-    QJsonArray a;
-    for (double v : values)
-        a.append(v);
-    return a;
-}
 
-QJsonObject textureInfo(int texture, const QJsonObject& extensions = {})
-{
-    QJsonObject info;
-    info[QLatin1String("index")] = texture;
-    if (!extensions.isEmpty())
-        info[QLatin1String("extensions")] = extensions;
-    return info;
-}
 
 // A 4 x 4 RGBA texture whose channels hold distinct constant values: R 0.2, G 0.4, B 0.6, A 0.8.
 QByteArray packedPng()
@@ -79,6 +66,8 @@ private Q_SLOTS:
     void brokenFilesGiveClearMessages();
     void deepNodeGraphDoesNotOverflow();
     void meshImportReadsGltfThroughThisReader();
+    void materialsOnlyListsTheSameParts();
+    void corruptedFilesNeverCrash();
 };
 
 void GltfImportTest::materialFactorsAndMaps_data()
@@ -97,7 +86,7 @@ void GltfImportTest::materialFactorsAndMaps()
     const int packed = w.addTexture(w.addImageEmbedded(packedPng(), QStringLiteral("image/png")));
     const int color = w.addTexture(w.addImageUri(QStringLiteral("base%20colour.png")));
     QJsonObject pbr;
-    pbr[QLatin1String("baseColorFactor")] = numbers({0.5, 0.25, 0.125, 0.75});
+    pbr[QLatin1String("baseColorFactor")] = jsonNumbers({0.5, 0.25, 0.125, 0.75});
     pbr[QLatin1String("baseColorTexture")] = textureInfo(color);
     pbr[QLatin1String("metallicFactor")] = 0.3;
     pbr[QLatin1String("roughnessFactor")] = 0.7;
@@ -112,13 +101,13 @@ void GltfImportTest::materialFactorsAndMaps()
     occlusion[QLatin1String("strength")] = 0.6;
     material[QLatin1String("occlusionTexture")] = occlusion;
     QJsonObject transform;
-    transform[QLatin1String("offset")] = numbers({0.25, 0.5});
+    transform[QLatin1String("offset")] = jsonNumbers({0.25, 0.5});
     transform[QLatin1String("rotation")] = 0.3;
-    transform[QLatin1String("scale")] = numbers({2.0, 3.0});
+    transform[QLatin1String("scale")] = jsonNumbers({2.0, 3.0});
     QJsonObject transformExtension;
     transformExtension[QLatin1String("KHR_texture_transform")] = transform;
     material[QLatin1String("emissiveTexture")] = textureInfo(color, transformExtension);
-    material[QLatin1String("emissiveFactor")] = numbers({1.0, 0.5, 0.0});
+    material[QLatin1String("emissiveFactor")] = jsonNumbers({1.0, 0.5, 0.0});
     material[QLatin1String("alphaMode")] = QLatin1String("MASK");
     material[QLatin1String("alphaCutoff")] = 0.35;
     material[QLatin1String("doubleSided")] = true;
@@ -257,8 +246,8 @@ void GltfImportTest::severalMaterialsKeepTheirParts()
     GltfWriter w;
     QJsonObject red, blue;
     QJsonObject redPbr, bluePbr;
-    redPbr[QLatin1String("baseColorFactor")] = numbers({1, 0, 0, 1});
-    bluePbr[QLatin1String("baseColorFactor")] = numbers({0, 0, 1, 1});
+    redPbr[QLatin1String("baseColorFactor")] = jsonNumbers({1, 0, 0, 1});
+    bluePbr[QLatin1String("baseColorFactor")] = jsonNumbers({0, 0, 1, 1});
     red[QLatin1String("name")] = QLatin1String("Red");
     red[QLatin1String("pbrMetallicRoughness")] = redPbr;
     blue[QLatin1String("name")] = QLatin1String("Blue");
@@ -322,9 +311,9 @@ void GltfImportTest::nodeTransformsAndModes()
     const int quad = w.addQuad(-1);
     QJsonObject child;
     child[QLatin1String("mesh")] = quad;
-    child[QLatin1String("scale")] = numbers({-1, 1, 1});
+    child[QLatin1String("scale")] = jsonNumbers({-1, 1, 1});
     QJsonObject parent;
-    parent[QLatin1String("translation")] = numbers({10, 0, 0});
+    parent[QLatin1String("translation")] = jsonNumbers({10, 0, 0});
     parent[QLatin1String("children")] = QJsonArray {1};
     w.json()[QLatin1String("nodes")] = QJsonArray {parent, child};
     QJsonObject scene;
@@ -524,6 +513,116 @@ void GltfImportTest::meshImportReadsGltfThroughThisReader()
     QVERIFY2(QString::fromStdString(error).startsWith(QStringLiteral("importMesh: ") + file)
                  && QString::fromStdString(error).contains(QStringLiteral("reached twice")),
              error.c_str());
+}
+
+// The quick read a project uses (materialsOnly) lists exactly the parts the full import makes:
+// the same names and material indices, in the same order, also with a Draco sample mesh.
+void GltfImportTest::materialsOnlyListsTheSameParts()
+{
+    GltfWriter w;
+    QJsonObject red;
+    red[QLatin1String("pbrMetallicRoughness")] = QJsonObject {{QStringLiteral("baseColorFactor"), jsonNumbers({1, 0, 0, 1})}};
+    const int material = w.addMaterial(red);
+    w.addNode(w.addQuad(material, 0.0f, QStringLiteral("front")));
+    w.addNode(w.addQuad(-1, -1.0f, QStringLiteral("back")));
+    w.addNode(w.addSphere(material));
+    const QString file = path(QStringLiteral("parts.glb"));
+    QVERIFY(w.write(file, Storage::Glb));
+    QStringList files {file};
+    if (const QString sample = facet::test::modelPath(QStringLiteral("pmndrs")); !sample.isEmpty())
+        files.append(sample); // Draco-compressed, one textured material
+    for (const QString& f : files) {
+        std::string error;
+        const auto full = importGltf(f.toStdString(), &error);
+        QVERIFY2(full, error.c_str());
+        GltfImportOptions options;
+        options.materialsOnly = true;
+        const auto quick = importGltf(f.toStdString(), &error, nullptr, options);
+        QVERIFY2(quick, error.c_str());
+        QVERIFY(quick->mesh.vertices.empty());
+        QCOMPARE(quick->materials, full->materials);
+        QCOMPARE(quick->mesh.subMeshes.size(), full->mesh.subMeshes.size());
+        for (std::size_t i = 0; i < full->mesh.subMeshes.size(); ++i) {
+            QCOMPARE(quick->mesh.subMeshes[i].name, full->mesh.subMeshes[i].name);
+            QCOMPARE(quick->mesh.subMeshes[i].materialIndex, full->mesh.subMeshes[i].materialIndex);
+        }
+    }
+}
+
+// Deterministic mutation: bytes of valid assets (a .glb of Facet's writer with a packed texture,
+// the same as .gltf JSON, and the Draco-compressed CC0 sample) overwritten at random places,
+// truncated or extended. Every outcome is an asset that validates or a message naming the file;
+// nothing crashes, hangs or throws (run under the asan preset too).
+void GltfImportTest::corruptedFilesNeverCrash()
+{
+    GltfWriter w;
+    QJsonObject values;
+    values[QLatin1String("baseColorTexture")] = textureInfo(w.addTexture(w.addImageEmbedded(packedPng(), QStringLiteral("image/png"))));
+    QJsonObject material;
+    material[QLatin1String("pbrMetallicRoughness")] = values;
+    const int m = w.addMaterial(material);
+    w.addNode(w.addQuad(m));
+    w.addNode(w.addSphere(m, 12, 6));
+    const QString glb = path(QStringLiteral("seed.glb"));
+    const QString gltf = path(QStringLiteral("seed.gltf"));
+    QVERIFY(w.write(glb, Storage::Glb));
+    QVERIFY(w.write(gltf, Storage::DataUri));
+    QStringList seeds {glb, gltf};
+    if (const QString sample = facet::test::modelPath(QStringLiteral("pmndrs")); !sample.isEmpty())
+        seeds.append(sample);
+
+    std::uint64_t state = 0x9E3779B97F4A7C15ULL;
+    const auto next = [&state] { // xorshift64*
+        state ^= state >> 12;
+        state ^= state << 25;
+        state ^= state >> 27;
+        return state * 0x2545F4914F6CDD1DULL;
+    };
+    int accepted = 0, refused = 0;
+    for (const QString& seed : seeds) {
+        QFile in(seed);
+        QVERIFY(in.open(QIODevice::ReadOnly));
+        const QByteArray original = in.readAll();
+        for (int round = 0; round < 150; ++round) {
+            QByteArray bytes = original;
+            const int kind = int(next() % 4);
+            if (kind == 0) { // a few bytes overwritten
+                for (int i = 0, n = 1 + int(next() % 8); i < n; ++i)
+                    bytes[qsizetype(next() % std::uint64_t(bytes.size()))] = char(next());
+            } else if (kind == 1) { // cut short
+                bytes.truncate(qsizetype(next() % std::uint64_t(bytes.size())));
+            } else if (kind == 2) { // a run of one byte value (zeros, 0xff, digits in JSON)
+                const qsizetype at = qsizetype(next() % std::uint64_t(bytes.size()));
+                static constexpr char kValues[] = {'\0', '\x7f', '9', '-', '['};
+                const char value = kValues[next() % 5];
+                for (qsizetype i = at; i < std::min(bytes.size(), at + qsizetype(1 + next() % 64)); ++i)
+                    bytes[i] = value;
+            } else { // garbage appended
+                for (int i = 0, n = 1 + int(next() % 256); i < n; ++i)
+                    bytes.append(char(next()));
+            }
+            const QString file = path(QStringLiteral("mutant%1").arg(QFileInfo(seed).suffix().prepend(u'.')));
+            QFile out(file);
+            QVERIFY(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            out.write(bytes);
+            out.close();
+            std::string error;
+            const auto asset = importGltf(file.toStdString(), &error);
+            if (asset) {
+                ++accepted;
+                std::string problem;
+                QVERIFY2(asset->mesh.validate(&problem), problem.c_str());
+                for (const Material& each : asset->materials)
+                    QVERIFY2(each.validate(&problem), problem.c_str());
+            } else {
+                ++refused;
+                QVERIFY2(QString::fromStdString(error).startsWith(QStringLiteral("importGltf: ") + file + QStringLiteral(": ")),
+                         error.c_str());
+            }
+        }
+    }
+    qInfo("%d mutants accepted (valid), %d refused with a message", accepted, refused);
+    QVERIFY(refused > 0);
 }
 
 QTEST_GUILESS_MAIN(GltfImportTest)

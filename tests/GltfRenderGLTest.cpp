@@ -28,28 +28,15 @@
 
 using namespace facet;
 using facet::test::GltfWriter;
+using facet::test::jsonNumbers;
+using facet::test::textureInfo;
 
 namespace {
 
 constexpr int kSize = 64;
 constexpr double kBackground = 0.5; // the uniform environment's radiance
 
-QJsonArray numbers(std::initializer_list<double> values)
-{
-    QJsonArray a;
-    for (double v : values)
-        a.append(v);
-    return a;
-}
 
-QJsonObject textureInfo(int texture, const QJsonObject& extensions = {})
-{
-    QJsonObject info;
-    info[QLatin1String("index")] = texture;
-    if (!extensions.isEmpty())
-        info[QLatin1String("extensions")] = extensions;
-    return info;
-}
 
 QJsonObject pbr(const QJsonObject& values)
 {
@@ -179,7 +166,7 @@ void GltfRenderGLTest::factorsOnAQuad()
 {
     GltfWriter w;
     QJsonObject values;
-    values[QLatin1String("baseColorFactor")] = numbers({0.2, 0.4, 0.6, 1.0});
+    values[QLatin1String("baseColorFactor")] = jsonNumbers({0.2, 0.4, 0.6, 1.0});
     values[QLatin1String("metallicFactor")] = 0.3;
     values[QLatin1String("roughnessFactor")] = 0.7;
     w.addNode(w.addQuad(w.addMaterial(pbr(values))));
@@ -209,7 +196,7 @@ void GltfRenderGLTest::packedTextureOcclusionAndEmissive()
     occlusion[QLatin1String("strength")] = 0.5;
     material[QLatin1String("occlusionTexture")] = occlusion;
     material[QLatin1String("emissiveTexture")] = textureInfo(glow);
-    material[QLatin1String("emissiveFactor")] = numbers({1.0, 0.5, 0.25});
+    material[QLatin1String("emissiveFactor")] = jsonNumbers({1.0, 0.5, 0.25});
     QJsonObject strength;
     strength[QLatin1String("emissiveStrength")] = 4.0;
     QJsonObject extensions;
@@ -258,8 +245,8 @@ void GltfRenderGLTest::textureTransformPicksTheQuadrant()
     GltfWriter w;
     const int quadrants = w.addTexture(w.addImageEmbedded(quadrantsPng(), QStringLiteral("image/png")));
     QJsonObject transform;
-    transform[QLatin1String("offset")] = numbers({offset[0], offset[1]});
-    transform[QLatin1String("scale")] = numbers({scale[0], scale[1]});
+    transform[QLatin1String("offset")] = jsonNumbers({offset[0], offset[1]});
+    transform[QLatin1String("scale")] = jsonNumbers({scale[0], scale[1]});
     QJsonObject extension;
     extension[QLatin1String("KHR_texture_transform")] = transform;
     QJsonObject values;
@@ -277,8 +264,8 @@ void GltfRenderGLTest::twoMaterialsSideBySide()
 {
     GltfWriter w;
     QJsonObject red, blue;
-    red[QLatin1String("baseColorFactor")] = numbers({1, 0, 0, 1});
-    blue[QLatin1String("baseColorFactor")] = numbers({0, 0, 1, 1});
+    red[QLatin1String("baseColorFactor")] = jsonNumbers({1, 0, 0, 1});
+    blue[QLatin1String("baseColorFactor")] = jsonNumbers({0, 0, 1, 1});
     const int redMaterial = w.addMaterial(pbr(red));
     const int blueMaterial = w.addMaterial(pbr(blue));
     w.addNode(addQuadAt(w, -1.0f, -0.05f, redMaterial));
@@ -301,7 +288,7 @@ void GltfRenderGLTest::hiddenPartIsNotDrawn()
 {
     GltfWriter w;
     QJsonObject red;
-    red[QLatin1String("baseColorFactor")] = numbers({1, 0, 0, 1});
+    red[QLatin1String("baseColorFactor")] = jsonNumbers({1, 0, 0, 1});
     const int material = w.addMaterial(pbr(red));
     w.addNode(addQuadAt(w, -1.0f, -0.05f, material));
     w.addNode(addQuadAt(w, 0.05f, 1.0f, material));
@@ -323,7 +310,7 @@ void GltfRenderGLTest::alphaMaskCutsOut()
     const int cutout = w.addTexture(w.addImageEmbedded(facet::test::encodePng(8, 8, 4, texels), QStringLiteral("image/png")));
     QJsonObject values;
     values[QLatin1String("baseColorTexture")] = textureInfo(cutout);
-    values[QLatin1String("baseColorFactor")] = numbers({1, 0, 0, 1});
+    values[QLatin1String("baseColorFactor")] = jsonNumbers({1, 0, 0, 1});
     QJsonObject material = pbr(values);
     material[QLatin1String("alphaMode")] = QLatin1String("MASK");
     material[QLatin1String("alphaCutoff")] = 0.5;
@@ -340,7 +327,7 @@ void GltfRenderGLTest::alphaBlendComposites()
     const auto writer = [](const char* mode) {
         GltfWriter w;
         QJsonObject values;
-        values[QLatin1String("baseColorFactor")] = numbers({0.9, 0.2, 0.1, 0.25});
+        values[QLatin1String("baseColorFactor")] = jsonNumbers({0.9, 0.2, 0.1, 0.25});
         values[QLatin1String("metallicFactor")] = 0.0;
         QJsonObject material = pbr(values);
         material[QLatin1String("alphaMode")] = QLatin1String(mode);
@@ -363,7 +350,7 @@ void GltfRenderGLTest::singleSidedFacesAreCulled()
     for (const bool doubleSided : {false, true}) {
         GltfWriter w;
         QJsonObject values;
-        values[QLatin1String("baseColorFactor")] = numbers({0, 1, 0, 1});
+        values[QLatin1String("baseColorFactor")] = jsonNumbers({0, 1, 0, 1});
         QJsonObject material = pbr(values);
         material[QLatin1String("doubleSided")] = doubleSided;
         w.addNode(addQuadAt(w, -1.0f, 1.0f, w.addMaterial(material), /*away=*/true));

@@ -24,6 +24,8 @@
 #include "core/ProjectAssets.h"
 
 using namespace facet;
+using facet::test::strings;
+using facet::test::writeText;
 
 namespace {
 
@@ -33,20 +35,7 @@ QString qs(const std::string& s)
 }
 
 // A QStringList from literals (QT_NO_CAST_FROM_ASCII forbids the implicit conversion).
-QStringList strings(std::initializer_list<const char*> items)
-{
-    QStringList list;
-    for (const char* item : items)
-        list.append(QString::fromUtf8(item));
-    return list;
-}
 
-bool writeText(const QString& path, const QByteArray& text)
-{
-    QDir().mkpath(QFileInfo(path).absolutePath());
-    QFile file(path);
-    return file.open(QIODevice::WriteOnly) && file.write(text) == text.size();
-}
 
 // One triangle with a normal and no UVs: the smallest mesh importMesh takes.
 const QByteArray kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n";

@@ -30,6 +30,7 @@
 #include <vector>
 
 using namespace facet;
+using facet::test::writeText;
 
 namespace {
 
@@ -47,11 +48,6 @@ bool contains(const std::string& text, const std::string& part)
     return text.find(part) != std::string::npos;
 }
 
-bool writeText(const QString& path, const QByteArray& text)
-{
-    QFile file(path);
-    return file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(text) == text.size();
-}
 
 // Pixel (x, y) of the ramp, y counted from the top (as Framebuffer::readPixels returns rows).
 glm::vec3 rampPixel(int x, int y)

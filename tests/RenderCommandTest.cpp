@@ -2,6 +2,8 @@
 // images read back, its errors and exit codes.
 
 #include <QDir>
+#include <QJsonArray>
+#include <QJsonObject>
 #include <QFile>
 #include <QFileInfo>
 #include <QProcessEnvironment>
@@ -11,6 +13,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "GltfWriter.h"
 #include "TestSupport.h"
 #include "core/GroundTruth.h"
 #include "core/ImageMetrics.h"
@@ -26,6 +29,8 @@
 #include <vector>
 
 using namespace facet;
+using facet::test::strings;
+using facet::test::writeText;
 
 namespace {
 
@@ -37,20 +42,7 @@ Result runFacet(const QStringList& arguments, const QProcessEnvironment& extra =
 }
 
 // A QStringList from literals (QT_NO_CAST_FROM_ASCII forbids the implicit conversion).
-QStringList strings(std::initializer_list<const char*> items)
-{
-    QStringList list;
-    for (const char* item : items)
-        list.append(QString::fromUtf8(item));
-    return list;
-}
 
-bool writeText(const QString& path, const QByteArray& text)
-{
-    QDir().mkpath(QFileInfo(path).absolutePath());
-    QFile file(path);
-    return file.open(QIODevice::WriteOnly) && file.write(text) == text.size();
-}
 
 // A project file holding only an environment source, a mesh and a debug view.
 QByteArray projectJson(const QString& source, const QString& mesh = QStringLiteral("sphere"),
@@ -597,6 +589,121 @@ private Q_SLOTS:
                 if (view == QStringLiteral("shading-normal"))
                     expected.clear();
             }
+    }
+
+    // `facet render ASSET.glb` renders the asset with its own materials (two quads side by side,
+    // red and blue), and --roughness overrides every material.
+    void gltfAssetRendersWithItsMaterials()
+    {
+        using facet::test::GltfWriter;
+        GltfWriter w;
+        const auto material = [&w](double r, double g, double b, double roughness) {
+            QJsonObject values;
+            values[QLatin1String("baseColorFactor")] = QJsonArray {r, g, b, 1.0};
+            values[QLatin1String("roughnessFactor")] = roughness;
+            QJsonObject m;
+            m[QLatin1String("pbrMetallicRoughness")] = values;
+            return w.addMaterial(m);
+        };
+        const auto quad = [&w](float x0, float x1, int m) {
+            const glm::vec3 n(0, 0, 1);
+            return w.addMesh({{x0, -1, 0}, {x1, -1, 0}, {x1, 1, 0}, {x0, 1, 0}}, {n, n, n, n},
+                             {{0, 1}, {1, 1}, {1, 0}, {0, 0}}, {0, 1, 2, 0, 2, 3}, m);
+        };
+        const int red = material(1, 0, 0, 0.9);
+        const int blue = material(0, 0, 1, 0.4);
+        w.addNode(quad(-1.0f, -0.05f, red));
+        w.addNode(quad(0.05f, 1.0f, blue));
+        const QString asset = path(QStringLiteral("two-materials.glb"));
+        QVERIFY(w.write(asset, GltfWriter::BufferStorage::Glb));
+        const auto renderView = [&](const QString& view, const QStringList& extra) -> std::optional<Image> {
+            const QString out = path(QStringLiteral("asset-%1.exr").arg(view));
+            QStringList args {QStringLiteral("render"), asset, QStringLiteral("--view"), view,
+                              QStringLiteral("--reference-view"), QStringLiteral("--quality"), QStringLiteral("draft"),
+                              QStringLiteral("--env"), QStringLiteral("uniform:0.5"), QStringLiteral("--size"),
+                              QStringLiteral("32x32"), QStringLiteral("-o"), out};
+            args += extra;
+            const Result r = runFacet(args);
+            if (r.exitCode != 0) {
+                qWarning("%s", qPrintable(r.err));
+                return std::nullopt;
+            }
+            std::string error;
+            return Image::load(out.toStdString(), &error);
+        };
+        const auto base = renderView(QStringLiteral("base-color"), {});
+        QVERIFY(base);
+        QVERIFY(std::abs(base->at(11, 16).r - 1.0f) < 1e-3f && base->at(11, 16).b < 1e-3f); // left: red
+        QVERIFY(std::abs(base->at(21, 16).b - 1.0f) < 1e-3f && base->at(21, 16).r < 1e-3f); // right: blue
+        const auto own = renderView(QStringLiteral("roughness"), {});
+        QVERIFY(own);
+        QVERIFY(std::abs(own->at(11, 16).r - 0.9f) < 1e-3f && std::abs(own->at(21, 16).r - 0.4f) < 1e-3f);
+        const auto overridden = renderView(QStringLiteral("roughness"), {QStringLiteral("--roughness"), QStringLiteral("0.2")});
+        QVERIFY(overridden);
+        QVERIFY(std::abs(overridden->at(11, 16).r - 0.2f) < 1e-3f && std::abs(overridden->at(21, 16).r - 0.2f) < 1e-3f);
+    }
+
+    // Broken assets: a message naming the file and the problem, the right exit code, no crash.
+    void badGltfAssetsGiveClearErrors_data()
+    {
+        QTest::addColumn<QString>("defect");
+        QTest::addColumn<int>("exitCode");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("missing image") << QStringLiteral("missing-image") << 1 << QStringLiteral("nope.png: no such file");
+        QTest::newRow("image that is not an image")
+            << QStringLiteral("not-an-image") << 1 << QStringLiteral("fake.png");
+        QTest::newRow("wrong accessor") << QStringLiteral("accessor") << 1 << QStringLiteral("reach past the end");
+        QTest::newRow("texture index out of range")
+            << QStringLiteral("texture-index") << 0 << QStringLiteral("names texture 9, which does not exist");
+        QTest::newRow(".glb cut in half") << QStringLiteral("cut") << 1 << QStringLiteral("cut short");
+        QTest::newRow("not glTF at all") << QStringLiteral("garbage") << 1 << QStringLiteral("not a readable glTF file");
+    }
+    void badGltfAssetsGiveClearErrors()
+    {
+        using facet::test::GltfWriter;
+        QFETCH(QString, defect);
+        QFETCH(int, exitCode);
+        QFETCH(QString, message);
+        QDir(m_dir.path()).mkpath(defect);
+        const QString folder = path(defect);
+        GltfWriter w;
+        QJsonObject values;
+        if (defect == QLatin1String("missing-image"))
+            values[QLatin1String("baseColorTexture")] = QJsonObject {{QStringLiteral("index"), w.addTexture(w.addImageUri(QStringLiteral("nope.png")))}};
+        else if (defect == QLatin1String("not-an-image")) {
+            QFile fake(folder + QStringLiteral("/fake.png"));
+            QVERIFY(fake.open(QIODevice::WriteOnly) && fake.write("this is text, not a PNG\n") > 0);
+            values[QLatin1String("baseColorTexture")] = QJsonObject {{QStringLiteral("index"), w.addTexture(w.addImageUri(QStringLiteral("fake.png")))}};
+        } else if (defect == QLatin1String("texture-index"))
+            values[QLatin1String("baseColorTexture")] = QJsonObject {{QStringLiteral("index"), 9}};
+        QJsonObject material;
+        material[QLatin1String("pbrMetallicRoughness")] = values;
+        w.addNode(w.addQuad(w.addMaterial(material)));
+        if (defect == QLatin1String("accessor")) {
+            QJsonArray accessors = w.json()[QLatin1String("accessors")].toArray();
+            QJsonObject a = accessors[0].toObject();
+            a[QLatin1String("count")] = 100000;
+            accessors[0] = a;
+            w.json()[QLatin1String("accessors")] = accessors;
+        }
+        const QString asset = folder + QStringLiteral("/asset.glb");
+        QVERIFY(w.write(asset, GltfWriter::BufferStorage::Glb));
+        if (defect == QLatin1String("cut") || defect == QLatin1String("garbage")) {
+            QFile file(asset);
+            QVERIFY(file.open(QIODevice::ReadWrite));
+            if (defect == QLatin1String("cut"))
+                QVERIFY(file.resize(file.size() / 2));
+            else
+                QVERIFY(file.resize(0) && file.write("this is not a model") > 0);
+        }
+        const QString out = folder + QStringLiteral("/out.exr");
+        const Result r = runFacet({QStringLiteral("render"), asset, QStringLiteral("--reference-view"), QStringLiteral("--quality"),
+                                   QStringLiteral("draft"), QStringLiteral("--size"), QStringLiteral("16x16"),
+                                   QStringLiteral("-o"), out});
+        QVERIFY2(r.exitCode == exitCode, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+        QVERIFY2(r.err.contains(asset) || r.err.contains(folder), qPrintable(r.err)); // names the file
+        QCOMPARE(QFile::exists(out), exitCode == 0);
     }
 };
 

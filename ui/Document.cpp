@@ -1,5 +1,6 @@
 #include "ui/Document.h"
 
+#include "core/AssetProject.h"
 #include "core/GltfImport.h"
 #include "render/ShaderVariant.h"
 #include "ui/DocumentCommands.h"
@@ -179,6 +180,7 @@ void Document::replaceProject(const Project& project, const QString& path, bool 
 void Document::newProject()
 {
     m_warnings.clear();
+    m_sourceAssetPath.clear();
     replaceProject(Project::defaultProject(), QString(), false);
 }
 
@@ -197,7 +199,24 @@ bool Document::open(const QString& path, QString* error)
         return false;
     }
     m_warnings = fromStd(warning).trimmed();
+    m_sourceAssetPath.clear();
     replaceProject(*project, absolute, false);
+    return true;
+}
+
+bool Document::openAsset(const QString& path, QString* error)
+{
+    std::string problem;
+    std::string warning;
+    const QString absolute = QDir::cleanPath(QFileInfo(path).absoluteFilePath());
+    const std::optional<Project> project = projectFromAsset(absolute.toStdString(), &problem, &warning);
+    if (!project) {
+        *error = fromStd(problem);
+        return false;
+    }
+    m_warnings = fromStd(warning).trimmed();
+    m_sourceAssetPath = absolute;
+    replaceProject(*project, QString(), false);
     return true;
 }
 
@@ -215,6 +234,7 @@ bool Document::saveAs(const QString& path, QString* error)
         *error = fromStd(problem);
         return false;
     }
+    m_sourceAssetPath.clear(); // a project file of its own now
     setFilePath(absolute);
     m_forcedModified = false;
     m_undoStack->setClean();
@@ -261,13 +281,18 @@ bool Document::recover(const QString& recoveryPath, QString* error)
         return false;
     }
     m_warnings = fromStd(warning).trimmed();
+    m_sourceAssetPath.clear();
     replaceProject(*project, original, true);
     return true;
 }
 
 QString Document::displayName() const
 {
-    return m_filePath.isEmpty() ? tr("Untitled") : QFileInfo(m_filePath).fileName();
+    if (!m_filePath.isEmpty())
+        return QFileInfo(m_filePath).fileName();
+    if (!m_sourceAssetPath.isEmpty())
+        return tr("Untitled (%1)").arg(QFileInfo(m_sourceAssetPath).fileName());
+    return tr("Untitled");
 }
 
 bool Document::isModified() const

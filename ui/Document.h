@@ -81,6 +81,13 @@ public:
     // is cleared, the document is unmodified, warnings() holds the loader's notes and
     // missingFiles() the files the project names that do not exist.
     bool open(const QString& path, QString* error);
+    // Opens a glTF asset (.gltf / .glb) as a new, untitled project (core/AssetProject.h
+    // projectFromAsset: the default project with the asset's materials and parts, the asset as the
+    // mesh). On failure returns false, sets *error ("importGltf: <path>: <reason>") and changes
+    // nothing. On success the history is cleared, filePath() is empty (Save asks where to write
+    // the project), sourceAssetPath() is the asset, displayName() names it, the document is
+    // unmodified and warnings() holds the import's notes (core's wording).
+    bool openAsset(const QString& path, QString* error);
     // Writes to filePath() (must not be empty) / to `path` (which becomes filePath()). On success
     // the document is unmodified. On failure the file on disk is untouched (atomic save).
     bool save(QString* error);
@@ -94,7 +101,11 @@ public:
     static QString recoveryOriginalPath(const QString& recoveryPath);
 
     QString filePath() const { return m_filePath; }
-    // The file name without folder, or "Untitled".
+    // The asset an untitled project was opened from (openAsset); empty otherwise, and again after
+    // the project is saved, or another is opened or made.
+    QString sourceAssetPath() const { return m_sourceAssetPath; }
+    // The file name without folder; "Untitled (helmet.glb)" for a project opened from an asset
+    // and not saved yet; else "Untitled".
     QString displayName() const;
     bool isModified() const;
 
@@ -143,6 +154,7 @@ private:
 
     Project m_project;
     QString m_filePath;
+    QString m_sourceAssetPath;
     QUndoStack* m_undoStack = nullptr;
     QStringList m_missingFiles;
     QString m_warnings;

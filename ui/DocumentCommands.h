@@ -40,6 +40,8 @@ enum : int {
     LightPosition,
     LightRange,
     LightCone,
+    EmissiveStrength,
+    AlphaCutoff,
     kFirstFree = 1000,
 };
 } // namespace MergeId

@@ -8,10 +8,13 @@
 #include "ui/LightsDock.h"
 #include "ui/MapLoadStatus.h"
 #include "ui/MaterialDock.h"
+#include "ui/MaterialsDock.h"
+#include "ui/PartPicker.h"
 #include "ui/ProjectFileController.h"
 #include "ui/SceneController.h"
 #include "ui/TextureMapsDock.h"
 #include "ui/ViewDock.h"
+#include "ui/ViewportDropHandler.h"
 #include "ui/ViewportWidget.h"
 #include "ui/WindowMessages.h"
 
@@ -37,7 +40,8 @@ namespace {
 
 const QLatin1String kGeometryKey("window/geometry");
 const QLatin1String kLayoutKey("window/layout");
-constexpr int kLayoutVersion = 1;
+// 2: the Materials dock. A saved layout of another version is not restored (the default shows).
+constexpr int kLayoutVersion = 2;
 constexpr int kPresetShortcuts = 9; // keys 1..9
 
 } // namespace
@@ -49,6 +53,9 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     , m_viewport(new ViewportWidget(this))
     , m_camera(new CameraController(m_document, m_scene, m_viewport, this))
     , m_files(new ProjectFileController(m_document, this, this))
+    // After the camera: the picker's filter must see presses and releases before the camera's.
+    , m_picker(new PartPicker(m_document, m_scene, m_viewport, this))
+    , m_drops(new ViewportDropHandler(m_files, m_viewport, this))
     , m_autosave(new AutosaveController(m_document, recoveryDirectory, this))
     , m_glStatusLabel(new QLabel(tr("Initialising OpenGL…"), this))
     , m_frameStatsLabel(new QLabel(this))
@@ -91,6 +98,9 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     connect(m_autosave, &AutosaveController::failed, this, &MainWindow::showStatusMessage);
     connect(m_document, &Document::modifiedChanged, this, &QWidget::setWindowModified);
     connect(m_document, &Document::filePathChanged, this, &MainWindow::updateTitle);
+    // An asset opened as an untitled project keeps an empty path but is named in the title.
+    connect(m_document, &Document::projectReplaced, this, &MainWindow::updateTitle);
+    connect(m_picker, &PartPicker::message, this, &MainWindow::showStatusMessage);
     connect(m_document, &Document::missingFilesChanged, this,
         [this](const QStringList& missing) { m_relinkAction->setEnabled(!missing.isEmpty()); });
     updateTitle();
@@ -130,6 +140,8 @@ void MainWindow::createFileMenu()
     m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
     connect(m_files, &ProjectFileController::recentFilesChanged, this, &MainWindow::updateRecentFilesMenu);
     updateRecentFilesMenu();
+    add(tr("&Import Asset…"), "importAssetAction", QKeySequence(Qt::CTRL | Qt::Key_I),
+        &ProjectFileController::importAsset);
     menu->addSeparator();
     add(tr("&Save"), "saveAction", QKeySequence::Save, &ProjectFileController::save);
     add(tr("Save &As…"), "saveAsAction", QKeySequence::SaveAs, &ProjectFileController::saveAs);
@@ -227,13 +239,15 @@ void MainWindow::createViewMenu()
 void MainWindow::createDocks()
 {
     // Before show(): the saved layout (QSettings) is restored onto these in showEvent().
+    m_materialsDock = new MaterialsDock(m_document, m_scene, this);
     m_textureMapsDock = new TextureMapsDock(m_document, this);
     m_materialDock = new MaterialDock(m_document, this);
     m_environmentDock = new EnvironmentDock(m_document, this);
     m_lightsDock = new LightsDock(m_document, this);
     m_viewDock = new ViewDock(m_document, this);
-    // Left: the material (maps, BRDF and presets); right: the scene (environment, lights, view).
-    // Tabbed, so the viewport keeps most of the window.
+    // Left: the materials and parts above, the current material (maps, BRDF and presets) below;
+    // right: the scene (environment, lights, view). Tabbed, so the viewport keeps most of the window.
+    addDock(m_materialsDock, Qt::LeftDockWidgetArea);
     addDock(m_textureMapsDock, Qt::LeftDockWidgetArea);
     addDock(m_materialDock, Qt::LeftDockWidgetArea);
     tabifyDockWidget(m_textureMapsDock, m_materialDock);
@@ -245,9 +259,13 @@ void MainWindow::createDocks()
     m_textureMapsDock->raise();
     m_environmentDock->raise();
     resizeDocks({m_textureMapsDock, m_environmentDock}, {300, 290}, Qt::Horizontal);
+    resizeDocks({m_materialsDock, m_textureMapsDock}, {300, 480}, Qt::Vertical);
 
     connect(m_textureMapsDock, &TextureMapsDock::message, this, &MainWindow::showStatusMessage);
     connect(m_materialDock, &MaterialDock::message, this, &MainWindow::showStatusMessage);
+    connect(m_materialsDock, &MaterialsDock::message, this, &MainWindow::showStatusMessage);
+    connect(m_picker, &PartPicker::partPicked, m_materialsDock,
+        [this](int part) { m_materialsDock->selectPart(part); });
     connect(m_environmentDock, &EnvironmentDock::message, this, &MainWindow::showStatusMessage);
     connect(m_lightsDock, &LightsDock::message, this, &MainWindow::showStatusMessage);
     connect(m_viewDock, &ViewDock::message, this, &MainWindow::showStatusMessage);

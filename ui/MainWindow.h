@@ -1,8 +1,9 @@
 #pragma once
 // Facet's main window. It wires and does little else: the Document (model and undo stack), the
 // SceneController and the central ViewportWidget (the view), the CameraController (input), the
-// ProjectFileController (File menu) and the AutosaveController (recovery); menus, the status bar,
-// the dock layout and its QSettings. Panels are QDockWidgets made by their own controllers and
+// PartPicker (a click on a part chooses its material) and the ViewportDropHandler (assets dropped
+// on the view), the ProjectFileController (File menu) and the AutosaveController (recovery); menus, the
+// status bar, the dock layout and its QSettings. Panels are QDockWidgets made by their own controllers and
 // plugged in with addDock(); they edit the document() and never the renderer.
 
 #include <QByteArray>
@@ -21,10 +22,13 @@ class Document;
 class EnvironmentDock;
 class LightsDock;
 class MaterialDock;
+class MaterialsDock;
+class PartPicker;
 class ProjectFileController;
 class SceneController;
 class TextureMapsDock;
 class ViewDock;
+class ViewportDropHandler;
 class ViewportWidget;
 
 class MainWindow : public QMainWindow {
@@ -42,6 +46,9 @@ public:
     AutosaveController* autosave() const { return m_autosave; }
     TextureMapsDock* textureMapsDock() const { return m_textureMapsDock; }
     MaterialDock* materialDock() const { return m_materialDock; }
+    MaterialsDock* materialsDock() const { return m_materialsDock; }
+    PartPicker* partPicker() const { return m_picker; }
+    ViewportDropHandler* viewportDrops() const { return m_drops; }
     EnvironmentDock* environmentDock() const { return m_environmentDock; }
     LightsDock* lightsDock() const { return m_lightsDock; }
     ViewDock* viewDock() const { return m_viewDock; }
@@ -83,9 +90,12 @@ private:
     ViewportWidget* m_viewport = nullptr;
     CameraController* m_camera = nullptr;
     ProjectFileController* m_files = nullptr;
+    PartPicker* m_picker = nullptr;
+    ViewportDropHandler* m_drops = nullptr;
     AutosaveController* m_autosave = nullptr;
     TextureMapsDock* m_textureMapsDock = nullptr;
     MaterialDock* m_materialDock = nullptr;
+    MaterialsDock* m_materialsDock = nullptr;
     EnvironmentDock* m_environmentDock = nullptr;
     LightsDock* m_lightsDock = nullptr;
     ViewDock* m_viewDock = nullptr;

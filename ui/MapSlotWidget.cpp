@@ -1,5 +1,6 @@
 #include "ui/MapSlotWidget.h"
 
+#include "core/GltfImport.h"
 #include "core/MapNaming.h"
 #include "ui/ColorButton.h"
 #include "ui/Document.h"
@@ -26,6 +27,8 @@ namespace facet {
 namespace {
 
 constexpr int kThumbnailSize = 64;
+// The emissive strength slider's first step above 0 (ValueSlider::setLogarithmic).
+constexpr double kSmallestEmissiveStrengthStep = 0.01;
 
 int mergeIdFor(MapSlot slot)
 {
@@ -161,15 +164,36 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
     auto* form = new QFormLayout;
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     const int mergeId = mergeIdFor(slot);
-    if (slot == MapSlot::BaseColor) {
+    if (isColorSlot(slot)) {
+        // Base colour and emissive hold a linear RGB colour (the emissive one in [0, 1], its
+        // brightness in the strength below, as KHR_materials_emissive_strength splits them).
         m_color = new ColorButton(this);
-        m_color->setObjectName(QStringLiteral("baseColorButton"));
+        m_color->setObjectName(slot == MapSlot::BaseColor ? QStringLiteral("baseColorButton")
+                                                          : QStringLiteral("emissiveColorButton"));
         form->addRow(tr("Colour"), m_color);
         connect(m_color, &ColorButton::colorEdited, this, [this](const glm::dvec3& linear) {
             MaterialMap map = m_document->project().material().map(m_slot);
             map.factor = glm::dvec4(linear, map.factor.w);
-            editMap(map, tr("Base Colour"));
+            editMap(map, m_slot == MapSlot::BaseColor ? tr("Base Colour") : tr("Emissive Colour"));
         });
+        if (slot == MapSlot::Emissive) {
+            // 0 to 10000 spans six decades: a logarithmic slider (each step about 1.4% brighter),
+            // the exact number in the spin box.
+            m_strength = new ValueSlider(0.0, Material::kMaxEmissiveStrength, 3, this);
+            m_strength->setLogarithmic(kSmallestEmissiveStrengthStep);
+            m_strength->setObjectName(QStringLiteral("emissiveStrengthSlider"));
+            m_strength->setToolTip(tr("Multiplies the emissive colour (KHR_materials_emissive_strength): 1 "
+                                      "glows like a white surface lit by the environment's 1, 100 makes a "
+                                      "light source"));
+            form->addRow(tr("Strength"), m_strength);
+            connect(m_strength, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
+            connect(m_strength, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);
+            connect(m_strength, &ValueSlider::valueEdited, this, [this](double value) {
+                Material material = m_document->project().material();
+                material.emissiveStrength = value;
+                m_document->setMaterial(material, tr("Emissive Strength"), MergeId::EmissiveStrength);
+            });
+        }
     } else {
         const bool normal = slot == MapSlot::Normal;
         m_factor = new ValueSlider(0.0, normal ? 2.0 : 1.0, 3, this);
@@ -244,14 +268,20 @@ void MapSlotWidget::refresh()
 {
     const MaterialMap& map = m_document->project().material().map(m_slot);
     if (map.hasTexture()) {
-        const QFileInfo info(QString::fromStdString(map.path));
-        QString text = info.fileName();
+        // An image embedded in a glTF asset ("helmet.glb#images/2") is named after the asset and
+        // is there when the asset is (core/GltfImport.h).
+        const std::optional<GltfImageReference> embedded = parseGltfImageReference(map.path);
+        const QFileInfo info(QString::fromStdString(embedded ? embedded->assetPath : map.path));
+        QString text
+            = embedded ? tr("%1, image %2").arg(info.fileName()).arg(embedded->imageIndex) : info.fileName();
         if (m_sourceSize.isValid())
             text += QStringLiteral("\n%1×%2").arg(m_sourceSize.width()).arg(m_sourceSize.height());
         if (!info.exists())
             text += tr("\n(missing)");
         m_fileLabel->setText(text);
-        m_fileLabel->setToolTip(info.absoluteFilePath());
+        m_fileLabel->setToolTip(embedded
+                ? tr("Image %1 embedded in %2").arg(embedded->imageIndex).arg(info.absoluteFilePath())
+                : info.absoluteFilePath());
     } else {
         m_fileLabel->setText(tr("No file: the value below"));
         m_fileLabel->setToolTip({});
@@ -263,6 +293,8 @@ void MapSlotWidget::refresh()
         m_color->setLinearColor(glm::dvec3(map.factor));
     if (m_factor)
         m_factor->setValue(map.factor.x);
+    if (m_strength)
+        m_strength->setValue(m_document->project().material().emissiveStrength);
     const auto select = [](QComboBox* combo, int value) {
         if (!combo)
             return;

@@ -2,9 +2,10 @@
 // One material map in the Texture maps dock: a thumbnail, the file's name and resolution,
 // Open… / Clear, the factor used without a file (or multiplying it), and the per-map options:
 // channel (packed textures), colour space, invert (a smoothness map as roughness), the normal
-// map's strength and DirectX green flip. An image file dropped on it becomes its texture; a
-// folder or several files go to the dock (filesDropped) to be assigned by name. Every edit is an
-// undo step through the Document; a drag of the factor slider is one step.
+// map's strength and DirectX green flip. Base colour and emissive take a colour (the emissive one
+// also its strength, Material::emissiveStrength, on a logarithmic slider); the other slots a number. An image
+// file dropped on it becomes its texture; a folder or several files go to the dock (filesDropped) to be
+// assigned by name. Every edit is an undo step through the Document; a drag of the factor slider is one step.
 
 #include "core/Material.h"
 
@@ -45,8 +46,9 @@ public:
     bool assignFile(const QString& path);
     void clearFile();
 
-    ValueSlider* factorSlider() const { return m_factor; } // null for base colour
-    ColorButton* colorButton() const { return m_color; } // base colour only
+    ValueSlider* factorSlider() const { return m_factor; } // null for base colour and emissive
+    ColorButton* colorButton() const { return m_color; } // base colour and emissive only
+    ValueSlider* strengthSlider() const { return m_strength; } // emissive only
     QLabel* fileLabel() const { return m_fileLabel; }
 
 Q_SIGNALS:
@@ -70,6 +72,7 @@ private:
     QPushButton* m_clear;
     ValueSlider* m_factor = nullptr;
     ColorButton* m_color = nullptr;
+    ValueSlider* m_strength = nullptr; // emissive: Material::emissiveStrength
     QComboBox* m_channel = nullptr;
     QComboBox* m_colorSpace = nullptr;
     QCheckBox* m_invert = nullptr;

@@ -51,6 +51,8 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     , m_name(new QLineEdit(this))
     , m_ior(new ValueSlider(1.0, 3.0, 3, this))
     , m_f0(new QLabel(this))
+    , m_alphaCutoff(new ValueSlider(0.0, 1.0, 3, this))
+    , m_doubleSided(new QCheckBox(tr("Double-sided"), this))
     , m_presets(new QListWidget(this))
     , m_apply(new QPushButton(tr("Apply"), this))
     , m_delete(new QPushButton(tr("Delete"), this))
@@ -69,6 +71,16 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     m_coupling = enumCombo<DielectricCoupling>(this, "brdfCoupling",
         {{DielectricCoupling::FresnelMix, tr("glTF fresnel_mix")},
             {DielectricCoupling::EnergyPreserving, tr("Energy-preserving")}});
+    m_alphaMode = enumCombo<AlphaMode>(this, "alphaMode",
+        {{AlphaMode::Opaque, tr("Opaque")}, {AlphaMode::Mask, tr("Mask (cut-out)")},
+            {AlphaMode::Blend, tr("Blend (transparent)")}});
+    m_alphaMode->setToolTip(tr("How the base colour's alpha is used (glTF alphaMode): ignored, a cut-out "
+                               "below the cutoff, or blended over what is behind"));
+    m_alphaCutoff->setObjectName(QStringLiteral("alphaCutoffSlider"));
+    m_alphaCutoff->setToolTip(tr("Mask: texels whose alpha is below this are not drawn"));
+    m_doubleSided->setObjectName(QStringLiteral("doubleSidedCheck"));
+    m_doubleSided->setToolTip(
+        tr("Draw faces seen from behind too (off: they are culled, as glTF's default)"));
     m_multiScatter = new QCheckBox(tr("Multiple-scattering compensation"), this);
     m_multiScatter->setObjectName(QStringLiteral("multiScatterCheck"));
     m_name->setObjectName(QStringLiteral("materialName"));
@@ -83,6 +95,12 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     form->addRow(tr("IOR"), m_ior);
     form->addRow(tr("F0"), m_f0);
     layout->addLayout(form);
+    auto* surfaceGroup = new QGroupBox(tr("Alpha and Sides"), content);
+    auto* surfaceForm = new QFormLayout(surfaceGroup);
+    surfaceForm->addRow(tr("Alpha"), m_alphaMode);
+    surfaceForm->addRow(tr("Cutoff"), m_alphaCutoff);
+    surfaceForm->addRow(QString(), m_doubleSided);
+    layout->addWidget(surfaceGroup);
     auto* brdfGroup = new QGroupBox(tr("BRDF"), content);
     auto* brdfForm = new QFormLayout(brdfGroup);
     brdfForm->addRow(tr("Composition"), m_composition);
@@ -123,6 +141,23 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
         Material material = m_document->project().material();
         material.ior = ior;
         m_document->setMaterial(material, tr("IOR"), MergeId::Ior);
+    });
+    connect(m_alphaMode, &QComboBox::activated, this, [this] {
+        Material material = m_document->project().material();
+        material.alphaMode = AlphaMode(m_alphaMode->currentData().toInt());
+        m_document->setMaterial(material, tr("Alpha Mode"));
+    });
+    connect(m_alphaCutoff, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
+    connect(m_alphaCutoff, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);
+    connect(m_alphaCutoff, &ValueSlider::valueEdited, this, [this](double cutoff) {
+        Material material = m_document->project().material();
+        material.alphaCutoff = cutoff;
+        m_document->setMaterial(material, tr("Alpha Cutoff"), MergeId::AlphaCutoff);
+    });
+    connect(m_doubleSided, &QCheckBox::clicked, this, [this](bool on) {
+        Material material = m_document->project().material();
+        material.doubleSided = on;
+        m_document->setMaterial(material, on ? tr("Double-sided") : tr("Single-sided"));
     });
     const auto connectCombo = [this](QComboBox* combo, const QString& undoText, auto apply) {
         connect(combo, &QComboBox::activated, this, [this, combo, undoText, apply] {
@@ -165,10 +200,14 @@ MaterialDock::~MaterialDock() = default;
 
 void MaterialDock::onDocumentChanged(DocumentChanges changes)
 {
-    if (!(changes & (DocumentChanges(DocumentChange::MaterialFactors) | DocumentChange::Shading)))
+    if (!(changes
+            & (DocumentChanges(DocumentChange::MaterialFactors) | DocumentChange::Shading
+                | DocumentChange::CurrentMaterial)))
         return;
     const Material& material = m_document->project().material();
-    if (!m_name->hasFocus())
+    // While the name is being typed it stays, unless another material was chosen: then the field
+    // must show that one's name, or finishing the edit would rename it.
+    if (!m_name->hasFocus() || changes.testFlag(DocumentChange::CurrentMaterial))
         m_name->setText(QString::fromStdString(material.name));
     m_ior->setValue(material.ior);
     m_f0->setText(QString::number(material.dielectricF0(), 'f', 4));
@@ -178,6 +217,10 @@ void MaterialDock::onDocumentChanged(DocumentChanges changes)
     select(m_fresnel, int(material.shading.fresnel));
     select(m_coupling, int(material.shading.coupling));
     m_multiScatter->setChecked(material.shading.multiScatter);
+    select(m_alphaMode, int(material.alphaMode));
+    m_alphaCutoff->setValue(material.alphaCutoff);
+    m_alphaCutoff->setEnabled(material.alphaMode == AlphaMode::Mask);
+    m_doubleSided->setChecked(material.doubleSided);
 }
 
 void MaterialDock::editShading(const QString& undoText, const std::function<void(ShadingModel&)>& change)

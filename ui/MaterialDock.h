@@ -1,8 +1,10 @@
 #pragma once
 // The Material dock: the BRDF (composition, distribution, visibility, Fresnel, dielectric
-// coupling, multiple-scattering compensation), the IOR with the F0 it gives, and the preset
+// coupling, multiple-scattering compensation), the IOR with the F0 it gives, how the base colour's
+// alpha is used (opaque, mask with its cutoff, blend) and double-sidedness, and the preset
 // library: the built-in presets (core/MaterialPresets.h, the F0 table) and the user's
-// (ui/UserPresets.h). Apply, Save As Preset…, Delete (user presets only). Edits are undo steps.
+// (ui/UserPresets.h). Apply, Save As Preset…, Delete (user presets only). Edits are undo steps
+// (a slider drag is one) on the project's current material (chosen in the Materials dock).
 
 #include "core/ShadingModel.h"
 #include "ui/DocumentChanges.h"
@@ -34,6 +36,9 @@ public:
 
     QListWidget* presetList() const { return m_presets; }
     ValueSlider* iorSlider() const { return m_ior; }
+    QComboBox* alphaModeCombo() const { return m_alphaMode; }
+    ValueSlider* alphaCutoffSlider() const { return m_alphaCutoff; }
+    QCheckBox* doubleSidedCheck() const { return m_doubleSided; }
     // Applies the selected preset (one undo step). False when none is selected.
     bool applySelectedPreset();
     // Saves the current material as a user preset named `name` and selects it. False with a
@@ -63,6 +68,9 @@ private:
     QCheckBox* m_multiScatter;
     ValueSlider* m_ior;
     QLabel* m_f0;
+    QComboBox* m_alphaMode;
+    ValueSlider* m_alphaCutoff;
+    QCheckBox* m_doubleSided;
     QListWidget* m_presets;
     QPushButton* m_apply;
     QPushButton* m_delete;

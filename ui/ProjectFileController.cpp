@@ -1,5 +1,7 @@
 #include "ui/ProjectFileController.h"
 
+#include "core/AssetProject.h"
+#include "core/GltfImport.h"
 #include "ui/Document.h"
 #include "ui/MissingFilesDialog.h"
 #include "ui/WindowMessages.h"
@@ -20,6 +22,39 @@ const QLatin1String kRecentFilesKey("recentFiles");
 QString projectFilter()
 {
     return ProjectFileController::tr("Facet projects (*.json);;All files (*)");
+}
+
+QString openFilter()
+{
+    return ProjectFileController::tr(
+        "Projects and glTF assets (*.json *.gltf *.glb);;Facet projects (*.json);;"
+        "glTF assets (*.gltf *.glb);;All files (*)");
+}
+
+QString assetFilter()
+{
+    return ProjectFileController::tr("glTF assets (*.gltf *.glb);;All files (*)");
+}
+
+QString startFolder(const Document* document)
+{
+    if (!document->filePath().isEmpty())
+        return QFileInfo(document->filePath()).absolutePath();
+    if (!document->sourceAssetPath().isEmpty())
+        return QFileInfo(document->sourceAssetPath()).absolutePath();
+    return QDir::homePath();
+}
+
+// "2 materials, 5 parts" for the status bar.
+QString assetSummary(const Project& project)
+{
+    const int materials = int(project.materials.size());
+    const int parts = int(project.parts.size());
+    const QString m = materials == 1 ? ProjectFileController::tr("1 material")
+                                     : ProjectFileController::tr("%1 materials").arg(materials);
+    const QString p
+        = parts == 1 ? ProjectFileController::tr("1 part") : ProjectFileController::tr("%1 parts").arg(parts);
+    return m + QStringLiteral(", ") + p;
 }
 
 } // namespace
@@ -46,10 +81,8 @@ bool ProjectFileController::open()
 {
     if (!maybeSave())
         return false;
-    const QString start = m_document->filePath().isEmpty() ? QDir::homePath()
-                                                           : QFileInfo(m_document->filePath()).absolutePath();
     const QString path
-        = QFileDialog::getOpenFileName(m_dialogParent, tr("Open Project"), start, projectFilter());
+        = QFileDialog::getOpenFileName(m_dialogParent, tr("Open"), startFolder(m_document), openFilter());
     if (path.isEmpty())
         return false;
     // The question was asked already; do not ask again inside openFile.
@@ -64,6 +97,8 @@ bool ProjectFileController::openFile(const QString& path)
 {
     if (!maybeSave())
         return false;
+    if (isAssetFileName(path.toStdString()))
+        return openAssetFile(path);
     QString error;
     if (!m_document->open(path, &error)) {
         reportError(tr("Could not open %1: %2").arg(QDir::toNativeSeparators(path), error),
@@ -73,6 +108,78 @@ bool ProjectFileController::openFile(const QString& path)
     m_lastError.clear();
     addRecentFile(m_document->filePath());
     afterOpen();
+    return true;
+}
+
+bool ProjectFileController::openAssetFile(const QString& path)
+{
+    QString error;
+    if (!m_document->openAsset(path, &error)) {
+        reportError(tr("Could not open %1: %2").arg(QDir::toNativeSeparators(path), error),
+            tr("Could not open the asset: %1").arg(WindowMessages::fromCore(error)));
+        return false;
+    }
+    m_lastError.clear();
+    addRecentFile(m_document->sourceAssetPath());
+    const QString name = QFileInfo(m_document->sourceAssetPath()).fileName();
+    QString text = tr("Opened %1 (%2) as a new project").arg(name, assetSummary(m_document->project()));
+    if (!m_document->warnings().isEmpty())
+        text += QStringLiteral("; ") + WindowMessages::fromCore(m_document->warnings());
+    if (!m_document->missingFiles().isEmpty()) {
+        // An external image the asset names is not there: the relink dialog finds it.
+        m_missingFilesMessage = tr("%n file(s) missing; use File > Relink Missing Files to locate them",
+            nullptr, int(m_document->missingFiles().size()));
+        text += QStringLiteral(". ") + m_missingFilesMessage;
+        Q_EMIT statusMessage(text);
+        showMissingFilesDialog();
+        return true;
+    }
+    m_missingFilesMessage.clear();
+    Q_EMIT statusMessage(text);
+    return true;
+}
+
+bool ProjectFileController::importAsset()
+{
+    const QString path = QFileDialog::getOpenFileName(
+        m_dialogParent, tr("Import Asset"), startFolder(m_document), assetFilter());
+    if (path.isEmpty())
+        return false;
+    return importAssetFile(path);
+}
+
+bool ProjectFileController::importAssetFile(const QString& path)
+{
+    const QString absolute = QDir::cleanPath(QFileInfo(path).absoluteFilePath());
+    const QString name = QFileInfo(absolute).fileName();
+    std::string problem;
+    std::string warning;
+    const std::optional<GltfAsset> asset = importGltf(absolute.toStdString(), &problem, &warning);
+    if (!asset) {
+        reportError(tr("Could not import %1: %2")
+                        .arg(QDir::toNativeSeparators(absolute), QString::fromStdString(problem)),
+            tr("Could not import the asset: %1").arg(WindowMessages::fromCore(problem)));
+        return false;
+    }
+    if (!warning.empty())
+        qWarning().noquote() << "facet:" << QString::fromStdString(warning);
+    const Project after = withAsset(m_document->project(), *asset, absolute.toStdString());
+    std::string invalid;
+    if (!after.validate(&invalid)) { // importGltf clamps into range: a failure here is a bug
+        reportError(tr("Could not import %1: %2")
+                        .arg(QDir::toNativeSeparators(absolute), QString::fromStdString(invalid)),
+            tr("Could not import %1: %2").arg(name, QString::fromStdString(invalid)));
+        return false;
+    }
+    m_document->setProject(after, tr("Import %1").arg(name));
+    m_lastError.clear();
+    QString text = tr("Imported %1 (%2)").arg(name, assetSummary(after));
+    if (!warning.empty())
+        text += QStringLiteral("; ") + WindowMessages::fromCore(warning);
+    if (!m_document->missingFiles().isEmpty())
+        text += tr(". %n file(s) missing; use File > Relink Missing Files to locate them", nullptr,
+            int(m_document->missingFiles().size()));
+    Q_EMIT statusMessage(text);
     return true;
 }
 
@@ -120,9 +227,12 @@ bool ProjectFileController::save()
 
 bool ProjectFileController::saveAs()
 {
-    const QString start = m_document->filePath().isEmpty()
-        ? QDir::home().filePath(QStringLiteral("untitled.json"))
-        : m_document->filePath();
+    // An untitled project opened from an asset is offered next to it, named after it.
+    const QString& asset = m_document->sourceAssetPath();
+    const QString start = !m_document->filePath().isEmpty() ? m_document->filePath()
+        : !asset.isEmpty()                                  ? QFileInfo(asset).absoluteDir().filePath(
+                                               QFileInfo(asset).completeBaseName() + QStringLiteral(".json"))
+                           : QDir::home().filePath(QStringLiteral("untitled.json"));
     QString path
         = QFileDialog::getSaveFileName(m_dialogParent, tr("Save Project As"), start, projectFilter());
     if (path.isEmpty())

@@ -1,10 +1,17 @@
 #pragma once
-// File > New, Open, Open Recent, Save, Save As and the question before unsaved changes are lost
+// File > New, Open, Open Recent, Import Asset, Save, Save As and the question before unsaved
+// changes are lost
 // (not a widget: it owns no window, only the dialogs it opens on `dialogParent`). Every failure
 // reaches the user as a message naming the file and the reason, in the window's wording:
 // errorReported() (MainWindow puts it in the status bar) and a non-modal message box; nothing is
 // silently skipped. After an open
 // with missing files it says so and shows the MissingFilesDialog.
+//
+// glTF assets (.gltf, .glb): Open (and Open Recent, and `facet PATH.glb`) makes an untitled
+// project of one (Document::openAsset); Import Asset puts one into the current project, replacing
+// its mesh, materials and parts in one undo step and keeping the environment, lights, camera and
+// view settings (core/AssetProject.h withAsset). The import's notes (missing images, extensions
+// Facet does not read) reach the status bar in the window's wording.
 //
 // Tests drive the *File(path) functions, which show no file dialog, and answer the unsaved-changes
 // question with setUnsavedChangesAnswer() so that no modal box waits for a click.
@@ -33,11 +40,16 @@ public:
 
     // Menu entry points (may show dialogs). Each returns whether it went ahead.
     bool newProject();
-    bool open(); // asks for a file
+    bool open(); // asks for a file (a project or a glTF asset)
+    bool importAsset(); // asks for a glTF asset
     bool save(); // Save As when untitled
     bool saveAs(); // asks for a file
-    // The same without file dialogs. openFile asks about unsaved changes first (maybeSave).
+    // The same without file dialogs. openFile asks about unsaved changes first (maybeSave); a
+    // .gltf / .glb opens as an untitled project made from the asset.
     bool openFile(const QString& path);
+    // Replaces the current project's mesh, materials and parts with the asset's: one undo step
+    // "Import <file name>". No question about unsaved changes (nothing is lost: Undo).
+    bool importAssetFile(const QString& path);
     bool saveToFile(const QString& path);
     // Asks "Save changes to X?" when the document is modified: Save (then true if saved), Discard
     // (true), Cancel (false). True at once when unmodified.
@@ -73,6 +85,7 @@ private:
     void reportError(const QString& precise, const QString& text);
     void addRecentFile(const QString& path);
     void afterOpen();
+    bool openAssetFile(const QString& path);
 
     Document* m_document;
     QWidget* m_dialogParent;

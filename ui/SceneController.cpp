@@ -44,6 +44,9 @@ SceneController::SceneController(Document* document, QObject* parent)
 
 void SceneController::onDocumentChanged(DocumentChanges changes)
 {
+    // Which material the docks edit is not drawn: choosing one must not cost a frame.
+    if (changes == DocumentChanges(DocumentChange::CurrentMaterial))
+        return;
     if (changes.testFlag(DocumentChange::EnvironmentSource)
         && m_document->project().environment.source != m_environmentSource)
         loadEnvironment();
@@ -297,10 +300,14 @@ RenderScene SceneController::scene(const std::shared_ptr<const IblTextures>& ibl
     options.irradianceFromSH = settings.irradiance == IblSettings::Irradiance::SH;
     RenderScene scene = sceneFromProject(m_document->project(), m_assets, ibl, options);
     if (m_objectTurntableDegrees != 0.0)
-        scene.modelMatrix
-            = glm::rotate(glm::dmat4(1.0), glm::radians(m_objectTurntableDegrees), glm::dvec3(0.0, 1.0, 0.0));
+        scene.modelMatrix = modelMatrix();
     scene.environment.rotationDegrees += m_environmentTurntableDegrees;
     return scene;
+}
+
+glm::dmat4 SceneController::modelMatrix() const
+{
+    return glm::rotate(glm::dmat4(1.0), glm::radians(m_objectTurntableDegrees), glm::dvec3(0.0, 1.0, 0.0));
 }
 
 void SceneController::setTurntableAngles(double objectDegrees, double environmentDegrees)

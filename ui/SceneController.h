@@ -27,6 +27,8 @@
 #include <QString>
 #include <QThreadPool>
 
+#include <glm/mat4x4.hpp>
+
 #include <cstdint>
 #include <map>
 #include <string>
@@ -80,6 +82,9 @@ public:
     // the project's rotation.
     void setTurntableAngles(double objectDegrees, double environmentDegrees);
     double objectTurntableDegrees() const { return m_objectTurntableDegrees; }
+    // The matrix the mesh of assets() is drawn with (scene().modelMatrix): the object turntable's
+    // rotation about +Y, identity without one. Picking (ui/PartPicker.h) casts its rays against it.
+    glm::dmat4 modelMatrix() const;
     double environmentTurntableDegrees() const { return m_environmentTurntableDegrees; }
 
 Q_SIGNALS:

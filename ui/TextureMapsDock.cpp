@@ -45,6 +45,7 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     , m_watcher(new QFileSystemWatcher(this))
     , m_reloadTimer(new QTimer(this))
     , m_messageLabel(new QLabel(this))
+    , m_materialLabel(new QLabel(this))
     , m_uvScale(new ValueSlider(0.1, 16.0, 2, this))
     , m_uvOffsetU(new ValueSlider(-1.0, 1.0, 3, this))
     , m_uvOffsetV(new ValueSlider(-1.0, 1.0, 3, this))
@@ -54,6 +55,10 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     setAcceptDrops(true);
     auto* content = new QWidget;
     auto* layout = new QVBoxLayout(content);
+    m_materialLabel->setObjectName(QStringLiteral("textureMapsMaterialLabel"));
+    m_materialLabel->setToolTip(tr("The material these maps belong to: choose another in the Materials panel "
+                                   "or click a part in the viewport"));
+    layout->addWidget(m_materialLabel);
     auto* folderButton = new QPushButton(tr("Assign Folder…"), content);
     folderButton->setObjectName(QStringLiteral("assignFolderButton"));
     folderButton->setToolTip(tr("Assign a texture set by file names, replacing the current set: *_basecolor, "
@@ -139,8 +144,18 @@ TextureMapsDock::~TextureMapsDock() = default;
 
 void TextureMapsDock::onDocumentChanged(DocumentChanges changes)
 {
-    if (!(changes & (DocumentChanges(DocumentChange::MaterialFactors) | DocumentChange::MaterialMaps)))
+    // Another material chosen (the Materials dock, a click in the viewport): show that one.
+    if (!(changes
+            & (DocumentChanges(DocumentChange::MaterialFactors) | DocumentChange::MaterialMaps
+                | DocumentChange::CurrentMaterial)))
         return;
+    const Project& project = m_document->project();
+    m_materialLabel->setText(project.materials.size() > 1
+            ? tr("Material: <b>%1</b> (%2 of %3)")
+                  .arg(QString::fromStdString(project.material().name).toHtmlEscaped())
+                  .arg(project.currentMaterial + 1)
+                  .arg(project.materials.size())
+            : tr("Material: <b>%1</b>").arg(QString::fromStdString(project.material().name).toHtmlEscaped()));
     for (MapSlotWidget* widget : m_slots)
         widget->refresh();
     const UvTransform& uv = m_document->project().material().map(MapSlot::BaseColor).uv;
@@ -148,7 +163,7 @@ void TextureMapsDock::onDocumentChanged(DocumentChanges changes)
     m_uvOffsetU->setValue(uv.offset.x);
     m_uvOffsetV->setValue(uv.offset.y);
     m_uvRotation->setValue(uv.rotationDegrees);
-    if (changes & DocumentChange::MaterialMaps) {
+    if (changes & (DocumentChanges(DocumentChange::MaterialMaps) | DocumentChange::CurrentMaterial)) {
         refreshThumbnails(false);
         watchFiles();
     }

@@ -4,6 +4,8 @@
 // Assign Folder assigns maps by name (core/MapNaming.h) in one undo step, replacing the whole set,
 // and says what it assigned and cleared. The note is cleared when another project replaces the
 // document. Texture files that change on disk are reloaded (QFileSystemWatcher): that map only.
+// It edits the project's current material (chosen in the Materials dock or by clicking a part in
+// the viewport) and says which one that is.
 
 #include "core/Material.h"
 #include "ui/DocumentChanges.h"
@@ -38,6 +40,8 @@ public:
     QString assignFiles(const QStringList& paths);
     // The last assignment message (also in the dock); empty after New/Open/recovery.
     QString lastMessage() const;
+    // "Material: Visor (2 of 5)": which of the project's materials the dock edits.
+    QLabel* materialLabel() const { return m_materialLabel; }
     // Thumbnail jobs still running (tests wait for 0).
     int pendingThumbnails() const;
 
@@ -64,6 +68,7 @@ private:
     QTimer* m_reloadTimer;
     QStringList m_changedFiles;
     QLabel* m_messageLabel;
+    QLabel* m_materialLabel; // which material the dock edits
     std::array<QString, kMapSlotCount> m_thumbnailKeys; // what each slot's thumbnail shows
     ValueSlider* m_uvScale;
     ValueSlider* m_uvOffsetU;

@@ -82,8 +82,24 @@ void ValueSlider::setSingleStep(double step)
     m_spin->setSingleStep(step);
 }
 
+void ValueSlider::setLogarithmic(double smallestPositive)
+{
+    Q_ASSERT(smallestPositive > 0.0 && smallestPositive < m_maximum);
+    m_logLowest = smallestPositive;
+    m_spin->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
+    showValue(m_value);
+}
+
 int ValueSlider::sliderPosition(double value) const
 {
+    if (m_logLowest > 0.0) {
+        // Position 0 holds everything below the first logarithmic step (0 included).
+        if (!(value > m_minimum) || value < m_logLowest * 0.999)
+            return 0;
+        const double t
+            = std::clamp(std::log(value / m_logLowest) / std::log(m_maximum / m_logLowest), 0.0, 1.0);
+        return 1 + int(std::lround(t * (kSteps - 1)));
+    }
     const double t = std::clamp((value - m_minimum) / (m_maximum - m_minimum), 0.0, 1.0);
     return int(std::lround(t * kSteps));
 }
@@ -91,7 +107,11 @@ int ValueSlider::sliderPosition(double value) const
 double ValueSlider::valueAt(int position) const
 {
     // Round to the spin box's precision so the document holds what the control shows.
-    const double value = m_minimum + (m_maximum - m_minimum) * double(position) / kSteps;
+    double value = m_minimum + (m_maximum - m_minimum) * double(position) / kSteps;
+    if (m_logLowest > 0.0)
+        value = position <= 0
+            ? m_minimum
+            : m_logLowest * std::pow(m_maximum / m_logLowest, double(position - 1) / (kSteps - 1));
     const double scale = std::pow(10.0, m_spin->decimals());
     return std::round(value * scale) / scale;
 }

@@ -5,6 +5,10 @@
 // (Document::beginInteractiveEdit / endInteractiveEdit with a merge id); a typed value or a
 // wheel step is a valueEdited() on its own. setValue() shows a value without emitting anything
 // (docks call it when the document changed).
+//
+// setLogarithmic() spaces the slider's steps evenly in log(value) instead, for ranges over several
+// decades (an emissive strength from 0.01 to 10000): the spin box still shows and takes the value
+// itself, and the slider's first step is the minimum (0).
 
 #include <QWidget>
 
@@ -27,6 +31,11 @@ public:
     // The spin box may go beyond the slider's range up to these (e.g. intensities).
     void setSpinRange(double minimum, double maximum);
     void setSingleStep(double step);
+    // Logarithmic slider: position 0 is `minimum`, positions 1..kSteps run geometrically from
+    // `smallestPositive` to `maximum` (0 < smallestPositive < maximum). The spin box steps by about
+    // a tenth of the value's decade (QAbstractSpinBox::AdaptiveDecimalStepType).
+    void setLogarithmic(double smallestPositive);
+    bool isLogarithmic() const { return m_logLowest > 0.0; }
 
     QSlider* slider() const { return m_slider; }
     QDoubleSpinBox* spinBox() const { return m_spin; }
@@ -46,6 +55,7 @@ private:
     double m_minimum;
     double m_maximum;
     double m_value;
+    double m_logLowest = 0.0; // > 0: logarithmic slider (setLogarithmic)
 };
 
 } // namespace facet

@@ -22,11 +22,18 @@ struct Phrase {
 const std::vector<Phrase>& phrases()
 {
     // Sources: importMesh and generateUvs/generateTangents (core/MeshImport.cpp), Image::load,
-    // Environment::load, AssetLibrary::missingFileAdvice and resolveSpec, json::readObjectFile.
+    // Environment::load, AssetLibrary::missingFileAdvice and resolveSpec, json::readObjectFile,
+    // importGltf's notes and errors.
     static const std::vector<Phrase> table = [] {
         const auto row = [](const char* pattern, const QString& wording, bool aboutFile = true) {
             return Phrase {
                 QRegularExpression(QStringLiteral("^%1$").arg(QLatin1String(pattern))), wording, aboutFile};
+        };
+        // A glTF note, which ends in " (N times)" when it repeats (gltfsupport::Notes::joined).
+        const auto note = [](const char* pattern, const QString& wording) {
+            return Phrase {
+                QRegularExpression(QStringLiteral("^%1(?: \\(\\d+ times\\))?$").arg(QLatin1String(pattern))),
+                wording, true};
         };
         return std::vector<Phrase> {
             row("(?:no such file|file does not exist)", WindowMessages::tr("%1 is missing")),
@@ -75,6 +82,39 @@ const std::vector<Phrase>& phrases()
             row("it belongs to the library \"([^\"]+)\" \\((.*)\\), which has no .*",
                 WindowMessages::tr("it is no longer in your library “%2” (%3): put it back, or relink it"),
                 false),
+            // glTF assets (core/GltfImport.cpp, core/GltfMaterials.cpp): a note that repeats ends
+            // in " (N times)"; [^;] keeps a pattern inside one note of a "; "-joined list.
+            note("image '([^']+)' is missing \\([^;]*\\): its maps keep the path, to relink or restore",
+                WindowMessages::tr(
+                    "%1 uses the image %2, which is missing; use File > Relink Missing Files to find it")),
+            note("the material extension (\\S+) is not supported: previewed as metallic-roughness",
+                WindowMessages::tr("%1 uses %2, which Facet does not read; its materials show without it")),
+            row("requires the extension (\\S+), which Facet does not read",
+                WindowMessages::tr("%1 needs %2, which Facet does not read")),
+            note(
+                "material '([^']*)' uses a KTX2/Basis texture, which Facet does not read: its factor is used "
+                "alone",
+                WindowMessages::tr("%1: the material “%2” uses a KTX2/Basis texture, which Facet does not "
+                                   "read; its colour or value is used alone")),
+            note("material '([^']*)'[^;]* names (?:texture|image) \\d+, which does not exist: its factor "
+                 "is used alone",
+                WindowMessages::tr(
+                    "%1: a texture of the material “%2” is not in the file; its colour or value "
+                    "is used alone")),
+            note("material '([^']*)' has an unknown alphaMode \"([^\"]*)\": opaque used",
+                WindowMessages::tr(
+                    "%1: the material “%2” has an unknown alpha mode “%3”; it is drawn opaque")),
+            note("material '([^']*)' ([^;]*) is outside Facet's \\[([^\\]]*)\\]: (\\S+) used",
+                WindowMessages::tr("%1: the material “%2” has a %3 outside [%4]; Facet uses %5")),
+            note("a texture asks for clamped or mirrored wrapping: Facet repeats textures",
+                WindowMessages::tr(
+                    "%1: some textures ask for clamped or mirrored edges; Facet repeats them")),
+            note("a texture reads texture coordinate set (\\d+): Facet reads set 0",
+                WindowMessages::tr("%1: a texture uses texture coordinate set %2; Facet uses the first set")),
+            row("no normals in (\\d+) primitive\\(s\\): flat normals generated[^;]*",
+                WindowMessages::tr("%1: %2 part(s) have no normals; Facet made flat ones")),
+            row("(\\d+) primitive\\(s\\) made of points or lines dropped",
+                WindowMessages::tr("%1: %2 part(s) made of points or lines are not shown")),
         };
     }();
     return table;

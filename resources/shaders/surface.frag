@@ -136,8 +136,10 @@ void main()
     if (any(isnan(color)))
         color = vec3(0.0);
     color = min(color, vec3(uMaxRadiance));
-#if defined(ALPHA_BLEND) && DEBUG_VIEW == DEBUG_NONE
+#if defined(ALPHA_BLEND) && DEBUG_VIEW != DEBUG_ALPHA && DEBUG_VIEW != DEBUG_NON_FINITE
     // glTF alphaMode BLEND: "over" with premultiplied colour (blend ONE, ONE_MINUS_SRC_ALPHA).
+    // Debug views blend too, so the parts behind a glass stay visible in them; the alpha and
+    // non-finite views are the exceptions, shown opaque.
     fragColor = vec4(color * m.alpha, m.alpha);
 #else
     fragColor = vec4(color, 1.0);

@@ -263,6 +263,23 @@ bool GltfWriter::write(const QString& path, BufferStorage storage, QString* erro
     return true;
 }
 
+QJsonArray jsonNumbers(std::initializer_list<double> values)
+{
+    QJsonArray a;
+    for (double v : values)
+        a.append(v);
+    return a;
+}
+
+QJsonObject textureInfo(int texture, const QJsonObject& extensions)
+{
+    QJsonObject info;
+    info[QLatin1String("index")] = texture;
+    if (!extensions.isEmpty())
+        info[QLatin1String("extensions")] = extensions;
+    return info;
+}
+
 QByteArray encodePng(int width, int height, int channels, const std::vector<glm::vec4>& texels)
 {
     QTemporaryDir dir;

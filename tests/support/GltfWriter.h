@@ -61,6 +61,11 @@ private:
     QByteArray m_buffer;
 };
 
+// [v0, v1, ...] for a glTF JSON field.
+QJsonArray jsonNumbers(std::initializer_list<double> values);
+// A textureInfo object {"index": texture} with optional "extensions".
+QJsonObject textureInfo(int texture, const QJsonObject& extensions = {});
+
 // PNG bytes of a width x height image of 8-bit channels (1 to 4), each texel from `texel`.
 QByteArray encodePng(int width, int height, int channels, const std::vector<glm::vec4>& texels);
 

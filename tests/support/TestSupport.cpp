@@ -1,6 +1,8 @@
 #include "TestSupport.h"
 
 #include <cstdint>
+#include <QFile>
+
 #include <cstdio>
 #include <memory>
 #include <vector>
@@ -128,6 +130,21 @@ ProcessResult runWithoutDisplay(const QString& executable, const QStringList& ar
     result.out = QString::fromUtf8(process.readAllStandardOutput());
     result.err = QString::fromUtf8(process.readAllStandardError());
     return result;
+}
+
+bool writeText(const QString& path, const QByteArray& text)
+{
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(text) == text.size();
+}
+
+QStringList strings(std::initializer_list<const char*> items)
+{
+    QStringList list;
+    for (const char* item : items)
+        list.append(QString::fromUtf8(item));
+    return list;
 }
 
 } // namespace facet::test

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers shared by the test executables: where the CC0 sample data and the test artefacts are.
 
+#include <initializer_list>
 #include <string>
 
 #include <QProcessEnvironment>
@@ -51,6 +52,10 @@ bool writeConstantExr(const QString& path, float radiance, int width = 16);
 // empty IDAT, IEND, with correct CRCs): enough for a reader to see the size in the header, and for
 // a loader that checks sizes before decoding to refuse it at no cost (a 16384² "map" in 57 bytes).
 bool writePngHeaderOnly(const QString& path, int width, int height);
+// Writes `text` to `path` (its folder made first), replacing what was there. False on any error.
+bool writeText(const QString& path, const QByteArray& text);
+// A QStringList of UTF-8 literals.
+QStringList strings(std::initializer_list<const char*> items);
 
 // "(x, y, z)" with `digits` significant digits, for failure messages.
 std::string describe(const glm::dvec3& v, int digits = 6);

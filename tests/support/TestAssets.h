@@ -1,0 +1,27 @@
+#pragma once
+// glTF assets the window tests and the command-line tests open (written with support/GltfWriter,
+// so every test and the `facet PATH.glb` CLI test see the same files; tests/tools/WriteTestAsset
+// writes them from CTest).
+
+#include <QString>
+
+namespace facet::test {
+
+// Two quads side by side in the XY plane facing +Z, each a part with its own material, single-
+// sided (glTF's default): "Left" (x in [-1, -0.05], material "Red": base colour (0.8, 0.05, 0.05))
+// and "Right" (x in [0.05, 1], material "Blue": base colour (0.05, 0.1, 0.8) with alpha
+// `rightAlpha`), y in [-1, 1]. Roughness 0.5, metallic 0. `path` ends in .glb.
+bool writeTwoMaterialAsset(const QString& path, QString* error, double rightAlpha = 1.0);
+// What writeTwoMaterialAsset makes, for checks.
+struct TwoMaterialAsset {
+    static constexpr float kLeftX0 = -1.0f, kLeftX1 = -0.05f, kRightX0 = 0.05f, kRightX1 = 1.0f;
+};
+
+// A small still life for looking at the window as an artist would: a "Base" slab (rough
+// "Concrete" with a speckled texture), a "Body" sphere ("Painted Checker": a checker base colour
+// texture), a "Glass" sphere ("Tinted Glass": BLEND, alpha 0.35, double-sided) and a "Lamp" sphere
+// ("Lamp": emissive warm orange, strength 8). Five parts (the slab is two primitives: its top
+// "Base Top" with its own material "Rubber"), five materials, textures embedded in the .glb.
+bool writeShowcaseAsset(const QString& path, QString* error);
+
+} // namespace facet::test

@@ -1,0 +1,284 @@
+#include "ui/MaterialsDock.h"
+
+#include "core/Project.h"
+#include "ui/Document.h"
+#include "ui/SceneController.h"
+
+#include <QComboBox>
+#include <QHeaderView>
+#include <QLabel>
+#include <QListWidget>
+#include <QSignalBlocker>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+namespace facet {
+
+namespace {
+
+constexpr int kPartColumn = 0;
+constexpr int kMaterialColumn = 1;
+
+QString nameOf(const Material& material)
+{
+    return QString::fromStdString(material.name);
+}
+
+// Fills `combo` with the project's material names unless it already lists exactly those.
+void listMaterials(QComboBox* combo, const Project& project)
+{
+    bool same = combo->count() == int(project.materials.size());
+    for (int m = 0; same && m < combo->count(); ++m)
+        same = combo->itemText(m) == nameOf(project.materials[std::size_t(m)]);
+    if (same)
+        return;
+    const QSignalBlocker blocker(combo);
+    combo->clear();
+    for (const Material& material : project.materials)
+        combo->addItem(nameOf(material));
+}
+
+} // namespace
+
+MaterialsDock::MaterialsDock(Document* document, SceneController* scene, QWidget* parent)
+    : QDockWidget(tr("Materials"), parent)
+    , m_document(document)
+    , m_scene(scene)
+    , m_materials(new QListWidget(this))
+    , m_parts(new QTreeWidget(this))
+    , m_partsNote(new QLabel(this))
+{
+    setObjectName(QStringLiteral("materialsDock"));
+    m_materials->setObjectName(QStringLiteral("materialList"));
+    m_materials->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
+    m_materials->setToolTip(tr("The project's materials: the selected one is edited in the Texture Maps and "
+                               "Material panels. Double-click to rename."));
+    m_parts->setObjectName(QStringLiteral("partList"));
+    m_parts->setColumnCount(2);
+    m_parts->setHeaderLabels({tr("Part"), tr("Material")});
+    m_parts->setRootIsDecorated(false);
+    m_parts->setUniformRowHeights(true);
+    m_parts->header()->setSectionResizeMode(kPartColumn, QHeaderView::Stretch);
+    m_parts->header()->setSectionResizeMode(kMaterialColumn, QHeaderView::ResizeToContents);
+    m_parts->header()->setStretchLastSection(false);
+    m_parts->setToolTip(tr("The parts of the mesh: tick to show, untick to hide; the material each shows. "
+                           "Click a part in the viewport to edit its material."));
+    // Room for a few rows of each before the dock scrolls (a dock's first size comes from its
+    // content: resizeDocks before the window is shown does not hold).
+    m_materials->setMinimumHeight(m_materials->fontMetrics().height() * 3);
+    m_parts->setMinimumHeight(m_parts->fontMetrics().height() * 6);
+    m_partsNote->setObjectName(QStringLiteral("partsNote"));
+    m_partsNote->setWordWrap(true);
+    m_partsNote->setText(tr("Click a part in the viewport to edit its material."));
+
+    auto* content = new QWidget(this);
+    auto* layout = new QVBoxLayout(content);
+    layout->addWidget(new QLabel(tr("<b>Materials</b>"), content));
+    layout->addWidget(m_materials, 1);
+    layout->addWidget(new QLabel(tr("<b>Parts</b>"), content));
+    layout->addWidget(m_parts, 2);
+    layout->addWidget(m_partsNote);
+    setWidget(content);
+
+    connect(m_materials, &QListWidget::currentRowChanged, this, [this](int row) {
+        if (!m_updating && row >= 0)
+            m_document->setCurrentMaterial(row);
+    });
+    connect(m_materials, &QListWidget::itemChanged, this, [this](QListWidgetItem* item) {
+        if (!m_updating)
+            renameMaterial(m_materials->row(item), item->text());
+    });
+    connect(m_parts, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* item, int column) {
+        if (m_updating || column != kPartColumn)
+            return;
+        setPartVisible(m_parts->indexOfTopLevelItem(item), item->checkState(kPartColumn) == Qt::Checked);
+    });
+    connect(m_parts, &QTreeWidget::currentItemChanged, this, [this](QTreeWidgetItem* item) {
+        if (m_updating || !item)
+            return;
+        const int part = m_parts->indexOfTopLevelItem(item);
+        if (part >= 0)
+            m_document->setCurrentMaterial(m_document->project().materialOfPart(std::size_t(part)));
+    });
+    connect(m_document, &Document::changed, this, &MaterialsDock::onDocumentChanged);
+    connect(m_scene, &SceneController::sceneChanged, this, &MaterialsDock::onSceneChanged);
+    refreshMaterials();
+    refreshParts(true);
+}
+
+MaterialsDock::~MaterialsDock() = default;
+
+QComboBox* MaterialsDock::partMaterialCombo(int part) const
+{
+    QTreeWidgetItem* item = m_parts->topLevelItem(part);
+    return item ? qobject_cast<QComboBox*>(m_parts->itemWidget(item, kMaterialColumn)) : nullptr;
+}
+
+int MaterialsDock::partCount() const
+{
+    const std::shared_ptr<const Mesh>& mesh = m_scene->assets().mesh;
+    if (!mesh)
+        return 0;
+    // A mesh without sub-meshes is drawn as one part (Project::materialOfPart(0)).
+    return int(std::max<std::size_t>(mesh->subMeshes.size(), 1));
+}
+
+QString MaterialsDock::partName(int part) const
+{
+    const std::shared_ptr<const Mesh>& mesh = m_scene->assets().mesh;
+    std::string name;
+    if (mesh && std::size_t(part) < mesh->subMeshes.size())
+        name = mesh->subMeshes[std::size_t(part)].name;
+    else if (mesh && mesh->subMeshes.empty())
+        name = mesh->name;
+    return name.empty() ? tr("Part %1").arg(part + 1) : QString::fromStdString(name);
+}
+
+void MaterialsDock::onDocumentChanged(DocumentChanges changes)
+{
+    // Names (MaterialFactors), the number of materials and the selection show in both lists; a
+    // roughness drag also reports MaterialFactors, and then only texts are compared.
+    if (changes
+        & (DocumentChanges(DocumentChange::MaterialFactors) | DocumentChange::CurrentMaterial
+            | DocumentChange::Parts | DocumentChange::Mesh))
+        refreshMaterials();
+    if (changes
+        & (DocumentChanges(DocumentChange::MaterialFactors) | DocumentChange::Parts | DocumentChange::Mesh))
+        refreshParts(m_scene->assets().meshKey != m_shownMeshKey);
+}
+
+void MaterialsDock::onSceneChanged()
+{
+    // The mesh is loaded by SceneController (possibly after the document changed): new parts.
+    if (m_scene->assets().meshKey != m_shownMeshKey) {
+        refreshParts(true);
+        refreshMaterials(); // how many parts show each material
+    }
+}
+
+void MaterialsDock::refreshMaterials()
+{
+    const Project& project = m_document->project();
+    m_updating = true;
+    if (m_materials->count() != int(project.materials.size())) {
+        m_materials->clear();
+        for (std::size_t m = 0; m < project.materials.size(); ++m) {
+            auto* item = new QListWidgetItem(m_materials);
+            item->setFlags(item->flags() | Qt::ItemIsEditable);
+        }
+    }
+    std::vector<int> users(project.materials.size(), 0);
+    const std::size_t parts = std::size_t(std::max(partCount(), 0));
+    for (std::size_t p = 0; p < parts; ++p)
+        ++users[std::size_t(project.materialOfPart(p))];
+    for (int m = 0; m < m_materials->count(); ++m) {
+        QListWidgetItem* item = m_materials->item(m);
+        const QString name = nameOf(project.materials[std::size_t(m)]);
+        if (item->text() != name)
+            item->setText(name);
+        const int n = users[std::size_t(m)];
+        item->setToolTip(
+            n == 1 ? tr("%1: shown on 1 part").arg(name) : tr("%1: shown on %2 parts").arg(name).arg(n));
+    }
+    m_materials->setCurrentRow(project.currentMaterial);
+    m_updating = false;
+}
+
+void MaterialsDock::refreshParts(bool rebuild)
+{
+    const Project& project = m_document->project();
+    const int count = partCount();
+    m_updating = true;
+    if (rebuild || m_parts->topLevelItemCount() != count) {
+        m_parts->clear();
+        for (int part = 0; part < count; ++part) {
+            auto* item = new QTreeWidgetItem(m_parts);
+            item->setText(kPartColumn, partName(part));
+            item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+            auto* combo = new QComboBox(m_parts);
+            combo->setObjectName(QStringLiteral("partMaterial_%1").arg(part));
+            combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+            connect(combo, &QComboBox::activated, this, [this, part](int material) {
+                if (!m_updating)
+                    setPartMaterial(part, material);
+            });
+            m_parts->setItemWidget(item, kMaterialColumn, combo);
+        }
+        m_shownMeshKey = m_scene->assets().meshKey;
+    }
+    for (int part = 0; part < count; ++part) {
+        QTreeWidgetItem* item = m_parts->topLevelItem(part);
+        item->setCheckState(
+            kPartColumn, project.isPartVisible(std::size_t(part)) ? Qt::Checked : Qt::Unchecked);
+        item->setToolTip(kPartColumn,
+            project.isPartVisible(std::size_t(part)) ? tr("Shown: untick to hide it")
+                                                     : tr("Hidden: tick to show it"));
+        QComboBox* combo = partMaterialCombo(part);
+        listMaterials(combo, project);
+        const QSignalBlocker blocker(combo);
+        combo->setCurrentIndex(project.materialOfPart(std::size_t(part)));
+    }
+    m_updating = false;
+}
+
+std::vector<MeshPart> MaterialsDock::partsForEditing() const
+{
+    std::vector<MeshPart> parts = m_document->project().parts;
+    for (int part = int(parts.size()); part < partCount(); ++part)
+        parts.push_back(MeshPart {partName(part).toStdString(), 0, true});
+    return parts;
+}
+
+void MaterialsDock::renameMaterial(int material, const QString& name)
+{
+    const Project& project = m_document->project();
+    if (material < 0 || std::size_t(material) >= project.materials.size())
+        return;
+    const std::string trimmed = name.trimmed().toStdString();
+    if (trimmed.empty()) {
+        Q_EMIT message(tr("A material needs a name; “%1” kept its own")
+                           .arg(nameOf(project.materials[std::size_t(material)])));
+        refreshMaterials();
+        return;
+    }
+    if (trimmed == project.materials[std::size_t(material)].name)
+        return;
+    Project after = project;
+    after.materials[std::size_t(material)].name = trimmed;
+    m_document->setProject(after, tr("Rename Material"));
+}
+
+void MaterialsDock::setPartVisible(int part, bool visible)
+{
+    std::vector<MeshPart> parts = partsForEditing();
+    if (part < 0 || part >= partCount() || std::size_t(part) >= parts.size())
+        return;
+    parts[std::size_t(part)].visible = visible;
+    const QString name = partName(part);
+    m_document->setParts(parts, visible ? tr("Show %1").arg(name) : tr("Hide %1").arg(name));
+}
+
+void MaterialsDock::setPartMaterial(int part, int material)
+{
+    const Project& project = m_document->project();
+    std::vector<MeshPart> parts = partsForEditing();
+    if (part < 0 || part >= partCount() || std::size_t(part) >= parts.size() || material < 0
+        || std::size_t(material) >= project.materials.size())
+        return;
+    parts[std::size_t(part)].material = material;
+    m_document->setParts(
+        parts, tr("Assign %1 to %2").arg(nameOf(project.materials[std::size_t(material)]), partName(part)));
+}
+
+void MaterialsDock::selectPart(int part)
+{
+    QTreeWidgetItem* item = m_parts->topLevelItem(part);
+    if (!item)
+        return;
+    m_updating = true;
+    m_parts->setCurrentItem(item);
+    m_parts->scrollToItem(item);
+    m_updating = false;
+}
+
+} // namespace facet

@@ -1,0 +1,76 @@
+#pragma once
+// The Materials dock: the project's materials and the parts of the mesh.
+//
+// - Materials: one row per material, the current one selected. Choosing a row makes it the one
+//   the Texture Maps and Material docks edit (Document::setCurrentMaterial: a selection, not an
+//   undo step). Double-click (or F2) renames it: one undo step "Rename Material".
+// - Parts: one row per part of the loaded mesh (the sub-meshes of SceneController's mesh, in
+//   order, named as the file names them), with a check box that shows or hides it and the
+//   material it shows (a combo of the project's materials). Each edit is one undo step through
+//   Document::setParts; the project's part list is extended to the mesh's part count first (a part
+//   without an entry shows material 0 and is visible, core/Project.h MeshPart). Choosing a part's
+//   row makes its material current, as clicking it in the viewport does (ui/PartPicker.h), and a
+//   click in the viewport selects its row here.
+
+#include "ui/DocumentChanges.h"
+
+#include <QDockWidget>
+
+#include <cstdint>
+#include <vector>
+
+class QComboBox;
+class QLabel;
+class QListWidget;
+class QListWidgetItem;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace facet {
+
+class Document;
+class SceneController;
+struct MeshPart;
+
+class MaterialsDock : public QDockWidget {
+    Q_OBJECT
+public:
+    MaterialsDock(Document* document, SceneController* scene, QWidget* parent = nullptr);
+    ~MaterialsDock() override;
+
+    QListWidget* materialList() const { return m_materials; }
+    QTreeWidget* partList() const { return m_parts; }
+    // The material combo of part `part`'s row (null when there is no such row).
+    QComboBox* partMaterialCombo(int part) const;
+    // How many parts the loaded mesh has (rows in the parts list).
+    int partCount() const;
+
+    // The edits the rows make (tests call them too). Each is one undo step; out of range: ignored.
+    void renameMaterial(int material, const QString& name);
+    void setPartVisible(int part, bool visible);
+    void setPartMaterial(int part, int material);
+    // Selects `part`'s row without editing anything (a click in the viewport picked it).
+    void selectPart(int part);
+
+Q_SIGNALS:
+    void message(const QString& text);
+
+private:
+    void onDocumentChanged(DocumentChanges changes);
+    void onSceneChanged();
+    void refreshMaterials();
+    void refreshParts(bool rebuild);
+    // The project's parts, one entry per part of the loaded mesh at least (MeshPart's defaults).
+    std::vector<MeshPart> partsForEditing() const;
+    QString partName(int part) const;
+
+    Document* m_document;
+    SceneController* m_scene;
+    QListWidget* m_materials;
+    QTreeWidget* m_parts;
+    QLabel* m_partsNote;
+    std::uint64_t m_shownMeshKey = 0;
+    bool m_updating = false; // rows being filled from the document: their signals are not edits
+};
+
+} // namespace facet
