@@ -380,6 +380,16 @@ int runHeadless(const QString& folder, int frames)
                 map.image = tiny;
                 map.path += "#4x4";
             }
+    // Each map alone (its 2K file, default filtering): what each fetch costs.
+    for (const MapFile& file : mapFiles()) {
+        if (!ok)
+            break;
+        Project one = helmetProject(folder, true);
+        for (int i = 0; i < kMapSlotCount; ++i)
+            if (MapSlot(i) != file.slot)
+                one.material().map(MapSlot(i)).path.clear();
+        ok = addConfig(std::string("only ") + toString(file.slot), one, defaultLevel);
+    }
     for (float level : {1.0f, 2.0f, 4.0f, 8.0f, 16.0f})
         if (level <= info.maxAnisotropy)
             ok = ok && addConfig("five 2K maps", textured, level);

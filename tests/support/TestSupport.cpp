@@ -1,8 +1,6 @@
 #include "TestSupport.h"
 
 #include <cstdint>
-#include <QFile>
-
 #include <cstdio>
 #include <memory>
 #include <vector>
