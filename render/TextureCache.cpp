@@ -145,6 +145,7 @@ TextureCache::TextureCache()
     m_maxSupportedAnisotropy = info.maxAnisotropy;
     m_textureStorage = info.atLeast(4, 2) || epoxy_has_gl_extension("GL_ARB_texture_storage");
     m_anisotropy = std::clamp(TextureFiltering::anisotropyFor(info, false), 1.0f, m_maxSupportedAnisotropy);
+    m_trilinear = TextureFiltering::trilinear(info);
 }
 
 TextureCache::~TextureCache()
@@ -327,7 +328,7 @@ void TextureCache::finish(Entry& entry)
 {
     const UploadState state;
     glBindTexture(GL_TEXTURE_2D, entry.texture);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, m_trilinear ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
@@ -456,6 +457,20 @@ void TextureCache::setMaxAnisotropy(float level)
             continue;
         glBindTexture(GL_TEXTURE_2D, entry.texture);
         glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, level);
+    }
+}
+
+void TextureCache::setTrilinear(bool trilinear)
+{
+    if (trilinear == m_trilinear)
+        return;
+    m_trilinear = trilinear;
+    const UploadState state;
+    for (auto& [key, entry] : m_textures) {
+        if (!entry.complete)
+            continue;
+        glBindTexture(GL_TEXTURE_2D, entry.texture);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, trilinear ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST);
     }
 }
 

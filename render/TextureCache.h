@@ -94,6 +94,10 @@ public:
     // maximum; 1 without the extension). Cheap when unchanged: call it every frame.
     void setMaxAnisotropy(float level);
     float maxAnisotropy() const { return m_anisotropy; }
+    // Trilinear (GL_LINEAR_MIPMAP_LINEAR) or the nearer mip level (GL_LINEAR_MIPMAP_NEAREST) for
+    // every texture, now and later; the default is TextureFiltering::trilinear for this GL.
+    void setTrilinear(bool trilinear);
+    bool trilinear() const { return m_trilinear; }
 
     // Why the last refused image could not be a texture ("TextureCache: <path>: ...").
     const std::string& problem() const { return m_problem; }
@@ -136,6 +140,7 @@ private:
     float m_maxSupportedAnisotropy = 1.0f; // 1: no anisotropic filtering extension
     bool m_textureStorage = false; // glTexStorage2D (GL 4.2, ARB_texture_storage)
     float m_anisotropy = 1.0f;
+    bool m_trilinear = true;
     std::string m_problem;
     std::uint64_t m_bytesUploaded = 0;
 };

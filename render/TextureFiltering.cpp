@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 
 namespace facet {
 
@@ -21,6 +22,17 @@ float TextureFiltering::anisotropyFor(const GLInfo& info, bool interactive)
 {
     const float level = setting(info);
     return info.softwareRasterizer && interactive ? std::min(level, kSoftwareInteractive) : level;
+}
+
+bool TextureFiltering::trilinear(const GLInfo& info)
+{
+    if (const char* text = std::getenv("FACET_TEXTURE_MIPS"); text && *text) {
+        if (std::strcmp(text, "trilinear") == 0)
+            return true;
+        if (std::strcmp(text, "nearest") == 0)
+            return false;
+    }
+    return !info.softwareRasterizer;
 }
 
 } // namespace facet

@@ -29,6 +29,14 @@ struct TextureFiltering {
     // What a frame uses: the setting, but at most kSoftwareInteractive on a software rasteriser
     // while interacting (`interactive`: the viewport's reduced-resolution frames).
     static float anisotropyFor(const GLInfo& info, bool interactive);
+
+    // Whether a minified texture blends its two nearest mip levels (trilinear,
+    // GL_LINEAR_MIPMAP_LINEAR) or reads the nearer one (GL_LINEAR_MIPMAP_NEAREST): trilinear on
+    // hardware, where it is free; the nearer level on software rasterisers, where the second
+    // level's fetch made a frame of five 2K maps ~25% slower (2.05x the untextured frame against
+    // 1.65x, tests/bench/texture_maps; docs/benchmarks.md). FACET_TEXTURE_MIPS=trilinear or
+    // nearest overrides either default.
+    static bool trilinear(const GLInfo& info);
 };
 
 } // namespace facet

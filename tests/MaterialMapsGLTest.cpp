@@ -193,6 +193,15 @@ const std::vector<Row>& rows()
              useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
              useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::B);
          }},
+        // One file, but the slots cannot share a fetch (render/ShaderVariant sharedTexelFeatures):
+        // another UV transform, another colour space.
+        {"packed-apart-uv-and-colour-space",
+         [](Material& m, const QString& f) {
+             useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::B);
+             useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+             m.map(MapSlot::Roughness).uv.offset = {0.3, 0.1};
+             useMap(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R, ColorEncoding::SRGB);
+         }},
         {"uv-scale",
          [](Material& m, const QString& f) {
              useBaseColor(m, f);
@@ -351,6 +360,11 @@ std::optional<Image> MaterialMapsGLTest::render(const Project& project, const st
 
 void MaterialMapsGLTest::initTestCase()
 {
+    // Trilinear everywhere: this table checks what reaches the shader (maps, channels, spaces,
+    // transforms), against a twin that reads level 0; software rasterisers otherwise read the
+    // nearer mip level (render/TextureFiltering.h), a whole level away from the twin where the
+    // sphere turns away.
+    qputenv("FACET_TEXTURE_MIPS", "trilinear");
     QVERIFY(m_folder.isValid());
     const QString folder = m_folder.path();
     // basecolor: three independent smooth signals; packed: four distinct ones (one per channel);

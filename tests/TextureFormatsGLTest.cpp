@@ -136,6 +136,9 @@ private Q_SLOTS:
     void tooLargeForThisGlIsRefused();
     void anisotropyPolicy_data();
     void anisotropyPolicy();
+    void mipFilterPolicy_data();
+    void mipFilterPolicy();
+    void cacheAppliesTheMipFilter();
 
 private:
     // The texels of level `level` of `texture` as the shader samples them (RGBA, row 0 bottom).
@@ -393,6 +396,67 @@ void TextureFormatsGLTest::anisotropyPolicy()
         qputenv("FACET_ANISOTROPY", setting);
     QCOMPARE(TextureFiltering::anisotropyFor(info, interactive), expected);
     qunsetenv("FACET_ANISOTROPY");
+}
+
+void TextureFormatsGLTest::mipFilterPolicy_data()
+{
+    QTest::addColumn<QString>("renderer");
+    QTest::addColumn<QByteArray>("setting");
+    QTest::addColumn<bool>("trilinear");
+    const QString llvmpipe = QStringLiteral("llvmpipe (LLVM 15.0.6, 256 bits)");
+    const QString gpu = QStringLiteral("NVIDIA GeForce RTX 3060/PCIe/SSE2");
+    QTest::newRow("llvmpipe") << llvmpipe << QByteArray() << false;
+    QTest::newRow("llvmpipe, set trilinear") << llvmpipe << QByteArray("trilinear") << true;
+    QTest::newRow("softpipe") << QStringLiteral("softpipe") << QByteArray() << false;
+    QTest::newRow("GPU") << gpu << QByteArray() << true;
+    QTest::newRow("GPU, set nearest") << gpu << QByteArray("nearest") << false;
+    QTest::newRow("GPU, bad setting") << gpu << QByteArray("bilinear") << true;
+    QTest::newRow("llvmpipe, bad setting") << llvmpipe << QByteArray("Trilinear") << false;
+}
+
+void TextureFormatsGLTest::mipFilterPolicy()
+{
+    QFETCH(QString, renderer);
+    QFETCH(QByteArray, setting);
+    QFETCH(bool, trilinear);
+    GLInfo info;
+    info.major = 4;
+    info.minor = 5;
+    info.renderer = renderer.toStdString();
+    info.softwareRasterizer = isSoftwareRendererName(info.renderer);
+    if (setting.isEmpty())
+        qunsetenv("FACET_TEXTURE_MIPS");
+    else
+        qputenv("FACET_TEXTURE_MIPS", setting);
+    QCOMPARE(TextureFiltering::trilinear(info), trilinear);
+    qunsetenv("FACET_TEXTURE_MIPS");
+}
+
+// The cache sets the filter on textures made before and after a change, and a new cache starts
+// from this GL's policy.
+void TextureFormatsGLTest::cacheAppliesTheMipFilter()
+{
+    qunsetenv("FACET_TEXTURE_MIPS");
+    const auto minFilterOf = [](unsigned texture) {
+        GLint filter = 0;
+        glBindTexture(GL_TEXTURE_2D, texture);
+        glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &filter);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        return filter;
+    };
+    const auto map = std::make_shared<const MapImage>(8, 8, MapLayout::Rgb, MapSampleType::UInt8);
+    TextureCache cache;
+    const bool policy = TextureFiltering::trilinear(queryCurrentGLInfo());
+    QCOMPARE(cache.trilinear(), policy);
+    bool uploaded = false;
+    const unsigned first = cache.get(map, "/maps/a.png", 1, ColorEncoding::Linear, &uploaded);
+    QVERIFY(first != 0);
+    QCOMPARE(minFilterOf(first), GLint(policy ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST));
+    cache.setTrilinear(!policy);
+    QCOMPARE(minFilterOf(first), GLint(!policy ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST));
+    const unsigned second = cache.get(map, "/maps/b.png", 1, ColorEncoding::Linear, &uploaded);
+    QCOMPARE(minFilterOf(second), GLint(!policy ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST));
+    QCOMPARE(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 QTEST_GUILESS_MAIN(TextureFormatsGLTest)

@@ -348,6 +348,7 @@ int runHeadless(const QString& folder, int frames)
         std::string name;
         float anisotropy = 1.0f;
         std::unique_ptr<Renderer> renderer;
+        bool trilinear = true;
         RenderScene scene;
         std::vector<double> times;
         std::vector<double> cpu; // process CPU time (llvmpipe's threads included) per frame
@@ -358,7 +359,8 @@ int runHeadless(const QString& folder, int frames)
         const auto projectAssets = loadProjectAssets(project, &error);
         if (!projectAssets)
             return false;
-        Config config {name, anisotropy, std::make_unique<Renderer>(), {}, {}, {}};
+        Config config {name, anisotropy, std::make_unique<Renderer>(), true, {}, {}, {}};
+        config.trilinear = TextureFiltering::trilinear(info);
         config.scene = sceneFromProject(project, *projectAssets, ibl, sceneOptionsFor(*settings, false));
         if (!addDfgTables(precompute, *settings, config.scene, nullptr, &error))
             return false;
@@ -393,9 +395,21 @@ int runHeadless(const QString& folder, int frames)
     for (float level : {1.0f, 2.0f, 4.0f, 8.0f, 16.0f})
         if (level <= info.maxAnisotropy)
             ok = ok && addConfig("five 2K maps", textured, level);
+    // The defaults but the other mip filter, and the packed metallic-roughness file fetched once
+    // per slot (a copy of it for roughness) instead of once for both.
+    ok = ok && addConfig("five 2K maps", textured, defaultLevel);
+    if (ok)
+        configs.back().trilinear = !configs.back().trilinear;
+    ok = ok && addConfig("five 2K maps, metallic and roughness fetched apart", textured, defaultLevel);
+    if (ok) {
+        RenderMapImage& roughness = configs.back().scene.materials[0].maps[std::size_t(MapSlot::Roughness)];
+        roughness.image = std::make_shared<MapImage>(*roughness.image);
+        roughness.path += "#copy";
+    }
     for (int round = 0; ok && round < frames + 2; ++round)
         for (Config& config : configs) {
             config.renderer->textureCache().setMaxAnisotropy(config.anisotropy);
+            config.renderer->textureCache().setTrilinear(config.trilinear);
             glFinish();
             const auto start = std::chrono::steady_clock::now();
             const double cpuStart = cpuMilliseconds();
@@ -414,18 +428,19 @@ int runHeadless(const QString& folder, int frames)
     std::printf("\nfull frames %dx%d (render + tone map, glFinish), %d each, taking turns:\n\n", kWidth,
         kHeight, frames);
     std::printf(
-        "| scene | anisotropy | fastest ms | median ms | / untextured | median CPU ms | / untextured |\n"
+        "| scene | filtering | fastest ms | median ms | / untextured | median CPU ms | / untextured |\n"
         "|---|---|---|---|---|---|---|\n");
-    const double untextured = *std::min_element(configs[0].times.begin(), configs[0].times.end());
+    const double untextured = median(configs[0].times);
     const double untexturedCpu = median(configs[0].cpu);
+    const bool defaultTrilinear = TextureFiltering::trilinear(info);
     for (const Config& config : configs) {
-        const double fastest = *std::min_element(config.times.begin(), config.times.end());
-        const std::string level = config.name != "five 2K maps" ? std::string("-")
-                                                                : std::to_string(int(config.anisotropy)) + "x"
-                + (config.anisotropy == defaultLevel ? " (default here)" : "");
-        std::printf("| %s | %s | %.1f | %.1f | %.2f | %.1f | %.2f |\n", config.name.c_str(), level.c_str(),
-            fastest, median(config.times), fastest / untextured, median(config.cpu),
-            median(config.cpu) / untexturedCpu);
+        const bool isDefault = config.anisotropy == defaultLevel && config.trilinear == defaultTrilinear;
+        const std::string filtering = config.name == "untextured sphere" ? std::string("-")
+                                                                        : std::to_string(int(config.anisotropy)) + "x, "
+                + (config.trilinear ? "trilinear" : "nearest mip") + (isDefault ? " (default here)" : "");
+        std::printf("| %s | %s | %.1f | %.1f | %.2f | %.1f | %.2f |\n", config.name.c_str(), filtering.c_str(),
+            *std::min_element(config.times.begin(), config.times.end()), median(config.times),
+            median(config.times) / untextured, median(config.cpu), median(config.cpu) / untexturedCpu);
     }
     return 0;
 }
