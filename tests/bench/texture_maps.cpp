@@ -65,6 +65,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <functional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -593,8 +594,11 @@ int runWindow(const QString& projectPath, bool openAtStart, const QElapsedTimer&
     std::printf("  window full frames %dx%d, anisotropy %.0fx: median %.1f ms\n",
         viewport->lastFrameStats().width, viewport->lastFrameStats().height,
         double(viewport->lastFrameStats().anisotropy), median(full));
-    std::printf("  map decodes: %llu (%zu slots, 4 files)\n",
-        (unsigned long long)MapImageCache::shared().decodeCount(), mapFiles().size());
+    std::set<std::string> files;
+    for (const MapFile& file : mapFiles())
+        files.insert(file.name);
+    std::printf("  map decodes: %llu (%zu slots, %zu files)\n",
+        (unsigned long long)MapImageCache::shared().decodeCount(), mapFiles().size(), files.size());
     std::printf(
         "  memory: VmRSS %s, VmHWM %s\n", statusField("VmRSS:").c_str(), statusField("VmHWM:").c_str());
     window.document()->newProject(); // nothing to ask about on close
