@@ -13,23 +13,26 @@
 #include <cstdio>
 
 #include "core/AtomicFile.h"
+#include "ui/ViewportWidget.h"
 
 namespace facet {
 
-WindowScreenshot::WindowScreenshot(QWidget* window, QOpenGLWidget* viewport, QString path, QObject* parent)
+WindowScreenshot::WindowScreenshot(QWidget* window, ViewportWidget* viewport, QString path, QObject* parent)
     : QObject(parent)
     , m_window(window)
     , m_path(std::move(path))
 {
-    // The grab goes after the first frame has reached the window, from the event loop, so that
-    // the layout has settled and the viewport holds a finished picture.
-    connect(viewport, &QOpenGLWidget::frameSwapped, this, [this] {
-        if (!m_done)
+    // The grab goes after the first complete frame has reached the window, from the event loop,
+    // so that the layout has settled and the viewport holds a finished picture. Previews drawn
+    // while maps decode and upload (ViewportFrameStats::loadingMaps) are not it.
+    connect(viewport, &QOpenGLWidget::frameSwapped, this, [this, viewport] {
+        const ViewportFrameStats& frame = viewport->lastFrameStats();
+        if (!m_done && !frame.reduced && !frame.loadingMaps && frame.mapsHeldBack == 0)
             QTimer::singleShot(0, this, &WindowScreenshot::save);
     });
     m_timeout.setSingleShot(true);
     connect(&m_timeout, &QTimer::timeout, this, [this] {
-        fail(QStringLiteral("the viewport drew no frame within %1 s").arg(kFirstFrameTimeoutMs / 1000));
+        fail(QStringLiteral("the viewport drew no complete frame within %1 s").arg(kFirstFrameTimeoutMs / 1000));
     });
     m_timeout.start(kFirstFrameTimeoutMs);
 }

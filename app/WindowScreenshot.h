@@ -1,23 +1,26 @@
 #pragma once
-// `facet --screenshot FILE.png`: once the viewport has drawn its first frame, saves a grab of the
-// whole window and quits (exit code 0 when saved, 1 when not). For README pictures and smoke tests.
+// `facet --screenshot FILE.png`: once the viewport has drawn its first complete frame (full
+// resolution, every map loaded and on the GPU: not a preview drawn while a texture set loads),
+// saves a grab of the whole window and quits (exit code 0 when saved, 1 when not). For README
+// pictures and smoke tests.
 
 #include <QObject>
 #include <QString>
 #include <QTimer>
 
-class QOpenGLWidget;
 class QWidget;
 
 namespace facet {
 
+class ViewportWidget;
+
 class WindowScreenshot : public QObject {
     Q_OBJECT
 public:
-    // How long to wait for the first frame before giving up (a context that never comes up).
+    // How long to wait for the first complete frame before giving up (a context that never comes up).
     static constexpr int kFirstFrameTimeoutMs = 60000;
 
-    WindowScreenshot(QWidget* window, QOpenGLWidget* viewport, QString path, QObject* parent = nullptr);
+    WindowScreenshot(QWidget* window, ViewportWidget* viewport, QString path, QObject* parent = nullptr);
 
     // Whether Qt can write an image of `path`'s suffix; if not, `why` says so. Needs a QGuiApplication
     // (image-format plugins), so main() checks this before it shows the window.

@@ -3,18 +3,15 @@
 #include "core/AtomicFile.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
-#include <filesystem>
 #include <limits>
-#include <system_error>
 
 #include <QtGlobal>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
-#include "core/GltfImport.h"
+#include "core/ImageReader.h"
 
 namespace facet {
 
@@ -24,92 +21,12 @@ namespace {
 // survives a round trip through a half-float EXR or an RGBA16F texture unchanged.
 constexpr float kLargestHalf = 65504.0f;
 
-std::string lowercase(std::string text)
-{
-    std::transform(text.begin(), text.end(), text.begin(),
-        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
-
-// OIIO's messages can span several lines (libpng stacks its own under OIIO's); a message for
-// the user is one line.
-std::string oneLine(std::string message)
-{
-    while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
-        message.pop_back();
-    std::string result;
-    result.reserve(message.size());
-    for (char c : message) {
-        if (c == '\n')
-            result += "; ";
-        else
-            result += c;
-    }
-    return result.empty() ? std::string("unknown error") : result;
-}
-
-void setError(std::string* error, const char* function, const std::string& path, const std::string& problem)
-{
-    if (error)
-        *error = std::string(function) + ": " + path + ": " + oneLine(problem);
-}
-
-// What the numbers of a file mean. OIIO names the colour space when the format says it
-// ("sRGB" for PNG/JPEG/WebP, "Linear" for EXR, "linear" for Radiance HDR, "GammaCorrected2.2"
-// for a PNG with a gAMA chunk) and says nothing for TIFF or TGA. Without a name, the
-// convention of the formats decides: 8/16-bit integer files are sRGB-encoded colour (PNG, JPEG,
-// TGA, 8-bit TIFF as painting tools write them), float files (EXR, HDR, float TIFF) are linear.
-ColorEncoding encodingFor(const std::string& colorSpaceName, OIIO::TypeDesc format)
-{
-    const std::string name = lowercase(colorSpaceName);
-    // A 2.2 power curve is not the sRGB curve but close to it (within 0.4% of full scale),
-    // and what a gamma-tagged PNG's author meant.
-    if (name.find("srgb") != std::string::npos || name.rfind("gammacorrected", 0) == 0)
-        return ColorEncoding::SRGB;
-    if (name.find("linear") != std::string::npos || name.rfind("lin_", 0) == 0 || name == "acescg"
-        || name == "aces2065-1" || name == "raw")
-        return ColorEncoding::Linear;
-    switch (format.basetype) {
-    case OIIO::TypeDesc::UINT8:
-    case OIIO::TypeDesc::INT8:
-    case OIIO::TypeDesc::UINT16:
-    case OIIO::TypeDesc::INT16:
-        return ColorEncoding::SRGB;
-    default:
-        return ColorEncoding::Linear;
-    }
-}
-
 // The sRGB EOTF, IEC 61966-2-1:1999 section 4.2 (piecewise: linear toe below 0.04045).
 float srgbToLinear(float encoded)
 {
     if (encoded <= 0.04045f)
         return encoded / 12.92f;
     return std::pow((encoded + 0.055f) / 1.055f, 2.4f);
-}
-
-// ".png", ".jpg", ".webp", ... for encoded bytes, by their signature (the MIME type a glTF asset
-// gives is optional and sometimes wrong).
-std::string extensionForEncodedImage(const std::vector<unsigned char>& bytes, const std::string& mimeType)
-{
-    const auto startsWith = [&bytes](std::initializer_list<unsigned char> signature, std::size_t at = 0) {
-        if (bytes.size() < at + signature.size())
-            return false;
-        return std::equal(signature.begin(), signature.end(), bytes.begin() + std::ptrdiff_t(at));
-    };
-    if (startsWith({0x89, 'P', 'N', 'G'}))
-        return ".png";
-    if (startsWith({0xFF, 0xD8, 0xFF}))
-        return ".jpg";
-    if (startsWith({'R', 'I', 'F', 'F'}) && startsWith({'W', 'E', 'B', 'P'}, 8))
-        return ".webp";
-    if (startsWith({0x76, 0x2F, 0x31, 0x01}))
-        return ".exr";
-    if (mimeType == "image/jpeg")
-        return ".jpg";
-    if (mimeType == "image/webp")
-        return ".webp";
-    return ".png";
 }
 
 } // namespace
@@ -179,91 +96,34 @@ std::optional<Image> Image::load(const std::string& path, std::string* error, Im
     if (stats)
         *stats = {};
     try {
-        // An image embedded in a glTF asset ("asset.glb#images/2", core/GltfImport.h) is decoded
-        // from memory: OpenImageIO picks the reader by the name's extension, which comes from the
-        // bytes' signature.
-        std::vector<unsigned char> embedded;
-        std::unique_ptr<OIIO::Filesystem::IOMemReader> memory;
-        std::string openName = path;
-        std::error_code ec;
-        const std::filesystem::file_status status = std::filesystem::status(path, ec);
-        if (status.type() == std::filesystem::file_type::not_found) {
-            const std::optional<GltfImageReference> reference = parseGltfImageReference(path);
-            if (!reference) {
-                setError(error, kFunction, path, "no such file");
-                return std::nullopt;
-            }
-            std::string mimeType;
-            std::string problem;
-            auto bytes = readGltfImage(*reference, &mimeType, &problem);
-            if (!bytes) {
-                if (error)
-                    *error = std::string(kFunction) + ": " + problem;
-                return std::nullopt;
-            }
-            embedded = std::move(*bytes);
-            memory = std::make_unique<OIIO::Filesystem::IOMemReader>(embedded.data(), embedded.size());
-            openName = "embedded" + extensionForEncodedImage(embedded, mimeType);
-        } else if (std::filesystem::is_directory(status)) {
-            setError(error, kFunction, path, "is a directory, not an image");
+        std::optional<ImageReader> reader = ImageReader::open(path, kFunction, error);
+        if (!reader)
             return std::nullopt;
-        } else if (!std::filesystem::is_regular_file(status)) {
-            // A device (/dev/zero), a FIFO or a socket would be read forever or block.
-            setError(error, kFunction, path, "is not a regular file");
-            return std::nullopt;
-        }
-
-        // Leave unassociated alpha as the file stores it: OIIO would otherwise premultiply
-        // PNG/TIFF/TGA colour by alpha on read, and a base colour texture with a cut-out mask
-        // must keep its colour where alpha is 0.
-        OIIO::ImageSpec config;
-        config.attribute("oiio:UnassociatedAlpha", 1);
-        // OIIO 2.4's open(name, config, ioproxy) ignores the proxy when a config is given: the
-        // proxy travels in the config instead (a pointer to the pointer, TypeDesc::PTR).
-        void* proxy = memory.get();
-        if (proxy)
-            config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-        std::unique_ptr<OIIO::ImageInput> input = OIIO::ImageInput::open(openName, &config);
-        if (!input) {
-            setError(error, kFunction, path, OIIO::geterror());
-            return std::nullopt;
-        }
-        const OIIO::ImageSpec& spec = input->spec();
+        OIIO::ImageInput* input = &reader->input();
+        const OIIO::ImageSpec& spec = reader->spec();
 
         // Only the header has been read so far: check what it claims before allocating a
         // single pixel, so a crafted or corrupt header cannot make us ask for terabytes.
-        if (spec.width <= 0 || spec.height <= 0) {
-            setError(error, kFunction, path,
-                "invalid size " + std::to_string(spec.width) + "x" + std::to_string(spec.height));
+        if (!reader->checkHeader(kFunction, error))
             return std::nullopt;
-        }
         if (spec.width > kMaxDimension || spec.height > kMaxDimension) {
-            setError(error, kFunction, path,
+            setImageError(error, kFunction, path,
                 "image too large: " + std::to_string(spec.width) + "x" + std::to_string(spec.height)
                     + " exceeds the limit of " + std::to_string(kMaxDimension) + " pixels per side");
             return std::nullopt;
         }
         const std::size_t pixels = std::size_t(spec.width) * std::size_t(spec.height);
         if (pixels > kMaxPixels) {
-            setError(error, kFunction, path,
+            setImageError(error, kFunction, path,
                 "image too large: " + std::to_string(spec.width) + "x" + std::to_string(spec.height)
                     + " exceeds the limit of " + std::to_string(kMaxPixels) + " pixels");
-            return std::nullopt;
-        }
-        if (spec.depth > 1) {
-            setError(error, kFunction, path,
-                "volume images (depth " + std::to_string(spec.depth) + ") are not supported");
-            return std::nullopt;
-        }
-        if (spec.nchannels <= 0) {
-            setError(error, kFunction, path, "image has no channels");
             return std::nullopt;
         }
 
         Image image(spec.width, spec.height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         image.m_sourceChannels = spec.nchannels;
-        image.m_colorSpaceName = spec.get_string_attribute("oiio:ColorSpace");
-        image.m_encoding = encodingFor(image.m_colorSpaceName, spec.format);
+        image.m_colorSpaceName = reader->colorSpaceName();
+        image.m_encoding = reader->encoding();
 
         // Read at most four channels straight into the RGBA pixels (the stride skips the rest),
         // so a file with dozens of AOV channels costs no more memory than an RGBA one.
@@ -273,7 +133,7 @@ std::optional<Image> Image::load(const std::string& path, std::string* error, Im
         if (!input->read_image(
                 0, 0, 0, readChannels, OIIO::TypeDesc::FLOAT, image.data(), xstride, ystride)) {
             std::string reason = input->geterror();
-            setError(
+            setImageError(
                 error, kFunction, path, reason.empty() ? std::string("could not read the pixels") : reason);
             return std::nullopt;
         }
@@ -282,8 +142,7 @@ std::optional<Image> Image::load(const std::string& path, std::string* error, Im
         // Fill what the file does not have. Two channels are grey + alpha (what PNG and TIFF
         // mean by two channels), unless they are named R and G (a two-channel EXR, e.g. a
         // normal map's X and Y), which stay red and green.
-        const bool twoColourChannels = spec.nchannels == 2 && spec.channelnames.size() == 2
-            && spec.channelnames[0] == "R" && spec.channelnames[1] == "G";
+        const bool twoColourChannels = reader->twoColourChannels();
         for (glm::vec4& pixel : image.m_pixels) {
             switch (spec.nchannels) {
             case 1:
@@ -306,11 +165,11 @@ std::optional<Image> Image::load(const std::string& path, std::string* error, Im
             *stats = replaced;
         return image;
     } catch (const std::bad_alloc&) {
-        setError(error, kFunction, path, "out of memory");
+        setImageError(error, kFunction, path, "out of memory");
     } catch (const std::exception& e) {
-        setError(error, kFunction, path, e.what());
+        setImageError(error, kFunction, path, e.what());
     } catch (...) {
-        setError(error, kFunction, path, "unknown error while reading");
+        setImageError(error, kFunction, path, "unknown error while reading");
     }
     return std::nullopt;
 }
@@ -319,7 +178,7 @@ bool Image::save(const std::string& path, std::string* error, bool alpha) const
 {
     constexpr const char* kFunction = "Image::save";
     if (isEmpty()) {
-        setError(error, kFunction, path, "the image is empty");
+        setImageError(error, kFunction, path, "the image is empty");
         return false;
     }
     try {
@@ -336,14 +195,14 @@ bool Image::save(const std::string& path, std::string* error, bool alpha) const
         // bmp, webp, ppm). The writer is chosen by the extension of `path`.
         std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
         if (!output) {
-            setError(error, kFunction, path, OIIO::geterror());
+            setImageError(error, kFunction, path, OIIO::geterror());
             return false;
         }
         const std::string formatName = output->format_name();
         // A few writers (sgi, ico, rla, fits, heif in OIIO 2.4) only write to a file by name;
         // they are refused rather than written unchecked.
         if (!output->supports("ioproxy")) {
-            setError(error, kFunction, path,
+            setImageError(error, kFunction, path,
                 "cannot write " + formatName
                     + " files safely (OpenImageIO cannot encode them in memory to check the write); "
                       "use .exr, .png, .hdr, .tif, .jpg or .tga");
@@ -392,7 +251,7 @@ bool Image::save(const std::string& path, std::string* error, bool alpha) const
         OIIO::Filesystem::IOProxy* proxy = &memory;
         spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
         if (!output->open(path, spec)) {
-            setError(error, kFunction, path, "cannot encode: " + output->geterror());
+            setImageError(error, kFunction, path, "cannot encode: " + output->geterror());
             return false;
         }
         const bool written = output->write_image(OIIO::TypeDesc::FLOAT, buffer.data());
@@ -401,7 +260,7 @@ bool Image::save(const std::string& path, std::string* error, bool alpha) const
         if (reason.empty() && !closed)
             reason = output->geterror();
         if (!written || !closed) {
-            setError(error, kFunction, path, "encoding failed: " + reason);
+            setImageError(error, kFunction, path, "encoding failed: " + reason);
             return false;
         }
         output.reset();
@@ -410,16 +269,16 @@ bool Image::save(const std::string& path, std::string* error, bool alpha) const
         std::string problem;
         if (!writeFileAtomically(path,
                 std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()), &problem)) {
-            setError(error, kFunction, path, "cannot write: " + problem);
+            setImageError(error, kFunction, path, "cannot write: " + problem);
             return false;
         }
         return true;
     } catch (const std::bad_alloc&) {
-        setError(error, kFunction, path, "out of memory");
+        setImageError(error, kFunction, path, "out of memory");
     } catch (const std::exception& e) {
-        setError(error, kFunction, path, e.what());
+        setImageError(error, kFunction, path, e.what());
     } catch (...) {
-        setError(error, kFunction, path, "unknown error while writing");
+        setImageError(error, kFunction, path, "unknown error while writing");
     }
     return false;
 }

@@ -52,21 +52,26 @@ glm::dvec3 shadingNormal(const glm::dvec3& ng, const glm::dvec4& tangent, const 
     return nLength > 1e-8 ? n / nLength : ng;
 }
 
-namespace {
-
-// One texel as the GPU holds it: sRGB maps are 8-bit encoded values decoded when read.
-glm::dvec4 texelValue(const Image& image, int x, int y, ColorEncoding colorSpace)
+glm::dvec4 texelValue(const MapImage& image, int x, int rowFromBottom, ColorEncoding colorSpace)
 {
-    const glm::dvec4 stored(image.at(x, y));
+    const glm::dvec4 stored(image.texel(x, rowFromBottom));
     if (colorSpace != ColorEncoding::SRGB)
         return stored;
-    glm::dvec4 linear;
-    for (int c = 0; c < 4; ++c) {
-        const double quantised = std::round(std::clamp(stored[c], 0.0, 1.0) * 255.0) / 255.0;
-        linear[c] = c < 3 ? tonemap::srgbToLinear(quantised) : quantised;
+    glm::dvec4 linear = stored;
+    if (image.sampleType() == MapSampleType::UInt8) {
+        // GL_SRGB8(_ALPHA8): the 8-bit value decoded by the sampler (alpha is linear).
+        for (int c = 0; c < 3; ++c)
+            linear[c] = tonemap::srgbToLinear(stored[c]);
+        return linear;
     }
+    // 16-bit and half maps are decoded on upload into half floats, alpha included as a half.
+    for (int c = 0; c < 3; ++c)
+        linear[c] = MapImage::fromHalf(MapImage::linearHalfFromSrgb(float(stored[c])));
+    linear.a = MapImage::fromHalf(MapImage::toHalf(float(stored.a)));
     return linear;
 }
+
+namespace {
 
 int wrap(int i, int size)
 {
@@ -76,13 +81,13 @@ int wrap(int i, int size)
 
 } // namespace
 
-glm::dvec4 sampleTexture(const Image& image, ColorEncoding colorSpace, const glm::dvec2& uv)
+glm::dvec4 sampleTexture(const MapImage& image, ColorEncoding colorSpace, const glm::dvec2& uv)
 {
     if (image.isEmpty())
         return glm::dvec4(0.0, 0.0, 0.0, 1.0);
     const int width = image.width();
     const int height = image.height();
-    // Texel space with centres at integers; t = 0 is the bottom row, which Image stores last.
+    // Texel space with centres at integers; t = 0 is the bottom row, MapImage's row 0.
     const double x = uv.x * width - 0.5;
     const double y = uv.y * height - 0.5;
     const double x0 = std::floor(x);
@@ -91,8 +96,8 @@ glm::dvec4 sampleTexture(const Image& image, ColorEncoding colorSpace, const glm
     const double fy = y - y0;
     const auto at = [&](double tx, double ty) {
         const int column = wrap(int(std::fmod(tx, double(width))), width);
-        const int rowFromBottom = wrap(int(std::fmod(ty, double(height))), height);
-        return texelValue(image, column, height - 1 - rowFromBottom, colorSpace);
+        const int row = wrap(int(std::fmod(ty, double(height))), height);
+        return texelValue(image, column, row, colorSpace);
     };
     const glm::dvec4 bottom = glm::mix(at(x0, y0), at(x0 + 1.0, y0), fx);
     const glm::dvec4 top = glm::mix(at(x0, y0 + 1.0), at(x0 + 1.0, y0 + 1.0), fx);
@@ -102,7 +107,7 @@ glm::dvec4 sampleTexture(const Image& image, ColorEncoding colorSpace, const glm
 MaterialInfo materialInputs(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv)
 {
     const auto read = [&](MapSlot slot) -> std::optional<glm::dvec4> {
-        const Image* image = images[std::size_t(slot)];
+        const MapImage* image = images[std::size_t(slot)];
         const MaterialMap& map = material.map(slot);
         if (!image || image->isEmpty() || !map.hasTexture())
             return std::nullopt;

@@ -5,10 +5,13 @@
 // an independent evaluation (tests/MaterialMapsGLTest.cpp).
 //
 // Texture reads follow OpenGL's rules for the textures render/TextureCache makes: uv (0, 0) is the
-// image's bottom-left corner (core/Mesh.h; Image stores the top row first), texel centres sit at
-// (i + 0.5) / size, wrap mode REPEAT, bilinear between the four nearest texels of level 0. An
-// sRGB-encoded map is decoded per texel before filtering, as GL_SRGB8_ALPHA8 does (the sRGB
-// specification's intent); its texels are quantised to 8 bits first, as the upload does.
+// map's first texel (core/MapImage.h stores rows bottom to top), texel centres sit at
+// (i + 0.5) / size, wrap mode REPEAT, bilinear between the four nearest texels of level 0, each
+// texel as the texture holds it: 8- and 16-bit samples normalised, half samples as they are, grey
+// and grey + alpha expanded as the swizzle does (MapImage::texel). An sRGB-encoded 8-bit map is
+// decoded per texel before filtering, as GL_SRGB8(_ALPHA8) does (the sRGB specification's
+// intent); a 16-bit or float map read as sRGB holds the decoded value as a half float
+// (MapImage::linearHalfFromSrgb), as the upload makes it.
 // Mipmapping is not modelled: compare where the GPU magnifies or the texture is smooth.
 
 #include <array>
@@ -17,14 +20,14 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/Image.h"
+#include "core/MapImage.h"
 #include "core/Material.h"
 #include "core/MaterialBrdf.h"
 
 namespace facet {
 
 // One image per MapSlot (null: the slot uses its factor alone, like a variant without HAS_*_MAP).
-using MaterialMapImages = std::array<const Image*, kMapSlotCount>;
+using MaterialMapImages = std::array<const MapImage*, kMapSlotCount>;
 
 // The value of `channel` of a texel; Rgb on a scalar map reads red (GLSL pickChannel).
 double pickChannel(const glm::dvec4& texel, MapChannel channel);
@@ -39,9 +42,13 @@ double scalarMapValue(const MaterialMap& map, const glm::dvec4& texel);
 glm::dvec3 shadingNormal(const glm::dvec3& ng, const glm::dvec4& tangent, const glm::dvec4& normalTexel,
                          double strength, bool flipGreen);
 
+// One texel (x, row from the bottom) as the GPU's texture holds it for `colorSpace`: linear RGB
+// and alpha (see the top of this file).
+glm::dvec4 texelValue(const MapImage& image, int x, int rowFromBottom, ColorEncoding colorSpace);
+
 // Bilinear, repeating read of level 0 at `uv` (see the top of this file); sRGB-encoded images are
 // decoded to linear RGB (alpha stays as it is). An empty image reads (0, 0, 0, 1).
-glm::dvec4 sampleTexture(const Image& image, ColorEncoding colorSpace, const glm::dvec2& uv);
+glm::dvec4 sampleTexture(const MapImage& image, ColorEncoding colorSpace, const glm::dvec2& uv);
 
 // The material's inputs at texture coordinate `uv` (before any UV transform: each map applies its
 // own, core/Material.h UvTransform): base colour and its alpha, metallic, perceptual roughness

@@ -7,6 +7,7 @@
 
 #include "core/AssetLibrary.h"
 #include "core/GltfImport.h"
+#include "core/MapImageCache.h"
 #include "core/MeshImport.h"
 #include "core/MeshPrimitives.h"
 #include "core/Project.h"
@@ -102,27 +103,32 @@ std::optional<ProjectAssets> loadProjectAssets(const Project& project, std::stri
     const bool isFile = QFileInfo::exists(QString::fromStdString(project.view.mesh));
     assets.meshKey = fnv1a(project.view.mesh, isFile ? std::uint64_t(modificationTime(project.view.mesh)) : 1u);
 
-    std::map<std::string, std::shared_ptr<const Image>> decoded; // by path: each file once
+    // Each file once: a packed file used by several slots or materials is decoded once
+    // (MapImageCache) and reported once.
+    std::map<std::string, std::shared_ptr<const MapImage>> decoded;
+    std::string budgetNote;
+    const MapBudget budget = MapBudget::fromEnvironment(&budgetNote);
+    appendWarning(warning, budgetNote);
     assets.maps.resize(project.materials.size());
     for (std::size_t m = 0; m < project.materials.size(); ++m) {
         for (MapSlot slot : kAllMapSlots) {
             const MaterialMap& map = project.materials[m].map(slot);
             if (!map.hasTexture())
                 continue;
-            std::shared_ptr<const Image>& image = decoded[map.path];
+            std::shared_ptr<const MapImage>& image = decoded[map.path];
             if (!image) {
                 ImageLoadStats stats;
-                auto loaded = Image::load(map.path, &problem, &stats);
-                if (!loaded) {
+                image = MapImageCache::shared().load(map.path, &problem, &stats, budget);
+                if (!image) {
                     if (error)
                         *error = "loadProjectAssets: " + materialLabel(project, m) + toString(slot) + " map: " + problem;
                     return std::nullopt;
                 }
                 if (stats.total() > 0)
-                    appendWarning(warning, map.path + ": replaced " + std::to_string(stats.nanCount) + " NaN, "
+                    appendWarning(warning,
+                        map.path + ": replaced " + std::to_string(stats.nanCount) + " NaN, "
                             + std::to_string(stats.infCount) + " Inf, " + std::to_string(stats.negativeCount)
                             + " negative samples");
-                image = std::make_shared<const Image>(std::move(*loaded));
             }
             LoadedMapImage& slotImage = assets.maps[m][std::size_t(slot)];
             slotImage.image = image;

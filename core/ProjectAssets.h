@@ -12,6 +12,7 @@
 
 #include "core/Environment.h"
 #include "core/Image.h"
+#include "core/MapImage.h"
 #include "core/Material.h"
 #include "core/Mesh.h"
 
@@ -20,7 +21,7 @@ namespace facet {
 struct Project;
 
 struct LoadedMapImage {
-    std::shared_ptr<const Image> image; // null: the slot uses its constant factor only
+    std::shared_ptr<const MapImage> image; // null: the slot uses its constant factor only
     std::string path;
     std::int64_t timestamp = 0; // file modification time, ms since the epoch
 };
@@ -29,14 +30,15 @@ struct ProjectAssets {
     Environment environment; // rotation and intensity applied
     std::shared_ptr<const Mesh> mesh; // normalised to the unit bounding sphere
     std::uint64_t meshKey = 0;        // changes when the mesh source or its file changes
-    // The map images of every material of the project, indexed [material][MapSlot]. A file used
-    // by several slots or materials (a packed ORM texture, a shared normal map) is decoded once
-    // and shared.
+    // The map images of every material of the project, indexed [material][MapSlot], in the files'
+    // own bit depth (core/MapImage.h). A file used by several slots or materials (a packed ORM
+    // texture, a shared normal map) is decoded once and shared (core/MapImageCache.h).
     std::vector<std::array<LoadedMapImage, kMapSlotCount>> maps;
 };
 
 // Loads everything `project` names. Errors name the file and the problem (the environment,
-// the mesh, or a map: "loadProjectAssets: baseColor map: Image::load: <path>: <reason>").
+// the mesh, or a map: "loadProjectAssets: baseColor map: MapImage::load: <path>: <reason>"; a
+// map beyond the size budget, core/MapImage.h MapBudget, is refused before it is decoded).
 // Warnings (sanitised pixels, generated UVs...) are appended to `warning`, one per line.
 std::optional<ProjectAssets> loadProjectAssets(const Project& project, std::string* error,
                                                std::string* warning = nullptr);

@@ -2,6 +2,9 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
+#include <cctype>
+
 namespace facet {
 
 std::string GLInfo::summary() const
@@ -12,6 +15,18 @@ std::string GLInfo::summary() const
     if (!renderer.empty())
         text += ", " + renderer;
     return text;
+}
+
+bool isSoftwareRendererName(const std::string& renderer)
+{
+    std::string name = renderer;
+    std::transform(
+        name.begin(), name.end(), name.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    for (const char* software :
+        {"llvmpipe", "softpipe", "software rasterizer", "swrast", "swiftshader", "gdi generic"})
+        if (name.find(software) != std::string::npos)
+            return true;
+    return false;
 }
 
 static std::string glString(GLenum name)
@@ -47,6 +62,13 @@ GLInfo queryCurrentGLInfo()
     }
     info.hasCompute = info.atLeast(4, 3) || epoxy_has_gl_extension("GL_ARB_compute_shader");
     info.hasDebugOutput = info.atLeast(4, 3) || epoxy_has_gl_extension("GL_KHR_debug");
+    if (info.atLeast(4, 6) || epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic")
+        || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic")) {
+        GLfloat maxAnisotropy = 1.0f;
+        glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &maxAnisotropy);
+        info.maxAnisotropy = std::max(1.0f, maxAnisotropy);
+    }
+    info.softwareRasterizer = isSoftwareRendererName(info.renderer);
     return info;
 }
 

@@ -15,6 +15,12 @@ struct GLInfo {
     bool coreProfile = false; // GL_CONTEXT_CORE_PROFILE_BIT set in GL_CONTEXT_PROFILE_MASK
     bool hasCompute = false; // GL 4.3 or ARB_compute_shader
     bool hasDebugOutput = false; // GL 4.3 or KHR_debug
+    // GL_MAX_TEXTURE_MAX_ANISOTROPY (GL 4.6, ARB/EXT_texture_filter_anisotropic); 1: none.
+    float maxAnisotropy = 1.0f;
+    // Rendering on the CPU (Mesa's llvmpipe, softpipe, swrast; SwiftShader; Microsoft's GDI
+    // Generic), from GL_RENDERER: every texel fetched costs CPU time, so Facet filters less there
+    // (render/TextureFiltering.h).
+    bool softwareRasterizer = false;
 
     bool isValid() const { return major > 0; }
     bool atLeast(int wantedMajor, int wantedMinor) const
@@ -25,6 +31,9 @@ struct GLInfo {
     // (...)".
     std::string summary() const;
 };
+
+// Whether a GL_RENDERER string names a software rasteriser (see GLInfo::softwareRasterizer).
+bool isSoftwareRendererName(const std::string& renderer);
 
 // Queries the context current on the calling thread, whichever created it (EGL, GLX through Qt).
 // Returns an invalid GLInfo (major == 0) when no context is current.

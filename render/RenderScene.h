@@ -18,6 +18,7 @@
 #include "core/Camera.h"
 #include "core/Image.h"
 #include "core/Light.h"
+#include "core/MapImage.h"
 #include "core/Material.h"
 #include "core/Mesh.h"
 #include "core/Project.h"
@@ -27,10 +28,11 @@
 
 namespace facet {
 
-// One material map's texture as core loaded it. The numbers are as the file stores them (not
-// converted to linear): render/ decodes per MaterialMap::colorSpace.
+// One material map's texture as core loaded it, in the file's own bit depth and channels
+// (core/MapImage.h). The numbers are as the file stores them (not converted to linear): render/
+// decodes per MaterialMap::colorSpace.
 struct RenderMapImage {
-    std::shared_ptr<const Image> image; // null: the slot uses its constant factor only
+    std::shared_ptr<const MapImage> image; // null: the slot uses its constant factor only
     std::string path;                   // the cache key with timestamp and colour space
     std::int64_t timestamp = 0;         // file modification time (any unit, e.g. ms since epoch)
 };

@@ -127,13 +127,16 @@ SurfaceVariantKey Renderer::variantKeyFor(const RenderScene& scene, int material
 {
     const RenderMaterial& material = scene.materials[std::size_t(materialIndex)];
     bool hasImage[kMapSlotCount] = {};
+    std::array<const void*, kMapSlotCount> textures {};
     for (int i = 0; i < kMapSlotCount; ++i) {
         const auto& image = material.maps[std::size_t(i)].image;
         hasImage[i] = image && !image->isEmpty();
+        textures[std::size_t(i)] = hasImage[i] ? image.get() : nullptr;
     }
     SurfaceVariantKey key;
     key.features
         = surfaceFeaturesFor(material.material, hasImage, enabledLightCount(scene) > 0, scene.environment.useSH);
+    key.features |= sharedTexelFeatures(material.material, key.features, textures);
     key.debugView = debugViewFromString(scene.view.debugView).value_or(DebugView::None);
     return key;
 }
@@ -384,8 +387,8 @@ void Renderer::setMaterialUniforms(const ShaderProgram& program, const SurfaceVa
         setMat3(program, IndexedName("uUvTransform", i).c_str(), uv);
         program.setInt(IndexedName("uChannel", i).c_str(), int(map.channel));
         program.setInt(IndexedName("uInvert", i).c_str(), map.invert ? 1 : 0);
-        if (!hasFeature(key.features, mapFeature(MapSlot(i))))
-            continue;
+        if (!samplesOwnTexture(key.features, MapSlot(i)))
+            continue; // a constant, or the texel of an earlier slot's fetch
         const RenderMapImage& image = renderMaterial.maps[std::size_t(i)];
         glActiveTexture(GLenum(GL_TEXTURE0 + kMapUnit0 + i));
         bool uploaded = false;

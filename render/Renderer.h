@@ -49,6 +49,10 @@ public:
     // The variant key render() uses for material `materialIndex` of `scene`.
     static SurfaceVariantKey variantKeyFor(const RenderScene& scene, int materialIndex = 0);
 
+    // The material textures (render/TextureCache.h): the viewport uploads maps through it in
+    // slices between frames and sets the frame's anisotropy; render() uploads what is missing.
+    TextureCache& textureCache() { return *m_textures; }
+
     const RenderStats& lastFrameStats() const { return m_frame; }
     const RenderStats& totalStats() const { return m_total; }
     // Per-step milliseconds via glFinish() (stalls; for benchmarks and tests).

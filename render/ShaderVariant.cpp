@@ -13,6 +13,7 @@ constexpr std::array<const char*, kSurfaceFeatureBits> kFeatureDefines = {
     "HAS_OCCLUSION_MAP",  "HAS_PUNCTUAL_LIGHTS",   "IRRADIANCE_SH",             "MULTI_SCATTER",
     "COMPOSITION_LEARNOPENGL", "COUPLING_ENERGY_PRESERVING", "DISTRIBUTION_BECKMANN", "VISIBILITY_UNCORRELATED",
     "VISIBILITY_SCHLICK", "FRESNEL_DIELECTRIC", "HAS_EMISSIVE_MAP", "ALPHA_MASK", "ALPHA_BLEND",
+    "ROUGHNESS_TEXEL_FROM_METALLIC", "OCCLUSION_TEXEL_FROM_METALLIC", "OCCLUSION_TEXEL_FROM_ROUGHNESS",
 };
 
 // One row per DebugView, in enum order: the name files and the command line use, the label the
@@ -138,6 +139,38 @@ SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMap
     if (irradianceFromSH)
         f = f | SurfaceFeature::IrradianceSH;
     return f;
+}
+
+SurfaceFeatures sharedTexelFeatures(const Material& material, SurfaceFeatures features,
+                                    const std::array<const void*, kMapSlotCount>& textures)
+{
+    const auto same = [&](MapSlot earlier, MapSlot later) {
+        const auto a = std::size_t(earlier);
+        const auto b = std::size_t(later);
+        return hasFeature(features, mapFeature(earlier)) && hasFeature(features, mapFeature(later)) && textures[a]
+            && textures[a] == textures[b] && material.maps[a].colorSpace == material.maps[b].colorSpace
+            && material.maps[a].uv == material.maps[b].uv;
+    };
+    SurfaceFeatures f = 0;
+    if (same(MapSlot::Metallic, MapSlot::Roughness))
+        f = f | SurfaceFeature::RoughnessTexelFromMetallic;
+    if (same(MapSlot::Metallic, MapSlot::Occlusion))
+        f = f | SurfaceFeature::OcclusionTexelFromMetallic;
+    else if (same(MapSlot::Roughness, MapSlot::Occlusion))
+        f = f | SurfaceFeature::OcclusionTexelFromRoughness;
+    return f;
+}
+
+bool samplesOwnTexture(SurfaceFeatures features, MapSlot slot)
+{
+    if (!hasFeature(features, mapFeature(slot)))
+        return false;
+    if (slot == MapSlot::Roughness)
+        return !hasFeature(features, SurfaceFeature::RoughnessTexelFromMetallic);
+    if (slot == MapSlot::Occlusion)
+        return !hasFeature(features, SurfaceFeature::OcclusionTexelFromMetallic)
+            && !hasFeature(features, SurfaceFeature::OcclusionTexelFromRoughness);
+    return true;
 }
 
 std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key)

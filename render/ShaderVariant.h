@@ -9,6 +9,7 @@
 // tangent frame and surface.vert reads no tangent attribute; without HasPunctualLights there is
 // no light loop.
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -42,8 +43,14 @@ enum class SurfaceFeature : uint32_t {
     HasEmissiveMap = 1u << 14,          // HAS_EMISSIVE_MAP
     AlphaMask = 1u << 15,               // ALPHA_MASK: discard below uAlphaCutoff (glTF alphaMode MASK)
     AlphaBlend = 1u << 16,              // ALPHA_BLEND: premultiplied colour and alpha out (glTF BLEND)
+    // One fetch for scalar maps that read the same texture (a packed occlusion-roughness-metallic
+    // file; same file, colour space and UV transform): the later slot reuses the earlier one's
+    // texel and declares no sampler (sharedTexelFeatures).
+    RoughnessTexelFromMetallic = 1u << 17, // ROUGHNESS_TEXEL_FROM_METALLIC
+    OcclusionTexelFromMetallic = 1u << 18, // OCCLUSION_TEXEL_FROM_METALLIC
+    OcclusionTexelFromRoughness = 1u << 19, // OCCLUSION_TEXEL_FROM_ROUGHNESS
 };
-inline constexpr int kSurfaceFeatureBits = 17;
+inline constexpr int kSurfaceFeatureBits = 20;
 
 using SurfaceFeatures = uint32_t;
 inline constexpr SurfaceFeatures operator|(SurfaceFeature a, SurfaceFeature b) { return uint32_t(a) | uint32_t(b); }
@@ -107,6 +114,15 @@ SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMap
 SurfaceFeatures surfaceFeaturesFor(const ShadingModel& model);
 // The Has*Map bit of a slot.
 SurfaceFeature mapFeature(MapSlot slot);
+// The *TexelFrom* bits for `features` (its Has*Map bits set): a scalar slot whose texture is the
+// same as an earlier scalar slot's (`textures`: the slots' images, null for none; equal pointers
+// are one decoded file, core/MapImageCache.h) in the same colour space and UV transform reads that
+// slot's texel. On llvmpipe each texture fetch of a 2K map costs 7-10% of the untextured frame
+// (docs/benchmarks.md, "Texture maps").
+SurfaceFeatures sharedTexelFeatures(const Material& material, SurfaceFeatures features,
+                                    const std::array<const void*, kMapSlotCount>& textures);
+// Whether the variant samples the slot's own texture (a Has*Map bit and no *TexelFrom* bit for it).
+bool samplesOwnTexture(SurfaceFeatures features, MapSlot slot);
 
 // One "#define NAME" per set bit, in bit order, then "DEBUG_VIEW <n>" and "MAX_LIGHTS <n>".
 std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key);

@@ -1,7 +1,8 @@
 // The material's texture maps on the GPU against their CPU twin (core/MaterialInputs.h), one row
 // per map input and feature (Magnum's per-feature golden rows): each map alone, all five
 // together, a packed texture feeding three slots, every channel, inversion, colour space, normal
-// strength, the DirectX green flip and the UV transform. Each row is a project with texture files
+// strength, the DirectX green flip and the UV transform, and each kind of file in its own GPU
+// format (8-bit grey and grey + alpha, 16-bit PNG, float EXR). Each row is a project with texture files
 // on disk, rendered the way `facet render --reference-view` renders it (core/ProjectAssets loads
 // the maps, render/SceneFromProject builds the scene, render/OffscreenRender draws and reads back
 // the RGBA16F target) by a fresh Renderer, so every map is uploaded in the row's first frame, as
@@ -64,6 +65,26 @@ bool writePng(const QString& path, int channels, const std::function<glm::dvec4(
     // The values are unassociated (as PNG stores them): without this OIIO divides colour by alpha.
     spec.attribute("oiio:UnassociatedAlpha", 1);
     return output->open(path.toStdString(), spec) && output->write_image(OIIO::TypeDesc::UINT8, pixels.data())
+        && output->close();
+}
+
+// The same with 16-bit samples (PNG) or float samples (EXR, written as float, read as half).
+bool writeDeep(const QString& path, int channels, OIIO::TypeDesc type, const std::function<glm::dvec4(int, int)>& texel)
+{
+    std::vector<float> pixels(std::size_t(kTextureSize) * kTextureSize * std::size_t(channels));
+    for (int y = 0; y < kTextureSize; ++y)
+        for (int x = 0; x < kTextureSize; ++x) {
+            const glm::dvec4 value = texel(x, y);
+            for (int c = 0; c < channels; ++c)
+                pixels[(std::size_t(y) * kTextureSize + std::size_t(x)) * std::size_t(channels) + std::size_t(c)]
+                    = float(value[c]);
+        }
+    auto output = OIIO::ImageOutput::create(path.toStdString());
+    if (!output)
+        return false;
+    OIIO::ImageSpec spec(kTextureSize, kTextureSize, channels, type);
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    return output->open(path.toStdString(), spec) && output->write_image(OIIO::TypeDesc::FLOAT, pixels.data())
         && output->close();
 }
 
@@ -172,6 +193,15 @@ const std::vector<Row>& rows()
              useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
              useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::B);
          }},
+        // One file, but the slots cannot share a fetch (render/ShaderVariant sharedTexelFeatures):
+        // another UV transform, another colour space.
+        {"packed-apart-uv-and-colour-space",
+         [](Material& m, const QString& f) {
+             useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::B);
+             useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+             m.map(MapSlot::Roughness).uv.offset = {0.3, 0.1};
+             useMap(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R, ColorEncoding::SRGB);
+         }},
         {"uv-scale",
          [](Material& m, const QString& f) {
              useBaseColor(m, f);
@@ -202,6 +232,34 @@ const std::vector<Row>& rows()
          [](Material& m, const QString& f) {
              useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::Rgb, ColorEncoding::SRGB);
              m.map(MapSlot::BaseColor).factor.a = 0.8;
+         }},
+        // Each kind of file in its own format (render/TextureCache: GL_R8 and GL_RG8 swizzled,
+        // GL_SRGB8 expanded from grey, GL_RGB16, 16-bit sRGB decoded to half, GL_RGBA16F).
+        {"grey-8bit-base-color-srgb",
+         [](Material& m, const QString& f) {
+             useMap(m, MapSlot::BaseColor, file(f, "grey.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+         }},
+        {"grey-alpha-8bit-base-color",
+         [](Material& m, const QString& f) {
+             useMap(m, MapSlot::BaseColor, file(f, "greyalpha.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+         }},
+        {"grey-alpha-8bit-roughness-a",
+         [](Material& m, const QString& f) {
+             useScalar(m, MapSlot::Roughness, file(f, "greyalpha.png"), MapChannel::A);
+             useScalar(m, MapSlot::Metallic, file(f, "greyalpha.png"), MapChannel::G);
+         }},
+        {"normal-16bit-png", [](Material& m, const QString& f) {
+             useMap(m, MapSlot::Normal, file(f, "normal16.png"), MapChannel::Rgb, ColorEncoding::Linear);
+         }},
+        {"base-color-16bit-png-srgb",
+         [](Material& m, const QString& f) {
+             useMap(m, MapSlot::BaseColor, file(f, "basecolor16.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+         }},
+        {"float-exr-packed",
+         [](Material& m, const QString& f) {
+             useScalar(m, MapSlot::Roughness, file(f, "packed.exr"), MapChannel::G);
+             useScalar(m, MapSlot::Occlusion, file(f, "packed.exr"), MapChannel::A);
+             useMap(m, MapSlot::BaseColor, file(f, "packed.exr"), MapChannel::Rgb, ColorEncoding::Linear);
          }},
         {"all-five",
          [](Material& m, const QString& f) {
@@ -302,6 +360,11 @@ std::optional<Image> MaterialMapsGLTest::render(const Project& project, const st
 
 void MaterialMapsGLTest::initTestCase()
 {
+    // Trilinear everywhere: this table checks what reaches the shader (maps, channels, spaces,
+    // transforms), against a twin that reads level 0; software rasterisers otherwise read the
+    // nearer mip level (render/TextureFiltering.h), a whole level away from the twin where the
+    // sphere turns away.
+    qputenv("FACET_TEXTURE_MIPS", "trilinear");
     QVERIFY(m_folder.isValid());
     const QString folder = m_folder.path();
     // basecolor: three independent smooth signals; packed: four distinct ones (one per channel);
@@ -319,6 +382,21 @@ void MaterialMapsGLTest::initTestCase()
     QVERIFY(writePng(file(folder, "normal.png"), 3, [](int x, int y) {
         const glm::dvec3 n = glm::normalize(glm::dvec3(0.35 * wave(x), 0.35 * wave(y, 1.2), 1.0));
         return glm::dvec4(n * 0.5 + 0.5, 1.0);
+    }));
+    // Grey + alpha (two channels), 16-bit, float.
+    QVERIFY(writePng(file(folder, "greyalpha.png"), 2, [](int x, int y) {
+        return glm::dvec4(0.5 + 0.45 * wave(x - y, 0.9), 0.5 + 0.45 * wave(y, 2.5), 0.0, 0.0);
+    }));
+    QVERIFY(writeDeep(file(folder, "normal16.png"), 3, OIIO::TypeDesc::UINT16, [](int x, int y) {
+        const glm::dvec3 n = glm::normalize(glm::dvec3(0.35 * wave(x, 0.4), 0.35 * wave(y, 1.6), 1.0));
+        return glm::dvec4(n * 0.5 + 0.5, 1.0);
+    }));
+    QVERIFY(writeDeep(file(folder, "basecolor16.png"), 3, OIIO::TypeDesc::UINT16, [](int x, int y) {
+        return glm::dvec4(0.5 + 0.4 * wave(y), 0.5 + 0.4 * wave(x, 0.5), 0.5 + 0.4 * wave(x - y), 1.0);
+    }));
+    QVERIFY(writeDeep(file(folder, "packed.exr"), 4, OIIO::TypeDesc::FLOAT, [](int x, int y) {
+        return glm::dvec4(0.6 + 0.35 * wave(x, 0.2), 0.5 + 0.45 * wave(y, 1.1), 0.4 + 0.3 * wave(x + y, 0.6),
+                          0.5 + 0.45 * wave(x, 2.2));
     }));
 
     std::string error;
@@ -412,7 +490,7 @@ void MaterialMapsGLTest::matchesCpuTwin()
             const glm::dvec3 t = rgb(*m_tangent, p.x, p.y) * 2.0 - 1.0;
             const MaterialInfo info = materialInputs(material, images, uv);
             glm::dvec3 n = ng;
-            if (const Image* normalMap = images[std::size_t(MapSlot::Normal)]) {
+            if (const MapImage* normalMap = images[std::size_t(MapSlot::Normal)]) {
                 const MaterialMap& map = material.map(MapSlot::Normal);
                 const glm::dvec4 texel = sampleTexture(*normalMap, map.colorSpace, map.uv.apply(uv));
                 // The sphere's tangents all have handedness +1 (core/MeshPrimitives).

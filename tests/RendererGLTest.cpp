@@ -179,6 +179,8 @@ private Q_SLOTS:
     void initTestCase();
     void cleanupTestCase();
     void variantDefines();
+    void sharedTexels_data();
+    void sharedTexels();
     void toneMappingMatchesCpu();
     void whiteFurnaceMetal();
     void whiteFurnaceDebugView();
@@ -260,6 +262,74 @@ void RendererGLTest::variantDefines()
     QCOMPARE(debugViewFromString("white-furnace").value(), DebugView::WhiteFurnace);
     QCOMPARE(std::string(toString(DebugView::BaseColor)), std::string("base-color"));
     QVERIFY(!debugViewFromString("bogus"));
+}
+
+void RendererGLTest::sharedTexels_data()
+{
+    // Which scalar slots read one texture (a letter per slot: metallic, roughness, occlusion;
+    // equal letters are one decoded file, '-' no map), a change that keeps two apart, and the
+    // fetches the variant shares.
+    QTest::addColumn<QString>("files");
+    QTest::addColumn<QString>("change");
+    QTest::addColumn<SurfaceFeatures>("expected");
+    using F = SurfaceFeature;
+    const SurfaceFeatures none = 0;
+    QTest::newRow("three files") << "abc" << "" << none;
+    QTest::newRow("metallic-roughness packed") << "aab" << "" << SurfaceFeatures(F::RoughnessTexelFromMetallic);
+    QTest::newRow("ORM packed") << "aaa" << "" << (F::RoughnessTexelFromMetallic | F::OcclusionTexelFromMetallic);
+    QTest::newRow("metallic-occlusion packed") << "aba" << "" << SurfaceFeatures(F::OcclusionTexelFromMetallic);
+    QTest::newRow("roughness-occlusion packed") << "abb" << "" << SurfaceFeatures(F::OcclusionTexelFromRoughness);
+    QTest::newRow("roughness-occlusion, no metallic") << "-bb" << "" << SurfaceFeatures(F::OcclusionTexelFromRoughness);
+    QTest::newRow("ORM, roughness UV offset") << "aaa" << "roughness-uv" << SurfaceFeatures(F::OcclusionTexelFromMetallic);
+    QTest::newRow("ORM, occlusion sRGB") << "aaa" << "occlusion-srgb" << SurfaceFeatures(F::RoughnessTexelFromMetallic);
+    QTest::newRow("ORM, metallic path without image") << "aaa" << "metallic-no-image"
+                                                     << SurfaceFeatures(F::OcclusionTexelFromRoughness);
+}
+
+void RendererGLTest::sharedTexels()
+{
+    QFETCH(QString, files);
+    QFETCH(QString, change);
+    QFETCH(SurfaceFeatures, expected);
+    const MapSlot slots[3] = {MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion};
+    std::map<QChar, std::shared_ptr<const MapImage>> images;
+    Material material;
+    bool hasImage[kMapSlotCount] = {};
+    std::array<const void*, kMapSlotCount> textures {};
+    for (int i = 0; i < 3; ++i) {
+        if (files[i] == QLatin1Char('-'))
+            continue;
+        auto& image = images[files[i]];
+        if (!image)
+            image = std::make_shared<const MapImage>(4, 4, MapLayout::Rgb, MapSampleType::UInt8);
+        const auto slot = std::size_t(slots[i]);
+        material.maps[slot].path = "/t/" + QString(files[i]).toStdString() + ".png";
+        hasImage[slot] = true;
+        textures[slot] = image.get();
+    }
+    if (change == QLatin1String("roughness-uv"))
+        material.map(MapSlot::Roughness).uv.offset = {0.5, 0.0};
+    if (change == QLatin1String("occlusion-srgb"))
+        material.map(MapSlot::Occlusion).colorSpace = ColorEncoding::SRGB;
+    if (change == QLatin1String("metallic-no-image")) {
+        hasImage[std::size_t(MapSlot::Metallic)] = false;
+        textures[std::size_t(MapSlot::Metallic)] = nullptr;
+    }
+    const SurfaceFeatures features = surfaceFeaturesFor(material, hasImage, false, false);
+    const SurfaceFeatures shared = sharedTexelFeatures(material, features, textures);
+    QCOMPARE(shared, expected);
+    // A slot that reuses a texel binds and declares no sampler of its own; the program compiles.
+    const SurfaceFeatures all = features | shared;
+    for (int i = 0; i < 3; ++i)
+        QCOMPARE(samplesOwnTexture(all, slots[i]),
+            files[i] != QLatin1Char('-') && hasImage[std::size_t(slots[i])]
+                && !(slots[i] == MapSlot::Roughness && hasFeature(shared, SurfaceFeature::RoughnessTexelFromMetallic))
+                && !(slots[i] == MapSlot::Occlusion
+                    && (hasFeature(shared, SurfaceFeature::OcclusionTexelFromMetallic)
+                        || hasFeature(shared, SurfaceFeature::OcclusionTexelFromRoughness))));
+    SurfaceProgramCache programs;
+    std::string error;
+    QVERIFY2(programs.get(SurfaceVariantKey {all, DebugView::None}, &error), error.c_str());
 }
 
 void RendererGLTest::toneMappingMatchesCpu()
@@ -598,7 +668,8 @@ void RendererGLTest::skippedWorkIsCounted()
     Renderer renderer;
     TinyIbl ibl {glm::vec3(1.0f)};
     RenderScene scene = referenceScene(ibl);
-    auto image = std::make_shared<Image>(4, 4, glm::vec4(0.5f, 0.5f, 0.5f, 1.0f));
+    auto image = std::make_shared<const MapImage>(MapImage::fromImage(
+        Image(4, 4, glm::vec4(0.5f, 0.5f, 0.5f, 1.0f)), MapLayout::Rgb, MapSampleType::UInt8));
     scene.materials[0].material.map(MapSlot::BaseColor).path = "/textures/base.png";
     scene.materials[0].material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::SRGB;
     scene.materials[0].maps[std::size_t(MapSlot::BaseColor)] = {image, "/textures/base.png", 1};
@@ -658,8 +729,9 @@ void RendererGLTest::baseColorDebugView()
 
     // An sRGB-encoded texture (encoded 128/255 everywhere) is decoded to linear and multiplied by
     // the factor; a constant texture makes filtering irrelevant.
-    auto texture
-        = std::make_shared<Image>(8, 8, glm::vec4(128.0f / 255.0f, 128.0f / 255.0f, 128.0f / 255.0f, 1.0f));
+    auto texture = std::make_shared<const MapImage>(
+        MapImage::fromImage(Image(8, 8, glm::vec4(128.0f / 255.0f, 128.0f / 255.0f, 128.0f / 255.0f, 1.0f)),
+            MapLayout::Rgb, MapSampleType::UInt8));
     scene.materials[0].material.map(MapSlot::BaseColor).path = "/t/base.png";
     scene.materials[0].material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::SRGB;
     scene.materials[0].maps[std::size_t(MapSlot::BaseColor)] = {texture, "/t/base.png", 7};
@@ -679,7 +751,8 @@ void RendererGLTest::everyFeatureAndDebugViewCompiles()
     // irradiance, each model switch, and each debug view: compiles, renders finite values.
     TinyIbl ibl {glm::vec3(1.0f)};
     RenderScene scene = referenceScene(ibl);
-    auto texture = std::make_shared<Image>(4, 4, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f));
+    auto texture = std::make_shared<const MapImage>(MapImage::fromImage(
+        Image(4, 4, glm::vec4(0.5f, 0.5f, 1.0f, 1.0f)), MapLayout::Rgba, MapSampleType::UInt8));
     for (MapSlot slot : kAllMapSlots) {
         scene.materials[0].material.map(slot).path = std::string("/t/") + toString(slot) + ".png";
         scene.materials[0].material.map(slot).channel = isScalarSlot(slot) ? MapChannel::G : MapChannel::Rgb;

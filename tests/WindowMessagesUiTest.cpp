@@ -45,6 +45,16 @@ private Q_SLOTS:
                                       << "notes.exr is not a readable OpenEXR file";
         QTest::newRow("map is a folder") << "baseColor map: Image::load: /t/wood.png: is a directory, not an image"
                                          << "wood.png is a folder, not a file";
+        QTest::newRow("map over the size limit")
+            << "baseColor map: MapImage::load: /t/huge.png: 16384x16384 is larger than the map size limit of 8192 "
+               "pixels per side (FACET_MAX_MAP_SIZE)"
+            << "huge.png is 16384×16384 pixels, more than Facet's limit of 8192 per side for a texture map "
+               "(FACET_MAX_MAP_SIZE changes it)";
+        QTest::newRow("map over the pixel limit")
+            << "roughness map: MapImage::load: /t/wide.exr: 8000x8000 is larger than the map size limit of 32 Mpixel "
+               "(FACET_MAX_MAP_MPIXELS)"
+            << "wide.exr is 8000×8000 pixels, more than Facet's limit of 32 million pixels for a texture map "
+               "(FACET_MAX_MAP_MPIXELS changes it)";
         QTest::newRow("sanitised pixels") << "/e/forest.exr: replaced 3 NaN, 0 Inf, 5 negative samples"
                                           << "forest.exr has invalid pixels (3 not a number, 0 infinite, 5 negative); "
                                              "Facet replaced them";

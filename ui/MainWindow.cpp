@@ -6,6 +6,7 @@
 #include "ui/Document.h"
 #include "ui/EnvironmentDock.h"
 #include "ui/LightsDock.h"
+#include "ui/MapLoadStatus.h"
 #include "ui/MaterialDock.h"
 #include "ui/MaterialsDock.h"
 #include "ui/PartPicker.h"
@@ -64,6 +65,7 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
     m_glStatusLabel->setObjectName(QStringLiteral("glStatusLabel"));
     m_frameStatsLabel->setObjectName(QStringLiteral("frameStatsLabel"));
+    statusBar()->addPermanentWidget(new MapLoadStatus(m_scene, this)); // maps decoding off the GUI thread
     statusBar()->addPermanentWidget(m_frameStatsLabel);
     statusBar()->addPermanentWidget(m_glStatusLabel);
     createMenus();

@@ -1,6 +1,7 @@
 #include "ui/SceneController.h"
 
 #include "core/GltfImport.h"
+#include "core/MapImageCache.h"
 #include "core/Project.h"
 #include "render/SceneFromProject.h"
 #include "ui/Document.h"
@@ -9,9 +10,11 @@
 #include <QDateTime>
 #include <QDebug>
 #include <QFileInfo>
+#include <QThread>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <functional>
 #include <map>
 
@@ -30,6 +33,9 @@ SceneController::SceneController(Document* document, QObject* parent)
     : QObject(parent)
     , m_document(document)
 {
+    // Decoding is CPU work beside llvmpipe's own threads and the GUI thread: leave a core to
+    // them (one worker on a 2-core machine), at most 4.
+    m_mapPool.setMaxThreadCount(std::clamp(QThread::idealThreadCount() - 1, 1, 4));
     connect(m_document, &Document::changed, this, &SceneController::onDocumentChanged);
     loadEnvironment();
     loadMesh();
@@ -135,50 +141,141 @@ void SceneController::loadMesh()
         ^ (std::uint64_t(m_loadCounts.meshes) << 48);
 }
 
+SceneController::~SceneController()
+{
+    m_mapPool.clear();
+    m_mapPool.waitForDone();
+}
+
 void SceneController::loadMaps(bool all)
 {
-    // Every material's maps; a file used by several slots or materials is decoded once (m_images,
-    // by path) and reloaded only when its modification time changes.
+    // Every material's maps; a file used by several slots or materials is loaded once (by path),
+    // and again only when its modification time changes (or a new project is opened: `all`).
     const Project& project = m_document->project();
     std::map<std::string, CachedImage> images;
-    m_assets.maps.assign(project.materials.size(), {});
-    for (std::size_t m = 0; m < project.materials.size(); ++m) {
+    for (const Material& material : project.materials) {
         for (MapSlot slot : kAllMapSlots) {
-            const MaterialMap& map = project.materials[m].map(slot);
-            if (!map.hasTexture())
+            const MaterialMap& map = material.map(slot);
+            if (!map.hasTexture() || images.count(map.path))
                 continue;
             const std::int64_t timestamp = modificationTime(fileOfImagePath(map.path));
-            auto cached = images.find(map.path);
-            if (cached == images.end()) {
-                const auto previous = m_images.find(map.path);
-                if (!all && previous != m_images.end() && previous->second.timestamp == timestamp
-                    && (previous->second.image || timestamp == 0)) {
-                    cached = images.emplace(map.path, previous->second).first; // already loaded (or reported missing)
-                } else {
-                    CachedImage entry;
-                    entry.timestamp = timestamp;
-                    ++m_loadCounts.maps;
-                    std::string error;
-                    ImageLoadStats stats;
-                    std::optional<Image> image = Image::load(map.path, &error, &stats);
-                    if (!image) {
-                        report(std::string(toString(slot)) + " map: " + error);
-                    } else {
-                        if (stats.total() > 0)
-                            report(map.path + ": replaced " + std::to_string(stats.total())
-                                + " NaN, Inf or negative samples");
-                        entry.image = std::make_shared<const Image>(std::move(*image));
-                    }
-                    cached = images.emplace(map.path, std::move(entry)).first;
-                }
+            const auto previous = m_images.find(map.path);
+            const bool current = previous != m_images.end() && previous->second.timestamp == timestamp
+                && (previous->second.image || !previous->second.problem.empty());
+            const auto pending = m_pendingMaps.find(map.path);
+            if (!all && current) {
+                images.emplace(map.path, previous->second); // already loaded (or reported)
+                continue;
             }
-            LoadedMapImage& loaded = m_assets.maps[m][std::size_t(slot)];
-            loaded.image = cached->second.image;
-            loaded.path = map.path;
-            loaded.timestamp = timestamp;
+            // Until the new decode arrives the slot shows the previous version of the file, if any.
+            images.emplace(map.path,
+                previous != m_images.end() && previous->second.image ? previous->second : CachedImage {});
+            if (pending == m_pendingMaps.end() || pending->second.timestamp != timestamp || all)
+                startMapLoad(map.path, timestamp);
         }
     }
+    // A load of a file the project no longer names is stale: its result will be dropped.
+    for (auto it = m_pendingMaps.begin(); it != m_pendingMaps.end();) {
+        if (!images.count(it->first))
+            it = m_pendingMaps.erase(it);
+        else
+            ++it;
+    }
     m_images = std::move(images);
+    publishMaps();
+    if (m_pendingMaps.empty() && m_batchTotal > 0) {
+        // Every load of the batch went stale: the batch is over.
+        m_batchLoaded = m_batchTotal;
+        Q_EMIT mapLoadProgress(m_batchLoaded, m_batchTotal, double(m_batchClock.nsecsElapsed()) / 1e6);
+        m_batchTotal = m_batchLoaded = 0;
+    }
+}
+
+void SceneController::startMapLoad(const std::string& path, std::int64_t timestamp)
+{
+    if (m_pendingMaps.empty() && m_batchTotal == 0) {
+        m_batchLoaded = 0;
+        m_batchFailed = false;
+        m_batchClock.start();
+    }
+    const bool replacesPending = m_pendingMaps.count(path) > 0;
+    const std::uint64_t ticket = m_nextTicket++;
+    m_pendingMaps[path] = PendingMap {timestamp, ticket};
+    if (!replacesPending)
+        ++m_batchTotal;
+    ++m_loadCounts.maps;
+    Q_EMIT mapLoadProgress(m_batchLoaded, m_batchTotal, double(m_batchClock.nsecsElapsed()) / 1e6);
+    m_mapPool.start([this, path, ticket] {
+        std::string error;
+        ImageLoadStats stats;
+        std::shared_ptr<const MapImage> image = MapImageCache::shared().load(path, &error, &stats);
+        QMetaObject::invokeMethod(
+            this,
+            [this, path, ticket, image, error, stats] { onMapLoaded(path, ticket, image, error, stats); },
+            Qt::QueuedConnection);
+    });
+}
+
+void SceneController::onMapLoaded(const std::string& path, std::uint64_t ticket,
+    std::shared_ptr<const MapImage> image, const std::string& error, ImageLoadStats stats)
+{
+    const auto pending = m_pendingMaps.find(path);
+    if (pending == m_pendingMaps.end() || pending->second.ticket != ticket)
+        return; // the project no longer names the file, or a newer load of it is under way
+    CachedImage& entry = m_images[path];
+    entry.timestamp = pending->second.timestamp;
+    m_pendingMaps.erase(pending);
+    entry.image = std::move(image);
+    entry.problem = entry.image ? std::string() : error;
+    if (!entry.image) {
+        // Name the slot that wanted it (the first one, when a packed file feeds several).
+        std::string slotName = "Texture";
+        for (const Material& material : m_document->project().materials)
+            for (MapSlot slot : kAllMapSlots)
+                if (slotName == "Texture" && material.map(slot).path == path)
+                    slotName = toString(slot);
+        m_batchFailed = true;
+        report(slotName + " map: " + error);
+    } else if (stats.total() > 0) {
+        report(path + ": replaced " + std::to_string(stats.total()) + " NaN, Inf or negative samples");
+    }
+    ++m_batchLoaded;
+    publishMaps();
+    const double ms = double(m_batchClock.nsecsElapsed()) / 1e6;
+    Q_EMIT mapLoadProgress(std::min(m_batchLoaded, m_batchTotal), m_batchTotal, ms);
+    if (m_pendingMaps.empty())
+        m_batchTotal = m_batchLoaded = 0;
+    if (entry.image)
+        Q_EMIT mapsArrived();
+    else
+        Q_EMIT sceneChanged(m_document->interactiveEditOpen());
+}
+
+void SceneController::publishMaps()
+{
+    const Project& project = m_document->project();
+    m_assets.maps.assign(project.materials.size(), {});
+    for (std::size_t m = 0; m < project.materials.size(); ++m)
+        for (MapSlot slot : kAllMapSlots) {
+            const MaterialMap& map = project.materials[m].map(slot);
+            const auto found = map.hasTexture() ? m_images.find(map.path) : m_images.end();
+            if (found == m_images.end())
+                continue;
+            LoadedMapImage& loaded = m_assets.maps[m][std::size_t(slot)];
+            loaded.image = found->second.image;
+            loaded.path = map.path;
+            loaded.timestamp = found->second.timestamp;
+        }
+}
+
+std::string SceneController::mapProblem(std::size_t material, MapSlot slot) const
+{
+    const Project& project = m_document->project();
+    if (material >= project.materials.size())
+        return {};
+    const MaterialMap& map = project.materials[material].map(slot);
+    const auto found = map.hasTexture() ? m_images.find(map.path) : m_images.end();
+    return found == m_images.end() || m_pendingMaps.count(map.path) ? std::string() : found->second.problem;
 }
 
 IblSettings SceneController::iblSettings() const

@@ -1,9 +1,16 @@
 #pragma once
 // The CPU side of the viewport (not a widget, no GL): observes the Document, loads what an edit
 // made stale and nothing else (core/ProjectAssets.h: the environment via Environment::fromSpec, the
-// mesh via loadViewMesh, each material map via Image::load), and builds the RenderScene snapshot
-// the viewport's renderer draws (render/SceneFromProject.h). A roughness change loads nothing; a
-// new normal map loads that map only; rotating the environment changes a number.
+// mesh via loadViewMesh, each material map via core/MapImageCache), and builds the RenderScene
+// snapshot the viewport's renderer draws (render/SceneFromProject.h). A roughness change loads
+// nothing; a new normal map loads that map only; rotating the environment changes a number.
+//
+// Maps are decoded off the GUI thread (a QThreadPool; the edit that assigns them returns at
+// once): until a map arrives its slot shows what it showed before (the previous version of a
+// reloaded file) or its factor alone; each arrival is announced (mapsArrived) with progress
+// (mapLoadProgress). Each file is decoded once for every slot, material and thumbnail
+// that shows it (MapImageCache); a file beyond the map size budget (core/MapImage.h MapBudget) is
+// refused from its header, and the slot keeps its factor.
 //
 // Problems (a missing map, an unreadable environment) never stop the frame: the slot falls back
 // to its factor, the environment and mesh keep their previous value (or the built-in default),
@@ -15,8 +22,10 @@
 #include "render/RenderScene.h"
 #include "ui/DocumentChanges.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
+#include <QThreadPool>
 
 #include <glm/mat4x4.hpp>
 
@@ -41,10 +50,17 @@ public:
     };
 
     explicit SceneController(Document* document, QObject* parent = nullptr);
+    ~SceneController() override; // drops queued map loads, waits for the running ones
 
     const Document* document() const { return m_document; }
     const ProjectAssets& assets() const { return m_assets; }
     const LoadCounts& loadCounts() const { return m_loadCounts; }
+    // Map files being decoded for the project (0: every map the project names is in assets()).
+    int pendingMapLoads() const { return int(m_pendingMaps.size()); }
+    // Why a slot of material `material` shows its factor alone although it names a file (the
+    // file is missing, unreadable, beyond the size budget), in core's words; empty when loaded
+    // or loading.
+    std::string mapProblem(std::size_t material, MapSlot slot) const;
 
     // Identifies the environment image and IBL quality the IBL textures must be made for: it
     // changes when the environment source or the quality changes, not on rotation or intensity.
@@ -81,6 +97,14 @@ Q_SIGNALS:
     void message(const QString& text);
     // environmentProblem() changed.
     void environmentProblemChanged(const QString& problem);
+    // Decoded maps arrived in assets(): the viewport puts them on the GPU (between frames) and
+    // draws them when they are there (ui/MapUploadScheduler.h). A map that failed is a
+    // sceneChanged instead (its slot goes back to its factor).
+    void mapsArrived();
+    // Map decoding progress: `loaded` of `total` files of the current batch (a batch starts when
+    // a load starts with none pending); loaded == total when it is over. `milliseconds`: since
+    // the batch started.
+    void mapLoadProgress(int loaded, int total, double milliseconds);
 
 private:
     void onDocumentChanged(DocumentChanges changes);
@@ -88,17 +112,33 @@ private:
     void applyEnvironmentSettings();
     void loadMesh();
     void loadMaps(bool all);
+    void startMapLoad(const std::string& path, std::int64_t timestamp);
+    void onMapLoaded(const std::string& path, std::uint64_t ticket, std::shared_ptr<const MapImage> image,
+        const std::string& error, ImageLoadStats stats);
+    void publishMaps();
     void report(const std::string& text);
     void setEnvironmentProblem(const QString& problem);
 
     struct CachedImage {
-        std::shared_ptr<const Image> image; // null: the file could not be read (reported once)
-        std::int64_t timestamp = 0;
+        std::shared_ptr<const MapImage> image; // null: not loaded yet, or it could not be read
+        std::int64_t timestamp = 0; // of the file the image (or the failure) came from
+        std::string problem; // why it could not be read (reported once)
+    };
+    struct PendingMap {
+        std::int64_t timestamp = 0; // of the file being decoded
+        std::uint64_t ticket = 0; // a newer load of the path makes an older result stale
     };
 
     Document* m_document;
     ProjectAssets m_assets;
-    std::map<std::string, CachedImage> m_images; // the decoded map files, by path
+    std::map<std::string, CachedImage> m_images; // the map files shown, by path
+    std::map<std::string, PendingMap> m_pendingMaps; // the map files being decoded, by path
+    std::uint64_t m_nextTicket = 1;
+    int m_batchTotal = 0;
+    int m_batchLoaded = 0;
+    bool m_batchFailed = false;
+    QElapsedTimer m_batchClock;
+    QThreadPool m_mapPool; // declared last: destroyed (waited for) first
     std::string m_environmentSource; // the project's source last loaded (or tried)
     QString m_environmentProblem;
     std::string m_meshSource;

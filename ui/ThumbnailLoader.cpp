@@ -1,6 +1,7 @@
 #include "ui/ThumbnailLoader.h"
 
 #include "core/Environment.h"
+#include "core/MapImageCache.h"
 #include "core/Project.h"
 #include "core/ToneMap.h"
 
@@ -81,7 +82,8 @@ void ThumbnailLoader::request(const QString& key, const QString& source, Kind ki
                     sourceSize = QSize(environment->image().width(), environment->image().height());
                     thumbnail = environmentThumbnail(environment->image(), size);
                 }
-            } else if (std::optional<Image> image = Image::load(source.toStdString(), &error)) {
+            } else if (const std::shared_ptr<const MapImage> image
+                = MapImageCache::shared().load(source.toStdString(), &error)) {
                 sourceSize = QSize(image->width(), image->height());
                 thumbnail = textureThumbnail(*image, size);
             }
@@ -117,19 +119,27 @@ QImage ThumbnailLoader::environmentThumbnail(const Image& equirect, QSize size)
     return image;
 }
 
-QImage ThumbnailLoader::textureThumbnail(const Image& source, QSize size)
+QImage ThumbnailLoader::textureThumbnail(const MapImage& source, QSize size)
 {
     if (source.isEmpty())
         return {};
     const QSize target = fitted(QSize(source.width(), source.height()), size);
-    const std::vector<glm::vec4> pixels = boxDownsample(source, target.width(), target.height());
     QImage image(target, QImage::Format_RGB32);
     for (int y = 0; y < target.height(); ++y) {
+        // A box filter over the texels under the pixel; MapImage's row 0 is the bottom.
+        const int y0 = y * source.height() / target.height();
+        const int y1 = std::max(y0 + 1, (y + 1) * source.height() / target.height());
         auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
         for (int x = 0; x < target.width(); ++x) {
+            const int x0 = x * source.width() / target.width();
+            const int x1 = std::max(x0 + 1, (x + 1) * source.width() / target.width());
+            glm::dvec4 sum(0.0);
+            for (int sy = y0; sy < y1; ++sy)
+                for (int sx = x0; sx < x1; ++sx)
+                    sum += glm::dvec4(source.texel(sx, source.height() - 1 - sy));
             // The stored numbers as they are: sRGB colour maps look as painted, data maps (normal,
             // roughness) show their values, as image viewers show them.
-            const glm::vec4& p = pixels[std::size_t(y) * std::size_t(target.width()) + std::size_t(x)];
+            const glm::dvec4 p = sum / double((x1 - x0) * (y1 - y0));
             line[x] = qRgb(toByte(p.r), toByte(p.g), toByte(p.b));
         }
     }

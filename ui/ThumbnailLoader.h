@@ -1,6 +1,8 @@
 #pragma once
-// Small previews of images, made off the GUI thread: texture maps (the stored numbers, clamped)
-// and equirectangular environments (box-filtered down, tone-mapped with Khronos PBR Neutral and
+// Small previews of images, made off the GUI thread: texture maps (the stored numbers, clamped;
+// decoded through core/MapImageCache, so a map the viewport has loaded or is loading is not
+// decoded again, and a map beyond the size budget gets its message) and equirectangular
+// environments (box-filtered down, tone-mapped with Khronos PBR Neutral and
 // sRGB-encoded, so an HDR shows as the viewport would show it at exposure 0). One worker thread:
 // the machine's cores are shared with the renderer.
 //
@@ -8,6 +10,7 @@
 // Destroying the loader drops queued jobs and waits for the running one.
 
 #include "core/Image.h"
+#include "core/MapImage.h"
 
 #include <QImage>
 #include <QObject>
@@ -35,7 +38,7 @@ public:
 
     // The conversions the jobs run (public for tests and for callers that already hold an image).
     static QImage environmentThumbnail(const Image& equirect, QSize size);
-    static QImage textureThumbnail(const Image& image, QSize size);
+    static QImage textureThumbnail(const MapImage& image, QSize size);
 
 Q_SIGNALS:
     // `image` is null when the source could not be read (`error` says why, naming the file).

@@ -6,6 +6,8 @@
 #include "render/Framebuffer.h"
 #include "render/Renderer.h"
 #include "render/SceneFromProject.h"
+#include "render/TextureCache.h"
+#include "render/TextureFiltering.h"
 #include "ui/SceneController.h"
 
 #include <QCoreApplication>
@@ -37,6 +39,7 @@ QString ViewportFrameStats::summary() const
 ViewportRenderer::ViewportRenderer(const QString& cacheDirectory)
     : m_precompute(std::make_unique<IblPrecompute>(cacheDirectory))
     , m_renderer(std::make_unique<Renderer>())
+    , m_glInfo(queryCurrentGLInfo())
 {
 }
 
@@ -103,6 +106,17 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
     if (!m_iblError.empty() && !m_ibl)
         return fail(m_iblError);
 
+    RenderScene frame = scene.scene(m_ibl);
+    // Maps: complete textures only (uploads happen between frames), filtered for this GL and
+    // this kind of frame.
+    m_stats.mapsHeldBack = holdBackUnreadyMaps(frame, &m_stats.textureProblem);
+    // While a texture set loads (files decoding, textures uploading) the frames are previews:
+    // they only show progress, and a full frame on llvmpipe would stall the window for longer
+    // than the whole upload. The frame after the last map is up is a full one.
+    m_stats.loadingMaps = scene.pendingMapLoads() > 0 || m_renderer->textureCache().hasPendingUploads();
+    if (m_stats.loadingMaps)
+        scale = std::min(scale, kLoadingScale);
+
     scale = std::clamp(scale, 0.05, 1.0);
     const bool reduced = scale < 1.0;
     const int renderWidth = std::max(1, int(std::lround(width * scale)));
@@ -110,8 +124,8 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
     std::string problem;
     if (!ensureTarget(m_hdr, renderWidth, renderHeight, &problem))
         return fail(problem);
-
-    RenderScene frame = scene.scene(m_ibl);
+    m_stats.anisotropy = TextureFiltering::anisotropyFor(m_glInfo, reduced);
+    m_renderer->textureCache().setMaxAnisotropy(m_stats.anisotropy);
     // The split-sum table of the material's visibility term: a memory hit in IblPrecompute after
     // the first frame that needed it; a BRDF switch loads or makes one table, nothing else.
     IblStats dfgStats;
@@ -154,6 +168,55 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
     m_stats.frameMs = double(clock.nsecsElapsed()) / 1e6 - m_stats.iblMs;
     m_stats.render = m_renderer->lastFrameStats();
     return true;
+}
+
+int ViewportRenderer::holdBackUnreadyMaps(RenderScene& frame, std::string* problem)
+{
+    TextureCache& textures = m_renderer->textureCache();
+    problem->clear();
+    int heldBack = 0;
+    for (RenderMaterial& material : frame.materials)
+        for (MapSlot slot : kAllMapSlots) {
+            RenderMapImage& map = material.maps[std::size_t(slot)];
+            if (!map.image || map.image->isEmpty())
+                continue;
+            const MaterialMap& settings = material.material.map(slot);
+            const std::string& path = map.path.empty() ? settings.path : map.path;
+            if (textures.isReady(path, map.timestamp, settings.colorSpace)) {
+                textures.request(map.image, path, map.timestamp, settings.colorSpace); // kept: in use
+                continue;
+            }
+            ++heldBack;
+            if (!textures.request(map.image, path, map.timestamp, settings.colorSpace))
+                *problem = textures.problem();
+            // The previous version of a file that is being reloaded, else the factor alone.
+            if (const auto previous = textures.readyTimestamp(path, settings.colorSpace)) {
+                map.timestamp = *previous;
+                textures.request(map.image, path, map.timestamp, settings.colorSpace);
+            } else {
+                map = RenderMapImage {};
+            }
+        }
+    return heldBack;
+}
+
+int ViewportRenderer::queueUploads(const SceneController& scene)
+{
+    RenderScene frame = scene.scene(m_ibl);
+    std::string problem;
+    return holdBackUnreadyMaps(frame, &problem);
+}
+
+bool ViewportRenderer::hasPendingUploads() const
+{
+    return m_renderer->textureCache().hasPendingUploads();
+}
+
+ViewportRenderer::UploadProgress ViewportRenderer::uploadSlice(double budgetMs)
+{
+    TextureCache& textures = m_renderer->textureCache();
+    const TextureCache::SliceResult slice = textures.uploadSlice(budgetMs);
+    return UploadProgress {slice.completed, textures.pendingUploads(), slice.milliseconds};
 }
 
 } // namespace facet

@@ -8,8 +8,17 @@
 // below 1 it renders and tone-maps a smaller image and stretches it onto the widget (the
 // interactive preview; llvmpipe's cost is per pixel).
 //
+// Material maps are uploaded between frames, not in them: a frame draws only complete textures
+// (a map still uploading shows the previous version of its file, or its factor alone) and queues
+// the rest; uploadSlice() uploads rows of the queued ones for a bounded time, so a 2K texture set
+// never stalls the window for a whole upload (render/TextureCache.h). Anisotropic filtering is
+// chosen per frame from the GL implementation (render/TextureFiltering.h: none on a software
+// rasteriser at reduced resolution). While maps load, frames are reduced-resolution previews
+// (kLoadingScale); the frame after the last map is complete is a full one.
+//
 // Every call needs the viewport's context current; destroy it with the context current.
 
+#include "render/GLInfo.h"
 #include "render/IblPrecompute.h"
 #include "render/RenderStats.h"
 
@@ -25,6 +34,7 @@ namespace facet {
 class Framebuffer;
 class Renderer;
 class SceneController;
+struct RenderScene;
 
 // What the last frame cost, for the status bar and the View dock.
 struct ViewportFrameStats {
@@ -34,6 +44,10 @@ struct ViewportFrameStats {
     bool reduced = false; // drawn at reduced resolution (an interaction is running)
     double frameMs = 0.0; // render + tone map + present, GPU finished (glFinish)
     double iblMs = 0.0; // the IBL precompute this frame ran (0: cached / not needed)
+    int mapsHeldBack = 0; // maps drawn without their texture (or with its previous version): uploading
+    bool loadingMaps = false; // map files were decoding or textures uploading: a preview
+    float anisotropy = 1.0f; // the maps' maximum anisotropy in this frame
+    std::string textureProblem; // a map that cannot be a texture on this GL (named), else empty
     IblStats ibl; // of the last precompute (kept until the next one)
     RenderStats render; // Renderer::lastFrameStats()
 
@@ -43,6 +57,9 @@ struct ViewportFrameStats {
 
 class ViewportRenderer {
 public:
+    // The resolution scale of frames drawn while a texture set loads (ViewportWidget's preview's).
+    static constexpr double kLoadingScale = 0.5;
+
     // Needs the context current. `cacheDirectory` empty: the IBL disk cache's default folder.
     explicit ViewportRenderer(const QString& cacheDirectory = {});
     ~ViewportRenderer();
@@ -60,9 +77,26 @@ public:
 
     const ViewportFrameStats& lastFrame() const { return m_stats; }
 
+    // Map uploads queued by frames (or queueUploads) and not finished yet.
+    bool hasPendingUploads() const;
+    // Queues the uploads the scene's maps need, without drawing (context current); returns how
+    // many maps are not on the GPU yet.
+    int queueUploads(const SceneController& scene);
+    // Uploads rows of the queued maps for about `budgetMs` (context current). `completed` > 0:
+    // a map is complete, and the next frame shows it.
+    struct UploadProgress {
+        int completed = 0;
+        int pending = 0;
+        double milliseconds = 0.0;
+    };
+    UploadProgress uploadSlice(double budgetMs);
+
 private:
     // (Re)makes `target` at width x height when its size differs.
     static bool ensureTarget(std::unique_ptr<Framebuffer>& target, int width, int height, std::string* error);
+    // Takes out of `frame` the maps whose textures are not complete (the previous version of the
+    // file where there is one) and queues their uploads; returns how many were held back.
+    int holdBackUnreadyMaps(RenderScene& frame, std::string* problem);
 
     std::unique_ptr<IblPrecompute> m_precompute;
     std::unique_ptr<Renderer> m_renderer;
@@ -72,6 +106,7 @@ private:
     std::optional<std::uint64_t> m_iblKey; // SceneController::iblKey() of m_ibl
     std::string m_iblError; // the precompute failed for this key: do not retry every frame
     ViewportFrameStats m_stats;
+    GLInfo m_glInfo;
 };
 
 } // namespace facet

@@ -1,5 +1,6 @@
 #include "ui/ViewportWidget.h"
 
+#include "ui/MapUploadScheduler.h"
 #include "ui/SceneController.h"
 
 #include <QOpenGLContext>
@@ -9,6 +10,7 @@ namespace facet {
 
 ViewportWidget::ViewportWidget(QWidget* parent)
     : QOpenGLWidget(parent)
+    , m_uploads(new MapUploadScheduler(this, [this] { return m_renderer.get(); }))
 {
     setObjectName(QStringLiteral("viewport"));
     setMinimumSize(160, 120);
@@ -42,11 +44,16 @@ QSize ViewportWidget::sizeHint() const
 
 void ViewportWidget::setSceneController(SceneController* scene)
 {
-    if (m_scene)
+    if (m_scene) {
         disconnect(m_scene, nullptr, this, nullptr);
+        disconnect(m_scene, nullptr, m_uploads, nullptr);
+    }
     m_scene = scene;
-    if (m_scene)
+    m_uploads->setSceneController(scene);
+    if (m_scene) {
         connect(m_scene, &SceneController::sceneChanged, this, &ViewportWidget::onSceneChanged);
+        connect(m_scene, &SceneController::mapsArrived, m_uploads, &MapUploadScheduler::mapsArrived);
+    }
     requestFrame();
 }
 
@@ -112,6 +119,7 @@ void ViewportWidget::paintGL()
         int(height() * ratio), m_previewing ? kPreviewScale : 1.0, &error);
     m_stats = m_renderer->lastFrame();
     m_lastError = ok ? QString() : QString::fromStdString(error);
+    m_uploads->frameDrawn(); // maps the frame could not show yet go up between frames
     if (precompute) {
         m_announcedIbl = false;
         Q_EMIT iblPrecomputeFinished(m_scene->environmentName(), m_stats.iblMs);

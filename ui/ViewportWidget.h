@@ -21,6 +21,7 @@
 
 namespace facet {
 
+class MapUploadScheduler;
 class SceneController;
 
 class ViewportWidget : public QOpenGLWidget {
@@ -56,6 +57,8 @@ public:
     // at kPreviewScale and refine kRefineDelayMs after the last call. Also requests a frame.
     void markInteractive();
     bool isPreviewing() const { return m_previewing; }
+    // What puts material maps on the GPU between frames.
+    const MapUploadScheduler* mapUploads() const { return m_uploads; }
 
     QSize sizeHint() const override;
 
@@ -86,6 +89,7 @@ private:
     QString m_glProblem;
     QString m_lastError;
     QTimer m_refineTimer;
+    MapUploadScheduler* m_uploads; // map uploads between frames
     bool m_previewing = false;
     bool m_announcedIbl = false;
 };

@@ -55,6 +55,13 @@ const std::vector<Phrase>& phrases()
             row("(\\d+)x(\\d+) is not 2:1; an equirectangular image is stretched to cover the sphere",
                 WindowMessages::tr("%1 is %2×%3, not 2:1: it is stretched to cover the sphere")),
             row("(?:is a directory|is a folder).*", WindowMessages::tr("%1 is a folder, not a file")),
+            // MapBudget::check (core/MapImage.h): refused before it is decoded.
+            row("(\\d+)x(\\d+) is larger than the map size limit of (\\d+) pixels per side.*",
+                WindowMessages::tr("%1 is %2×%3 pixels, more than Facet's limit of %4 per side for a texture "
+                                   "map (FACET_MAX_MAP_SIZE changes it)")),
+            row("(\\d+)x(\\d+) is larger than the map size limit of (\\d+) Mpixel.*",
+                WindowMessages::tr("%1 is %2×%3 pixels, more than Facet's limit of %4 million pixels for a "
+                                   "texture map (FACET_MAX_MAP_MPIXELS changes it)")),
             row("(?:the )?(?:file|image) is empty", WindowMessages::tr("%1 is empty")),
             // OpenImageIO's "\"/full/path/x.exr\" is not an OpenEXR file" (Image::load).
             row("\"[^\"]*\" is not an? (.+) file", WindowMessages::tr("%1 is not a readable %2 file")),

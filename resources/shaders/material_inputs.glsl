@@ -40,10 +40,12 @@ uniform sampler2D uNormalMap;
 #ifdef HAS_METALLIC_MAP
 uniform sampler2D uMetallicMap;
 #endif
-#ifdef HAS_ROUGHNESS_MAP
+// ROUGHNESS_TEXEL_FROM_METALLIC, OCCLUSION_TEXEL_FROM_*: the slot's texture is an earlier slot's
+// (one packed file, same UV transform), whose texel it reuses: one fetch, no sampler of its own.
+#if defined(HAS_ROUGHNESS_MAP) && !defined(ROUGHNESS_TEXEL_FROM_METALLIC)
 uniform sampler2D uRoughnessMap;
 #endif
-#ifdef HAS_OCCLUSION_MAP
+#if defined(HAS_OCCLUSION_MAP) && !defined(OCCLUSION_TEXEL_FROM_METALLIC) && !defined(OCCLUSION_TEXEL_FROM_ROUGHNESS)
 uniform sampler2D uOcclusionMap;
 #endif
 #ifdef HAS_EMISSIVE_MAP
@@ -87,16 +89,29 @@ MaterialInfo materialInputs(vec2 uv)
 #endif
     m.metallic = uMetallicFactor;
 #ifdef HAS_METALLIC_MAP
-    m.metallic *= scalarMapValue(2, texture(uMetallicMap, mapUv(2, uv)));
+    vec4 metallicTexel = texture(uMetallicMap, mapUv(2, uv));
+    m.metallic *= scalarMapValue(2, metallicTexel);
 #endif
     m.perceptualRoughness = uRoughnessFactor;
 #ifdef HAS_ROUGHNESS_MAP
-    m.perceptualRoughness *= scalarMapValue(3, texture(uRoughnessMap, mapUv(3, uv)));
+#ifdef ROUGHNESS_TEXEL_FROM_METALLIC
+    vec4 roughnessTexel = metallicTexel;
+#else
+    vec4 roughnessTexel = texture(uRoughnessMap, mapUv(3, uv));
+#endif
+    m.perceptualRoughness *= scalarMapValue(3, roughnessTexel);
 #endif
     m.occlusion = 1.0;
 #ifdef HAS_OCCLUSION_MAP
+#if defined(OCCLUSION_TEXEL_FROM_METALLIC)
+    vec4 occlusionTexel = metallicTexel;
+#elif defined(OCCLUSION_TEXEL_FROM_ROUGHNESS)
+    vec4 occlusionTexel = roughnessTexel;
+#else
+    vec4 occlusionTexel = texture(uOcclusionMap, mapUv(4, uv));
+#endif
     // glTF occlusionTexture.strength: mix(1, ao, strength).
-    m.occlusion = 1.0 + uOcclusionStrength * (scalarMapValue(4, texture(uOcclusionMap, mapUv(4, uv))) - 1.0);
+    m.occlusion = 1.0 + uOcclusionStrength * (scalarMapValue(4, occlusionTexel) - 1.0);
 #endif
     m.baseColor = max(m.baseColor, vec3(0.0));
     m.emissive = max(m.emissive, vec3(0.0));

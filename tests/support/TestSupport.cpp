@@ -1,12 +1,12 @@
 #include "TestSupport.h"
 
-#include <QFile>
-
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <vector>
 
 #include <QDir>
+#include <QFile>
 #include <QFileInfo>
 #include <QProcess>
 
@@ -52,6 +52,54 @@ bool writeConstantExr(const QString& path, float radiance, int width)
     const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::FLOAT);
     return output && output->open(path.toStdString(), spec)
         && output->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && output->close();
+}
+
+namespace {
+
+// CRC-32 of PNG chunks (ISO 3309 / ITU-T V.42, the PNG specification's section 5.5): bitwise.
+std::uint32_t pngCrc(const QByteArray& bytes)
+{
+    std::uint32_t crc = 0xffffffffU;
+    for (char byte : bytes) {
+        crc ^= std::uint8_t(byte);
+        for (int bit = 0; bit < 8; ++bit)
+            crc = (crc >> 1) ^ (0xedb88320U & (0U - (crc & 1U)));
+    }
+    return crc ^ 0xffffffffU;
+}
+
+void appendBigEndian(QByteArray& bytes, std::uint32_t value)
+{
+    for (int shift = 24; shift >= 0; shift -= 8)
+        bytes.append(char((value >> shift) & 0xffU));
+}
+
+void appendChunk(QByteArray& png, const char* type, const QByteArray& data)
+{
+    appendBigEndian(png, std::uint32_t(data.size()));
+    const QByteArray typed = QByteArray(type) + data;
+    png.append(typed);
+    appendBigEndian(png, pngCrc(typed));
+}
+
+} // namespace
+
+bool writePngHeaderOnly(const QString& path, int width, int height)
+{
+    QByteArray png("\x89PNG\r\n\x1a\n", 8);
+    QByteArray header;
+    appendBigEndian(header, std::uint32_t(width));
+    appendBigEndian(header, std::uint32_t(height));
+    header.append(char(8)); // bit depth
+    header.append(char(2)); // colour type: RGB
+    header.append(char(0)); // compression, filter, interlace
+    header.append(char(0));
+    header.append(char(0));
+    appendChunk(png, "IHDR", header);
+    appendChunk(png, "IDAT", {});
+    appendChunk(png, "IEND", {});
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(png) == png.size();
 }
 
 std::string describe(const glm::dvec3& v, int digits)

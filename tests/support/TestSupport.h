@@ -48,6 +48,10 @@ ProcessResult runWithoutDisplay(const QString& executable, const QStringList& ar
 // tests that need environment files of their own (libraries, relinking).
 bool writeConstantExr(const QString& path, float radiance, int width = 16);
 
+// Writes a PNG that claims to be width x height 8-bit RGB and holds no pixels (signature, IHDR, an
+// empty IDAT, IEND, with correct CRCs): enough for a reader to see the size in the header, and for
+// a loader that checks sizes before decoding to refuse it at no cost (a 16384² "map" in 57 bytes).
+bool writePngHeaderOnly(const QString& path, int width, int height);
 // Writes `text` to `path` (its folder made first), replacing what was there. False on any error.
 bool writeText(const QString& path, const QByteArray& text);
 // A QStringList of UTF-8 literals.

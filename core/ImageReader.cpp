@@ -1,0 +1,187 @@
+#include "core/ImageReader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <system_error>
+
+#include "core/GltfImport.h"
+
+namespace facet {
+
+namespace {
+
+std::string lowercase(std::string text)
+{
+    std::transform(text.begin(), text.end(), text.begin(),
+        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+// OIIO's messages can span several lines (libpng stacks its own under OIIO's); a message for
+// the user is one line.
+std::string oneLine(std::string message)
+{
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+        message.pop_back();
+    std::string result;
+    result.reserve(message.size());
+    for (char c : message) {
+        if (c == '\n')
+            result += "; ";
+        else
+            result += c;
+    }
+    return result.empty() ? std::string("unknown error") : result;
+}
+
+// ".png", ".jpg", ".webp", ... for encoded bytes, by their signature (the MIME type a glTF asset
+// gives is optional and sometimes wrong).
+std::string extensionForEncodedImage(const std::vector<unsigned char>& bytes, const std::string& mimeType)
+{
+    const auto startsWith = [&bytes](std::initializer_list<unsigned char> signature, std::size_t at = 0) {
+        if (bytes.size() < at + signature.size())
+            return false;
+        return std::equal(signature.begin(), signature.end(), bytes.begin() + std::ptrdiff_t(at));
+    };
+    if (startsWith({0x89, 'P', 'N', 'G'}))
+        return ".png";
+    if (startsWith({0xFF, 0xD8, 0xFF}))
+        return ".jpg";
+    if (startsWith({'R', 'I', 'F', 'F'}) && startsWith({'W', 'E', 'B', 'P'}, 8))
+        return ".webp";
+    if (startsWith({0x76, 0x2F, 0x31, 0x01}))
+        return ".exr";
+    if (mimeType == "image/jpeg")
+        return ".jpg";
+    if (mimeType == "image/webp")
+        return ".webp";
+    return ".png";
+}
+
+} // namespace
+
+void setImageError(
+    std::string* error, const char* function, const std::string& path, const std::string& problem)
+{
+    if (error)
+        *error = std::string(function) + ": " + path + ": " + oneLine(problem);
+}
+
+ImageReader::~ImageReader() = default;
+
+std::optional<ImageReader> ImageReader::open(
+    const std::string& path, const char* function, std::string* error)
+{
+    ImageReader reader;
+    reader.m_path = path;
+    // An image embedded in a glTF asset ("asset.glb#images/2", core/GltfImport.h) is decoded
+    // from memory: OpenImageIO picks the reader by the name's extension, which comes from the
+    // bytes' signature.
+    std::string openName = path;
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(path, ec);
+    if (status.type() == std::filesystem::file_type::not_found) {
+        const std::optional<GltfImageReference> reference = parseGltfImageReference(path);
+        if (!reference) {
+            setImageError(error, function, path, "no such file");
+            return std::nullopt;
+        }
+        std::string mimeType;
+        std::string problem;
+        auto bytes = readGltfImage(*reference, &mimeType, &problem);
+        if (!bytes) {
+            if (error)
+                *error = std::string(function) + ": " + problem;
+            return std::nullopt;
+        }
+        reader.m_embedded = std::make_unique<std::vector<unsigned char>>(std::move(*bytes));
+        reader.m_memory = std::make_unique<OIIO::Filesystem::IOMemReader>(
+            reader.m_embedded->data(), reader.m_embedded->size());
+        openName = "embedded" + extensionForEncodedImage(*reader.m_embedded, mimeType);
+    } else if (std::filesystem::is_directory(status)) {
+        setImageError(error, function, path, "is a directory, not an image");
+        return std::nullopt;
+    } else if (!std::filesystem::is_regular_file(status)) {
+        // A device (/dev/zero), a FIFO or a socket would be read forever or block.
+        setImageError(error, function, path, "is not a regular file");
+        return std::nullopt;
+    }
+
+    // Leave unassociated alpha as the file stores it: OIIO would otherwise premultiply
+    // PNG/TIFF/TGA colour by alpha on read, and a base colour texture with a cut-out mask
+    // must keep its colour where alpha is 0.
+    OIIO::ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    // OIIO 2.4's open(name, config, ioproxy) ignores the proxy when a config is given: the
+    // proxy travels in the config instead (a pointer to the pointer, TypeDesc::PTR).
+    void* proxy = reader.m_memory.get();
+    if (proxy)
+        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    reader.m_input = OIIO::ImageInput::open(openName, &config);
+    if (!reader.m_input) {
+        setImageError(error, function, path, OIIO::geterror());
+        return std::nullopt;
+    }
+    return reader;
+}
+
+bool ImageReader::checkHeader(const char* function, std::string* error) const
+{
+    const OIIO::ImageSpec& header = spec();
+    if (header.width <= 0 || header.height <= 0) {
+        setImageError(error, function, m_path,
+            "invalid size " + std::to_string(header.width) + "x" + std::to_string(header.height));
+        return false;
+    }
+    if (header.depth > 1) {
+        setImageError(error, function, m_path,
+            "volume images (depth " + std::to_string(header.depth) + ") are not supported");
+        return false;
+    }
+    if (header.nchannels <= 0) {
+        setImageError(error, function, m_path, "image has no channels");
+        return false;
+    }
+    return true;
+}
+
+std::string ImageReader::colorSpaceName() const
+{
+    return spec().get_string_attribute("oiio:ColorSpace");
+}
+
+// What the numbers of a file mean. OIIO names the colour space when the format says it
+// ("sRGB" for PNG/JPEG/WebP, "Linear" for EXR, "linear" for Radiance HDR, "GammaCorrected2.2"
+// for a PNG with a gAMA chunk) and says nothing for TIFF or TGA. Without a name, the
+// convention of the formats decides: 8/16-bit integer files are sRGB-encoded colour (PNG, JPEG,
+// TGA, 8-bit TIFF as painting tools write them), float files (EXR, HDR, float TIFF) are linear.
+ColorEncoding ImageReader::encoding() const
+{
+    const std::string name = lowercase(colorSpaceName());
+    // A 2.2 power curve is not the sRGB curve but close to it (within 0.4% of full scale),
+    // and what a gamma-tagged PNG's author meant.
+    if (name.find("srgb") != std::string::npos || name.rfind("gammacorrected", 0) == 0)
+        return ColorEncoding::SRGB;
+    if (name.find("linear") != std::string::npos || name.rfind("lin_", 0) == 0 || name == "acescg"
+        || name == "aces2065-1" || name == "raw")
+        return ColorEncoding::Linear;
+    switch (spec().format.basetype) {
+    case OIIO::TypeDesc::UINT8:
+    case OIIO::TypeDesc::INT8:
+    case OIIO::TypeDesc::UINT16:
+    case OIIO::TypeDesc::INT16:
+        return ColorEncoding::SRGB;
+    default:
+        return ColorEncoding::Linear;
+    }
+}
+
+bool ImageReader::twoColourChannels() const
+{
+    const OIIO::ImageSpec& header = spec();
+    return header.nchannels == 2 && header.channelnames.size() == 2 && header.channelnames[0] == "R"
+        && header.channelnames[1] == "G";
+}
+
+} // namespace facet

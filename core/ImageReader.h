@@ -1,0 +1,61 @@
+#pragma once
+// An image file opened through OpenImageIO with only its header read: what Image::load (float
+// RGBA, environments) and MapImage::load (material maps in their own bit depth) share. It refuses
+// what must never be read (a folder, a device, a FIFO), reads an image embedded in a glTF asset
+// ("asset.glb#images/2", core/GltfImport.h) from memory, and keeps alpha unassociated (as
+// PNG/TIFF store it: a cut-out base colour keeps its colour where alpha is 0).
+//
+// Internal to core/: callers use Image or MapImage.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include "core/Image.h"
+
+namespace facet {
+
+class ImageReader {
+public:
+    // Opens `path` and reads its header. nullopt with *error "<function>: <path>: <reason>" (or
+    // "<function>: readGltfImage: ..." for an embedded image that cannot be read).
+    static std::optional<ImageReader> open(const std::string& path, const char* function, std::string* error);
+
+    ImageReader(ImageReader&&) = default;
+    ImageReader& operator=(ImageReader&&) = default;
+    ~ImageReader();
+
+    OIIO::ImageInput& input() { return *m_input; }
+    const OIIO::ImageSpec& spec() const { return m_input->spec(); }
+    // The file's colour-space name as OpenImageIO reported it ("sRGB", "Linear", ...), if any.
+    std::string colorSpaceName() const;
+    // What the numbers mean: SRGB when the colour space says sRGB (or a gamma curve), Linear when
+    // it says linear; without either, 8/16-bit integer files are SRGB and float files Linear.
+    ColorEncoding encoding() const;
+    // Two channels named R and G (a two-channel EXR, e.g. a normal map's X and Y): red and green,
+    // not grey + alpha (what PNG and TIFF mean by two channels).
+    bool twoColourChannels() const;
+
+    // Checks the header's size before anything is allocated: positive, flat (depth 1), with
+    // channels. False with *error as open() words it.
+    bool checkHeader(const char* function, std::string* error) const;
+
+private:
+    ImageReader() = default;
+
+    std::string m_path;
+    // The memory an embedded image is decoded from; must outlive m_input.
+    std::unique_ptr<std::vector<unsigned char>> m_embedded;
+    std::unique_ptr<OIIO::Filesystem::IOMemReader> m_memory;
+    std::unique_ptr<OIIO::ImageInput> m_input;
+};
+
+// "<function>: <path>: <problem>" on one line (OIIO's messages can span several lines).
+void setImageError(
+    std::string* error, const char* function, const std::string& path, const std::string& problem);
+
+} // namespace facet
