@@ -32,7 +32,8 @@ WindowScreenshot::WindowScreenshot(QWidget* window, ViewportWidget* viewport, QS
     });
     m_timeout.setSingleShot(true);
     connect(&m_timeout, &QTimer::timeout, this, [this] {
-        fail(QStringLiteral("the viewport drew no complete frame within %1 s").arg(kFirstFrameTimeoutMs / 1000));
+        fail(QStringLiteral("the viewport drew no complete frame within %1 s")
+                 .arg(kFirstFrameTimeoutMs / 1000));
     });
     m_timeout.start(kFirstFrameTimeoutMs);
 }

@@ -5,6 +5,7 @@
 #include "ui/ColorButton.h"
 #include "ui/Document.h"
 #include "ui/DocumentCommands.h"
+#include "ui/DroppedFiles.h"
 #include "ui/ValueSlider.h"
 
 #include <QCheckBox>
@@ -61,16 +62,6 @@ QString factorName(MapSlot slot)
     }
 }
 
-QStringList localFiles(const QMimeData* mime)
-{
-    QStringList files;
-    if (!mime || !mime->hasUrls())
-        return files;
-    for (const QUrl& url : mime->urls())
-        if (url.isLocalFile())
-            files.append(url.toLocalFile());
-    return files;
-}
 
 } // namespace
 
@@ -381,13 +372,13 @@ void MapSlotWidget::openFile()
 
 void MapSlotWidget::dragEnterEvent(QDragEnterEvent* event)
 {
-    if (!localFiles(event->mimeData()).isEmpty())
+    if (!droppedLocalFiles(event->mimeData()).isEmpty())
         event->acceptProposedAction();
 }
 
 void MapSlotWidget::dropEvent(QDropEvent* event)
 {
-    const QStringList files = localFiles(event->mimeData());
+    const QStringList files = droppedLocalFiles(event->mimeData());
     if (files.isEmpty())
         return;
     event->acceptProposedAction();

@@ -3,6 +3,7 @@
 #include "core/MapNaming.h"
 #include "ui/Document.h"
 #include "ui/DocumentCommands.h"
+#include "ui/DroppedFiles.h"
 #include "ui/MapSlotWidget.h"
 #include "ui/ThumbnailLoader.h"
 #include "ui/ValueSlider.h"
@@ -314,10 +315,7 @@ void TextureMapsDock::dragEnterEvent(QDragEnterEvent* event)
 
 void TextureMapsDock::dropEvent(QDropEvent* event)
 {
-    QStringList files;
-    for (const QUrl& url : event->mimeData()->urls())
-        if (url.isLocalFile())
-            files.append(url.toLocalFile());
+    const QStringList files = droppedLocalFiles(event->mimeData());
     if (files.isEmpty()) {
         report(tr("Nothing to assign: only local files and folders can be dropped"));
         return;

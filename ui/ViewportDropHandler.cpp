@@ -1,6 +1,7 @@
 #include "ui/ViewportDropHandler.h"
 
 #include "core/AssetProject.h"
+#include "ui/DroppedFiles.h"
 #include "ui/ProjectFileController.h"
 
 #include <QDragEnterEvent>
@@ -14,17 +15,6 @@
 namespace facet {
 
 namespace {
-
-QStringList localFiles(const QMimeData* mime)
-{
-    QStringList files;
-    if (!mime || !mime->hasUrls())
-        return files;
-    for (const QUrl& url : mime->urls())
-        if (url.isLocalFile())
-            files.append(url.toLocalFile());
-    return files;
-}
 
 bool isProjectFileName(const QString& path)
 {
@@ -69,7 +59,7 @@ bool ViewportDropHandler::eventFilter(QObject* watched, QEvent* event)
     case QEvent::DragEnter:
     case QEvent::DragMove: {
         auto* drag = static_cast<QDragMoveEvent*>(event);
-        if (!usableFile(localFiles(drag->mimeData())).isEmpty())
+        if (!usableFile(droppedLocalFiles(drag->mimeData())).isEmpty())
             drag->acceptProposedAction();
         else
             drag->ignore();
@@ -77,7 +67,7 @@ bool ViewportDropHandler::eventFilter(QObject* watched, QEvent* event)
     }
     case QEvent::Drop: {
         auto* drop = static_cast<QDropEvent*>(event);
-        const QStringList files = localFiles(drop->mimeData());
+        const QStringList files = droppedLocalFiles(drop->mimeData());
         if (usableFile(files).isEmpty()) {
             drop->ignore();
             return true;
