@@ -9,6 +9,7 @@
 
 #include "core/MapImage.h"
 #include "core/MapImageCache.h"
+#include "core/Project.h"
 #include "ui/Document.h"
 #include "ui/MainWindow.h"
 #include "ui/MapSlotWidget.h"
@@ -22,6 +23,8 @@
 #include "TestSupport.h"
 
 #include <QElapsedTimer>
+#include <QImage>
+#include <QProcess>
 #include <QLabel>
 #include <QMessageBox>
 #include <QOpenGLContext>
@@ -108,6 +111,7 @@ private Q_SLOTS:
     void setLoadsOffTheGuiThreadAndShowsWhole();
     void mapBeyondTheBudgetIsRefused();
     void packedFileAndThumbnailsDecodeOnce();
+    void screenshotWaitsForEveryMap();
 
 private:
     FrameSample sampleFrame();
@@ -325,6 +329,46 @@ void MapLoadingUiTest::packedFileAndThumbnailsDecodeOnce()
             == m_scene->assets().maps[0][std::size_t(MapSlot::Occlusion)].image.get());
     QCOMPARE(MapImage::loadCount() - loadsBefore, std::uint64_t(1));
     QCOMPARE(MapImageCache::shared().decodeCount(orm.toStdString()), std::uint64_t(1));
+}
+
+// `facet PROJECT --screenshot` grabs the window once every map is shown: a project whose 2K base
+// colour map is saturated green on a white factor must come out green, not as the factor's grey
+// of the previews drawn while the map decodes and uploads.
+void MapLoadingUiTest::screenshotWaitsForEveryMap()
+{
+    const QString green = m_dir.filePath(QStringLiteral("shot_basecolor.png"));
+    QVERIFY(writeFlatPng(green, 2048, 0, 255, 0));
+    Project project = Project::defaultProject();
+    project.material().setBaseColor(glm::dvec3(1.0));
+    project.material().map(MapSlot::BaseColor).path = green.toStdString();
+    const QString projectPath = m_dir.filePath(QStringLiteral("shot.json"));
+    std::string error;
+    QVERIFY2(project.save(projectPath.toStdString(), &error), error.c_str());
+    const QString picture = m_dir.filePath(QStringLiteral("shot.png"));
+
+    QProcess facetProcess;
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.insert(QStringLiteral("FACET_CACHE_DIR"), m_dir.filePath(QStringLiteral("cache")));
+    facetProcess.setProcessEnvironment(environment);
+    facetProcess.start(QStringLiteral(FACET_EXECUTABLE), {projectPath, QStringLiteral("--screenshot"), picture});
+    QVERIFY(facetProcess.waitForFinished(180000));
+    QVERIFY2(facetProcess.exitCode() == 0, facetProcess.readAllStandardError().constData());
+
+    const QImage shot(picture);
+    QVERIFY(!shot.isNull());
+    // The sphere covers tens of thousands of pixels; the Texture Maps dock's thumbnail of the
+    // map, the only other green, a few thousand.
+    int greenPixels = 0;
+    for (int y = 0; y < shot.height(); ++y)
+        for (int x = 0; x < shot.width(); ++x) {
+            const QRgb p = shot.pixel(x, y);
+            if (qGreen(p) > 60 && qGreen(p) > 2 * qRed(p) && qGreen(p) > 2 * qBlue(p))
+                ++greenPixels;
+        }
+    QVERIFY2(greenPixels > 20000, qPrintable(QStringLiteral("%1 green pixels in %2x%3")
+                                                 .arg(greenPixels)
+                                                 .arg(shot.width())
+                                                 .arg(shot.height())));
 }
 
 QTEST_MAIN(MapLoadingUiTest)
