@@ -25,6 +25,7 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QProcess>
+#include <QUndoStack>
 #include <QLabel>
 #include <QMessageBox>
 #include <QOpenGLContext>
@@ -112,6 +113,7 @@ private Q_SLOTS:
     void mapBeyondTheBudgetIsRefused();
     void packedFileAndThumbnailsDecodeOnce();
     void screenshotWaitsForEveryMap();
+    void theNewestEditWinsWhileMapsLoad();
 
 private:
     FrameSample sampleFrame();
@@ -329,6 +331,56 @@ void MapLoadingUiTest::packedFileAndThumbnailsDecodeOnce()
             == m_scene->assets().maps[0][std::size_t(MapSlot::Occlusion)].image.get());
     QCOMPARE(MapImage::loadCount() - loadsBefore, std::uint64_t(1));
     QCOMPARE(MapImageCache::shared().decodeCount(orm.toStdString()), std::uint64_t(1));
+}
+
+// A set assigned while another still loads, undo and redo flipping between them before either
+// arrives: the screen settles on the set the document names, never on a stale decode's result.
+void MapLoadingUiTest::theNewestEditWinsWhileMapsLoad()
+{
+    const QString red = m_dir.filePath(QStringLiteral("red_basecolor.png"));
+    const QString blue = m_dir.filePath(QStringLiteral("blue_basecolor.png"));
+    QVERIFY(writeFlatPng(red, 2048, 255, 0, 0));
+    QVERIFY(writeFlatPng(blue, 2048, 0, 0, 255));
+    const auto settled = [&](QRgb* shown) {
+        bool drawn = false;
+        QMetaObject::Connection sampling = connect(m_viewport, &ViewportWidget::frameRendered, this, [&] {
+            *shown = sampleFrame().points[12];
+            drawn = true;
+        });
+        const bool ok = waitFor([&] {
+            const ViewportFrameStats& stats = m_viewport->lastFrameStats();
+            return drawn && m_scene->pendingMapLoads() == 0 && !stats.loadingMaps && !stats.reduced
+                && stats.mapsHeldBack == 0;
+        });
+        disconnect(sampling);
+        return ok;
+    };
+    const auto isRed = [](QRgb c) { return qRed(c) > 150 && qGreen(c) < 60 && qBlue(c) < 60; };
+    const auto isBlue = [](QRgb c) { return qBlue(c) > 150 && qRed(c) < 60 && qGreen(c) < 60; };
+
+    Material material = baseMaterial();
+    material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::SRGB;
+    material.map(MapSlot::BaseColor).path = red.toStdString();
+    m_document->setMaterial(material, QStringLiteral("Red"));
+    material.map(MapSlot::BaseColor).path = blue.toStdString();
+    m_document->setMaterial(material, QStringLiteral("Blue"));
+    QRgb shown = 0;
+    QVERIFY(settled(&shown));
+    QVERIFY2(isBlue(shown), qPrintable(describe(shown)));
+    QCOMPARE(m_scene->assets().maps[0][std::size_t(MapSlot::BaseColor)].path, blue.toStdString());
+
+    m_document->undoStack()->undo(); // red
+    QVERIFY(settled(&shown));
+    QVERIFY2(isRed(shown), qPrintable(describe(shown)));
+
+    m_document->undoStack()->redo(); // blue, red, blue, red before any decode can arrive
+    m_document->undoStack()->undo();
+    m_document->undoStack()->redo();
+    m_document->undoStack()->undo();
+    QVERIFY(settled(&shown));
+    QVERIFY2(isRed(shown), qPrintable(describe(shown)));
+    QCOMPARE(m_scene->assets().maps[0][std::size_t(MapSlot::BaseColor)].path, red.toStdString());
+    QCOMPARE(m_scene->pendingMapLoads(), 0);
 }
 
 // `facet PROJECT --screenshot` grabs the window once every map is shown: a project whose 2K base
