@@ -145,6 +145,19 @@ MapImage::MapImage(int width, int height, MapLayout layout, MapSampleType type)
     m_bytes.assign(rowBytes() * std::size_t(m_height), 0);
 }
 
+MapImage MapImage::withoutPixels(const MapImage& image)
+{
+    MapImage standIn;
+    standIn.m_width = image.m_width;
+    standIn.m_height = image.m_height;
+    standIn.m_layout = image.m_layout;
+    standIn.m_type = image.m_type;
+    standIn.m_encoding = image.m_encoding;
+    standIn.m_colorSpaceName = image.m_colorSpaceName;
+    standIn.m_sourceChannels = image.m_sourceChannels;
+    return standIn;
+}
+
 MapImage MapImage::fromImage(const Image& image, MapLayout layout, MapSampleType type)
 {
     MapImage map(image.width(), image.height(), layout, type);

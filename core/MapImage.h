@@ -85,6 +85,12 @@ public:
     int width() const { return m_width; }
     int height() const { return m_height; }
     bool isEmpty() const { return m_width == 0 || m_height == 0; }
+    // Whether the samples are here. A stand-in (withoutPixels) has the size, layout and sample
+    // type of the map the GPU holds but no samples: the window keeps one for a map whose texture
+    // is complete, so that the decoded copy's memory is freed (ui/SceneController
+    // releaseMapPixels); reading its samples is an error.
+    bool hasPixels() const { return !m_bytes.empty(); }
+    static MapImage withoutPixels(const MapImage& image);
     std::size_t pixelCount() const { return std::size_t(m_width) * std::size_t(m_height); }
     MapLayout layout() const { return m_layout; }
     int channels() const { return channelCount(m_layout); }

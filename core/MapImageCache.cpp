@@ -117,6 +117,13 @@ std::uint64_t MapImageCache::decodeCount(const std::string& path) const
     return found == m_entries.end() ? 0 : found->second.decodes;
 }
 
+bool MapImageCache::isHeld(const std::string& path) const
+{
+    std::lock_guard lock(m_mutex);
+    const auto found = m_entries.find(path);
+    return found != m_entries.end() && !found->second.image.expired();
+}
+
 std::uint64_t MapImageCache::decodeCount() const
 {
     std::lock_guard lock(m_mutex);

@@ -35,6 +35,8 @@ public:
 
     // Decodes run so far, of `path` or of every file (tests: "decoded once").
     std::uint64_t decodeCount(const std::string& path) const;
+    // Whether someone still holds the decoded copy of `path` (tests: memory freed).
+    bool isHeld(const std::string& path) const;
     std::uint64_t decodeCount() const;
 
 private:

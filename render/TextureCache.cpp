@@ -185,6 +185,14 @@ bool TextureCache::fits(const MapImage& image, const std::string& path)
     return true;
 }
 
+bool TextureCache::hasPixels(const MapImage& image, const std::string& path)
+{
+    if (image.hasPixels())
+        return true;
+    m_problem = "TextureCache: " + path + ": the decoded map was released once on the GPU; it must be loaded again";
+    return false;
+}
+
 TextureCache::Entry& TextureCache::begin(
     const Key& key, const std::shared_ptr<const MapImage>& image, ColorEncoding colorSpace)
 {
@@ -366,7 +374,7 @@ unsigned TextureCache::get(const std::shared_ptr<const MapImage>& image, const s
     const Key key = keyFor(image, path, timestamp, colorSpace);
     auto found = m_textures.find(key);
     if (found == m_textures.end()) {
-        if (!fits(*image, std::get<0>(key)))
+        if (!fits(*image, std::get<0>(key)) || !hasPixels(*image, std::get<0>(key)))
             return 0;
         begin(key, image, colorSpace);
         found = m_textures.find(key);
@@ -413,7 +421,7 @@ bool TextureCache::request(const std::shared_ptr<const MapImage>& image, const s
     const Key key = keyFor(image, path, timestamp, colorSpace);
     auto found = m_textures.find(key);
     if (found == m_textures.end()) {
-        if (!fits(*image, std::get<0>(key)))
+        if (!fits(*image, std::get<0>(key)) || !hasPixels(*image, std::get<0>(key)))
             return false;
         begin(key, image, colorSpace);
         m_queue.push_back(key);

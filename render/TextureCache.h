@@ -74,7 +74,8 @@ public:
     std::optional<std::int64_t> readyTimestamp(const std::string& path, ColorEncoding colorSpace) const;
     // Queues the upload of a texture that is not ready (no GL work) and keeps it (and a ready
     // one) from evictUnused() this frame. False, with problem() set, for an image that cannot be
-    // a texture (larger than GL_MAX_TEXTURE_SIZE).
+    // a texture (larger than GL_MAX_TEXTURE_SIZE) and for a stand-in without pixels
+    // (MapImage::withoutPixels) whose texture is not here: its file must be decoded again.
     bool request(const std::shared_ptr<const MapImage>& image, const std::string& path,
         std::int64_t timestamp, ColorEncoding colorSpace);
 
@@ -127,6 +128,7 @@ private:
     static Key keyFor(const std::shared_ptr<const MapImage>& image, const std::string& path,
         std::int64_t timestamp, ColorEncoding colorSpace);
     bool fits(const MapImage& image, const std::string& path);
+    bool hasPixels(const MapImage& image, const std::string& path); // a stand-in cannot be uploaded
     Entry& begin(const Key& key, const std::shared_ptr<const MapImage>& image, ColorEncoding colorSpace);
     void convertRows(Entry& entry, int row, int rows);
     std::size_t uploadBand(Entry& entry);

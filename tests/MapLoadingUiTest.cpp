@@ -114,6 +114,7 @@ private Q_SLOTS:
     void packedFileAndThumbnailsDecodeOnce();
     void screenshotWaitsForEveryMap();
     void theNewestEditWinsWhileMapsLoad();
+    void decodedMapsAreReleasedOnceOnTheGpu();
 
 private:
     FrameSample sampleFrame();
@@ -381,6 +382,73 @@ void MapLoadingUiTest::theNewestEditWinsWhileMapsLoad()
     QVERIFY2(isRed(shown), qPrintable(describe(shown)));
     QCOMPARE(m_scene->assets().maps[0][std::size_t(MapSlot::BaseColor)].path, red.toStdString());
     QCOMPARE(m_scene->pendingMapLoads(), 0);
+}
+
+// The decoded copy of a map goes once its texture is complete (a 2K RGB map: 12 MiB); the frame
+// still shows the map, the slots that share the file still share one image, and a colour-space
+// change (a texture the GPU does not have) decodes the file again and shows it.
+void MapLoadingUiTest::decodedMapsAreReleasedOnceOnTheGpu()
+{
+    const QString packed = m_dir.filePath(QStringLiteral("released_orm.png"));
+    const QString base = m_dir.filePath(QStringLiteral("released_basecolor.png"));
+    QVERIFY(writeFlatPng(packed, 2048, 255, 160, 20));
+    QVERIFY(writeFlatPng(base, 2048, 20, 200, 40));
+    Material material = baseMaterial();
+    material.map(MapSlot::BaseColor).path = base.toStdString();
+    material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::SRGB;
+    material.map(MapSlot::Roughness).path = packed.toStdString();
+    material.map(MapSlot::Roughness).channel = MapChannel::G;
+    material.map(MapSlot::Metallic).path = packed.toStdString();
+    material.map(MapSlot::Metallic).channel = MapChannel::B;
+    const std::uint64_t loadsBefore = MapImage::loadCount();
+    m_document->setMaterial(material, QStringLiteral("Assign Maps"));
+    const auto& maps = m_scene->assets().maps;
+    const auto image = [&](MapSlot slot) { return maps[0][std::size_t(slot)].image; };
+    const auto settledShowing = [&](QRgb* shown) {
+        bool drawn = false;
+        QMetaObject::Connection sampling = connect(m_viewport, &ViewportWidget::frameRendered, this, [&] {
+            *shown = sampleFrame().points[12];
+            drawn = true;
+        });
+        const bool ok = waitFor([&] {
+            const ViewportFrameStats& stats = m_viewport->lastFrameStats();
+            return drawn && m_scene->pendingMapLoads() == 0 && !stats.loadingMaps && stats.mapsHeldBack == 0
+                && image(MapSlot::BaseColor) && !image(MapSlot::BaseColor)->hasPixels();
+        });
+        disconnect(sampling);
+        return ok;
+    };
+    QRgb shown = 0;
+    QVERIFY(settledShowing(&shown));
+    QVERIFY2(qGreen(shown) > 2 * qRed(shown) && qGreen(shown) > 2 * qBlue(shown), qPrintable(describe(shown)));
+    QVERIFY(waitFor([&] { return m_window->textureMapsDock()->pendingThumbnails() == 0; }));
+    // Released: stand-ins of the right size, one per file, and nobody holds the pixels.
+    for (MapSlot slot : {MapSlot::BaseColor, MapSlot::Roughness, MapSlot::Metallic}) {
+        QVERIFY2(image(slot) && !image(slot)->hasPixels(), toString(slot));
+        QCOMPARE(image(slot)->width(), 2048);
+    }
+    QCOMPARE(image(MapSlot::Roughness).get(), image(MapSlot::Metallic).get());
+    QVERIFY(!MapImageCache::shared().isHeld(base.toStdString()));
+    QVERIFY(!MapImageCache::shared().isHeld(packed.toStdString()));
+    QCOMPARE(MapImage::loadCount() - loadsBefore, std::uint64_t(2));
+
+    // Another frame (an orbit) draws from the GPU, decodes nothing.
+    QSignalSpy frame(m_viewport, &ViewportWidget::frameRendered);
+    m_viewport->update();
+    QVERIFY(frame.wait(30000));
+    QCOMPARE(m_viewport->lastFrameStats().mapsHeldBack, 0);
+    QCOMPARE(MapImage::loadCount() - loadsBefore, std::uint64_t(2));
+
+    // Another colour space is another texture: the file is decoded again and shown (linear:
+    // darker than the sRGB-decoded green), then released again.
+    material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::Linear;
+    m_document->setMaterial(material, QStringLiteral("Colour Space"));
+    QRgb linear = 0;
+    QVERIFY(settledShowing(&linear));
+    QVERIFY2(qGreen(linear) > 2 * qRed(linear) && qGreen(linear) > qGreen(shown) + 20,
+        qPrintable(describe(linear) + QStringLiteral(" after ") + describe(shown)));
+    QCOMPARE(MapImage::loadCount() - loadsBefore, std::uint64_t(3));
+    QVERIFY(!MapImageCache::shared().isHeld(base.toStdString()));
 }
 
 // `facet PROJECT --screenshot` grabs the window once every map is shown: a project whose 2K base

@@ -268,6 +268,40 @@ void SceneController::publishMaps()
         }
 }
 
+int SceneController::releaseMapPixels(
+    const std::function<bool(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace)>& onGpu)
+{
+    int released = 0;
+    for (auto& [path, entry] : m_images) {
+        if (!entry.image || !entry.image->hasPixels() || m_pendingMaps.count(path))
+            continue;
+        bool everywhere = true;
+        for (const Material& material : m_document->project().materials)
+            for (const MaterialMap& map : material.maps)
+                if (map.hasTexture() && map.path == path && !onGpu(path, entry.timestamp, map.colorSpace))
+                    everywhere = false;
+        if (!everywhere)
+            continue;
+        // One stand-in per file: the slots that share the file still share one image.
+        entry.image = std::make_shared<const MapImage>(MapImage::withoutPixels(*entry.image));
+        ++released;
+    }
+    if (released > 0)
+        publishMaps();
+    return released;
+}
+
+void SceneController::reloadMaps(const std::vector<std::string>& paths)
+{
+    for (const std::string& path : paths) {
+        const auto found = m_images.find(path);
+        if (found == m_images.end() || !found->second.image || found->second.image->hasPixels()
+            || m_pendingMaps.count(path))
+            continue;
+        startMapLoad(path, found->second.timestamp);
+    }
+}
+
 std::string SceneController::mapProblem(std::size_t material, MapSlot slot) const
 {
     const Project& project = m_document->project();

@@ -30,9 +30,11 @@
 #include <glm/mat4x4.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <memory>
+#include <vector>
 
 namespace facet {
 
@@ -61,6 +63,18 @@ public:
     // file is missing, unreadable, beyond the size budget), in core's words; empty when loaded
     // or loading.
     std::string mapProblem(std::size_t material, MapSlot slot) const;
+
+    // Memory: frees the decoded pixels of every loaded map whose textures are complete on the GPU
+    // (`onGpu(path, timestamp, colour space)` true for each colour space a slot reads the file
+    // in), keeping a stand-in of its size and format (MapImage::withoutPixels: the renderer's
+    // variants and shared fetches stay as they were). The viewport calls it after each frame
+    // that showed every map; 2K maps are 4-16 MiB each, 4K ones 16-64 MiB. Returns how many
+    // maps it released. Draws nothing.
+    int releaseMapPixels(
+        const std::function<bool(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace)>& onGpu);
+    // Decodes again (off the GUI thread, as any load) the released maps among `paths` whose
+    // textures the viewport no longer has (a new GL context, another colour space).
+    void reloadMaps(const std::vector<std::string>& paths);
 
     // Identifies the environment image and IBL quality the IBL textures must be made for: it
     // changes when the environment source or the quality changes, not on rotation or intensity.

@@ -1,11 +1,13 @@
 #include "ui/ThumbnailLoader.h"
 
 #include "core/Environment.h"
+#include "core/GltfImport.h"
 #include "core/MapImageCache.h"
 #include "core/Project.h"
 #include "core/ToneMap.h"
 
 #include <QElapsedTimer>
+#include <QFileInfo>
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +15,8 @@
 namespace facet {
 
 namespace {
+
+constexpr int kRemembered = 256;
 
 // The average of the source texels under each thumbnail pixel (a box filter: an equirect's sun
 // must not vanish between point samples).
@@ -64,7 +68,24 @@ ThumbnailLoader::~ThumbnailLoader()
 void ThumbnailLoader::request(const QString& key, const QString& source, Kind kind, QSize size)
 {
     ++m_pending;
-    m_pool.start([this, key, source, kind, size] {
+    QString memo;
+    if (kind == Kind::Texture) {
+        const QFileInfo file(QString::fromStdString(fileOfImagePath(source.toStdString())));
+        memo = source + u'|' + QString::number(file.lastModified().toMSecsSinceEpoch()) + u'|'
+            + QString::number(size.width()) + u'x' + QString::number(size.height());
+        if (const auto found = m_made.constFind(memo); found != m_made.constEnd()) {
+            const Made made = *found;
+            QMetaObject::invokeMethod(
+                this,
+                [this, key, made] {
+                    --m_pending;
+                    Q_EMIT ready(key, made.image, made.sourceSize, QString(), 0.0);
+                },
+                Qt::QueuedConnection);
+            return;
+        }
+    }
+    m_pool.start([this, key, source, kind, size, memo] {
         QElapsedTimer clock;
         clock.start();
         QImage thumbnail;
@@ -92,8 +113,13 @@ void ThumbnailLoader::request(const QString& key, const QString& source, Kind ki
         const QString message = QString::fromStdString(error);
         QMetaObject::invokeMethod(
             this,
-            [this, key, thumbnail, sourceSize, message, ms] {
+            [this, key, thumbnail, sourceSize, message, ms, memo] {
                 --m_pending;
+                if (!memo.isEmpty() && !thumbnail.isNull()) {
+                    if (m_made.size() >= kRemembered)
+                        m_made.clear(); // 64 x 64 each: a few MiB at most
+                    m_made.insert(memo, Made {thumbnail, sourceSize});
+                }
                 Q_EMIT ready(key, thumbnail, sourceSize, message, ms);
             },
             Qt::QueuedConnection);

@@ -7,11 +7,15 @@
 // the machine's cores are shared with the renderer.
 //
 // request() queues a job; ready() arrives on the GUI thread with the key it was asked for.
-// Destroying the loader drops queued jobs and waits for the running one.
+// Destroying the loader drops queued jobs and waits for the running one. Texture thumbnails are
+// remembered by file, modification time and size: asking again (another material's slots, the
+// same file in another slot) answers from memory without decoding the map again, which matters
+// once the window has released its decoded copy (ui/SceneController releaseMapPixels).
 
 #include "core/Image.h"
 #include "core/MapImage.h"
 
+#include <QHash>
 #include <QImage>
 #include <QObject>
 #include <QSize>
@@ -47,6 +51,11 @@ Q_SIGNALS:
         const QString& key, const QImage& image, QSize sourceSize, const QString& error, double milliseconds);
 
 private:
+    struct Made {
+        QImage image;
+        QSize sourceSize;
+    };
+    QHash<QString, Made> m_made; // texture thumbnails by file|time|size (GUI thread only)
     QThreadPool m_pool;
     std::atomic<bool> m_stopping {false};
     std::atomic<int> m_pending {0};

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace facet {
 
@@ -187,8 +188,15 @@ int ViewportRenderer::holdBackUnreadyMaps(RenderScene& frame, std::string* probl
                 continue;
             }
             ++heldBack;
-            if (!textures.request(map.image, path, map.timestamp, settings.colorSpace))
+            if (!map.image->hasPixels()) {
+                // Released once on the GPU, and its texture is gone (a new context, another
+                // colour space): the file must be decoded again (SceneController::reloadMaps).
+                if (std::find(m_releasedMapsNeeded.begin(), m_releasedMapsNeeded.end(), path)
+                    == m_releasedMapsNeeded.end())
+                    m_releasedMapsNeeded.push_back(path);
+            } else if (!textures.request(map.image, path, map.timestamp, settings.colorSpace)) {
                 *problem = textures.problem();
+            }
             // The previous version of a file that is being reloaded, else the factor alone.
             if (const auto previous = textures.readyTimestamp(path, settings.colorSpace)) {
                 map.timestamp = *previous;
@@ -205,6 +213,16 @@ int ViewportRenderer::queueUploads(const SceneController& scene)
     RenderScene frame = scene.scene(m_ibl);
     std::string problem;
     return holdBackUnreadyMaps(frame, &problem);
+}
+
+std::vector<std::string> ViewportRenderer::takeReleasedMapsNeeded()
+{
+    return std::exchange(m_releasedMapsNeeded, {});
+}
+
+bool ViewportRenderer::textureReady(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace) const
+{
+    return m_renderer->textureCache().isReady(path, timestamp, colorSpace);
 }
 
 bool ViewportRenderer::hasPendingUploads() const

@@ -18,6 +18,7 @@
 //
 // Every call needs the viewport's context current; destroy it with the context current.
 
+#include "core/Image.h"
 #include "render/GLInfo.h"
 #include "render/IblPrecompute.h"
 #include "render/RenderStats.h"
@@ -28,6 +29,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace facet {
 
@@ -91,6 +93,14 @@ public:
     };
     UploadProgress uploadSlice(double budgetMs);
 
+    // Whether the texture of a map file (as the scene keys it) is complete on the GPU
+    // (SceneController::releaseMapPixels asks before it frees a decoded copy).
+    bool textureReady(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace) const;
+    // The maps whose decoded pixels were released and whose textures frames since the last call
+    // needed and did not find (a new GL context, another colour space): to be decoded again
+    // (SceneController::reloadMaps).
+    std::vector<std::string> takeReleasedMapsNeeded();
+
 private:
     // (Re)makes `target` at width x height when its size differs.
     static bool ensureTarget(std::unique_ptr<Framebuffer>& target, int width, int height, std::string* error);
@@ -107,6 +117,7 @@ private:
     std::string m_iblError; // the precompute failed for this key: do not retry every frame
     ViewportFrameStats m_stats;
     GLInfo m_glInfo;
+    std::vector<std::string> m_releasedMapsNeeded;
 };
 
 } // namespace facet

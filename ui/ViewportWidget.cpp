@@ -120,6 +120,16 @@ void ViewportWidget::paintGL()
     m_stats = m_renderer->lastFrame();
     m_lastError = ok ? QString() : QString::fromStdString(error);
     m_uploads->frameDrawn(); // maps the frame could not show yet go up between frames
+    // Memory: once a frame shows every map from the GPU, the decoded copies go; a released map
+    // needed again (a new context, another colour space) is decoded again, off this paint.
+    if (std::vector<std::string> reload = m_renderer->takeReleasedMapsNeeded(); !reload.empty()) {
+        QTimer::singleShot(0, m_scene, [scene = m_scene, reload] { scene->reloadMaps(reload); });
+    } else if (ok && !m_stats.loadingMaps && m_stats.mapsHeldBack == 0 && m_stats.textureProblem.empty()) {
+        ViewportRenderer* renderer = m_renderer.get();
+        m_scene->releaseMapPixels([renderer](const std::string& path, std::int64_t timestamp, ColorEncoding space) {
+            return renderer->textureReady(path, timestamp, space);
+        });
+    }
     if (precompute) {
         m_announcedIbl = false;
         Q_EMIT iblPrecomputeFinished(m_scene->environmentName(), m_stats.iblMs);
