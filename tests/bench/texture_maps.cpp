@@ -401,6 +401,16 @@ int runHeadless(const QString& folder, int frames)
     ok = ok && addConfig("five 2K maps", textured, defaultLevel);
     if (ok)
         configs.back().trilinear = !configs.back().trilinear;
+    // What packing occlusion into the metallic-roughness texture would give: four fetches.
+    ok = ok && addConfig("five 2K maps, occlusion read from the metallic-roughness file", textured, defaultLevel);
+    if (ok) {
+        RenderMaterial& material = configs.back().scene.materials[0];
+        const auto metallic = std::size_t(MapSlot::Metallic);
+        const auto occlusion = std::size_t(MapSlot::Occlusion);
+        material.maps[occlusion] = material.maps[metallic];
+        material.material.maps[occlusion].path = material.material.maps[metallic].path;
+        material.material.maps[occlusion].channel = MapChannel::R;
+    }
     ok = ok && addConfig("five 2K maps, metallic and roughness fetched apart", textured, defaultLevel);
     if (ok) {
         RenderMapImage& roughness = configs.back().scene.materials[0].maps[std::size_t(MapSlot::Roughness)];
