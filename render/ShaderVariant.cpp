@@ -123,12 +123,39 @@ SurfaceFeatures surfaceFeaturesFor(const ShadingModel& model)
     return f;
 }
 
+namespace {
+
+// Whether a slot's texture can change the result: at factor 0 metallic, roughness and emission
+// are 0 whatever the texture says, occlusion at strength 0 is 1, and a normal map at strength 0
+// is the geometric normal. Such a map is not sampled (DESIGN.md: a constant map samples no
+// texture); the CPU twin gives the same values (core/MaterialInputs.h).
+bool textureMatters(const Material& material, MapSlot slot)
+{
+    switch (slot) {
+    case MapSlot::Metallic:
+        return material.metallic() != 0.0;
+    case MapSlot::Roughness:
+        return material.roughness() != 0.0;
+    case MapSlot::Occlusion:
+        return material.occlusionStrength() != 0.0;
+    case MapSlot::Normal:
+        return material.normalStrength() != 0.0;
+    case MapSlot::Emissive:
+        return material.emissive() != glm::dvec3(0.0);
+    case MapSlot::BaseColor:
+        break;
+    }
+    return true;
+}
+
+} // namespace
+
 SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMapImage)[kMapSlotCount],
                                    bool hasPunctualLights, bool irradianceFromSH)
 {
     SurfaceFeatures f = surfaceFeaturesFor(material.shading);
     for (int i = 0; i < kMapSlotCount; ++i)
-        if (hasMapImage[i] && material.maps[std::size_t(i)].hasTexture())
+        if (hasMapImage[i] && material.maps[std::size_t(i)].hasTexture() && textureMatters(material, MapSlot(i)))
             f = f | mapFeature(MapSlot(i));
     if (material.alphaMode == AlphaMode::Mask)
         f = f | SurfaceFeature::AlphaMask;

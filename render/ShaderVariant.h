@@ -108,7 +108,8 @@ struct SurfaceVariantKey {
 };
 
 // The flags a material + scene need: map bits from the material's textures (only where an image
-// is given), model bits from its ShadingModel, the alpha mode, lights when any enabled light exists.
+// is given, and not where the factor makes the texture irrelevant: metallic, roughness or
+// emission at 0, occlusion or normal strength 0), model bits from its ShadingModel, the alpha mode, lights when any enabled light exists.
 SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMapImage)[kMapSlotCount],
                                    bool hasPunctualLights, bool irradianceFromSH);
 SurfaceFeatures surfaceFeaturesFor(const ShadingModel& model);

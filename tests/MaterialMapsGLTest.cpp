@@ -202,6 +202,19 @@ const std::vector<Row>& rows()
              m.map(MapSlot::Roughness).uv.offset = {0.3, 0.1};
              useMap(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R, ColorEncoding::SRGB);
          }},
+        // Maps whose factor hides them (not sampled, render/ShaderVariant textureMatters): the
+        // GPU without the fetch must still equal the twin, which reads them.
+        {"maps-hidden-by-factors",
+         [](Material& m, const QString& f) {
+             useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
+             m.setFactor(MapSlot::Metallic, 0.0);
+             useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
+             m.setFactor(MapSlot::Occlusion, 0.0);
+             useNormal(m, f);
+             m.setFactor(MapSlot::Normal, 0.0);
+             useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+             m.map(MapSlot::Emissive).factor = glm::dvec4(0.0, 0.0, 0.0, 1.0);
+         }},
         {"uv-scale",
          [](Material& m, const QString& f) {
              useBaseColor(m, f);

@@ -179,6 +179,8 @@ private Q_SLOTS:
     void initTestCase();
     void cleanupTestCase();
     void variantDefines();
+    void irrelevantMapsAreNotSampled_data();
+    void irrelevantMapsAreNotSampled();
     void sharedTexels_data();
     void sharedTexels();
     void toneMappingMatchesCpu();
@@ -262,6 +264,53 @@ void RendererGLTest::variantDefines()
     QCOMPARE(debugViewFromString("white-furnace").value(), DebugView::WhiteFurnace);
     QCOMPARE(std::string(toString(DebugView::BaseColor)), std::string("base-color"));
     QVERIFY(!debugViewFromString("bogus"));
+}
+
+void RendererGLTest::irrelevantMapsAreNotSampled_data()
+{
+    // Every slot has a texture; one factor changes; which slots sample their texture.
+    QTest::addColumn<int>("slot");
+    QTest::addColumn<double>("factor");
+    QTest::addColumn<bool>("sampled");
+    const auto row = [](const char* name, MapSlot slot, double factor, bool sampled) {
+        QTest::newRow(name) << int(slot) << factor << sampled;
+    };
+    row("metallic 0", MapSlot::Metallic, 0.0, false);
+    row("metallic 0.5", MapSlot::Metallic, 0.5, true);
+    row("roughness 0", MapSlot::Roughness, 0.0, false);
+    row("roughness 1", MapSlot::Roughness, 1.0, true);
+    row("occlusion strength 0", MapSlot::Occlusion, 0.0, false);
+    row("occlusion strength 0.3", MapSlot::Occlusion, 0.3, true);
+    row("normal strength 0", MapSlot::Normal, 0.0, false);
+    row("normal strength 2", MapSlot::Normal, 2.0, true);
+    row("emissive black", MapSlot::Emissive, 0.0, false);
+    row("emissive 0.1", MapSlot::Emissive, 0.1, true);
+    row("base colour black (alpha still read)", MapSlot::BaseColor, 0.0, true);
+}
+
+void RendererGLTest::irrelevantMapsAreNotSampled()
+{
+    QFETCH(int, slot);
+    QFETCH(double, factor);
+    QFETCH(bool, sampled);
+    Material material;
+    bool hasImage[kMapSlotCount] = {};
+    for (MapSlot s : kAllMapSlots) {
+        material.map(s).path = std::string("/t/") + toString(s) + ".png";
+        material.map(s).factor = glm::dvec4(1.0);
+        hasImage[int(s)] = true;
+    }
+    if (MapSlot(slot) == MapSlot::Emissive)
+        material.map(MapSlot::Emissive).factor = glm::dvec4(factor, factor, factor, 1.0);
+    else if (MapSlot(slot) == MapSlot::BaseColor)
+        material.setBaseColor(glm::dvec3(factor));
+    else
+        material.setFactor(MapSlot(slot), factor);
+    const SurfaceFeatures features = surfaceFeaturesFor(material, hasImage, false, false);
+    for (MapSlot s : kAllMapSlots)
+        QCOMPARE(hasFeature(features, mapFeature(s)), s == MapSlot(slot) ? sampled : true);
+    if (!sampled && MapSlot(slot) == MapSlot::Normal)
+        QVERIFY(!hasFeature(features, SurfaceFeature::HasNormalMap)); // no tangent frame either
 }
 
 void RendererGLTest::sharedTexels_data()
