@@ -343,6 +343,7 @@ void RendererGLTest::sharedTexels()
     const MapSlot slots[3] = {MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion};
     std::map<QChar, std::shared_ptr<const MapImage>> images;
     Material material;
+    material.setFactor(MapSlot::Metallic, 1.0); // a map at factor 0 is not sampled at all
     bool hasImage[kMapSlotCount] = {};
     std::array<const void*, kMapSlotCount> textures {};
     for (int i = 0; i < 3; ++i) {
