@@ -164,12 +164,8 @@ std::optional<Image> Image::load(const std::string& path, std::string* error, Im
         if (stats)
             *stats = replaced;
         return image;
-    } catch (const std::bad_alloc&) {
-        setImageError(error, kFunction, path, "out of memory");
-    } catch (const std::exception& e) {
-        setImageError(error, kFunction, path, e.what());
     } catch (...) {
-        setImageError(error, kFunction, path, "unknown error while reading");
+        setImageErrorFromException(error, kFunction, path, "reading");
     }
     return std::nullopt;
 }
@@ -273,12 +269,8 @@ bool Image::save(const std::string& path, std::string* error, bool alpha) const
             return false;
         }
         return true;
-    } catch (const std::bad_alloc&) {
-        setImageError(error, kFunction, path, "out of memory");
-    } catch (const std::exception& e) {
-        setImageError(error, kFunction, path, e.what());
     } catch (...) {
-        setImageError(error, kFunction, path, "unknown error while writing");
+        setImageErrorFromException(error, kFunction, path, "writing");
     }
     return false;
 }

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <exception>
 #include <filesystem>
+#include <new>
 #include <system_error>
 
 #include "core/GltfImport.h"
@@ -66,6 +68,20 @@ void setImageError(
 {
     if (error)
         *error = std::string(function) + ": " + path + ": " + oneLine(problem);
+}
+
+void setImageErrorFromException(
+    std::string* error, const char* function, const std::string& path, const char* doing)
+{
+    try {
+        throw;
+    } catch (const std::bad_alloc&) {
+        setImageError(error, function, path, "out of memory");
+    } catch (const std::exception& e) {
+        setImageError(error, function, path, e.what());
+    } catch (...) {
+        setImageError(error, function, path, std::string("unknown error while ") + doing);
+    }
 }
 
 ImageReader::~ImageReader() = default;

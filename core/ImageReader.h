@@ -57,5 +57,9 @@ private:
 // "<function>: <path>: <problem>" on one line (OIIO's messages can span several lines).
 void setImageError(
     std::string* error, const char* function, const std::string& path, const std::string& problem);
+// The same for the exception being handled (call it in a catch block): "out of memory" for
+// std::bad_alloc, the exception's text, else "unknown error while <doing>" ("reading", "writing").
+void setImageErrorFromException(
+    std::string* error, const char* function, const std::string& path, const char* doing);
 
 } // namespace facet

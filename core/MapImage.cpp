@@ -347,12 +347,8 @@ std::optional<MapImage> MapImage::load(
         }
         input.close();
         return map;
-    } catch (const std::bad_alloc&) {
-        setImageError(error, kFunction, path, "out of memory");
-    } catch (const std::exception& e) {
-        setImageError(error, kFunction, path, e.what());
     } catch (...) {
-        setImageError(error, kFunction, path, "unknown error while reading");
+        setImageErrorFromException(error, kFunction, path, "reading");
     }
     return std::nullopt;
 }
