@@ -230,8 +230,16 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
     }
     if (o.parser.isSet(o.mesh))
         project.view.mesh = o.parser.value(o.mesh).toStdString();
-    if (o.parser.isSet(o.view))
-        project.view.debugView = o.parser.value(o.view).toStdString();
+    if (o.parser.isSet(o.view)) {
+        const QString name = o.parser.value(o.view);
+        if (!debugViewFromString(name.toStdString())) {
+            *error = QStringLiteral("--view: unknown debug view '%1' (expected one of: %2)")
+                         .arg(name, QString::fromStdString(debugViewNameList()));
+            *exitCode = kExitUsage;
+            return std::nullopt;
+        }
+        project.view.debugView = name.toStdString();
+    }
     if (o.parser.isSet(o.quality)) {
         const auto quality = iblQualityFromString(o.parser.value(o.quality).toStdString());
         if (!quality) {
@@ -272,17 +280,6 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
     std::string problem;
     if (!project.validate(&problem)) {
         *error = QString::fromStdString(problem);
-        return std::nullopt;
-    }
-    // An unknown debug view would silently render the shaded image: refuse it, naming the field.
-    if (!debugViewFromString(project.view.debugView)) {
-        const QString names = QString::fromStdString(debugViewNameList());
-        const QString name = QString::fromStdString(project.view.debugView);
-        *error = o.parser.isSet(o.view)
-            ? QStringLiteral("--view: unknown debug view '%1' (expected one of: %2)").arg(name, names)
-            : QStringLiteral("%1: view.debugView: unknown debug view \"%2\" (expected one of: %3)")
-                  .arg(positional.first(), name, names);
-        *exitCode = o.parser.isSet(o.view) ? kExitUsage : kExitFailure;
         return std::nullopt;
     }
     *exitCode = 0;

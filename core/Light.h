@@ -35,6 +35,10 @@ glm::dvec3 colorFromKelvin(double kelvin);
 inline constexpr double kMinKelvin = 1667.0;
 inline constexpr double kMaxKelvin = 25000.0;
 
+// The most lights a project holds: the surface shader's light loop has a fixed size, and the
+// ground truth must see exactly the lights the renderer draws (Project::validate refuses more).
+inline constexpr int kMaxLights = 8;
+
 struct Light {
     std::string name = "Light";
     LightType type = LightType::Directional;

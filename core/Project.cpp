@@ -1,5 +1,7 @@
 #include "core/Project.h"
 
+#include "core/DebugView.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -638,6 +640,11 @@ bool ViewSettings::validate(std::string* problem) const
         return fail("ocioView: must be set when ocioDisplay is (\"" + ocioDisplay + "\")", problem);
     if (debugView.empty())
         return fail("debugView: must not be empty (\"none\" shows the shaded image)", problem);
+    // An unknown view would silently show the shaded image.
+    if (!debugViewFromString(debugView))
+        return fail("debugView: unknown debug view \"" + debugView + "\" (expected one of: "
+                + debugViewNameList() + ")",
+            problem);
     if (mesh.empty())
         return fail("mesh: must not be empty (\"sphere\" is the built-in sphere)", problem);
     if (msaaSamples != 1 && msaaSamples != 2 && msaaSamples != 4 && msaaSamples != 8 && msaaSamples != 16)
@@ -686,6 +693,10 @@ bool Project::validate(std::string* problem) const
                 problem);
     if (!environment.validate(&local))
         return fail("environment." + local, problem);
+    if (lights.size() > std::size_t(kMaxLights))
+        return fail("lights: " + std::to_string(lights.size()) + " lights; Facet draws at most "
+                + std::to_string(kMaxLights),
+            problem);
     for (std::size_t i = 0; i < lights.size(); ++i)
         if (!lights[i].validate(&local))
             return fail("lights[" + std::to_string(i) + "]." + local, problem);

@@ -57,7 +57,7 @@ struct ViewSettings {
     // An OCIO display/view pair (from $OCIO's config); both empty: Facet's own transform above.
     std::string ocioDisplay;
     std::string ocioView;
-    std::string debugView = "none"; // a render/ debug view name ("none": the shaded image)
+    std::string debugView = "none"; // a debug view name, core/DebugView.h ("none": the shaded image)
     // "sphere" (a built-in mesh name: lower-case letters, digits, '-') or a mesh file path.
     std::string mesh = "sphere";
     int msaaSamples = 4; // 1 (off), 2, 4, 8 or 16

@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "core/DebugView.h"
+#include "core/Light.h"
 #include "core/Material.h"
 #include "core/ShadingModel.h"
 
@@ -57,48 +59,6 @@ inline constexpr SurfaceFeatures operator|(SurfaceFeature a, SurfaceFeature b) {
 inline constexpr SurfaceFeatures operator|(SurfaceFeatures a, SurfaceFeature b) { return a | uint32_t(b); }
 inline constexpr bool hasFeature(SurfaceFeatures set, SurfaceFeature f) { return (set & uint32_t(f)) != 0; }
 
-// What the surface pass writes. None is the shaded image; the others show one intermediate value
-// (glTF Sample Viewer's DEBUG_* views). Values are linear and go through the tone-mapping pass
-// like the image (use ToneMapper::None, exposure 0 to see them raw).
-enum class DebugView : int {
-    None = 0,
-    BaseColor,        // linear base colour
-    ShadingNormal,    // n * 0.5 + 0.5, after normal mapping
-    GeometricNormal,  // interpolated vertex normal * 0.5 + 0.5
-    Metallic,
-    Roughness,        // perceptual roughness as used (after the clamp)
-    Occlusion,
-    Distribution,     // D(n.h) for the first light (or l = reflect(-v, n) without lights)
-    Visibility,       // V = G / (4 n.l n.v), same l
-    Fresnel,          // F(v.h) of the composition, same l
-    Irradiance,       // E(n) / pi: the irradiance map or SH, rotated, times intensity
-    IblDiffuse,       // diffuse image-based light
-    PrefilteredRadiance, // prefiltered(R, lodFromRoughness(r))
-    BrdfLut,          // the DFG table at (n.v, r): RGB = scale, bias, E
-    IblSpecular,      // specular image-based light
-    IblTotal,         // IBL diffuse + specular (with occlusion)
-    DirectLight,      // punctual lights only
-    WhiteFurnace,     // white material (base colour 1) under a uniform environment of radiance 1
-    Uv,               // texture coordinate 0 as it reaches the maps' UV transforms: (u, v, 0), not wrapped
-    Tangent,          // the unit tangent (after Gram-Schmidt against the geometric normal) * 0.5 + 0.5;
-                      // 0.5 grey without a normal map (no tangent frame in that variant)
-    Emissive,         // emitted radiance
-    Alpha,            // base colour alpha (factor x texture)
-    NonFinite,        // 1 where the shaded radiance is NaN, Inf or negative before the output guard, else 0
-};
-inline constexpr int kDebugViewCount = 23;
-// "none", "base-color", "shading-normal", "geometric-normal", "metallic", "roughness",
-// "occlusion", "distribution", "visibility", "fresnel", "irradiance", "ibl-diffuse",
-// "prefiltered-radiance", "brdf-lut", "ibl-specular", "ibl-total", "direct-light",
-// "white-furnace", "uv", "tangent", "emissive", "alpha", "non-finite" (ViewSettings::debugView,
-// facet render --view).
-const char* toString(DebugView view);
-// What the window shows: "Off (shaded image)", "Base colour", ..., "Distribution D", ...
-const char* debugViewLabel(DebugView view);
-// Also accepts the older "d", "v" and "f" for distribution, visibility and fresnel.
-std::optional<DebugView> debugViewFromString(const std::string& name);
-// "none, base-color, ..., distribution (or d), ...": the accepted names, for messages.
-std::string debugViewNameList();
 
 struct SurfaceVariantKey {
     SurfaceFeatures features = 0;
@@ -127,7 +87,7 @@ bool samplesOwnTexture(SurfaceFeatures features, MapSlot slot);
 
 // One "#define NAME" per set bit, in bit order, then "DEBUG_VIEW <n>" and "MAX_LIGHTS <n>".
 std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key);
-inline constexpr int kMaxPunctualLights = 8;
+inline constexpr int kMaxPunctualLights = kMaxLights; // core/Light.h
 
 // Compiled surface programs by key. Needs the GL context current for get() and destruction.
 class SurfaceProgramCache {

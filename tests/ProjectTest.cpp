@@ -147,7 +147,7 @@ Project everythingChanged(const QString& root)
     v.gamma = 2.4;
     v.ocioDisplay = "sRGB - Display";
     v.ocioView = "ACES 1.0 - SDR Video";
-    v.debugView = "normal";
+    v.debugView = "shading-normal";
     v.mesh = under("meshes/bunny.glb");
     v.msaaSamples = 8;
     v.background = BackgroundMode::Color;
@@ -415,6 +415,20 @@ private Q_SLOTS:
         QCOMPARE(project->currentMaterial, 0);
     }
 
+    // The limits' good side: eight lights, a debug view by its older alias.
+    void limitsAreInclusive()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("limits.json"));
+        QVERIFY(writeAll(path, minimalWith(R"("lights": [{}, {}, {}, {}, {}, {}, {}, {}], "view": {"debugView": "d"})")));
+        std::string error;
+        const auto loaded = Project::load(path.toStdString(), &error);
+        QVERIFY2(loaded, error.c_str());
+        QCOMPARE(loaded->lights.size(), std::size_t(kMaxLights));
+        QCOMPARE(loaded->view.debugView, std::string("d"));
+    }
+
     void brokenFilesGiveClearErrors_data()
     {
         QTest::addColumn<QByteArray>("content");
@@ -479,6 +493,12 @@ private Q_SLOTS:
                                      << QStringLiteral("lights[0].innerConeAngle");
         QTest::newRow("unknown tone mapper") << minimalWith(R"("view": {"toneMapper": "filmic"})")
                                              << QStringLiteral("view.toneMapper: unknown name \"filmic\"");
+        QTest::newRow("unknown debug view") << minimalWith(R"("view": {"debugView": "normals"})")
+                                            << QStringLiteral("view.debugView: unknown debug view \"normals\" "
+                                                              "(expected one of: none, base-color, shading-normal");
+        QTest::newRow("nine lights")
+            << minimalWith(R"("lights": [{}, {}, {}, {}, {}, {}, {}, {}, {}])")
+            << QStringLiteral("lights: 9 lights; Facet draws at most 8");
         QTest::newRow("unknown light type") << minimalWith(R"("lights": [{"type": "area"}])")
                                             << QStringLiteral("lights[0].type: unknown name \"area\"");
         QTest::newRow("unknown visibility")

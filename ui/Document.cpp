@@ -26,17 +26,6 @@ QString fromStd(const std::string& text)
     return QString::fromStdString(text);
 }
 
-// What core cannot check because the names are render/'s: a project whose debug view the renderer
-// does not know would silently show the shaded image, so it is refused like any other bad name.
-bool checkRendererNames(const Project& project, std::string* problem)
-{
-    if (debugViewFromString(project.view.debugView))
-        return true;
-    *problem = "view.debugView: unknown debug view \"" + project.view.debugView
-        + "\" (expected one of: " + debugViewNameList() + ")";
-    return false;
-}
-
 } // namespace
 
 Document::Document(QObject* parent)
@@ -194,10 +183,6 @@ bool Document::open(const QString& path, QString* error)
         *error = fromStd(problem);
         return false;
     }
-    if (!checkRendererNames(*project, &problem)) {
-        *error = QStringLiteral("Document::open: %1: %2").arg(absolute, fromStd(problem));
-        return false;
-    }
     m_warnings = fromStd(warning).trimmed();
     m_sourceAssetPath.clear();
     replaceProject(*project, absolute, false);
@@ -276,7 +261,7 @@ bool Document::recover(const QString& recoveryPath, QString* error)
     std::string warning;
     const std::string baseDir = QFileInfo(recoveryPath).absolutePath().toStdString();
     std::optional<Project> project = Project::fromJson(*object, baseDir, &problem, &warning);
-    if (!project || !checkRendererNames(*project, &problem)) {
+    if (!project) {
         *error = QStringLiteral("Document::recover: %1: %2").arg(recoveryPath, fromStd(problem));
         return false;
     }
