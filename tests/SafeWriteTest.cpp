@@ -49,14 +49,16 @@ bool contains(const std::string& text, const QString& part)
     return text.find(part.toStdString()) != std::string::npos;
 }
 
-Project projectVariant(int variant, int lights)
+// `extraMaterials` more materials make the file larger (each ~1.5 KiB of JSON).
+Project projectVariant(int variant, int extraMaterials)
 {
     Project project = Project::defaultProject();
     project.material().name = variant == 0 ? "Old" : "New";
     project.material().setFactor(MapSlot::Roughness, variant == 0 ? 0.3 : 0.7);
-    for (int i = 0; i < lights; ++i) {
-        project.lights.push_back(Light::defaultDirectional());
-        project.lights.back().intensity = 1.0 + i;
+    for (int i = 0; i < extraMaterials; ++i) {
+        project.materials.push_back(project.materials.front());
+        project.materials.back().name = "Extra " + std::to_string(i);
+        project.materials.back().setFactor(MapSlot::Metallic, 1.0 / (1.0 + i));
     }
     return project;
 }
@@ -110,7 +112,7 @@ bool writeWith(Writer writer, const QString& path, int variant, std::string* err
     case Writer::ProjectSmall:
         return projectVariant(variant, 0).save(file, error);
     case Writer::ProjectLarge:
-        return projectVariant(variant, variant == 0 ? 0 : 80).save(file, error);
+        return projectVariant(variant, variant == 0 ? 0 : 24).save(file, error);
     case Writer::Preset: {
         MaterialPreset preset;
         preset.id = "mine";
