@@ -90,6 +90,170 @@ ImageLoadStats Image::sanitize()
     return stats;
 }
 
+namespace {
+
+// Fills what the file does not have. Two channels are grey + alpha (what PNG and TIFF mean by
+// two channels), unless they are named R and G (a two-channel EXR, e.g. a normal map's X and Y),
+// which stay red and green.
+void fillMissingChannels(std::vector<glm::vec4>& pixels, int channels, bool twoColourChannels)
+{
+    for (glm::vec4& pixel : pixels) {
+        switch (channels) {
+        case 1:
+            pixel = glm::vec4(pixel.x, pixel.x, pixel.x, 1.0f);
+            break;
+        case 2:
+            pixel = twoColourChannels ? glm::vec4(pixel.x, pixel.y, 0.0f, 1.0f)
+                                      : glm::vec4(pixel.x, pixel.x, pixel.x, pixel.y);
+            break;
+        case 3:
+            pixel.w = 1.0f;
+            break;
+        default:
+            break;
+        }
+    }
+}
+
+// For each of `outputs` bins over `inputs` source texels, where it starts: bin i covers
+// [i * inputs / outputs, max(start + 1, (i + 1) * inputs / outputs)) (outputs <= inputs: the
+// bins tile the source).
+int binStart(int i, int inputs, int outputs)
+{
+    return int(std::int64_t(i) * inputs / outputs);
+}
+
+} // namespace
+
+namespace {
+
+// The bins of the box filter along one axis: output i averages source texels [begin[i], end[i]).
+struct Bins {
+    std::vector<int> begin;
+    std::vector<int> end;
+    Bins(int inputs, int outputs)
+        : begin(std::size_t(outputs))
+        , end(std::size_t(outputs))
+    {
+        for (int i = 0; i < outputs; ++i) {
+            begin[std::size_t(i)] = binStart(i, inputs, outputs);
+            end[std::size_t(i)] = std::max(begin[std::size_t(i)] + 1, binStart(i + 1, inputs, outputs));
+        }
+    }
+};
+
+// Adds source row `y` (width texels) into the sums of every output row whose bin holds it.
+// `firstRow`: the first output row whose bin may still hold it (advanced here).
+void accumulateRow(const glm::vec4* row, int y, const Bins& columns, const Bins& rows, int* firstRow,
+    std::vector<glm::dvec4>& sums)
+{
+    const int outputWidth = int(columns.begin.size());
+    const int outputHeight = int(rows.begin.size());
+    while (*firstRow < outputHeight && rows.end[std::size_t(*firstRow)] <= y)
+        ++*firstRow;
+    for (int j = *firstRow; j < outputHeight && rows.begin[std::size_t(j)] <= y; ++j)
+        for (int x = 0; x < outputWidth; ++x) {
+            glm::dvec4 sum(0.0);
+            for (int sx = columns.begin[std::size_t(x)]; sx < columns.end[std::size_t(x)]; ++sx)
+                sum += glm::dvec4(row[sx]);
+            sums[std::size_t(j) * std::size_t(outputWidth) + std::size_t(x)] += sum;
+        }
+}
+
+Image averagesOf(const std::vector<glm::dvec4>& sums, const Bins& columns, const Bins& rows)
+{
+    const int width = int(columns.begin.size());
+    const int height = int(rows.begin.size());
+    Image out(width, height, glm::vec4(0.0f));
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const double count = double(columns.end[std::size_t(x)] - columns.begin[std::size_t(x)])
+                * double(rows.end[std::size_t(y)] - rows.begin[std::size_t(y)]);
+            out.at(x, y) = glm::vec4(sums[std::size_t(y) * std::size_t(width) + std::size_t(x)] / count);
+        }
+    return out;
+}
+
+} // namespace
+
+Image Image::boxFiltered(int width, int height) const
+{
+    width = std::max(width, 1);
+    height = std::max(height, 1);
+    const Bins columns(m_width, width);
+    const Bins rows(m_height, height);
+    std::vector<glm::dvec4> sums(std::size_t(width) * std::size_t(height), glm::dvec4(0.0));
+    int firstRow = 0;
+    for (int y = 0; y < m_height; ++y)
+        accumulateRow(&at(0, y), y, columns, rows, &firstRow, sums);
+    Image out = averagesOf(sums, columns, rows);
+    out.m_encoding = m_encoding;
+    return out;
+}
+
+std::optional<Image> Image::loadBoxFiltered(const std::string& path, bool linear,
+    const std::function<std::pair<int, int>(int width, int height)>& sizeFor, std::string* error,
+    int* sourceWidth, int* sourceHeight)
+{
+    constexpr const char* kFunction = "Image::loadBoxFiltered";
+    try {
+        std::optional<ImageReader> reader = ImageReader::open(path, kFunction, error);
+        if (!reader || !reader->checkHeader(kFunction, error))
+            return std::nullopt;
+        OIIO::ImageInput* input = &reader->input();
+        const OIIO::ImageSpec& spec = reader->spec();
+        if (spec.width > kMaxDimension || spec.height > kMaxDimension) {
+            setImageError(error, kFunction, path,
+                "image too large: " + std::to_string(spec.width) + "x" + std::to_string(spec.height)
+                    + " exceeds the limit of " + std::to_string(kMaxDimension) + " pixels per side");
+            return std::nullopt;
+        }
+        if (sourceWidth)
+            *sourceWidth = spec.width;
+        if (sourceHeight)
+            *sourceHeight = spec.height;
+        const auto [width, height] = sizeFor(spec.width, spec.height);
+        const Bins columns(spec.width, std::max(width, 1));
+        const Bins rows(spec.height, std::max(height, 1));
+        std::vector<glm::dvec4> sums(columns.begin.size() * rows.begin.size(), glm::dvec4(0.0));
+
+        // Bands of about a million texels (16 MiB as float RGBA), whatever the image's size.
+        const int bandRows = std::clamp(int((std::size_t(1) << 20) / std::size_t(spec.width)), 1, spec.height);
+        Image band(spec.width, bandRows, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        band.m_encoding = reader->encoding();
+        const int readChannels = std::min(spec.nchannels, 4);
+        const OIIO::stride_t xstride = sizeof(glm::vec4);
+        const OIIO::stride_t ystride = xstride * OIIO::stride_t(spec.width);
+        int firstRow = 0;
+        for (int start = 0; start < spec.height; start += bandRows) {
+            const int count = std::min(bandRows, spec.height - start);
+            if (!input->read_scanlines(0, 0, start, start + count, 0, 0, readChannels, OIIO::TypeDesc::FLOAT,
+                    band.data(), xstride, ystride)) {
+                const std::string reason = input->geterror();
+                setImageError(error, kFunction, path,
+                    reason.empty() ? std::string("could not read the pixels") : reason);
+                return std::nullopt;
+            }
+            fillMissingChannels(band.m_pixels, spec.nchannels, reader->twoColourChannels());
+            band.sanitize();
+            if (linear && band.m_encoding == ColorEncoding::SRGB)
+                band.toLinear(); // (sets the band's encoding: the next bands are read as linear)
+            for (int r = 0; r < count; ++r)
+                accumulateRow(&band.at(0, r), start + r, columns, rows, &firstRow, sums);
+            band.m_encoding = reader->encoding();
+        }
+        input->close();
+        Image out = averagesOf(sums, columns, rows);
+        out.m_encoding = linear ? ColorEncoding::Linear : reader->encoding();
+        out.m_sourceChannels = spec.nchannels;
+        out.m_colorSpaceName = reader->colorSpaceName();
+        return out;
+    } catch (...) {
+        setImageErrorFromException(error, kFunction, path, "reading");
+    }
+    return std::nullopt;
+}
+
 std::optional<Image> Image::load(const std::string& path, std::string* error, ImageLoadStats* stats)
 {
     constexpr const char* kFunction = "Image::load";
@@ -139,26 +303,7 @@ std::optional<Image> Image::load(const std::string& path, std::string* error, Im
         }
         input->close();
 
-        // Fill what the file does not have. Two channels are grey + alpha (what PNG and TIFF
-        // mean by two channels), unless they are named R and G (a two-channel EXR, e.g. a
-        // normal map's X and Y), which stay red and green.
-        const bool twoColourChannels = reader->twoColourChannels();
-        for (glm::vec4& pixel : image.m_pixels) {
-            switch (spec.nchannels) {
-            case 1:
-                pixel = glm::vec4(pixel.x, pixel.x, pixel.x, 1.0f);
-                break;
-            case 2:
-                pixel = twoColourChannels ? glm::vec4(pixel.x, pixel.y, 0.0f, 1.0f)
-                                          : glm::vec4(pixel.x, pixel.x, pixel.x, pixel.y);
-                break;
-            case 3:
-                pixel.w = 1.0f;
-                break;
-            default:
-                break;
-            }
-        }
+        fillMissingChannels(image.m_pixels, spec.nchannels, reader->twoColourChannels());
 
         const ImageLoadStats replaced = image.sanitize();
         if (stats)

@@ -4,8 +4,10 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -75,6 +77,18 @@ public:
     // "Image::load: <path>: <reason>". `stats` receives what sanitisation replaced; a caller
     // shows it as a warning.
     static std::optional<Image> load(const std::string& path, std::string* error, ImageLoadStats* stats = nullptr);
+
+    // Reads `path` a band of rows at a time into a box-filtered copy (each output pixel the mean
+    // of the source pixels under it; the bins of Image::boxFiltered), never holding the whole
+    // image: a thumbnail of an 8K HDRI costs a band, not 512 MiB of floats. `sizeFor(width,
+    // height)` gives the output size from the file's; the samples are load()'s (sanitised), and
+    // sRGB-encoded files are decoded to linear first when `linear` (as Environment::load does).
+    // *sourceWidth / *sourceHeight get the file's size. Errors as load()'s.
+    static std::optional<Image> loadBoxFiltered(const std::string& path, bool linear,
+        const std::function<std::pair<int, int>(int width, int height)>& sizeFor, std::string* error,
+        int* sourceWidth = nullptr, int* sourceHeight = nullptr);
+    // The same filter over an image in memory.
+    Image boxFiltered(int width, int height) const;
 
     // Writes through OpenImageIO by extension: .exr gets linear half floats (RGBA, or RGB when
     // `alpha` is false; values clamped to the finite half range), .hdr/.pfm floats, every other

@@ -164,6 +164,8 @@ private Q_SLOTS:
     void pngSaveWritesValuesAsGiven();
     void saveReplacesExistingFile();
     void failedSaveLeavesNothingBehind();
+    void boxFilteredReadMatchesTheWholeImage_data();
+    void boxFilteredReadMatchesTheWholeImage();
 };
 
 void ImageTest::constructAndAccess()
@@ -637,6 +639,79 @@ void ImageTest::failedSaveLeavesNothingBehind()
     QVERIFY(!Image().save(empty.toStdString(), &error));
     QVERIFY2(error.rfind("Image::save: " + empty.toStdString() + ": ", 0) == 0, error.c_str());
     QVERIFY(!QFile::exists(empty));
+}
+
+// Image::loadBoxFiltered (thumbnails of large HDRIs read a band at a time) gives what loading
+// the whole image and filtering it gives: several bands (2048 x 1024 is two), bins wider and
+// narrower than a texel, special values sanitised, an sRGB file decoded.
+void ImageTest::boxFilteredReadMatchesTheWholeImage_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<int>("width");
+    QTest::addColumn<int>("height");
+    QTest::addColumn<int>("outWidth");
+    QTest::addColumn<int>("outHeight");
+    QTest::newRow("EXR in two bands, to 64 x 32") << "big.exr" << 2048 << 1024 << 64 << 32;
+    QTest::newRow("EXR, odd sizes") << "odd.exr" << 301 << 97 << 37 << 11;
+    QTest::newRow("EXR, enlarged") << "small.exr" << 16 << 8 << 64 << 32;
+    QTest::newRow("sRGB PNG, decoded") << "ldr.png" << 300 << 150 << 64 << 32;
+}
+
+void ImageTest::boxFilteredReadMatchesTheWholeImage()
+{
+    QFETCH(QString, name);
+    QFETCH(int, width);
+    QFETCH(int, height);
+    QFETCH(int, outWidth);
+    QFETCH(int, outHeight);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(name);
+    const bool png = name.endsWith(QLatin1String(".png"));
+    std::vector<float> values(std::size_t(width) * std::size_t(height) * 3);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                const float wave = 0.5f + 0.45f * std::sin(0.05f * float(x * (c + 1)) + 0.11f * float(y));
+                values[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3 + std::size_t(c)]
+                    = png ? wave : wave * 4.0f;
+            }
+    if (!png) {
+        values[3 * 5] = std::numeric_limits<float>::quiet_NaN(); // sanitised to 0
+        values[3 * 7 + 1] = -2.0f;
+        values[3 * (std::size_t(width) * std::size_t(height / 2) + std::size_t(width / 3))] = 5000.0f; // a sun
+    }
+    QVERIFY(writeFixture(path, width, height, 3, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::HALF, values));
+
+    std::string error;
+    std::optional<Image> whole = Image::load(path.toStdString(), &error);
+    QVERIFY2(whole, error.c_str());
+    whole->toLinear();
+    const Image expected = whole->boxFiltered(outWidth, outHeight);
+    int sourceWidth = 0;
+    int sourceHeight = 0;
+    const auto filtered = Image::loadBoxFiltered(
+        path.toStdString(), true, [&](int, int) { return std::pair<int, int>(outWidth, outHeight); }, &error,
+        &sourceWidth, &sourceHeight);
+    QVERIFY2(filtered, error.c_str());
+    QCOMPARE(sourceWidth, width);
+    QCOMPARE(sourceHeight, height);
+    QCOMPARE(filtered->width(), outWidth);
+    QCOMPARE(filtered->height(), outHeight);
+    QCOMPARE(filtered->encoding(), ColorEncoding::Linear);
+    for (int y = 0; y < outHeight; ++y)
+        for (int x = 0; x < outWidth; ++x)
+            for (int c = 0; c < 4; ++c) {
+                const float a = filtered->at(x, y)[c];
+                const float b = expected.at(x, y)[c];
+                QVERIFY2(std::isfinite(a) && std::abs(a - b) <= 1e-5f * std::max(1.0f, std::abs(b)),
+                    qPrintable(QStringLiteral("(%1, %2)[%3]: %4, whole image %5").arg(x).arg(y).arg(c).arg(a).arg(b)));
+            }
+    // A missing file is named.
+    const auto missing = Image::loadBoxFiltered(dir.filePath(QStringLiteral("none.exr")).toStdString(), true,
+        [](int w, int h) { return std::pair<int, int>(w, h); }, &error);
+    QVERIFY(!missing);
+    QVERIFY2(error.find("none.exr") != std::string::npos, error.c_str());
 }
 
 QTEST_GUILESS_MAIN(ImageTest)

@@ -1,5 +1,6 @@
 #include "ui/ThumbnailLoader.h"
 
+#include "core/AssetLibrary.h"
 #include "core/Environment.h"
 #include "core/GltfImport.h"
 #include "core/MapImageCache.h"
@@ -17,28 +18,6 @@ namespace facet {
 namespace {
 
 constexpr int kRemembered = 256;
-
-// The average of the source texels under each thumbnail pixel (a box filter: an equirect's sun
-// must not vanish between point samples).
-std::vector<glm::vec4> boxDownsample(const Image& image, int width, int height)
-{
-    std::vector<glm::vec4> out(std::size_t(width) * std::size_t(height), glm::vec4(0.0f));
-    for (int y = 0; y < height; ++y) {
-        const int y0 = y * image.height() / height;
-        const int y1 = std::max(y0 + 1, (y + 1) * image.height() / height);
-        for (int x = 0; x < width; ++x) {
-            const int x0 = x * image.width() / width;
-            const int x1 = std::max(x0 + 1, (x + 1) * image.width() / width);
-            glm::dvec4 sum(0.0);
-            for (int sy = y0; sy < y1; ++sy)
-                for (int sx = x0; sx < x1; ++sx)
-                    sum += glm::dvec4(image.at(sx, sy));
-            out[std::size_t(y) * std::size_t(width) + std::size_t(x)]
-                = glm::vec4(sum / double((x1 - x0) * (y1 - y0)));
-        }
-    }
-    return out;
-}
 
 QSize fitted(QSize source, QSize box)
 {
@@ -97,11 +76,27 @@ void ThumbnailLoader::request(const QString& key, const QString& source, Kind ki
                 std::optional<Environment> environment;
                 if (const auto builtin = Environment::builtinFromName(spec))
                     environment = Environment::builtin(*builtin, 256); // procedural: make it small
-                else
+                else if (spec.rfind("uniform:", 0) == 0)
                     environment = Environment::fromSpec(spec, &error);
                 if (environment) {
                     sourceSize = QSize(environment->image().width(), environment->image().height());
                     thumbnail = environmentThumbnail(environment->image(), size);
+                } else if (error.empty()) {
+                    // A file: read a band at a time into the thumbnail's box filter, never whole
+                    // (an 8K HDRI is 512 MiB as floats; 18 library thumbnails held 67 MB at once).
+                    int width = 0;
+                    int height = 0;
+                    const auto sizeFor = [size](int w, int h) {
+                        const QSize fit = fitted(QSize(w, h), size);
+                        return std::pair<int, int>(fit.width(), fit.height());
+                    };
+                    const std::optional<std::string> file
+                        = AssetLibrary::fileForSpec(spec, "Environment::fromSpec", &error);
+                    if (file)
+                        if (const auto filtered = Image::loadBoxFiltered(*file, true, sizeFor, &error, &width, &height)) {
+                            sourceSize = QSize(width, height);
+                            thumbnail = displayThumbnail(*filtered);
+                        }
                 }
             } else if (const std::shared_ptr<const MapImage> image
                 = MapImageCache::shared().load(source.toStdString(), &error)) {
@@ -131,12 +126,17 @@ QImage ThumbnailLoader::environmentThumbnail(const Image& equirect, QSize size)
     if (equirect.isEmpty())
         return {};
     const QSize target = fitted(QSize(equirect.width(), equirect.height()), size);
-    const std::vector<glm::vec4> pixels = boxDownsample(equirect, target.width(), target.height());
+    return displayThumbnail(equirect.boxFiltered(target.width(), target.height()));
+}
+
+QImage ThumbnailLoader::displayThumbnail(const Image& radiance)
+{
+    const QSize target(radiance.width(), radiance.height());
     QImage image(target, QImage::Format_RGB32);
     for (int y = 0; y < target.height(); ++y) {
         auto* line = reinterpret_cast<QRgb*>(image.scanLine(y));
         for (int x = 0; x < target.width(); ++x) {
-            const glm::vec4& p = pixels[std::size_t(y) * std::size_t(target.width()) + std::size_t(x)];
+            const glm::vec4& p = radiance.at(x, y);
             const glm::dvec3 display = tonemap::displayTransform(
                 glm::dvec3(p.r, p.g, p.b), 0.0, ToneMapper::KhronosNeutral, DisplayEncoding::SRGB, 2.2);
             line[x] = qRgb(toByte(display.r), toByte(display.g), toByte(display.b));

@@ -42,6 +42,8 @@ public:
 
     // The conversions the jobs run (public for tests and for callers that already hold an image).
     static QImage environmentThumbnail(const Image& equirect, QSize size);
+    // Linear radiance already at the thumbnail's size, tone-mapped and encoded for display.
+    static QImage displayThumbnail(const Image& radiance);
     static QImage textureThumbnail(const MapImage& image, QSize size);
 
 Q_SIGNALS:
