@@ -1,0 +1,208 @@
+// Surface shader variants (render/ShaderVariant): which defines a material and scene ask for,
+// which maps are sampled at all, which scalar slots share one fetch, and that those variants
+// compile. The rendered values of the same variants are checked against the CPU twin in
+// MaterialMapsGLTest.
+#include <epoxy/gl.h>
+
+#include "core/MapImage.h"
+#include "core/Material.h"
+#include "render/HeadlessGLContext.h"
+#include "render/ShaderVariant.h"
+
+#include "TestSupport.h"
+
+#include <QtTest/QTest>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+using namespace facet;
+
+class ShaderVariantGLTest : public QObject {
+    Q_OBJECT
+public:
+    static void initMain() { facet::test::forgetDisplayServer(); }
+
+private Q_SLOTS:
+    void initTestCase();
+    void cleanupTestCase();
+    void variantDefines();
+    void irrelevantMapsAreNotSampled_data();
+    void irrelevantMapsAreNotSampled();
+    void sharedTexels_data();
+    void sharedTexels();
+
+private:
+    std::optional<HeadlessGLContext> m_context; // sharedTexels compiles its variants
+};
+
+void ShaderVariantGLTest::initTestCase()
+{
+    std::string error;
+    m_context = HeadlessGLContext::create(&error);
+    QVERIFY2(m_context, error.c_str());
+}
+
+void ShaderVariantGLTest::cleanupTestCase()
+{
+    m_context.reset();
+}
+
+void ShaderVariantGLTest::variantDefines()
+{
+    Material material; // constant inputs
+    const bool noImages[kMapSlotCount] = {};
+    SurfaceFeatures features = surfaceFeaturesFor(material, noImages, false, false);
+    SurfaceVariantKey key {features, DebugView::None};
+    std::vector<std::string> defines = surfaceDefines(key);
+    auto has = [&defines](const std::string& name) {
+        return std::find(defines.begin(), defines.end(), name) != defines.end();
+    };
+    // Default model: glTF, GGX, correlated Smith, Schlick, fresnel_mix, multi-scatter on.
+    QVERIFY(has("MULTI_SCATTER"));
+    for (const char* absent : {"HAS_BASE_COLOR_MAP", "HAS_NORMAL_MAP", "HAS_METALLIC_MAP",
+             "HAS_ROUGHNESS_MAP", "HAS_OCCLUSION_MAP", "HAS_PUNCTUAL_LIGHTS", "COMPOSITION_LEARNOPENGL",
+             "DISTRIBUTION_BECKMANN", "VISIBILITY_SCHLICK", "IRRADIANCE_SH"})
+        QVERIFY2(!has(absent), absent);
+    QVERIFY(has("DEBUG_VIEW 0"));
+
+    // A texture path without an image is still constant (nothing to sample).
+    material.map(MapSlot::Normal).path = "/x/normal.png";
+    QVERIFY(!hasFeature(surfaceFeaturesFor(material, noImages, false, false), SurfaceFeature::HasNormalMap));
+    const bool normalImage[kMapSlotCount] = {false, true, false, false, false};
+    material.shading = ShadingModel::learnOpenGL();
+    features = surfaceFeaturesFor(material, normalImage, true, true);
+    key = {features, DebugView::WhiteFurnace};
+    defines = surfaceDefines(key);
+    for (const char* present : {"HAS_NORMAL_MAP", "HAS_PUNCTUAL_LIGHTS", "IRRADIANCE_SH",
+             "COMPOSITION_LEARNOPENGL", "VISIBILITY_SCHLICK", "MULTI_SCATTER", "DEBUG_VIEW 17"})
+        QVERIFY2(has(present), present);
+    QVERIFY(!has("HAS_BASE_COLOR_MAP"));
+    QCOMPARE(debugViewFromString("white-furnace").value(), DebugView::WhiteFurnace);
+    QCOMPARE(std::string(toString(DebugView::BaseColor)), std::string("base-color"));
+    QVERIFY(!debugViewFromString("bogus"));
+}
+
+void ShaderVariantGLTest::irrelevantMapsAreNotSampled_data()
+{
+    // Every slot has a texture; one factor changes; which slots sample their texture.
+    QTest::addColumn<int>("slot");
+    QTest::addColumn<double>("factor");
+    QTest::addColumn<bool>("sampled");
+    const auto row = [](const char* name, MapSlot slot, double factor, bool sampled) {
+        QTest::newRow(name) << int(slot) << factor << sampled;
+    };
+    row("metallic 0", MapSlot::Metallic, 0.0, false);
+    row("metallic 0.5", MapSlot::Metallic, 0.5, true);
+    row("roughness 0", MapSlot::Roughness, 0.0, false);
+    row("roughness 1", MapSlot::Roughness, 1.0, true);
+    row("occlusion strength 0", MapSlot::Occlusion, 0.0, false);
+    row("occlusion strength 0.3", MapSlot::Occlusion, 0.3, true);
+    row("normal strength 0", MapSlot::Normal, 0.0, false);
+    row("normal strength 2", MapSlot::Normal, 2.0, true);
+    row("emissive black", MapSlot::Emissive, 0.0, false);
+    row("emissive 0.1", MapSlot::Emissive, 0.1, true);
+    row("base colour black (alpha still read)", MapSlot::BaseColor, 0.0, true);
+}
+
+void ShaderVariantGLTest::irrelevantMapsAreNotSampled()
+{
+    QFETCH(int, slot);
+    QFETCH(double, factor);
+    QFETCH(bool, sampled);
+    Material material;
+    bool hasImage[kMapSlotCount] = {};
+    for (MapSlot s : kAllMapSlots) {
+        material.map(s).path = std::string("/t/") + toString(s) + ".png";
+        material.map(s).factor = glm::dvec4(1.0);
+        hasImage[int(s)] = true;
+    }
+    if (MapSlot(slot) == MapSlot::Emissive)
+        material.map(MapSlot::Emissive).factor = glm::dvec4(factor, factor, factor, 1.0);
+    else if (MapSlot(slot) == MapSlot::BaseColor)
+        material.setBaseColor(glm::dvec3(factor));
+    else
+        material.setFactor(MapSlot(slot), factor);
+    const SurfaceFeatures features = surfaceFeaturesFor(material, hasImage, false, false);
+    for (MapSlot s : kAllMapSlots)
+        QCOMPARE(hasFeature(features, mapFeature(s)), s == MapSlot(slot) ? sampled : true);
+    if (!sampled && MapSlot(slot) == MapSlot::Normal)
+        QVERIFY(!hasFeature(features, SurfaceFeature::HasNormalMap)); // no tangent frame either
+}
+
+void ShaderVariantGLTest::sharedTexels_data()
+{
+    // Which scalar slots read one texture (a letter per slot: metallic, roughness, occlusion;
+    // equal letters are one decoded file, '-' no map), a change that keeps two apart, and the
+    // fetches the variant shares.
+    QTest::addColumn<QString>("files");
+    QTest::addColumn<QString>("change");
+    QTest::addColumn<SurfaceFeatures>("expected");
+    using F = SurfaceFeature;
+    const SurfaceFeatures none = 0;
+    QTest::newRow("three files") << "abc" << "" << none;
+    QTest::newRow("metallic-roughness packed") << "aab" << "" << SurfaceFeatures(F::RoughnessTexelFromMetallic);
+    QTest::newRow("ORM packed") << "aaa" << "" << (F::RoughnessTexelFromMetallic | F::OcclusionTexelFromMetallic);
+    QTest::newRow("metallic-occlusion packed") << "aba" << "" << SurfaceFeatures(F::OcclusionTexelFromMetallic);
+    QTest::newRow("roughness-occlusion packed") << "abb" << "" << SurfaceFeatures(F::OcclusionTexelFromRoughness);
+    QTest::newRow("roughness-occlusion, no metallic") << "-bb" << "" << SurfaceFeatures(F::OcclusionTexelFromRoughness);
+    QTest::newRow("ORM, roughness UV offset") << "aaa" << "roughness-uv" << SurfaceFeatures(F::OcclusionTexelFromMetallic);
+    QTest::newRow("ORM, occlusion sRGB") << "aaa" << "occlusion-srgb" << SurfaceFeatures(F::RoughnessTexelFromMetallic);
+    QTest::newRow("ORM, metallic path without image") << "aaa" << "metallic-no-image"
+                                                     << SurfaceFeatures(F::OcclusionTexelFromRoughness);
+}
+
+void ShaderVariantGLTest::sharedTexels()
+{
+    QFETCH(QString, files);
+    QFETCH(QString, change);
+    QFETCH(SurfaceFeatures, expected);
+    const MapSlot slots[3] = {MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion};
+    std::map<QChar, std::shared_ptr<const MapImage>> images;
+    Material material;
+    material.setFactor(MapSlot::Metallic, 1.0); // a map at factor 0 is not sampled at all
+    bool hasImage[kMapSlotCount] = {};
+    std::array<const void*, kMapSlotCount> textures {};
+    for (int i = 0; i < 3; ++i) {
+        if (files[i] == QLatin1Char('-'))
+            continue;
+        auto& image = images[files[i]];
+        if (!image)
+            image = std::make_shared<const MapImage>(4, 4, MapLayout::Rgb, MapSampleType::UInt8);
+        const auto slot = std::size_t(slots[i]);
+        material.maps[slot].path = "/t/" + QString(files[i]).toStdString() + ".png";
+        hasImage[slot] = true;
+        textures[slot] = image.get();
+    }
+    if (change == QLatin1String("roughness-uv"))
+        material.map(MapSlot::Roughness).uv.offset = {0.5, 0.0};
+    if (change == QLatin1String("occlusion-srgb"))
+        material.map(MapSlot::Occlusion).colorSpace = ColorEncoding::SRGB;
+    if (change == QLatin1String("metallic-no-image")) {
+        hasImage[std::size_t(MapSlot::Metallic)] = false;
+        textures[std::size_t(MapSlot::Metallic)] = nullptr;
+    }
+    const SurfaceFeatures features = surfaceFeaturesFor(material, hasImage, false, false);
+    const SurfaceFeatures shared = sharedTexelFeatures(material, features, textures);
+    QCOMPARE(shared, expected);
+    // A slot that reuses a texel binds and declares no sampler of its own; the program compiles.
+    const SurfaceFeatures all = features | shared;
+    for (int i = 0; i < 3; ++i)
+        QCOMPARE(samplesOwnTexture(all, slots[i]),
+            files[i] != QLatin1Char('-') && hasImage[std::size_t(slots[i])]
+                && !(slots[i] == MapSlot::Roughness && hasFeature(shared, SurfaceFeature::RoughnessTexelFromMetallic))
+                && !(slots[i] == MapSlot::Occlusion
+                    && (hasFeature(shared, SurfaceFeature::OcclusionTexelFromMetallic)
+                        || hasFeature(shared, SurfaceFeature::OcclusionTexelFromRoughness))));
+    SurfaceProgramCache programs;
+    std::string error;
+    QVERIFY2(programs.get(SurfaceVariantKey {all, DebugView::None}, &error), error.c_str());
+}
+
+QTEST_GUILESS_MAIN(ShaderVariantGLTest)
+#include "ShaderVariantGLTest.moc"
