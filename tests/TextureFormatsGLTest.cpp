@@ -32,6 +32,18 @@ using namespace facet;
 
 namespace {
 
+// A GL 4.5 implementation named `renderer` (GL_RENDERER), for the filtering policies.
+GLInfo glInfoOf(const QString& renderer, float maxAnisotropy = 16.0f)
+{
+    GLInfo info;
+    info.major = 4;
+    info.minor = 5;
+    info.renderer = renderer.toStdString();
+    info.softwareRasterizer = isSoftwareRendererName(info.renderer);
+    info.maxAnisotropy = maxAnisotropy;
+    return info;
+}
+
 constexpr int kWidth = 24;
 constexpr int kHeight = 10;
 
@@ -384,12 +396,7 @@ void TextureFormatsGLTest::anisotropyPolicy()
     QFETCH(bool, interactive);
     QFETCH(QByteArray, setting);
     QFETCH(float, expected);
-    GLInfo info;
-    info.major = 4;
-    info.minor = 5;
-    info.renderer = renderer.toStdString();
-    info.softwareRasterizer = isSoftwareRendererName(info.renderer);
-    info.maxAnisotropy = maximum;
+    const GLInfo info = glInfoOf(renderer, maximum);
     if (setting.isEmpty())
         qunsetenv("FACET_ANISOTROPY");
     else
@@ -419,11 +426,7 @@ void TextureFormatsGLTest::mipFilterPolicy()
     QFETCH(QString, renderer);
     QFETCH(QByteArray, setting);
     QFETCH(bool, trilinear);
-    GLInfo info;
-    info.major = 4;
-    info.minor = 5;
-    info.renderer = renderer.toStdString();
-    info.softwareRasterizer = isSoftwareRendererName(info.renderer);
+    const GLInfo info = glInfoOf(renderer);
     if (setting.isEmpty())
         qunsetenv("FACET_TEXTURE_MIPS");
     else
