@@ -348,6 +348,15 @@ std::optional<Environment> Environment::load(
     return Environment(std::move(*image), path);
 }
 
+namespace {
+const std::string kUniformPrefix = "uniform:";
+} // namespace
+
+bool Environment::namesFile(const std::string& spec)
+{
+    return !spec.empty() && spec.rfind(kUniformPrefix, 0) != 0 && !builtinFromName(spec);
+}
+
 std::optional<Environment> Environment::fromSpec(
     const std::string& spec, std::string* error, std::string* warning)
 {
@@ -359,7 +368,6 @@ std::optional<Environment> Environment::fromSpec(
                      "uniform:VALUE)";
         return std::nullopt;
     }
-    static const std::string kUniformPrefix = "uniform:";
     if (spec.rfind(kUniformPrefix, 0) == 0) {
         const std::string_view values = std::string_view(spec).substr(kUniformPrefix.size());
         std::vector<double> numbers;

@@ -54,6 +54,9 @@ public:
     static std::optional<Environment> fromSpec(const std::string& spec, std::string* error,
                                                std::string* warning = nullptr);
     static std::optional<Builtin> builtinFromName(const std::string& name);
+    // Whether fromSpec reads `spec` from a file (a path or a library reference), not a built-in
+    // or a uniform environment made in memory.
+    static bool namesFile(const std::string& spec);
     static const char* builtinName(Builtin which);
 
     // Takes any equirect image; its pixels are sanitize()d (radiance is finite and non-negative).

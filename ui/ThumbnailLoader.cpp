@@ -76,12 +76,12 @@ void ThumbnailLoader::request(const QString& key, const QString& source, Kind ki
                 std::optional<Environment> environment;
                 if (const auto builtin = Environment::builtinFromName(spec))
                     environment = Environment::builtin(*builtin, 256); // procedural: make it small
-                else if (spec.rfind("uniform:", 0) == 0)
+                else if (!Environment::namesFile(spec))
                     environment = Environment::fromSpec(spec, &error);
                 if (environment) {
                     sourceSize = QSize(environment->image().width(), environment->image().height());
                     thumbnail = environmentThumbnail(environment->image(), size);
-                } else if (error.empty()) {
+                } else if (Environment::namesFile(spec)) {
                     // A file: read a band at a time into the thumbnail's box filter, never whole
                     // (an 8K HDRI is 512 MiB as floats; 18 library thumbnails held 67 MB at once).
                     int width = 0;
