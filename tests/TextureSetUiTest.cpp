@@ -81,13 +81,22 @@ bool dropUrls(QWidget* target, const QList<QUrl>& urls)
 // open dialog, a folder for a folder dialog) the way a user would: choose it, press Open.
 bool clickAndAnswerFileDialog(QPushButton* button, const QString& path)
 {
+    // Polls for the dialog for as long as the click is under way (a loaded machine may take
+    // seconds to show it); a modal widget that is not the file dialog, still there after 30 s, is
+    // rejected so that the test fails instead of hanging.
     bool answered = false;
+    QElapsedTimer clock;
+    clock.start();
     QTimer poll;
     poll.setInterval(50);
     QObject::connect(&poll, &QTimer::timeout, [&] {
-        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
-        if (!dialog)
+        QWidget* modal = QApplication::activeModalWidget();
+        auto* dialog = qobject_cast<QFileDialog*>(modal);
+        if (!dialog) {
+            if (auto* other = qobject_cast<QDialog*>(modal); other && clock.elapsed() > 30000)
+                other->reject();
             return;
+        }
         poll.stop();
         if (dialog->fileMode() == QFileDialog::Directory)
             dialog->setDirectory(path); // nothing typed: the dialog answers its directory
@@ -97,7 +106,6 @@ bool clickAndAnswerFileDialog(QPushButton* button, const QString& path)
         static_cast<QDialog*>(dialog)->accept(); // QFileDialog::accept, as the Open button does
     });
     poll.start();
-    QTimer::singleShot(10000, &poll, [&poll] { poll.stop(); }); // a dialog that never came
     QTest::mouseClick(button, Qt::LeftButton);
     return answered;
 }
