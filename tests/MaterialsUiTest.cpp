@@ -153,8 +153,7 @@ bool clickAndChooseColour(QAbstractButton* button, const QColor& color)
         answered = true;
         dialog->accept();
     });
-    poll.start();
-    QTimer::singleShot(10000, &poll, [&poll] { poll.stop(); });
+    poll.start(); // for as long as the click lasts: a loaded machine may take seconds to show it
     QTest::mouseClick(button, Qt::LeftButton);
     return answered;
 }
