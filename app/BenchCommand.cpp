@@ -22,7 +22,7 @@
 
 #include "BenchReport.h"
 #include "GroundTruthCache.h"
-#include "render/OffscreenRender.h"
+#include "render/FrameRenderer.h"
 
 #include "core/Environment.h"
 #include "core/GroundTruth.h"
@@ -459,8 +459,7 @@ private:
     const BenchRequest& m_request;
     GroundTruthCache m_truthCache;
     // GL objects: created once the context is current, destroyed before it goes.
-    std::unique_ptr<IblPrecompute> m_precompute;
-    std::unique_ptr<Renderer> m_renderer;
+    std::unique_ptr<FrameRenderer> m_frames;
     std::vector<BenchRow> m_rows;
     int m_truthsComputed = 0;
     int m_truthsCached = 0;
@@ -524,9 +523,9 @@ bool BenchRun::measure(const BenchConfig& config, const BenchEnvironment& enviro
     std::string error;
     for (int i = 0; i < m_request.repeats; ++i) {
         ibl.reset();
-        m_precompute->clearMemoryCache();
+        m_frames->precompute().clearMemoryCache();
         IblStats stats;
-        ibl = m_precompute->prepare(assets.environment, config.settings, &stats, &error);
+        ibl = m_frames->lighting(assets.environment, config.settings, &stats, &error);
         if (!ibl) {
             fail(error);
             return false;
@@ -536,7 +535,7 @@ bool BenchRun::measure(const BenchConfig& config, const BenchEnvironment& enviro
         for (const Scene& scene : scenes)
             visibilities.insert(scene.project.material().shading.visibility);
         for (Visibility visibility : visibilities)
-            if (!m_precompute->dfgTable(config.settings, visibility, &stats, &error)) {
+            if (!m_frames->precompute().dfgTable(config.settings, visibility, &stats, &error)) {
                 fail(error);
                 return false;
             }
@@ -558,22 +557,22 @@ bool BenchRun::measure(const BenchConfig& config, const BenchEnvironment& enviro
     bool warmedUp = false;
     for (const Scene& scene : scenes) {
         RenderScene renderScene = sceneFromProject(scene.project, assets, ibl, options);
-        if (!addDfgTables(*m_precompute, config.settings, renderScene, nullptr, &error)) { // memory hits
+        if (!m_frames->addDfgTables(config.settings, renderScene, nullptr, &error)) { // memory hits
             fail(error);
             return false;
         }
         if (!warmedUp) {
             // The first frame of a shader variant compiles it (and llvmpipe JITs it): not a frame's cost.
-            if (!renderOffscreen(*m_renderer, renderScene, m_request.size, m_request.size,
-                    OffscreenOutput::LinearRadiance, &error)) {
+            if (!m_frames->renderImage(
+                    renderScene, m_request.size, m_request.size, FrameOutput::LinearRadiance, &error)) {
                 fail(error);
                 return false;
             }
             warmedUp = true;
         }
         const Clock::time_point start = Clock::now();
-        const std::optional<Image> image = renderOffscreen(*m_renderer, renderScene, m_request.size,
-            m_request.size, OffscreenOutput::LinearRadiance, &error);
+        const std::optional<Image> image
+            = m_frames->renderImage(renderScene, m_request.size, m_request.size, FrameOutput::LinearRadiance, &error);
         if (!image) {
             fail(error);
             return false;
@@ -622,8 +621,7 @@ int BenchRun::run()
     // The precompute never touches the user's IBL cache: no disk cache, and a private directory
     // in case a future version writes one anyway.
     QTemporaryDir scratch;
-    m_precompute = std::make_unique<IblPrecompute>(scratch.path(), /*useDiskCache=*/false);
-    m_renderer = std::make_unique<Renderer>();
+    m_frames = std::make_unique<FrameRenderer>(scratch.path(), /*useDiskCache=*/false);
     printHeader(context->info());
     std::fflush(stdout);
 
@@ -651,14 +649,14 @@ int BenchRun::run()
             IblSettings tiny = *IblSettings::preset("draft");
             tiny.cubeSize = 16;
             tiny.prefilterSize = 8;
-            if (!m_precompute->prepare(assets->environment, tiny, nullptr, &error)) {
+            if (!m_frames->lighting(assets->environment, tiny, nullptr, &error)) {
                 fail(error);
                 ok = false;
                 break;
             }
             // The DFG programs compile on first use, one per visibility term.
             for (const Scene& scene : scenes)
-                if (!m_precompute->dfgTable(
+                if (!m_frames->precompute().dfgTable(
                         tiny, scene.project.material().shading.visibility, nullptr, &error)) {
                     fail(error);
                     ok = false;
@@ -696,8 +694,7 @@ int BenchRun::run()
             break;
     }
     // GL objects go while the context is current.
-    m_renderer.reset();
-    m_precompute.reset();
+    m_frames.reset();
     if (!ok)
         return BenchCommand::kExitFailure;
 

@@ -1,7 +1,7 @@
 #include "RenderCommand.h"
 
 #include "CommandOptions.h"
-#include "render/OffscreenRender.h"
+#include "render/FrameRenderer.h"
 
 #include <cmath>
 #include <cstdio>
@@ -22,7 +22,6 @@
 #include "core/ProjectAssets.h"
 #include "core/ToneMap.h"
 #include "render/HeadlessGLContext.h"
-#include "render/IblPrecompute.h"
 #include "render/IblSettings.h"
 #include "render/RenderScene.h"
 #include "render/SceneFromProject.h"
@@ -369,29 +368,22 @@ int runGpu(const RenderRequest& request)
     Q_ASSERT(settings); // the project validated its quality name
     int exitCode = 0;
     {
-        IblPrecompute precompute;
+        FrameRenderer frames;
         IblStats iblStats;
-        const auto ibl = precompute.prepare(assets->environment, *settings, &iblStats, &error);
-        if (!ibl) {
+        const std::optional<RenderScene> scene = frames.prepare(
+            project, *assets, *settings, sceneOptionsFor(*settings, request.referenceView), &iblStats, &error);
+        if (!scene) {
             std::fprintf(stderr, "facet render: %s\n", error.c_str());
             return RenderCommand::kExitFailure;
         }
+        if (!frames.precompute().lastWarning().empty())
+            std::fprintf(stderr, "facet render: %s\n", frames.precompute().lastWarning().c_str());
 
-        RenderScene scene
-            = sceneFromProject(project, *assets, ibl, sceneOptionsFor(*settings, request.referenceView));
-        if (!addDfgTables(precompute, *settings, scene, &iblStats, &error)) {
-            std::fprintf(stderr, "facet render: %s\n", error.c_str());
-            return RenderCommand::kExitFailure;
-        }
-        if (!precompute.lastWarning().empty())
-            std::fprintf(stderr, "facet render: %s\n", precompute.lastWarning().c_str());
-
-        Renderer renderer;
+        Renderer& renderer = frames.renderer();
         renderer.setTimingEnabled(request.printStats);
         const bool png = QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower() == QStringLiteral("png");
-        const std::optional<Image> image
-            = renderOffscreen(renderer, scene, request.width, request.height,
-                              png ? OffscreenOutput::DisplayReferred : OffscreenOutput::LinearRadiance, &error);
+        const std::optional<Image> image = frames.renderImage(*scene, request.width, request.height,
+            png ? FrameOutput::DisplayReferred : FrameOutput::LinearRadiance, &error);
         if (!image) {
             std::fprintf(stderr, "facet render: %s\n", error.c_str());
             return RenderCommand::kExitFailure;

@@ -552,9 +552,29 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
 
     m_memory.emplace_front(key, result);
-    while (m_memory.size() > std::size_t(kMemoryEntries))
-        m_memory.pop_back();
+    trimMemoryCache();
     return finish(result);
+}
+
+std::size_t IblPrecompute::memoryBytes() const
+{
+    std::size_t total = 0;
+    for (const auto& entry : m_memory)
+        total += entry.second->bytes();
+    return total;
+}
+
+void IblPrecompute::setMemoryBudget(std::size_t bytes)
+{
+    m_memoryBudget = bytes;
+    trimMemoryCache();
+}
+
+void IblPrecompute::trimMemoryCache()
+{
+    // Least recently used out first; the newest set stays even when it alone is over budget.
+    while (m_memory.size() > 1 && memoryBytes() > m_memoryBudget)
+        m_memory.pop_back();
 }
 
 } // namespace facet

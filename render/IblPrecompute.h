@@ -12,7 +12,7 @@
 // are applied by the renderer at shading time, so changing them reruns nothing.
 //
 // Caching by content: results are keyed by (Environment::contentHash(), IblSettings::hash()),
-// kept in memory (the last kMemoryEntries) and on disk (core/IblDiskCache, $FACET_CACHE_DIR or
+// kept in memory (least recently used first out, within kMemoryBudgetBytes of GPU memory) and on disk (core/IblDiskCache, $FACET_CACHE_DIR or
 // QStandardPaths::CacheLocation/ibl). A DFG LUT is keyed by IblSettings::dfgHash(visibility)
 // (its size, samples and V; no environment), in memory for the object's life and on disk.
 //
@@ -28,6 +28,7 @@
 #include <QString>
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <list>
 #include <map>
@@ -57,7 +58,11 @@ class ShaderProgram;
 
 class IblPrecompute {
 public:
-    static constexpr int kMemoryEntries = 4;
+    // The memory cache's bound: the IBL sets least recently prepared are dropped (their textures
+    // go when no scene holds them) once the cached sets take more GPU memory than this. 256 MiB
+    // hold 12 sets of the high preset (~21 MB each) or 48 of the default (~5.3 MB): a 3x3
+    // environment grid at high quality (189 MB) stays resident, so orbiting it prepares nothing.
+    static constexpr std::size_t kMemoryBudgetBytes = std::size_t(256) << 20;
 
     // `cacheDirectory` empty: IblDiskCache::defaultDirectory(). `useDiskCache` false: memory only.
     explicit IblPrecompute(QString cacheDirectory = {}, bool useDiskCache = true);
@@ -84,6 +89,12 @@ public:
 
     // Drops the in-memory results (the disk cache stays): the next prepare() reads the disk.
     void clearMemoryCache();
+    // The memory cache: how many IBL sets it holds and their GPU bytes (IblTextures::bytes()).
+    std::size_t memoryEntries() const { return m_memory.size(); }
+    std::size_t memoryBytes() const;
+    // The bound the memory cache keeps to (kMemoryBudgetBytes unless set; tests set small ones).
+    // The set just prepared always stays, whatever its size.
+    void setMemoryBudget(std::size_t bytes);
     // The last warning (e.g. a corrupt disk-cache file that was ignored); also sent to qWarning().
     const std::string& lastWarning() const { return m_lastWarning; }
     const QString& cacheDirectory() const { return m_cacheDirectory; }
@@ -102,7 +113,10 @@ private:
     std::array<std::unique_ptr<ShaderProgram>, kVisibilityCount> m_dfgPrograms; // by int(Visibility)
     unsigned m_vertexArray = 0;
     unsigned m_framebuffer = 0;
+    void trimMemoryCache();
+
     std::list<std::pair<std::uint64_t, std::shared_ptr<const IblTextures>>> m_memory; // most recent first
+    std::size_t m_memoryBudget = kMemoryBudgetBytes;
     std::map<std::uint64_t, std::shared_ptr<const DfgLut>> m_dfg; // by IblDiskCache::key(0, dfgHash(V))
     std::string m_lastWarning;
 };

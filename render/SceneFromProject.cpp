@@ -80,4 +80,12 @@ RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets
     return scene;
 }
 
+SceneOptions sceneOptionsFor(const IblSettings& settings, bool referenceView)
+{
+    SceneOptions options;
+    options.referenceView = referenceView;
+    options.irradianceFromSH = settings.irradiance == IblSettings::Irradiance::SH;
+    return options;
+}
+
 } // namespace facet

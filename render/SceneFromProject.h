@@ -26,6 +26,10 @@ struct SceneOptions {
     bool irradianceFromSH = false;
 };
 
+// The SceneOptions that go with IBL `settings`: irradiance from the SH9 coefficients when the
+// settings choose them, the irradiance cubemap otherwise.
+SceneOptions sceneOptionsFor(const IblSettings& settings, bool referenceView);
+
 // The frame `project` describes, with `assets` (core/ProjectAssets.h: loadProjectAssets) and the
 // environment's IBL textures `ibl` (render/IblPrecompute; may be null for a background-only or
 // debug frame). Computes the dielectric average albedo the energy-preserving coupling needs.

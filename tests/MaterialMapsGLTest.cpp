@@ -4,7 +4,7 @@
 // strength, the DirectX green flip and the UV transform, and each kind of file in its own GPU
 // format (8-bit grey and grey + alpha, 16-bit PNG, float EXR). Each row is a project with texture files
 // on disk, rendered the way `facet render --reference-view` renders it (core/ProjectAssets loads
-// the maps, render/SceneFromProject builds the scene, render/OffscreenRender draws and reads back
+// the maps, render/SceneFromProject builds the scene, render/FrameRenderer draws and reads back
 // the RGBA16F target) by a fresh Renderer, so every map is uploaded in the row's first frame, as
 // after opening a project.
 //

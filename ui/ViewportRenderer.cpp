@@ -3,7 +3,7 @@
 
 #include "ui/ViewportRenderer.h"
 
-#include "render/Framebuffer.h"
+#include "render/FrameRenderer.h"
 #include "render/Renderer.h"
 #include "render/SceneFromProject.h"
 #include "render/TextureCache.h"
@@ -38,8 +38,7 @@ QString ViewportFrameStats::summary() const
 }
 
 ViewportRenderer::ViewportRenderer(const QString& cacheDirectory)
-    : m_precompute(std::make_unique<IblPrecompute>(cacheDirectory))
-    , m_renderer(std::make_unique<Renderer>())
+    : m_frames(std::make_unique<FrameRenderer>(cacheDirectory))
     , m_glInfo(queryCurrentGLInfo())
 {
 }
@@ -48,28 +47,12 @@ ViewportRenderer::~ViewportRenderer()
 {
     // GL objects go while the caller holds the context current: textures first, then their makers.
     m_ibl.reset();
-    m_hdr.reset();
-    m_display.reset();
-    m_renderer.reset();
-    m_precompute.reset();
+    m_frames.reset();
 }
 
 bool ViewportRenderer::needsIbl(const SceneController& scene) const
 {
     return m_iblKey != scene.iblKey();
-}
-
-bool ViewportRenderer::ensureTarget(
-    std::unique_ptr<Framebuffer>& target, int width, int height, std::string* error)
-{
-    if (target && target->width() == width && target->height() == height)
-        return true;
-    target.reset();
-    std::optional<Framebuffer> made = Framebuffer::create(width, height, FramebufferFormat::RGBA16F, error);
-    if (!made)
-        return false;
-    target = std::make_unique<Framebuffer>(std::move(*made));
-    return true;
 }
 
 bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFramebuffer, int width, int height,
@@ -95,7 +78,7 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
         std::string problem;
         IblStats iblStats;
         std::shared_ptr<const IblTextures> ibl
-            = m_precompute->prepare(scene.assets().environment, scene.iblSettings(), &iblStats, &problem);
+            = m_frames->lighting(scene.assets().environment, scene.iblSettings(), &iblStats, &problem);
         m_stats.ibl = iblStats;
         m_stats.iblMs = iblStats.msTotal;
         iblPrepared = true;
@@ -114,23 +97,19 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
     // While a texture set loads (files decoding, textures uploading) the frames are previews:
     // they only show progress, and a full frame on llvmpipe would stall the window for longer
     // than the whole upload. The frame after the last map is up is a full one.
-    m_stats.loadingMaps = scene.pendingMapLoads() > 0 || m_renderer->textureCache().hasPendingUploads();
+    m_stats.loadingMaps = scene.pendingMapLoads() > 0 || m_frames->textureCache().hasPendingUploads();
     if (m_stats.loadingMaps)
         scale = std::min(scale, kLoadingScale);
 
     scale = std::clamp(scale, 0.05, 1.0);
     const bool reduced = scale < 1.0;
-    const int renderWidth = std::max(1, int(std::lround(width * scale)));
-    const int renderHeight = std::max(1, int(std::lround(height * scale)));
     std::string problem;
-    if (!ensureTarget(m_hdr, renderWidth, renderHeight, &problem))
-        return fail(problem);
     m_stats.anisotropy = TextureFiltering::anisotropyFor(m_glInfo, reduced);
-    m_renderer->textureCache().setMaxAnisotropy(m_stats.anisotropy);
+    m_frames->textureCache().setMaxAnisotropy(m_stats.anisotropy);
     // The split-sum table of the material's visibility term: a memory hit in IblPrecompute after
     // the first frame that needed it; a BRDF switch loads or makes one table, nothing else.
     IblStats dfgStats;
-    if (!addDfgTables(*m_precompute, scene.iblSettings(), frame, &dfgStats, &problem))
+    if (!m_frames->addDfgTables(scene.iblSettings(), frame, &dfgStats, &problem))
         return fail(problem);
     if (dfgStats.passesRun > 0 || dfgStats.cacheHitsDisk > 0) {
         m_stats.iblMs += dfgStats.msTotal;
@@ -141,24 +120,10 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
         m_stats.ibl.msDfg += dfgStats.msDfg;
         m_stats.ibl.msTotal += dfgStats.msTotal;
     }
-    if (!m_renderer->render(frame, *m_hdr, &problem))
+    if (!m_frames->present(frame, targetFramebuffer, FrameRect {0, 0, width, height}, scale, &problem))
         return fail(problem);
-    if (!reduced) {
-        if (!m_renderer->toneMapTo(*m_hdr, targetFramebuffer, frame.view, &problem))
-            return fail(problem);
-    } else {
-        if (!ensureTarget(m_display, renderWidth, renderHeight, &problem))
-            return fail(problem);
-        if (!m_renderer->toneMap(*m_hdr, *m_display, frame.view, &problem))
-            return fail(problem);
-        // Stretch the small display-encoded image over the widget (bilinear).
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, m_display->framebufferId());
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);
-        glBlitFramebuffer(
-            0, 0, renderWidth, renderHeight, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, targetFramebuffer);
-    glViewport(0, 0, width, height);
+    const int renderWidth = m_frames->lastRenderWidth();
+    const int renderHeight = m_frames->lastRenderHeight();
     // Honest frame times: wait for the GPU (llvmpipe renders on the CPU anyway).
     glFinish();
 
@@ -167,13 +132,13 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
     m_stats.height = renderHeight;
     m_stats.reduced = reduced;
     m_stats.frameMs = double(clock.nsecsElapsed()) / 1e6 - m_stats.iblMs;
-    m_stats.render = m_renderer->lastFrameStats();
+    m_stats.render = m_frames->renderer().lastFrameStats();
     return true;
 }
 
 int ViewportRenderer::holdBackUnreadyMaps(RenderScene& frame, std::string* problem)
 {
-    TextureCache& textures = m_renderer->textureCache();
+    TextureCache& textures = m_frames->textureCache();
     problem->clear();
     int heldBack = 0;
     for (RenderMaterial& material : frame.materials)
@@ -222,17 +187,17 @@ std::vector<std::string> ViewportRenderer::takeReleasedMapsNeeded()
 
 bool ViewportRenderer::textureReady(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace) const
 {
-    return m_renderer->textureCache().isReady(path, timestamp, colorSpace);
+    return m_frames->textureCache().isReady(path, timestamp, colorSpace);
 }
 
 bool ViewportRenderer::hasPendingUploads() const
 {
-    return m_renderer->textureCache().hasPendingUploads();
+    return m_frames->textureCache().hasPendingUploads();
 }
 
 ViewportRenderer::UploadProgress ViewportRenderer::uploadSlice(double budgetMs)
 {
-    TextureCache& textures = m_renderer->textureCache();
+    TextureCache& textures = m_frames->textureCache();
     const TextureCache::SliceResult slice = textures.uploadSlice(budgetMs);
     return UploadProgress {slice.completed, textures.pendingUploads(), slice.milliseconds};
 }

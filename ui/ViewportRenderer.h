@@ -1,7 +1,7 @@
 #pragma once
-// The GPU side of the viewport (not a widget): owns the render::Renderer, the IBL precompute and
-// the HDR target in the viewport's GL context, and draws the SceneController's snapshot into the
-// widget's framebuffer. It runs the IBL precompute only when SceneController::iblKey() changed
+// The GPU side of the viewport (not a widget): the view's state around a render::FrameRenderer
+// (which owns the IBL results, the surface renderer and the targets in the viewport's GL
+// context), drawing the SceneController's snapshot into the widget's framebuffer. It runs the IBL precompute only when SceneController::iblKey() changed
 // (a new environment image or quality; the disk cache makes a second start fast), fetches the
 // split-sum DFG table of the material's visibility term when the frame needs one it has not
 // made yet (IblPrecompute caches them per variant), and otherwise only renders. At a scale
@@ -33,8 +33,7 @@
 
 namespace facet {
 
-class Framebuffer;
-class Renderer;
+class FrameRenderer;
 class SceneController;
 struct RenderScene;
 
@@ -102,16 +101,11 @@ public:
     std::vector<std::string> takeReleasedMapsNeeded();
 
 private:
-    // (Re)makes `target` at width x height when its size differs.
-    static bool ensureTarget(std::unique_ptr<Framebuffer>& target, int width, int height, std::string* error);
     // Takes out of `frame` the maps whose textures are not complete (the previous version of the
     // file where there is one) and queues their uploads; returns how many were held back.
     int holdBackUnreadyMaps(RenderScene& frame, std::string* problem);
 
-    std::unique_ptr<IblPrecompute> m_precompute;
-    std::unique_ptr<Renderer> m_renderer;
-    std::unique_ptr<Framebuffer> m_hdr; // the scene's linear radiance
-    std::unique_ptr<Framebuffer> m_display; // tone-mapped, reduced frames only (then stretched)
+    std::unique_ptr<FrameRenderer> m_frames;
     std::shared_ptr<const IblTextures> m_ibl;
     std::optional<std::uint64_t> m_iblKey; // SceneController::iblKey() of m_ibl
     std::string m_iblError; // the precompute failed for this key: do not retry every frame

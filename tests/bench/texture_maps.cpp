@@ -31,7 +31,7 @@
 #include "render/HeadlessGLContext.h"
 #include "render/IblPrecompute.h"
 #include "render/IblSettings.h"
-#include "render/OffscreenRender.h"
+#include "render/FrameRenderer.h"
 #include "render/Renderer.h"
 #include "render/SceneFromProject.h"
 #include "render/TextureCache.h"
@@ -327,18 +327,19 @@ int runHeadless(const QString& folder, int frames)
         }
     }
 
-    // Frames: untextured sphere against the textured one, at each anisotropy level.
-    IblPrecompute precompute;
+    // Frames: untextured sphere against the textured one, at each anisotropy level. Every
+    // configuration has its own FrameRenderer (its own textures), all sharing one precompute.
+    const auto precompute = std::make_shared<IblPrecompute>();
+    FrameRenderer lightingSource(precompute);
     const auto settings = IblSettings::preset("default");
     IblStats iblStats;
-    const auto ibl = precompute.prepare(assets->environment, *settings, &iblStats, &error);
+    const auto ibl = lightingSource.lighting(assets->environment, *settings, &iblStats, &error);
     if (!ibl) {
         std::fprintf(stderr, "texture_maps: %s\n", error.c_str());
         return 1;
     }
-    auto hdr = Framebuffer::create(kWidth, kHeight, FramebufferFormat::RGBA16F, &error);
     auto display = Framebuffer::create(kWidth, kHeight, FramebufferFormat::RGBA16F, &error);
-    if (!hdr || !display) {
+    if (!display) {
         std::fprintf(stderr, "texture_maps: %s\n", error.c_str());
         return 1;
     }
@@ -348,7 +349,7 @@ int runHeadless(const QString& folder, int frames)
     struct Config {
         std::string name;
         float anisotropy = 1.0f;
-        std::unique_ptr<Renderer> renderer;
+        std::unique_ptr<FrameRenderer> frames;
         bool trilinear = true;
         RenderScene scene;
         std::vector<double> times;
@@ -360,11 +361,13 @@ int runHeadless(const QString& folder, int frames)
         const auto projectAssets = loadProjectAssets(project, &error);
         if (!projectAssets)
             return false;
-        Config config {name, anisotropy, std::make_unique<Renderer>(), true, {}, {}, {}};
+        Config config {name, anisotropy, std::make_unique<FrameRenderer>(precompute), true, {}, {}, {}};
         config.trilinear = TextureFiltering::trilinear(info);
-        config.scene = sceneFromProject(project, *projectAssets, ibl, sceneOptionsFor(*settings, false));
-        if (!addDfgTables(precompute, *settings, config.scene, nullptr, &error))
+        auto scene = config.frames->prepare(project, *projectAssets, *settings, sceneOptionsFor(*settings, false),
+            nullptr, &error);
+        if (!scene)
             return false;
+        config.scene = std::move(*scene);
         configs.push_back(std::move(config));
         return true;
     };
@@ -419,13 +422,14 @@ int runHeadless(const QString& folder, int frames)
     }
     for (int round = 0; ok && round < frames + 2; ++round)
         for (Config& config : configs) {
-            config.renderer->textureCache().setMaxAnisotropy(config.anisotropy);
-            config.renderer->textureCache().setTrilinear(config.trilinear);
+            config.frames->textureCache().setMaxAnisotropy(config.anisotropy);
+            config.frames->textureCache().setTrilinear(config.trilinear);
             glFinish();
             const auto start = std::chrono::steady_clock::now();
             const double cpuStart = cpuMilliseconds();
-            ok = ok && config.renderer->render(config.scene, *hdr, &error)
-                && config.renderer->toneMap(*hdr, *display, config.scene.view, &error);
+            ok = ok
+                && config.frames->present(config.scene, display->framebufferId(), FrameRect {0, 0, kWidth, kHeight},
+                    1.0, &error);
             glFinish();
             if (round >= 2) { // the first frames compile and upload
                 config.times.push_back(msSince(start));

@@ -4,13 +4,9 @@
 
 #include "core/Project.h"
 #include "core/ProjectAssets.h"
-#include "render/Framebuffer.h"
+#include "render/FrameRenderer.h"
 #include "render/HeadlessGLContext.h"
-#include "render/IblPrecompute.h"
 #include "render/IblSettings.h"
-#include "render/OffscreenRender.h"
-#include "render/Renderer.h"
-#include "render/SceneFromProject.h"
 
 namespace facet::test {
 
@@ -19,18 +15,15 @@ namespace facet::test {
 struct ReferenceViewRenderer::State {
     std::optional<HeadlessGLContext> context;
     QTemporaryDir cacheDir;
-    std::optional<IblPrecompute> ibl;
-    std::optional<Renderer> renderer;
+    std::optional<FrameRenderer> frames;
 };
 
 ReferenceViewRenderer::ReferenceViewRenderer() = default;
 
 ReferenceViewRenderer::~ReferenceViewRenderer()
 {
-    if (m_state) {
-        m_state->renderer.reset();
-        m_state->ibl.reset();
-    }
+    if (m_state)
+        m_state->frames.reset();
 }
 
 bool ReferenceViewRenderer::initialize(std::string* error)
@@ -43,15 +36,14 @@ bool ReferenceViewRenderer::initialize(std::string* error)
         *error = "ReferenceViewRenderer: no temporary directory for the IBL cache";
         return false;
     }
-    m_state->ibl.emplace(m_state->cacheDir.path(), /*useDiskCache=*/false);
-    m_state->renderer.emplace();
+    m_state->frames.emplace(m_state->cacheDir.path(), /*useDiskCache=*/false);
     return true;
 }
 
 std::optional<RenderScene> ReferenceViewRenderer::prepareScene(
     const Project& project, const std::string& preset, std::string* error)
 {
-    if (!m_state || !m_state->renderer) {
+    if (!m_state || !m_state->frames) {
         *error = "ReferenceViewRenderer::render: not initialised";
         return std::nullopt;
     }
@@ -63,13 +55,8 @@ std::optional<RenderScene> ReferenceViewRenderer::prepareScene(
         *error = "ReferenceViewRenderer::render: unknown IBL preset '" + preset + "'";
         return std::nullopt;
     }
-    const auto ibl = m_state->ibl->prepare(assets->environment, *settings, nullptr, error);
-    if (!ibl)
-        return std::nullopt;
-    RenderScene scene = sceneFromProject(project, *assets, ibl, sceneOptionsFor(*settings, /*referenceView=*/true));
-    if (!addDfgTables(*m_state->ibl, *settings, scene, nullptr, error))
-        return std::nullopt;
-    return scene;
+    return m_state->frames->prepare(
+        project, *assets, *settings, sceneOptionsFor(*settings, /*referenceView=*/true), nullptr, error);
 }
 
 std::optional<Image> ReferenceViewRenderer::render(
@@ -78,10 +65,8 @@ std::optional<Image> ReferenceViewRenderer::render(
     const auto scene = prepareScene(project, preset, error);
     if (!scene)
         return std::nullopt;
-    auto target = Framebuffer::create(size, size, FramebufferFormat::RGBA32F, error);
-    if (!target || !m_state->renderer->render(*scene, *target, error))
-        return std::nullopt;
-    return target->readPixels();
+    return m_state->frames->renderImage(
+        *scene, size, size, FrameOutput::LinearRadiance, error, FramebufferFormat::RGBA32F);
 }
 
 std::optional<Image> ReferenceViewRenderer::renderAsCommand(
@@ -90,9 +75,10 @@ std::optional<Image> ReferenceViewRenderer::renderAsCommand(
     const auto scene = prepareScene(project, preset, error);
     if (!scene)
         return std::nullopt;
-    // A fresh renderer: every map and the mesh are uploaded in this frame, as after opening a project.
-    Renderer renderer;
-    return renderOffscreen(renderer, *scene, size, size, OffscreenOutput::LinearRadiance, error);
+    // A fresh surface renderer (the IBL results shared): every map and the mesh are uploaded in
+    // this frame, as after opening a project.
+    FrameRenderer fresh(m_state->frames->sharedPrecompute());
+    return fresh.renderImage(*scene, size, size, FrameOutput::LinearRadiance, error);
 }
 
 } // namespace facet::test

@@ -1,8 +1,8 @@
 #pragma once
 // For GL tests that render DESIGN.md's reference view of a project on the GPU, as `facet render
-// --reference-view` does: one surfaceless EGL context, an IBL precompute with its memory cache
-// only (each environment is prepared once per test executable, never read from or written to
-// the user's disk cache) and one Renderer, torn down in the right order.
+// --reference-view` does, through the same render/FrameRenderer: one surfaceless EGL context and
+// one FrameRenderer with its memory cache only (each environment is prepared once per test
+// executable, never read from or written to the user's disk cache), torn down in the right order.
 
 #include <memory>
 #include <optional>
@@ -31,9 +31,9 @@ public:
     // preset `preset` ("draft", "default", "high"). nullopt with *error on any failure.
     std::optional<Image> render(
         const Project& project, const std::string& preset, int size, std::string* error);
-    // The same through `facet render --reference-view`'s own path: a fresh Renderer (every map and
-    // the mesh uploaded in this frame, as after opening a project), an RGBA16F target read back by
-    // render/OffscreenRender.
+    // The same through `facet render --reference-view`'s own path: a fresh surface renderer (every
+    // map and the mesh uploaded in this frame, as after opening a project), an RGBA16F target
+    // read back by FrameRenderer::renderImage.
     std::optional<Image> renderAsCommand(
         const Project& project, const std::string& preset, int size, std::string* error);
 

@@ -1,0 +1,125 @@
+#pragma once
+// The one way a frame is made, for every caller: the viewport (ui/ViewportRenderer, one per view),
+// `facet render`, `facet bench`, the benchmarks and the GL tests. It owns, in one GL context (or
+// share group):
+//   - the IBL precompute (render/IblPrecompute) and so the IBL results, looked up by content
+//     (the environment's pixel hash, the IBL settings, the DFG table's visibility term) in memory
+//     (LRU within IblPrecompute::kMemoryBudgetBytes) and on disk: an environment shown by four
+//     views, or by nine cells of a grid, is precomputed once;
+//   - the surface renderer (render/Renderer: programs, the mesh, the material textures);
+//   - the render targets, pooled by size, so grid cells of one size share one.
+// A caller names a project and its assets (core/ProjectAssets: the mesh, the map images, the
+// environment image); FrameRenderer turns them into a RenderScene with its GL textures and draws
+// it, so no caller handles GL texture names or their lifetimes.
+//
+//   FrameRenderer frames;                                   // GL context current
+//   auto scene = frames.prepare(project, assets, settings, {}, &stats, &error);
+//   auto image = frames.renderImage(*scene, 512, 512, FrameOutput::LinearRadiance, &error);
+//   frames.present(*scene, widgetFbo, {0, 0, w, h}, 0.5, &error); // a reduced preview, stretched
+//
+// Threading and lifetime: every call needs the same GL context current; destroy it with that
+// context current. Several FrameRenderers may share one IblPrecompute (the constructor taking one):
+// `facet render`-style tests make a fresh surface renderer per frame and keep the IBL results.
+
+#include "core/Image.h"
+#include "render/Framebuffer.h"
+#include "render/IblPrecompute.h"
+#include "render/RenderScene.h"
+#include "render/RenderStats.h"
+#include "render/SceneFromProject.h"
+
+#include <QString>
+
+#include <list>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace facet {
+
+class Renderer;
+class TextureCache;
+struct IblSettings;
+struct Project;
+struct ProjectAssets;
+
+// What renderImage() reads back.
+enum class FrameOutput {
+    LinearRadiance, // the HDR target as it is: scene radiance, no exposure, no tone mapping
+    DisplayReferred, // the viewport's display transform (exposure, tone mapper, encoding), tagged sRGB
+};
+
+// A rectangle of a framebuffer in device pixels, origin bottom-left (GL's).
+struct FrameRect {
+    int x = 0;
+    int y = 0;
+    int width = 0;
+    int height = 0;
+};
+
+class FrameRenderer {
+public:
+    // Needs the context current. `cacheDirectory` empty: the IBL disk cache's default folder;
+    // `useDiskCache` false: memory only (tests and benchmarks never touch the user's cache).
+    explicit FrameRenderer(const QString& cacheDirectory = {}, bool useDiskCache = true);
+    // Shares `precompute` (and so its IBL results) with other FrameRenderers of the context.
+    explicit FrameRenderer(std::shared_ptr<IblPrecompute> precompute);
+    ~FrameRenderer();
+    FrameRenderer(const FrameRenderer&) = delete;
+    FrameRenderer& operator=(const FrameRenderer&) = delete;
+
+    // The frame `project` describes with `assets` (core/ProjectAssets.h), lit by the IBL of its
+    // environment at `settings`, with the DFG table of every visibility term its materials use.
+    // `stats` (optional) says what the precompute did (reset, then the tables added). nullopt
+    // with *error ("IblPrecompute::prepare: ...", "IblPrecompute::dfgTable: ...") on failure.
+    std::optional<RenderScene> prepare(const Project& project, const ProjectAssets& assets,
+        const IblSettings& settings, const SceneOptions& options, IblStats* stats, std::string* error);
+
+    // The steps of prepare(), for callers that build the scene themselves (the viewport adds its
+    // turntable): the IBL set of `environment` at `settings` (a memory hit after the first call),
+    // and the DFG tables `scene` needs (stats added to).
+    std::shared_ptr<const IblTextures> lighting(
+        const Environment& environment, const IblSettings& settings, IblStats* stats, std::string* error);
+    bool addDfgTables(const IblSettings& settings, RenderScene& scene, IblStats* stats, std::string* error);
+
+    // Renders `scene` into a width x height target of `format` and reads it back (top row first).
+    // nullopt with *error set by the step that failed ("Framebuffer::create: ...", "Renderer::render: ...").
+    std::optional<Image> renderImage(const RenderScene& scene, int width, int height, FrameOutput output,
+        std::string* error, FramebufferFormat format = FramebufferFormat::RGBA16F);
+
+    // Renders `scene` at `scale` in (0, 1] of `rect`'s size and writes its display transform into
+    // `rect` of `framebuffer` (0: the default one, e.g. a widget's): at scale 1 over the whole
+    // framebuffer directly, otherwise through a display target stretched (bilinear) or copied
+    // into the rectangle. Leaves `framebuffer` bound for drawing with the rectangle's viewport.
+    // False with *error when a step failed; the rectangle is then untouched.
+    bool present(const RenderScene& scene, unsigned framebuffer, const FrameRect& rect, double scale,
+        std::string* error);
+    // The size present() rendered at in its last call.
+    int lastRenderWidth() const { return m_lastWidth; }
+    int lastRenderHeight() const { return m_lastHeight; }
+
+    Renderer& renderer() { return *m_renderer; }
+    TextureCache& textureCache();
+    IblPrecompute& precompute() { return *m_precompute; }
+    const std::shared_ptr<IblPrecompute>& sharedPrecompute() const { return m_precompute; }
+
+    // The targets pooled (at most kPooledTargets, least recently used out).
+    static constexpr int kPooledTargets = 4;
+    int pooledTargets() const { return int(m_targets.size()); }
+
+private:
+    // A pooled target of this size and format, made on first use.
+    Framebuffer* target(int width, int height, FramebufferFormat format, int slot, std::string* error);
+
+    struct PooledTarget {
+        int slot = 0; // two targets of one size in one frame (the HDR image and its display copy)
+        Framebuffer framebuffer;
+    };
+    std::shared_ptr<IblPrecompute> m_precompute;
+    std::unique_ptr<Renderer> m_renderer;
+    std::list<PooledTarget> m_targets; // most recently used first
+    int m_lastWidth = 0;
+    int m_lastHeight = 0;
+};
+
+} // namespace facet
