@@ -44,7 +44,8 @@ std::shared_ptr<const IblTextures> FrameRenderer::lighting(
     return m_precompute->prepare(environment, settings, stats, error);
 }
 
-bool FrameRenderer::addDfgTables(const IblSettings& settings, RenderScene& scene, IblStats* stats, std::string* error)
+bool FrameRenderer::addDfgTables(
+    const IblSettings& settings, RenderScene& scene, IblStats* stats, std::string* error)
 {
     return facet::addDfgTables(*m_precompute, settings, scene, stats, error);
 }
@@ -61,7 +62,8 @@ std::optional<RenderScene> FrameRenderer::prepare(const Project& project, const 
     return scene;
 }
 
-Framebuffer* FrameRenderer::target(int width, int height, FramebufferFormat format, int slot, std::string* error)
+Framebuffer* FrameRenderer::target(
+    int width, int height, FramebufferFormat format, int slot, std::string* error)
 {
     for (auto it = m_targets.begin(); it != m_targets.end(); ++it) {
         const Framebuffer& f = it->framebuffer;
@@ -109,7 +111,8 @@ bool FrameRenderer::present(
         return false;
     m_lastWidth = width;
     m_lastHeight = height;
-    const bool direct = scale >= 1.0 && rect.x == 0 && rect.y == 0 && width == rect.width && height == rect.height;
+    const bool direct
+        = scale >= 1.0 && rect.x == 0 && rect.y == 0 && width == rect.width && height == rect.height;
     if (direct) {
         // The common case (the single view at full resolution): tone-map straight into the
         // caller's framebuffer, no copy.

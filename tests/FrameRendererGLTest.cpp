@@ -8,8 +8,8 @@
 
 #include "core/Project.h"
 #include "core/ProjectAssets.h"
-#include "render/Framebuffer.h"
 #include "render/FrameRenderer.h"
+#include "render/Framebuffer.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblSettings.h"
 #include "render/Renderer.h"
@@ -120,7 +120,8 @@ void FrameRendererGLTest::environmentSharedByViewsIsPrecomputedOnce()
     for (int view = 0; view < 4; ++view) {
         FrameRenderer frames(precompute);
         IblStats stats;
-        const auto scene = frames.prepare(project, *assets, settings, sceneOptionsFor(settings, true), &stats, &error);
+        const auto scene
+            = frames.prepare(project, *assets, settings, sceneOptionsFor(settings, true), &stats, &error);
         QVERIFY2(scene, error.c_str());
         QVERIFY(scene->environment.prefilteredCubemap != 0);
         QVERIFY(scene->environment.dfgLutFor(project.material().shading.visibility));
@@ -241,7 +242,8 @@ void FrameRendererGLTest::presentWritesItsRectangle()
     const Project project = sphereIn("uniform:0.5");
     const auto assets = loadProjectAssets(project, &error);
     QVERIFY2(assets, error.c_str());
-    const auto scene = frames.prepare(project, *assets, settings, sceneOptionsFor(settings, false), nullptr, &error);
+    const auto scene
+        = frames.prepare(project, *assets, settings, sceneOptionsFor(settings, false), nullptr, &error);
     QVERIFY2(scene, error.c_str());
 
     // The caller's framebuffer, filled with a colour no frame has.
@@ -266,7 +268,9 @@ void FrameRendererGLTest::presentWritesItsRectangle()
             const bool inside = column >= x && column < x + width && glRow >= y && glRow < y + height;
             if (!inside) {
                 if (written.at(column, row) != marker)
-                    QFAIL(qPrintable(QStringLiteral("pixel (%1, %2) outside the rectangle was written").arg(column).arg(row)));
+                    QFAIL(qPrintable(QStringLiteral("pixel (%1, %2) outside the rectangle was written")
+                                         .arg(column)
+                                         .arg(row)));
                 continue;
             }
             cell.at(column - x, (height - 1) - (glRow - y)) = written.at(column, row);
@@ -289,7 +293,8 @@ void FrameRendererGLTest::targetPoolIsBounded()
     const Project project = sphereIn("uniform:0.5");
     const auto assets = loadProjectAssets(project, &error);
     QVERIFY2(assets, error.c_str());
-    const auto scene = frames.prepare(project, *assets, settings, sceneOptionsFor(settings, false), nullptr, &error);
+    const auto scene
+        = frames.prepare(project, *assets, settings, sceneOptionsFor(settings, false), nullptr, &error);
     QVERIFY2(scene, error.c_str());
     // A window resized step by step: every size once.
     for (int size = 8; size < 40; size += 4) {
