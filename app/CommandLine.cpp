@@ -30,6 +30,7 @@ struct Parser {
                            "project made from a glTF asset (.gltf, .glb) with its meshes and materials.\n"
                            "Commands (each has --help):\n"
                            "  render   render a project to an EXR or PNG without a display\n"
+                           "  sheet    a labelled grid of materials x environments, or a parameter wedge\n"
                            "  bench    time against error of the IBL quality settings (table and CSV)"));
         // Our own -h/-v instead of addHelpOption(): its --help-all lists Qt options that this
         // parser, running before QApplication, does not accept.
@@ -53,7 +54,7 @@ const QStringList& CommandLine::commandNames()
 
 const QStringList& CommandLine::availableCommandNames()
 {
-    static const QStringList names = {QStringLiteral("render"), QStringLiteral("bench")};
+    static const QStringList names = {QStringLiteral("render"), QStringLiteral("sheet"), QStringLiteral("bench")};
     return names;
 }
 

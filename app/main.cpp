@@ -1,10 +1,11 @@
-// facet: the GUI by default; headless commands: render and bench (sheet, bake and export are not
+// facet: the GUI by default; headless commands: render, sheet and bench (bake and export are not
 // in this version). The command line is parsed before any Q*Application exists, so --help, --version
 // and errors need no display server; QApplication is made only for the GUI.
 
 #include "BenchCommand.h"
 #include "CommandLine.h"
 #include "RenderCommand.h"
+#include "SheetCommand.h"
 #include "WindowScreenshot.h"
 
 #include "ui/MainWindow.h"
@@ -114,6 +115,8 @@ int main(int argc, char* argv[])
         // The commands this version has: CommandLine::availableCommandNames().
         if (commandLine.command == QStringLiteral("bench"))
             return runCommand<facet::BenchCommand>("bench", commandLine.commandArguments);
+        if (commandLine.command == QStringLiteral("sheet"))
+            return runCommand<facet::SheetCommand>("sheet", commandLine.commandArguments);
         return runCommand<facet::RenderCommand>("render", commandLine.commandArguments);
     case facet::CommandLine::Action::Unavailable:
         std::fprintf(

@@ -315,7 +315,8 @@ std::optional<Image> Image::load(const std::string& path, std::string* error, Im
     return std::nullopt;
 }
 
-bool Image::save(const std::string& path, std::string* error, bool alpha) const
+bool Image::save(const std::string& path, std::string* error, bool alpha,
+    const std::vector<std::pair<std::string, std::string>>& attributes) const
 {
     constexpr const char* kFunction = "Image::save";
     if (isEmpty()) {
@@ -371,6 +372,8 @@ bool Image::save(const std::string& path, std::string* error, bool alpha) const
         }
         if (isExr)
             spec.attribute("compression", "zip");
+        for (const auto& [name, value] : attributes)
+            spec.attribute(name, value);
 
         // Convert to what the file can hold ourselves, so nothing depends on OIIO's choices:
         // finite values beyond the half range would become Inf in an EXR, and 8-bit files

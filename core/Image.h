@@ -99,7 +99,10 @@ public:
     // failed write, a full disk included, never leaves half a file nor harms an existing one.
     // Formats OpenImageIO cannot encode into memory (sgi, ico, rla, fits, heif) are refused.
     // Errors: "Image::save: <path>: <reason>", e.g. "...: cannot write: No space left on device".
-    bool save(const std::string& path, std::string* error, bool alpha = true) const;
+    // `attributes`: string metadata for formats that hold it (EXR header attributes, PNG text),
+    // e.g. a contact sheet's cell layout.
+    bool save(const std::string& path, std::string* error, bool alpha = true,
+        const std::vector<std::pair<std::string, std::string>>& attributes = {}) const;
 
 private:
     int m_width = 0;

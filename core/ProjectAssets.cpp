@@ -5,6 +5,7 @@
 #include <QDateTime>
 #include <QFileInfo>
 
+#include "core/AssetCache.h"
 #include "core/AssetLibrary.h"
 #include "core/GltfImport.h"
 #include "core/MapImageCache.h"
@@ -23,15 +24,6 @@ void appendWarning(std::string* warning, const std::string& text)
     if (!warning->empty())
         *warning += '\n';
     *warning += text;
-}
-
-std::uint64_t fnv1a(const std::string& text, std::uint64_t hash = 0xcbf29ce484222325ULL)
-{
-    for (unsigned char c : text) {
-        hash ^= c;
-        hash *= 0x100000001b3ULL;
-    }
-    return hash;
 }
 
 std::int64_t modificationTime(const std::string& path)
@@ -79,10 +71,17 @@ std::optional<Mesh> loadViewMesh(const std::string& nameOrPath, std::string* err
 
 std::optional<ProjectAssets> loadProjectAssets(const Project& project, std::string* error, std::string* warning)
 {
+    AssetCache assets;
+    return loadProjectAssets(project, assets, error, warning);
+}
+
+std::optional<ProjectAssets> loadProjectAssets(
+    const Project& project, AssetCache& cache, std::string* error, std::string* warning)
+{
     ProjectAssets assets;
     std::string problem;
     std::string note;
-    auto environment = Environment::fromSpec(project.environment.source, &problem, &note);
+    auto environment = cache.environment(project.environment.source, &problem, &note);
     appendWarning(warning, note);
     if (!environment) {
         if (error)
@@ -93,15 +92,14 @@ std::optional<ProjectAssets> loadProjectAssets(const Project& project, std::stri
     environment->setIntensity(project.environment.intensity);
     assets.environment = std::move(*environment);
 
-    auto mesh = loadViewMesh(project.view.mesh, &problem, warning);
+    auto mesh = cache.mesh(project.view.mesh, &problem, warning);
     if (!mesh) {
         if (error)
             *error = "loadProjectAssets: mesh: " + problem;
         return std::nullopt;
     }
-    assets.mesh = std::make_shared<const Mesh>(std::move(*mesh));
-    const bool isFile = QFileInfo::exists(QString::fromStdString(project.view.mesh));
-    assets.meshKey = fnv1a(project.view.mesh, isFile ? std::uint64_t(modificationTime(project.view.mesh)) : 1u);
+    assets.mesh = mesh->mesh;
+    assets.meshKey = mesh->key;
 
     // Each file once: a packed file used by several slots or materials is decoded once
     // (MapImageCache) and reported once.

@@ -42,6 +42,11 @@ struct ProjectAssets {
 // Warnings (sanitised pixels, generated UVs...) are appended to `warning`, one per line.
 std::optional<ProjectAssets> loadProjectAssets(const Project& project, std::string* error,
                                                std::string* warning = nullptr);
+// The same, taking the environment and the mesh from `cache` (core/AssetCache.h): a batch of
+// frames sharing them (a contact sheet's cells) loads each once.
+class AssetCache;
+std::optional<ProjectAssets> loadProjectAssets(
+    const Project& project, AssetCache& cache, std::string* error, std::string* warning = nullptr);
 
 // The mesh a view names: a built-in primitive ("sphere", "cube", ...), a mesh file or a library
 // reference ("library:installed/models/bunny.glb", core/AssetLibrary.h), normalised to the unit

@@ -1,0 +1,76 @@
+#include "core/AssetCache.h"
+
+#include "core/ProjectAssets.h"
+
+#include <QDateTime>
+#include <QFileInfo>
+
+namespace facet {
+
+namespace {
+
+// The file's modification time in ms since the epoch; 0 for what is not a file (a built-in
+// name, uniform:, a library reference): those are keyed by the name alone.
+std::int64_t modifiedTime(const std::string& path)
+{
+    const QFileInfo info(QString::fromStdString(path));
+    return info.isFile() ? info.lastModified().toMSecsSinceEpoch() : 0;
+}
+
+std::uint64_t fnv1a(const std::string& text, std::uint64_t hash)
+{
+    for (unsigned char c : text) {
+        hash ^= c;
+        hash *= 0x100000001b3ULL;
+    }
+    return hash;
+}
+
+} // namespace
+
+std::optional<Environment> AssetCache::environment(const std::string& spec, std::string* error, std::string* warning)
+{
+    const std::int64_t modified = modifiedTime(spec);
+    std::lock_guard lock(m_mutex);
+    if (const auto found = m_environments.find(spec); found != m_environments.end() && found->second.modified == modified)
+        return found->second.environment;
+    ++m_environmentLoads;
+    auto environment = Environment::fromSpec(spec, error, warning);
+    if (!environment)
+        return std::nullopt;
+    m_environments[spec] = EnvironmentEntry {modified, *environment};
+    return environment;
+}
+
+std::optional<AssetCache::LoadedMesh> AssetCache::mesh(
+    const std::string& nameOrPath, std::string* error, std::string* warning)
+{
+    const std::int64_t modified = modifiedTime(nameOrPath);
+    std::lock_guard lock(m_mutex);
+    if (const auto found = m_meshes.find(nameOrPath); found != m_meshes.end() && found->second.modified == modified)
+        return found->second.mesh;
+    ++m_meshLoads;
+    auto mesh = loadViewMesh(nameOrPath, error, warning);
+    if (!mesh)
+        return std::nullopt;
+    LoadedMesh loaded;
+    loaded.mesh = std::make_shared<const Mesh>(std::move(*mesh));
+    // A new file version is a new key (the renderer uploads again); a built-in name keeps its key.
+    loaded.key = fnv1a(nameOrPath, modified ? std::uint64_t(modified) : 1u);
+    m_meshes[nameOrPath] = MeshEntry {modified, loaded};
+    return loaded;
+}
+
+int AssetCache::environmentLoads() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_environmentLoads;
+}
+
+int AssetCache::meshLoads() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_meshLoads;
+}
+
+} // namespace facet

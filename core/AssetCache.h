@@ -1,0 +1,58 @@
+#pragma once
+// Environments and meshes loaded once for a batch of frames that share them: the cells of a
+// contact sheet (`facet sheet`: every row of one column shows one environment), a compare grid.
+// Material maps have their own process-wide cache (core/MapImageCache.h), which this one leaves
+// them to. An entry is reused while its file is unchanged (same modification time); built-in
+// names, uniform: specs and library references are keyed by the name alone. Entries are strong:
+// the cache lives as long as its batch and holds what the batch shows.
+//
+// Thread-safe: loads are serialised (two threads asking for one file at once decode it once).
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include "core/Environment.h"
+#include "core/Mesh.h"
+
+namespace facet {
+
+class AssetCache {
+public:
+    struct LoadedMesh {
+        std::shared_ptr<const Mesh> mesh; // normalised to the unit bounding sphere (loadViewMesh)
+        std::uint64_t key = 0; // the content key the renderer uploads by (ProjectAssets::meshKey)
+    };
+
+    // Environment::fromSpec(spec) at rotation 0 and intensity 1 (copies share the pixels; set
+    // a project's rotation and intensity on the copy). nullopt with *error (fromSpec's message).
+    // `warning` (optional) gets the load's notes the first time only.
+    std::optional<Environment> environment(const std::string& spec, std::string* error, std::string* warning = nullptr);
+    // loadViewMesh(nameOrPath), with its content key.
+    std::optional<LoadedMesh> mesh(const std::string& nameOrPath, std::string* error, std::string* warning = nullptr);
+
+    // Decodes and mesh loads run so far (tests: "each environment once").
+    int environmentLoads() const;
+    int meshLoads() const;
+
+private:
+    struct EnvironmentEntry {
+        std::int64_t modified = 0;
+        Environment environment;
+    };
+    struct MeshEntry {
+        std::int64_t modified = 0;
+        LoadedMesh mesh;
+    };
+
+    mutable std::mutex m_mutex;
+    std::map<std::string, EnvironmentEntry> m_environments;
+    std::map<std::string, MeshEntry> m_meshes;
+    int m_environmentLoads = 0;
+    int m_meshLoads = 0;
+};
+
+} // namespace facet
