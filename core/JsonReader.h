@@ -19,6 +19,10 @@
 #include "core/Camera.h"
 #include "core/JsonSupport.h"
 
+namespace facet {
+struct CompareLayout;
+} // namespace facet
+
 namespace facet::jsonsupport {
 
 // ---- Reading with JSON paths ------------------------------------------------------------
@@ -32,6 +36,12 @@ struct Messages {
     {
         if (error.empty())
             error = path + ": " + problem;
+    }
+    // A message that names its path already (from materialFromJson, say).
+    void failWith(const std::string& message)
+    {
+        if (error.empty())
+            error = message;
     }
 };
 
@@ -223,5 +233,11 @@ inline void readCamera(Messages& messages, const QJsonObject& object, const std:
     r.number("farPlane", camera.farPlane);
     r.warnAboutUnknownKeys();
 }
+
+// ---- Readers defined elsewhere ------------------------------------------------------------
+
+// core/CompareLayout.cpp: reads a "compare" object over `layout` (missing keys keep its values).
+void readCompareLayout(Messages& messages, const QJsonObject& object, const std::string& path,
+    const std::string& baseDir, CompareLayout& layout);
 
 } // namespace facet::jsonsupport

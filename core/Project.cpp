@@ -369,6 +369,10 @@ std::optional<Project> readProject(const QJsonObject& object, const std::string&
         readCamera(messages, *camera, "camera", project.camera);
     if (const std::optional<QJsonObject> view = r.object("view"))
         readView(messages, *view, "view", baseDir, project.view);
+    // Version 3. Older files open with the default layout for what they hold.
+    project.compare = CompareLayout::defaultFor(project);
+    if (const std::optional<QJsonObject> compare = r.object("compare"))
+        readCompareLayout(messages, *compare, "compare", baseDir, project.compare);
     r.warnAboutUnknownKeys();
 
     if (messages.failed())
@@ -428,9 +432,10 @@ std::optional<IblQuality> iblQualityFromString(std::string_view name)
 
 bool ViewSettings::validate(std::string* problem) const
 {
-    // 2^20 either way covers a candle-lit room to the midday sun with room to spare.
-    if (!std::isfinite(exposureEV) || exposureEV < -20.0 || exposureEV > 20.0)
-        return fail("exposureEV: " + number(exposureEV) + " is outside [-20, 20]", problem);
+    if (!std::isfinite(exposureEV) || exposureEV < kMinExposureEV || exposureEV > kMaxExposureEV)
+        return fail("exposureEV: " + number(exposureEV) + " is outside [" + number(kMinExposureEV) + ", "
+                + number(kMaxExposureEV) + "]",
+            problem);
     if (!std::isfinite(gamma) || gamma < 1.0 || gamma > 3.0)
         return fail("gamma: " + number(gamma) + " is outside [1, 3]", problem);
     // An OCIO view belongs to a display: one without the other names no transform. Whether the
@@ -505,6 +510,8 @@ bool Project::validate(std::string* problem) const
         return fail("camera." + local, problem);
     if (!view.validate(&local))
         return fail("view." + local, problem);
+    if (!compare.validate(materials.size(), &local))
+        return fail("compare." + local, problem);
     return true;
 }
 
@@ -545,6 +552,7 @@ Project Project::defaultProject()
     project.environment = EnvironmentSettings {};
     project.camera = Camera::referenceView();
     project.view = ViewSettings {};
+    project.compare = CompareLayout::defaultFor(project);
     return project;
 }
 
@@ -579,6 +587,7 @@ QJsonObject Project::toJson(const std::string& baseDir) const
     o[QLatin1String("lights")] = lightArray;
     o[QLatin1String("camera")] = cameraToJson(camera);
     o[QLatin1String("view")] = viewToJson(view, baseDir);
+    o[QLatin1String("compare")] = compare.toJson(baseDir);
     return o;
 }
 
