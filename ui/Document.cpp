@@ -147,7 +147,7 @@ void Document::applyUndoableState(const Project& state)
     const DocumentChanges changes = changesBetween(m_project, next);
     m_project = std::move(next);
     updateMissingFiles();
-    if (changes != DocumentChanges())
+    if (!changes.isEmpty())
         Q_EMIT changed(changes);
 }
 
