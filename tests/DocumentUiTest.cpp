@@ -13,9 +13,12 @@
 #include <QUndoStack>
 #include <QtTest/QTest>
 
+#include <functional>
+
 using namespace facet;
 
 Q_DECLARE_METATYPE(facet::DocumentChanges)
+Q_DECLARE_METATYPE(std::function<void(facet::Project&)>)
 
 namespace facet {
 // QCOMPARE prints the descriptions of both sides when they differ.
@@ -59,6 +62,8 @@ private Q_SLOTS:
     void saveAndReopenGiveSameProject();
     void openFailureChangesNothing();
     void missingFilesAndRelink();
+    void missingFilesRecheckedByEditsThatNameFiles_data();
+    void missingFilesRecheckedByEditsThatNameFiles();
     void recoveryFileRoundTrip();
     void newProjectResets();
 };
@@ -351,6 +356,66 @@ void DocumentUiTest::missingFilesAndRelink()
     reopened.undoStack()->undo();
     QCOMPARE(reopened.missingFiles(), QStringList {missing});
     QVERIFY(!reopened.relinkFile(dir.filePath(QStringLiteral("never-used.png")), present));
+}
+
+void DocumentUiTest::missingFilesRecheckedByEditsThatNameFiles_data()
+{
+    // An edit, and whether it looks at the files on disk again (a slider drag must not stat
+    // every map file at each step).
+    QTest::addColumn<std::function<void(Project&)>>("edit");
+    QTest::addColumn<bool>("rechecked");
+    QTest::newRow("roughness factor")
+        << std::function<void(Project&)>([](Project& p) { p.material().setFactor(MapSlot::Roughness, 0.9); })
+        << false;
+    QTest::newRow("material name") << std::function<void(Project&)>([](Project& p) {
+        p.material().name += " (renamed)";
+    }) << false;
+    QTest::newRow("light added") << std::function<void(Project&)>([](Project& p) {
+        p.lights.push_back(Light::defaultDirectional());
+    }) << false;
+    QTest::newRow("exposure") << std::function<void(Project&)>([](Project& p) { p.view.exposureEV = 1.0; })
+                              << false;
+    QTest::newRow("environment rotation")
+        << std::function<void(Project&)>([](Project& p) { p.environment.rotationDegrees = 20.0; }) << false;
+    QTest::newRow("base colour colour space") << std::function<void(Project&)>([](Project& p) {
+        p.material().map(MapSlot::BaseColor).colorSpace = ColorEncoding::Linear;
+    }) << true;
+    QTest::newRow("normal map path") << std::function<void(Project&)>([](Project& p) {
+        p.material().map(MapSlot::Normal).path = p.material().map(MapSlot::BaseColor).path + ".normal";
+    }) << true;
+    QTest::newRow("environment source")
+        << std::function<void(Project&)>([](Project& p) { p.environment.source = "sky"; }) << true;
+    QTest::newRow("mesh") << std::function<void(Project&)>([](Project& p) { p.view.mesh = "cube"; }) << true;
+    QTest::newRow("material added") << std::function<void(Project&)>([](Project& p) {
+        p.materials.push_back(Material {});
+    }) << true;
+}
+
+void DocumentUiTest::missingFilesRecheckedByEditsThatNameFiles()
+{
+    QFETCH(std::function<void(Project&)>, edit);
+    QFETCH(bool, rechecked);
+    QTemporaryDir dir;
+    const QString albedo = dir.filePath(QStringLiteral("albedo.png"));
+    QFile file(albedo);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("not read by the document");
+    file.close();
+    Document document;
+    Material material = document.project().material();
+    material.map(MapSlot::BaseColor).path = albedo.toStdString();
+    document.setMaterial(material, QStringLiteral("Base Color Map"));
+    QVERIFY(document.missingFiles().isEmpty());
+
+    QVERIFY(QFile::remove(albedo)); // deleted behind the document's back
+    Project after = document.project();
+    edit(after);
+    document.setProject(after, QStringLiteral("Edit"));
+    QCOMPARE(document.undoStack()->count(), 2);
+    QCOMPARE(document.missingFiles().contains(albedo), rechecked);
+    // Undo is an edit too: it names the same kinds of change.
+    document.undoStack()->undo();
+    QCOMPARE(document.missingFiles().contains(albedo), rechecked);
 }
 
 void DocumentUiTest::recoveryFileRoundTrip()

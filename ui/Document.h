@@ -112,7 +112,9 @@ public:
 
     // Texture, environment and mesh files the project names that do not exist (absolute paths,
     // each once, in material-slot order, then environment, then mesh). Updated on open, recover
-    // and every edit.
+    // and every edit (or undo, redo) that names other files (a map's path or colour space, the
+    // environment source, the mesh, materials added or removed); a file deleted on disk meanwhile
+    // shows at the next of those.
     const QStringList& missingFiles() const { return m_missingFiles; }
     // Every reference to `oldPath` (map, environment source, mesh) becomes `newPath`; one undo
     // step "Relink <file name>". Returns false if nothing referred to oldPath.
