@@ -154,11 +154,13 @@ public:
     DocumentChanges() = default;
     // Kinds alone (flag-style, as observers and Document emit them): every question about those
     // kinds answers "changed".
-    DocumentChanges(DocumentChange kind) // NOLINT(google-explicit-constructor): flag-style use
+    // Implicit, so that `Q_EMIT changed(DocumentChange::Camera)` and `changes == DocumentChange::X`
+    // read as they did when a change was a flag set.
+    DocumentChanges(DocumentChange kind)
         : DocumentChanges(DocumentChangeKinds(kind))
     {
     }
-    DocumentChanges(DocumentChangeKinds kinds); // NOLINT(google-explicit-constructor)
+    DocumentChanges(DocumentChangeKinds kinds);
 
     // Detailed descriptions (changesBetween builds with these; tests write expectations with them).
     // A list change may come with in-place edits of the items it did not insert (an edit that
@@ -209,7 +211,7 @@ public:
     ViewProperties view() const;
 
 private:
-    void normalize(); // detail only where its kinds are, and kinds that match the detail
+    void normalize(); // detail only where its kinds are and it is named; none elsewhere
 
     DocumentChangeKinds m_kinds;
     bool m_materialsNamed = false;
@@ -235,8 +237,8 @@ bool affectsLight(const DocumentChanges& changes, std::size_t index);
 // Any of the environment's settings (source, rotation, intensity, IBL quality).
 bool affectsEnvironment(const DocumentChanges& changes);
 
-// One line for logs and test failures, e.g.
-// "MaterialMaps; material 2: roughness{path}; lights: -" ("*" where nothing is named).
+// One line for logs and test failures, e.g. "MaterialMaps|Lights; materials 2{roughness{path}};
+// lights removed[1]" ("*" where a kind names nothing, e.g. "WholeProject; materials *; ...").
 std::string describe(const DocumentChanges& changes);
 
 } // namespace facet

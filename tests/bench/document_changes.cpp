@@ -1,7 +1,8 @@
 // Prints what a change description costs and saves (ui/DocumentChanges.h): changesBetween for one
-// edit of a project of N materials, and the window's SceneController handling a new normal map
-// for one material when the change names the slot, against a change of kinds alone (what every
-// map edit cost before changes named their slots: each material's files looked at on disk).
+// edit of a project of N materials, whole Document edits (a roughness factor, a normal map), and
+// the window's SceneController alone handling a map change that names its slot, against a change
+// of kinds alone (what every map edit cost before changes named their slots: every material's
+// files looked at on disk).
 // Each material has three files of its own. Checks nothing (SceneControllerUiTest and
 // DocumentChangesTest do).
 // Usage: document_changes [repeats]   (default 20; the median is printed)
@@ -61,9 +62,10 @@ int main(int argc, char** argv)
     if (!dir.isValid())
         return 1;
 
-    std::printf("| materials | files | changesBetween, one roughness edit | Document edit, roughness | "
-                "Document edit, one normal map (SceneController: that slot) | files changed on disk, kinds "
-                "alone (SceneController: every file) |\n|---|---|---|---|---|---|\n");
+    std::printf(
+        "| materials | files | changesBetween, one roughness edit | Document edit, roughness | "
+        "Document edit, one normal map | SceneController, a change naming one slot | SceneController, "
+        "kinds alone (every file) |\n|---|---|---|---|---|---|---|\n");
     for (int materials : {1, 16, 256, 1024}) {
         Project project = Project::defaultProject();
         project.materials.assign(std::size_t(materials), project.materials[0]);
@@ -100,19 +102,25 @@ int main(int argc, char** argv)
             next.materials.back().setFactor(MapSlot::Roughness, i % 2 ? 0.25 : 0.75);
             document.setProject(next, QStringLiteral("Roughness"));
         });
-        // The last material's normal map flips between two files (both stay decoded: the edit's
-        // own synchronous work is what is timed, not the decode on the worker thread).
+        // The last material's normal map flips between two files: the edit's own work is timed,
+        // not the decode, which runs on a worker thread.
         const double named = medianMicroseconds(repeats, [&](int i) {
             Project next = document.project();
             next.materials.back().map(MapSlot::Normal).path = i % 2 ? normalA : normalB;
             document.setProject(next, QStringLiteral("Normal"));
         });
         settle();
+        // The SceneController alone, nothing changed on disk: a change naming the slot (what a map
+        // edit reports now) against kinds alone (what every map edit reported before).
+        const DocumentChanges oneSlot = DocumentChanges::ofMaterial(
+            std::size_t(materials - 1), MaterialChange::ofMap(MapSlot::Normal, MapProperty::Path));
+        const double sceneNamed
+            = medianMicroseconds(repeats, [&](int) { document.notifyFilesChangedOnDisk(oneSlot); });
         const double kindsAlone = medianMicroseconds(
             repeats, [&](int) { document.notifyFilesChangedOnDisk(DocumentChange::MaterialMaps); });
         settle();
-        std::printf("| %d | %d | %.1f us | %.1f us | %.1f us | %.1f us |\n", materials, materials * 3,
-            between, roughness, named, kindsAlone);
+        std::printf("| %d | %d | %.1f us | %.1f us | %.1f us | %.1f us | %.1f us |\n", materials,
+            materials * 3, between, roughness, named, sceneNamed, kindsAlone);
     }
     return 0;
 }
