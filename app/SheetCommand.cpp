@@ -180,7 +180,7 @@ std::optional<SheetMaterial> materialFromItem(const std::string& item, std::stri
         *error = problem;
         return std::nullopt;
     }
-    return SheetMaterial {preset->name, preset->material};
+    return SheetMaterial {preset->displayName, preset->material};
 }
 
 } // namespace
@@ -500,7 +500,7 @@ int SheetCommand::run(const SheetRequest& request)
     Q_ASSERT(settings); // the project validated its quality name
     std::vector<Image> cells;
     IblStats total;
-    int precomputes = 0;
+    int prepared = 0; // IBL sets not found in memory: each environment once
     double renderMs = 0.0;
     {
         FrameRenderer frames;
@@ -510,7 +510,7 @@ int SheetCommand::run(const SheetRequest& request)
                 sceneOptionsFor(*settings, request.referenceView), &stats, &error);
             if (!scene)
                 return fail(error);
-            precomputes += stats.cacheHitsMemory == 0 && stats.cacheHitsDisk == 0 ? 1 : 0;
+            prepared += stats.cacheHitsMemory == 0 ? 1 : 0; // computed, or read from the disk cache
             total.passesRun += stats.passesRun;
             total.cacheHitsMemory += stats.cacheHitsMemory;
             total.cacheHitsDisk += stats.cacheHitsDisk;
@@ -549,9 +549,9 @@ int SheetCommand::run(const SheetRequest& request)
         std::printf("renderer: gpu\ngl_renderer: %s\ncells: %zu (%zu x %zu)\ncell: %dx%d\nquality: %s\n",
             gl.renderer.c_str(), cells.size(), grid.rows.size(), grid.columns.size(), request.cellWidth,
             request.cellHeight, toString(request.project.environment.quality));
-        std::printf("environments_loaded: %d\nibl_precomputes: %d\nibl_passes_run: %d\nibl_cache_hits_memory: "
+        std::printf("environments_loaded: %d\nibl_environments_prepared: %d\nibl_passes_run: %d\nibl_cache_hits_memory: "
                     "%d\nibl_cache_hits_disk: %d\nibl_ms: %.1f\n",
-            cache.environmentLoads(), precomputes, total.passesRun, total.cacheHitsMemory, total.cacheHitsDisk,
+            cache.environmentLoads(), prepared, total.passesRun, total.cacheHitsMemory, total.cacheHitsDisk,
             total.msTotal);
         std::printf("load_ms: %.1f\nrender_ms: %.1f (%.1f a cell)\ntotal_ms: %.1f\n",
             std::chrono::duration<double, std::milli>(loadedAt - start).count(), renderMs,
