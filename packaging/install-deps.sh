@@ -15,6 +15,8 @@ packages=(
   libepoxy-dev libgl1-mesa-dri libegl-mesa0 libegl-dev mesa-utils
   # headless GUI tests
   xvfb xauth
+  # the font of the window and of facet sheet's labels (Qt's offscreen platform draws with it)
+  fonts-dejavu-core
   # fetching the CC0 test environments and meshes (npm registry)
   npm ca-certificates
 )
