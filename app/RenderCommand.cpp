@@ -1,5 +1,6 @@
 #include "RenderCommand.h"
 
+#include "CommandInputs.h"
 #include "CommandOptions.h"
 #include "render/FrameRenderer.h"
 
@@ -122,11 +123,8 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
 
     RenderRequest request;
     const QStringList positional = o.parser.positionalArguments();
-    if (positional.size() > 1) {
-        *error = QStringLiteral("too many arguments: expected at most one project or glTF file, got '%1'")
-                     .arg(positional.join(QStringLiteral("' '")));
+    if (!checkOneInput(positional, error))
         return std::nullopt;
-    }
     if (!o.parser.isSet(o.output)) {
         *error = QStringLiteral("-o OUT.exr or -o OUT.png is required");
         return std::nullopt;
@@ -140,23 +138,12 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
     }
 
     // The project: the file (a project, or a glTF asset with its own materials), or the built-in default.
-    if (!positional.isEmpty()) {
-        std::string loadError;
-        std::string warning;
-        const std::string input = positional.first().toStdString();
-        auto project = isAssetFileName(input) ? projectFromAsset(input, &loadError, &warning)
-                                              : Project::load(input, &loadError, &warning);
-        if (!project) {
-            *error = QString::fromStdString(loadError);
-            *exitCode = kExitFailure;
-            return std::nullopt;
-        }
-        if (!warning.empty())
-            std::fprintf(stderr, "facet render: %s\n", warning.c_str());
-        request.project = std::move(*project);
-    } else {
-        request.project = Project::defaultProject();
+    auto input = commandInputProject(positional, QStringLiteral("render"), error);
+    if (!input) {
+        *exitCode = kExitFailure;
+        return std::nullopt;
     }
+    request.project = std::move(*input);
     Project& project = request.project;
     // --material and the factor flags override every material of the project or asset.
     const auto everyMaterial = [&project](const auto& edit) {
@@ -247,21 +234,10 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
         }
         project.environment.quality = *quality;
     }
-    if (o.parser.isSet(o.size)) {
-        const QStringList parts = o.parser.value(o.size).toLower().split(QLatin1Char('x'));
-        bool okW = false;
-        bool okH = false;
-        const int w = parts.size() == 2 ? parts[0].toInt(&okW) : 0;
-        const int h = parts.size() == 2 ? parts[1].toInt(&okH) : 0;
-        if (!okW || !okH || w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide) {
-            *error = QStringLiteral("--size: '%1' is not WxH with 1 <= W, H <= %2")
-                         .arg(o.parser.value(o.size))
-                         .arg(kMaxImageSide);
-            return std::nullopt;
-        }
-        request.width = w;
-        request.height = h;
-    }
+    if (o.parser.isSet(o.size)
+        && !parseImageSize(QStringLiteral("size"), o.parser.value(o.size), 1, kMaxImageSide, &request.width,
+            &request.height, error))
+        return std::nullopt;
     request.referenceView = o.parser.isSet(o.referenceView);
     if (o.parser.isSet(o.spp)) {
         bool ok = false;

@@ -1,5 +1,6 @@
 #include "SheetCommand.h"
 
+#include "CommandInputs.h"
 #include "CommandOptions.h"
 
 #include <QCommandLineOption>
@@ -198,11 +199,8 @@ std::optional<SheetRequest> SheetCommand::parse(const QStringList& arguments, QS
         return std::nullopt;
     SheetRequest request;
     const QStringList positional = o.parser.positionalArguments();
-    if (positional.size() > 1) {
-        *error = QStringLiteral("too many arguments: expected at most one project or glTF file, got '%1'")
-                     .arg(positional.join(QStringLiteral("' '")));
+    if (!checkOneInput(positional, error))
         return std::nullopt;
-    }
     if (!o.parser.isSet(o.output)) {
         *error = QStringLiteral("-o SHEET.png or -o SHEET.exr is required");
         return std::nullopt;
@@ -214,21 +212,10 @@ std::optional<SheetRequest> SheetCommand::parse(const QStringList& arguments, QS
                      .arg(o.parser.value(o.output));
         return std::nullopt;
     }
-    if (o.parser.isSet(o.cell)) {
-        const QStringList parts = o.parser.value(o.cell).toLower().split(QLatin1Char('x'));
-        bool okW = false;
-        bool okH = false;
-        const int w = parts.size() == 2 ? parts[0].toInt(&okW) : 0;
-        const int h = parts.size() == 2 ? parts[1].toInt(&okH) : 0;
-        if (!okW || !okH || w < 8 || h < 8 || w > kMaxCellSide || h > kMaxCellSide) {
-            *error = QStringLiteral("--cell: '%1' is not WxH with 8 <= W, H <= %2")
-                         .arg(o.parser.value(o.cell))
-                         .arg(kMaxCellSide);
-            return std::nullopt;
-        }
-        request.cellWidth = w;
-        request.cellHeight = h;
-    }
+    if (o.parser.isSet(o.cell)
+        && !parseImageSize(QStringLiteral("cell"), o.parser.value(o.cell), 8, kMaxCellSide, &request.cellWidth,
+            &request.cellHeight, error))
+        return std::nullopt;
     if (o.parser.isSet(o.labels)) {
         const QString state = o.parser.value(o.labels);
         if (state != QStringLiteral("on") && state != QStringLiteral("off")) {
@@ -269,23 +256,12 @@ std::optional<SheetRequest> SheetCommand::parse(const QStringList& arguments, QS
     request.printStats = o.parser.isSet(o.stats);
 
     // The project: the file, or the built-in default.
-    if (!positional.isEmpty()) {
-        std::string loadError;
-        std::string warning;
-        const std::string input = positional.first().toStdString();
-        auto project = isAssetFileName(input) ? projectFromAsset(input, &loadError, &warning)
-                                              : Project::load(input, &loadError, &warning);
-        if (!project) {
-            *error = QString::fromStdString(loadError);
-            *exitCode = kExitFailure;
-            return std::nullopt;
-        }
-        if (!warning.empty())
-            std::fprintf(stderr, "facet sheet: %s\n", warning.c_str());
-        request.project = std::move(*project);
-    } else {
-        request.project = Project::defaultProject();
+    auto input = commandInputProject(positional, QStringLiteral("sheet"), error);
+    if (!input) {
+        *exitCode = kExitFailure;
+        return std::nullopt;
     }
+    request.project = std::move(*input);
     if (o.parser.isSet(o.mesh))
         request.project.view.mesh = o.parser.value(o.mesh).toStdString();
     if (o.parser.isSet(o.quality)) {

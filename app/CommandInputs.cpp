@@ -1,0 +1,53 @@
+#include "CommandInputs.h"
+
+#include <cstdio>
+
+#include "core/AssetProject.h"
+
+namespace facet {
+
+bool checkOneInput(const QStringList& positional, QString* error)
+{
+    if (positional.size() <= 1)
+        return true;
+    *error = QStringLiteral("too many arguments: expected at most one project or glTF file, got '%1'")
+                 .arg(positional.join(QStringLiteral("' '")));
+    return false;
+}
+
+std::optional<Project> commandInputProject(const QStringList& positional, const QString& command, QString* error)
+{
+    if (positional.isEmpty())
+        return Project::defaultProject();
+    std::string loadError;
+    std::string warning;
+    const std::string input = positional.first().toStdString();
+    auto project = isAssetFileName(input) ? projectFromAsset(input, &loadError, &warning)
+                                          : Project::load(input, &loadError, &warning);
+    if (!project) {
+        *error = QString::fromStdString(loadError);
+        return std::nullopt;
+    }
+    if (!warning.empty())
+        std::fprintf(stderr, "facet %s: %s\n", qPrintable(command), warning.c_str());
+    return project;
+}
+
+bool parseImageSize(const QString& flag, const QString& text, int minimum, int maximum, int* width, int* height,
+    QString* error)
+{
+    const QStringList parts = text.toLower().split(QLatin1Char('x'));
+    bool okW = false;
+    bool okH = false;
+    const int w = parts.size() == 2 ? parts[0].toInt(&okW) : 0;
+    const int h = parts.size() == 2 ? parts[1].toInt(&okH) : 0;
+    if (!okW || !okH || w < minimum || h < minimum || w > maximum || h > maximum) {
+        *error = QStringLiteral("--%1: '%2' is not WxH with %3 <= W, H <= %4").arg(flag, text).arg(minimum).arg(maximum);
+        return false;
+    }
+    *width = w;
+    *height = h;
+    return true;
+}
+
+} // namespace facet

@@ -1,0 +1,26 @@
+#pragma once
+// What the headless commands that render a project (render, sheet) read alike: the positional
+// input (a project file, a glTF asset, or the built-in default project) and a WxH size.
+
+#include <optional>
+
+#include <QString>
+#include <QStringList>
+
+#include "core/Project.h"
+
+namespace facet {
+
+// At most one positional argument; else false with *error naming them.
+bool checkOneInput(const QStringList& positional, QString* error);
+// The project of `positional` (checkOneInput: a project file or a glTF asset with its
+// materials), or Project::defaultProject() without one. A load warning goes to stderr prefixed
+// "facet COMMAND: ". nullopt with *error when the file cannot be read.
+std::optional<Project> commandInputProject(const QStringList& positional, const QString& command, QString* error);
+
+// "WxH" (case-insensitive x) with minimum <= W, H <= maximum; else false with
+// *error = "--FLAG: 'TEXT' is not WxH with MIN <= W, H <= MAX".
+bool parseImageSize(const QString& flag, const QString& text, int minimum, int maximum, int* width, int* height,
+    QString* error);
+
+} // namespace facet
