@@ -361,7 +361,7 @@ Image labelledSheet(const std::vector<Image>& cells, const SheetGrid& grid, int 
     for (const SheetGrid::Line& row : grid.rows)
         rowLabelWidth = std::max(rowLabelWidth, metrics.horizontalAdvance(QString::fromStdString(row.label)));
     const int padding = metrics.height() / 2;
-    const int left = std::min(rowLabelWidth, 2 * cellWidth) + 2 * padding;
+    const int left = std::min(rowLabelWidth + 4, 2 * cellWidth) + 2 * padding; // (+4: the painter rounds advances up)
     const int top = metrics.height() + 2 * padding;
     const int columns = int(grid.columns.size());
     const int rows = int(grid.rows.size());
