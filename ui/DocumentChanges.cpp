@@ -48,6 +48,8 @@ DocumentChanges changesBetween(const Project& before, const Project& after)
         changes |= DocumentChange::CurrentMaterial;
     if (before.parts != after.parts)
         changes |= DocumentChange::Parts;
+    if (before.compare != after.compare)
+        changes |= DocumentChange::Compare;
 
     const EnvironmentSettings& ea = before.environment;
     const EnvironmentSettings& eb = after.environment;

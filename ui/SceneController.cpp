@@ -44,8 +44,9 @@ SceneController::SceneController(Document* document, QObject* parent)
 
 void SceneController::onDocumentChanged(DocumentChanges changes)
 {
-    // Which material the docks edit is not drawn: choosing one must not cost a frame.
-    if (changes == DocumentChanges(DocumentChange::CurrentMaterial))
+    // Which material the docks edit is not drawn, nor is the compare layout (the Compare view
+    // draws it): choosing one must not cost the single view a frame.
+    if (!(changes & ~DocumentChanges(DocumentChange::CurrentMaterial | DocumentChange::Compare)))
         return;
     if (changes.testFlag(DocumentChange::EnvironmentSource)
         && m_document->project().environment.source != m_environmentSource)
