@@ -14,6 +14,7 @@
 #include "ui/CompareController.h"
 #include "ui/CompareView.h"
 #include "ui/Document.h"
+#include "ui/EnvironmentDock.h"
 #include "ui/MainWindow.h"
 #include "ui/SurfaceFormat.h"
 #include "ui/ViewportWidget.h"
@@ -23,6 +24,8 @@
 #include <QAction>
 #include <QElapsedTimer>
 #include <QImage>
+#include <QListWidget>
+#include <QMimeData>
 #include <QSignalSpy>
 #include <QStackedWidget>
 #include <QStandardPaths>
@@ -82,6 +85,7 @@ private Q_SLOTS:
     void compareEditsUndoAndRedo();
     void environmentInTwoCellsPreparedOnce();
     void idleCompareViewDrawsNothing();
+    void libraryEntryDroppedOnCell();
 
 private:
     // Sets the project through one undo step and waits until the view drew every cell in full.
@@ -532,6 +536,37 @@ void CompareUiTest::idleCompareViewDrawsNothing()
     const std::uint64_t frames = m_view->frameCount();
     QTest::qWait(1000);
     QCOMPARE(m_view->frameCount(), frames);
+}
+
+void CompareUiTest::libraryEntryDroppedOnCell()
+{
+    Project project = baseProject();
+    project.compare.mode = CompareMode::Environments;
+    project.compare.environments.cells = {cellOf("studio"), cellOf("uniform:1"), cellOf("uniform:0.5")};
+    setProject(project);
+    // The dock's "Sky (built-in)" entry, dragged as the list drags it, onto cell 1, then onto
+    // the free quarter of the 2x2 grid (a new cell).
+    QListWidget* library = m_window->environmentDock()->library();
+    QListWidgetItem* sky = nullptr;
+    for (int row = 0; row < library->count(); ++row)
+        if (library->item(row)->data(Qt::UserRole).toString() == QStringLiteral("sky"))
+            sky = library->item(row);
+    QVERIFY(sky);
+    const auto drop = [this, library, sky](const QPoint& at) {
+        std::unique_ptr<QMimeData> mime(library->model()->mimeData({library->indexFromItem(sky)}));
+        QDragEnterEvent enter(at, Qt::CopyAction, mime.get(), Qt::LeftButton, {});
+        QCoreApplication::sendEvent(m_view, &enter);
+        QVERIFY(enter.isAccepted());
+        QDropEvent dropped(QPointF(at), Qt::CopyAction, mime.get(), Qt::LeftButton, {});
+        QCoreApplication::sendEvent(m_view, &dropped);
+    };
+    drop(m_view->cellRectOf(1).center());
+    QCOMPARE(m_document->project().compare.environments.cells[1].source, std::string("sky"));
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Cell Environment"));
+    const QRect last = m_view->cellRectOf(2);
+    drop(QPoint(m_view->width() - 5, last.center().y()));
+    QCOMPARE(int(m_document->project().compare.environments.cells.size()), 4);
+    QCOMPARE(m_document->project().compare.environments.cells[3].source, std::string("sky"));
 }
 
 QTEST_MAIN(CompareUiTest)

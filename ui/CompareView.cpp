@@ -7,10 +7,13 @@
 #include "ui/SceneController.h"
 
 #include <QContextMenuEvent>
+#include <QDataStream>
 #include <QDateTime>
+#include <QDragEnterEvent>
 #include <QFileInfo>
 #include <QLabel>
 #include <QMenu>
+#include <QMimeData>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
@@ -35,6 +38,7 @@ CompareView::CompareView(
     setObjectName(QStringLiteral("compareView"));
     setMinimumSize(160, 120);
     setFocusPolicy(Qt::StrongFocus);
+    setAcceptDrops(true);
     m_divider->setObjectName(QStringLiteral("compareDivider"));
     m_divider->setAttribute(Qt::WA_TransparentForMouseEvents);
     m_divider->setAutoFillBackground(true);
@@ -441,6 +445,47 @@ void CompareView::contextMenuEvent(QContextMenuEvent* event)
         m_choices ? m_choices() : EnvironmentChoices {}, this);
     if (!menu.isEmpty())
         menu.exec(event->globalPos());
+}
+
+QString CompareView::droppedSource(const QMimeData* mime)
+{
+    // QAbstractItemModel's drag format: per item its row, column and roles; the Environment
+    // dock keeps each entry's source in Qt::UserRole.
+    static const QString format = QStringLiteral("application/x-qabstractitemmodeldatalist");
+    if (!mime || !mime->hasFormat(format))
+        return {};
+    QByteArray bytes = mime->data(format);
+    QDataStream stream(&bytes, QIODevice::ReadOnly);
+    int row = 0;
+    int column = 0;
+    QMap<int, QVariant> roles;
+    stream >> row >> column >> roles;
+    return stream.status() == QDataStream::Ok ? roles.value(Qt::UserRole).toString() : QString();
+}
+
+void CompareView::dragEnterEvent(QDragEnterEvent* event)
+{
+    if (m_document->project().compare.mode == CompareMode::Environments
+        && !droppedSource(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+void CompareView::dragMoveEvent(QDragMoveEvent* event)
+{
+    event->acceptProposedAction();
+}
+
+void CompareView::dropEvent(QDropEvent* event)
+{
+    const QString source = droppedSource(event->mimeData());
+    if (source.isEmpty() || m_document->project().compare.mode != CompareMode::Environments)
+        return;
+    const int cell = cellAt(event->position().toPoint());
+    if (cell >= 0)
+        m_controller->setCellSource(m_cells[std::size_t(cell)].index, source.toStdString());
+    else
+        m_controller->addCell(source.toStdString());
+    event->acceptProposedAction();
 }
 
 } // namespace facet

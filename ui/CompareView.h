@@ -28,6 +28,7 @@
 #include <vector>
 
 class QLabel;
+class QMimeData;
 
 namespace facet {
 
@@ -92,6 +93,11 @@ protected:
     void mouseDoubleClickEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void contextMenuEvent(QContextMenuEvent* event) override;
+    // An Environment dock entry dropped on a grid cell shows there; dropped on the free part of
+    // the grid it becomes a new cell.
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dragMoveEvent(QDragMoveEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
     void rebuild();
@@ -100,6 +106,8 @@ private:
     std::vector<CompareCellDraw> cellDraws();
     void moveCamera(int cell, const std::function<Camera(const Camera&)>& move);
     void releaseRenderer();
+    // The environment source a drag from the Environment dock's list carries; empty for others.
+    static QString droppedSource(const QMimeData* mime);
 
     Document* m_document;
     SceneController* m_scene;
