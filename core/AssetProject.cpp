@@ -9,6 +9,8 @@ namespace facet {
 
 Project withAsset(Project project, const GltfAsset& asset, const std::string& assetPath)
 {
+    // B of A/B may name one of the materials about to go: it keeps showing it, as a snapshot.
+    project.compare.removeAllMaterials(project.materials);
     project.materials = asset.materials;
     project.currentMaterial = 0;
     project.parts.clear();
@@ -31,6 +33,7 @@ std::optional<Project> projectFromAsset(const std::string& path, std::string* er
     if (!asset)
         return std::nullopt;
     Project project = withAsset(Project::defaultProject(), *asset, absolute);
+    project.compare = CompareLayout::defaultFor(project); // B: a snapshot of the asset's first material
     std::string problem;
     if (!project.validate(&problem)) { // importGltf clamps into range: a failure here is a bug
         if (error)

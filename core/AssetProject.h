@@ -14,7 +14,9 @@ namespace facet {
 struct GltfAsset;
 
 // `project` with the asset's materials and parts and `assetPath` as its mesh; everything else
-// (environment, lights, camera, view settings) stays. The first material is the current one.
+// (environment, lights, camera, view settings, the compare layout) stays, except that an A/B
+// whose B was one of the replaced materials shows it as a snapshot (CompareLayout::
+// removeAllMaterials). The first material is the current one.
 Project withAsset(Project project, const GltfAsset& asset, const std::string& assetPath);
 
 // Project::defaultProject() with the asset at `path` (absolute or relative to the working

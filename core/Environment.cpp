@@ -416,6 +416,23 @@ std::optional<Environment> Environment::fromSpec(
     return environment;
 }
 
+bool Environment::checkSpec(const std::string& spec, std::string* problem)
+{
+    if (namesFile(spec))
+        return true;
+    // Empty, built-in or uniform: fromSpec makes these in memory (a uniform environment is 8x4
+    // texels, a built-in one is not made here), so its own message is the one to give.
+    if (builtinFromName(spec))
+        return true;
+    std::string error;
+    if (fromSpec(spec, &error))
+        return true;
+    const std::string prefix = "Environment::fromSpec: ";
+    if (problem)
+        *problem = error.rfind(prefix, 0) == 0 ? error.substr(prefix.size()) : error;
+    return false;
+}
+
 std::optional<Environment::Builtin> Environment::builtinFromName(const std::string& name)
 {
     for (Builtin which : {Builtin::Studio, Builtin::Sky})

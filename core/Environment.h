@@ -53,6 +53,10 @@ public:
     // spec. A missing file of a library says how to get it (AssetLibrary::missingFileAdvice).
     static std::optional<Environment> fromSpec(const std::string& spec, std::string* error,
                                                std::string* warning = nullptr);
+    // What fromSpec can tell without reading a file: `spec` is not empty, and a "uniform:" spec is
+    // well formed. On failure false and *problem, e.g. "uniform:-1: expected uniform:VALUE or
+    // uniform:R,G,B with finite non-negative numbers" (no function prefix: callers add the field).
+    static bool checkSpec(const std::string& spec, std::string* problem);
     static std::optional<Builtin> builtinFromName(const std::string& name);
     // Whether fromSpec reads `spec` from a file (a path or a library reference), not a built-in
     // or a uniform environment made in memory.

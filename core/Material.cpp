@@ -54,9 +54,7 @@ bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
             if (!checkRange(map.factor[i], 0.0, 1.0, key + ".factor." + kComponents[i], problem))
                 return false;
     } else {
-        // Normal strength scales tangent-space X and Y; beyond 10 the map is noise, below 0 it
-        // would flip both axes, which flipGreen and the texture itself express better.
-        const double hi = slot == MapSlot::Normal ? 10.0 : 1.0;
+        const double hi = slot == MapSlot::Normal ? Material::kMaxNormalStrength : 1.0;
         if (!checkRange(map.factor.x, 0.0, hi, key + ".factor", problem))
             return false;
         if (map.factor.y != map.factor.x || map.factor.z != map.factor.x || map.factor.w != map.factor.x)
@@ -171,9 +169,7 @@ double Material::dielectricF0() const
 
 bool Material::validate(std::string* problem) const
 {
-    // IOR: 1 is vacuum; 5 is above every transparent dielectric an artist might want (diamond
-    // 2.42, rutile 2.9, germanium ~4 in the infrared).
-    if (!checkRange(ior, 1.0, 5.0, "ior", problem))
+    if (!checkRange(ior, kMinIor, kMaxIor, "ior", problem))
         return false;
     if (!checkRange(emissiveStrength, 0.0, kMaxEmissiveStrength, "emissiveStrength", problem))
         return false;

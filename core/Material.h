@@ -105,6 +105,14 @@ struct Material {
     // may be 0; the clamp happens when shading (alpha()).
     static constexpr double kMinPerceptualRoughness = shading::kMinPerceptualRoughness;
     static constexpr double kDefaultIor = 1.5; // glTF 2.0 / KHR_materials_ior default: F0 = 0.04
+    // The ranges validate() accepts, for callers that offer a value range (wedge axes, sliders).
+    // IOR: 1 is vacuum; 5 is above every transparent dielectric an artist might want (diamond
+    // 2.42, rutile 2.9, germanium ~4 in the infrared).
+    static constexpr double kMinIor = 1.0;
+    static constexpr double kMaxIor = 5.0;
+    // Normal strength scales tangent-space X and Y; beyond 10 the map is noise, below 0 it would
+    // flip both axes, which flipGreen and the texture itself express better.
+    static constexpr double kMaxNormalStrength = 10.0;
 
     std::string name = "Material";
     // Index of refraction of the dielectric layer (KHR_materials_ior); metals ignore it and take

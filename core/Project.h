@@ -1,7 +1,8 @@
 #pragma once
-// The document: one material on one mesh, under an environment and punctual lights, seen by a
-// camera through a display transform; and its file format, "facet-project" version 1 (JSON,
-// docs/project-format.md). Plain values (Tiled's libtiled model); the undoable editing lives in ui/.
+// The document: materials on a mesh, under an environment and punctual lights, seen by a camera
+// through a display transform, with the layout of the Compare modes; and its file format,
+// "facet-project" version 3 (JSON, docs/project-format.md). Plain values (Tiled's libtiled
+// model); the undoable editing lives in ui/.
 //
 // Files: paths (textures, environment image, mesh) are absolute in memory and stored relative to
 // the project file's folder when on the same volume, so a project folder can be moved or shared;
@@ -24,6 +25,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/Camera.h"
+#include "core/CompareLayout.h"
 #include "core/Light.h"
 #include "core/Material.h"
 
@@ -50,6 +52,10 @@ const char* toString(IblQuality value); // "draft", "default", "high"
 std::optional<IblQuality> iblQualityFromString(std::string_view name);
 
 struct ViewSettings {
+    // 2^20 either way covers a candle-lit room to the midday sun with room to spare.
+    static constexpr double kMinExposureEV = -20.0;
+    static constexpr double kMaxExposureEV = 20.0;
+
     double exposureEV = 0.0; // scene radiance is multiplied by 2^exposureEV before tone mapping
     ToneMapper toneMapper = ToneMapper::KhronosNeutral;
     DisplayEncoding displayEncoding = DisplayEncoding::SRGB;
@@ -101,7 +107,10 @@ struct Project {
     // (older Facets ignore it with a warning). docs/project-format.md, "Versioning".
     // Version 2: several materials ("materials", "currentMaterial") and mesh parts ("parts");
     // version 1 files (one "material") still open.
-    static constexpr int kFormatVersion = 2;
+    // Version 3: the compare layout ("compare", core/CompareLayout.h), whose A/B snapshot is a
+    // material an older Facet would drop unseen on its next save; version 1 and 2 files open
+    // with CompareLayout::defaultFor.
+    static constexpr int kFormatVersion = 3;
     // More is refused when loading: far beyond any asset an artist previews, and each material
     // costs a shader variant and its textures.
     static constexpr int kMaxMaterials = 4096;
@@ -118,6 +127,9 @@ struct Project {
     std::vector<Light> lights;
     Camera camera; // the reference view by default
     ViewSettings view;
+    // What the Compare modes show (mode, environment grid, A/B, wedge); CompareLayout::defaultFor
+    // when a file has none.
+    CompareLayout compare;
 
     // The material the docks edit. Q_ASSERTs that currentMaterial is in range (validate() checks it).
     Material& material();

@@ -1,9 +1,16 @@
 // The main window: menus, the central viewport (a 4.1 core context), the GL version in the status
-// bar; a viewport with no scene shows the empty grey. Needs a display (Xvfb via with-display.sh).
+// bar; a viewport with no scene shows the empty grey; the dock layout gives the view the room, and
+// a dock's width holds when its content changes. Needs a display (Xvfb via with-display.sh).
 // ViewportUiTest checks what the viewport draws, ProjectFileUiTest the File menu's work.
 
+#include "core/Project.h"
+#include "ui/Document.h"
+#include "ui/EnvironmentDock.h"
+#include "ui/LightsDock.h"
 #include "ui/MainWindow.h"
+#include "ui/MaterialsDock.h"
 #include "ui/SurfaceFormat.h"
+#include "ui/TextureMapsDock.h"
 #include "ui/ViewportWidget.h"
 
 #include "TestSupport.h"
@@ -11,11 +18,16 @@
 #include <QAction>
 #include <QApplication>
 #include <QColor>
+#include <QDockWidget>
 #include <QImage>
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
 #include <QOpenGLContext>
+#include <QRegularExpression>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -26,6 +38,149 @@
 #include <memory>
 
 using namespace facet;
+
+namespace {
+
+// Where a window's width goes: the central view and the docks docked beside it.
+struct Room {
+    int window = 0;
+    int central = 0;
+    int docks = 0; // from the leftmost docked dock's left edge to the rightmost one's right edge
+    QString layout; // each visible docked dock's x and width, for failure messages
+};
+
+Room measureRoom(const MainWindow& window)
+{
+    Room room {window.width(), window.centralWidget()->width(), 0, {}};
+    QRect docks;
+    for (const QDockWidget* dock : window.findChildren<QDockWidget*>()) {
+        // A tab that is not raised is moved out of the window, not hidden.
+        if (!dock->isVisible() || dock->isFloating() || !window.rect().intersects(dock->geometry()))
+            continue;
+        docks |= dock->geometry();
+        room.layout += QStringLiteral(" %1 x=%2 w=%3 h=%4")
+                           .arg(dock->objectName())
+                           .arg(dock->x())
+                           .arg(dock->width())
+                           .arg(dock->height());
+    }
+    room.docks = docks.width();
+    return room;
+}
+
+QString describe(const Room& room)
+{
+    return QStringLiteral("window %1, central %2, docks %3:%4")
+        .arg(room.window)
+        .arg(room.central)
+        .arg(room.docks)
+        .arg(room.layout);
+}
+
+// Layout requests are posted events: let the main window's layout run them.
+void settle()
+{
+    for (int i = 0; i < 5; ++i) {
+        QCoreApplication::processEvents();
+        QTest::qWait(20);
+    }
+}
+
+// A window of `size` on the default layout (no saved one, unless `keepSavedLayout`), shown and
+// drawn once.
+std::unique_ptr<MainWindow> shownWindow(
+    const QString& recoveryDirectory, QSize size, bool keepSavedLayout = false)
+{
+    if (!keepSavedLayout)
+        QSettings().remove(QStringLiteral("window")); // another row's saved layout must not apply
+    auto window = std::make_unique<MainWindow>(nullptr, recoveryDirectory);
+    window->resize(size);
+    QSignalSpy swapped(window->viewport(), &QOpenGLWidget::frameSwapped);
+    window->show();
+    if (!QTest::qWaitForWindowExposed(window.get()) || !(swapped.count() > 0 || swapped.wait(20000)))
+        return nullptr;
+    settle();
+    return window;
+}
+
+// Whether the dock's content fits its width (each dock's content is in a DockScrollArea:
+// MainWindow::addDock); says what it needs when it does not.
+bool contentFits(const QDockWidget& dock)
+{
+    auto* scroll = qobject_cast<QScrollArea*>(dock.widget());
+    if (!scroll || !scroll->widget()) {
+        qWarning("%s: no scroll area", qPrintable(dock.objectName()));
+        return false;
+    }
+    const int needed = scroll->widget()->minimumSizeHint().width();
+    const int available = scroll->viewport()->width();
+    const bool fits = needed <= available && !scroll->horizontalScrollBar()->isVisible();
+    if (!fits)
+        qWarning("%s: the content needs %d pixels of width, has %d", qPrintable(dock.objectName()), needed,
+            available);
+    return fits;
+}
+
+// A change of a dock's content, and the dock that shows it (raised before the change).
+struct ContentChange {
+    const char* name;
+    const char* dock;
+    void (*apply)(MainWindow& window, const QString& directory);
+};
+
+void addLights(MainWindow& window, int count)
+{
+    for (int i = 0; i < count; ++i)
+        window.lightsDock()->addLight(LightType(i % 3));
+    QCOMPARE(int(window.document()->project().lights.size()), count);
+}
+
+// 200 characters, one word: nothing to wrap at.
+QString longName(const QString& suffix = {})
+{
+    return QString(200 - suffix.size(), QLatin1Char('x')) + suffix;
+}
+
+// A second material, current, named with 200 characters: in the Materials list, the parts'
+// combo boxes, the Texture Maps dock's "Material: … (2 of 2)" and the Material dock's name field.
+void addLongNamedMaterial(MainWindow& window, const QString&)
+{
+    Project project = window.document()->project();
+    project.materials.push_back(project.material());
+    project.materials.back().name = longName().toStdString();
+    project.currentMaterial = int(project.materials.size()) - 1;
+    window.document()->setProject(project, QStringLiteral("Add Material"));
+}
+
+const ContentChange kContentChanges[] = {
+    {"a light", "lightsDock", [](MainWindow& window, const QString&) { addLights(window, 1); }},
+    {"eight lights", "lightsDock", [](MainWindow& window, const QString&) { addLights(window, 8); }},
+    {"a map with a 200-character file name", "textureMapsDock",
+        [](MainWindow& window, const QString& directory) {
+            const QString path = directory + QLatin1Char('/') + longName(QStringLiteral("_basecolor.png"));
+            QImage image(8, 8, QImage::Format_RGB32);
+            image.fill(Qt::red);
+            QVERIFY2(image.save(path), qPrintable(path));
+            const QString message = window.textureMapsDock()->assignFiles({path});
+            QVERIFY2(message.contains(QStringLiteral("Base Colour")), qPrintable(message));
+            QTRY_COMPARE_WITH_TIMEOUT(window.textureMapsDock()->pendingThumbnails(), 0, 20000);
+        }},
+    {"a material with a 200-character name", "materialsDock", addLongNamedMaterial},
+    {"the long-named material in the Texture Maps dock", "textureMapsDock", addLongNamedMaterial},
+    {"an environment with a 200-character file name", "environmentDock",
+        [](MainWindow& window, const QString& directory) {
+            const QString path = directory + QLatin1Char('/') + longName(QStringLiteral(".exr"));
+            QVERIFY(test::writeConstantExr(path, 0.5f));
+            QSignalSpy ready(window.viewport(), &ViewportWidget::iblPrecomputeFinished);
+            QVERIFY(window.environmentDock()->chooseEnvironment(path));
+            QVERIFY(ready.count() > 0 || ready.wait(30000));
+        }},
+};
+
+const char* const kDockNames[]
+    = {"materialsDock", "textureMapsDock", "materialDock", "environmentDock", "lightsDock", "viewDock"};
+
+} // namespace
 
 class MainWindowUiTest : public QObject {
     Q_OBJECT
@@ -46,6 +201,12 @@ private Q_SLOTS:
     void statusBarShowsGLVersion();
     void aboutNamesVersionAndGL();
     void emptyViewportShowsClearColour();
+    void defaultLayoutGivesTheViewTheRoom_data();
+    void defaultLayoutGivesTheViewTheRoom();
+    void dockWidthHoldsWhenContentChanges_data();
+    void dockWidthHoldsWhenContentChanges();
+    void savedLayout_data();
+    void savedLayout();
 
 private:
     QTemporaryDir m_recovery;
@@ -179,6 +340,147 @@ void MainWindowUiTest::emptyViewportShowsClearColour()
         }
     QVERIFY(checked > 100);
     QCOMPARE(viewport.frameCount(), std::uint64_t(0)); // nothing was rendered, only cleared
+}
+
+void MainWindowUiTest::defaultLayoutGivesTheViewTheRoom_data()
+{
+    QTest::addColumn<QSize>("size");
+    QTest::addColumn<bool>("resetAfterResize");
+    QTest::newRow("1200x800, the default") << QSize(1200, 800) << false;
+    QTest::newRow("1600x1000") << QSize(1600, 1000) << false;
+    QTest::newRow("1920x1080") << QSize(1920, 1080) << false;
+    // View > Reset Layout in a window the user made larger: a quarter of that window.
+    QTest::newRow("1920x1080, Reset Layout after resizing") << QSize(1920, 1080) << true;
+}
+
+void MainWindowUiTest::defaultLayoutGivesTheViewTheRoom()
+{
+    QFETCH(QSize, size);
+    QFETCH(bool, resetAfterResize);
+    std::unique_ptr<MainWindow> window
+        = shownWindow(m_recovery.path(), resetAfterResize ? QSize(1200, 800) : size);
+    QVERIFY(window);
+    if (resetAfterResize) {
+        window->resize(size);
+        settle();
+        window->resetLayout();
+        settle();
+    }
+    QCOMPARE(window->size(), size); // the docks' minimum sizes do not make the window larger
+    const Room room = measureRoom(*window);
+    qInfo("%s", qPrintable(describe(room)));
+    // Every dock docked in one column on the right.
+    for (QDockWidget* dock : window->findChildren<QDockWidget*>()) {
+        QVERIFY2(!dock->isFloating(), qPrintable(dock->objectName()));
+        QCOMPARE(window->dockWidgetArea(dock), Qt::RightDockWidgetArea);
+    }
+    QVERIFY2(room.central >= room.window * 70 / 100, qPrintable(describe(room)));
+    // Each dock's content fits the column's width: nothing to scroll sideways, nothing cut.
+    for (QDockWidget* dock : window->findChildren<QDockWidget*>()) {
+        dock->raise();
+        settle();
+        QVERIFY2(contentFits(*dock), qPrintable(dock->objectName()));
+    }
+    // About a quarter: 22% to 28% of the width.
+    QVERIFY2(room.docks >= room.window * 22 / 100 && room.docks <= room.window * 28 / 100,
+        qPrintable(describe(room)));
+}
+
+void MainWindowUiTest::dockWidthHoldsWhenContentChanges_data()
+{
+    QTest::addColumn<int>("change");
+    for (int i = 0; i < int(std::size(kContentChanges)); ++i)
+        QTest::newRow(kContentChanges[i].name) << i;
+    // Switching tabs: a row per dock, raised from the default's raised tab (rows -1, -2, ...).
+    for (int i = 0; i < int(std::size(kDockNames)); ++i)
+        QTest::addRow("%s raised", kDockNames[i]) << -1 - i;
+}
+
+void MainWindowUiTest::dockWidthHoldsWhenContentChanges()
+{
+    QFETCH(int, change);
+    QTemporaryDir directory;
+    QVERIFY(directory.isValid());
+    std::unique_ptr<MainWindow> window = shownWindow(m_recovery.path(), QSize(1200, 800));
+    QVERIFY(window);
+    const char* dockName = change >= 0 ? kContentChanges[change].dock : kDockNames[-1 - change];
+    auto* dock = window->findChild<QDockWidget*>(QLatin1String(dockName));
+    QVERIFY2(dock, dockName);
+    if (change >= 0) {
+        dock->raise();
+        settle();
+    }
+    const Room before = measureRoom(*window);
+    if (change >= 0) {
+        kContentChanges[change].apply(*window, directory.path());
+        if (QTest::currentTestFailed())
+            return;
+    } else {
+        dock->raise();
+    }
+    settle();
+    const Room after = measureRoom(*window);
+    qInfo("before: %s", qPrintable(describe(before)));
+    qInfo("after:  %s", qPrintable(describe(after)));
+    const QString grab = test::outputDir()
+        + QStringLiteral("/MainWindowUiTest-%1.png")
+              .arg(QString::fromLatin1(QTest::currentDataTag())
+                       .replace(QRegularExpression(QStringLiteral("[^A-Za-z0-9]+")), QStringLiteral("-")));
+    QVERIFY2(window->grab().save(grab), qPrintable(grab));
+    QCOMPARE(after.window, before.window);
+    QCOMPARE(after.central, before.central);
+    QCOMPARE(after.docks, before.docks);
+    QVERIFY(contentFits(*dock));
+    window->document()->newProject(); // nothing to ask about
+}
+
+void MainWindowUiTest::savedLayout_data()
+{
+    // What the last session left in QSettings: "window/layout" is QMainWindow::saveState(version).
+    QTest::addColumn<int>("savedVersion"); // 0: this build's (written by closing a window)
+    QTest::addColumn<bool>("garbage");
+    QTest::addColumn<bool>("restored"); // the Lights dock the last session moved left comes back there
+    QTest::newRow("saved by this version: restored") << 0 << false << true;
+    // Version 2 was the layout with docks on both sides: replaced by the default, once.
+    QTest::newRow("saved by version 2: the default") << 2 << false << false;
+    QTest::newRow("unreadable: the default") << 0 << true << false;
+}
+
+void MainWindowUiTest::savedLayout()
+{
+    QFETCH(int, savedVersion);
+    QFETCH(bool, garbage);
+    QFETCH(bool, restored);
+    const QString layoutKey = QStringLiteral("window/layout");
+    {
+        std::unique_ptr<MainWindow> last = shownWindow(m_recovery.path(), QSize(1200, 800));
+        QVERIFY(last);
+        last->addDockWidget(Qt::LeftDockWidgetArea, last->lightsDock());
+        settle();
+        QCOMPARE(last->dockWidgetArea(last->lightsDock()), Qt::LeftDockWidgetArea);
+        QVERIFY(last->close()); // saves the layout
+        if (savedVersion != 0)
+            QSettings().setValue(layoutKey, last->saveState(savedVersion));
+        if (garbage)
+            QSettings().setValue(layoutKey, QByteArray("not a layout"));
+    }
+    std::unique_ptr<MainWindow> window = shownWindow(m_recovery.path(), QSize(1200, 800), true);
+    QVERIFY(window);
+    QCOMPARE(window->dockWidgetArea(window->lightsDock()),
+        restored ? Qt::LeftDockWidgetArea : Qt::RightDockWidgetArea);
+    const Room room = measureRoom(*window);
+    if (!restored) {
+        // The default in full: every dock on the right, the view three quarters of the window.
+        for (QDockWidget* dock : window->findChildren<QDockWidget*>())
+            QCOMPARE(window->dockWidgetArea(dock), Qt::RightDockWidgetArea);
+        QVERIFY2(room.central >= room.window * 70 / 100, qPrintable(describe(room)));
+    }
+    // Closing saves this version's layout: the next start restores it, the old one is gone.
+    QVERIFY(window->close());
+    std::unique_ptr<MainWindow> next = shownWindow(m_recovery.path(), QSize(1200, 800), true);
+    QVERIFY(next);
+    QCOMPARE(next->dockWidgetArea(next->lightsDock()), window->dockWidgetArea(window->lightsDock()));
+    QCOMPARE(measureRoom(*next).central, room.central);
 }
 
 QTEST_MAIN(MainWindowUiTest)

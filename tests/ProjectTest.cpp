@@ -153,6 +153,31 @@ Project everythingChanged(const QString& root)
     v.background = BackgroundMode::Color;
     v.backgroundColor = {0.1, 0.2, 0.3};
     v.backgroundBlurRoughness = 0.7;
+
+    // Version 3: the compare layout (tests/CompareLayoutTest.cpp covers each field).
+    CompareLayout& c = p.compare;
+    c.ab.snapshot = m; // before the push_back below, which moves the materials
+    Material second = m;
+    second.name = "Second";
+    second.setFactor(MapSlot::Metallic, 1.0);
+    p.materials.push_back(second);
+    c.mode = CompareMode::Wedge;
+    c.environments.cells = EnvironmentGrid::defaultCells(under("hdri/room.exr"));
+    c.environments.cells[1].rotationFollowsAll = false;
+    c.environments.cells[1].rotationDegrees = 45.0;
+    c.environments.cells[2].exposureFollowsAll = false;
+    c.environments.cells[2].exposureOffsetEV = -2.5;
+    c.environments.unlinkCamera(3, p.camera);
+    c.environments.cells[3].camera.position = {3.0, 0.0, 0.0};
+    c.environments.linkedCameras = false;
+    c.ab.source = BSource::Material;
+    c.ab.material = 1;
+    c.ab.preset = "gold";
+    c.ab.split = 0.25;
+    c.ab.layout = ABLayout::SideBySide;
+    c.wedge.rows
+        = WedgeAxis {WedgeParameter::Environment, {}, {under("hdri/room.exr"), "sky", "uniform:0.5"}};
+    c.wedge.columns = WedgeAxis {WedgeParameter::Exposure, {-1.0, 0.0, 1.5}, {}};
     return p;
 }
 
@@ -232,6 +257,10 @@ private Q_SLOTS:
             QVERIFY2(original.material().map(slot) != defaults.material().map(slot), toString(slot));
         QVERIFY(original.environment != defaults.environment && original.camera != defaults.camera);
         QVERIFY(original.view != defaults.view && original.lights.size() == 3);
+        QVERIFY(original.compare.mode != defaults.compare.mode
+            && original.compare.environments != defaults.compare.environments
+            && original.compare.ab != defaults.compare.ab
+            && original.compare.wedge != defaults.compare.wedge);
 
         const std::string path = QDir(root).filePath(QStringLiteral("look.facet.json")).toStdString();
         QVERIFY(QDir().mkpath(root));
@@ -255,7 +284,27 @@ private Q_SLOTS:
         const QJsonObject object = QJsonDocument::fromJson(readAll(qs(path))).object();
         QCOMPARE(object.value(QLatin1String("format")).toString(), QStringLiteral("facet-project"));
         QCOMPARE(object.value(QLatin1String("version")).toInt(), Project::kFormatVersion);
-        QCOMPARE(object.value(QLatin1String("version")).toInt(), 2);
+        QCOMPARE(object.value(QLatin1String("version")).toInt(), 3);
+        // Paths inside the compare layout are stored relative to the project, as the others are.
+        const QJsonObject compare = object.value(QLatin1String("compare")).toObject();
+        QCOMPARE(compare.value(QLatin1String("environments"))
+                     .toObject()
+                     .value(QLatin1String("cells"))
+                     .toArray()
+                     .at(0)
+                     .toObject()
+                     .value(QLatin1String("source"))
+                     .toString(),
+            QStringLiteral("hdri/room.exr"));
+        QCOMPARE(compare.value(QLatin1String("ab"))
+                     .toObject()
+                     .value(QLatin1String("snapshot"))
+                     .toObject()
+                     .value(QLatin1String("baseColor"))
+                     .toObject()
+                     .value(QLatin1String("texture"))
+                     .toString(),
+            QStringLiteral("textures/albedo.png"));
     }
 
     void defaultProjectRoundTrips()
@@ -305,72 +354,6 @@ private Q_SLOTS:
         QVERIFY(*loaded == p);
     }
 
-    void specsKeepBuiltinNames()
-    {
-        QCOMPARE(json::storedSpec("studio", "/a/b"), std::string("studio"));
-        QCOMPARE(json::storedSpec("uniform:0.5,0.5,0.5", "/a/b"), std::string("uniform:0.5,0.5,0.5"));
-        QCOMPARE(json::resolvedSpec("uniform:1", "/a/b"), std::string("uniform:1"));
-        QCOMPARE(json::resolvedSpec("sky", "/a/b"), std::string("sky"));
-        // A file whose relative path would read as a built-in name keeps a "./".
-        QCOMPARE(json::storedSpec("/a/b/studio", "/a/b"), std::string("./studio"));
-        QCOMPARE(json::resolvedSpec("./studio", "/a/b"), std::string("/a/b/studio"));
-        QCOMPARE(json::resolvedSpec("room.exr", "/a/b"), std::string("/a/b/room.exr"));
-        QCOMPARE(json::storedPath("/a/b/c/d.png", "/a/b"), std::string("c/d.png"));
-        QCOMPARE(json::storedPath("/a/x.png", "/a/b"), std::string("../x.png"));
-        QCOMPARE(json::storedPath("/a/x.png", ""), std::string("/a/x.png"));
-        QCOMPARE(json::storedPath("", "/a/b"), std::string());
-        QCOMPARE(json::resolvedPath("../x.png", "/a/b"), std::string("/a/x.png"));
-        QCOMPARE(json::resolvedPath("/abs/x.png", "/a/b"), std::string("/abs/x.png"));
-    }
-
-    void pathsOnAnotherVolumeStayAbsolute()
-    {
-        QTemporaryDir dir;
-        QVERIFY(dir.isValid());
-        // /proc is its own file system on Linux; if it shares the temporary folder's volume here,
-        // there is no second volume to test with.
-        const QStorageInfo proc(QStringLiteral("/proc/self"));
-        const QStorageInfo temp(dir.path());
-        if (!proc.isValid() || !temp.isValid() || proc.rootPath() == temp.rootPath())
-            QSKIP("no second volume to test with");
-        QCOMPARE(json::storedPath("/proc/self/status", dir.path().toStdString()),
-            std::string("/proc/self/status"));
-        QCOMPARE(json::resolvedPath("/proc/self/status", dir.path().toStdString()),
-            std::string("/proc/self/status"));
-    }
-
-    void movingTheProjectFolderKeepsTexturesFound()
-    {
-        QTemporaryDir dir;
-        QVERIFY(dir.isValid());
-        const QString before = QDir(dir.path()).filePath(QStringLiteral("before"));
-        const QString after = QDir(dir.path()).filePath(QStringLiteral("elsewhere/after"));
-        Project p = Project::defaultProject();
-        p.material().map(MapSlot::BaseColor).path
-            = QDir(before).filePath(QStringLiteral("tex/albedo.png")).toStdString();
-        p.material().map(MapSlot::Normal).path
-            = QDir(before).filePath(QStringLiteral("tex/normal.png")).toStdString();
-        p.environment.source = QDir(before).filePath(QStringLiteral("env.exr")).toStdString();
-        QVERIFY(writeAll(QDir(before).filePath(QStringLiteral("tex/albedo.png")), "png"));
-        QVERIFY(writeAll(QDir(before).filePath(QStringLiteral("tex/normal.png")), "png"));
-        QVERIFY(writeAll(QDir(before).filePath(QStringLiteral("env.exr")), "exr"));
-        std::string error;
-        QVERIFY2(
-            p.save(QDir(before).filePath(QStringLiteral("p.json")).toStdString(), &error), error.c_str());
-
-        QVERIFY(QDir().mkpath(QFileInfo(after).absolutePath()));
-        QVERIFY(QDir().rename(before, after));
-        const std::optional<Project> loaded
-            = Project::load(QDir(after).filePath(QStringLiteral("p.json")).toStdString(), &error);
-        QVERIFY2(loaded, error.c_str());
-        for (MapSlot slot : {MapSlot::BaseColor, MapSlot::Normal}) {
-            const QString texture = qs(loaded->material().map(slot).path);
-            QVERIFY2(texture.startsWith(after) && QFileInfo::exists(texture), qPrintable(texture));
-        }
-        QVERIFY(QFileInfo::exists(qs(loaded->environment.source)));
-        QVERIFY(loaded->material().map(MapSlot::Metallic).path.empty());
-    }
-
     // Version 2: several materials, the current one, and which part shows which material.
     void severalMaterialsAndPartsRoundTrip()
     {
@@ -399,20 +382,73 @@ private Q_SLOTS:
         QVERIFY(loaded->isPartVisible(7));
     }
 
-    // A version 1 file (one "material") still opens, as the only material.
-    void version1FileOpens()
+    // Files as older Facets wrote them (tests/data/projects: every field, keys in Qt's order)
+    // still open: version 1 with one "material", version 2 with "materials" and "parts". Neither
+    // has "compare": they open with the default layout for what they hold (the grid starts with
+    // the file's environment, B is a snapshot of the current material), and save as version 3.
+    void olderVersionsOpen_data()
     {
-        const QByteArray text = R"({"format": "facet-project", "version": 1,
-            "material": {"name": "Old", "roughness": {"factor": 0.25}}})";
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("materialCount");
+        QTest::addColumn<int>("current");
+        QTest::addColumn<QString>("currentName");
+        QTest::addColumn<double>("currentRoughness");
+        QTest::addColumn<int>("partCount");
+        QTest::newRow("version 1") << "version1.json" << 1 << 0 << "Old" << 0.25 << 0;
+        QTest::newRow("version 2") << "version2.json" << 2 << 1 << "Visor" << 0.75 << 2;
+    }
+    void olderVersionsOpen()
+    {
+        QFETCH(QString, file);
+        QFETCH(int, materialCount);
+        QFETCH(int, current);
+        QFETCH(QString, currentName);
+        QFETCH(double, currentRoughness);
+        QFETCH(int, partCount);
+        const QString path = test::sourceDir() + QStringLiteral("/tests/data/projects/") + file;
         std::string error;
-        const auto project
-            = Project::fromJson(QJsonDocument::fromJson(text).object(), {}, &error);
+        std::string warning;
+        const auto project = Project::load(path.toStdString(), &error, &warning);
         QVERIFY2(project, error.c_str());
-        QCOMPARE(project->materials.size(), std::size_t(1));
-        QCOMPARE(project->material().name, std::string("Old"));
-        QCOMPARE(project->material().roughness(), 0.25);
-        QVERIFY(project->parts.empty());
-        QCOMPARE(project->currentMaterial, 0);
+        QVERIFY2(warning.empty(), warning.c_str());
+        QCOMPARE(int(project->materials.size()), materialCount);
+        QCOMPARE(project->currentMaterial, current);
+        QCOMPARE(qs(project->material().name), currentName);
+        QCOMPARE(project->material().roughness(), currentRoughness);
+        QCOMPARE(int(project->parts.size()), partCount);
+        QCOMPARE(project->environment.source, std::string("sky"));
+        QCOMPARE(project->environment.rotationDegrees, 30.0);
+        QCOMPARE(project->view.exposureEV, 0.5);
+        QCOMPARE(project->lights.size(), std::size_t(1));
+
+        // The default layout for what the file holds.
+        QVERIFY(project->compare == CompareLayout::defaultFor(*project));
+        QCOMPARE(project->compare.mode, CompareMode::Single);
+        QCOMPARE(project->compare.environments.cells.size(), std::size_t(3));
+        QCOMPARE(project->compare.environments.cells[0].source, std::string("sky"));
+        QCOMPARE(project->compare.environments.cells[1].source, std::string("studio"));
+        QCOMPARE(project->compare.environments.cells[2].source, std::string("uniform:1"));
+        QVERIFY(project->compare.ab.snapshot == project->material());
+
+        // Saved again, it is a version 3 file that reads back the same.
+        const QJsonObject saved = project->toJson();
+        QCOMPARE(saved.value(QLatin1String("version")).toInt(), 3);
+        QVERIFY(saved.contains(QLatin1String("compare")) && !saved.contains(QLatin1String("material")));
+        const auto again = Project::fromJson(saved, {}, &error);
+        QVERIFY2(again, error.c_str());
+        QVERIFY(*again == *project);
+
+        // The version 2 file is what a version 2 Facet wrote: the version 3 writer's object
+        // without "compare", field for field (so no field of it was left to a default).
+        if (file == QLatin1String("version2.json")) {
+            QJsonObject v2 = saved;
+            v2.remove(QLatin1String("compare"));
+            v2[QLatin1String("version")] = 2;
+            QJsonObject onDisk = QJsonDocument::fromJson(readAll(path)).object();
+            onDisk.remove(QLatin1String("generator"));
+            v2.remove(QLatin1String("generator"));
+            QCOMPARE(v2, onDisk);
+        }
     }
 
     // The limits' good side: eight lights, a debug view by its older alias.
@@ -469,8 +505,24 @@ private Q_SLOTS:
                                     << QStringLiteral("\"version\" is missing");
         QTest::newRow("newer version")
             << QByteArray(
-                   R"({"format": "facet-project", "version": 3, "material": {"roughness": "new syntax"}})")
-            << QStringLiteral("written by a newer Facet (version 3); this Facet reads up to version 2");
+                   R"({"format": "facet-project", "version": 4, "material": {"roughness": "new syntax"}})")
+            << QStringLiteral("written by a newer Facet (version 4); this Facet reads up to version 3");
+        // Version 3's compare layout (every refusal: tests/CompareLayoutTest.cpp); the path names it.
+        QTest::newRow("compare: B names a material the project lacks")
+            << QByteArray(R"({"format": "facet-project", "version": 3, "materials": [{}, {}],
+                            "compare": {"ab": {"source": "material", "material": 2}}})")
+            << QStringLiteral("compare.ab.material: 2 is not a material (there are 2)");
+        QTest::newRow("compare: a cell's bad camera")
+            << QByteArray(R"({"format": "facet-project", "version": 3, "compare": {"environments": {"cells":
+                            [{}, {"camera": {"nearPlane": -1}}]}}})")
+            << QStringLiteral("compare.environments.cells[1].camera.nearPlane");
+        QTest::newRow("compare: snapshot out of range")
+            << QByteArray(R"({"format": "facet-project", "version": 3,
+                            "compare": {"ab": {"snapshot": {"roughness": {"factor": 2}}}}})")
+            << QStringLiteral("compare.ab.snapshot.roughness.factor: 2 is outside [0, 1]");
+        QTest::newRow("compare not an object")
+            << QByteArray(R"({"format": "facet-project", "version": 3, "compare": "ab"})")
+            << QStringLiteral("compare: expected an object, got a string");
         QTest::newRow("version zero") << QByteArray(R"({"format": "facet-project", "version": 0})")
                                       << QStringLiteral("version: 0 is not a valid version");
         QTest::newRow("version string") << QByteArray(R"({"format": "facet-project", "version": "1"})")
@@ -567,32 +619,6 @@ private Q_SLOTS:
         QVERIFY2(contains(error, expected.toStdString()), error.c_str());
     }
 
-    void missingAndUnreadableFiles()
-    {
-        QTemporaryDir dir;
-        QVERIFY(dir.isValid());
-        std::string error;
-        const QString missing = QDir(dir.path()).filePath(QStringLiteral("missing.json"));
-        QVERIFY(!Project::load(missing.toStdString(), &error));
-        QVERIFY2(
-            contains(error, "Project::load: " + missing.toStdString() + ": no such file"), error.c_str());
-
-        QVERIFY(!Project::load(dir.path().toStdString(), &error));
-        QVERIFY2(contains(error, "is a folder"), error.c_str());
-
-        QVERIFY(!Project::load({}, &error));
-        QVERIFY2(contains(error, "Project::load"), error.c_str());
-
-        const QString locked = QDir(dir.path()).filePath(QStringLiteral("locked.json"));
-        QVERIFY(writeAll(locked, minimalWith("")));
-        QVERIFY(QFile::setPermissions(locked, QFileDevice::WriteOwner));
-        QFile probe(locked);
-        if (probe.open(QIODevice::ReadOnly))
-            QSKIP("running with permission to read any file (root): cannot test an unreadable file");
-        QVERIFY(!Project::load(locked.toStdString(), &error));
-        QVERIFY2(contains(error, "locked.json: cannot read it"), error.c_str());
-    }
-
     void missingFieldsTakeDefaults()
     {
         std::string error;
@@ -641,65 +667,6 @@ private Q_SLOTS:
         // fromJson names itself in its errors.
         QVERIFY(!Project::fromJson(QJsonObject(), {}, &error));
         QVERIFY2(error.rfind("Project::fromJson: ", 0) == 0, error.c_str());
-    }
-
-    void failedSaveLeavesTheOriginalUntouched()
-    {
-        QTemporaryDir dir;
-        QVERIFY(dir.isValid());
-        const QString folder = QDir(dir.path()).filePath(QStringLiteral("work"));
-        QVERIFY(QDir().mkpath(folder));
-        const QString path = QDir(folder).filePath(QStringLiteral("keep.json"));
-        std::string error;
-        QVERIFY2(Project::defaultProject().save(path.toStdString(), &error), error.c_str());
-        const QByteArray original = readAll(path);
-        QVERIFY(!original.isEmpty());
-
-        // An invalid project is refused before anything is written.
-        Project invalid = Project::defaultProject();
-        invalid.lights.push_back(Light {});
-        invalid.lights.back().intensity = -5.0;
-        QVERIFY(!invalid.save(path.toStdString(), &error));
-        QVERIFY2(
-            contains(error, "Project::save: " + path.toStdString()) && contains(error, "lights[0].intensity"),
-            error.c_str());
-        QCOMPARE(readAll(path), original);
-
-        // A folder that does not exist.
-        const QString nowhere = QDir(dir.path()).filePath(QStringLiteral("no/such/folder/p.json"));
-        QVERIFY(!Project::defaultProject().save(nowhere.toStdString(), &error));
-        QVERIFY2(
-            contains(error, "Project::save: " + nowhere.toStdString()) && contains(error, "does not exist"),
-            error.c_str());
-        QVERIFY(!QFileInfo::exists(nowhere));
-
-        // A folder path given as the file.
-        QVERIFY(!Project::defaultProject().save(folder.toStdString(), &error));
-        QVERIFY(QFileInfo(folder).isDir());
-
-        // A read-only folder: the save fails and the old file survives, with no temporary left.
-        Project changed = Project::defaultProject();
-        changed.material().name = "Changed";
-        QVERIFY(QFile::setPermissions(folder, QFileDevice::ReadOwner | QFileDevice::ExeOwner));
-        QFile probe(QDir(folder).filePath(QStringLiteral("probe")));
-        const bool folderStillWritable = probe.open(QIODevice::WriteOnly);
-        if (folderStillWritable) {
-            probe.close();
-            probe.remove();
-        }
-        bool saved = false;
-        if (!folderStillWritable)
-            saved = changed.save(path.toStdString(), &error);
-        QVERIFY(QFile::setPermissions(
-            folder, QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner));
-        if (folderStillWritable)
-            QSKIP("running with permission to write anywhere (root): cannot test a read-only folder");
-        QVERIFY(!saved);
-        QVERIFY2(
-            contains(error, "Project::save: " + path.toStdString() + ": cannot write it"), error.c_str());
-        QCOMPARE(readAll(path), original);
-        QCOMPARE(
-            QDir(folder).entryList(QDir::Files | QDir::Hidden), QStringList {QStringLiteral("keep.json")});
     }
 
     void truncatedFilesNeverCrash()

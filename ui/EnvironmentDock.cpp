@@ -133,10 +133,17 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
     setObjectName(QStringLiteral("environmentDock"));
     m_library->setObjectName(QStringLiteral("environmentLibrary"));
     m_library->setViewMode(QListView::IconMode);
-    m_library->setIconSize(QSize(kThumbnailWidth, kThumbnailWidth / 2));
+    // Cells an icon wide with two lines of label, a little smaller than the thumbnails: two columns
+    // fit the default dock column (a quarter of a 1200-pixel window, beside the tabs); a longer
+    // label wraps, then is cut, not a wider cell.
+    constexpr int kIconWidth = 112;
+    m_library->setIconSize(QSize(kIconWidth, kIconWidth / 2));
+    m_library->setGridSize(QSize(kIconWidth + 4, kIconWidth / 2 + 2 * fontMetrics().lineSpacing() + 8));
     m_library->setResizeMode(QListView::Adjust);
     m_library->setMovement(QListView::Static);
-    m_library->setUniformItemSizes(true);
+    // Each item's own size, wrapped to the grid's width (uniform sizes took the size of whichever
+    // item the view asked first, and could cut every label to one line).
+    m_library->setUniformItemSizes(false);
     m_library->setWordWrap(true);
     m_library->setSelectionMode(QAbstractItemView::SingleSelection);
     m_library->setDragDropMode(QAbstractItemView::DragOnly); // onto the Compare view's cells
@@ -158,6 +165,9 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
             m_quality->addItem(QString::fromStdString(name), int(*quality));
     m_status->setObjectName(QStringLiteral("environmentStatus"));
     m_status->setWordWrap(true);
+    // It names the environment: a long file name (one word) is cut at the dock's edge rather than
+    // widening the dock; the whole status is in the tooltip and the status bar.
+    m_status->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_busy->setObjectName(QStringLiteral("environmentBusy"));
     m_busy->setRange(0, 0);
     m_busy->setMaximumHeight(8);
@@ -385,6 +395,7 @@ void EnvironmentDock::showLightingStatus(const QString& text, bool busy)
 {
     m_busy->setVisible(busy);
     m_status->setText(text);
+    m_status->setToolTip(text);
 }
 
 } // namespace facet

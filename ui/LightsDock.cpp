@@ -143,11 +143,16 @@ LightsDock::LightsDock(Document* document, QWidget* parent)
     for (int i = 0; i < 3; ++i) {
         m_position[i] = new QDoubleSpinBox(m_editor);
         m_position[i]->setObjectName(QStringLiteral("lightPosition%1").arg(QLatin1String(axes[i])));
-        m_position[i]->setRange(-1000.0, 1000.0);
         m_position[i]->setDecimals(2);
         m_position[i]->setSingleStep(0.1);
         m_position[i]->setKeyboardTracking(false);
-        m_position[i]->setPrefix(QLatin1String(axes[i]) + QStringLiteral(" "));
+        // Three boxes in a row fit a narrow dock column (a quarter of a 1200-pixel window): the
+        // axes are named in the row's label, not in each box, and a box asks for the width of
+        // values to ±100 m (a light near the object); a farther one scrolls in its box.
+        m_position[i]->setRange(-100.0, 100.0);
+        m_position[i]->setMinimumWidth(m_position[i]->minimumSizeHint().width());
+        m_position[i]->setRange(-1000.0, 1000.0);
+        m_position[i]->setToolTip(tr("%1 (metres)").arg(QLatin1String(axes[i])));
         positionRow->addWidget(m_position[i]);
     }
 
@@ -161,7 +166,7 @@ LightsDock::LightsDock(Document* document, QWidget* parent)
     form->addRow(m_intensityLabel, m_intensity);
     form->addRow(tr("Azimuth"), m_azimuth);
     form->addRow(tr("Elevation"), m_elevation);
-    form->addRow(tr("Position"), positionRow);
+    form->addRow(tr("Position X Y Z"), positionRow);
     form->addRow(tr("Range"), m_range);
     form->addRow(tr("Inner cone"), m_innerCone);
     form->addRow(tr("Outer cone"), m_outerCone);

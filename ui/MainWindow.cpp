@@ -6,6 +6,7 @@
 #include "ui/CompareActions.h"
 #include "ui/CompareController.h"
 #include "ui/CompareView.h"
+#include "ui/DockScrollArea.h"
 #include "ui/Document.h"
 #include "ui/EnvironmentDock.h"
 #include "ui/LightsDock.h"
@@ -38,14 +39,22 @@
 #include <QStatusBar>
 #include <QUndoStack>
 
+#include <initializer_list>
+
 namespace facet {
 
 namespace {
 
 const QLatin1String kGeometryKey("window/geometry");
 const QLatin1String kLayoutKey("window/layout");
-// 2: the Materials dock. A saved layout of another version is not restored (the default shows).
-constexpr int kLayoutVersion = 2;
+// 2: the Materials dock. 3: every dock in one column on the right (the view was left 446 of 1200
+// pixels by docks on both sides). A saved layout of another version is not restored: the default
+// shows, once, and the next close saves it under this version.
+constexpr int kLayoutVersion = 3;
+// The default dock column: a quarter of the window's width; the Materials dock takes this share of
+// the column's height, the tabs below the rest.
+constexpr int kDockColumnWidthDivisor = 4;
+constexpr double kMaterialsHeightShare = 0.35;
 constexpr int kPresetShortcuts = 9; // keys 1..9
 
 } // namespace
@@ -259,21 +268,21 @@ void MainWindow::createDocks()
     m_environmentDock = new EnvironmentDock(m_document, this);
     m_lightsDock = new LightsDock(m_document, this);
     m_viewDock = new ViewDock(m_document, this);
-    // Left: the materials and parts above, the current material (maps, BRDF and presets) below;
-    // right: the scene (environment, lights, view). Tabbed, so the viewport keeps most of the window.
-    addDock(m_materialsDock, Qt::LeftDockWidgetArea);
-    addDock(m_textureMapsDock, Qt::LeftDockWidgetArea);
-    addDock(m_materialDock, Qt::LeftDockWidgetArea);
-    tabifyDockWidget(m_textureMapsDock, m_materialDock);
-    addDock(m_environmentDock, Qt::RightDockWidgetArea);
-    addDock(m_lightsDock, Qt::RightDockWidgetArea);
-    addDock(m_viewDock, Qt::RightDockWidgetArea);
-    tabifyDockWidget(m_environmentDock, m_lightsDock);
-    tabifyDockWidget(m_lightsDock, m_viewDock);
+    // One column on the right, as the properties column of Substance Painter and Marmoset Toolbag:
+    // the Materials list on top, because it says what the tabs below edit (Texture Maps, Material)
+    // and a click on a part selects in it, so it stays in sight while they are used; the other
+    // panels tabbed below it, Texture Maps first. The central view keeps about three quarters of
+    // the width (applyDefaultDockSizes), whatever the docks hold.
+    addDock(m_materialsDock, Qt::RightDockWidgetArea);
+    addDock(m_textureMapsDock, Qt::RightDockWidgetArea);
+    splitDockWidget(m_materialsDock, m_textureMapsDock, Qt::Vertical);
+    for (QDockWidget* dock :
+        std::initializer_list<QDockWidget*> {m_materialDock, m_environmentDock, m_lightsDock, m_viewDock}) {
+        addDock(dock, Qt::RightDockWidgetArea);
+        tabifyDockWidget(m_textureMapsDock, dock);
+    }
+    setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
     m_textureMapsDock->raise();
-    m_environmentDock->raise();
-    resizeDocks({m_textureMapsDock, m_environmentDock}, {300, 290}, Qt::Horizontal);
-    resizeDocks({m_materialsDock, m_textureMapsDock}, {300, 480}, Qt::Vertical);
 
     connect(m_textureMapsDock, &TextureMapsDock::message, this, &MainWindow::showStatusMessage);
     connect(m_materialDock, &MaterialDock::message, this, &MainWindow::showStatusMessage);
@@ -312,6 +321,15 @@ void MainWindow::addDock(QDockWidget* dock, Qt::DockWidgetArea area)
     dock->setFeatures(
         QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable | QDockWidget::DockWidgetClosable);
     dock->setParent(this);
+    // Content taller than the dock scrolls, and content never sets the dock's width
+    // (ui/DockScrollArea.h); a dock whose widget scrolls already (Texture Maps) keeps it.
+    if (dock->widget() && !qobject_cast<QAbstractScrollArea*>(dock->widget())) {
+        QWidget* content = dock->widget();
+        dock->setWidget(nullptr); // hides `content`; the scroll area shows it again
+        auto* scroll = new DockScrollArea(content, dock);
+        scroll->setObjectName(dock->objectName() + QStringLiteral("Scroll"));
+        dock->setWidget(scroll);
+    }
     addDockWidget(area, dock);
     m_panelsMenu->addAction(dock->toggleViewAction());
 }
@@ -324,7 +342,17 @@ void MainWindow::resetLayout()
     }
     if (!m_defaultLayout.isEmpty())
         restoreState(m_defaultLayout, kLayoutVersion);
+    applyDefaultDockSizes(); // for the window's present width, not the one it first had
     QSettings().remove(kLayoutKey);
+}
+
+void MainWindow::applyDefaultDockSizes()
+{
+    resizeDocks({m_materialsDock}, {width() / kDockColumnWidthDivisor}, Qt::Horizontal);
+    const int columnHeight = m_materialsDock->height() + m_textureMapsDock->height();
+    const int materialsHeight = int(columnHeight * kMaterialsHeightShare);
+    resizeDocks({m_materialsDock, m_textureMapsDock}, {materialsHeight, columnHeight - materialsHeight},
+        Qt::Vertical);
 }
 
 void MainWindow::showEvent(QShowEvent* event)
@@ -332,11 +360,13 @@ void MainWindow::showEvent(QShowEvent* event)
     QMainWindow::showEvent(event);
     if (m_layoutRestored)
         return;
-    // The layout addDock() built is the default; the user's saved one replaces it.
+    // The layout createDocks() built, sized for the window, is the default; the user's saved one
+    // replaces it. Sizes set before the window is shown do not hold: they are set here.
     m_layoutRestored = true;
-    m_defaultLayout = saveState(kLayoutVersion);
     QSettings settings;
     restoreGeometry(settings.value(kGeometryKey).toByteArray());
+    applyDefaultDockSizes();
+    m_defaultLayout = saveState(kLayoutVersion);
     restoreState(settings.value(kLayoutKey).toByteArray(), kLayoutVersion);
 }
 

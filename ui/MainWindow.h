@@ -60,10 +60,13 @@ public:
     CompareActions* compareActions() const { return m_compareActions; }
 
     // Adds a panel: docked in `area`, movable, floatable, closable, tabbable; its toggle goes
-    // into View > Panels. The dock needs a unique objectName (the saved layout refers to it).
-    // Add docks before the window is first shown so that the saved layout applies to them.
+    // into View > Panels. Its content goes into a DockScrollArea (unless it is a scroll area), so
+    // that what it holds never sets the dock's width. The dock needs a unique objectName (the
+    // saved layout refers to it). Add docks before the window is first shown so that the saved
+    // layout applies to them.
     void addDock(QDockWidget* dock, Qt::DockWidgetArea area = Qt::RightDockWidgetArea);
-    // View > Reset Layout: every panel back where addDock put it, visible, docked.
+    // View > Reset Layout: every panel back in the default layout (one column on the right, a
+    // quarter of the window's present width), visible, docked.
     void resetLayout();
 
     // Shows a message in the status bar until the next one (e.g. a warning from the command line).
@@ -85,6 +88,7 @@ private:
     void createEditMenu();
     void createViewMenu();
     void createDocks();
+    void applyDefaultDockSizes();
     void updateRecentFilesMenu();
     void updateTitle();
     void showAbout();

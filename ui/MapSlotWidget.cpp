@@ -6,6 +6,7 @@
 #include "ui/Document.h"
 #include "ui/DocumentCommands.h"
 #include "ui/DroppedFiles.h"
+#include "ui/ElidedLabel.h"
 #include "ui/ValueSlider.h"
 
 #include <QCheckBox>
@@ -120,7 +121,7 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
     , m_document(document)
     , m_slot(slot)
     , m_thumbnail(new QLabel(this))
-    , m_fileLabel(new QLabel(this))
+    , m_fileLabel(new ElidedLabel(this)) // a long file name must not widen the dock
     , m_clear(new QPushButton(tr("Clear"), this))
 {
     const QString key = QString::fromLatin1(toString(slot));
@@ -131,8 +132,6 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
     m_thumbnail->setFrameShape(QFrame::StyledPanel);
     m_thumbnail->setToolTip(tr("Drop an image file here"));
     m_fileLabel->setObjectName(QStringLiteral("mapFileLabel_%1").arg(key));
-    m_fileLabel->setWordWrap(true);
-    m_fileLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
     auto* open = new QPushButton(tr("Open…"), this);
     open->setObjectName(QStringLiteral("mapOpenButton_%1").arg(key));
     m_clear->setObjectName(QStringLiteral("mapClearButton_%1").arg(key));

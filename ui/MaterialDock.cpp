@@ -81,8 +81,12 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     m_doubleSided->setObjectName(QStringLiteral("doubleSidedCheck"));
     m_doubleSided->setToolTip(
         tr("Draw faces seen from behind too (off: they are culled, as glTF's default)"));
-    m_multiScatter = new QCheckBox(tr("Multiple-scattering compensation"), this);
+    // Short enough for a narrow dock column; the tooltip says what it is.
+    m_multiScatter = new QCheckBox(tr("Multiple scattering"), this);
     m_multiScatter->setObjectName(QStringLiteral("multiScatterCheck"));
+    m_multiScatter->setToolTip(
+        tr("Multiple-scattering compensation: gives back the energy that single-scattering "
+           "GGX loses at high roughness (docs/energy.md)"));
     m_name->setObjectName(QStringLiteral("materialName"));
     m_ior->setObjectName(QStringLiteral("iorSlider"));
     m_ior->setSpinRange(1.0, 5.0);
@@ -99,7 +103,7 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     auto* surfaceForm = new QFormLayout(surfaceGroup);
     surfaceForm->addRow(tr("Alpha"), m_alphaMode);
     surfaceForm->addRow(tr("Cutoff"), m_alphaCutoff);
-    surfaceForm->addRow(QString(), m_doubleSided);
+    surfaceForm->addRow(m_doubleSided); // spans the row: its text fits a narrow dock column
     layout->addWidget(surfaceGroup);
     auto* brdfGroup = new QGroupBox(tr("BRDF"), content);
     auto* brdfForm = new QFormLayout(brdfGroup);
@@ -108,7 +112,7 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     brdfForm->addRow(tr("Visibility"), m_visibility);
     brdfForm->addRow(tr("Fresnel"), m_fresnel);
     brdfForm->addRow(tr("Dielectric"), m_coupling);
-    brdfForm->addRow(QString(), m_multiScatter);
+    brdfForm->addRow(m_multiScatter); // spans the row: its text fits a narrow dock column
     layout->addWidget(brdfGroup);
 
     auto* presetGroup = new QGroupBox(tr("Presets"), content);

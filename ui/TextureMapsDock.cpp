@@ -1,9 +1,11 @@
 #include "ui/TextureMapsDock.h"
 
 #include "core/MapNaming.h"
+#include "ui/DockScrollArea.h"
 #include "ui/Document.h"
 #include "ui/DocumentCommands.h"
 #include "ui/DroppedFiles.h"
+#include "ui/ElidedLabel.h"
 #include "ui/MapSlotWidget.h"
 #include "ui/ThumbnailLoader.h"
 #include "ui/ValueSlider.h"
@@ -19,7 +21,6 @@
 #include <QLabel>
 #include <QMimeData>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -46,7 +47,7 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     , m_watcher(new QFileSystemWatcher(this))
     , m_reloadTimer(new QTimer(this))
     , m_messageLabel(new QLabel(this))
-    , m_materialLabel(new QLabel(this))
+    , m_materialLabel(new ElidedLabel(this)) // a long name must not widen the dock
     , m_uvScale(new ValueSlider(0.1, 16.0, 2, this))
     , m_uvOffsetU(new ValueSlider(-1.0, 1.0, 3, this))
     , m_uvOffsetV(new ValueSlider(-1.0, 1.0, 3, this))
@@ -70,6 +71,9 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     layout->addWidget(folderButton);
     m_messageLabel->setObjectName(QStringLiteral("textureMapsMessage"));
     m_messageLabel->setWordWrap(true);
+    // It names files: a long name (one word) is cut at the dock's edge rather than widening the
+    // dock; the whole message is in the tooltip and the status bar.
+    m_messageLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_messageLabel->hide();
     layout->addWidget(m_messageLabel);
     for (MapSlot slot : kAllMapSlots) {
@@ -116,10 +120,7 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     layout->addWidget(uvGroup);
     layout->addStretch();
 
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setWidget(content);
-    setWidget(scroll);
+    setWidget(new DockScrollArea(content, this)); // a long file name or message never widens the dock
 
     m_reloadTimer->setSingleShot(true);
     m_reloadTimer->setInterval(kReloadDelayMs);
@@ -152,11 +153,11 @@ void TextureMapsDock::onDocumentChanged(DocumentChanges changes)
         return;
     const Project& project = m_document->project();
     m_materialLabel->setText(project.materials.size() > 1
-            ? tr("Material: <b>%1</b> (%2 of %3)")
-                  .arg(QString::fromStdString(project.material().name).toHtmlEscaped())
+            ? tr("Material: %1 (%2 of %3)")
+                  .arg(QString::fromStdString(project.material().name))
                   .arg(project.currentMaterial + 1)
                   .arg(project.materials.size())
-            : tr("Material: <b>%1</b>").arg(QString::fromStdString(project.material().name).toHtmlEscaped()));
+            : tr("Material: %1").arg(QString::fromStdString(project.material().name)));
     for (MapSlotWidget* widget : m_slots)
         widget->refresh();
     const UvTransform& uv = m_document->project().material().map(MapSlot::BaseColor).uv;
@@ -286,6 +287,7 @@ QString TextureMapsDock::assignFiles(const QStringList& paths)
 void TextureMapsDock::report(const QString& text)
 {
     m_messageLabel->setText(text);
+    m_messageLabel->setToolTip(text);
     m_messageLabel->show();
     Q_EMIT message(text);
 }
