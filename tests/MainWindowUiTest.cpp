@@ -272,7 +272,8 @@ void MainWindowUiTest::menusExist()
     }();
     QCOMPARE(titles,
         (QStringList {
-            QStringLiteral("File"), QStringLiteral("Edit"), QStringLiteral("View"), QStringLiteral("Help")}));
+            QStringLiteral("File"), QStringLiteral("Edit"), QStringLiteral("View"), QStringLiteral("Compare"),
+            QStringLiteral("Help")}));
     QVERIFY(m_window->findChild<QMenu*>(QStringLiteral("editMenu")));
     for (const char* name :
         {"newAction", "openAction", "saveAction", "saveAsAction", "undoAction", "redoAction",
