@@ -146,8 +146,14 @@ void Document::applyUndoableState(const Project& state)
     next.camera = m_project.camera;
     const DocumentChanges changes = changesBetween(m_project, next);
     m_project = std::move(next);
-    updateMissingFiles();
-    if (changes != DocumentChanges())
+    // Only an edit that names other files can change which of them are missing: a slider drag
+    // does not look at every file on disk at each step (3072 map files: a roughness edit took
+    // 29 ms with the check, 11 ms without; tests/bench/document_changes).
+    constexpr DocumentChangeKinds namesFiles
+        = DocumentChange::MaterialMaps | DocumentChange::EnvironmentSource | DocumentChange::Mesh;
+    if (changes & namesFiles)
+        updateMissingFiles();
+    if (!changes.isEmpty())
         Q_EMIT changed(changes);
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The open project and its editing history (Tiled's Document). One Document per window: it holds
-// the core::Project value, the file it came from, and the QUndoStack; it emits changed() with the
-// kinds of change (ui/DocumentChanges.h) after every edit, undo and redo. Panels read project()
+// the core::Project value, the file it came from, and the QUndoStack; it emits changed() with what
+// changed (ui/DocumentChanges.h: the kinds, and which materials, map slots, lights and view
+// settings, worked out by changesBetween) after every edit, undo and redo. Panels read project()
 // and edit through the setters below, which push undo commands (ui/DocumentCommands.h); they never
 // touch the renderer. The viewport observes changed() and reloads only what changed.
 //
@@ -111,7 +112,9 @@ public:
 
     // Texture, environment and mesh files the project names that do not exist (absolute paths,
     // each once, in material-slot order, then environment, then mesh). Updated on open, recover
-    // and every edit.
+    // and every edit (or undo, redo) that names other files (a map's path or colour space, the
+    // environment source, the mesh, materials added or removed); a file deleted on disk meanwhile
+    // shows at the next of those.
     const QStringList& missingFiles() const { return m_missingFiles; }
     // Every reference to `oldPath` (map, environment source, mesh) becomes `newPath`; one undo
     // step "Relink <file name>". Returns false if nothing referred to oldPath.
@@ -126,12 +129,13 @@ public:
 
     // Files the project refers to changed on disk (a texture re-saved by an image editor): not
     // an edit (no undo step, the project value is the same), but observers must re-read them.
-    // Emits changed(changes); SceneController reloads only files whose time changed.
-    void notifyFilesChangedOnDisk(DocumentChanges changes) { Q_EMIT changed(changes); }
+    // Emits changed(changes); SceneController reloads only files whose time changed. Kinds alone
+    // (DocumentChange::MaterialMaps) name no material: every map file is checked.
+    void notifyFilesChangedOnDisk(const DocumentChanges& changes) { Q_EMIT changed(changes); }
 
 Q_SIGNALS:
     // After every change of project(): edits, undo, redo, New, Open, recovery.
-    void changed(facet::DocumentChanges changes);
+    void changed(const facet::DocumentChanges& changes);
     // Another project replaced this one (New, Open, recovery), just before changed(WholeProject):
     // per-project notes (what the last folder assignment did) and view state are stale.
     void projectReplaced();

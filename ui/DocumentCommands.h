@@ -2,6 +2,9 @@
 // The undo command of every Document edit (Tiled's ChangeValue): a snapshot of the undoable part
 // of the project before and after. A project is a few kilobytes of values, so snapshots are simpler
 // and safer than one command class per field, and undo restores exactly what was there.
+// What each undo and redo reports (Document::changed) is worked out by comparing the two snapshots
+// (changesBetween, ui/DocumentChanges.h): a command never says what it changed, so it cannot
+// misreport it, and the comparison costs microseconds (tests/bench/document_changes).
 //
 // Merging: while Document::beginInteractiveEdit() ... endInteractiveEdit() is open, a command with
 // the same non-zero merge id as the top command of the same interaction replaces that command's

@@ -39,28 +39,77 @@ SceneController::SceneController(Document* document, QObject* parent)
     connect(m_document, &Document::changed, this, &SceneController::onDocumentChanged);
     loadEnvironment();
     loadMesh();
-    loadMaps(true);
+    loadMaps(DocumentChange::WholeProject);
 }
 
-void SceneController::onDocumentChanged(DocumentChanges changes)
+void SceneController::onDocumentChanged(const DocumentChanges& changes)
 {
-    // Which material the docks edit is not drawn, nor is the compare layout (the Compare view
-    // draws it): choosing one must not cost the single view a frame.
-    if (!(changes & ~DocumentChanges(DocumentChange::CurrentMaterial | DocumentChange::Compare)))
-        return;
     if (changes.testFlag(DocumentChange::EnvironmentSource)
         && m_document->project().environment.source != m_environmentSource)
         loadEnvironment();
     else if (changes
-        & (DocumentChanges(DocumentChange::EnvironmentRotation) | DocumentChange::EnvironmentIntensity))
+        & (DocumentChangeKinds(DocumentChange::EnvironmentRotation) | DocumentChange::EnvironmentIntensity))
         applyEnvironmentSettings();
     if (changes.testFlag(DocumentChange::IblQuality))
         ++m_iblKey;
     if (changes.testFlag(DocumentChange::Mesh) && m_document->project().view.mesh != m_meshSource)
         loadMesh();
     if (changes.testFlag(DocumentChange::MaterialMaps))
-        loadMaps(changes == DocumentChanges(DocumentChange::WholeProject));
-    Q_EMIT sceneChanged(m_document->interactiveEditOpen());
+        loadMaps(changes);
+    if (isDrawn(changes))
+        Q_EMIT sceneChanged(m_document->interactiveEditOpen());
+}
+
+bool SceneController::isDrawn(const DocumentChanges& changes) const
+{
+    constexpr DocumentChangeKinds materialKinds
+        = DocumentChange::MaterialFactors | DocumentChange::MaterialMaps | DocumentChange::Shading;
+    // Which material the docks edit is not drawn: choosing one must not cost a frame; nor is the
+    // compare layout (the Compare view draws it). Every other kind but materials and lights is
+    // (the environment, the view, the camera, the mesh, parts).
+    const DocumentChangeKinds others = DocumentChangeKinds(DocumentChange::WholeProject) & ~materialKinds
+        & ~DocumentChangeKinds(DocumentChange::Lights) & ~DocumentChangeKinds(DocumentChange::CurrentMaterial)
+        & ~DocumentChangeKinds(DocumentChange::Compare);
+    if (changes & others)
+        return true;
+    const Project& project = m_document->project();
+    if (changes & DocumentChange::Lights) {
+        if (!changes.namesLights() || changes.lightList().firstShifted() != DocumentChanges::kNone)
+            return true;
+        // A light's name is not drawn, nor anything of a light that stays off.
+        for (const auto& [index, changed] : changes.lightEdits()) {
+            const bool off = index < project.lights.size() && !project.lights[index].enabled
+                && !changed.testFlag(LightProperty::Enabled);
+            if ((changed & ~LightProperties(LightProperty::Name)) && !off)
+                return true;
+        }
+    }
+    if (changes & materialKinds) {
+        if (!changes.namesMaterials() || changes.materialList().firstShifted() != DocumentChanges::kNone)
+            return true;
+        // A material's name is not drawn, nor a material that no visible part shows.
+        const std::vector<bool> shown = shownMaterials();
+        for (const auto& [index, change] : changes.materialEdits()) {
+            MaterialChange drawn = change;
+            drawn.properties &= ~MaterialProperties(MaterialProperty::Name);
+            if (!drawn.isEmpty() && index < shown.size() && shown[index])
+                return true;
+        }
+    }
+    return false;
+}
+
+std::vector<bool> SceneController::shownMaterials() const
+{
+    // The parts of the mesh in assets() (the one drawn), with Project::materialOfPart's rule: a
+    // mesh without sub-meshes is one part showing material 0.
+    const Project& project = m_document->project();
+    std::vector<bool> shown(project.materials.size(), false);
+    const std::size_t parts = m_assets.mesh ? std::max<std::size_t>(m_assets.mesh->subMeshes.size(), 1) : 1;
+    for (std::size_t part = 0; part < parts; ++part)
+        if (project.isPartVisible(part))
+            shown[std::size_t(project.materialOfPart(part))] = true;
+    return shown;
 }
 
 void SceneController::report(const std::string& text)
@@ -148,19 +197,28 @@ SceneController::~SceneController()
     m_mapPool.waitForDone();
 }
 
-void SceneController::loadMaps(bool all)
+void SceneController::loadMaps(const DocumentChanges& changes)
 {
-    // Every material's maps; a file used by several slots or materials is loaded once (by path),
-    // and again only when its modification time changes (or a new project is opened: `all`).
+    // Every material's maps; a file used by several slots or materials is loaded once (by path).
+    // Only the slots whose file the change names are looked at on disk: the others keep what they
+    // show, so a new normal map for material 1 never re-reads material 0's maps. A change that
+    // names no slot (files changed on disk: kinds alone) looks at every file and loads those whose
+    // modification time changed; a new project (WholeProject) loads every file again.
+    const bool all = changes == DocumentChanges(DocumentChange::WholeProject);
     const Project& project = m_document->project();
     std::map<std::string, CachedImage> images;
-    for (const Material& material : project.materials) {
+    for (std::size_t m = 0; m < project.materials.size(); ++m) {
+        const MaterialChange changed = changes.material(m);
         for (MapSlot slot : kAllMapSlots) {
-            const MaterialMap& map = material.map(slot);
+            const MaterialMap& map = project.materials[m].map(slot);
             if (!map.hasTexture() || images.count(map.path))
                 continue;
-            const std::int64_t timestamp = modificationTime(fileOfImagePath(map.path));
             const auto previous = m_images.find(map.path);
+            if (!all && !changed.map(slot).testFlag(MapProperty::Path) && previous != m_images.end()) {
+                images.emplace(map.path, previous->second); // unchanged: shown (or loading) as it is
+                continue;
+            }
+            const std::int64_t timestamp = modificationTime(fileOfImagePath(map.path));
             const bool current = previous != m_images.end() && previous->second.timestamp == timestamp
                 && (previous->second.image || !previous->second.problem.empty());
             const auto pending = m_pendingMaps.find(map.path);

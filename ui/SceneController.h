@@ -3,7 +3,9 @@
 // made stale and nothing else (core/ProjectAssets.h: the environment via Environment::fromSpec, the
 // mesh via loadViewMesh, each material map via core/MapImageCache), and builds the RenderScene
 // snapshot the viewport's renderer draws (render/SceneFromProject.h). A roughness change loads
-// nothing; a new normal map loads that map only; rotating the environment changes a number.
+// nothing; a new normal map loads that map only (the change names the material and the slot,
+// ui/DocumentChanges.h: no other slot's file is even looked at on disk); rotating the environment
+// changes a number.
 //
 // Maps are decoded off the GUI thread (a QThreadPool; the edit that assigns them returns at
 // once): until a map arrives its slot shows what it showed before (the previous version of a
@@ -102,7 +104,9 @@ public:
     double environmentTurntableDegrees() const { return m_environmentTurntableDegrees; }
 
 Q_SIGNALS:
-    // The scene differs from the last frame: draw again. `interactive` is true while a slider drag
+    // The scene differs from the last frame: draw again. Not emitted for changes the frame does
+    // not show: which material the docks edit, a material's or a light's name, a material that no
+    // visible part shows, an edit of a light that stays off. `interactive` is true while a slider drag
     // (Document::interactiveEditOpen) or a turntable is running: the viewport may draw at reduced
     // resolution and refine afterwards.
     void sceneChanged(bool interactive);
@@ -121,11 +125,15 @@ Q_SIGNALS:
     void mapLoadProgress(int loaded, int total, double milliseconds);
 
 private:
-    void onDocumentChanged(DocumentChanges changes);
+    void onDocumentChanged(const DocumentChanges& changes);
+    // Whether the frame shows what changed (sceneChanged is emitted only then).
+    bool isDrawn(const DocumentChanges& changes) const;
+    // Per material of the project: whether a visible part of the mesh in assets() shows it.
+    std::vector<bool> shownMaterials() const;
     void loadEnvironment();
     void applyEnvironmentSettings();
     void loadMesh();
-    void loadMaps(bool all);
+    void loadMaps(const DocumentChanges& changes);
     void startMapLoad(const std::string& path, std::int64_t timestamp);
     void onMapLoaded(const std::string& path, std::uint64_t ticket, std::shared_ptr<const MapImage> image,
         const std::string& error, ImageLoadStats stats);

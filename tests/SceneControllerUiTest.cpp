@@ -1,0 +1,251 @@
+// SceneController (ui/SceneController.h) redoes only what a change names (ui/DocumentChanges.h):
+// a new file in one slot of one material decodes that file and nothing else, even when the other
+// materials' files changed on disk unnoticed (they are not even looked at); a change that names no
+// slot (files changed on disk) looks at every file; and a frame is asked for only when the frame
+// shows what changed (not a name, not a material no visible part shows, not a light that stays
+// off, not which material the docks edit). Decodes are counted by core/MapImageCache.
+// No window: a Document and a SceneController. It links facet_ui, hence "Ui" (runs under
+// with-display.sh but opens nothing).
+
+#include "core/MapImageCache.h"
+#include "core/Project.h"
+#include "ui/Document.h"
+#include "ui/SceneController.h"
+
+#include <QDateTime>
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest/QTest>
+
+#include <OpenImageIO/imageio.h>
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+using namespace facet;
+
+Q_DECLARE_METATYPE(std::function<void(facet::Document&)>)
+
+namespace {
+
+// A small 8-bit RGB PNG of one colour.
+bool writeFlatPng(const std::string& path, int r, int g, int b)
+{
+    constexpr int kSize = 8;
+    std::vector<unsigned char> pixels(std::size_t(kSize * kSize * 3));
+    for (std::size_t i = 0; i < pixels.size(); i += 3) {
+        pixels[i] = static_cast<unsigned char>(r);
+        pixels[i + 1] = static_cast<unsigned char>(g);
+        pixels[i + 2] = static_cast<unsigned char>(b);
+    }
+    auto output = OIIO::ImageOutput::create(path);
+    OIIO::ImageSpec spec(kSize, kSize, 3, OIIO::TypeDesc::UINT8);
+    return output && output->open(path, spec) && output->write_image(OIIO::TypeDesc::UINT8, pixels.data())
+        && output->close();
+}
+
+// Gives the file a later modification time, as an image editor saving it would.
+bool touch(const std::string& path, int seconds)
+{
+    QFile file(QString::fromStdString(path));
+    return file.open(QIODevice::ReadWrite)
+        && file.setFileTime(QDateTime::currentDateTime().addSecs(seconds), QFileDevice::FileModificationTime);
+}
+
+} // namespace
+
+class SceneControllerUiTest : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase();
+    void oneMapChangeDecodesThatFileOnly_data();
+    void oneMapChangeDecodesThatFileOnly();
+    void frameOnlyForWhatIsDrawn_data();
+    void frameOnlyForWhatIsDrawn();
+
+private:
+    // Two materials, each with a file in base colour, normal and roughness (six files).
+    Project texturedProject() const;
+    std::string file(const std::string& name) const
+    {
+        return m_dir.filePath(QString::fromStdString(name)).toStdString();
+    }
+
+    QTemporaryDir m_dir;
+};
+
+void SceneControllerUiTest::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    for (const char* name : {"m0_base.png", "m0_normal.png", "m0_rough.png", "m1_base.png", "m1_normal.png",
+             "m1_rough.png", "new_normal.png", "new_base.png"})
+        QVERIFY(writeFlatPng(file(name), 100, 150, 200));
+}
+
+Project SceneControllerUiTest::texturedProject() const
+{
+    Project project = Project::defaultProject();
+    Material second = project.materials[0];
+    second.name = "Second";
+    project.materials.push_back(second);
+    for (std::size_t m = 0; m < 2; ++m) {
+        const std::string prefix = "m" + std::to_string(m) + "_";
+        project.materials[m].map(MapSlot::BaseColor).path = file(prefix + "base.png");
+        project.materials[m].map(MapSlot::Normal).path = file(prefix + "normal.png");
+        project.materials[m].map(MapSlot::Roughness).path = file(prefix + "rough.png");
+    }
+    return project;
+}
+
+void SceneControllerUiTest::oneMapChangeDecodesThatFileOnly_data()
+{
+    // An edit (or a notification), and the files it must decode. Before it, every file of
+    // material 0 is rewritten on disk without anyone being told.
+    QTest::addColumn<std::function<void(Document&)>>("edit");
+    QTest::addColumn<QStringList>("decoded");
+
+    const auto setMap = [](std::size_t m, MapSlot slot, std::function<void(MaterialMap&)> change) {
+        return std::function<void(Document&)>([m, slot, change](Document& document) {
+            Project project = document.project();
+            change(project.materials[m].map(slot));
+            document.setProject(project, QStringLiteral("Edit"));
+        });
+    };
+    const std::string newNormal = file("new_normal.png");
+    const std::string newBase = file("new_base.png");
+    QTest::newRow("material 1 normal map")
+        << setMap(1, MapSlot::Normal, [newNormal](MaterialMap& map) { map.path = newNormal; })
+        << QStringList {QStringLiteral("new_normal.png")};
+    QTest::newRow("material 0 base colour map")
+        << setMap(0, MapSlot::BaseColor, [newBase](MaterialMap& map) { map.path = newBase; })
+        << QStringList {QStringLiteral("new_base.png")};
+    QTest::newRow("material 1 roughness colour space")
+        << setMap(1, MapSlot::Roughness, [](MaterialMap& map) { map.colorSpace = ColorEncoding::SRGB; })
+        << QStringList {};
+    QTest::newRow("material 1 roughness factor")
+        << setMap(1, MapSlot::Roughness, [](MaterialMap& map) { map.factor = glm::dvec4(0.25); })
+        << QStringList {};
+    // Kinds alone name no slot: every file is looked at, the rewritten ones are decoded again.
+    QTest::newRow("files changed on disk")
+        << std::function<void(Document&)>(
+               [](Document& document) { document.notifyFilesChangedOnDisk(DocumentChange::MaterialMaps); })
+        << QStringList {QStringLiteral("m0_base.png"), QStringLiteral("m0_normal.png"),
+               QStringLiteral("m0_rough.png")};
+}
+
+void SceneControllerUiTest::oneMapChangeDecodesThatFileOnly()
+{
+    QFETCH(std::function<void(Document&)>, edit);
+    QFETCH(QStringList, decoded);
+
+    Document document;
+    document.setProject(texturedProject(), QStringLiteral("Maps"));
+    SceneController scene(&document);
+    QTRY_COMPARE_WITH_TIMEOUT(scene.pendingMapLoads(), 0, 30000);
+    const char* names[] = {"m0_base.png", "m0_normal.png", "m0_rough.png", "m1_base.png", "m1_normal.png",
+        "m1_rough.png", "new_normal.png", "new_base.png"};
+    // Every file shown is in memory (decoded once, held by the controller).
+    for (const char* name : names)
+        if (QByteArray(name).startsWith("m"))
+            QVERIFY2(MapImageCache::shared().isHeld(file(name)), name);
+
+    static int later = 10; // a later time for every row: the cache must see a new file each time
+    later += 10;
+    for (const char* name : {"m0_base.png", "m0_normal.png", "m0_rough.png"})
+        QVERIFY(touch(file(name), later));
+    std::map<std::string, std::uint64_t> before;
+    for (const char* name : names)
+        before[name] = MapImageCache::shared().decodeCount(file(name));
+    const int loadsBefore = scene.loadCounts().maps;
+
+    edit(document);
+    QTRY_COMPARE_WITH_TIMEOUT(scene.pendingMapLoads(), 0, 30000);
+
+    for (const char* name : names) {
+        const std::uint64_t expected = before[name] + (decoded.contains(QLatin1String(name)) ? 1 : 0);
+        QVERIFY2(MapImageCache::shared().decodeCount(file(name)) == expected,
+            qPrintable(QStringLiteral("%1 decoded %2 times, expected %3")
+                           .arg(QLatin1String(name))
+                           .arg(MapImageCache::shared().decodeCount(file(name)) - before[name])
+                           .arg(expected - before[name])));
+    }
+    QCOMPARE(scene.loadCounts().maps - loadsBefore, int(decoded.size()));
+}
+
+void SceneControllerUiTest::frameOnlyForWhatIsDrawn_data()
+{
+    QTest::addColumn<std::function<void(Document&)>>("edit");
+    QTest::addColumn<bool>("frame");
+
+    const auto project = [](std::function<void(Project&)> change) {
+        return std::function<void(Document&)>([change](Document& document) {
+            Project after = document.project();
+            change(after);
+            document.setProject(after, QStringLiteral("Edit"));
+        });
+    };
+    // The sphere is one part, and it shows material 0; material 1 is shown by nothing.
+    QTest::newRow("material 0 roughness")
+        << project([](Project& p) { p.materials[0].setFactor(MapSlot::Roughness, 0.9); }) << true;
+    QTest::newRow("material 0 name") << project([](Project& p) { p.materials[0].name = "Renamed"; }) << false;
+    QTest::newRow("material 1 roughness (not shown)")
+        << project([](Project& p) { p.materials[1].setFactor(MapSlot::Roughness, 0.9); }) << false;
+    QTest::newRow("material 1 shading (not shown)")
+        << project([](Project& p) { p.materials[1].shading.multiScatter = false; }) << false;
+    QTest::newRow("the part shows material 1") << project([](Project& p) {
+        p.parts = {{"sphere", 1, true}};
+    }) << true;
+    QTest::newRow("material 1 roughness, shown") << project([](Project& p) {
+        p.parts = {{"sphere", 1, true}};
+        p.materials[1].setFactor(MapSlot::Roughness, 0.9);
+    }) << true;
+    QTest::newRow("material appended")
+        << project([](Project& p) { p.materials.push_back(Material {}); }) << true;
+    QTest::newRow("light 0 name") << project([](Project& p) { p.lights[0].name = "Renamed"; }) << false;
+    QTest::newRow("light 0 intensity") << project([](Project& p) { p.lights[0].intensity = 7.0; }) << true;
+    QTest::newRow("light 1 (off) intensity")
+        << project([](Project& p) { p.lights[1].intensity = 7.0; }) << false;
+    QTest::newRow("light 1 switched on") << project([](Project& p) { p.lights[1].enabled = true; }) << true;
+    QTest::newRow("light removed") << project([](Project& p) { p.lights.pop_back(); }) << true;
+    QTest::newRow("exposure") << project([](Project& p) { p.view.exposureEV = 1.0; }) << true;
+    QTest::newRow("environment rotation")
+        << project([](Project& p) { p.environment.rotationDegrees = 30; }) << true;
+    QTest::newRow("current material")
+        << std::function<void(Document&)>([](Document& document) { document.setCurrentMaterial(1); })
+        << false;
+    // The compare layout is the Compare view's to draw, not the single view's.
+    QTest::newRow("compare layout") << project([](Project& p) { p.compare.ab.split = 0.25; }) << false;
+    QTest::newRow("camera") << std::function<void(Document&)>([](Document& document) {
+        Camera camera = document.project().camera;
+        camera.position.x += 1.0;
+        document.setCamera(camera);
+    }) << true;
+}
+
+void SceneControllerUiTest::frameOnlyForWhatIsDrawn()
+{
+    QFETCH(std::function<void(Document&)>, edit);
+    QFETCH(bool, frame);
+
+    Document document;
+    Project start = Project::defaultProject();
+    Material second = start.materials[0];
+    second.name = "Second";
+    start.materials.push_back(second);
+    Light on = Light::defaultDirectional();
+    Light off = on;
+    off.enabled = false;
+    start.lights = {on, off};
+    document.setProject(start, QStringLiteral("Start"));
+    SceneController scene(&document);
+    QSignalSpy sceneChanged(&scene, &SceneController::sceneChanged);
+
+    edit(document);
+    QCOMPARE(sceneChanged.count(), frame ? 1 : 0);
+}
+
+QTEST_GUILESS_MAIN(SceneControllerUiTest)
+#include "SceneControllerUiTest.moc"
