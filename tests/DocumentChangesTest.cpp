@@ -339,6 +339,10 @@ std::vector<Row> rows()
     add(
         "current material", [](Project& p) { p.currentMaterial = 2; }, DocumentChange::CurrentMaterial);
     add(
+        "compare mode", [](Project& p) { p.compare.mode = CompareMode::Wedge; }, DocumentChange::Compare);
+    add(
+        "A/B split", [](Project& p) { p.compare.ab.split = 0.25; }, DocumentChange::Compare);
+    add(
         "several at once",
         [](Project& p) {
             p.materials[2].map(MapSlot::Roughness).path = "/other/rough.png";

@@ -216,6 +216,8 @@ void SceneControllerUiTest::frameOnlyForWhatIsDrawn_data()
     QTest::newRow("current material")
         << std::function<void(Document&)>([](Document& document) { document.setCurrentMaterial(1); })
         << false;
+    // The compare layout is the Compare view's to draw, not the single view's.
+    QTest::newRow("compare layout") << project([](Project& p) { p.compare.ab.split = 0.25; }) << false;
     QTest::newRow("camera") << std::function<void(Document&)>([](Document& document) {
         Camera camera = document.project().camera;
         camera.position.x += 1.0;

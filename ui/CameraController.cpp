@@ -120,13 +120,12 @@ void CameraController::setCamera(const Camera& camera)
     m_document->setCamera(camera);
 }
 
-void CameraController::orbit(double deltaXPixels, double deltaYPixels)
+Camera CameraController::orbited(Camera camera, double deltaXPixels, double deltaYPixels)
 {
-    Camera camera = m_document->project().camera;
     const glm::dvec3 offset = camera.position - camera.target;
     const double distance = glm::length(offset);
     if (distance <= 0.0)
-        return;
+        return camera;
     // Spherical coordinates about +Y: azimuth in the XZ plane, elevation from it.
     double azimuth = std::atan2(offset.x, offset.z);
     double elevation = std::asin(std::clamp(offset.y / distance, -1.0, 1.0));
@@ -139,7 +138,15 @@ void CameraController::orbit(double deltaXPixels, double deltaYPixels)
             * glm::dvec3(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
                 std::cos(elevation) * std::cos(azimuth));
     camera.up = {0.0, 1.0, 0.0};
-    setCamera(camera);
+    return camera;
+}
+
+void CameraController::orbit(double deltaXPixels, double deltaYPixels)
+{
+    const Camera& camera = m_document->project().camera;
+    if (glm::length(camera.position - camera.target) <= 0.0)
+        return;
+    setCamera(orbited(camera, deltaXPixels, deltaYPixels));
 }
 
 void CameraController::pan(double deltaXPixels, double deltaYPixels)
@@ -160,17 +167,24 @@ void CameraController::pan(double deltaXPixels, double deltaYPixels)
     setCamera(camera);
 }
 
-void CameraController::dolly(double wheelSteps)
+Camera CameraController::dollied(Camera camera, double wheelSteps)
 {
-    Camera camera = m_document->project().camera;
     const glm::dvec3 offset = camera.position - camera.target;
     const double distance = glm::length(offset);
     if (distance <= 0.0)
-        return;
+        return camera;
     const double next
         = std::clamp(distance * std::pow(kDollyPerStep, wheelSteps), kMinDistance, kMaxDistance);
     camera.position = camera.target + offset * (next / distance);
-    setCamera(camera);
+    return camera;
+}
+
+void CameraController::dolly(double wheelSteps)
+{
+    const Camera& camera = m_document->project().camera;
+    if (glm::length(camera.position - camera.target) <= 0.0)
+        return;
+    setCamera(dollied(camera, wheelSteps));
 }
 
 void CameraController::frameObject()

@@ -54,6 +54,9 @@ public:
     void orbit(double deltaXPixels, double deltaYPixels);
     void pan(double deltaXPixels, double deltaYPixels);
     void dolly(double wheelSteps); // > 0: closer
+    // What orbit() and dolly() do to a camera (the Compare view moves its cells' cameras with them).
+    static Camera orbited(Camera camera, double deltaXPixels, double deltaYPixels);
+    static Camera dollied(Camera camera, double wheelSteps);
     void frameObject();
     void resetView();
     // The reference view (Camera::referenceView(), unchanged when the viewport is at least as wide

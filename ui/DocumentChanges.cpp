@@ -199,7 +199,7 @@ std::string kindNames(DocumentChangeKinds kinds)
             {DocumentChange::IblQuality, "IblQuality"}, {DocumentChange::Lights, "Lights"},
             {DocumentChange::View, "View"}, {DocumentChange::Camera, "Camera"},
             {DocumentChange::Mesh, "Mesh"}, {DocumentChange::CurrentMaterial, "CurrentMaterial"},
-            {DocumentChange::Parts, "Parts"}});
+            {DocumentChange::Parts, "Parts"}, {DocumentChange::Compare, "Compare"}});
     std::replace(text.begin(), text.end(), ',', '|');
     return text;
 }
@@ -528,6 +528,8 @@ DocumentChanges changesBetween(const Project& before, const Project& after)
         kinds |= DocumentChange::CurrentMaterial;
     if (before.parts != after.parts)
         kinds |= DocumentChange::Parts;
+    if (before.compare != after.compare)
+        kinds |= DocumentChange::Compare;
     const EnvironmentSettings& ea = before.environment;
     const EnvironmentSettings& eb = after.environment;
     if (ea.source != eb.source)

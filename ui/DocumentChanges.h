@@ -53,8 +53,9 @@ enum class DocumentChange : unsigned {
     Mesh = 1u << 10, // view.mesh (load another mesh)
     CurrentMaterial = 1u << 11, // which material the docks edit (Project::currentMaterial)
     Parts = 1u << 12, // which material each mesh part shows, and which parts are drawn
+    Compare = 1u << 13, // the compare layout (Project::compare: mode, cells, A/B, wedge)
     // A different project altogether (New, Open, recovery): observers reload everything.
-    WholeProject = (1u << 13) - 1u,
+    WholeProject = (1u << 14) - 1u,
 };
 Q_DECLARE_FLAGS(DocumentChangeKinds, DocumentChange)
 Q_DECLARE_OPERATORS_FOR_FLAGS(DocumentChangeKinds)

@@ -146,6 +146,7 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
     m_library->setUniformItemSizes(false);
     m_library->setWordWrap(true);
     m_library->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_library->setDragDropMode(QAbstractItemView::DragOnly); // onto the Compare view's cells
     m_rotation->setObjectName(QStringLiteral("environmentRotationSlider"));
     m_rotation->setSuffix(QStringLiteral("°"));
     m_exposure->setObjectName(QStringLiteral("environmentIntensitySlider"));

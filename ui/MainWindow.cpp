@@ -3,6 +3,9 @@
 #include "core/MaterialPresets.h"
 #include "ui/AutosaveController.h"
 #include "ui/CameraController.h"
+#include "ui/CompareActions.h"
+#include "ui/CompareController.h"
+#include "ui/CompareView.h"
 #include "ui/DockScrollArea.h"
 #include "ui/Document.h"
 #include "ui/EnvironmentDock.h"
@@ -32,6 +35,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
+#include <QStackedWidget>
 #include <QStatusBar>
 #include <QUndoStack>
 
@@ -66,10 +70,15 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     , m_picker(new PartPicker(m_document, m_scene, m_viewport, this))
     , m_drops(new ViewportDropHandler(m_files, m_viewport, this))
     , m_autosave(new AutosaveController(m_document, recoveryDirectory, this))
+    , m_compareController(new CompareController(m_document, this))
     , m_glStatusLabel(new QLabel(tr("Initialising OpenGL…"), this))
     , m_frameStatsLabel(new QLabel(this))
 {
-    setCentralWidget(m_viewport);
+    // The central area: the single view, or the Compare view of the project's compare mode.
+    auto* central = new QStackedWidget(this);
+    central->addWidget(m_viewport);
+    central->addWidget(m_compareView = new CompareView(m_document, m_scene, m_compareController, central));
+    setCentralWidget(central);
     m_viewport->setSceneController(m_scene);
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
     m_glStatusLabel->setObjectName(QStringLiteral("glStatusLabel"));
@@ -79,6 +88,10 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     statusBar()->addPermanentWidget(m_glStatusLabel);
     createMenus();
     createDocks();
+    m_compareActions = new CompareActions(m_document, m_compareController, central, this);
+    menuBar()->insertMenu(m_helpMenuAction, m_compareActions->menu());
+    addToolBar(Qt::TopToolBarArea, m_compareActions->toolBar());
+    m_compareView->setEnvironmentChoices([this] { return CompareActions::choicesOf(m_environmentDock->library()); });
 
     connect(m_viewport, &ViewportWidget::glInitialized, this, &MainWindow::onViewportGLInitialized);
     connect(m_viewport, &ViewportWidget::frameRendered, this, &MainWindow::onFrameRendered);
@@ -125,6 +138,7 @@ void MainWindow::createMenus()
     createViewMenu();
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
+    m_helpMenuAction = helpMenu->menuAction();
     helpMenu->setObjectName(QStringLiteral("helpMenu"));
     QAction* aboutAction = helpMenu->addAction(tr("&About Facet"), this, &MainWindow::showAbout);
     aboutAction->setObjectName(QStringLiteral("aboutAction"));

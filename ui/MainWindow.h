@@ -18,6 +18,9 @@ namespace facet {
 
 class AutosaveController;
 class CameraController;
+class CompareActions;
+class CompareController;
+class CompareView;
 class Document;
 class EnvironmentDock;
 class LightsDock;
@@ -52,6 +55,9 @@ public:
     EnvironmentDock* environmentDock() const { return m_environmentDock; }
     LightsDock* lightsDock() const { return m_lightsDock; }
     ViewDock* viewDock() const { return m_viewDock; }
+    CompareView* compareView() const { return m_compareView; }
+    CompareController* compareController() const { return m_compareController; }
+    CompareActions* compareActions() const { return m_compareActions; }
 
     // Adds a panel: docked in `area`, movable, floatable, closable, tabbable; its toggle goes
     // into View > Panels. Its content goes into a DockScrollArea (unless it is a scroll area), so
@@ -97,6 +103,10 @@ private:
     PartPicker* m_picker = nullptr;
     ViewportDropHandler* m_drops = nullptr;
     AutosaveController* m_autosave = nullptr;
+    CompareController* m_compareController = nullptr;
+    CompareView* m_compareView = nullptr;
+    CompareActions* m_compareActions = nullptr;
+    QAction* m_helpMenuAction = nullptr;
     TextureMapsDock* m_textureMapsDock = nullptr;
     MaterialDock* m_materialDock = nullptr;
     MaterialsDock* m_materialsDock = nullptr;

@@ -64,11 +64,12 @@ bool SceneController::isDrawn(const DocumentChanges& changes) const
 {
     constexpr DocumentChangeKinds materialKinds
         = DocumentChange::MaterialFactors | DocumentChange::MaterialMaps | DocumentChange::Shading;
-    // Which material the docks edit is not drawn: choosing one must not cost a frame. Every other
-    // kind but materials and lights is (the environment, the view, the camera, the mesh, parts).
+    // Which material the docks edit is not drawn: choosing one must not cost a frame; nor is the
+    // compare layout (the Compare view draws it). Every other kind but materials and lights is
+    // (the environment, the view, the camera, the mesh, parts).
     const DocumentChangeKinds others = DocumentChangeKinds(DocumentChange::WholeProject) & ~materialKinds
-        & ~DocumentChangeKinds(DocumentChange::Lights)
-        & ~DocumentChangeKinds(DocumentChange::CurrentMaterial);
+        & ~DocumentChangeKinds(DocumentChange::Lights) & ~DocumentChangeKinds(DocumentChange::CurrentMaterial)
+        & ~DocumentChangeKinds(DocumentChange::Compare);
     if (changes & others)
         return true;
     const Project& project = m_document->project();

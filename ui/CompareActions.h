@@ -1,0 +1,52 @@
+#pragma once
+// The Compare menu and toolbar (not a widget): Single / Environment Grid / A-B / Wedge as one
+// exclusive group that follows the project's compare mode (undo, open and promote included), and
+// Swap A and B; the central area shows the single view or the Compare view (a QStackedWidget) as
+// the mode says. Choosing a mode is an undoable edit of the layout (CompareController::setMode).
+
+#include "core/CompareLayout.h"
+#include "ui/CompareMenus.h"
+
+#include <QObject>
+
+class QAction;
+class QActionGroup;
+class QListWidget;
+class QMenu;
+class QStackedWidget;
+class QToolBar;
+class QWidget;
+
+namespace facet {
+
+class CompareController;
+class Document;
+
+class CompareActions : public QObject {
+    Q_OBJECT
+public:
+    // `central` holds the single view at index 0 and the Compare view at index 1; `parent`
+    // (the window) parents the menu and the toolbar.
+    CompareActions(
+        Document* document, CompareController* controller, QStackedWidget* central, QWidget* parent);
+
+    QMenu* menu() const { return m_menu; }
+    QToolBar* toolBar() const { return m_toolBar; }
+    QAction* modeAction(CompareMode mode) const;
+    QAction* swapAction() const { return m_swap; }
+
+    // The entries of the Environment dock's library (label, source) for the cells' menus.
+    static EnvironmentChoices choicesOf(const QListWidget* library);
+
+private:
+    void sync();
+
+    Document* m_document;
+    QStackedWidget* m_central;
+    QMenu* m_menu;
+    QToolBar* m_toolBar;
+    QActionGroup* m_modes;
+    QAction* m_swap;
+};
+
+} // namespace facet

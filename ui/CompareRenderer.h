@@ -1,0 +1,112 @@
+#pragma once
+// The GPU side of the Compare view (not a widget): every cell of a compare mode drawn through ONE
+// render::FrameRenderer in the view's GL context, so an environment shown by several cells is
+// looked up once (its IBL set is shared; FrameRenderer's IblPrecompute caches by content) and
+// targets of one cell size are pooled.
+//
+// Cells are drawn into a retained composite target of the view's size, and only the cells whose
+// inputs changed since they were last drawn (their project variant, the environment and map
+// images, their rectangle, the resolution scale) are drawn again; the composite is then copied to
+// the widget. A linked orbit redraws every linked cell; an unlinked cell's orbit redraws that cell.
+// A cell may be clipped to a part of its rectangle (A/B's split): it is rendered whole into a
+// scratch target and only the clipped part is copied, so A and B of one split are rendered at the
+// same size and camera and line up pixel for pixel.
+//
+// Every call needs the view's context current; destroy it with the context current.
+
+#include "core/Project.h"
+#include "core/ProjectAssets.h"
+#include "render/FrameRenderer.h"
+#include "render/GLInfo.h"
+#include "render/IblPrecompute.h"
+
+#include <QString>
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace facet {
+
+// One cell of a frame.
+struct CompareCellDraw {
+    Project project; // what the cell shows (core/CompareLayout.h's variant of the document's project)
+    // The mesh, the map images of project's materials and the environment (rotation and
+    // intensity applied); an empty environment: still loading, the cell is filled with kLoadingGrey.
+    ProjectAssets assets;
+    FrameRect rect; // device pixels, origin bottom-left (GL's)
+    std::optional<FrameRect> clip; // only this part of rect is written (within rect)
+};
+
+struct CompareFrameStats {
+    std::uint64_t frameNumber = 0; // frames drawn since the renderer was made
+    int cellsDrawn = 0; // cells rendered in the last frame (the rest were kept)
+    int cellsKept = 0;
+    bool reduced = false;
+    double frameMs = 0.0; // render + tone map + composite, GPU finished (glFinish), without IBL
+    double iblMs = 0.0; // IBL lookups and precomputes this frame ran
+    // Since the renderer was made: environments whose IBL set this renderer asked for (one per
+    // environment image and quality, however many cells show it), and how many of those ran the
+    // precompute passes or came from the disk cache.
+    int iblRequests = 0;
+    int iblComputed = 0;
+    int iblFromDisk = 0;
+};
+
+class CompareRenderer {
+public:
+    // Gap between cells and the loading fill (linear values; the composite is shown as is).
+    static constexpr float kGapGrey = 0.06f;
+    static constexpr float kLoadingGrey = 0.18f;
+
+    // Needs the context current. `cacheDirectory` empty: the IBL disk cache's default folder.
+    explicit CompareRenderer(const QString& cacheDirectory = {}, bool useDiskCache = true);
+    ~CompareRenderer();
+    CompareRenderer(const CompareRenderer&) = delete;
+    CompareRenderer& operator=(const CompareRenderer&) = delete;
+
+    // Draws `cells` at `scale` in (0, 1] into `targetFramebuffer` (width x height device pixels):
+    // the cells whose inputs changed, then the whole composite. False with *error
+    // ("CompareRenderer::paint: ...") when a cell could not be drawn (it is left grey; the others
+    // are drawn).
+    bool paint(const std::vector<CompareCellDraw>& cells, unsigned targetFramebuffer, int width, int height,
+        double scale, std::string* error);
+    // Forgets what was drawn: the next paint draws every cell.
+    void invalidate();
+
+    const CompareFrameStats& lastFrame() const { return m_stats; }
+    FrameRenderer& frames() { return *m_frames; }
+
+private:
+    // What a cell was drawn from: equal keys, equal pixels.
+    struct CellKey {
+        Project project;
+        const void* environmentPixels = nullptr;
+        double environmentRotation = 0.0;
+        double environmentIntensity = 1.0;
+        std::vector<const void*> maps;
+        const void* mesh = nullptr;
+        int rect[4] {};
+        int clip[4] {};
+        double scale = 1.0;
+        bool operator==(const CellKey&) const = default;
+    };
+    static CellKey keyOf(const CompareCellDraw& cell, double scale);
+    bool drawCell(const CompareCellDraw& cell, double scale, std::string* error);
+    std::shared_ptr<const IblTextures> lightingFor(const CompareCellDraw& cell, std::string* error);
+    void fill(const FrameRect& rect, float grey);
+
+    std::unique_ptr<FrameRenderer> m_frames;
+    std::optional<Framebuffer> m_composite;
+    std::optional<Framebuffer> m_scratch;
+    std::vector<std::optional<CellKey>> m_drawn; // by cell index
+    // The IBL sets of the environments shown, by pixel identity and IBL quality.
+    std::map<std::pair<const void*, std::uint64_t>, std::shared_ptr<const IblTextures>> m_lighting;
+    CompareFrameStats m_stats;
+    GLInfo m_glInfo;
+};
+
+} // namespace facet

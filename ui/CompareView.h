@@ -1,0 +1,134 @@
+#pragma once
+// The Compare view: ONE QOpenGLWidget that draws every cell of the project's compare mode
+// (ui/CompareCells.h: the environment grid, A/B split or side by side, the wedge) through one
+// FrameRenderer (ui/CompareRenderer.h), so an environment several cells show is precomputed once.
+// Labels (the environment's name, A and B, the wedge's values on its axes) are child labels over
+// the cells; the A/B divider is a thin line the mouse drags.
+//
+// Like the single view (ViewportWidget) it renders on demand only (an idle window draws nothing),
+// draws kPreviewScale frames while something is dragged and one full frame kRefineDelayMs after,
+// and keeps the project's view settings (debug view, tone mapper, OCIO, exposure): each cell is a
+// Project variant. Only the cells whose inputs changed are drawn again (CompareRenderer).
+//
+// Input: left drag orbits (a linked cell moves every linked cell: the shared camera; an unlinked
+// cell moves alone), the wheel dollies, a drag near the A/B divider moves it, a double click on a
+// grid cell promotes it to the single view, the context menu holds the per-cell edits
+// (ui/CompareMenus.h). Edits go through CompareController (undoable).
+
+#include "ui/CompareCells.h"
+#include "ui/CompareMenus.h"
+#include "ui/CompareRenderer.h"
+
+#include <QOpenGLWidget>
+#include <QPoint>
+#include <QTimer>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+class QLabel;
+class QMimeData;
+
+namespace facet {
+
+class CompareAssets;
+class CompareController;
+class Document;
+class SceneController;
+
+class CompareView : public QOpenGLWidget {
+    Q_OBJECT
+public:
+    static constexpr double kPreviewScale = 0.5; // as ViewportWidget's
+    static constexpr int kRefineDelayMs = 250;
+    static constexpr int kGapPixels = 2; // between cells
+    static constexpr int kDividerGrabPixels = 6; // a press this close to the divider drags it
+
+    CompareView(
+        Document* document, SceneController* scene, CompareController* controller, QWidget* parent = nullptr);
+    ~CompareView() override;
+
+    // The library the context menu offers for a cell (MainWindow: the Environment dock's list).
+    void setEnvironmentChoices(EnvironmentChoicesFunction choices) { m_choices = std::move(choices); }
+
+    const std::vector<CompareCell>& cells() const { return m_cells; }
+    // The cell's rectangle in widget coordinates (a split's A and B share one).
+    QRect cellRectOf(std::size_t cell) const;
+    // The cell under `position` (widget coordinates), -1 in a gap or margin. In a split, A left
+    // of the divider, B right of it.
+    int cellAt(const QPoint& position) const;
+    // The A/B divider's x in widget coordinates (-1 outside split mode).
+    int dividerX() const;
+    // The label painted over cell `cell` (and the wedge's axis labels: rowLabels, columnLabels).
+    QString labelOf(std::size_t cell) const;
+    QStringList axisLabels() const;
+
+    CompareAssets* assets() const { return m_assets; }
+    const CompareFrameStats& lastFrameStats() const { return m_stats; }
+    std::uint64_t frameCount() const { return m_stats.frameNumber; }
+    const QString& lastError() const { return m_lastError; }
+    // Whether any cell waits for its environment.
+    bool isLoading() const;
+
+    // An interaction is under way: draw previews, refine kRefineDelayMs after the last call.
+    void markInteractive();
+    bool isPreviewing() const { return m_previewing; }
+
+    // Tests and the benchmark: a renderer that never touches the user's IBL disk cache. Call
+    // before the widget is first shown.
+    void setUseDiskCache(bool use) { m_useDiskCache = use; }
+
+Q_SIGNALS:
+    void frameRendered();
+
+protected:
+    void initializeGL() override;
+    void paintGL() override;
+    void resizeEvent(QResizeEvent* event) override;
+    void showEvent(QShowEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void mouseDoubleClickEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void contextMenuEvent(QContextMenuEvent* event) override;
+    // An Environment dock entry dropped on a grid cell shows there; dropped on the free part of
+    // the grid it becomes a new cell.
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dragMoveEvent(QDragMoveEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    void rebuild();
+    void layoutOverlays();
+    QLabel* overlayLabel(int index);
+    std::vector<CompareCellDraw> cellDraws();
+    void moveCamera(int cell, const std::function<Camera(const Camera&)>& move);
+    void releaseRenderer();
+    // The environment source a drag from the Environment dock's list carries; empty for others.
+    static QString droppedSource(const QMimeData* mime);
+
+    Document* m_document;
+    SceneController* m_scene;
+    CompareController* m_controller;
+    CompareAssets* m_assets;
+    EnvironmentChoicesFunction m_choices;
+    std::unique_ptr<CompareRenderer> m_renderer;
+    std::vector<CompareCell> m_cells;
+    std::vector<QLabel*> m_labels; // cell labels, then axis labels
+    QStringList m_labelTexts;
+    int m_cellLabelCount = 0;
+    QWidget* m_divider;
+    CompareFrameStats m_stats;
+    QString m_lastError;
+    QTimer m_refineTimer;
+    bool m_previewing = false;
+    bool m_useDiskCache = true;
+    enum class Drag { None, Orbit, Divider } m_drag = Drag::None;
+    int m_dragCell = -1;
+    bool m_dragOpenedEdit = false;
+    QPoint m_lastMouse;
+};
+
+} // namespace facet
