@@ -13,11 +13,13 @@
 #include <cstdio>
 
 #include "core/AtomicFile.h"
+#include "ui/CompareView.h"
 #include "ui/ViewportWidget.h"
 
 namespace facet {
 
-WindowScreenshot::WindowScreenshot(QWidget* window, ViewportWidget* viewport, QString path, QObject* parent)
+WindowScreenshot::WindowScreenshot(
+    QWidget* window, ViewportWidget* viewport, CompareView* compare, QString path, QObject* parent)
     : QObject(parent)
     , m_window(window)
     , m_path(std::move(path))
@@ -30,9 +32,17 @@ WindowScreenshot::WindowScreenshot(QWidget* window, ViewportWidget* viewport, QS
         if (!m_done && !frame.reduced && !frame.loadingMaps && frame.mapsHeldBack == 0)
             QTimer::singleShot(0, this, &WindowScreenshot::save);
     });
+    // A project saved in a Compare mode opens in it, and the single viewport, hidden, draws
+    // nothing: the compare view's first full frame with every environment loaded is the one.
+    if (compare)
+        connect(compare, &QOpenGLWidget::frameSwapped, this, [this, compare] {
+            const CompareFrameStats& frame = compare->lastFrameStats();
+            if (!m_done && compare->isVisible() && frame.frameNumber > 0 && !frame.reduced && !compare->isLoading())
+                QTimer::singleShot(0, this, &WindowScreenshot::save);
+        });
     m_timeout.setSingleShot(true);
     connect(&m_timeout, &QTimer::timeout, this, [this] {
-        fail(QStringLiteral("the viewport drew no complete frame within %1 s")
+        fail(QStringLiteral("the view drew no complete frame within %1 s")
                  .arg(kFirstFrameTimeoutMs / 1000));
     });
     m_timeout.start(kFirstFrameTimeoutMs);

@@ -1,8 +1,9 @@
 #pragma once
-// `facet --screenshot FILE.png`: once the viewport has drawn its first complete frame (full
-// resolution, every map loaded and on the GPU: not a preview drawn while a texture set loads),
-// saves a grab of the whole window and quits (exit code 0 when saved, 1 when not). For README
-// pictures and smoke tests.
+// `facet --screenshot FILE.png`: once the central area has drawn its first complete frame (the
+// single viewport: full resolution, every map loaded and on the GPU, not a preview drawn while a
+// texture set loads; a Compare mode, when the project opened in one: every cell drawn at full
+// resolution with its environment loaded), saves a grab of the whole window and quits (exit code
+// 0 when saved, 1 when not). For README pictures and smoke tests.
 
 #include <QObject>
 #include <QString>
@@ -12,6 +13,7 @@ class QWidget;
 
 namespace facet {
 
+class CompareView;
 class ViewportWidget;
 
 class WindowScreenshot : public QObject {
@@ -20,7 +22,8 @@ public:
     // How long to wait for the first complete frame before giving up (a context that never comes up).
     static constexpr int kFirstFrameTimeoutMs = 60000;
 
-    WindowScreenshot(QWidget* window, ViewportWidget* viewport, QString path, QObject* parent = nullptr);
+    WindowScreenshot(QWidget* window, ViewportWidget* viewport, CompareView* compare, QString path,
+        QObject* parent = nullptr);
 
     // Whether Qt can write an image of `path`'s suffix; if not, `why` says so. Needs a QGuiApplication
     // (image-format plugins), so main() checks this before it shows the window.

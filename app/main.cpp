@@ -62,7 +62,7 @@ int runGui(int& argc, char** argv, const facet::CommandLine& commandLine)
     }
     std::optional<facet::WindowScreenshot> screenshot;
     if (!commandLine.screenshotPath.isEmpty())
-        screenshot.emplace(&window, window.viewport(), commandLine.screenshotPath);
+        screenshot.emplace(&window, window.viewport(), window.compareView(), commandLine.screenshotPath);
     window.show();
     // Work lost in a crash is offered back, but not to a scripted screenshot run.
     if (!screenshot)
