@@ -43,27 +43,17 @@ std::shared_ptr<const Environment> CompareAssets::environment(const std::string&
 {
     if (const auto found = m_environments.find(spec); found != m_environments.end())
         return found->second;
-    const std::string key = environmentKey(spec);
-    if (m_problems.count(key) || m_loading.count(key))
-        return nullptr;
-    m_loading.insert(key);
-    ++m_environmentLoads;
-    QPointer<CompareAssets> self(this);
-    m_pool.start([self, spec, key] {
+    const bool started = startLoad(environmentKey(spec), [spec] {
         Result result;
         std::string warning;
         if (std::optional<Environment> loaded = Environment::fromSpec(spec, &result.error, &warning))
             result.environment = std::make_shared<const Environment>(std::move(*loaded));
         if (!warning.empty())
             qWarning().noquote() << "facet:" << QString::fromStdString(warning);
-        QMetaObject::invokeMethod(
-            self.data(),
-            [self, key, result] {
-                if (self)
-                    self->deliver(key, result);
-            },
-            Qt::QueuedConnection);
+        return result;
     });
+    if (started)
+        ++m_environmentLoads;
     return nullptr;
 }
 
@@ -77,14 +67,22 @@ std::shared_ptr<const MapImage> CompareAssets::map(const std::string& path)
 {
     if (const auto found = m_maps.find(path); found != m_maps.end())
         return found->second;
-    const std::string key = mapKey(path);
-    if (m_problems.count(key) || m_loading.count(key))
-        return nullptr;
-    m_loading.insert(key);
-    QPointer<CompareAssets> self(this);
-    m_pool.start([self, path, key] {
+    startLoad(mapKey(path), [path] {
         Result result;
         result.map = MapImageCache::shared().load(path, &result.error);
+        return result;
+    });
+    return nullptr;
+}
+
+bool CompareAssets::startLoad(const std::string& key, std::function<Result()> load)
+{
+    if (m_problems.count(key) || m_loading.count(key))
+        return false;
+    m_loading.insert(key);
+    QPointer<CompareAssets> self(this);
+    m_pool.start([self, key, load = std::move(load)] {
+        const Result result = load();
         QMetaObject::invokeMethod(
             self.data(),
             [self, key, result] {
@@ -93,7 +91,7 @@ std::shared_ptr<const MapImage> CompareAssets::map(const std::string& path)
             },
             Qt::QueuedConnection);
     });
-    return nullptr;
+    return true;
 }
 
 void CompareAssets::deliver(const std::string& key, Result result)

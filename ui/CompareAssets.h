@@ -16,6 +16,7 @@
 #include <QString>
 #include <QThreadPool>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -60,6 +61,9 @@ private:
         std::shared_ptr<const MapImage> map;
         std::string error;
     };
+    // Runs `load` on a worker unless `key` is loading or failed (false then); the result comes
+    // back through deliver() on this object's thread.
+    bool startLoad(const std::string& key, std::function<Result()> load);
     void deliver(const std::string& key, Result result);
 
     std::map<std::string, std::shared_ptr<const Environment>> m_environments;
