@@ -14,6 +14,7 @@
 
 #include "core/AtomicFile.h"
 #include "ui/CompareView.h"
+#include "ui/SceneController.h"
 #include "ui/ViewportWidget.h"
 
 namespace facet {
@@ -29,7 +30,8 @@ WindowScreenshot::WindowScreenshot(
     // while maps decode and upload (ViewportFrameStats::loadingMaps) are not it.
     connect(viewport, &QOpenGLWidget::frameSwapped, this, [this, viewport] {
         const ViewportFrameStats& frame = viewport->lastFrameStats();
-        if (!m_done && !frame.reduced && !frame.loadingMaps && frame.mapsHeldBack == 0)
+        if (!m_done && !frame.reduced && !frame.loadingMaps && frame.mapsHeldBack == 0
+            && viewport->sceneController() && viewport->sceneController()->pendingAssetLoads() == 0)
             QTimer::singleShot(0, this, &WindowScreenshot::save);
     });
     // A project saved in a Compare mode opens in it, and the single viewport, hidden, draws

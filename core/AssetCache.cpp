@@ -9,14 +9,6 @@ namespace facet {
 
 namespace {
 
-// The file's modification time in ms since the epoch; 0 for what is not a file (a built-in
-// name, uniform:, a library reference): those are keyed by the name alone.
-std::int64_t modifiedTime(const std::string& path)
-{
-    const QFileInfo info(QString::fromStdString(path));
-    return info.isFile() ? info.lastModified().toMSecsSinceEpoch() : 0;
-}
-
 std::uint64_t fnv1a(const std::string& text, std::uint64_t hash)
 {
     for (unsigned char c : text) {
@@ -27,6 +19,17 @@ std::uint64_t fnv1a(const std::string& text, std::uint64_t hash)
 }
 
 } // namespace
+
+std::int64_t AssetCache::modifiedTime(const std::string& path)
+{
+    const QFileInfo info(QString::fromStdString(path));
+    return info.isFile() ? info.lastModified().toMSecsSinceEpoch() : 0;
+}
+
+std::uint64_t AssetCache::meshKey(const std::string& nameOrPath, std::int64_t modified)
+{
+    return fnv1a(nameOrPath, modified ? std::uint64_t(modified) : 1u);
+}
 
 std::optional<Environment> AssetCache::environment(const std::string& spec, std::string* error, std::string* warning)
 {
@@ -55,8 +58,7 @@ std::optional<AssetCache::LoadedMesh> AssetCache::mesh(
         return std::nullopt;
     LoadedMesh loaded;
     loaded.mesh = std::make_shared<const Mesh>(std::move(*mesh));
-    // A new file version is a new key (the renderer uploads again); a built-in name keeps its key.
-    loaded.key = fnv1a(nameOrPath, modified ? std::uint64_t(modified) : 1u);
+    loaded.key = meshKey(nameOrPath, modified);
     m_meshes[nameOrPath] = MeshEntry {modified, loaded};
     return loaded;
 }

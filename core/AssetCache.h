@@ -38,6 +38,13 @@ public:
     int environmentLoads() const;
     int meshLoads() const;
 
+    // The file's modification time in ms since the epoch; 0 for what is not a file (a built-in
+    // name, uniform:, a library reference): those are keyed by the name alone.
+    static std::int64_t modifiedTime(const std::string& path);
+    // The content key of a mesh loaded from `nameOrPath` at `modified` (ProjectAssets::meshKey):
+    // a new file version is a new key (the renderer uploads again); a built-in name keeps its key.
+    static std::uint64_t meshKey(const std::string& nameOrPath, std::int64_t modified);
+
 private:
     struct EnvironmentEntry {
         std::int64_t modified = 0;

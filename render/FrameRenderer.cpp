@@ -18,9 +18,10 @@ FrameRenderer::FrameRenderer(const QString& cacheDirectory, bool useDiskCache)
 {
 }
 
-FrameRenderer::FrameRenderer(std::shared_ptr<IblPrecompute> precompute)
+FrameRenderer::FrameRenderer(
+    std::shared_ptr<IblPrecompute> precompute, std::shared_ptr<TextureCache> textures)
     : m_precompute(std::move(precompute))
-    , m_renderer(std::make_unique<Renderer>())
+    , m_renderer(std::make_unique<Renderer>(std::move(textures)))
 {
 }
 
@@ -36,6 +37,16 @@ FrameRenderer::~FrameRenderer()
 TextureCache& FrameRenderer::textureCache()
 {
     return m_renderer->textureCache();
+}
+
+const std::shared_ptr<TextureCache>& FrameRenderer::sharedTextureCache() const
+{
+    return m_renderer->sharedTextureCache();
+}
+
+void FrameRenderer::finishFrame()
+{
+    m_renderer->textureCache().evictUnused();
 }
 
 std::shared_ptr<const IblTextures> FrameRenderer::lighting(

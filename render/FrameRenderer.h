@@ -62,8 +62,12 @@ public:
     // Needs the context current. `cacheDirectory` empty: the IBL disk cache's default folder;
     // `useDiskCache` false: memory only (tests and benchmarks never touch the user's cache).
     explicit FrameRenderer(const QString& cacheDirectory = {}, bool useDiskCache = true);
-    // Shares `precompute` (and so its IBL results) with other FrameRenderers of the context.
-    explicit FrameRenderer(std::shared_ptr<IblPrecompute> precompute);
+    // Shares `precompute` (and so its IBL results) and, when given, `textures` (the material
+    // textures) with other FrameRenderers of the context or of contexts sharing with it (the views
+    // of a window: ui/ViewShareGroup). Targets, the mesh's buffers and vertex arrays stay per
+    // renderer (container objects are per context).
+    explicit FrameRenderer(
+        std::shared_ptr<IblPrecompute> precompute, std::shared_ptr<TextureCache> textures = nullptr);
     ~FrameRenderer();
     FrameRenderer(const FrameRenderer&) = delete;
     FrameRenderer& operator=(const FrameRenderer&) = delete;
@@ -98,8 +102,14 @@ public:
     int lastRenderWidth() const { return m_lastWidth; }
     int lastRenderHeight() const { return m_lastHeight; }
 
+    // Ends a complete frame (every cell of a grid drawn): deletes the material textures no
+    // render since the last call used or requested (TextureCache::evictUnused). Callers that
+    // draw a sequence of unrelated images (a contact sheet, a benchmark) need not call it.
+    void finishFrame();
+
     Renderer& renderer() { return *m_renderer; }
     TextureCache& textureCache();
+    const std::shared_ptr<TextureCache>& sharedTextureCache() const;
     IblPrecompute& precompute() { return *m_precompute; }
     const std::shared_ptr<IblPrecompute>& sharedPrecompute() const { return m_precompute; }
 

@@ -78,6 +78,34 @@ private:
     std::array<GLboolean, kCapabilities.size()> m_enabled {};
 };
 
+// The vertex array and framebuffer of one precompute run. Container objects belong to the
+// context that made them (they are not shared within a share group, unlike textures and
+// programs), and one IblPrecompute serves every view of a window, each in its own context: so
+// they are made per run, in the context current then (two GL calls, nothing beside a pass).
+// Declared after a GLStateGuard, they go first; deleting a bound object unbinds it, and the
+// guard then restores the caller's bindings.
+class PassObjects {
+public:
+    PassObjects()
+    {
+        glGenVertexArrays(1, &m_vertexArray);
+        glGenFramebuffers(1, &m_framebuffer);
+        glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer);
+        glBindVertexArray(m_vertexArray);
+    }
+    ~PassObjects()
+    {
+        glDeleteVertexArrays(1, &m_vertexArray);
+        glDeleteFramebuffers(1, &m_framebuffer);
+    }
+    PassObjects(const PassObjects&) = delete;
+    PassObjects& operator=(const PassObjects&) = delete;
+
+private:
+    GLuint m_vertexArray = 0;
+    GLuint m_framebuffer = 0;
+};
+
 // An RGBA16F cubemap of `levels` levels, level 0 `size` wide; `data` (optional) gives each
 // level's 6 faces of half floats, faces in GL order.
 std::shared_ptr<GLTexture> makeCubemap(int size, int levels, const std::vector<const IblCacheLayer*>& data = {})
@@ -166,10 +194,6 @@ IblPrecompute::~IblPrecompute()
     m_programs.reset();
     for (auto& program : m_dfgPrograms)
         program.reset();
-    if (m_vertexArray)
-        glDeleteVertexArrays(1, &m_vertexArray);
-    if (m_framebuffer)
-        glDeleteFramebuffers(1, &m_framebuffer);
 }
 
 void IblPrecompute::clearMemoryCache()
@@ -210,16 +234,7 @@ bool IblPrecompute::ensurePrograms(std::string* error)
                              &programs->irradiance})
         p->setInt("uEnvironment", 0), p->setInt("uEquirect", 0);
     m_programs = std::move(programs);
-    ensureDrawObjects();
     return true;
-}
-
-void IblPrecompute::ensureDrawObjects()
-{
-    if (!m_vertexArray)
-        glGenVertexArrays(1, &m_vertexArray);
-    if (!m_framebuffer)
-        glGenFramebuffers(1, &m_framebuffer);
 }
 
 const ShaderProgram* IblPrecompute::dfgProgram(Visibility visibility, std::string* error)
@@ -317,9 +332,7 @@ std::shared_ptr<const DfgLut> IblPrecompute::dfgTable(
     const ShaderProgram* program = dfgProgram(visibility, error);
     if (!program)
         return nullptr;
-    ensureDrawObjects();
-    glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer);
-    glBindVertexArray(m_vertexArray);
+    const PassObjects objects;
     while (glGetError() != GL_NO_ERROR) {
     }
     const Clock::time_point passStart = Clock::now();
@@ -383,8 +396,7 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
     GLStateGuard guard;
     if (!ensurePrograms(error))
         return nullptr;
-    glBindFramebuffer(GL_FRAMEBUFFER, m_framebuffer);
-    glBindVertexArray(m_vertexArray);
+    const PassObjects objects;
     glActiveTexture(GL_TEXTURE0);
     // Filtering across cube faces (the prefilter reads blurred levels, where the seams would show);
     // global state, which the surface renderer wants too.

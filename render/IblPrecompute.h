@@ -12,12 +12,15 @@
 // are applied by the renderer at shading time, so changing them reruns nothing.
 //
 // Caching by content: results are keyed by (Environment::contentHash(), IblSettings::hash()),
-// kept in memory (least recently used first out, within kMemoryBudgetBytes of GPU memory) and on disk (core/IblDiskCache, $FACET_CACHE_DIR or
-// QStandardPaths::CacheLocation/ibl). A DFG LUT is keyed by IblSettings::dfgHash(visibility)
-// (its size, samples and V; no environment), in memory for the object's life and on disk.
+// kept in memory (least recently used first out, within kMemoryBudgetBytes of GPU memory) and on disk
+// (core/IblDiskCache, $FACET_CACHE_DIR or QStandardPaths::CacheLocation/ibl). A DFG LUT is keyed by
+// IblSettings::dfgHash(visibility) (its size, samples and V; no environment), in memory for the object's life
+// and on disk.
 //
-// Threading and lifetime: every call needs the same GL context (or one sharing with it)
-// current; destroy the IblPrecompute and drop every IblTextures with it current.
+// Threading and lifetime: every call needs a GL context of one share group current (the views of
+// a window share one IblPrecompute, each calling it in its own context: it keeps only shareable
+// objects, textures and programs); destroy the IblPrecompute and drop every IblTextures with a
+// context of that group current.
 
 #include "core/Environment.h"
 #include "core/ShadingModel.h"
@@ -104,15 +107,12 @@ private:
     bool ensurePrograms(std::string* error);
     // The DFG program for `visibility`, compiled on first use (a disk hit compiles nothing).
     const ShaderProgram* dfgProgram(Visibility visibility, std::string* error);
-    void ensureDrawObjects();
     void warn(const std::string& message);
 
     QString m_cacheDirectory;
     bool m_useDiskCache = true;
     std::unique_ptr<Programs> m_programs;
     std::array<std::unique_ptr<ShaderProgram>, kVisibilityCount> m_dfgPrograms; // by int(Visibility)
-    unsigned m_vertexArray = 0;
-    unsigned m_framebuffer = 0;
     void trimMemoryCache();
 
     std::list<std::pair<std::uint64_t, std::shared_ptr<const IblTextures>>> m_memory; // most recent first

@@ -109,10 +109,10 @@ int enabledLightCount(const RenderScene& scene)
 
 } // namespace
 
-Renderer::Renderer()
+Renderer::Renderer(std::shared_ptr<TextureCache> textures)
     : m_toneMapping(std::make_unique<ToneMapping>())
     , m_mesh(std::make_unique<GpuMesh>())
-    , m_textures(std::make_unique<TextureCache>())
+    , m_textures(textures ? std::move(textures) : std::make_shared<TextureCache>())
 {
 }
 
@@ -266,7 +266,6 @@ bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::str
         glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    m_textures->evictUnused();
     m_frame.frameCount = 1;
     m_total.add(m_frame);
     ++m_total.frameCount;

@@ -1,8 +1,13 @@
 #pragma once
 // The surface renderer: draws a RenderScene snapshot into an HDR (RGBA16F/32F) Framebuffer, and
 // tone-maps an HDR framebuffer for display. It owns every GL object it uses (programs by variant
-// key, the mesh buffers, the material textures, the MSAA target, the tone-mapping pass) and no
-// widget; the viewport and the headless commands call the same two functions.
+// key, the mesh buffers, the MSAA target, the tone-mapping pass) and no widget; the viewport and
+// the headless commands call the same two functions. The material textures (render/TextureCache)
+// may be shared with the renderers of other contexts of one share group (the views of a window):
+// a texture set is uploaded once for every view that shows it. Textures no frame uses are
+// deleted by TextureCache::evictUnused, which the caller runs once per complete frame (all the
+// cells of a grid): render() keeps every texture, so cells with different materials never
+// evict each other's maps mid-frame.
 //
 //   Renderer renderer;                                // GL context current
 //   renderer.render(scene, hdr, &error);              // linear radiance, background included
@@ -28,7 +33,9 @@ class ToneMapping;
 
 class Renderer {
 public:
-    Renderer(); // needs the GL context current; creates nothing until the first frame
+    // Needs the GL context current; creates nothing until the first frame. `textures` null: a
+    // texture cache of its own; otherwise one shared with renderers of contexts sharing this one.
+    explicit Renderer(std::shared_ptr<TextureCache> textures = nullptr);
     ~Renderer(); // the same context must be current
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
@@ -52,6 +59,7 @@ public:
     // The material textures (render/TextureCache.h): the viewport uploads maps through it in
     // slices between frames and sets the frame's anisotropy; render() uploads what is missing.
     TextureCache& textureCache() { return *m_textures; }
+    const std::shared_ptr<TextureCache>& sharedTextureCache() const { return m_textures; }
 
     const RenderStats& lastFrameStats() const { return m_frame; }
     const RenderStats& totalStats() const { return m_total; }
@@ -76,7 +84,7 @@ private:
     std::unique_ptr<ShaderProgram> m_backgroundProgram;
     std::unique_ptr<ToneMapping> m_toneMapping;
     std::unique_ptr<GpuMesh> m_mesh;
-    std::unique_ptr<TextureCache> m_textures;
+    std::shared_ptr<TextureCache> m_textures;
     unsigned m_emptyVao = 0;
     unsigned m_msaaFramebuffer = 0;
     unsigned m_msaaColor = 0;

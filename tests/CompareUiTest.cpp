@@ -10,12 +10,13 @@
 #include "core/MaterialPresets.h"
 #include "ui/CameraController.h"
 #include "ui/CompareActions.h"
-#include "ui/CompareAssets.h"
 #include "ui/CompareController.h"
 #include "ui/CompareView.h"
 #include "ui/Document.h"
+#include "ui/DocumentAssets.h"
 #include "ui/EnvironmentDock.h"
 #include "ui/MainWindow.h"
+#include "ui/SceneController.h"
 #include "ui/SurfaceFormat.h"
 #include "ui/ViewportWidget.h"
 
@@ -84,6 +85,7 @@ private Q_SLOTS:
     void compareEditsUndoAndRedo_data();
     void compareEditsUndoAndRedo();
     void environmentInTwoCellsPreparedOnce();
+    void singleAndCompareViewsShareLightingAndTextures();
     void idleCompareViewDrawsNothing();
     void libraryEntryDroppedOnCell();
 
@@ -508,12 +510,13 @@ void CompareUiTest::environmentInTwoCellsPreparedOnce()
     project.compare.mode = CompareMode::Environments;
     project.compare.environments.cells
         = {cellOf("uniform:0.375"), cellOf("uniform:0.625"), cellOf("uniform:0.375")};
-    const int loadsBefore = m_view->assets()->environmentLoads();
+    setProject(baseProject()); // the single view's environment loaded before the count starts
+    const int loadsBefore = m_view->assets()->loads(DocumentAssets::Kind::Environment);
     QVERIFY(waitForSettledFrame());
     const CompareFrameStats statsBefore = m_view->lastFrameStats();
     setProject(project);
     const CompareFrameStats& stats = m_view->lastFrameStats();
-    QCOMPARE(m_view->assets()->environmentLoads() - loadsBefore, 2);
+    QCOMPARE(m_view->assets()->loads(DocumentAssets::Kind::Environment) - loadsBefore, 2);
     QCOMPARE(stats.iblRequests - statsBefore.iblRequests, 2);
     QCOMPARE(
         (stats.iblComputed + stats.iblFromDisk) - (statsBefore.iblComputed + statsBefore.iblFromDisk), 2);
@@ -524,7 +527,59 @@ void CompareUiTest::environmentInTwoCellsPreparedOnce()
     QTest::mouseRelease(m_view, Qt::LeftButton, {}, start + QPoint(30, 0));
     QVERIFY(waitForSettledFrame());
     QCOMPARE(m_view->lastFrameStats().iblRequests - statsBefore.iblRequests, 2);
-    QCOMPARE(m_view->assets()->environmentLoads() - loadsBefore, 2);
+    QCOMPARE(m_view->assets()->loads(DocumentAssets::Kind::Environment) - loadsBefore, 2);
+}
+
+void CompareUiTest::singleAndCompareViewsShareLightingAndTextures()
+{
+    // The single view shows a red base colour map under an environment no other test shows;
+    // once its frame is complete it releases the decoded map (only the texture is left).
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString mapPath = dir.filePath(QStringLiteral("red.png"));
+    QImage red(64, 64, QImage::Format_RGB32);
+    red.fill(qRgb(220, 24, 16));
+    QVERIFY(red.save(mapPath));
+    Project project = baseProject();
+    project.environment.source = "uniform:0.4375";
+    project.materials[0].setBaseColor({1.0, 1.0, 1.0});
+    project.materials[0].map(MapSlot::Metallic).factor.x = 0.0;
+    project.materials[0].map(MapSlot::BaseColor).path = mapPath.toStdString();
+    project.compare.mode = CompareMode::Single;
+    setProject(project);
+    const SceneController* scene = m_window->sceneController();
+    const auto released = [scene] {
+        const auto& maps = scene->assets().maps;
+        const auto& image = maps.empty() ? nullptr : maps[0][std::size_t(MapSlot::BaseColor)].image;
+        return image && !image->hasPixels();
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(released(), 60000);
+
+    // The Compare view, in a context of the same share group, finds both: the environment's IBL
+    // set is not computed again (only the new one is) and the map is not decoded or uploaded again.
+    const CompareFrameStats before = m_view->lastFrameStats();
+    const int mapLoadsBefore = m_view->assets()->loads(DocumentAssets::Kind::Map);
+    project.compare.mode = CompareMode::Environments;
+    project.compare.environments.cells = {cellOf("uniform:0.4375"), cellOf("uniform:0.5625")};
+    setProject(project);
+    const CompareFrameStats& stats = m_view->lastFrameStats();
+    QCOMPARE(stats.iblRequests - before.iblRequests, 2);
+    QCOMPARE(stats.iblComputed - before.iblComputed, 1);
+    QCOMPARE(stats.texturesUploaded - before.texturesUploaded, 0);
+    QCOMPARE(m_view->assets()->loads(DocumentAssets::Kind::Map) - mapLoadsBefore, 0);
+    QVERIFY(released()); // drawn from the shared texture, not from a decoded copy
+
+    // And the cells show the map: the sphere's centre is red, not the white factor.
+    const QImage frame = m_view->grabFramebuffer();
+    for (int cell = 0; cell < 2; ++cell) {
+        const QRgb centre = frame.pixel(m_view->cellRectOf(cell).center() * frame.devicePixelRatio());
+        QVERIFY2(qRed(centre) > 2 * qGreen(centre) && qRed(centre) > 2 * qBlue(centre),
+            qPrintable(QStringLiteral("cell %1 centre is (%2, %3, %4)")
+                           .arg(cell)
+                           .arg(qRed(centre))
+                           .arg(qGreen(centre))
+                           .arg(qBlue(centre))));
+    }
 }
 
 void CompareUiTest::idleCompareViewDrawsNothing()

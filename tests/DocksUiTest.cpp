@@ -580,6 +580,8 @@ void DocksUiTest::meshWarningInWindowWording()
     file.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n");
     file.close();
     QVERIFY(m_window->viewDock()->importMesh(path));
+    // The mesh loads off the GUI thread (ui/DocumentAssets); its notes come when it arrives.
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->sceneController()->pendingAssetLoads(), 0, 30000);
     const QString message = m_window->statusMessage();
     QVERIFY2(message.startsWith(
                  QStringLiteral("triangle.obj has no texture coordinates; Facet generated them by box projection")),

@@ -2,7 +2,10 @@
 // `facet bench` and the tests share. Checked here: an environment used by several views (or
 // FrameRenderers sharing one precompute) is precomputed once; the IBL memory cache keeps to its
 // byte budget, least recently used out; present() writes exactly its rectangle, at full and
-// reduced resolution, with the pixels renderImage() reads back; the target pool stays bounded.
+// reduced resolution, with the pixels renderImage() reads back; the target pool stays bounded;
+// the cells of one frame with different maps never evict each other's textures (eviction is
+// finishFrame()'s), and renderers sharing a texture cache (the views of a window) upload a map
+// once, a released decoded copy (a stand-in) drawing from the shared texture.
 
 #include <epoxy/gl.h> // before any header that could pull in <GL/gl.h>
 
@@ -13,6 +16,7 @@
 #include "render/HeadlessGLContext.h"
 #include "render/IblSettings.h"
 #include "render/Renderer.h"
+#include "render/TextureCache.h"
 
 #include "TestSupport.h"
 
@@ -68,6 +72,36 @@ Difference difference(const Image& a, const Image& b)
     return d;
 }
 
+// The sphere of sphereIn(environment) with a base colour map of one colour, named `path` (the
+// texture cache keys by path and timestamp: no file is read).
+struct MappedSphere {
+    Project project;
+    ProjectAssets assets;
+};
+std::optional<MappedSphere> mappedSphere(const std::string& path, glm::vec3 colour, std::string* error)
+{
+    MappedSphere sphere;
+    sphere.project = sphereIn("uniform:0.5");
+    sphere.project.material().map(MapSlot::BaseColor).path = path;
+    sphere.project.material().map(MapSlot::BaseColor).factor = glm::dvec4(1.0);
+    Project withoutMap = sphere.project;
+    withoutMap.material().map(MapSlot::BaseColor).path.clear();
+    auto assets = loadProjectAssets(withoutMap, error);
+    if (!assets)
+        return std::nullopt;
+    sphere.assets = std::move(*assets);
+    Image pixels(8, 8);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            pixels.at(x, y) = glm::vec4(colour, 1.0f);
+    LoadedMapImage& map = sphere.assets.maps.at(0)[std::size_t(MapSlot::BaseColor)];
+    map.image
+        = std::make_shared<const MapImage>(MapImage::fromImage(pixels, MapLayout::Rgb, MapSampleType::UInt8));
+    map.path = path;
+    map.timestamp = 1;
+    return sphere;
+}
+
 } // namespace
 
 class FrameRendererGLTest : public QObject {
@@ -86,6 +120,8 @@ private Q_SLOTS:
     void presentWritesItsRectangle_data();
     void presentWritesItsRectangle();
     void targetPoolIsBounded();
+    void texturesOfEveryCellStayUntilTheFrameEnds();
+    void renderersSharingTexturesUploadOnce();
 
 private:
     std::optional<HeadlessGLContext> m_context;
@@ -302,6 +338,84 @@ void FrameRendererGLTest::targetPoolIsBounded()
         QVERIFY(frames.pooledTargets() <= FrameRenderer::kPooledTargets);
     }
     QCOMPARE(frames.pooledTargets(), FrameRenderer::kPooledTargets);
+}
+
+void FrameRendererGLTest::texturesOfEveryCellStayUntilTheFrameEnds()
+{
+    // Two cells of one frame (A/B) showing materials with different maps: drawing B must not
+    // evict A's texture, or every frame would upload both again.
+    FrameRenderer frames(m_cacheDir.path(), /*useDiskCache=*/false);
+    const IblSettings settings = tinySettings();
+    std::string error;
+    const auto a = mappedSphere("a.png", {0.9f, 0.1f, 0.1f}, &error);
+    const auto b = mappedSphere("b.png", {0.1f, 0.1f, 0.9f}, &error);
+    QVERIFY2(a && b, error.c_str());
+    const auto sceneA
+        = frames.prepare(a->project, a->assets, settings, sceneOptionsFor(settings, false), nullptr, &error);
+    const auto sceneB
+        = frames.prepare(b->project, b->assets, settings, sceneOptionsFor(settings, false), nullptr, &error);
+    QVERIFY2(sceneA && sceneB, error.c_str());
+    const auto uploadsOf = [&](const RenderScene& scene) {
+        std::string problem;
+        const bool drawn
+            = frames.renderImage(scene, 16, 16, FrameOutput::LinearRadiance, &problem).has_value();
+        return drawn ? frames.renderer().lastFrameStats().texturesUploaded : -1;
+    };
+    // Frame 1 uploads each map once; frame 2 uploads nothing.
+    QCOMPARE(uploadsOf(*sceneA), 1);
+    QCOMPARE(uploadsOf(*sceneB), 1);
+    frames.finishFrame();
+    QCOMPARE(uploadsOf(*sceneA), 0);
+    QCOMPARE(uploadsOf(*sceneB), 0);
+    frames.finishFrame();
+    QCOMPARE(int(frames.textureCache().size()), 2);
+    // A frame showing A alone: B's texture goes when it ends, not before.
+    QCOMPARE(uploadsOf(*sceneA), 0);
+    QCOMPARE(int(frames.textureCache().size()), 2);
+    frames.finishFrame();
+    QCOMPARE(int(frames.textureCache().size()), 1);
+    QVERIFY(frames.textureCache().isReady("a.png", 1, ColorEncoding::SRGB));
+    QVERIFY(!frames.textureCache().isReady("b.png", 1, ColorEncoding::SRGB));
+}
+
+void FrameRendererGLTest::renderersSharingTexturesUploadOnce()
+{
+    // The single view and the Compare view: two FrameRenderers sharing the IBL precompute and the
+    // texture cache (ui/ViewShareGroup; one context here, a share group in the window).
+    auto precompute = std::make_shared<IblPrecompute>(m_cacheDir.path(), /*useDiskCache=*/false);
+    auto textures = std::make_shared<TextureCache>();
+    FrameRenderer single(precompute, textures);
+    FrameRenderer compare(precompute, textures);
+    QCOMPARE(compare.sharedTextureCache(), single.sharedTextureCache());
+    const IblSettings settings = tinySettings();
+    std::string error;
+    auto sphere = mappedSphere("red.png", {0.9f, 0.1f, 0.1f}, &error);
+    QVERIFY2(sphere, error.c_str());
+    const auto scene = single.prepare(
+        sphere->project, sphere->assets, settings, sceneOptionsFor(settings, false), nullptr, &error);
+    QVERIFY2(scene, error.c_str());
+    const auto drawn = single.renderImage(*scene, 32, 32, FrameOutput::LinearRadiance, &error);
+    QVERIFY2(drawn, error.c_str());
+    QCOMPARE(single.renderer().lastFrameStats().texturesUploaded, 1);
+
+    // The other view draws the same map from the texture the first one uploaded, even from a
+    // stand-in without pixels (the window released the decoded copy), with the same pixels.
+    LoadedMapImage& map = sphere->assets.maps[0][std::size_t(MapSlot::BaseColor)];
+    map.image = std::make_shared<const MapImage>(MapImage::withoutPixels(*map.image));
+    IblStats stats;
+    const auto standIn = compare.prepare(
+        sphere->project, sphere->assets, settings, sceneOptionsFor(settings, false), &stats, &error);
+    QVERIFY2(standIn, error.c_str());
+    QCOMPARE(stats.passesRun, 0); // the IBL set and the DFG table are the first view's
+    const auto again = compare.renderImage(*standIn, 32, 32, FrameOutput::LinearRadiance, &error);
+    QVERIFY2(again, error.c_str());
+    QCOMPARE(compare.renderer().lastFrameStats().texturesUploaded, 0);
+    const Difference d = difference(*drawn, *again);
+    QCOMPARE(d.max, 0.0f);
+    // And the map is drawn: the centre is red.
+    const glm::vec4 centre = again->at(16, 16);
+    QVERIFY2(centre.r > 3.0f * centre.g && centre.r > 3.0f * centre.b,
+        qPrintable(QStringLiteral("centre (%1, %2, %3)").arg(centre.r).arg(centre.g).arg(centre.b)));
 }
 
 QTEST_GUILESS_MAIN(FrameRendererGLTest)

@@ -236,6 +236,9 @@ private:
     // environment behind, the base colour debug view (unless `debugView` says otherwise), the
     // turntable stopped at 0, the default view; the history is cleared. False when it did not open.
     bool openForPixels(const QString& asset, const std::string& debugView = "base-color");
+    // Opens `path` and waits until its mesh (and environment) arrived: files load off the GUI
+    // thread (ui/DocumentAssets).
+    bool open(const QString& path);
     // Where `part`'s centre (the mean of its vertices, in the loaded, normalised mesh) is drawn,
     // in viewport widget coordinates.
     QPoint pixelOfPart(int part) const;
@@ -284,9 +287,17 @@ void MaterialsUiTest::cleanupTestCase()
     m_window.reset();
 }
 
+bool MaterialsUiTest::open(const QString& path)
+{
+    if (!m_window->projectFiles()->openFile(path))
+        return false;
+    SceneController* scene = m_window->sceneController();
+    return QTest::qWaitFor([scene] { return scene->pendingAssetLoads() == 0; }, 30000);
+}
+
 bool MaterialsUiTest::openForPixels(const QString& asset, const std::string& debugView)
 {
-    if (!m_window->projectFiles()->openFile(asset) || m_document->project().parts.size() != 2)
+    if (!open(asset) || m_document->project().parts.size() != 2)
         return false;
     m_window->sceneController()->setTurntableAngles(0.0, 0.0);
     m_window->cameraController()->resetView();
@@ -335,6 +346,7 @@ QColor MaterialsUiTest::framePixel(const QPoint& point)
 
 void MaterialsUiTest::openingAnAssetListsItsMaterialsAndParts()
 {
+    // Not open(): the status bar is read before the mesh arrives (and the lighting says it is ready).
     QVERIFY(m_window->projectFiles()->openFile(m_twoMaterials));
     QVERIFY(m_document->filePath().isEmpty()); // untitled: Save asks where
     QCOMPARE(m_document->sourceAssetPath(), m_twoMaterials);
@@ -352,7 +364,8 @@ void MaterialsUiTest::openingAnAssetListsItsMaterialsAndParts()
     QCOMPARE(materials->item(1)->text(), QStringLiteral("Blue"));
     QCOMPARE(materials->currentRow(), 0);
     QTreeWidget* parts = dock->partList();
-    QCOMPARE(parts->topLevelItemCount(), 2);
+    // The mesh loads off the GUI thread; its parts are listed when it arrives.
+    QTRY_COMPARE_WITH_TIMEOUT(parts->topLevelItemCount(), 2, 30000);
     QCOMPARE(parts->topLevelItem(0)->text(0), QStringLiteral("Left"));
     QCOMPARE(parts->topLevelItem(1)->text(0), QStringLiteral("Right"));
     for (int part = 0; part < 2; ++part) {
@@ -405,7 +418,7 @@ void MaterialsUiTest::importNotesReachTheStatusBar()
     QString error;
     QVERIFY2(w.write(path, test::GltfWriter::BufferStorage::Glb, &error), qPrintable(error));
 
-    QVERIFY(m_window->projectFiles()->openFile(path));
+    QVERIFY(m_window->projectFiles()->openFile(path)); // the status bar as the open leaves it
     const QString status = m_window->statusMessage();
     QVERIFY2(status.contains(QStringLiteral("lost.glb uses the image lost_basecolor.png, which is missing")),
         qPrintable(status));
@@ -486,7 +499,7 @@ void MaterialsUiTest::mapSlotNamesTheImage()
     QString error;
     QVERIFY2(w.write(path, test::GltfWriter::BufferStorage::Glb, &error), qPrintable(error));
 
-    QVERIFY(m_window->projectFiles()->openFile(path));
+    QVERIFY(open(path));
     MapSlotWidget* slot = m_window->textureMapsDock()->slotWidget(MapSlot::BaseColor);
     // The thumbnail (and with it the resolution) comes from a worker thread.
     if (writeImage)
@@ -498,7 +511,7 @@ void MaterialsUiTest::mapSlotNamesTheImage()
 
 void MaterialsUiTest::choosingAMaterialEditsOnlyIt()
 {
-    QVERIFY(m_window->projectFiles()->openFile(m_twoMaterials));
+    QVERIFY(open(m_twoMaterials));
     QListWidget* list = m_window->materialsDock()->materialList();
     QSignalSpy sceneChanged(m_window->sceneController(), &SceneController::sceneChanged);
     QTest::mouseClick(

@@ -300,6 +300,8 @@ void ProjectFileUiTest::libraryEnvironmentSurvivesAMove()
     QVERIFY(library->currentItem());
     QCOMPARE(library->currentItem()->data(Qt::UserRole).toString(), source);
     QCOMPARE(library->currentItem()->text(), label);
+    // The environment file loads off the GUI thread (ui/DocumentAssets).
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->sceneController()->pendingAssetLoads(), 0, 30000);
     QCOMPARE(m_window->sceneController()->environmentName(), QFileInfo(source).fileName());
     QVERIFY(m_window->sceneController()->environmentProblem().isEmpty());
 }
@@ -340,6 +342,7 @@ void ProjectFileUiTest::missingLibraryFileOpensWithRelinkDialog()
     QVERIFY2(dialog->entries()[0].contains(QStringLiteral("gone.exr")) && dialog->entries()[0].contains(advice),
         qPrintable(dialog->entries()[0]));
     // The window never claims the missing environment is lit.
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->sceneController()->pendingAssetLoads(), 0, 30000);
     QVERIFY2(m_window->sceneController()->environmentProblem().contains(QStringLiteral("gone.exr")),
         qPrintable(m_window->sceneController()->environmentProblem()));
 

@@ -3,13 +3,17 @@
 // materials' files changed on disk unnoticed (they are not even looked at); a change that names no
 // slot (files changed on disk) looks at every file; and a frame is asked for only when the frame
 // shows what changed (not a name, not a material no visible part shows, not a light that stays
-// off, not which material the docks edit). Decodes are counted by core/MapImageCache.
+// off, not which material the docks edit). Decodes are counted by core/MapImageCache. Environment
+// and mesh files load off the GUI thread (ui/DocumentAssets): the previous ones stay drawn until
+// they arrive, and one frame follows the arrival.
 // No window: a Document and a SceneController. It links facet_ui, hence "Ui" (runs under
 // with-display.sh but opens nothing).
 
+#include "TestSupport.h"
 #include "core/MapImageCache.h"
 #include "core/Project.h"
 #include "ui/Document.h"
+#include "ui/DocumentAssets.h"
 #include "ui/SceneController.h"
 
 #include <QDateTime>
@@ -65,6 +69,8 @@ private Q_SLOTS:
     void oneMapChangeDecodesThatFileOnly();
     void frameOnlyForWhatIsDrawn_data();
     void frameOnlyForWhatIsDrawn();
+    void environmentAndMeshFilesLoadOffTheGuiThread_data();
+    void environmentAndMeshFilesLoadOffTheGuiThread();
 
 private:
     // Two materials, each with a file in base colour, normal and roughness (six files).
@@ -245,6 +251,74 @@ void SceneControllerUiTest::frameOnlyForWhatIsDrawn()
 
     edit(document);
     QCOMPARE(sceneChanged.count(), frame ? 1 : 0);
+}
+
+void SceneControllerUiTest::environmentAndMeshFilesLoadOffTheGuiThread_data()
+{
+    QTest::addColumn<bool>("environment"); // else the mesh
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<bool>("readable");
+    QTest::newRow("environment EXR") << true << "sky.exr" << true;
+    QTest::newRow("environment missing") << true << "gone.exr" << false;
+    QTest::newRow("mesh OBJ") << false << "tri.obj" << true;
+    QTest::newRow("mesh missing") << false << "gone.obj" << false;
+}
+
+void SceneControllerUiTest::environmentAndMeshFilesLoadOffTheGuiThread()
+{
+    QFETCH(bool, environment);
+    QFETCH(QString, file);
+    QFETCH(bool, readable);
+    const std::string path = this->file(file.toStdString());
+    if (readable && environment)
+        QVERIFY(test::writeConstantExr(QString::fromStdString(path), 0.5f));
+    if (readable && !environment) {
+        QFile obj(QString::fromStdString(path));
+        QVERIFY(obj.open(QIODevice::WriteOnly));
+        obj.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    }
+    Document document;
+    SceneController scene(&document);
+    QVERIFY(scene.hasScene()); // the default project: built-in studio and sphere, made at once
+    const std::uint64_t iblKey = scene.iblKey();
+    const std::uint64_t meshKey = scene.assets().meshKey;
+    QSignalSpy sceneChanged(&scene, &SceneController::sceneChanged);
+    QSignalSpy messages(&scene, &SceneController::message);
+
+    Project project = document.project();
+    (environment ? project.environment.source : project.view.mesh) = path;
+    document.setProject(project, QStringLiteral("Change"));
+    // The edit returned before the file was read: the previous one is drawn meanwhile, and the
+    // status bar says what is loading.
+    QCOMPARE(scene.pendingAssetLoads(), 1);
+    QVERIFY(scene.hasScene());
+    QCOMPARE(scene.iblKey(), iblKey);
+    QCOMPARE(scene.assets().meshKey, meshKey);
+    QVERIFY(!messages.isEmpty());
+    QVERIFY2(
+        messages.last().first().toString().contains(file), qPrintable(messages.last().first().toString()));
+    const int framesBefore = sceneChanged.count();
+
+    scene.documentAssets()->waitForLoads();
+    QCOMPARE(scene.pendingAssetLoads(), 0);
+    if (readable) {
+        QCOMPARE(sceneChanged.count(), framesBefore + 1); // the frame that shows it
+        if (environment)
+            QVERIFY(scene.iblKey() != iblKey && scene.environmentName() == file);
+        else
+            QVERIFY(scene.assets().meshKey != meshKey);
+        QVERIFY(scene.environmentProblem().isEmpty());
+    } else {
+        QCOMPARE(sceneChanged.count(), framesBefore); // nothing new to draw
+        QCOMPARE(scene.iblKey(), iblKey);
+        QCOMPARE(scene.assets().meshKey, meshKey);
+        QVERIFY2(messages.last().first().toString().contains(file),
+            qPrintable(messages.last().first().toString()));
+        if (environment)
+            QVERIFY(scene.environmentProblem().contains(file));
+    }
+    QCOMPARE(scene.loadCounts().environments, environment ? 2 : 1);
+    QCOMPARE(scene.loadCounts().meshes, environment ? 1 : 2);
 }
 
 QTEST_GUILESS_MAIN(SceneControllerUiTest)

@@ -527,6 +527,9 @@ void ViewportUiTest::unusableEnvironmentIsNamedNeverReady()
     EnvironmentSettings environment = document->project().environment;
     environment.source = source.toStdString();
     document->setEnvironment(environment, QStringLiteral("Environment"));
+    // The file is tried off the GUI thread (ui/DocumentAssets); until it fails the previous
+    // environment stays lit.
+    QTRY_COMPARE_WITH_TIMEOUT(scene->pendingAssetLoads(), 0, 30000);
     waitForFrame(m_viewport, 3000); // nothing to relight: a frame may or may not follow
 
     const auto* dockStatus = m_window->findChild<QLabel*>(QStringLiteral("environmentStatus"));
@@ -541,6 +544,8 @@ void ViewportUiTest::unusableEnvironmentIsNamedNeverReady()
     QVERIFY(scene->environmentName() != file);
 
     document->undoStack()->undo();
+    QVERIFY(scene->environmentProblem().isEmpty()); // at once: another choice, loading or not
+    QTRY_COMPARE_WITH_TIMEOUT(scene->pendingAssetLoads(), 0, 30000);
     QVERIFY(scene->environmentProblem().isEmpty());
 }
 
@@ -563,6 +568,7 @@ void ViewportUiTest::projectWithMissingEnvironmentAtStartUp()
     window.show();
     QVERIFY(QTest::qWaitForWindowExposed(&window));
     QVERIFY(finished.count() > 0 || finished.wait(60000));
+    QTRY_COMPARE_WITH_TIMEOUT(window.sceneController()->pendingAssetLoads(), 0, 30000);
     const auto* dockStatus = window.findChild<QLabel*>(QStringLiteral("environmentStatus"));
     for (const QString& text : {window.statusMessage(), dockStatus->text()}) {
         QVERIFY2(text.contains(QStringLiteral("night.exr is missing")), qPrintable(text));

@@ -31,6 +31,13 @@ CompareRenderer::CompareRenderer(const QString& cacheDirectory, bool useDiskCach
 {
 }
 
+CompareRenderer::CompareRenderer(
+    std::shared_ptr<IblPrecompute> precompute, std::shared_ptr<TextureCache> textures)
+    : m_frames(std::make_unique<FrameRenderer>(std::move(precompute), std::move(textures)))
+    , m_glInfo(queryCurrentGLInfo())
+{
+}
+
 CompareRenderer::~CompareRenderer()
 {
     // GL objects go while the caller holds the context current: textures first, then their makers.
@@ -43,6 +50,12 @@ CompareRenderer::~CompareRenderer()
 void CompareRenderer::invalidate()
 {
     m_drawn.clear();
+}
+
+bool CompareRenderer::textureReady(
+    const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace) const
+{
+    return m_frames->textureCache().isReady(path, timestamp, colorSpace);
 }
 
 CompareRenderer::CellKey CompareRenderer::keyOf(const CompareCellDraw& cell, double scale)
@@ -106,6 +119,7 @@ bool CompareRenderer::drawCell(const CompareCellDraw& cell, double scale, std::s
 {
     if (cell.assets.environment.isEmpty()) {
         fill(cell.rect, kLoadingGrey);
+        ++m_stats.cellsLoading;
         return true;
     }
     if (cell.clip && (cell.clip->width <= 0 || cell.clip->height <= 0))
@@ -119,8 +133,12 @@ bool CompareRenderer::drawCell(const CompareCellDraw& cell, double scale, std::s
     if (!m_frames->addDfgTables(settings, scene, &dfgStats, error))
         return false;
     m_stats.iblMs += dfgStats.msTotal;
-    if (!cell.clip)
-        return m_frames->present(scene, m_composite->framebufferId(), cell.rect, scale, error);
+    if (!cell.clip) {
+        const bool presented
+            = m_frames->present(scene, m_composite->framebufferId(), cell.rect, scale, error);
+        m_stats.texturesUploaded += m_frames->renderer().lastFrameStats().texturesUploaded;
+        return presented;
+    }
 
     // Rendered whole at the cell's size, then only the clipped part copied: the two sides of a
     // split come from images of one size and camera, so they meet without a seam or a shift.
@@ -130,8 +148,10 @@ bool CompareRenderer::drawCell(const CompareCellDraw& cell, double scale, std::s
         if (!m_scratch)
             return false;
     }
-    if (!m_frames->present(scene, m_scratch->framebufferId(),
-            FrameRect {0, 0, cell.rect.width, cell.rect.height}, scale, error))
+    const bool presented = m_frames->present(
+        scene, m_scratch->framebufferId(), FrameRect {0, 0, cell.rect.width, cell.rect.height}, scale, error);
+    m_stats.texturesUploaded += m_frames->renderer().lastFrameStats().texturesUploaded;
+    if (!presented)
         return false;
     const FrameRect& clip = *cell.clip;
     const int sx = clip.x - cell.rect.x;
@@ -151,6 +171,7 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
     m_stats.iblMs = 0.0;
     m_stats.cellsDrawn = 0;
     m_stats.cellsKept = 0;
+    m_stats.cellsLoading = 0;
     scale = std::clamp(scale, 0.05, 1.0);
     std::string problem;
     if (!m_composite || m_composite->width() != width || m_composite->height() != height) {
@@ -196,6 +217,12 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
     }
     // The IBL sets no cell shows any more go (FrameRenderer's memory cache may keep them).
     std::erase_if(m_lighting, [&shown](const auto& entry) { return !shown.count(entry.first); });
+    // Textures no cell uses go, but only after a frame that drew every cell with its
+    // environment: a kept cell's maps, or those of a cell still waiting for its environment, were
+    // not drawn (so not marked used) and must stay, or the next redraw would upload them again
+    // (from a decoded copy the single view may have released).
+    if (ok && m_stats.cellsKept == 0 && m_stats.cellsLoading == 0)
+        m_frames->finishFrame();
 
     glBindFramebuffer(GL_READ_FRAMEBUFFER, m_composite->framebufferId());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);

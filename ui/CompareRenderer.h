@@ -45,6 +45,7 @@ struct CompareFrameStats {
     std::uint64_t frameNumber = 0; // frames drawn since the renderer was made
     int cellsDrawn = 0; // cells rendered in the last frame (the rest were kept)
     int cellsKept = 0;
+    int cellsLoading = 0; // filled with kLoadingGrey: their environment is still loading
     bool reduced = false;
     double frameMs = 0.0; // render + tone map + composite, GPU finished (glFinish), without IBL
     double iblMs = 0.0; // IBL lookups and precomputes this frame ran
@@ -52,6 +53,9 @@ struct CompareFrameStats {
     // environment image and quality, however many cells show it), and how many of those ran the
     // precompute passes or came from the disk cache.
     int iblRequests = 0;
+    // Since the renderer was made: material textures the cells uploaded (0 for maps the single
+    // view already put on the GPU: the views share their textures, ui/ViewShareGroup).
+    int texturesUploaded = 0;
     int iblComputed = 0;
     int iblFromDisk = 0;
 };
@@ -64,6 +68,9 @@ public:
 
     // Needs the context current. `cacheDirectory` empty: the IBL disk cache's default folder.
     explicit CompareRenderer(const QString& cacheDirectory = {}, bool useDiskCache = true);
+    // Draws with the IBL results and material textures of the window's other views
+    // (ui/ViewShareGroup), in a context sharing with theirs.
+    CompareRenderer(std::shared_ptr<IblPrecompute> precompute, std::shared_ptr<TextureCache> textures);
     ~CompareRenderer();
     CompareRenderer(const CompareRenderer&) = delete;
     CompareRenderer& operator=(const CompareRenderer&) = delete;
@@ -76,6 +83,9 @@ public:
         double scale, std::string* error);
     // Forgets what was drawn: the next paint draws every cell.
     void invalidate();
+    // Whether the material texture of `path` (that file version, that colour space) is complete
+    // on the GPU: a decoded copy the single view released (a stand-in) can then be drawn as is.
+    bool textureReady(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace) const;
 
     const CompareFrameStats& lastFrame() const { return m_stats; }
     FrameRenderer& frames() { return *m_frames; }

@@ -1,10 +1,11 @@
 #include "ui/CompareView.h"
 
 #include "ui/CameraController.h"
-#include "ui/CompareAssets.h"
 #include "ui/CompareController.h"
 #include "ui/Document.h"
+#include "ui/DocumentAssets.h"
 #include "ui/SceneController.h"
+#include "ui/ViewShareGroup.h"
 
 #include <QContextMenuEvent>
 #include <QDataStream>
@@ -32,7 +33,8 @@ CompareView::CompareView(
     , m_document(document)
     , m_scene(scene)
     , m_controller(controller)
-    , m_assets(new CompareAssets(this))
+    , m_assets(scene->documentAssets())
+    , m_assetsAlive(m_assets)
     , m_divider(new QWidget(this))
 {
     setObjectName(QStringLiteral("compareView"));
@@ -68,7 +70,7 @@ CompareView::CompareView(
         if (isVisible())
             update();
     });
-    connect(m_assets, &CompareAssets::assetArrived, this, [this] {
+    connect(m_assets, &DocumentAssets::assetArrived, this, [this] {
         layoutOverlays(); // "Loading …" labels become names
         update();
     });
@@ -76,6 +78,8 @@ CompareView::CompareView(
 
 CompareView::~CompareView()
 {
+    if (!m_assetsAlive.isNull())
+        m_assets->forgetUser(this);
     releaseRenderer();
 }
 
@@ -88,12 +92,26 @@ void CompareView::releaseRenderer()
     doneCurrent();
 }
 
+void CompareView::setUseDiskCache(bool use)
+{
+    m_useDiskCache = use;
+    if (m_shareGroup)
+        m_shareGroup->setUseDiskCache(use);
+}
+
 void CompareView::initializeGL()
 {
     m_renderer.reset();
     const GLInfo info = queryCurrentGLInfo();
-    if (info.isValid() && info.atLeast(4, 1) && info.coreProfile)
+    if (!info.isValid() || !info.atLeast(4, 1) || !info.coreProfile) {
+        // No renderer: paintGL shows the failure grey.
+    } else if (m_shareGroup) {
+        ViewShareGroup::Resources shared = m_shareGroup->acquire();
+        m_renderer
+            = std::make_unique<CompareRenderer>(std::move(shared.precompute), std::move(shared.textures));
+    } else {
         m_renderer = std::make_unique<CompareRenderer>(QString(), m_useDiskCache);
+    }
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &CompareView::releaseRenderer,
         Qt::UniqueConnection);
 }
@@ -121,7 +139,7 @@ void CompareView::markInteractive()
 bool CompareView::isLoading() const
 {
     for (const CompareCell& cell : m_cells)
-        if (m_assets->isLoading(cell.project.environment.source))
+        if (m_assets->isLoading(DocumentAssets::Kind::Environment, cell.project.environment.source))
             return true;
     return m_assets->pendingLoads() > 0;
 }
@@ -129,15 +147,18 @@ bool CompareView::isLoading() const
 void CompareView::rebuild()
 {
     m_cells = compareCells(m_document->project());
-    std::set<std::string> keep;
+    std::set<std::string> environments;
+    std::set<std::string> maps;
     for (const CompareCell& cell : m_cells) {
-        keep.insert(cell.project.environment.source);
+        environments.insert(cell.project.environment.source);
         for (const Material& material : cell.project.materials)
             for (MapSlot slot : kAllMapSlots)
                 if (!material.map(slot).path.empty())
-                    keep.insert(material.map(slot).path);
+                    maps.insert(material.map(slot).path);
     }
-    m_assets->release(keep);
+    // What the cells show stays in the document's cache; what no view shows goes.
+    m_assets->setInUse(this, DocumentAssets::Kind::Environment, std::move(environments));
+    m_assets->setInUse(this, DocumentAssets::Kind::Map, std::move(maps));
     layoutOverlays();
 }
 
@@ -207,9 +228,9 @@ void CompareView::layoutOverlays()
         const CompareCell& cell = m_cells[i];
         QString text = cell.label;
         const std::string& source = cell.project.environment.source;
-        if (m_assets->isLoading(source))
+        if (m_assets->isLoading(DocumentAssets::Kind::Environment, source))
             text = tr("Loading %1…").arg(environmentLabel(source));
-        else if (!m_assets->problem(source).empty())
+        else if (!m_assets->problem(DocumentAssets::Kind::Environment, source).empty())
             text = tr("%1 cannot be loaded").arg(environmentLabel(source));
         else if (mode == CompareMode::Wedge)
             text.clear(); // the values are on the axes
@@ -268,15 +289,20 @@ void CompareView::layoutOverlays()
 
 std::vector<CompareCellDraw> CompareView::cellDraws()
 {
-    // The single view's loaded maps by file (the mesh and maps are loaded once for both views);
-    // a decoded copy the single view released after upload (a stand-in without pixels) is no use
-    // to this context's textures, so such files come through CompareAssets (MapImageCache).
+    // The single view's loaded maps by file (the mesh and maps are loaded once for both views).
+    // A decoded copy the single view released after upload (a stand-in without pixels) is drawn
+    // from the texture both views share (ui/ViewShareGroup) while that texture is there; when it
+    // is not (evicted, or a context of its own) the file comes again through DocumentAssets.
     const ProjectAssets& shared = m_scene->assets();
     std::map<std::string, LoadedMapImage> loaded;
     for (const auto& material : shared.maps)
         for (const LoadedMapImage& map : material)
-            if (map.image && map.image->hasPixels() && !map.path.empty())
+            if (map.image && !map.path.empty())
                 loaded.emplace(map.path, map);
+    const auto usable = [this](const LoadedMapImage& map, ColorEncoding colorSpace) {
+        return map.image->hasPixels()
+            || (m_renderer && m_renderer->textureReady(map.path, map.timestamp, colorSpace));
+    };
 
     const qreal ratio = devicePixelRatioF();
     const int heightPixels = int(std::lround(height() * ratio));
@@ -290,7 +316,10 @@ std::vector<CompareCellDraw> CompareView::cellDraws()
         draw.project.compare = CompareLayout {}; // not drawn: a layout edit must not redraw every cell
         draw.assets.mesh = shared.mesh;
         draw.assets.meshKey = shared.meshKey;
-        if (const auto environment = m_assets->environment(cell.project.environment.source)) {
+        // No mesh yet (the project's first mesh file is loading): the cell waits, as for its
+        // environment.
+        if (const auto environment
+            = shared.mesh ? m_assets->environment(cell.project.environment.source) : nullptr) {
             draw.assets.environment = *environment;
             draw.assets.environment.setRotationDegrees(cell.project.environment.rotationDegrees);
             draw.assets.environment.setIntensity(cell.project.environment.intensity);
@@ -298,11 +327,13 @@ std::vector<CompareCellDraw> CompareView::cellDraws()
         draw.assets.maps.resize(cell.project.materials.size());
         for (std::size_t m = 0; m < cell.project.materials.size(); ++m)
             for (MapSlot slot : kAllMapSlots) {
-                const std::string& path = cell.project.materials[m].map(slot).path;
+                const MaterialMap& source = cell.project.materials[m].map(slot);
+                const std::string& path = source.path;
                 if (path.empty())
                     continue;
                 LoadedMapImage& map = draw.assets.maps[m][std::size_t(slot)];
-                if (const auto found = loaded.find(path); found != loaded.end()) {
+                if (const auto found = loaded.find(path);
+                    found != loaded.end() && usable(found->second, source.colorSpace)) {
                     map = found->second;
                 } else if (auto image = m_assets->map(path)) {
                     map.image = std::move(image);

@@ -18,9 +18,11 @@
 #include "ui/CompareCells.h"
 #include "ui/CompareMenus.h"
 #include "ui/CompareRenderer.h"
+#include "ui/DocumentAssets.h"
 
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QPointer>
 #include <QTimer>
 
 #include <cstdint>
@@ -32,10 +34,10 @@ class QMimeData;
 
 namespace facet {
 
-class CompareAssets;
 class CompareController;
 class Document;
 class SceneController;
+class ViewShareGroup;
 
 class CompareView : public QOpenGLWidget {
     Q_OBJECT
@@ -64,7 +66,7 @@ public:
     QString labelOf(std::size_t cell) const;
     QStringList axisLabels() const;
 
-    CompareAssets* assets() const { return m_assets; }
+    DocumentAssets* assets() const { return m_assets; }
     const CompareFrameStats& lastFrameStats() const { return m_stats; }
     std::uint64_t frameCount() const { return m_stats.frameNumber; }
     const QString& lastError() const { return m_lastError; }
@@ -77,7 +79,11 @@ public:
 
     // Tests and the benchmark: a renderer that never touches the user's IBL disk cache. Call
     // before the widget is first shown.
-    void setUseDiskCache(bool use) { m_useDiskCache = use; }
+    // With a share group (below), the group's setting: the single view's renderer too.
+    void setUseDiskCache(bool use);
+    // The window's views share their IBL results and material textures (ui/ViewShareGroup.h).
+    // Set before the widget is first shown; without one the view has resources of its own.
+    void setShareGroup(std::shared_ptr<ViewShareGroup> group) { m_shareGroup = std::move(group); }
 
 Q_SIGNALS:
     void frameRendered();
@@ -112,9 +118,11 @@ private:
     Document* m_document;
     SceneController* m_scene;
     CompareController* m_controller;
-    CompareAssets* m_assets;
+    DocumentAssets* m_assets; // the document's (SceneController::documentAssets)
+    QPointer<DocumentAssets> m_assetsAlive; // the window may destroy it first
     EnvironmentChoicesFunction m_choices;
     std::unique_ptr<CompareRenderer> m_renderer;
+    std::shared_ptr<ViewShareGroup> m_shareGroup;
     std::vector<CompareCell> m_cells;
     std::vector<QLabel*> m_labels; // cell labels, then axis labels
     QStringList m_labelTexts;

@@ -8,6 +8,7 @@
 #include "ui/CompareView.h"
 #include "ui/DockScrollArea.h"
 #include "ui/Document.h"
+#include "ui/DocumentAssets.h"
 #include "ui/EnvironmentDock.h"
 #include "ui/LightsDock.h"
 #include "ui/MapLoadStatus.h"
@@ -18,6 +19,7 @@
 #include "ui/SceneController.h"
 #include "ui/TextureMapsDock.h"
 #include "ui/ViewDock.h"
+#include "ui/ViewShareGroup.h"
 #include "ui/ViewportDropHandler.h"
 #include "ui/ViewportWidget.h"
 #include "ui/WindowMessages.h"
@@ -62,7 +64,8 @@ constexpr int kPresetShortcuts = 9; // keys 1..9
 MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     : QMainWindow(parent)
     , m_document(new Document(this))
-    , m_scene(new SceneController(m_document, this))
+    , m_assets(new DocumentAssets(this))
+    , m_scene(new SceneController(m_document, m_assets, this))
     , m_viewport(new ViewportWidget(this))
     , m_camera(new CameraController(m_document, m_scene, m_viewport, this))
     , m_files(new ProjectFileController(m_document, this, this))
@@ -79,6 +82,10 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     central->addWidget(m_viewport);
     central->addWidget(m_compareView = new CompareView(m_document, m_scene, m_compareController, central));
     setCentralWidget(central);
+    // One IBL precompute and one texture cache for both views (their contexts share).
+    auto shareGroup = std::make_shared<ViewShareGroup>();
+    m_viewport->setShareGroup(shareGroup);
+    m_compareView->setShareGroup(shareGroup);
     m_viewport->setSceneController(m_scene);
     setDockOptions(AnimatedDocks | AllowNestedDocks | AllowTabbedDocks);
     m_glStatusLabel->setObjectName(QStringLiteral("glStatusLabel"));

@@ -28,6 +28,7 @@ class MaterialDock;
 class MaterialsDock;
 class PartPicker;
 class ProjectFileController;
+class DocumentAssets;
 class SceneController;
 class TextureMapsDock;
 class ViewDock;
@@ -96,6 +97,7 @@ private:
     void onFrameRendered();
 
     Document* m_document = nullptr;
+    DocumentAssets* m_assets = nullptr; // environments, meshes and maps, shared by the views
     SceneController* m_scene = nullptr;
     ViewportWidget* m_viewport = nullptr;
     CameraController* m_camera = nullptr;

@@ -5,6 +5,7 @@
 #include "core/Project.h"
 #include "render/SceneFromProject.h"
 #include "ui/Document.h"
+#include "ui/DocumentAssets.h"
 #include "ui/WindowMessages.h"
 
 #include <QDateTime>
@@ -29,14 +30,17 @@ std::int64_t modificationTime(const std::string& path)
 
 } // namespace
 
-SceneController::SceneController(Document* document, QObject* parent)
+SceneController::SceneController(Document* document, DocumentAssets* assets, QObject* parent)
     : QObject(parent)
     , m_document(document)
+    , m_documentAssets(assets ? assets : new DocumentAssets(this))
+    , m_documentAssetsAlive(m_documentAssets)
 {
     // Decoding is CPU work beside llvmpipe's own threads and the GUI thread: leave a core to
     // them (one worker on a 2-core machine), at most 4.
     m_mapPool.setMaxThreadCount(std::clamp(QThread::idealThreadCount() - 1, 1, 4));
     connect(m_document, &Document::changed, this, &SceneController::onDocumentChanged);
+    connect(m_documentAssets, &DocumentAssets::assetArrived, this, &SceneController::onAssetArrived);
     loadEnvironment();
     loadMesh();
     loadMaps(DocumentChange::WholeProject);
@@ -131,34 +135,52 @@ void SceneController::setEnvironmentProblem(const QString& problem)
 
 void SceneController::loadEnvironment()
 {
-    const std::string& source = m_document->project().environment.source;
-    std::string error;
-    std::string warning;
+    m_environmentSource = m_document->project().environment.source;
     ++m_loadCounts.environments;
-    std::optional<Environment> environment = Environment::fromSpec(source, &error, &warning);
-    if (!environment) {
-        report("Environment: " + error);
-        if (!m_assets.environment.isEmpty()) {
-            // Keep showing the previous one; a relink or another choice will replace it.
-            m_environmentSource = source;
-            applyEnvironmentSettings();
-            setEnvironmentProblem(WindowMessages::fromCore(error));
-            return;
-        }
-        environment = Environment::builtin(Environment::Builtin::Studio);
-        m_assets.environment = std::move(*environment);
-        m_environmentSource = source;
-        ++m_iblKey;
-        applyEnvironmentSettings();
-        setEnvironmentProblem(WindowMessages::fromCore(error));
-        return;
+    // Choosing it again (a relink, a reload) tries a file that failed before.
+    m_documentAssets->retry(DocumentAssets::Kind::Environment, m_environmentSource);
+    m_environmentPending = true;
+    setEnvironmentProblem({}); // the previous choice's problem is not this one's
+    if (!takeEnvironment())
+        applyEnvironmentSettings(); // the one shown keeps the project's rotation and intensity
+}
+
+bool SceneController::takeEnvironment()
+{
+    if (!m_environmentPending)
+        return false;
+    const std::string& source = m_environmentSource;
+    using Kind = DocumentAssets::Kind;
+    const std::shared_ptr<const Environment> loaded = m_documentAssets->environment(source);
+    m_documentAssets->setInUse(this, Kind::Environment, {source});
+    if (!loaded && m_documentAssets->isLoading(Kind::Environment, source)) {
+        announceLoading(source);
+        return false; // the previous one stays until it arrives
     }
-    report(warning);
-    setEnvironmentProblem({});
-    m_assets.environment = std::move(*environment);
-    m_environmentSource = source;
+    m_environmentPending = false;
+    if (!loaded) {
+        // Keep showing the previous one (a relink or another choice will replace it), or the
+        // built-in studio when there is none; the window says which, and why.
+        const std::string error = m_documentAssets->problem(Kind::Environment, source);
+        const bool first = m_assets.environment.isEmpty();
+        if (first) {
+            m_assets.environment = Environment::builtin(Environment::Builtin::Studio);
+            ++m_iblKey;
+        }
+        applyEnvironmentSettings();
+        qWarning().noquote() << "facet: Environment:" << QString::fromStdString(error);
+        const QString problem = WindowMessages::fromCore(error);
+        setEnvironmentProblem(problem);
+        Q_EMIT message(WindowMessages::environmentNotUsed(problem, environmentName()));
+        return first;
+    } else {
+        report(m_documentAssets->warning(Kind::Environment, source));
+        setEnvironmentProblem({});
+        m_assets.environment = *loaded;
+    }
     ++m_iblKey;
     applyEnvironmentSettings();
+    return true;
 }
 
 void SceneController::applyEnvironmentSettings()
@@ -170,31 +192,63 @@ void SceneController::applyEnvironmentSettings()
 
 void SceneController::loadMesh()
 {
-    const std::string& source = m_document->project().view.mesh;
-    std::string error;
-    std::string warning;
+    m_meshSource = m_document->project().view.mesh;
     ++m_loadCounts.meshes;
-    std::optional<Mesh> mesh = loadViewMesh(source, &error, &warning);
-    m_meshSource = source;
-    if (!mesh) {
-        report("Mesh: " + error);
-        if (m_assets.mesh)
-            return;
-        mesh = loadViewMesh("sphere", &error);
-        Q_ASSERT(mesh);
-    } else {
-        report(warning);
+    m_documentAssets->retry(DocumentAssets::Kind::Mesh, m_meshSource);
+    m_meshPending = true;
+    takeMesh();
+}
+
+bool SceneController::takeMesh()
+{
+    if (!m_meshPending)
+        return false;
+    const std::string& source = m_meshSource;
+    using Kind = DocumentAssets::Kind;
+    const std::shared_ptr<const AssetCache::LoadedMesh> loaded = m_documentAssets->mesh(source);
+    m_documentAssets->setInUse(this, Kind::Mesh, {source});
+    if (!loaded && m_documentAssets->isLoading(Kind::Mesh, source)) {
+        announceLoading(source);
+        return false;
     }
-    m_assets.mesh = std::make_shared<const Mesh>(std::move(*mesh));
-    // A new key for every load: the renderer uploads this mesh once and never again.
-    m_assets.meshKey = std::hash<std::string> {}(source) ^ std::uint64_t(modificationTime(source))
-        ^ (std::uint64_t(m_loadCounts.meshes) << 48);
+    m_meshPending = false;
+    if (!loaded) {
+        report("Mesh: " + m_documentAssets->problem(Kind::Mesh, source));
+        if (m_assets.mesh)
+            return false;
+        const auto sphere = m_documentAssets->mesh("sphere");
+        Q_ASSERT(sphere);
+        m_assets.mesh = sphere->mesh;
+        m_assets.meshKey = sphere->key;
+        return true;
+    }
+    report(m_documentAssets->warning(Kind::Mesh, source));
+    m_assets.mesh = loaded->mesh;
+    m_assets.meshKey = loaded->key;
+    return true;
+}
+
+void SceneController::announceLoading(const std::string& name)
+{
+    const QString source = QString::fromStdString(name);
+    Q_EMIT message(
+        WindowMessages::loading(json::isBuiltinSpec(name) ? source : QFileInfo(source).fileName()));
+}
+
+void SceneController::onAssetArrived()
+{
+    const bool environment = takeEnvironment();
+    const bool mesh = takeMesh();
+    if (environment || mesh)
+        Q_EMIT sceneChanged(false);
 }
 
 SceneController::~SceneController()
 {
     m_mapPool.clear();
     m_mapPool.waitForDone();
+    if (!m_documentAssetsAlive.isNull())
+        m_documentAssets->forgetUser(this);
 }
 
 void SceneController::loadMaps(const DocumentChanges& changes)

@@ -1,11 +1,16 @@
 #pragma once
 // The CPU side of the viewport (not a widget, no GL): observes the Document, loads what an edit
-// made stale and nothing else (core/ProjectAssets.h: the environment via Environment::fromSpec, the
-// mesh via loadViewMesh, each material map via core/MapImageCache), and builds the RenderScene
-// snapshot the viewport's renderer draws (render/SceneFromProject.h). A roughness change loads
-// nothing; a new normal map loads that map only (the change names the material and the slot,
-// ui/DocumentChanges.h: no other slot's file is even looked at on disk); rotating the environment
-// changes a number.
+// made stale and nothing else (the environment and the mesh from the document's asset cache,
+// ui/DocumentAssets, shared with the Compare view; each material map via core/MapImageCache), and
+// builds the RenderScene snapshot the viewport's renderer draws (render/SceneFromProject.h). A
+// roughness change loads nothing; a new normal map loads that map only (the change names the
+// material and the slot, ui/DocumentChanges.h: no other slot's file is even looked at on disk);
+// rotating the environment changes a number.
+//
+// Nothing is decoded on the GUI thread. An environment or mesh file loads on a worker (a built-in
+// environment, uniform:V or a primitive is made at once): meanwhile the frame keeps the previous
+// one (none before the first: pendingAssetLoads() says so and the viewport waits), the status bar
+// says what is loading (message), and the frame changes when it arrives.
 //
 // Maps are decoded off the GUI thread (a QThreadPool; the edit that assigns them returns at
 // once): until a map arrives its slot shows what it showed before (the previous version of a
@@ -22,10 +27,12 @@
 #include "core/ProjectAssets.h"
 #include "render/IblSettings.h"
 #include "render/RenderScene.h"
+#include "ui/DocumentAssets.h"
 #include "ui/DocumentChanges.h"
 
 #include <QElapsedTimer>
 #include <QObject>
+#include <QPointer>
 #include <QString>
 #include <QThreadPool>
 
@@ -53,7 +60,8 @@ public:
         int maps = 0;
     };
 
-    explicit SceneController(Document* document, QObject* parent = nullptr);
+    // `assets` (shared by the window's views) must outlive this; null: a cache of its own.
+    explicit SceneController(Document* document, DocumentAssets* assets = nullptr, QObject* parent = nullptr);
     ~SceneController() override; // drops queued map loads, waits for the running ones
 
     const Document* document() const { return m_document; }
@@ -61,6 +69,12 @@ public:
     const LoadCounts& loadCounts() const { return m_loadCounts; }
     // Map files being decoded for the project (0: every map the project names is in assets()).
     int pendingMapLoads() const { return int(m_pendingMaps.size()); }
+    // The environment and mesh files loading for the project (0, 1 or 2): until they arrive the
+    // frame shows the previous ones, or, before the first, nothing (hasScene() is false).
+    int pendingAssetLoads() const { return int(m_environmentPending) + int(m_meshPending); }
+    // Whether assets() holds an environment and a mesh to draw.
+    bool hasScene() const { return !m_assets.environment.isEmpty() && m_assets.mesh != nullptr; }
+    DocumentAssets* documentAssets() const { return m_documentAssets; }
     // Why a slot of material `material` shows its factor alone although it names a file (the
     // file is missing, unreadable, beyond the size budget), in core's words; empty when loaded
     // or loading.
@@ -131,8 +145,14 @@ private:
     // Per material of the project: whether a visible part of the mesh in assets() shows it.
     std::vector<bool> shownMaterials() const;
     void loadEnvironment();
+    // Takes the project's environment (mesh) from the asset cache when it is there, or its
+    // failure: true when assets() changed. While it loads, false (the previous one stays).
+    bool takeEnvironment();
     void applyEnvironmentSettings();
     void loadMesh();
+    bool takeMesh();
+    void onAssetArrived();
+    void announceLoading(const std::string& name);
     void loadMaps(const DocumentChanges& changes);
     void startMapLoad(const std::string& path, std::int64_t timestamp);
     void onMapLoaded(const std::string& path, std::uint64_t ticket, std::shared_ptr<const MapImage> image,
@@ -152,7 +172,11 @@ private:
     };
 
     Document* m_document;
+    DocumentAssets* m_documentAssets; // the window's, or a child
+    QPointer<DocumentAssets> m_documentAssetsAlive; // the window may destroy it first
     ProjectAssets m_assets;
+    bool m_environmentPending = false; // m_environmentSource is loading
+    bool m_meshPending = false; // m_meshSource is loading
     std::map<std::string, CachedImage> m_images; // the map files shown, by path
     std::map<std::string, PendingMap> m_pendingMaps; // the map files being decoded, by path
     std::uint64_t m_nextTicket = 1;

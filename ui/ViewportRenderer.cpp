@@ -43,6 +43,13 @@ ViewportRenderer::ViewportRenderer(const QString& cacheDirectory)
 {
 }
 
+ViewportRenderer::ViewportRenderer(
+    std::shared_ptr<IblPrecompute> precompute, std::shared_ptr<TextureCache> textures)
+    : m_frames(std::make_unique<FrameRenderer>(std::move(precompute), std::move(textures)))
+    , m_glInfo(queryCurrentGLInfo())
+{
+}
+
 ViewportRenderer::~ViewportRenderer()
 {
     // GL objects go while the caller holds the context current: textures first, then their makers.
@@ -122,6 +129,8 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
     }
     if (!m_frames->present(frame, targetFramebuffer, FrameRect {0, 0, width, height}, scale, &problem))
         return fail(problem);
+    // The textures this frame neither drew nor queued go (another material's, a replaced file's).
+    m_frames->finishFrame();
     const int renderWidth = m_frames->lastRenderWidth();
     const int renderHeight = m_frames->lastRenderHeight();
     // Honest frame times: wait for the GPU (llvmpipe renders on the CPU anyway).

@@ -34,6 +34,7 @@
 namespace facet {
 
 class FrameRenderer;
+class TextureCache;
 class SceneController;
 struct RenderScene;
 
@@ -63,6 +64,9 @@ public:
 
     // Needs the context current. `cacheDirectory` empty: the IBL disk cache's default folder.
     explicit ViewportRenderer(const QString& cacheDirectory = {});
+    // Draws with the IBL results and material textures of the window's other views
+    // (ui/ViewShareGroup), in a context sharing with theirs.
+    ViewportRenderer(std::shared_ptr<IblPrecompute> precompute, std::shared_ptr<TextureCache> textures);
     ~ViewportRenderer();
     ViewportRenderer(const ViewportRenderer&) = delete;
     ViewportRenderer& operator=(const ViewportRenderer&) = delete;

@@ -2,6 +2,7 @@
 
 #include "ui/MapUploadScheduler.h"
 #include "ui/SceneController.h"
+#include "ui/ViewShareGroup.h"
 
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
@@ -74,7 +75,7 @@ void ViewportWidget::markInteractive()
 
 void ViewportWidget::requestFrame()
 {
-    if (m_scene && m_renderer && !m_announcedIbl && m_renderer->needsIbl(*m_scene)) {
+    if (m_scene && m_renderer && m_scene->hasScene() && !m_announcedIbl && m_renderer->needsIbl(*m_scene)) {
         m_announcedIbl = true;
         Q_EMIT iblPrecomputeStarting(m_scene->environmentName());
     }
@@ -93,12 +94,17 @@ void ViewportWidget::initializeGL()
                                            : tr("Facet needs OpenGL 4.1 core, not a compatibility profile");
     // A context can be replaced (re-parenting, a dock torn off): drop the renderer with the old one.
     m_renderer.reset();
-    if (m_glProblem.isEmpty())
+    if (m_glProblem.isEmpty() && m_shareGroup) {
+        ViewShareGroup::Resources shared = m_shareGroup->acquire();
+        m_renderer
+            = std::make_unique<ViewportRenderer>(std::move(shared.precompute), std::move(shared.textures));
+    } else if (m_glProblem.isEmpty()) {
         m_renderer = std::make_unique<ViewportRenderer>();
+    }
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseRenderer,
         Qt::UniqueConnection);
     Q_EMIT glInitialized();
-    if (m_scene && m_renderer && m_renderer->needsIbl(*m_scene)) {
+    if (m_scene && m_renderer && m_scene->hasScene() && m_renderer->needsIbl(*m_scene)) {
         m_announcedIbl = true;
         Q_EMIT iblPrecomputeStarting(m_scene->environmentName());
     }
@@ -106,7 +112,10 @@ void ViewportWidget::initializeGL()
 
 void ViewportWidget::paintGL()
 {
-    if (!m_scene || !m_renderer) {
+    // Before the project's first environment and mesh files arrive (ui/SceneController loads them
+    // off the GUI thread) there is nothing to light: the clear grey, and the status bar says what
+    // is loading.
+    if (!m_scene || !m_renderer || !m_scene->hasScene()) {
         QOpenGLFunctions* gl = context()->functions();
         gl->glClearColor(kClearGrey, kClearGrey, kClearGrey, 1.0f);
         gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

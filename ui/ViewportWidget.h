@@ -23,6 +23,7 @@ namespace facet {
 
 class MapUploadScheduler;
 class SceneController;
+class ViewShareGroup;
 
 class ViewportWidget : public QOpenGLWidget {
     Q_OBJECT
@@ -40,6 +41,9 @@ public:
 
     // The scene to draw; the widget redraws when it changes. Without one it shows kClearGrey.
     void setSceneController(SceneController* scene);
+    // The window's views share their IBL results and material textures (ui/ViewShareGroup.h).
+    // Set before the widget is first shown; without one the view has resources of its own.
+    void setShareGroup(std::shared_ptr<ViewShareGroup> group) { m_shareGroup = std::move(group); }
     SceneController* sceneController() const { return m_scene; }
 
     // What the widget's context is; valid once glInitialized() was emitted.
@@ -84,6 +88,7 @@ private:
 
     SceneController* m_scene = nullptr;
     std::unique_ptr<ViewportRenderer> m_renderer;
+    std::shared_ptr<ViewShareGroup> m_shareGroup;
     ViewportFrameStats m_stats;
     GLInfo m_glInfo;
     QString m_glProblem;

@@ -221,6 +221,11 @@ QString WindowMessages::fromCore(const std::string& message)
     return fromCore(QString::fromStdString(message));
 }
 
+QString WindowMessages::loading(const QString& fileName)
+{
+    return tr("Loading %1…").arg(fileName);
+}
+
 QString WindowMessages::lightingPreparing(const QString& environmentName)
 {
     return tr("Preparing the lighting of %1…").arg(environmentName);

@@ -16,10 +16,10 @@
 #include "core/AssetLibrary.h"
 #include "core/Project.h"
 #include "ui/CameraController.h"
-#include "ui/CompareAssets.h"
 #include "ui/CompareController.h"
 #include "ui/CompareView.h"
 #include "ui/Document.h"
+#include "ui/DocumentAssets.h"
 #include "ui/SceneController.h"
 #include "ui/SurfaceFormat.h"
 #include "ui/ViewportWidget.h"
@@ -204,7 +204,7 @@ int main(int argc, char** argv)
     const CompareFrameStats first = view.lastFrameStats();
     std::printf(
         "3x3 grid\n  first complete grid: %.0f ms (%d frames drawn on the way; environments decoded: %d)\n",
-        firstCompleteMs, framesToComplete, view.assets()->environmentLoads());
+        firstCompleteMs, framesToComplete, view.assets()->loads(DocumentAssets::Kind::Environment));
     std::printf("  IBL: %d environments asked for, %d precomputed, %d from disk\n", first.iblRequests,
         first.iblComputed, first.iblFromDisk);
     if (!view.lastError().isEmpty())

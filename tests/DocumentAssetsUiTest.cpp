@@ -1,0 +1,209 @@
+// ui/DocumentAssets, the window's asset cache: what needs no file (a built-in environment,
+// uniform:V, a primitive mesh) is made at once; files load on a worker and arrive through
+// assetArrived, once however many ask; a failure is named and not tried again until retry() or
+// the file changes; a file changed on disk loads again, the previous version standing in
+// meanwhile; entries no user names are dropped. Needs no display, but links ui/ (a UiTest).
+
+#include "ui/DocumentAssets.h"
+
+#include "TestSupport.h"
+
+#include <QDateTime>
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QtTest/QTest>
+
+#include <memory>
+#include <string>
+
+using namespace facet;
+using Kind = DocumentAssets::Kind;
+
+namespace {
+
+bool writeTriangleObj(const QString& path)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly))
+        return false;
+    file.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\nf 1/1/1 2/2/1 3/3/1\n");
+    return true;
+}
+
+// Moves the file's modification time by `seconds` (a changed file without waiting a second).
+bool touch(const QString& path, int seconds)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadWrite))
+        return false;
+    const QDateTime modified = file.fileTime(QFileDevice::FileModificationTime).addSecs(seconds);
+    return file.setFileTime(modified, QFileDevice::FileModificationTime);
+}
+
+} // namespace
+
+class DocumentAssetsUiTest : public QObject {
+    Q_OBJECT
+private Q_SLOTS:
+    void initTestCase() { QVERIFY(m_dir.isValid()); }
+    void madeAtOnceWithoutAFile_data();
+    void madeAtOnceWithoutAFile();
+    void filesLoadOnAWorkerOnce_data();
+    void filesLoadOnAWorkerOnce();
+    void failureIsNamedAndNotRetriedUntilAsked();
+    void changedFileLoadsAgainPreviousStandsIn();
+    void entriesNoUserNamesAreDropped();
+
+private:
+    QString path(const QString& name) const { return m_dir.filePath(name); }
+    QTemporaryDir m_dir;
+};
+
+void DocumentAssetsUiTest::madeAtOnceWithoutAFile_data()
+{
+    QTest::addColumn<int>("kind");
+    QTest::addColumn<QString>("name");
+    QTest::newRow("built-in studio") << int(Kind::Environment) << "studio";
+    QTest::newRow("built-in sky") << int(Kind::Environment) << "sky";
+    QTest::newRow("uniform") << int(Kind::Environment) << "uniform:0.5";
+    QTest::newRow("sphere") << int(Kind::Mesh) << "sphere";
+    QTest::newRow("shaderball") << int(Kind::Mesh) << "shaderball";
+}
+
+void DocumentAssetsUiTest::madeAtOnceWithoutAFile()
+{
+    QFETCH(int, kind);
+    QFETCH(QString, name);
+    DocumentAssets assets;
+    QSignalSpy arrived(&assets, &DocumentAssets::assetArrived);
+    const std::string n = name.toStdString();
+    const bool made
+        = Kind(kind) == Kind::Environment ? assets.environment(n) != nullptr : assets.mesh(n) != nullptr;
+    QVERIFY(made);
+    QVERIFY(!assets.isLoading(Kind(kind), n));
+    QCOMPARE(assets.pendingLoads(), 0);
+    QCOMPARE(arrived.count(), 0); // nothing to wait for, nothing announced
+    // Asked again: the same entry, not made again.
+    if (Kind(kind) == Kind::Environment)
+        QVERIFY(assets.environment(n));
+    else
+        QVERIFY(assets.mesh(n));
+    QCOMPARE(assets.loads(Kind(kind)), 1);
+}
+
+void DocumentAssetsUiTest::filesLoadOnAWorkerOnce_data()
+{
+    QTest::addColumn<int>("kind");
+    QTest::addColumn<QString>("file");
+    QTest::newRow("environment EXR") << int(Kind::Environment) << "grey.exr";
+    QTest::newRow("mesh OBJ") << int(Kind::Mesh) << "triangle.obj";
+    QTest::newRow("map EXR") << int(Kind::Map) << "grey.exr";
+}
+
+void DocumentAssetsUiTest::filesLoadOnAWorkerOnce()
+{
+    QFETCH(int, kind);
+    QFETCH(QString, file);
+    QVERIFY(test::writeConstantExr(path(QStringLiteral("grey.exr")), 0.25f));
+    QVERIFY(writeTriangleObj(path(QStringLiteral("triangle.obj"))));
+    const std::string name = path(file).toStdString();
+    DocumentAssets assets;
+    QSignalSpy arrived(&assets, &DocumentAssets::assetArrived);
+    const auto request = [&] {
+        switch (Kind(kind)) {
+        case Kind::Environment:
+            return assets.environment(name) != nullptr;
+        case Kind::Mesh:
+            return assets.mesh(name) != nullptr;
+        case Kind::Map:
+            return assets.map(name) != nullptr;
+        }
+        return false;
+    };
+    // Three views ask before it arrives: one load.
+    for (int view = 0; view < 3; ++view)
+        QVERIFY(!request());
+    QVERIFY(assets.isLoading(Kind(kind), name));
+    QCOMPARE(assets.pendingLoads(), 1);
+    assets.waitForLoads();
+    QCOMPARE(arrived.count(), 1);
+    QVERIFY(!assets.isLoading(Kind(kind), name));
+    QVERIFY2(request(), assets.problem(Kind(kind), name).c_str());
+    QVERIFY(assets.problem(Kind(kind), name).empty());
+    QCOMPARE(assets.loads(Kind(kind)), 1);
+    if (Kind(kind) == Kind::Environment)
+        QCOMPARE(assets.environment(name)->image().at(3, 3).g, 0.25f);
+    if (Kind(kind) == Kind::Mesh)
+        QVERIFY(assets.mesh(name)->key != 0 && !assets.mesh(name)->mesh->vertices.empty());
+}
+
+void DocumentAssetsUiTest::failureIsNamedAndNotRetriedUntilAsked()
+{
+    const std::string missing = path(QStringLiteral("night.exr")).toStdString();
+    DocumentAssets assets;
+    QVERIFY(!assets.environment(missing));
+    assets.waitForLoads();
+    QVERIFY(!assets.environment(missing));
+    QVERIFY(!assets.isLoading(Kind::Environment, missing));
+    const std::string problem = assets.problem(Kind::Environment, missing);
+    QVERIFY2(problem.find("night.exr") != std::string::npos, problem.c_str());
+    QCOMPARE(assets.loads(Kind::Environment), 1); // asked again: not tried again
+    // retry(): an explicit reload tries again (the file is there now).
+    QVERIFY(test::writeConstantExr(QString::fromStdString(missing), 0.5f));
+    assets.retry(Kind::Environment, missing);
+    QVERIFY(!assets.environment(missing));
+    assets.waitForLoads();
+    QVERIFY(assets.environment(missing));
+    QCOMPARE(assets.loads(Kind::Environment), 2);
+    QVERIFY(assets.problem(Kind::Environment, missing).empty());
+}
+
+void DocumentAssetsUiTest::changedFileLoadsAgainPreviousStandsIn()
+{
+    const QString file = path(QStringLiteral("changing.exr"));
+    QVERIFY(test::writeConstantExr(file, 0.25f));
+    const std::string name = file.toStdString();
+    DocumentAssets assets;
+    assets.environment(name);
+    assets.waitForLoads();
+    QCOMPARE(assets.environment(name)->image().at(0, 0).r, 0.25f);
+    QVERIFY(test::writeConstantExr(file, 0.75f));
+    QVERIFY(touch(file, 5));
+    // The previous version while the new one loads, then the new one.
+    const auto standIn = assets.environment(name);
+    QVERIFY(standIn);
+    QCOMPARE(standIn->image().at(0, 0).r, 0.25f);
+    QVERIFY(assets.isLoading(Kind::Environment, name));
+    assets.waitForLoads();
+    QCOMPARE(assets.environment(name)->image().at(0, 0).r, 0.75f);
+    QCOMPARE(assets.loads(Kind::Environment), 2);
+}
+
+void DocumentAssetsUiTest::entriesNoUserNamesAreDropped()
+{
+    DocumentAssets assets;
+    const int single = 0;
+    const int compare = 0;
+    for (const char* spec : {"uniform:0.1", "uniform:0.2", "uniform:0.3"})
+        QVERIFY(assets.environment(spec));
+    assets.setInUse(&compare, Kind::Environment, {"uniform:0.1", "uniform:0.2"}); // drops 0.3
+    assets.setInUse(&single, Kind::Environment, {"uniform:0.1"});
+    QCOMPARE(assets.loads(Kind::Environment), 3);
+    // Named by a user: kept (no new load); named by none: made again.
+    QVERIFY(assets.environment("uniform:0.1"));
+    QVERIFY(assets.environment("uniform:0.2"));
+    QCOMPARE(assets.loads(Kind::Environment), 3);
+    QVERIFY(assets.environment("uniform:0.3"));
+    QCOMPARE(assets.loads(Kind::Environment), 4);
+    // The Compare view goes: what only it named goes with it.
+    assets.setInUse(&single, Kind::Environment, {"uniform:0.1"});
+    assets.forgetUser(&compare);
+    QVERIFY(assets.environment("uniform:0.1"));
+    QCOMPARE(assets.loads(Kind::Environment), 4);
+    QVERIFY(assets.environment("uniform:0.2"));
+    QCOMPARE(assets.loads(Kind::Environment), 5);
+}
+
+QTEST_GUILESS_MAIN(DocumentAssetsUiTest)
+#include "DocumentAssetsUiTest.moc"

@@ -1,0 +1,38 @@
+#include "ui/ViewShareGroup.h"
+
+#include "render/IblPrecompute.h"
+#include "render/TextureCache.h"
+
+#include <QOpenGLContext>
+#include <QOpenGLContextGroup>
+
+namespace facet {
+
+ViewShareGroup::ViewShareGroup(bool useDiskCache)
+    : m_useDiskCache(useDiskCache)
+{
+}
+
+ViewShareGroup::Resources ViewShareGroup::acquire()
+{
+    QOpenGLContext* context = QOpenGLContext::currentContext();
+    QOpenGLContextGroup* group = context ? context->shareGroup() : nullptr;
+    Resources resources;
+    if (group && group == m_group) {
+        resources.precompute = m_precompute.lock();
+        resources.textures = m_textures.lock();
+    }
+    resources.shared = resources.precompute && resources.textures;
+    if (resources.shared)
+        return resources;
+    // The first view, or the others have gone (their GL objects with them): make new ones.
+    resources.precompute = std::make_shared<IblPrecompute>(QString(), m_useDiskCache);
+    resources.textures = std::make_shared<TextureCache>();
+    m_group = group;
+    m_precompute = resources.precompute;
+    m_textures = resources.textures;
+    ++m_made;
+    return resources;
+}
+
+} // namespace facet
