@@ -8,6 +8,7 @@
 
 #include <QtGlobal>
 
+#include <algorithm>
 #include <bit>
 #include <chrono>
 #include <cmath>
@@ -363,6 +364,16 @@ std::shared_ptr<const DfgLut> IblPrecompute::dfgTable(
             warn(storeError);
     }
     return finish(lut);
+}
+
+bool IblPrecompute::holds(const Environment& environment, const IblSettings& requested) const
+{
+    if (environment.isEmpty())
+        return false;
+    const IblSettings settings = requested.forImage(environment.image().width());
+    const std::uint64_t key = IblDiskCache::key(environment.contentHash(), settings.hash());
+    return std::any_of(
+        m_memory.begin(), m_memory.end(), [key](const auto& entry) { return entry.first == key; });
 }
 
 std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& environment, const IblSettings& requested,

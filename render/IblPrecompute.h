@@ -94,6 +94,9 @@ public:
     void clearMemoryCache();
     // The memory cache: how many IBL sets it holds and their GPU bytes (IblTextures::bytes()).
     std::size_t memoryEntries() const { return m_memory.size(); }
+    // Whether prepare(environment, settings) would be a memory hit (no GL work, no disk read):
+    // a view can then draw at once instead of announcing a precompute.
+    bool holds(const Environment& environment, const IblSettings& settings) const;
     std::size_t memoryBytes() const;
     // The bound the memory cache keeps to (kMemoryBudgetBytes unless set; tests set small ones).
     // The set just prepared always stays, whatever its size.

@@ -153,6 +153,7 @@ void FrameRendererGLTest::environmentSharedByViewsIsPrecomputedOnce()
     QVERIFY2(assets, error.c_str());
     int passes = 0;
     int memoryHits = 0;
+    QVERIFY(!precompute->holds(assets->environment, settings));
     for (int view = 0; view < 4; ++view) {
         FrameRenderer frames(precompute);
         IblStats stats;
@@ -167,6 +168,7 @@ void FrameRendererGLTest::environmentSharedByViewsIsPrecomputedOnce()
     // equirect->cube, prefilter, irradiance and one DFG table, once; three memory hits.
     QCOMPARE(passes, 4);
     QCOMPARE(memoryHits, 3);
+    QVERIFY(precompute->holds(assets->environment, settings)); // a fifth view would draw at once
     QCOMPARE(int(precompute->memoryEntries()), 1);
 
     const Project other = sphereIn("uniform:0.25");

@@ -3,6 +3,7 @@
 #include "core/Project.h"
 #include "ui/CompareController.h"
 #include "ui/Document.h"
+#include "ui/EnvironmentDock.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -18,6 +19,7 @@ CompareActions::CompareActions(
     Document* document, CompareController* controller, QStackedWidget* central, QWidget* parent)
     : QObject(parent)
     , m_document(document)
+    , m_controller(controller)
     , m_central(central)
     , m_menu(new QMenu(tr("&Compare"), parent))
     , m_toolBar(new QToolBar(tr("Compare"), parent))
@@ -55,6 +57,14 @@ CompareActions::CompareActions(
     m_swap->setObjectName(QStringLiteral("compareSwapAction"));
     m_swap->setShortcut(QKeySequence(Qt::ALT | Qt::Key_S));
     m_toolBar->addAction(m_swap);
+    m_compareSelected
+        = m_menu->addAction(tr("Compare Se&lected Environments"), this, &CompareActions::compareSelected);
+    m_compareSelected->setObjectName(QStringLiteral("compareSelectedAction"));
+    m_compareSelected->setStatusTip(
+        tr("Show the environments selected in the Environment Library (2 to %1) in the "
+           "environment grid")
+            .arg(EnvironmentGrid::kMaxCells));
+    m_compareSelected->setEnabled(false);
     connect(m_document, &Document::changed, this, &CompareActions::sync);
     sync();
 }
@@ -74,6 +84,36 @@ void CompareActions::sync()
         action->setChecked(true);
     m_swap->setEnabled(mode == CompareMode::AB);
     m_central->setCurrentIndex(mode == CompareMode::Single ? 0 : 1);
+}
+
+void CompareActions::setEnvironmentDock(EnvironmentDock* dock)
+{
+    m_environmentDock = dock;
+    QListWidget* library = dock->library();
+    library->setContextMenuPolicy(Qt::ActionsContextMenu);
+    library->addAction(m_compareSelected);
+    connect(dock, &EnvironmentDock::selectionChanged, this, &CompareActions::syncCompareSelected);
+    syncCompareSelected(int(dock->selectedSources().size()));
+}
+
+void CompareActions::syncCompareSelected(int selectedCount)
+{
+    m_compareSelected->setEnabled(selectedCount >= EnvironmentGrid::kMinCells);
+}
+
+void CompareActions::compareSelected()
+{
+    if (!m_environmentDock)
+        return;
+    const QStringList selected = m_environmentDock->selectedSources();
+    std::vector<std::string> sources;
+    for (const QString& source : selected)
+        sources.push_back(source.toStdString());
+    const int cells = m_controller->compareEnvironments(sources);
+    if (cells > 0 && cells < int(selected.size()))
+        Q_EMIT message(tr("Comparing the first %1 of the %2 selected environments: the grid holds at most %1")
+                           .arg(cells)
+                           .arg(selected.size()));
 }
 
 EnvironmentChoices CompareActions::choicesOf(const QListWidget* library)

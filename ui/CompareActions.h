@@ -1,8 +1,10 @@
 #pragma once
 // The Compare menu and toolbar (not a widget): Single / Environment Grid / A-B / Wedge as one
 // exclusive group that follows the project's compare mode (undo, open and promote included), and
-// Swap A and B; the central area shows the single view or the Compare view (a QStackedWidget) as
-// the mode says. Choosing a mode is an undoable edit of the layout (CompareController::setMode).
+// Swap A and B, and Compare Selected Environments (the Environment dock's selected entries become
+// the environment grid's cells; also in the dock's library context menu); the central area shows the single
+// view or the Compare view (a QStackedWidget) as the mode says. Choosing a mode is an undoable edit of the
+// layout (CompareController::setMode).
 
 #include "core/CompareLayout.h"
 #include "ui/CompareMenus.h"
@@ -21,6 +23,7 @@ namespace facet {
 
 class CompareController;
 class Document;
+class EnvironmentDock;
 
 class CompareActions : public QObject {
     Q_OBJECT
@@ -34,19 +37,37 @@ public:
     QToolBar* toolBar() const { return m_toolBar; }
     QAction* modeAction(CompareMode mode) const;
     QAction* swapAction() const { return m_swap; }
+    QAction* compareSelectedAction() const { return m_compareSelected; }
+
+    // Wires Compare Selected Environments to `dock`'s library: enabled while at least
+    // EnvironmentGrid::kMinCells entries are selected; also in the library's context menu.
+    void setEnvironmentDock(EnvironmentDock* dock);
+    // The dock's selected environments (EnvironmentDock::selectedSources, in selection order)
+    // become the grid's cells and the mode the environment grid, one undo step
+    // (CompareController::compareEnvironments). More than EnvironmentGrid::kMaxCells: the first
+    // ones, and message() says so.
+    void compareSelected();
 
     // The entries of the Environment dock's library (label, source) for the cells' menus.
     static EnvironmentChoices choicesOf(const QListWidget* library);
 
+Q_SIGNALS:
+    // For the status bar.
+    void message(const QString& text);
+
 private:
     void sync();
+    void syncCompareSelected(int selectedCount);
 
     Document* m_document;
+    CompareController* m_controller;
+    EnvironmentDock* m_environmentDock = nullptr;
     QStackedWidget* m_central;
     QMenu* m_menu;
     QToolBar* m_toolBar;
     QActionGroup* m_modes;
     QAction* m_swap;
+    QAction* m_compareSelected;
 };
 
 } // namespace facet

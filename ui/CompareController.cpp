@@ -131,6 +131,27 @@ void CompareController::setCellCamera(std::size_t index, const Camera& camera)
     push(after, tr("Cell Camera"), kCellCameraMergeId);
 }
 
+int CompareController::compareEnvironments(const std::vector<std::string>& sources)
+{
+    const std::size_t count = std::min(sources.size(), std::size_t(EnvironmentGrid::kMaxCells));
+    if (int(count) < EnvironmentGrid::kMinCells)
+        return 0;
+    Project after = m_document->project();
+    std::vector<EnvironmentCell>& cells = after.compare.environments.cells;
+    cells.clear();
+    for (std::size_t i = 0; i < count; ++i) {
+        if (sources[i].empty())
+            return 0;
+        EnvironmentCell cell; // rotation and exposure follow all, camera linked
+        cell.source = sources[i];
+        cell.camera = after.camera; // where the cell starts if it is unlinked later (addCell's rule)
+        cells.push_back(std::move(cell));
+    }
+    after.compare.mode = CompareMode::Environments;
+    push(after, tr("Compare Selected Environments"));
+    return int(count);
+}
+
 void CompareController::promoteCell(std::size_t index)
 {
     const Project& project = m_document->project();

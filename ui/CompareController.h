@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace facet {
 
@@ -57,6 +58,11 @@ public:
     // The camera of unlinked cell `index` (an orbit or dolly in that cell); `interactive`: part
     // of a drag (merged into one step between Document::beginInteractiveEdit and end).
     void setCellCamera(std::size_t index, const Camera& camera);
+    // Compare > Compare Selected Environments: the grid's cells become `sources` in that order
+    // (the first EnvironmentGrid::kMaxCells of them), each with the cell defaults (rotation and
+    // exposure follow all, camera linked), and the mode environment grid: one undo step. Returns
+    // how many cells it made; 0 (and no step) for fewer than EnvironmentGrid::kMinCells sources.
+    int compareEnvironments(const std::vector<std::string>& sources);
     // Makes cell `index` the single view (core promoteCell: environment, exposure, camera; mode
     // single). One undo step.
     void promoteCell(std::size_t index);

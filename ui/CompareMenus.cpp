@@ -4,12 +4,12 @@
 #include "core/Project.h"
 #include "ui/CompareCells.h"
 #include "ui/CompareController.h"
+#include "ui/WedgeAxesDialog.h"
 
 #include <QAction>
 #include <QCoreApplication>
 #include <QInputDialog>
 #include <QMenu>
-#include <QMessageBox>
 
 namespace facet {
 
@@ -125,22 +125,9 @@ void fillAB(QMenu& menu, CompareController& controller, const Project& project)
 void fillWedge(QMenu& menu, CompareController& controller, const Project& project, QWidget* dialogParent)
 {
     const WedgeLayout wedge = project.compare.wedge;
-    menu.addAction(tr("Wedge &Axes…"), &controller, [&controller, dialogParent, wedge] {
-        bool ok = false;
-        const QString rows = QInputDialog::getText(dialogParent, tr("Wedge Rows"),
-            tr("Rows (parameter=values, e.g. roughness=0,0.25,0.5,0.75,1):"), QLineEdit::Normal,
-            QString::fromStdString(wedge.rows.toString()), &ok);
-        if (!ok)
-            return;
-        const QString columns = QInputDialog::getText(dialogParent, tr("Wedge Columns"),
-            tr("Columns (empty: one column):"), QLineEdit::Normal,
-            wedge.columns ? QString::fromStdString(wedge.columns->toString()) : QString(), &ok);
-        if (!ok)
-            return;
-        std::string error;
-        if (!controller.setWedge(rows.trimmed().toStdString(), columns.trimmed().toStdString(), &error))
-            QMessageBox::warning(dialogParent, tr("Wedge Axes"), QString::fromStdString(error));
-    });
+    QAction* axes = menu.addAction(tr("Wedge &Axes…"), &controller,
+        [&controller, dialogParent, wedge] { WedgeAxesDialog::edit(controller, wedge, dialogParent); });
+    axes->setObjectName(QStringLiteral("wedgeAxesAction"));
 }
 
 } // namespace

@@ -6,7 +6,7 @@
 //               Promote to Single View
 //   A/B         B ▸ (materials of the project, Snapshot of Current, presets), Split / Side by
 //               Side, Swap A and B
-//   wedge       Wedge Axes… (rows and columns as "roughness=0,0.5,1")
+//   wedge       Wedge Axes… (ui/WedgeAxesDialog.h: a parameter and values per axis)
 
 #include <QString>
 

@@ -3,6 +3,7 @@
 
 #include "ui/CompareRenderer.h"
 
+#include "core/ToneMap.h"
 #include "render/IblSettings.h"
 #include "render/Renderer.h"
 #include "render/SceneFromProject.h"
@@ -84,22 +85,50 @@ CompareRenderer::CellKey CompareRenderer::keyOf(const CompareCellDraw& cell, dou
     return key;
 }
 
+float CompareRenderer::displayGrey(float linear)
+{
+    return float(tonemap::linearToSrgb(double(linear)));
+}
+
 void CompareRenderer::fill(const FrameRect& rect, float grey)
 {
     m_composite->bind();
     glEnable(GL_SCISSOR_TEST);
     glScissor(rect.x, rect.y, rect.width, rect.height);
-    glClearColor(grey, grey, grey, 1.0f);
+    const float value = displayGrey(grey);
+    glClearColor(value, value, value, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     glDisable(GL_SCISSOR_TEST);
+}
+
+std::pair<const void*, std::uint64_t> CompareRenderer::lightingKeyOf(const CompareCellDraw& cell)
+{
+    return std::make_pair(
+        static_cast<const void*>(&cell.assets.environment.image()), iblSettingsOf(cell.project).hash());
+}
+
+bool CompareRenderer::needsLighting(const CompareCellDraw& cell) const
+{
+    // A set the shared precompute holds (the single view's environment, a grid shown before) is
+    // a memory hit: nothing to announce.
+    return !cell.assets.environment.isEmpty() && !m_lighting.count(lightingKeyOf(cell))
+        && !m_frames->precompute().holds(cell.assets.environment, iblSettingsOf(cell.project));
+}
+
+int CompareRenderer::lightingToPrepare(const std::vector<CompareCellDraw>& cells) const
+{
+    std::set<std::pair<const void*, std::uint64_t>> keys;
+    for (const CompareCellDraw& cell : cells)
+        if (needsLighting(cell))
+            keys.insert(lightingKeyOf(cell));
+    return int(keys.size());
 }
 
 std::shared_ptr<const IblTextures> CompareRenderer::lightingFor(
     const CompareCellDraw& cell, std::string* error)
 {
     const IblSettings settings = iblSettingsOf(cell.project);
-    const auto key
-        = std::make_pair(static_cast<const void*>(&cell.assets.environment.image()), settings.hash());
+    const auto key = lightingKeyOf(cell);
     if (const auto found = m_lighting.find(key); found != m_lighting.end())
         return found->second;
     IblStats stats;
@@ -184,10 +213,22 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
         }
         m_drawn.clear();
     }
-    if (m_drawn.size() != cells.size()) {
-        // Another set of cells (a mode switch, a cell added): the gaps between them are new too.
+    std::vector<FrameRect> rects;
+    rects.reserve(cells.size());
+    for (const CompareCellDraw& cell : cells)
+        rects.push_back(cell.rect);
+    const auto sameRect = [](const FrameRect& a, const FrameRect& b) {
+        return a.x == b.x && a.y == b.y && a.width == b.width && a.height == b.height;
+    };
+    if (m_drawn.size() != cells.size()
+        || !std::equal(rects.begin(), rects.end(), m_rects.begin(), m_rects.end(), sameRect)) {
+        // Another set of cells or another arrangement of them (a mode switch, a cell added, the
+        // wedge's axis margins): the gaps and the free part of the grid are new too, and nothing
+        // drawn before may show through them.
         m_drawn.assign(cells.size(), std::nullopt);
-        m_composite->clear(glm::vec4(kGapGrey, kGapGrey, kGapGrey, 1.0f));
+        const float gap = displayGrey(kGapGrey);
+        m_composite->clear(glm::vec4(gap, gap, gap, 1.0f));
+        m_rects = std::move(rects);
     }
     const bool reduced = scale < 1.0;
     m_frames->textureCache().setMaxAnisotropy(TextureFiltering::anisotropyFor(m_glInfo, reduced));

@@ -62,9 +62,14 @@ struct CompareFrameStats {
 
 class CompareRenderer {
 public:
-    // Gap between cells and the loading fill (linear values; the composite is shown as is).
+    // Gap between cells (and the free part of a grid whose last row is short) and the loading
+    // fill, as linear values. The composite holds display-encoded pixels (FrameRenderer's output)
+    // and is shown as is, so they are written sRGB-encoded (displayGrey): 0.06 shows as 69 of 255,
+    // 0.18 as 118; written raw they showed as 15 and 46, a black hole where a grid has no cell.
     static constexpr float kGapGrey = 0.06f;
     static constexpr float kLoadingGrey = 0.18f;
+    // The sRGB encoding of linear grey `linear` (core/ToneMap.h tonemap::linearToSrgb): what a fill writes.
+    static float displayGrey(float linear);
 
     // Needs the context current. `cacheDirectory` empty: the IBL disk cache's default folder.
     explicit CompareRenderer(const QString& cacheDirectory = {}, bool useDiskCache = true);
@@ -87,6 +92,13 @@ public:
     // on the GPU: a decoded copy the single view released (a stand-in) can then be drawn as is.
     bool textureReady(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace) const;
 
+    // Whether drawing `cell` would prepare lighting (look up or precompute an IBL set) this
+    // renderer does not hold yet: its environment has loaded and no cell drawn since showed it
+    // at its IBL quality. lightingToPrepare: how many distinct sets `cells` need so (one per
+    // environment image and quality, however many cells show it).
+    bool needsLighting(const CompareCellDraw& cell) const;
+    int lightingToPrepare(const std::vector<CompareCellDraw>& cells) const;
+
     const CompareFrameStats& lastFrame() const { return m_stats; }
     FrameRenderer& frames() { return *m_frames; }
 
@@ -105,6 +117,7 @@ private:
         bool operator==(const CellKey&) const = default;
     };
     static CellKey keyOf(const CompareCellDraw& cell, double scale);
+    static std::pair<const void*, std::uint64_t> lightingKeyOf(const CompareCellDraw& cell);
     bool drawCell(const CompareCellDraw& cell, double scale, std::string* error);
     std::shared_ptr<const IblTextures> lightingFor(const CompareCellDraw& cell, std::string* error);
     void fill(const FrameRect& rect, float grey);
@@ -113,6 +126,7 @@ private:
     std::optional<Framebuffer> m_composite;
     std::optional<Framebuffer> m_scratch;
     std::vector<std::optional<CellKey>> m_drawn; // by cell index
+    std::vector<FrameRect> m_rects; // the cells' rectangles in the last paint
     // The IBL sets of the environments shown, by pixel identity and IBL quality.
     std::map<std::pair<const void*, std::uint64_t>, std::shared_ptr<const IblTextures>> m_lighting;
     CompareFrameStats m_stats;

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <utility>
 
 namespace facet {
 
@@ -138,6 +139,8 @@ void CompareView::markInteractive()
 
 bool CompareView::isLoading() const
 {
+    if (m_lightingAnnounced > 0)
+        return true;
     for (const CompareCell& cell : m_cells)
         if (m_assets->isLoading(DocumentAssets::Kind::Environment, cell.project.environment.source))
             return true;
@@ -375,18 +378,32 @@ void CompareView::paintGL()
 {
     if (!m_renderer || m_cells.empty()) {
         QOpenGLFunctions* gl = context()->functions();
-        gl->glClearColor(
-            CompareRenderer::kGapGrey, CompareRenderer::kGapGrey, CompareRenderer::kGapGrey, 1.0f);
+        const float gap = CompareRenderer::displayGrey(CompareRenderer::kGapGrey);
+        gl->glClearColor(gap, gap, gap, 1.0f);
         gl->glClear(GL_COLOR_BUFFER_BIT);
         return;
     }
     const qreal ratio = devicePixelRatioF();
+    std::vector<CompareCellDraw> draws = cellDraws();
+    // Lighting to prepare is announced, and prepared in a later frame: a precompute blocks this
+    // thread, and the status bar can only show the message once this frame has returned. Until
+    // then its cells wait in the loading grey.
+    const bool announcing = m_lightingAnnounced == 0 && m_renderer->lightingToPrepare(draws) > 0;
+    if (announcing) {
+        m_lightingAnnounced = m_renderer->lightingToPrepare(draws);
+        for (CompareCellDraw& draw : draws)
+            if (m_renderer->needsLighting(draw))
+                draw.assets.environment = Environment {};
+        QTimer::singleShot(kAnnounceDelayMs, this, [this] { update(); });
+        Q_EMIT lightingPreparing(m_lightingAnnounced);
+    }
     std::string error;
-    const bool ok
-        = m_renderer->paint(cellDraws(), defaultFramebufferObject(), int(std::lround(width() * ratio)),
-            int(std::lround(height() * ratio)), m_previewing ? kPreviewScale : 1.0, &error);
+    const bool ok = m_renderer->paint(draws, defaultFramebufferObject(), int(std::lround(width() * ratio)),
+        int(std::lround(height() * ratio)), m_previewing ? kPreviewScale : 1.0, &error);
     m_stats = m_renderer->lastFrame();
     m_lastError = ok ? QString() : QString::fromStdString(error);
+    if (!announcing && m_lightingAnnounced > 0)
+        Q_EMIT lightingReady(std::exchange(m_lightingAnnounced, 0), m_stats.iblMs);
     Q_EMIT frameRendered();
 }
 

@@ -5,6 +5,10 @@
 // Labels (the environment's name, A and B, the wedge's values on its axes) are child labels over
 // the cells; the A/B divider is a thin line the mouse drags.
 //
+// Lighting no cell had yet (an IBL precompute: a few hundred ms each on llvmpipe) is announced
+// first (lightingPreparing: the status bar says so, the cells wait in the loading grey) and
+// prepared in a frame kAnnounceDelayMs later, once the window has shown the message.
+//
 // Like the single view (ViewportWidget) it renders on demand only (an idle window draws nothing),
 // draws kPreviewScale frames while something is dragged and one full frame kRefineDelayMs after,
 // and keeps the project's view settings (debug view, tone mapper, OCIO, exposure): each cell is a
@@ -46,6 +50,7 @@ public:
     static constexpr int kRefineDelayMs = 250;
     static constexpr int kGapPixels = 2; // between cells
     static constexpr int kDividerGrabPixels = 6; // a press this close to the divider drags it
+    static constexpr int kAnnounceDelayMs = 40; // lightingPreparing -> the frame that prepares it
 
     CompareView(
         Document* document, SceneController* scene, CompareController* controller, QWidget* parent = nullptr);
@@ -70,7 +75,7 @@ public:
     const CompareFrameStats& lastFrameStats() const { return m_stats; }
     std::uint64_t frameCount() const { return m_stats.frameNumber; }
     const QString& lastError() const { return m_lastError; }
-    // Whether any cell waits for its environment.
+    // Whether any cell waits for its environment or its lighting.
     bool isLoading() const;
 
     // An interaction is under way: draw previews, refine kRefineDelayMs after the last call.
@@ -87,6 +92,11 @@ public:
 
 Q_SIGNALS:
     void frameRendered();
+    // `environments` environments need lighting this view did not hold (one per image and IBL
+    // quality); the frame that prepares it follows kAnnounceDelayMs later.
+    void lightingPreparing(int environments);
+    // It was prepared in `milliseconds` (lookups, precomputes and tables; under 1 ms: from a cache).
+    void lightingReady(int environments, double milliseconds);
 
 protected:
     void initializeGL() override;
@@ -133,6 +143,7 @@ private:
     QTimer m_refineTimer;
     bool m_previewing = false;
     bool m_useDiskCache = true;
+    int m_lightingAnnounced = 0; // environments announced by lightingPreparing, not ready yet
     enum class Drag { None, Orbit, Divider } m_drag = Drag::None;
     int m_dragCell = -1;
     bool m_dragOpenedEdit = false;

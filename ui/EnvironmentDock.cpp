@@ -145,7 +145,8 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
     // item the view asked first, and could cut every label to one line).
     m_library->setUniformItemSizes(false);
     m_library->setWordWrap(true);
-    m_library->setSelectionMode(QAbstractItemView::SingleSelection);
+    // Several entries for Compare Selected Environments; a plain click still picks one.
+    m_library->setSelectionMode(QAbstractItemView::ExtendedSelection);
     m_library->setDragDropMode(QAbstractItemView::DragOnly); // onto the Compare view's cells
     m_rotation->setObjectName(QStringLiteral("environmentRotationSlider"));
     m_rotation->setSuffix(QStringLiteral("°"));
@@ -210,8 +211,9 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
         if (!file.isEmpty())
             chooseEnvironment(file);
     });
-    connect(m_library, &QListWidget::currentItemChanged, this,
-        [this](QListWidgetItem* item) { onItemActivated(item); });
+    // Not currentItemChanged: a Ctrl-click makes the clicked entry current before it joins the
+    // selection, and adding an entry to a selection must not relight the view.
+    connect(m_library, &QListWidget::itemSelectionChanged, this, &EnvironmentDock::onSelectionChanged);
     connect(m_thumbnails, &ThumbnailLoader::ready, this,
         [this](const QString& key, const QImage& image, QSize, const QString& error, double ms) {
             m_thumbnailMs += ms;
@@ -347,8 +349,45 @@ bool EnvironmentDock::chooseEnvironment(const QString& source)
         const QSignalBlocker blocker(m_library);
         item = addEntry(spec);
     }
-    m_library->setCurrentItem(item); // sets the document through onItemActivated
+    m_library->setCurrentItem(
+        item, QItemSelectionModel::ClearAndSelect); // sets the document (onSelectionChanged)
     return true;
+}
+
+QStringList EnvironmentDock::selectedSources() const
+{
+    // In the order of selection; an entry the dock selected itself with signals blocked (the
+    // document's environment changed) is not in m_selectionOrder and follows in the list's order.
+    QStringList selected;
+    for (int row = 0; row < m_library->count(); ++row)
+        if (m_library->item(row)->isSelected())
+            selected.append(m_library->item(row)->data(kSourceRole).toString());
+    QStringList sources;
+    for (const QString& source : m_selectionOrder)
+        if (selected.contains(source))
+            sources.append(source);
+    for (const QString& source : selected)
+        if (!sources.contains(source))
+            sources.append(source);
+    return sources;
+}
+
+void EnvironmentDock::onSelectionChanged()
+{
+    // Entries that left the selection go, new ones join at the end (a Shift range as a block,
+    // in the list's order).
+    const QStringList selected = selectedSources();
+    m_selectionOrder.removeIf([&selected](const QString& source) { return !selected.contains(source); });
+    for (const QString& source : selected)
+        if (!m_selectionOrder.contains(source))
+            m_selectionOrder.append(source);
+    // A plain click (or the arrow keys) selects the current entry alone: it becomes the
+    // environment. A Ctrl-click that takes an entry out leaves one other selected, but the
+    // current entry is the one taken out: that changes nothing.
+    const QList<QListWidgetItem*> items = m_library->selectedItems();
+    if (items.size() == 1 && items.front() == m_library->currentItem())
+        onItemActivated(items.front());
+    Q_EMIT selectionChanged(int(items.size()));
 }
 
 void EnvironmentDock::onItemActivated(QListWidgetItem* item)
@@ -375,7 +414,8 @@ void EnvironmentDock::onDocumentChanged(DocumentChanges changes)
                 item = m_library->item(row);
         if (!item && !source.startsWith(QStringLiteral("uniform:")))
             item = addEntry(source);
-        m_library->setCurrentItem(item);
+        m_library->setCurrentItem(item, QItemSelectionModel::ClearAndSelect);
+        Q_EMIT selectionChanged(int(m_library->selectedItems().size())); // the list's own signals are blocked
     }
     m_rotation->setValue(project.environment.rotationDegrees);
     m_exposure->setValue(

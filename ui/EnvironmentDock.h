@@ -4,7 +4,9 @@
 // (folders added with Add Folder…, each named once: core/AssetLibrary.h), so that projects refer
 // to them by library name. Labels say where each comes from ("Studio (built-in)", "Studio (CC0
 // sample)", "Loft (my-hdris)"), tooltips give the file and how projects store it. Thumbnails are
-// made off the GUI thread (ThumbnailLoader). Choosing one relights the viewport (one undo step).
+// made off the GUI thread (ThumbnailLoader). Choosing one relights the viewport (one undo step);
+// Ctrl- or Shift-clicking selects several without relighting, for Compare > Compare Selected
+// Environments (ui/CompareActions.h), which reads selectedSources().
 // Below: rotation, intensity in EV (stored as the linear intensity 2^EV), the background
 // (environment, blurred by a roughness, or a solid colour) and the IBL quality preset; a busy bar
 // and the lighting's status (ui/WindowMessages.h).
@@ -46,6 +48,9 @@ public:
     bool addFolder(const QString& folder);
     // Selects the library entry of `source` (an environment spec) and sets it on the document.
     bool chooseEnvironment(const QString& source);
+    // The sources of the selected entries in the order they were selected (a Shift range in
+    // the list's order).
+    QStringList selectedSources() const;
     // Thumbnail jobs still running, and the time the finished ones took in all (ms).
     int pendingThumbnails() const;
     double thumbnailMilliseconds() const { return m_thumbnailMs; }
@@ -56,12 +61,15 @@ public Q_SLOTS:
 
 Q_SIGNALS:
     void message(const QString& text);
+    // The library's selection changed; `count` entries are selected.
+    void selectionChanged(int count);
 
 private:
     void rebuildLibrary();
     QListWidgetItem* addEntry(const QString& source);
     void onDocumentChanged(DocumentChanges changes);
     void onItemActivated(QListWidgetItem* item);
+    void onSelectionChanged();
 
     Document* m_document;
     ThumbnailLoader* m_thumbnails;
@@ -75,6 +83,7 @@ private:
     QLabel* m_status; // objectName "environmentStatus"
     QProgressBar* m_busy;
     double m_thumbnailMs = 0.0;
+    QStringList m_selectionOrder; // sources, oldest selection first
 };
 
 } // namespace facet

@@ -20,9 +20,9 @@
 #include "ui/TextureMapsDock.h"
 #include "ui/ViewDock.h"
 #include "ui/ViewShareGroup.h"
+#include "ui/ViewStatus.h"
 #include "ui/ViewportDropHandler.h"
 #include "ui/ViewportWidget.h"
-#include "ui/WindowMessages.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -101,25 +101,11 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     m_compareView->setEnvironmentChoices([this] { return CompareActions::choicesOf(m_environmentDock->library()); });
 
     connect(m_viewport, &ViewportWidget::glInitialized, this, &MainWindow::onViewportGLInitialized);
-    connect(m_viewport, &ViewportWidget::frameRendered, this, &MainWindow::onFrameRendered);
-    // The lighting's status, in the status bar and the Environment dock. When the project's
-    // environment could not be loaded, the lighting drawn is another one's: say so, never "ready".
-    connect(m_viewport, &ViewportWidget::iblPrecomputeStarting, this, [this](const QString& name) {
-        showStatusMessage(WindowMessages::lightingPreparing(name));
-        m_environmentDock->showLightingStatus(WindowMessages::lightingPreparing(name), true);
-    });
-    connect(m_viewport, &ViewportWidget::iblPrecomputeFinished, this, [this](const QString& name, double ms) {
-        const QString& problem = m_scene->environmentProblem();
-        const QString text = problem.isEmpty() ? WindowMessages::lightingReady(name, ms)
-                                               : WindowMessages::environmentNotUsed(problem, name);
-        showStatusMessage(text);
-        m_environmentDock->showLightingStatus(text, false);
-    });
-    connect(m_scene, &SceneController::environmentProblemChanged, this, [this](const QString& problem) {
-        if (!problem.isEmpty())
-            m_environmentDock->showLightingStatus(
-                WindowMessages::environmentNotUsed(problem, m_scene->environmentName()), false);
-    });
+    // Lighting progress and frame statistics of whichever view the central area shows.
+    auto* viewStatus = new ViewStatus(
+        statusBar(), m_frameStatsLabel, central, m_viewport, m_scene, m_compareView, m_environmentDock, this);
+    m_compareActions->setEnvironmentDock(m_environmentDock);
+    connect(m_compareActions, &CompareActions::message, viewStatus, &ViewStatus::showCompareNote);
     connect(m_scene, &SceneController::message, this, &MainWindow::showStatusMessage);
     connect(m_document, &Document::editRejected, this, &MainWindow::showStatusMessage);
     connect(m_files, &ProjectFileController::statusMessage, this, &MainWindow::showStatusMessage);
@@ -466,17 +452,6 @@ void MainWindow::onViewportGLInitialized()
     const QString problem = summary + QStringLiteral(" — ") + m_viewport->glProblem();
     m_glStatusLabel->setText(problem);
     qWarning().noquote() << "facet:" << problem;
-}
-
-void MainWindow::onFrameRendered()
-{
-    if (!m_viewport->lastError().isEmpty()) {
-        m_frameStatsLabel->setText(tr("frame failed"));
-        qWarning().noquote() << "facet:" << m_viewport->lastError();
-        showStatusMessage(WindowMessages::fromCore(m_viewport->lastError()));
-        return;
-    }
-    m_frameStatsLabel->setText(m_viewport->lastFrameStats().summary());
 }
 
 } // namespace facet

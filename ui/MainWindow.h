@@ -3,8 +3,9 @@
 // SceneController and the central ViewportWidget (the view), the CameraController (input), the
 // PartPicker (a click on a part chooses its material) and the ViewportDropHandler (assets dropped
 // on the view), the ProjectFileController (File menu) and the AutosaveController (recovery); menus, the
-// status bar, the dock layout and its QSettings. Panels are QDockWidgets made by their own controllers and
-// plugged in with addDock(); they edit the document() and never the renderer.
+// status bar (what it says about the views: ui/ViewStatus), the dock layout and its QSettings. Panels are
+// QDockWidgets made by their own controllers and plugged in with addDock(); they edit the document() and
+// never the renderer.
 
 #include <QByteArray>
 #include <QMainWindow>
@@ -94,7 +95,6 @@ private:
     void updateTitle();
     void showAbout();
     void onViewportGLInitialized();
-    void onFrameRendered();
 
     Document* m_document = nullptr;
     DocumentAssets* m_assets = nullptr; // environments, meshes and maps, shared by the views

@@ -240,6 +240,26 @@ QString WindowMessages::lightingReady(const QString& environmentName, double mil
         : tr("Lighting of %1 ready (from the cache)").arg(environmentName);
 }
 
+namespace {
+
+QString environments(int count)
+{
+    return count == 1 ? WindowMessages::tr("1 environment")
+                      : WindowMessages::tr("%1 environments").arg(count);
+}
+
+} // namespace
+
+QString WindowMessages::lightingPreparing(int environmentCount)
+{
+    return lightingPreparing(environments(environmentCount));
+}
+
+QString WindowMessages::lightingReady(int environmentCount, double milliseconds)
+{
+    return lightingReady(environments(environmentCount), milliseconds);
+}
+
 QString WindowMessages::environmentNotUsed(const QString& problem, const QString& shownEnvironmentName)
 {
     return tr("%1. Showing %2 instead.").arg(problem, shownEnvironmentName);

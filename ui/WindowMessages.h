@@ -35,6 +35,10 @@ public:
     static QString loading(const QString& fileName);
     // "Lighting of forest.exr ready (340 ms)", "(from the cache)" when it took no work.
     static QString lightingReady(const QString& environmentName, double milliseconds);
+    // The same for the Compare view, which lights `environmentCount` environments at once:
+    // "Preparing the lighting of 3 environments…", "Lighting of 3 environments ready (900 ms)".
+    static QString lightingPreparing(int environmentCount);
+    static QString lightingReady(int environmentCount, double milliseconds);
     // The project's environment could not be used: `problem` (window wording, naming the file)
     // and what is shown instead. Never claims that the project's environment is lit.
     static QString environmentNotUsed(const QString& problem, const QString& shownEnvironmentName);
