@@ -20,6 +20,7 @@
 #include "ui/SurfaceFormat.h"
 #include "ui/ViewportWidget.h"
 
+#include "CompareTestWindow.h"
 #include "TestSupport.h"
 
 #include <QAction>
@@ -96,7 +97,8 @@ private:
     Project baseProject() const;
 
     QTemporaryDir m_recovery;
-    std::unique_ptr<MainWindow> m_window;
+    CompareTestWindow m_compare;
+    MainWindow* m_window = nullptr;
     Document* m_document = nullptr;
     CompareView* m_view = nullptr;
     CompareController* m_controller = nullptr;
@@ -104,60 +106,32 @@ private:
 
 void CompareUiTest::initTestCase()
 {
-    QCoreApplication::setOrganizationName(QStringLiteral("FacetTests"));
-    m_window = std::make_unique<MainWindow>(nullptr, m_recovery.path());
-    m_document = m_window->document();
-    m_view = m_window->compareView();
-    m_controller = m_window->compareController();
-    QVERIFY(m_view && m_controller && m_window->compareActions());
-    m_view->setUseDiskCache(false); // counts precomputes, never touches the user's cache
-    m_window->resize(1100, 760);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QVERIFY(m_compare.open(m_recovery.path()));
+    m_window = m_compare.window();
+    m_document = m_compare.document();
+    m_view = m_compare.view();
+    m_controller = m_compare.controller();
 }
 
 void CompareUiTest::cleanupTestCase()
 {
-    m_window.reset();
+    m_compare.close();
+    m_window = nullptr;
 }
 
 Project CompareUiTest::baseProject() const
 {
-    // Draft IBL keeps llvmpipe's precomputes short; the camera is the reference view.
-    Project project = Project::defaultProject();
-    project.environment.quality = IblQuality::Draft;
-    project.view.msaaSamples = 1;
-    project.compare = CompareLayout::defaultFor(project);
-    return project;
+    return CompareTestWindow::baseProject();
 }
 
 void CompareUiTest::setProject(const Project& project)
 {
-    m_document->setProject(project, QStringLiteral("test"));
-    m_document->setCamera(project.camera);
-    QVERIFY(waitForSettledFrame());
+    QVERIFY(m_compare.setProject(project));
 }
 
 bool CompareUiTest::waitForSettledFrame(int timeoutMs)
 {
-    QElapsedTimer clock;
-    clock.start();
-    const auto stackIndex
-        = [this] { return static_cast<QStackedWidget*>(m_window->centralWidget())->currentIndex(); };
-    if (stackIndex() == 0)
-        return true; // the single view
-    while (clock.elapsed() < timeoutMs) {
-        QSignalSpy rendered(m_view, &CompareView::frameRendered);
-        m_view->update();
-        if (!rendered.wait(5000))
-            continue;
-        if (!m_view->isPreviewing() && !m_view->isLoading() && !m_view->lastFrameStats().reduced
-            && m_view->lastError().isEmpty())
-            return true;
-        QTest::qWait(50);
-    }
-    qWarning("no settled frame: %s", qPrintable(m_view->lastError()));
-    return false;
+    return m_compare.waitForSettledFrame(timeoutMs);
 }
 
 void CompareUiTest::cellsForEachMode_data()
