@@ -29,6 +29,7 @@
 #include "render/FrameRenderer.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblSettings.h"
+#include "render/Renderer.h"
 
 namespace facet {
 
@@ -478,6 +479,7 @@ int SheetCommand::run(const SheetRequest& request)
     IblStats total;
     int prepared = 0; // IBL sets not found in memory: each environment once
     double renderMs = 0.0;
+    int texturesUploaded = 0;
     {
         FrameRenderer frames;
         for (std::size_t i = 0; i < projects.size(); ++i) {
@@ -497,7 +499,12 @@ int SheetCommand::run(const SheetRequest& request)
             if (!image)
                 return fail(error);
             renderMs += std::chrono::duration<double, std::milli>(Clock::now() - cellStart).count();
+            texturesUploaded += frames.renderer().lastFrameStats().texturesUploaded;
             cells.push_back(std::move(*image));
+            // A row shows one material (or one wedge value of it): its textures serve the whole
+            // row and go after it, so a sheet of many textured materials holds one row's maps.
+            if ((i + 1) % grid.columns.size() == 0)
+                frames.finishFrame();
         }
         if (!frames.precompute().lastWarning().empty())
             std::fprintf(stderr, "facet sheet: %s\n", frames.precompute().lastWarning().c_str());
@@ -529,6 +536,7 @@ int SheetCommand::run(const SheetRequest& request)
                     "%d\nibl_cache_hits_disk: %d\nibl_ms: %.1f\n",
             cache.environmentLoads(), prepared, total.passesRun, total.cacheHitsMemory, total.cacheHitsDisk,
             total.msTotal);
+        std::printf("textures_uploaded: %d\n", texturesUploaded);
         std::printf("load_ms: %.1f\nrender_ms: %.1f (%.1f a cell)\ntotal_ms: %.1f\n",
             std::chrono::duration<double, std::milli>(loadedAt - start).count(), renderMs,
             renderMs / double(cells.size()), std::chrono::duration<double, std::milli>(Clock::now() - start).count());

@@ -15,6 +15,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <QFile>
+#include <QImage>
 #include <QTemporaryDir>
 #include <QtTest/QTest>
 
@@ -274,6 +275,37 @@ private Q_SLOTS:
         QVERIFY2(r.out.contains(QStringLiteral("ibl_environments_prepared: 3\n")), qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("ibl_cache_hits_memory: 3\n")), qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("total_ms: ")), qPrintable(r.out));
+    }
+
+    void texturesOfOneRowAtATime()
+    {
+        // Rows Red, Blue, Red of two textured materials over three environments: a row's cells
+        // share its maps (uploaded once a row, never once a cell), and a row's maps go when the
+        // row is done, so the third row uploads Red's map again (one row's maps resident).
+        for (const auto& [name, colour] :
+            {std::pair {"red.png", Qt::red}, std::pair {"blue.png", Qt::blue}}) {
+            QImage image(16, 16, QImage::Format_RGB32);
+            image.fill(colour);
+            QVERIFY(image.save(path(QString::fromLatin1(name))));
+        }
+        Project project = Project::defaultProject();
+        project.materials[0].name = "Red";
+        project.materials[0].map(MapSlot::BaseColor).path = path(QStringLiteral("red.png")).toStdString();
+        Material blue = project.materials[0];
+        blue.name = "Blue";
+        blue.map(MapSlot::BaseColor).path = path(QStringLiteral("blue.png")).toStdString();
+        project.materials.push_back(blue);
+        const QString file = path(QStringLiteral("textured.json"));
+        std::string error;
+        QVERIFY2(project.save(file.toStdString(), &error), error.c_str());
+        const Result r = runFacet({QStringLiteral("sheet"), QStringLiteral("--materials"),
+            file + QStringLiteral("#Red,") + file + QStringLiteral("#Blue,") + file + QStringLiteral("#Red"),
+            QStringLiteral("--envs"), QStringLiteral("uniform:1,uniform:0.5,uniform:0.25"),
+            QStringLiteral("--cell"), QStringLiteral("32x32"), QStringLiteral("--stats"),
+            QStringLiteral("-o"), path(QStringLiteral("textured.exr"))});
+        QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+        QVERIFY2(r.out.contains(QStringLiteral("cells: 9 (3 x 3)")), qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("textures_uploaded: 3\n")), qPrintable(r.out));
     }
 
     void refusals_data()
