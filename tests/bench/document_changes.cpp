@@ -3,18 +3,25 @@
 // the window's SceneController alone handling a map change that names its slot, against a change
 // of kinds alone (what every map edit cost before changes named their slots: every material's
 // files looked at on disk).
-// Each material has three files of its own. Checks nothing (SceneControllerUiTest and
-// DocumentChangesTest do).
+// Each material has three files of its own. Then choosing an environment file and a mesh file:
+// how long the edit keeps the GUI thread (the file loads on a worker, ui/DocumentAssets), how long
+// until it arrives, and the load alone (what the GUI thread waited for before the window's asset
+// cache). Checks nothing (SceneControllerUiTest, DocumentAssetsUiTest and DocumentChangesTest do).
 // Usage: document_changes [repeats]   (default 20; the median is printed)
 
+#include "core/AssetLibrary.h"
 #include "core/MapImageCache.h"
 #include "core/Project.h"
+#include "core/ProjectAssets.h"
 #include "ui/Document.h"
 #include "ui/DocumentChanges.h"
 #include "ui/SceneController.h"
 
+#include "TestSupport.h"
+
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QFileInfo>
 #include <QTemporaryDir>
 
 #include <OpenImageIO/imageio.h>
@@ -121,6 +128,60 @@ int main(int argc, char** argv)
         settle();
         std::printf("| %d | %d | %.1f us | %.1f us | %.1f us | %.1f us | %.1f us |\n", materials,
             materials * 3, between, roughness, named, sceneNamed, kindsAlone);
+    }
+
+    // Choosing a file: a fresh SceneController (its own asset cache, so nothing is cached) each
+    // time, the edit timed, then the wait for the arrival; and the load alone, synchronously.
+    std::printf("\n| file | edit returns (GUI thread) | arrives | load alone |\n|---|---|---|---|\n");
+    struct Choice {
+        std::string spec;
+        bool environment;
+    };
+    // A 4K equirect (4096 x 2048 floats) besides the installed 1K-2K ones: the size a studio HDRI
+    // comes in.
+    const std::string large = dir.filePath(QStringLiteral("large-4k.exr")).toStdString();
+    if (!test::writeConstantExr(QString::fromStdString(large), 0.5f, 4096))
+        return 1;
+    for (const Choice& choice : {Choice {large, true}, Choice {"library:installed/hdri/forest.exr", true},
+             Choice {"library:installed/hdri/night.exr", true},
+             Choice {"library:installed/models/suzi.glb", false},
+             Choice {"library:installed/models/bunny.glb", false}}) {
+        std::string error;
+        const std::string spec = choice.spec;
+        const std::optional<std::string> file = AssetLibrary::fileForSpec(spec, "bench", &error);
+        const bool available = file && QFileInfo::exists(QString::fromStdString(*file));
+        if (!available) {
+            std::printf("| %s | (not installed: %s) | | |\n", choice.spec.c_str(), error.c_str());
+            continue;
+        }
+        const int loads = std::max(3, repeats / 4);
+        std::vector<double> edits;
+        std::vector<double> arrivals;
+        for (int i = 0; i < loads; ++i) {
+            Document document;
+            SceneController scene(&document);
+            QElapsedTimer clock;
+            clock.start();
+            Project next = document.project();
+            (choice.environment ? next.environment.source : next.view.mesh) = spec;
+            document.setProject(next, QStringLiteral("Choose"));
+            edits.push_back(double(clock.nsecsElapsed()) / 1e6);
+            while (scene.pendingAssetLoads() > 0)
+                QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents, 5);
+            arrivals.push_back(double(clock.nsecsElapsed()) / 1e6);
+        }
+        const double alone = medianMicroseconds(loads, [&](int) {
+            std::string problem;
+            if (choice.environment)
+                Environment::fromSpec(spec, &problem);
+            else
+                loadViewMesh(spec, &problem);
+        }) / 1e3;
+        std::sort(edits.begin(), edits.end());
+        std::sort(arrivals.begin(), arrivals.end());
+        const std::string name = choice.spec == large ? "4096x2048 EXR (generated)" : choice.spec;
+        std::printf("| %s | %.1f ms | %.1f ms | %.1f ms |\n", name.c_str(), edits[edits.size() / 2],
+            arrivals[arrivals.size() / 2], alone);
     }
     return 0;
 }
