@@ -223,6 +223,11 @@ bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::str
     const int height = hdrTarget.height();
     const bool fullFloat = hdrTarget.format() == FramebufferFormat::RGBA32F;
     m_maxRadiance = fullFloat ? 3.0e38f : 65504.0f;
+    // Filtering across cube faces (the prefiltered levels, the irradiance cube, a blurred
+    // background) is state of the context, not of the textures: set here, in the context that
+    // draws. IblPrecompute sets it only when it runs a pass, and a view whose IBL sets are memory
+    // hits from a precompute it shares with another view's context never would (seams).
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     if (!ensureFixedPrograms(error))
         return false;
 

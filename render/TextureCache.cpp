@@ -198,6 +198,7 @@ TextureCache::Entry& TextureCache::begin(
 {
     Entry& entry = m_textures[key];
     entry.image = image;
+    entry.identity = image;
     entry.format = MapTextureFormat::of(image->layout(), image->sampleType(), colorSpace);
     entry.level = 0;
     entry.nextRow = 0;
@@ -364,6 +365,26 @@ void TextureCache::removeFromQueue(const Key& key)
     m_queue.erase(std::remove(m_queue.begin(), m_queue.end(), key), m_queue.end());
 }
 
+std::map<TextureCache::Key, TextureCache::Entry>::iterator TextureCache::findCurrent(
+    const Key& key, const std::shared_ptr<const MapImage>& image, const std::string& path)
+{
+    auto found = m_textures.find(key);
+    if (found != m_textures.end() && path.empty() && found->second.identity.lock() != image) {
+        if (found->second.texture)
+            glDeleteTextures(1, &found->second.texture);
+        removeFromQueue(key);
+        m_textures.erase(found);
+        return m_textures.end();
+    }
+    return found;
+}
+
+void TextureCache::touch(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace)
+{
+    if (const auto found = m_textures.find(Key {path, timestamp, int(colorSpace)}); found != m_textures.end())
+        found->second.used = true;
+}
+
 unsigned TextureCache::get(const std::shared_ptr<const MapImage>& image, const std::string& path,
     std::int64_t timestamp, ColorEncoding colorSpace, bool* uploaded)
 {
@@ -372,7 +393,7 @@ unsigned TextureCache::get(const std::shared_ptr<const MapImage>& image, const s
     if (!image || image->isEmpty())
         return 0;
     const Key key = keyFor(image, path, timestamp, colorSpace);
-    auto found = m_textures.find(key);
+    auto found = findCurrent(key, image, path);
     if (found == m_textures.end()) {
         if (!fits(*image, std::get<0>(key)) || !hasPixels(*image, std::get<0>(key)))
             return 0;
@@ -419,7 +440,7 @@ bool TextureCache::request(const std::shared_ptr<const MapImage>& image, const s
     if (!image || image->isEmpty())
         return false;
     const Key key = keyFor(image, path, timestamp, colorSpace);
-    auto found = m_textures.find(key);
+    auto found = findCurrent(key, image, path);
     if (found == m_textures.end()) {
         if (!fits(*image, std::get<0>(key)) || !hasPixels(*image, std::get<0>(key)))
             return false;

@@ -106,6 +106,9 @@ public:
     // Deletes textures neither used nor requested since the last call (call once per frame
     // after drawing); a queued upload that is no longer requested is dropped with it.
     void evictUnused();
+    // Counts the texture of `path` (that version, that colour space), if here, as used this
+    // frame without drawing it: a grid cell kept from an earlier frame still shows it.
+    void touch(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace);
     std::size_t size() const { return m_textures.size(); }
     void clear();
 
@@ -119,6 +122,9 @@ private:
         bool used = false;
         bool complete = false;
         std::shared_ptr<const MapImage> image; // until complete
+        // For an image without a path (keyed by its address): which image it was made from. Once
+        // that image is gone another can be made at its address, and the entry is stale.
+        std::weak_ptr<const MapImage> identity;
         MapTextureFormat format;
         std::vector<unsigned char> converted; // level 0 in the upload format, when it converts
         std::unique_ptr<MipChain> mips; // the levels, until complete
@@ -127,6 +133,9 @@ private:
     };
     static Key keyFor(const std::shared_ptr<const MapImage>& image, const std::string& path,
         std::int64_t timestamp, ColorEncoding colorSpace);
+    // The entry of `key`, or end() (a stale entry of a path-less image is deleted on the way).
+    std::map<Key, Entry>::iterator findCurrent(
+        const Key& key, const std::shared_ptr<const MapImage>& image, const std::string& path);
     bool fits(const MapImage& image, const std::string& path);
     bool hasPixels(const MapImage& image, const std::string& path); // a stand-in cannot be uploaded
     Entry& begin(const Key& key, const std::shared_ptr<const MapImage>& image, ColorEncoding colorSpace);

@@ -87,6 +87,7 @@ private Q_SLOTS:
     void compareEditsUndoAndRedo();
     void environmentInTwoCellsPreparedOnce();
     void singleAndCompareViewsShareLightingAndTextures();
+    void replacedTexturesGoWhileACellWaits();
     void idleCompareViewDrawsNothing();
     void libraryEntryDroppedOnCell();
 
@@ -554,6 +555,43 @@ void CompareUiTest::singleAndCompareViewsShareLightingAndTextures()
                            .arg(qGreen(centre))
                            .arg(qBlue(centre))));
     }
+}
+
+void CompareUiTest::replacedTexturesGoWhileACellWaits()
+{
+    // A grid of two cells, one of them an environment file that cannot be read (it waits in the
+    // loading grey for good). The current material's map is replaced: the old texture must go,
+    // although not every cell was drawn with its environment (it stayed on the GPU for as long
+    // as any cell waited), and the new one is uploaded once.
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const auto writeMap = [&dir](const char* name, QRgb colour) {
+        QImage image(32, 32, QImage::Format_RGB32);
+        image.fill(colour);
+        const QString path = dir.filePath(QString::fromLatin1(name));
+        return image.save(path) ? path.toStdString() : std::string();
+    };
+    const std::string first = writeMap("first.png", qRgb(200, 40, 40));
+    const std::string second = writeMap("second.png", qRgb(40, 200, 40));
+    QVERIFY(!first.empty() && !second.empty());
+    Project project = baseProject();
+    project.materials[0].map(MapSlot::BaseColor).path = first;
+    project.compare.mode = CompareMode::Environments;
+    project.compare.environments.cells
+        = {cellOf("uniform:0.53125"), cellOf(dir.filePath(QStringLiteral("missing.exr")).toStdString())};
+    setProject(project);
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->sceneController()->pendingMapLoads(), 0, 30000);
+    QVERIFY(waitForSettledFrame());
+    QCOMPARE(m_view->lastFrameStats().texturesResident, 1);
+
+    Project edited = m_document->project();
+    edited.materials[0].map(MapSlot::BaseColor).path = second;
+    const int uploadsBefore = m_view->lastFrameStats().texturesUploaded;
+    m_document->setProject(edited, QStringLiteral("New map"));
+    QTRY_COMPARE_WITH_TIMEOUT(m_window->sceneController()->pendingMapLoads(), 0, 30000);
+    QVERIFY(waitForSettledFrame());
+    QCOMPARE(m_view->lastFrameStats().texturesResident, 1); // the first map's texture went
+    QCOMPARE(m_view->lastFrameStats().texturesUploaded - uploadsBefore, 1);
 }
 
 void CompareUiTest::idleCompareViewDrawsNothing()

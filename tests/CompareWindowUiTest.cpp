@@ -455,14 +455,19 @@ void CompareWindowUiTest::compareViewReportsItsLighting()
     m_document->setProject(project, QStringLiteral("grid"));
     QVERIFY(waitForSettledFrame());
     disconnect(m_window->statusBar(), &QStatusBar::messageChanged, this, nullptr);
-    const QString preparing = WindowMessages::lightingPreparing(3);
-    QCOMPARE(preparing, QStringLiteral("Preparing the lighting of 3 environments…"));
+    // The views share one precompute, so a set another row's frames left in memory is a hit, not
+    // announced: the announcement names exactly the sets this grid computed (3, or fewer).
+    const int computed = m_view->lastFrameStats().iblComputed - computedBefore;
+    QVERIFY2(computed >= 2 && computed <= 3, qPrintable(QString::number(computed)));
+    QCOMPARE(
+        WindowMessages::lightingPreparing(3), QStringLiteral("Preparing the lighting of 3 environments…"));
+    const QString preparing = WindowMessages::lightingPreparing(computed);
     const qsizetype announced = messages.indexOf(preparing);
     QVERIFY2(announced >= 0, qPrintable(messages.join(QLatin1Char('|'))));
     // Said before the frame that precomputed, and replaced by the time once done.
     QCOMPARE(computedAtMessage[std::size_t(announced)], computedBefore);
-    QCOMPARE(m_view->lastFrameStats().iblComputed - computedBefore, 3);
-    QVERIFY2(m_window->statusMessage().startsWith(QStringLiteral("Lighting of 3 environments ready (")),
+    QVERIFY2(m_window->statusMessage().startsWith(
+                 QStringLiteral("Lighting of %1 environments ready (").arg(computed)),
         qPrintable(m_window->statusMessage()));
     const auto* dockStatus = m_window->findChild<QLabel*>(QStringLiteral("environmentStatus"));
     QCOMPARE(dockStatus->text(), m_window->statusMessage());

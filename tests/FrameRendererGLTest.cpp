@@ -122,6 +122,7 @@ private Q_SLOTS:
     void targetPoolIsBounded();
     void texturesOfEveryCellStayUntilTheFrameEnds();
     void renderersSharingTexturesUploadOnce();
+    void seamlessCubeFilteringInTheDrawingContext();
 
 private:
     std::optional<HeadlessGLContext> m_context;
@@ -418,6 +419,31 @@ void FrameRendererGLTest::renderersSharingTexturesUploadOnce()
     const glm::vec4 centre = again->at(16, 16);
     QVERIFY2(centre.r > 3.0f * centre.g && centre.r > 3.0f * centre.b,
         qPrintable(QStringLiteral("centre (%1, %2, %3)").arg(centre.r).arg(centre.g).arg(centre.b)));
+}
+
+void FrameRendererGLTest::seamlessCubeFilteringInTheDrawingContext()
+{
+    // GL_TEXTURE_CUBE_MAP_SEAMLESS is per context. A view drawing with IBL sets another view's
+    // context computed (memory hits: no pass runs here) must still filter across cube faces.
+    auto precompute = std::make_shared<IblPrecompute>(m_cacheDir.path(), /*useDiskCache=*/false);
+    const IblSettings settings = tinySettings();
+    std::string error;
+    const Project project = sphereIn("uniform:0.375");
+    const auto assets = loadProjectAssets(project, &error);
+    QVERIFY2(assets, error.c_str());
+    FrameRenderer first(precompute);
+    QVERIFY2(first.prepare(project, *assets, settings, sceneOptionsFor(settings, true), nullptr, &error),
+        error.c_str());
+    glDisable(GL_TEXTURE_CUBE_MAP_SEAMLESS); // as a fresh context of the share group has it
+    FrameRenderer second(precompute);
+    IblStats stats;
+    const auto scene
+        = second.prepare(project, *assets, settings, sceneOptionsFor(settings, true), &stats, &error);
+    QVERIFY2(scene, error.c_str());
+    QCOMPARE(stats.passesRun, 0);
+    QVERIFY(!glIsEnabled(GL_TEXTURE_CUBE_MAP_SEAMLESS));
+    QVERIFY2(second.renderImage(*scene, 16, 16, FrameOutput::LinearRadiance, &error), error.c_str());
+    QVERIFY(glIsEnabled(GL_TEXTURE_CUBE_MAP_SEAMLESS));
 }
 
 QTEST_GUILESS_MAIN(FrameRendererGLTest)

@@ -71,6 +71,7 @@ private Q_SLOTS:
     void frameOnlyForWhatIsDrawn();
     void environmentAndMeshFilesLoadOffTheGuiThread_data();
     void environmentAndMeshFilesLoadOffTheGuiThread();
+    void changedFileChosenAgainShowsItsNewVersion();
 
 private:
     // Two materials, each with a file in base colour, normal and roughness (six files).
@@ -309,7 +310,7 @@ void SceneControllerUiTest::environmentAndMeshFilesLoadOffTheGuiThread()
             QVERIFY(scene.assets().meshKey != meshKey);
         QVERIFY(scene.environmentProblem().isEmpty());
     } else {
-        QCOMPARE(sceneChanged.count(), framesBefore); // nothing new to draw
+        QCOMPARE(sceneChanged.count(), framesBefore + 1); // the settled frame: the previous one stays
         QCOMPARE(scene.iblKey(), iblKey);
         QCOMPARE(scene.assets().meshKey, meshKey);
         QVERIFY2(messages.last().first().toString().contains(file),
@@ -319,6 +320,45 @@ void SceneControllerUiTest::environmentAndMeshFilesLoadOffTheGuiThread()
     }
     QCOMPARE(scene.loadCounts().environments, environment ? 2 : 1);
     QCOMPARE(scene.loadCounts().meshes, environment ? 1 : 2);
+}
+
+void SceneControllerUiTest::changedFileChosenAgainShowsItsNewVersion()
+{
+    // Another view (a grid cell) keeps X in the document's cache. X changes on disk; the single
+    // view chooses another environment and then X again: the previous version of X shows at once
+    // and the new one replaces it when it arrives.
+    const QString x = QString::fromStdString(file("changing.exr"));
+    QVERIFY(test::writeConstantExr(x, 0.25f));
+    Document document;
+    SceneController scene(&document);
+    const int cell = 0;
+    scene.documentAssets()->setInUse(&cell, DocumentAssets::Kind::Environment, {x.toStdString()});
+    const auto choose = [&document](const std::string& source) {
+        Project project = document.project();
+        project.environment.source = source;
+        document.setProject(project, QStringLiteral("Choose"));
+    };
+    choose(x.toStdString());
+    scene.documentAssets()->waitForLoads();
+    QCOMPARE(scene.assets().environment.image().at(0, 0).r, 0.25f);
+    choose("uniform:0.5");
+    QVERIFY(test::writeConstantExr(x, 0.75f));
+    {
+        QFile changed(x);
+        QVERIFY(changed.open(QIODevice::ReadWrite));
+        QVERIFY(changed.setFileTime(changed.fileTime(QFileDevice::FileModificationTime).addSecs(5),
+            QFileDevice::FileModificationTime));
+    }
+    choose(x.toStdString());
+    QCOMPARE(scene.assets().environment.image().at(0, 0).r, 0.25f); // the previous version, at once
+    QCOMPARE(scene.pendingAssetLoads(), 1);
+    const std::uint64_t staleKey = scene.iblKey();
+    QSignalSpy sceneChanged(&scene, &SceneController::sceneChanged);
+    scene.documentAssets()->waitForLoads();
+    QCOMPARE(scene.pendingAssetLoads(), 0);
+    QCOMPARE(scene.assets().environment.image().at(0, 0).r, 0.75f);
+    QVERIFY(scene.iblKey() != staleKey);
+    QCOMPARE(sceneChanged.count(), 1);
 }
 
 QTEST_GUILESS_MAIN(SceneControllerUiTest)

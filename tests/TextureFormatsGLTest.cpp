@@ -145,6 +145,7 @@ private Q_SLOTS:
     void uploadsAndSamplesLikeTheTwin();
     void slicedTextureIsNeverHalfUsed();
     void anisotropyIsSetOnEveryTexture();
+    void pathlessImageGoneIsNeverReused();
     void tooLargeForThisGlIsRefused();
     void anisotropyPolicy_data();
     void anisotropyPolicy();
@@ -324,6 +325,37 @@ void TextureFormatsGLTest::slicedTextureIsNeverHalfUsed()
     cache.evictUnused(); // neither since
     QCOMPARE(cache.size(), std::size_t(0));
     QVERIFY(!cache.hasPendingUploads());
+}
+
+void TextureFormatsGLTest::pathlessImageGoneIsNeverReused()
+{
+    // An image without a path is keyed by its address. Once it is gone, a new image may be made
+    // at that address (the allocator reuses it); its texture must be its own, not the old one's.
+    TextureCache cache;
+    const auto filled = [](float value) {
+        Image pixels(8, 8);
+        for (int y = 0; y < 8; ++y)
+            for (int x = 0; x < 8; ++x)
+                pixels.at(x, y) = glm::vec4(value, value, value, 1.0f);
+        return std::make_shared<const MapImage>(
+            MapImage::fromImage(pixels, MapLayout::Grey, MapSampleType::UInt8));
+    };
+    auto first = filled(0.25f);
+    const void* address = first.get();
+    bool uploaded = false;
+    QVERIFY(cache.get(first, {}, 0, ColorEncoding::Linear, &uploaded) != 0);
+    QVERIFY(uploaded);
+    // The same image again: a hit.
+    QVERIFY(cache.get(first, {}, 0, ColorEncoding::Linear, &uploaded) != 0);
+    QVERIFY(!uploaded);
+    first.reset();
+    auto second = filled(0.75f);
+    if (second.get() != address)
+        qInfo("the allocator did not reuse the address; the row still checks a new image uploads");
+    const unsigned texture = cache.get(second, {}, 0, ColorEncoding::Linear, &uploaded);
+    QVERIFY(uploaded);
+    const std::vector<glm::vec4> texels = sample(texture, 0, 8, 8);
+    QVERIFY2(std::abs(texels[0].r - 191.0f / 255.0f) < 1e-6f, qPrintable(QString::number(texels[0].r)));
 }
 
 void TextureFormatsGLTest::anisotropyIsSetOnEveryTexture()

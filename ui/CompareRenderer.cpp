@@ -53,6 +53,17 @@ void CompareRenderer::invalidate()
     m_drawn.clear();
 }
 
+void CompareRenderer::touchMaps(const CompareCellDraw& cell)
+{
+    TextureCache& textures = m_frames->textureCache();
+    for (std::size_t m = 0; m < cell.assets.maps.size() && m < cell.project.materials.size(); ++m)
+        for (MapSlot slot : kAllMapSlots) {
+            const LoadedMapImage& map = cell.assets.maps[m][std::size_t(slot)];
+            if (map.image && !map.path.empty())
+                textures.touch(map.path, map.timestamp, cell.project.materials[m].map(slot).colorSpace);
+        }
+}
+
 bool CompareRenderer::textureReady(
     const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace) const
 {
@@ -149,6 +160,7 @@ bool CompareRenderer::drawCell(const CompareCellDraw& cell, double scale, std::s
     if (cell.assets.environment.isEmpty()) {
         fill(cell.rect, kLoadingGrey);
         ++m_stats.cellsLoading;
+        touchMaps(cell); // shown as soon as its environment arrives
         return true;
     }
     if (cell.clip && (cell.clip->width <= 0 || cell.clip->height <= 0))
@@ -242,6 +254,7 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
         CellKey key = keyOf(cell, scale);
         if (m_drawn[i] && *m_drawn[i] == key) {
             ++m_stats.cellsKept;
+            touchMaps(cell); // still shown: its textures stay
             continue;
         }
         std::string cellProblem;
@@ -258,12 +271,12 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
     }
     // The IBL sets no cell shows any more go (FrameRenderer's memory cache may keep them).
     std::erase_if(m_lighting, [&shown](const auto& entry) { return !shown.count(entry.first); });
-    // Textures no cell uses go, but only after a frame that drew every cell with its
-    // environment: a kept cell's maps, or those of a cell still waiting for its environment, were
-    // not drawn (so not marked used) and must stay, or the next redraw would upload them again
-    // (from a decoded copy the single view may have released).
-    if (ok && m_stats.cellsKept == 0 && m_stats.cellsLoading == 0)
+    // Textures no cell shows go: those of the cells drawn were used, those of kept cells and of
+    // cells waiting for their environment were touched (they must stay, or the next redraw would
+    // upload them again, from a decoded copy the single view may have released).
+    if (ok)
         m_frames->finishFrame();
+    m_stats.texturesResident = int(m_frames->textureCache().size());
 
     glBindFramebuffer(GL_READ_FRAMEBUFFER, m_composite->framebufferId());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, targetFramebuffer);

@@ -56,6 +56,7 @@ struct CompareFrameStats {
     // Since the renderer was made: material textures the cells uploaded (0 for maps the single
     // view already put on the GPU: the views share their textures, ui/ViewShareGroup).
     int texturesUploaded = 0;
+    int texturesResident = 0; // material textures on the GPU after the last frame (the shared cache)
     int iblComputed = 0;
     int iblFromDisk = 0;
 };
@@ -121,6 +122,8 @@ private:
     bool drawCell(const CompareCellDraw& cell, double scale, std::string* error);
     std::shared_ptr<const IblTextures> lightingFor(const CompareCellDraw& cell, std::string* error);
     void fill(const FrameRect& rect, float grey);
+    // Marks the cell's map textures used this frame without drawing it (a kept or waiting cell).
+    void touchMaps(const CompareCellDraw& cell);
 
     std::unique_ptr<FrameRenderer> m_frames;
     std::optional<Framebuffer> m_composite;

@@ -153,11 +153,14 @@ bool SceneController::takeEnvironment()
     using Kind = DocumentAssets::Kind;
     const std::shared_ptr<const Environment> loaded = m_documentAssets->environment(source);
     m_documentAssets->setInUse(this, Kind::Environment, {source});
-    if (!loaded && m_documentAssets->isLoading(Kind::Environment, source)) {
+    const bool loading = m_documentAssets->isLoading(Kind::Environment, source);
+    if (!loaded && loading) {
         announceLoading(source);
         return false; // the previous one stays until it arrives
     }
-    m_environmentPending = false;
+    // A file changed on disk comes back in its previous version while the new one loads: take
+    // that now and stay pending for the new one.
+    m_environmentPending = loading;
     if (!loaded) {
         // Keep showing the previous one (a relink or another choice will replace it), or the
         // built-in studio when there is none; the window says which, and why.
@@ -174,6 +177,9 @@ bool SceneController::takeEnvironment()
         Q_EMIT message(WindowMessages::environmentNotUsed(problem, environmentName()));
         return first;
     } else {
+        if (loaded == m_environmentHeld)
+            return false; // the entry shown already
+        m_environmentHeld = loaded;
         report(m_documentAssets->warning(Kind::Environment, source));
         setEnvironmentProblem({});
         m_assets.environment = *loaded;
@@ -207,11 +213,12 @@ bool SceneController::takeMesh()
     using Kind = DocumentAssets::Kind;
     const std::shared_ptr<const AssetCache::LoadedMesh> loaded = m_documentAssets->mesh(source);
     m_documentAssets->setInUse(this, Kind::Mesh, {source});
-    if (!loaded && m_documentAssets->isLoading(Kind::Mesh, source)) {
+    const bool loading = m_documentAssets->isLoading(Kind::Mesh, source);
+    if (!loaded && loading) {
         announceLoading(source);
         return false;
     }
-    m_meshPending = false;
+    m_meshPending = loading; // as for the environment: a previous version now, the new one later
     if (!loaded) {
         report("Mesh: " + m_documentAssets->problem(Kind::Mesh, source));
         if (m_assets.mesh)
@@ -222,6 +229,9 @@ bool SceneController::takeMesh()
         m_assets.meshKey = sphere->key;
         return true;
     }
+    if (loaded == m_meshHeld)
+        return false;
+    m_meshHeld = loaded;
     report(m_documentAssets->warning(Kind::Mesh, source));
     m_assets.mesh = loaded->mesh;
     m_assets.meshKey = loaded->key;
@@ -230,6 +240,11 @@ bool SceneController::takeMesh()
 
 void SceneController::announceLoading(const std::string& name)
 {
+    // Once a load: asking again on every arrival (a grid cell's environment) would repeat it over
+    // the other views' messages.
+    if (name == m_announced)
+        return;
+    m_announced = name;
     const QString source = QString::fromStdString(name);
     Q_EMIT message(
         WindowMessages::loading(json::isBuiltinSpec(name) ? source : QFileInfo(source).fileName()));
@@ -237,9 +252,14 @@ void SceneController::announceLoading(const std::string& name)
 
 void SceneController::onAssetArrived()
 {
+    const int pendingBefore = pendingAssetLoads();
     const bool environment = takeEnvironment();
     const bool mesh = takeMesh();
-    if (environment || mesh)
+    if (pendingAssetLoads() == 0)
+        m_announced.clear();
+    // A frame when something new shows, and when the last load settled (a failure too): a
+    // frame after it is the project's settled look (`facet --screenshot` waits for one).
+    if (environment || mesh || (pendingBefore > 0 && pendingAssetLoads() == 0))
         Q_EMIT sceneChanged(false);
 }
 

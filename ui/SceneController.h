@@ -177,6 +177,10 @@ private:
     ProjectAssets m_assets;
     bool m_environmentPending = false; // m_environmentSource is loading
     bool m_meshPending = false; // m_meshSource is loading
+    // The cache entries shown (a changed file's new entry replaces them when it arrives).
+    std::shared_ptr<const Environment> m_environmentHeld;
+    std::shared_ptr<const AssetCache::LoadedMesh> m_meshHeld;
+    std::string m_announced; // the file "Loading …" was said for
     std::map<std::string, CachedImage> m_images; // the map files shown, by path
     std::map<std::string, PendingMap> m_pendingMaps; // the map files being decoded, by path
     std::uint64_t m_nextTicket = 1;
