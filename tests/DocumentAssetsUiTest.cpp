@@ -10,6 +10,7 @@
 
 #include <QDateTime>
 #include <QFile>
+#include <QFileInfo>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QtTest/QTest>
@@ -52,6 +53,7 @@ private Q_SLOTS:
     void filesLoadOnAWorkerOnce_data();
     void filesLoadOnAWorkerOnce();
     void failureIsNamedAndNotRetriedUntilAsked();
+    void retryTriesAnUnchangedFileAgain();
     void changedFileLoadsAgainPreviousStandsIn();
     void entriesNoUserNamesAreDropped();
 
@@ -149,14 +151,39 @@ void DocumentAssetsUiTest::failureIsNamedAndNotRetriedUntilAsked()
     const std::string problem = assets.problem(Kind::Environment, missing);
     QVERIFY2(problem.find("night.exr") != std::string::npos, problem.c_str());
     QCOMPARE(assets.loads(Kind::Environment), 1); // asked again: not tried again
-    // retry(): an explicit reload tries again (the file is there now).
-    QVERIFY(test::writeConstantExr(QString::fromStdString(missing), 0.5f));
-    assets.retry(Kind::Environment, missing);
-    QVERIFY(!assets.environment(missing));
+}
+
+void DocumentAssetsUiTest::retryTriesAnUnchangedFileAgain()
+{
+    // A file that fails to read, then is mended without its modification time changing (a
+    // restored backup, a slow network share): only retry() (choosing it again) reads it again.
+    const QString file = path(QStringLiteral("mended.exr"));
+    {
+        QFile broken(file);
+        QVERIFY(broken.open(QIODevice::WriteOnly));
+        broken.write("not an EXR");
+    }
+    const QDateTime modified = QFileInfo(file).lastModified();
+    const std::string name = file.toStdString();
+    DocumentAssets assets;
+    assets.environment(name);
     assets.waitForLoads();
-    QVERIFY(assets.environment(missing));
+    QVERIFY(!assets.environment(name));
+    QVERIFY(!assets.problem(Kind::Environment, name).empty());
+    QVERIFY(test::writeConstantExr(file, 0.5f));
+    {
+        QFile mended(file);
+        QVERIFY(mended.open(QIODevice::ReadWrite));
+        QVERIFY(mended.setFileTime(modified, QFileDevice::FileModificationTime));
+    }
+    QVERIFY(!assets.environment(name)); // same modification time: still the failure
+    QCOMPARE(assets.loads(Kind::Environment), 1);
+    assets.retry(Kind::Environment, name);
+    QVERIFY(!assets.environment(name));
+    assets.waitForLoads();
+    QVERIFY(assets.environment(name));
     QCOMPARE(assets.loads(Kind::Environment), 2);
-    QVERIFY(assets.problem(Kind::Environment, missing).empty());
+    QVERIFY(assets.problem(Kind::Environment, name).empty());
 }
 
 void DocumentAssetsUiTest::changedFileLoadsAgainPreviousStandsIn()
