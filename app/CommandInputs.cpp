@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include <QFileInfo>
+
 #include "core/AssetProject.h"
 
 namespace facet {
@@ -13,6 +15,21 @@ bool checkOneInput(const QStringList& positional, QString* error)
     *error = QStringLiteral("too many arguments: expected at most one project or glTF file, got '%1'")
                  .arg(positional.join(QStringLiteral("' '")));
     return false;
+}
+
+std::optional<std::string> exrOrPngOutput(
+    bool isSet, const QString& value, const QString& missing, const QString& wrongType, QString* error)
+{
+    if (!isSet) {
+        *error = missing;
+        return std::nullopt;
+    }
+    const QString suffix = QFileInfo(value).suffix().toLower();
+    if (suffix != QStringLiteral("exr") && suffix != QStringLiteral("png")) {
+        *error = QStringLiteral("-o '%1': %2").arg(value, wrongType);
+        return std::nullopt;
+    }
+    return value.toStdString();
 }
 
 std::optional<Project> commandInputProject(const QStringList& positional, const QString& command, QString* error)

@@ -3,6 +3,7 @@
 // input (a project file, a glTF asset, or the built-in default project) and a WxH size.
 
 #include <optional>
+#include <string>
 
 #include <QString>
 #include <QStringList>
@@ -13,6 +14,10 @@ namespace facet {
 
 // At most one positional argument; else false with *error naming them.
 bool checkOneInput(const QStringList& positional, QString* error);
+// The -o value: present (else *error = `missing`) and ending in .exr or .png, any case (else
+// *error = "-o 'VALUE': " + `wrongType`).
+std::optional<std::string> exrOrPngOutput(
+    bool isSet, const QString& value, const QString& missing, const QString& wrongType, QString* error);
 // The project of `positional` (checkOneInput: a project file or a glTF asset with its
 // materials), or Project::defaultProject() without one. A load warning goes to stderr prefixed
 // "facet COMMAND: ". nullopt with *error when the file cannot be read.

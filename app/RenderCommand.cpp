@@ -125,17 +125,12 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
     const QStringList positional = o.parser.positionalArguments();
     if (!checkOneInput(positional, error))
         return std::nullopt;
-    if (!o.parser.isSet(o.output)) {
-        *error = QStringLiteral("-o OUT.exr or -o OUT.png is required");
+    const auto output = exrOrPngOutput(o.parser.isSet(o.output), o.parser.value(o.output),
+        QStringLiteral("-o OUT.exr or -o OUT.png is required"),
+        QStringLiteral("the output must be .exr (linear radiance) or .png (display-referred)"), error);
+    if (!output)
         return std::nullopt;
-    }
-    request.outputPath = o.parser.value(o.output).toStdString();
-    const QString suffix = QFileInfo(o.parser.value(o.output)).suffix().toLower();
-    if (suffix != QStringLiteral("exr") && suffix != QStringLiteral("png")) {
-        *error = QStringLiteral("-o '%1': the output must be .exr (linear radiance) or .png (display-referred)")
-                     .arg(o.parser.value(o.output));
-        return std::nullopt;
-    }
+    request.outputPath = *output;
 
     // The project: the file (a project, or a glTF asset with its own materials), or the built-in default.
     auto input = commandInputProject(positional, QStringLiteral("render"), error);

@@ -202,17 +202,12 @@ std::optional<SheetRequest> SheetCommand::parse(const QStringList& arguments, QS
     const QStringList positional = o.parser.positionalArguments();
     if (!checkOneInput(positional, error))
         return std::nullopt;
-    if (!o.parser.isSet(o.output)) {
-        *error = QStringLiteral("-o SHEET.png or -o SHEET.exr is required");
+    const auto output = exrOrPngOutput(o.parser.isSet(o.output), o.parser.value(o.output),
+        QStringLiteral("-o SHEET.png or -o SHEET.exr is required"),
+        QStringLiteral("the sheet must be .png (labelled, display-referred) or .exr (linear)"), error);
+    if (!output)
         return std::nullopt;
-    }
-    request.outputPath = o.parser.value(o.output).toStdString();
-    const QString suffix = QFileInfo(o.parser.value(o.output)).suffix().toLower();
-    if (suffix != QStringLiteral("exr") && suffix != QStringLiteral("png")) {
-        *error = QStringLiteral("-o '%1': the sheet must be .png (labelled, display-referred) or .exr (linear)")
-                     .arg(o.parser.value(o.output));
-        return std::nullopt;
-    }
+    request.outputPath = *output;
     if (o.parser.isSet(o.cell)
         && !parseImageSize(QStringLiteral("cell"), o.parser.value(o.cell), 8, kMaxCellSide, &request.cellWidth,
             &request.cellHeight, error))
