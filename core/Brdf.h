@@ -123,14 +123,6 @@ inline double F_Schlick(double f0, double f90, double VoH)
     return f0 + (f90 - f0) * pow5(1.0 - std::clamp(VoH, 0.0, 1.0));
 }
 
-// Schlick with roughness, for ambient light where no half vector exists [Lagarde 2011,
-// "Adopting a physically based shading model"; the LearnOpenGL IBL chapter's fresnelSchlickRoughness].
-inline glm::dvec3 F_SchlickRoughness(const glm::dvec3& f0, double NoV, double perceptualRoughness)
-{
-    const glm::dvec3 f90 = glm::max(glm::dvec3(1.0 - perceptualRoughness), f0);
-    return f0 + (f90 - f0) * pow5(1.0 - std::clamp(NoV, 0.0, 1.0));
-}
-
 // Exact unpolarised Fresnel reflectance of a dielectric interface, light arriving from the
 // outside medium (index 1) onto index `ior` [Walter et al. 2007, eq. 22]. 1 under total internal
 // reflection (only possible when ior < 1).

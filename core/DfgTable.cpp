@@ -25,9 +25,16 @@ DfgValue integrateDfg(double NoV, double perceptualRoughness, int sampleCount, V
     // correlated V this is G2/G1, bounded by 1: a low-variance estimator even at grazing n.v.
     double scale = 0.0;
     double bias = 0.0;
+    double diffuse = 0.0;
     const auto n = std::uint32_t(std::max(sampleCount, 1));
     for (std::uint32_t i = 0; i < n; ++i) {
-        const glm::dvec3 h = sampling::importanceSampleVNDF(sampling::hammersley(i, n), v, alpha);
+        const glm::dvec2 u = sampling::hammersley(i, n);
+        // fresnel_mix's diffuse base: with pdf (n.l) / pi the estimator of
+        // 1/pi (1 - Fc(v.h)) (n.l) is 1 - Fc, h the half vector of v and this l. Every sample
+        // counts, the first point's l on the horizon too (skipping it biased W by -1/n).
+        const glm::dvec3 diffuseL = sampling::sampleCosineHemisphere(u);
+        diffuse += 1.0 - pow5(1.0 - std::clamp(glm::dot(v, glm::normalize(v + diffuseL)), 0.0, 1.0));
+        const glm::dvec3 h = sampling::importanceSampleVNDF(u, v, alpha);
         const glm::dvec3 l = sampling::reflectAbout(v, h);
         const double NoL = l.z;
         if (NoL <= 0.0)
@@ -44,7 +51,7 @@ DfgValue integrateDfg(double NoV, double perceptualRoughness, int sampleCount, V
         scale += (1.0 - Fc) * weight;
         bias += Fc * weight;
     }
-    return {scale / double(n), bias / double(n)};
+    return {scale / double(n), bias / double(n), diffuse / double(n)};
 }
 
 DfgTable DfgTable::compute(int size, int sampleCount, Visibility visibility, int threads)
@@ -79,7 +86,8 @@ DfgValue DfgTable::sample(double NoV, double perceptualRoughness) const
     const double tx = fx - x0;
     const double ty = fy - y0;
     auto lerp = [](const DfgValue& a, const DfgValue& b, double t) {
-        return DfgValue{a.scale + (b.scale - a.scale) * t, a.bias + (b.bias - a.bias) * t};
+        return DfgValue{a.scale + (b.scale - a.scale) * t, a.bias + (b.bias - a.bias) * t,
+                        a.diffuseFresnelWeight + (b.diffuseFresnelWeight - a.diffuseFresnelWeight) * t};
     };
     return lerp(lerp(texel(x0, y0), texel(x1, y0), tx), lerp(texel(x0, y1), texel(x1, y1), tx), ty);
 }
@@ -94,14 +102,15 @@ double DfgTable::averageAlbedo(double perceptualRoughness) const
     return 2.0 * sum;
 }
 
-std::vector<float> DfgTable::toRgbFloats() const
+std::vector<float> DfgTable::toRgbaFloats() const
 {
     std::vector<float> out;
-    out.reserve(m_texels.size() * 3);
+    out.reserve(m_texels.size() * 4);
     for (const DfgValue& t : m_texels) {
         out.push_back(float(t.scale));
         out.push_back(float(t.bias));
         out.push_back(float(t.albedo()));
+        out.push_back(float(t.diffuseFresnelWeight));
     }
     return out;
 }

@@ -7,7 +7,11 @@
 //     E_spec(v) = integral of D V F (n.l) dl = F0 * scale(n.v, r) + bias(n.v, r)
 //     scale = integral of D V (1 - Fc) (n.l) dl,   bias = integral of D V Fc (n.l) dl,   Fc = (1 - v.h)^5
 // and E(n.v, r) = scale + bias is the albedo of the lobe with F = 1, the quantity that the
-// multiple-scattering compensation (Turquin 2019) needs.
+// multiple-scattering compensation (Turquin 2019) needs. A fourth value serves the diffuse base
+// of glTF's fresnel_mix, c / pi (1 - F(v.h)) with the half vector of v and the diffuse l:
+//     W(n.v) = 1/pi integral of (1 - Fc) (n.l) dl,   albedo of the base = c (1 - F0) W(n.v)
+// W does not depend on roughness (the base is Lambertian); the table stores it in every row so
+// that one RGBA lookup gives all four (docs/energy.md has its values).
 // Axes (shared/DESIGN.md): x = n.v, y = perceptual roughness. Texel i of size holds the value at
 // i / (size - 1), so the table's first and last texel centres sit exactly on 0 and 1 and a
 // lookup never extrapolates by clamping (grazing n.v is where the albedo changes fastest). A GL
@@ -23,13 +27,17 @@ namespace facet {
 struct DfgValue {
     double scale = 0.0;
     double bias = 0.0;
+    // W(n.v): the share of a Lambertian base's albedo that a Schlick fresnel_mix passes, over
+    // (1 - F0). 1 at most; a material's base reflects c (1 - F0) W.
+    double diffuseFresnelWeight = 1.0;
     // Directional albedo of the lobe with F0 = 1 (white furnace of a white metal).
     double albedo() const { return scale + bias; }
 };
 
 // The integral for one (n.v, roughness) pair, by importance sampling visible normals with
 // `sampleCount` Hammersley points. `visibility` picks V (the LearnOpenGL variant's table uses
-// Schlick-GGX with the IBL remapping k = alpha / 2).
+// Schlick-GGX with the IBL remapping k = alpha / 2). diffuseFresnelWeight integrates with
+// cosine-distributed l on the same points.
 DfgValue integrateDfg(double NoV, double perceptualRoughness, int sampleCount,
                       Visibility visibility = Visibility::SmithGGXCorrelated);
 
@@ -53,7 +61,6 @@ public:
     // from the table by the trapezoid rule over its n.v texels.
     double averageAlbedo(double perceptualRoughness) const;
 
-    // Interleaved (scale, bias, albedo) floats, row y = roughness, for a GL RGB16F/32F texture.
     // Position of texel i along either axis, and the trapezoid-rule weight of texel i over [0, 1].
     static double texelPosition(int i, int size) { return size > 1 ? double(i) / double(size - 1) : 0.5; }
     static double trapezoidWeight(int i, int size)
@@ -63,7 +70,9 @@ public:
         const double h = 1.0 / double(size - 1);
         return (i == 0 || i == size - 1) ? 0.5 * h : h;
     }
-    std::vector<float> toRgbFloats() const;
+    // Interleaved (scale, bias, albedo, diffuseFresnelWeight) floats, row y = roughness, for a GL
+    // RGBA16F/32F texture: the layout ibl_dfg.frag writes.
+    std::vector<float> toRgbaFloats() const;
 
 private:
     int m_size = 0;

@@ -42,7 +42,7 @@ BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, cons
         lobes.specular = lighting.prefilteredRadiance * albedo * brdf.multiScatterFactor(f0, NoV, roughness);
         const glm::dvec3 kD = model.coupling == DielectricCoupling::EnergyPreserving
             ? glm::dvec3((1.0 - es) * (1.0 - metallic))
-            : (glm::dvec3(1.0) - F_SchlickRoughness(f0, NoV, roughness)) * (1.0 - metallic);
+            : (glm::dvec3(1.0) - f0) * (dfg.diffuseFresnelWeight * (1.0 - metallic));
         lobes.diffuse = diffuseLight * baseColor * kD;
         return lobes;
     }
@@ -53,7 +53,7 @@ BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, cons
     lobes.specular = lighting.prefilteredRadiance * glm::mix(glm::dvec3(specularDielectric), specularMetal, metallic);
     const double diffuseWeight = model.coupling == DielectricCoupling::EnergyPreserving
         ? std::max(0.0, 1.0 - es)
-        : std::max(0.0, 1.0 - albedoSingleScatter(glm::dvec3(f0Dielectric)).x);
+        : (1.0 - f0Dielectric) * dfg.diffuseFresnelWeight;
     lobes.diffuse = diffuseLight * baseColor * (diffuseWeight * (1.0 - metallic));
     return lobes;
 }

@@ -21,10 +21,13 @@ struct SplitSumLighting {
 //   specular = prefiltered * (F0 scale + bias) * M(F0)      per lobe (glTF: dielectric F0 and
 //                                                            base colour, mixed by metallic)
 //   diffuse  = E / pi * c * w_d, with w_d:
-//     glTF, fresnel_mix         (1 - m) (1 - (F0_d scale + bias))
+//     glTF, fresnel_mix         (1 - m) (1 - F0_d) W(n.v)       W = DfgValue::diffuseFresnelWeight
 //     glTF, energy preserving   (1 - m) (1 - E_s(n.v))          E_s = dielectricSpecularAlbedo
-//     LearnOpenGL, fresnel_mix  (1 - m) (1 - F_SchlickRoughness(F0, n.v, r))
+//     LearnOpenGL, fresnel_mix  (1 - m) (1 - F0) W(n.v)
 //     LearnOpenGL, energy pres. (1 - m) (1 - E_s(n.v))
+// fresnel_mix's weights are the albedo of its base c / pi (1 - F(v.h)), the ground truth's model
+// (a white dielectric's albedo reaches 1.86 at grazing view: docs/energy.md); the split sum only
+// separates it from the irradiance, as it does the specular lobe from the prefiltered radiance.
 // `brdf`'s model selects the composition and multi-scatter; `table` is the DFG LUT the renderer
 // samples (the one `brdf` was made with), looked up bilinearly as GL_LINEAR does.
 // The direction the renderer reads the prefiltered map at for normal n, mirror direction R

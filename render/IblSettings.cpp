@@ -22,6 +22,9 @@ constexpr std::uint64_t kFnvOffset = 0xcbf29ce484222325ULL;
 // 2: roughness-to-level map r (2 - r); 3: the DFG key holds the visibility term (version 2's DFG
 // entries were all height-correlated Smith whatever the material's V).
 constexpr std::int32_t kAlgorithmVersion = 3;
+// The DFG table's own version (its passes changed alone): 4: alpha holds fresnel_mix's diffuse
+// weight W(n.v) (version 3's tables hold 1 there). Environment sets keep kAlgorithmVersion.
+constexpr std::int32_t kDfgAlgorithmVersion = 4;
 
 int mipChainLength(int size) { return std::bit_width(unsigned(std::max(size, 1))); }
 
@@ -40,7 +43,7 @@ std::uint64_t IblSettings::dfgHash(Visibility visibility) const
 {
     // The visibility by its name's bytes, not int(visibility): reordering the enum must not
     // make one variant's disk entries answer for another's.
-    std::uint64_t h = fnv1a(kFnvOffset, kAlgorithmVersion);
+    std::uint64_t h = fnv1a(kFnvOffset, kDfgAlgorithmVersion);
     h = fnv1a(h, 0x44464700); // "DFG": a different key space from hash()
     h = fnv1a(h, dfgSize);
     h = fnv1a(h, dfgSamples);

@@ -90,8 +90,6 @@ private Q_SLOTS:
         const double thetaT = std::asin(std::sin(thetaI) / n);
         const double rs = std::pow((std::cos(thetaI) - n * std::cos(thetaT)) / (std::cos(thetaI) + n * std::cos(thetaT)), 2.0);
         QVERIFY(std::abs(F_Dielectric(std::cos(thetaI), n) - 0.5 * rs) < 1e-12);
-        // Schlick with roughness: f90 = max(1 - r, f0).
-        QCOMPARE(F_SchlickRoughness(glm::dvec3(0.04), 0.0, 0.25).x, 0.75);
         // Karis' remappings.
         QCOMPARE(k_SchlickGGX_direct(1.0), 0.5);
         QCOMPARE(k_SchlickGGX_ibl(0.36), 0.18);
@@ -167,7 +165,6 @@ private Q_SLOTS:
                 QVERIFY(finiteNonNegative(D_Beckmann(a, alpha)));
                 QVERIFY(finiteNonNegative(F_Schlick(0.04, 1.0, a)));
                 QVERIFY(finiteNonNegative(F_Dielectric(a, 1.5)));
-                QVERIFY(finiteNonNegative(F_SchlickRoughness(glm::dvec3(0.04), a, r)));
                 QVERIFY(finiteNonNegative(G_SchlickGGX(a, k_SchlickGGX_direct(r))));
                 for (double b : kCosines) {
                     QVERIFY(finiteNonNegative(V_SmithGGXCorrelated(a, b, alpha)));

@@ -1,7 +1,9 @@
 // The split-sum table (core/DfgTable.h) against an independent, high-resolution numerical
 // integration, its lookup, and its invariants.
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <QtTest/QTest>
 
@@ -51,6 +53,24 @@ DfgValue integrateByQuadrature(double NoV, double roughness, int thetaSteps, int
     return {scale, bias};
 }
 
+// W(n.v) = 1/pi integral of (1 - (1 - v.h)^5) (n.l) dl by the midpoint rule in (theta_l, phi_l),
+// with h the half vector of v and l: a method independent of integrateDfg's cosine sampling.
+double diffuseWeightByQuadrature(double NoV, int thetaSteps, int phiSteps)
+{
+    const glm::dvec3 v(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
+    double sum = 0.0;
+    for (int i = 0; i < thetaSteps; ++i) {
+        const double theta = (i + 0.5) / thetaSteps * 0.5 * kPi;
+        for (int j = 0; j < phiSteps; ++j) {
+            const double phi = (j + 0.5) / phiSteps * 2.0 * kPi;
+            const glm::dvec3 l(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+            const double VoH = std::clamp(glm::dot(v, glm::normalize(v + l)), 0.0, 1.0);
+            sum += (1.0 - pow5(1.0 - VoH)) * std::cos(theta) * std::sin(theta);
+        }
+    }
+    return sum * (0.5 * kPi / thetaSteps) * (2.0 * kPi / phiSteps) / kPi;
+}
+
 } // namespace
 
 class DfgTableTest : public QObject {
@@ -85,6 +105,34 @@ private Q_SLOTS:
         }
         qInfo("DFG 32x32 @ 1024 samples vs quadrature: max |error| %.2e, RMS %.2e", worst, std::sqrt(sumSquares / count));
         QVERIFY2(worst < 2e-3, qPrintable(QString::number(worst)));
+    }
+
+    // fresnel_mix's diffuse weight W(n.v) (the table's fourth value) against the quadrature, per
+    // n.v row. Bound 5e-4: cosine-sampled Hammersley points at 1024 samples, measured 2.2e-4 at
+    // n.v 0 and below 1e-5 head-on (skipping the horizon sample, as a first version did, gave
+    // -1.0e-3 everywhere and fails). W is the same in every
+    // roughness row, and a Lambertian base under F = 0 would be exactly 1: W < 1 everywhere, and
+    // it falls towards grazing view, where v.h is small for most l.
+    void diffuseFresnelWeight_data()
+    {
+        QTest::addColumn<double>("NoV");
+        for (double NoV : {0.0, 0.05, 0.2, 0.5, 0.8, 1.0})
+            QTest::newRow(qPrintable(QStringLiteral("n.v %1").arg(NoV))) << NoV;
+    }
+    void diffuseFresnelWeight()
+    {
+        QFETCH(double, NoV);
+        const double reference = diffuseWeightByQuadrature(std::max(NoV, 1e-6), 512, 512);
+        const DfgValue low = integrateDfg(NoV, 0.1, 1024);
+        const DfgValue high = integrateDfg(NoV, 0.9, 1024);
+        qInfo("n.v %.2f: W = %.5f (quadrature %.5f, error %.1e)", NoV, low.diffuseFresnelWeight, reference,
+              low.diffuseFresnelWeight - reference);
+        QVERIFY2(std::abs(low.diffuseFresnelWeight - reference) < 5e-4,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(low.diffuseFresnelWeight).arg(reference)));
+        QCOMPARE(low.diffuseFresnelWeight, high.diffuseFresnelWeight);
+        QVERIFY(reference > 0.0 && reference < 1.0);
+        if (NoV < 1.0)
+            QVERIFY(reference < diffuseWeightByQuadrature(std::min(NoV + 0.2, 1.0), 512, 512));
     }
 
     // The estimator converges: 4x the samples does not increase the error, and 64 samples are
@@ -136,13 +184,25 @@ private Q_SLOTS:
                 const DfgValue s = table.sample(x / 7.0, y / 7.0);
                 QCOMPARE(s.scale, table.texel(x, y).scale);
                 QCOMPARE(s.bias, table.texel(x, y).bias);
+                QCOMPARE(s.diffuseFresnelWeight, table.texel(x, y).diffuseFresnelWeight);
             }
         // Halfway between two texels: the mean. Outside [0, 1]: clamped to the edge.
         const DfgValue mid = table.sample(1.5 / 7.0, 0.0);
         QVERIFY(std::abs(mid.scale - 0.5 * (table.texel(1, 0).scale + table.texel(2, 0).scale)) < 1e-12);
         QCOMPARE(table.sample(-0.5, 0.0).scale, table.texel(0, 0).scale);
         QCOMPARE(table.sample(1.5, 2.0).bias, table.texel(7, 7).bias);
-        QCOMPARE(int(table.toRgbFloats().size()), 8 * 8 * 3);
+        QVERIFY(std::abs(mid.diffuseFresnelWeight
+                         - 0.5 * (table.texel(1, 0).diffuseFresnelWeight + table.texel(2, 0).diffuseFresnelWeight))
+                < 1e-12);
+        // The GL layout: (scale, bias, E, W) per texel, row-major.
+        const std::vector<float> rgba = table.toRgbaFloats();
+        QCOMPARE(int(rgba.size()), 8 * 8 * 4);
+        const DfgValue& texel = table.texel(3, 5);
+        const std::size_t at = (5 * 8 + 3) * 4;
+        QCOMPARE(rgba[at + 0], float(texel.scale));
+        QCOMPARE(rgba[at + 1], float(texel.bias));
+        QCOMPARE(rgba[at + 2], float(texel.albedo()));
+        QCOMPARE(rgba[at + 3], float(texel.diffuseFresnelWeight));
     }
 
     // Closed forms. alpha = 1 makes D = 1 / pi; from normal incidence l = reflect(n, h) gives
@@ -176,7 +236,7 @@ private Q_SLOTS:
     {
         const DfgTable a = DfgTable::compute(16, 128, Visibility::SmithGGXCorrelated, 1);
         const DfgTable b = DfgTable::compute(16, 128, Visibility::SmithGGXCorrelated, 2);
-        QCOMPARE(a.toRgbFloats(), b.toRgbFloats());
+        QCOMPARE(a.toRgbaFloats(), b.toRgbaFloats());
     }
 };
 

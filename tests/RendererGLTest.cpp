@@ -68,12 +68,12 @@ struct TinyIbl {
         for (Visibility visibility : kAllVisibilities) {
             const DfgTable& table = dfgTable(visibility);
             dfgSize = table.size();
-            const std::vector<float> rgb = table.toRgbFloats();
+            const std::vector<float> rgba = table.toRgbaFloats();
             GLuint& texture = dfg[std::size_t(visibility)];
             glGenTextures(1, &texture);
             glBindTexture(GL_TEXTURE_2D, texture);
             glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, dfgSize, dfgSize, 0, GL_RGB, GL_FLOAT, rgb.data());
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, dfgSize, dfgSize, 0, GL_RGBA, GL_FLOAT, rgba.data());
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

@@ -1,6 +1,6 @@
 // The material BRDF f(l, v): the brdf_*.glsl terms composed as the variant says. Twin of
 // core/MaterialBrdf.cpp's evaluate(), lobe by lobe, with the same selector names; the DFG LUT
-// (uDfgLut, RGB = scale, bias, E; core/DfgTable.h) gives E for multi-scatter compensation.
+// (uDfgLut, RGBA = scale, bias, E, W; core/DfgTable.h) gives E for multi-scatter compensation.
 #include "brdf_ggx.glsl"
 #include "ibl_lookup.glsl"
 
@@ -15,10 +15,10 @@ struct BrdfLobes {
     vec3 specular;
 };
 
-// (scale, bias, E) at (n.v, roughness), roughness clamped as core's sample() callers do.
-vec3 dfgLookup(float NoV, float perceptualRoughness)
+// (scale, bias, E, W) at (n.v, roughness), roughness clamped as core's sample() callers do.
+vec4 dfgLookup(float NoV, float perceptualRoughness)
 {
-    return texture(uDfgLut, dfgTexCoord(NoV, clampRoughness(perceptualRoughness), uDfgSize)).rgb;
+    return texture(uDfgLut, dfgTexCoord(NoV, clampRoughness(perceptualRoughness), uDfgSize));
 }
 
 float distribution(float NoH, float alpha)
@@ -56,7 +56,7 @@ vec3 multiScatterFactor(vec3 f0, float NoV, float perceptualRoughness)
 // E_s(mu) = (f0 scale + bias) M(f0): what the dielectric specular layer reflects.
 float dielectricSpecularAlbedo(float f0, float NoV, float perceptualRoughness)
 {
-    vec3 t = dfgLookup(NoV, perceptualRoughness);
+    vec4 t = dfgLookup(NoV, perceptualRoughness);
     return (f0 * t.r + t.g) * multiScatterFactor(vec3(f0), NoV, perceptualRoughness).x;
 }
 

@@ -5,13 +5,6 @@
 vec3 F_Schlick(vec3 f0, float f90, float VoH) { return f0 + (vec3(f90) - f0) * pow5(1.0 - saturate(VoH)); }
 float F_Schlick(float f0, float f90, float VoH) { return f0 + (f90 - f0) * pow5(1.0 - saturate(VoH)); }
 
-// Schlick with roughness for ambient light [Lagarde 2011; LearnOpenGL fresnelSchlickRoughness].
-vec3 F_SchlickRoughness(vec3 f0, float NoV, float perceptualRoughness)
-{
-    vec3 f90 = max(vec3(1.0 - perceptualRoughness), f0);
-    return f0 + (f90 - f0) * pow5(1.0 - saturate(NoV));
-}
-
 // Exact unpolarised dielectric Fresnel [Walter et al. 2007, eq. 22]; 1 under total internal reflection.
 float F_Dielectric(float cosThetaI, float ior)
 {

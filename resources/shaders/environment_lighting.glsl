@@ -61,10 +61,12 @@ vec3 irradiance(vec3 n)
 // The split-sum lobes for the view direction v (unit, towards the viewer) at normal n:
 //   specular = prefiltered(R, lod(r)) * (F0 scale + bias) * M(F0)             (per lobe F0)
 //   diffuse  = E(n) / pi * c * w_d
-// glTF:  specular = (1 - m) spec(F0_d) + m spec(c);  diffuse weight w_d = (1 - m) (1 - (F0_d scale + bias))
-//        for fresnel_mix, (1 - m) (1 - E_s(n.v)) for the energy-preserving coupling.
-// LearnOpenGL: F0 = mix(F0_d, c, m), specular = spec(F0), w_d = (1 - F_SchlickRoughness(F0, n.v, r)) (1 - m)
-//        (fresnel_mix) or (1 - E_s(n.v)) (1 - m) (energy preserving).
+// glTF:  specular = (1 - m) spec(F0_d) + m spec(c);  diffuse weight w_d = (1 - m) (1 - F0_d) W(n.v)
+//        for fresnel_mix (the albedo of its base c / pi (1 - F(v.h)): the ground truth's model),
+//        (1 - m) (1 - E_s(n.v)) for the energy-preserving coupling.
+// LearnOpenGL: F0 = mix(F0_d, c, m), specular = spec(F0), w_d = (1 - F0) W(n.v) (1 - m) (kD =
+//        (1 - F(v.h)) (1 - m) per direction) or (1 - E_s(n.v)) (1 - m) (energy preserving).
+// W(n.v) is the DFG table's alpha (core/DfgTable.h).
 BrdfLobes environmentLobes(MaterialInfo m, vec3 n, vec3 v)
 {
     BrdfLobes lobes;
@@ -75,7 +77,7 @@ BrdfLobes environmentLobes(MaterialInfo m, vec3 n, vec3 v)
     vec3 R = specularDominantDirection(n, reflect(-v, n), roughness * roughness);
     vec3 radiance = prefilteredRadiance(R, roughness);
     vec3 diffuseLight = irradiance(n) * INV_PI;
-    vec3 dfg = dfgLookup(NoV, roughness);
+    vec4 dfg = dfgLookup(NoV, roughness);
     float f0Dielectric = f0FromIor(m.ior);
 #ifdef COMPOSITION_LEARNOPENGL
     vec3 f0 = mix(vec3(f0Dielectric), baseColor, metallic);
@@ -83,7 +85,7 @@ BrdfLobes environmentLobes(MaterialInfo m, vec3 n, vec3 v)
 #ifdef COUPLING_ENERGY_PRESERVING
     vec3 kD = vec3((1.0 - dielectricSpecularAlbedo(f0Dielectric, NoV, roughness)) * (1.0 - metallic));
 #else
-    vec3 kD = (vec3(1.0) - F_SchlickRoughness(f0, NoV, roughness)) * (1.0 - metallic);
+    vec3 kD = (vec3(1.0) - f0) * (dfg.a * (1.0 - metallic));
 #endif
     lobes.diffuse = diffuseLight * baseColor * kD;
 #else
@@ -93,9 +95,10 @@ BrdfLobes environmentLobes(MaterialInfo m, vec3 n, vec3 v)
 #ifdef COUPLING_ENERGY_PRESERVING
     float diffuseWeight = max(0.0, 1.0 - dielectricSpecularAlbedo(f0Dielectric, NoV, roughness));
 #else
-    float diffuseWeight = max(0.0, 1.0 - (f0Dielectric * dfg.r + dfg.g));
+    float diffuseWeight = (1.0 - f0Dielectric) * dfg.a;
 #endif
     lobes.diffuse = diffuseLight * baseColor * (diffuseWeight * (1.0 - metallic));
 #endif
     return lobes;
 }
+

@@ -1,6 +1,7 @@
 // The split-sum DFG table on the GPU; twin of core/DfgTable.cpp integrateDfg() (visible-normal
 // sampling, Hammersley points). Texel (x, y) of an N x N target holds n.v = x / (N - 1) and
-// perceptual roughness y / (N - 1) (core/DfgTable.h), R = scale, G = bias, B = scale + bias.
+// perceptual roughness y / (N - 1) (core/DfgTable.h), R = scale, G = bias, B = scale + bias,
+// A = W(n.v), the share of a Lambertian base that glTF's fresnel_mix passes, over (1 - F0).
 // DFG_VISIBILITY: 0 SmithGGXCorrelated (default), 1 SmithGGX, 2 SchlickGGX (k = alpha / 2); set by
 // IblPrecompute::dfgTable from the Visibility it is asked for (one table per variant).
 #include "common_sampling.glsl"
@@ -24,9 +25,15 @@ void main()
     float k = k_SchlickGGX_ibl(alpha);
     float scale = 0.0;
     float bias = 0.0;
+    float diffuse = 0.0;
     uint n = uint(max(uSampleCount, 1));
     for (uint i = 0u; i < n; ++i) {
-        vec3 h = importanceSampleVNDF(hammersley(i, n), v, alpha);
+        vec2 u = hammersley(i, n);
+        // fresnel_mix's base: with pdf (n.l) / pi the estimator of 1/pi (1 - Fc(v.h)) (n.l) is
+        // 1 - Fc. Every sample counts, the first point's l on the horizon too (v + l never vanishes).
+        vec3 diffuseL = sampleCosineHemisphere(u);
+        diffuse += 1.0 - pow5(1.0 - saturate(dot(v, normalize(v + diffuseL))));
+        vec3 h = importanceSampleVNDF(u, v, alpha);
         vec3 l = reflectAbout(v, h);
         float NoL = l.z;
         if (NoL <= 0.0)
@@ -47,5 +54,5 @@ void main()
     }
     scale /= float(n);
     bias /= float(n);
-    fragColor = vec4(scale, bias, scale + bias, 1.0);
+    fragColor = vec4(scale, bias, scale + bias, diffuse / float(n));
 }

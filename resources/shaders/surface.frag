@@ -107,7 +107,7 @@ void main()
 #elif DEBUG_VIEW == DEBUG_PREFILTERED_RADIANCE
     color = prefilteredRadiance(specularDominantDirection(n, reflect(-v, n), debugR * debugR), debugR);
 #elif DEBUG_VIEW == DEBUG_BRDF_LUT
-    color = dfgLookup(debugNoV, debugR);
+    color = dfgLookup(debugNoV, debugR).rgb;
 #elif DEBUG_VIEW == DEBUG_IBL_SPECULAR
     color = ibl.specular * m.occlusion;
 #elif DEBUG_VIEW == DEBUG_IBL_TOTAL
