@@ -62,6 +62,11 @@ glm::dvec3 EnvironmentSampler::sample(const glm::dvec2& u, double* pdfOut) const
     return m_environment.toWorldFrame(local);
 }
 
+EnvironmentSamplingTables EnvironmentSampler::tables() const
+{
+    return sampling::tablesFromDistribution(m_distribution);
+}
+
 double EnvironmentSampler::pdf(const glm::dvec3& direction) const
 {
     const glm::dvec3 local = m_environment.toImageFrame(direction);

@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/Environment.h"
+#include "core/EnvironmentSamplingTables.h"
 #include "core/Sampling.h"
 
 namespace facet {
@@ -19,6 +20,13 @@ public:
     glm::dvec3 sample(const glm::dvec2& u, double* pdf) const;
     // The pdf of drawing world direction `direction` (unit).
     double pdf(const glm::dvec3& direction) const;
+
+    // The distribution as float tables for the GPU (core/EnvironmentSamplingTables.h), in the
+    // distribution's row order (row r: v in [r/H, (r+1)/H), image row H-1-r), in the image's frame:
+    // sampling them gives (u, v), then directionFromEquirectUv and toWorldFrame as sample() does,
+    // and pdf w.r.t. solid angle = pdfUv / (2 pi^2 cos(latitude)).
+    EnvironmentSamplingTables tables() const;
+    const sampling::Distribution2D& distribution() const { return m_distribution; }
 
 private:
     const Environment& m_environment;

@@ -10,19 +10,62 @@ namespace facet::sampling {
 
 namespace {
 constexpr double kPi = std::numbers::pi;
-}
 
-double radicalInverse(std::uint32_t bits)
+std::uint32_t reverseBits(std::uint32_t bits)
 {
     bits = (bits << 16u) | (bits >> 16u);
     bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
     bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
     bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
     bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
-    return double(bits) * 2.3283064365386963e-10; // / 2^32
+    return bits;
+}
+} // namespace
+
+double radicalInverse(std::uint32_t bits)
+{
+    return double(reverseBits(bits)) * 2.3283064365386963e-10; // / 2^32
 }
 
 glm::dvec2 hammersley(std::uint32_t i, std::uint32_t n) { return {double(i) / double(n), radicalInverse(i)}; }
+
+glm::uvec2 sobol2DBits(std::uint32_t s)
+{
+    // Dimension 2: XOR of the direction numbers of the set bits of s, lowest bit first; the
+    // direction numbers follow v_{k+1} = v_k ^ (v_k >> 1) from v_1 = 2^31 (0.1, 0.11, 0.101,
+    // 0.1111, ... in binary).
+    std::uint32_t y = 0u;
+    for (std::uint32_t v = 1u << 31u, bits = s; bits != 0u; bits >>= 1u, v ^= v >> 1u)
+        if ((bits & 1u) != 0u)
+            y ^= v;
+    return {reverseBits(s), y};
+}
+
+glm::dvec2 sobol2D(std::uint32_t s)
+{
+    const glm::uvec2 bits = sobol2DBits(s);
+    return glm::dvec2(double(bits.x), double(bits.y)) * 2.3283064365386963e-10; // / 2^32
+}
+
+std::uint32_t pcgHash(std::uint32_t value)
+{
+    // Jarzynski & Olano 2020, section 2 ("pcg"): LCG step, then RXS-M-XS.
+    const std::uint32_t state = value * 747796405u + 2891336453u;
+    const std::uint32_t word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+glm::uvec2 cranleyPattersonShift(std::uint32_t x, std::uint32_t y, std::uint32_t seed, std::uint32_t strategy)
+{
+    const std::uint32_t h = pcgHash(x + pcgHash(y + pcgHash(seed + pcgHash(strategy))));
+    return {h, pcgHash(h)};
+}
+
+glm::dvec2 shiftedSobol2D(std::uint32_t s, const glm::uvec2& shift)
+{
+    const glm::uvec2 bits = sobol2DBits(s) + shift; // wraps mod 2^32: the shift's frac()
+    return glm::dvec2(double(bits.x >> 8u), double(bits.y >> 8u)) * 5.9604644775390625e-8; // / 2^24
+}
 
 Pcg32::Pcg32(std::uint64_t seed, std::uint64_t stream)
     : m_increment((stream << 1u) | 1u)

@@ -1,7 +1,9 @@
 #pragma once
-// Sample generation and importance sampling, in double. The GGX samplers have GLSL twins of the
-// same names in resources/shaders/ibl_sampling.glsl. Directions in "tangent space" have the
-// surface normal along +Z; buildOrthonormalBasis() takes them to world space.
+// Sample generation and importance sampling, in double. The GGX samplers, the low-discrepancy
+// points and the hash have GLSL twins of the same names in resources/shaders/common_sampling.glsl
+// (the search of an environment's sampling tables: core/EnvironmentSamplingTables.h and
+// resources/shaders/environment_sampling.glsl). Directions in "tangent space" have the surface
+// normal along +Z; buildOrthonormalBasis() takes them to world space.
 //
 // Every sampler returns its pdf with respect to solid angle, so Monte Carlo estimators and
 // multiple importance sampling can mix them (tests/SamplingTest.cpp integrates each pdf to 1 and
@@ -22,6 +24,33 @@ namespace facet::sampling {
 double radicalInverse(std::uint32_t i);
 // The i-th of n Hammersley points: (i / n, radicalInverse(i)) [Hammersley & Handscomb 1964].
 glm::dvec2 hammersley(std::uint32_t i, std::uint32_t n);
+
+// The first two dimensions of the Sobol' sequence as 32-bit fixed-point fractions: x is the
+// radical inverse of s (dimension 1, van der Corput), y is dimension 2 (primitive polynomial
+// x + 1: direction numbers v_1 = 2^31, v_{k+1} = v_k ^ (v_k >> 1); y = XOR of v_k over the set
+// bits k of s) [Sobol' 1967; Kollig & Keller 2002, "Efficient Multidimensional Sampling"]. The
+// sequence is a (0, 2)-sequence in base 2: every block [k 2^m, (k+1) 2^m) of it, the prefix of
+// 2^m points in particular, is a (0, m, 2)-net (each 2^a x 2^(m-a) grid of boxes holds exactly
+// one point), so samples accumulated over frames are stratified like one set of the same size.
+glm::uvec2 sobol2DBits(std::uint32_t s);
+// sobol2DBits(s) / 2^32, exact: in [0, 1).
+glm::dvec2 sobol2D(std::uint32_t s);
+
+// The "pcg" hash of Jarzynski & Olano 2020, "Hash Functions for GPU Rendering", JCGT 9(3): one
+// step of a PCG LCG followed by its RXS-M-XS output permutation; a bijection of 32-bit values.
+std::uint32_t pcgHash(std::uint32_t value);
+
+// One Cranley-Patterson shift (a 2D offset, 32-bit fixed point) for a pixel, a seed and a
+// sampling strategy (e.g. 0 BRDF, 1 environment), so that pixels and strategies are decorrelated
+// while every pixel keeps the stratification of the shared sequence. Nested hashing of the four
+// inputs, as Jarzynski & Olano suggest for multi-dimensional input (section 2): h =
+// pcgHash(x + pcgHash(y + pcgHash(seed + pcgHash(strategy)))), shift = (h, pcgHash(h)).
+glm::uvec2 cranleyPattersonShift(
+    std::uint32_t x, std::uint32_t y, std::uint32_t seed, std::uint32_t strategy);
+// Sample s of the shifted sequence as the GPU computes it: (sobol2DBits(s) + shift) mod 2^32,
+// i.e. frac(sobol2D(s) + shift / 2^32) without rounding, truncated to 24 bits so that every value
+// is an exact float in [0, 1) (a float conversion of 32 bits would round 0.99999999 up to 1).
+glm::dvec2 shiftedSobol2D(std::uint32_t s, const glm::uvec2& shift);
 
 // A small, fast, seedable generator (PCG32, O'Neill 2014) for the ground-truth integrator:
 // deterministic for a given seed and stream, independent between pixels.
@@ -84,6 +113,9 @@ public:
     explicit Distribution1D(std::span<const double> weights);
     std::size_t size() const { return m_weights.size(); }
     double integral() const { return m_integral; }
+    // The normalised cumulative distribution, size() + 1 entries from 0 to exactly 1 (uniform
+    // steps when every weight is zero): what sampleContinuous searches.
+    std::span<const double> cdf() const { return m_cdf; }
     // Continuous sample in [0, 1): returns x, its density (w.r.t. x in [0,1)) and the cell.
     double sampleContinuous(double u, double* pdf, std::size_t* cell) const;
     double pdf(std::size_t cell) const;
@@ -102,6 +134,12 @@ public:
     // Samples (x, y) in [0,1)^2 with density pdf w.r.t. area of the unit square.
     glm::dvec2 sampleContinuous(const glm::dvec2& u, double* pdf) const;
     double pdf(const glm::dvec2& xy) const;
+
+    std::size_t width() const { return m_width; }
+    std::size_t height() const { return m_height; }
+    // The distribution of rows (y), and of x within row `row` (0 .. height() - 1).
+    const Distribution1D& marginal() const { return m_marginal; }
+    const Distribution1D& conditional(std::size_t row) const { return m_conditional[row]; }
 
 private:
     std::vector<Distribution1D> m_conditional; // one per row

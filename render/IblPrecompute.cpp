@@ -191,6 +191,7 @@ IblPrecompute::IblPrecompute(QString cacheDirectory, bool useDiskCache)
 IblPrecompute::~IblPrecompute()
 {
     m_memory.clear();
+    m_sources.clear();
     m_dfg.clear();
     m_programs.reset();
     for (auto& program : m_dfgPrograms)
@@ -200,6 +201,7 @@ IblPrecompute::~IblPrecompute()
 void IblPrecompute::clearMemoryCache()
 {
     m_memory.clear();
+    m_sources.clear();
     m_dfg.clear();
 }
 
@@ -373,7 +375,57 @@ bool IblPrecompute::holds(const Environment& environment, const IblSettings& req
     const IblSettings settings = requested.forImage(environment.image().width());
     const std::uint64_t key = IblDiskCache::key(environment.contentHash(), settings.hash());
     return std::any_of(
-        m_memory.begin(), m_memory.end(), [key](const auto& entry) { return entry.first == key; });
+        m_memory.begin(), m_memory.end(), [key](const auto& entry) { return entry.key == key; });
+}
+
+bool IblPrecompute::holdsSource(const Environment& environment) const
+{
+    if (environment.isEmpty())
+        return false;
+    const std::uint64_t key = environment.contentHash();
+    return std::any_of(
+        m_sources.begin(), m_sources.end(), [key](const auto& entry) { return entry.key == key; });
+}
+
+std::shared_ptr<const EnvironmentSourceTextures> IblPrecompute::source(
+    const Environment& environment, IblStats* stats, std::string* error)
+{
+    const Clock::time_point start = Clock::now();
+    IblStats ignored;
+    if (!stats)
+        stats = &ignored;
+    if (environment.isEmpty()) {
+        if (error)
+            *error = "IblPrecompute::source: the environment has no image";
+        return nullptr;
+    }
+    const std::uint64_t key = environment.contentHash();
+    for (auto it = m_sources.begin(); it != m_sources.end(); ++it) {
+        if (it->key == key) {
+            m_sources.splice(m_sources.begin(), m_sources, it);
+            m_sources.front().lastUse = ++m_useClock;
+            ++stats->sourceCacheHitsMemory;
+            stats->msTotal += msSince(start);
+            return m_sources.front().value;
+        }
+    }
+    GLStateGuard guard;
+    std::string warning;
+    std::string message;
+    std::shared_ptr<const EnvironmentSourceTextures> made
+        = EnvironmentSourceTextures::create(environment, &warning, &message);
+    if (!made) {
+        if (error)
+            *error = "IblPrecompute::source: " + message;
+        return nullptr;
+    }
+    if (!warning.empty())
+        warn(warning);
+    m_sources.push_front({key, made, ++m_useClock});
+    trimMemoryCache();
+    stats->msSource += msSince(start);
+    stats->msTotal += msSince(start);
+    return made;
 }
 
 std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& environment, const IblSettings& requested,
@@ -397,10 +449,11 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
 
     // 1. Memory.
     for (auto it = m_memory.begin(); it != m_memory.end(); ++it) {
-        if (it->first == key) {
+        if (it->key == key) {
             m_memory.splice(m_memory.begin(), m_memory, it);
+            m_memory.front().lastUse = ++m_useClock;
             stats->cacheHitsMemory = 1;
-            return finish(m_memory.front().second);
+            return finish(m_memory.front().value);
         }
     }
 
@@ -470,18 +523,31 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
         // filtered source of the convolutions.
         Clock::time_point passStart = Clock::now();
         const Image& image = environment.image();
-        GLTexture equirect = GLTexture::create(GL_TEXTURE_2D);
-        glBindTexture(GL_TEXTURE_2D, equirect.id());
-        // Rows top first, as Image stores them: t = 0 is the image's top row (common_equirect.glsl).
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, image.width(), image.height(), 0, GL_RGBA, GL_FLOAT, image.data());
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        // The source radiance of source(), when it is in memory at full resolution, is this very
+        // texture (RGB32F instead of RGBA32F: the pass reads .rgb, with the same filtering and
+        // wrapping), so it is not uploaded twice. Otherwise upload the image for this pass only.
+        const std::shared_ptr<const EnvironmentSourceTextures> held = heldSource(environment.contentHash());
+        GLTexture equirect;
+        GLuint equirectId = 0;
+        if (held && !held->downsampled()) {
+            equirectId = held->radiance.id();
+            ++stats->sourceCacheHitsMemory;
+        } else {
+            equirect = GLTexture::create(GL_TEXTURE_2D);
+            equirectId = equirect.id();
+            glBindTexture(GL_TEXTURE_2D, equirectId);
+            // Rows top first, as Image stores them: t = 0 is the image's top row (common_equirect.glsl).
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, image.width(), image.height(), 0, GL_RGBA, GL_FLOAT,
+                image.data());
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        }
         auto cube = makeCubemap(settings.cubeSize, result->environmentMipLevels);
         m_programs->equirectToCube.use();
-        glBindTexture(GL_TEXTURE_2D, equirect.id());
+        glBindTexture(GL_TEXTURE_2D, equirectId);
         for (int face = 0; face < 6; ++face) {
             m_programs->equirectToCube.setInt("uFace", face);
             if (!drawInto(*cube, face, 0, settings.cubeSize, error))
@@ -574,16 +640,26 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
     }
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
 
-    m_memory.emplace_front(key, result);
+    m_memory.push_front({key, result, ++m_useClock});
     trimMemoryCache();
     return finish(result);
+}
+
+std::shared_ptr<const EnvironmentSourceTextures> IblPrecompute::heldSource(std::uint64_t contentHash) const
+{
+    for (const auto& entry : m_sources)
+        if (entry.key == contentHash)
+            return entry.value;
+    return nullptr;
 }
 
 std::size_t IblPrecompute::memoryBytes() const
 {
     std::size_t total = 0;
     for (const auto& entry : m_memory)
-        total += entry.second->bytes();
+        total += entry.value->bytes();
+    for (const auto& entry : m_sources)
+        total += entry.value->bytes();
     return total;
 }
 
@@ -595,9 +671,14 @@ void IblPrecompute::setMemoryBudget(std::size_t bytes)
 
 void IblPrecompute::trimMemoryCache()
 {
-    // Least recently used out first; the newest set stays even when it alone is over budget.
-    while (m_memory.size() > 1 && memoryBytes() > m_memoryBudget)
-        m_memory.pop_back();
+    // Least recently used out first, from whichever list holds it (each list is in use order);
+    // the newest entry stays even when it alone is over budget.
+    while (m_memory.size() + m_sources.size() > 1 && memoryBytes() > m_memoryBudget) {
+        if (m_sources.empty() || (!m_memory.empty() && m_memory.back().lastUse < m_sources.back().lastUse))
+            m_memory.pop_back();
+        else
+            m_sources.pop_back();
+    }
 }
 
 } // namespace facet

@@ -25,6 +25,7 @@
 #include "core/Environment.h"
 #include "core/ShadingModel.h"
 #include "render/DfgLut.h"
+#include "render/EnvironmentSource.h"
 #include "render/IblSettings.h"
 #include "render/IblTextures.h"
 
@@ -55,6 +56,10 @@ struct IblStats {
     double msDfg = 0.0; // every DFG LUT made
     double msSh = 0.0;             // SH9 projection on the CPU
     double msTotal = 0.0; // the whole calls, including cache look-ups and disk I/O
+    // source(), which adds to these like dfgTable(): its memory-cache hits, and the time spent
+    // making source textures (tables on the CPU + uploads; 0 on a hit).
+    int sourceCacheHitsMemory = 0;
+    double msSource = 0.0;
 };
 
 class ShaderProgram;
@@ -90,16 +95,33 @@ public:
     std::shared_ptr<const DfgLut> dfgTable(
         const IblSettings& settings, Visibility visibility, IblStats* stats, std::string* error);
 
+    // The environment at source resolution and its luminance sampling tables
+    // (render/EnvironmentSource.h), for lighting that samples the image itself. Needs a current GL
+    // 4.1 core context unless it is a memory hit. Cached in memory only (the tables take a few ms
+    // per megapixel to build, less than reading them back), by Environment::contentHash(): rotation
+    // and intensity are applied at shading time. Counted in the same memory budget as the IBL sets.
+    // An image above EnvironmentSourceTextures' limits is box-filtered down, with a warning
+    // (lastWarning()). On failure returns null and sets `error` to
+    // "IblPrecompute::source: <problem>". `stats` (optional) is ADDED to (msSource,
+    // sourceCacheHitsMemory, msTotal).
+    std::shared_ptr<const EnvironmentSourceTextures> source(
+        const Environment& environment, IblStats* stats, std::string* error);
+    // Whether source(environment) would be a memory hit.
+    bool holdsSource(const Environment& environment) const;
+
     // Drops the in-memory results (the disk cache stays): the next prepare() reads the disk.
     void clearMemoryCache();
-    // The memory cache: how many IBL sets it holds and their GPU bytes (IblTextures::bytes()).
+    // The memory cache: how many IBL sets it holds, how many environment sources, and the GPU
+    // bytes of both (IblTextures::bytes() + EnvironmentSourceTextures::bytes()).
     std::size_t memoryEntries() const { return m_memory.size(); }
+    std::size_t sourceEntries() const { return m_sources.size(); }
     // Whether prepare(environment, settings) would be a memory hit (no GL work, no disk read):
     // a view can then draw at once instead of announcing a precompute.
     bool holds(const Environment& environment, const IblSettings& settings) const;
     std::size_t memoryBytes() const;
     // The bound the memory cache keeps to (kMemoryBudgetBytes unless set; tests set small ones).
-    // The set just prepared always stays, whatever its size.
+    // Entries go least recently used first, IBL sets and sources alike; the one just prepared or
+    // made always stays, whatever its size.
     void setMemoryBudget(std::size_t bytes);
     // The last warning (e.g. a corrupt disk-cache file that was ignored); also sent to qWarning().
     const std::string& lastWarning() const { return m_lastWarning; }
@@ -111,6 +133,8 @@ private:
     // The DFG program for `visibility`, compiled on first use (a disk hit compiles nothing).
     const ShaderProgram* dfgProgram(Visibility visibility, std::string* error);
     void warn(const std::string& message);
+    // The source textures in memory for an environment's content hash, without touching their use order.
+    std::shared_ptr<const EnvironmentSourceTextures> heldSource(std::uint64_t contentHash) const;
 
     QString m_cacheDirectory;
     bool m_useDiskCache = true;
@@ -118,7 +142,16 @@ private:
     std::array<std::unique_ptr<ShaderProgram>, kVisibilityCount> m_dfgPrograms; // by int(Visibility)
     void trimMemoryCache();
 
-    std::list<std::pair<std::uint64_t, std::shared_ptr<const IblTextures>>> m_memory; // most recent first
+    // Cache entries, most recent first, each with the value of m_useClock at its last use (for
+    // least-recently-used order across the two lists).
+    template <typename T> struct MemoryEntry {
+        std::uint64_t key = 0;
+        std::shared_ptr<const T> value;
+        std::uint64_t lastUse = 0;
+    };
+    std::list<MemoryEntry<IblTextures>> m_memory; // by IblDiskCache::key(contentHash, settings.hash())
+    std::list<MemoryEntry<EnvironmentSourceTextures>> m_sources; // by Environment::contentHash()
+    std::uint64_t m_useClock = 0;
     std::size_t m_memoryBudget = kMemoryBudgetBytes;
     std::map<std::uint64_t, std::shared_ptr<const DfgLut>> m_dfg; // by IblDiskCache::key(0, dfgHash(V))
     std::string m_lastWarning;

@@ -1,9 +1,11 @@
 // core/Environment: the equirect convention of DESIGN.md, rotation, sampling, hashing, the
 // uniform and built-in environments, loading the CC0 HDRIs and parsing specs.
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include <QTemporaryDir>
@@ -13,6 +15,7 @@
 
 #include "TestSupport.h"
 #include "core/Environment.h"
+#include "core/EnvironmentSampler.h"
 
 // QCOMPARE prints values it knows; teach it glm's vectors (found by argument-dependent lookup).
 namespace glm {
@@ -124,6 +127,10 @@ private Q_SLOTS:
     void fromSpecParses();
     void fromSpecRejectsBadValues_data();
     void fromSpecRejectsBadValues();
+    void samplingTablesLayout_data();
+    void samplingTablesLayout();
+    void samplingTablesKeepTheMaxFilter_data();
+    void samplingTablesKeepTheMaxFilter();
 };
 
 void EnvironmentTest::axesMapAsDesigned()
@@ -567,6 +574,157 @@ void EnvironmentTest::fromSpecRejectsBadValues()
     error.clear();
     QVERIFY(!Environment::fromSpec("", &error));
     QVERIFY2(error.rfind("Environment::fromSpec: ", 0) == 0, error.c_str());
+}
+
+// EnvironmentSampler::tables(): sizes, CDFs from 0 to exactly 1 and non-decreasing, the pdf a
+// density over the unit square equal to the distribution's, rows in distribution order.
+void EnvironmentTest::samplingTablesLayout_data()
+{
+    QTest::addColumn<int>("which");
+    QTest::addColumn<double>("rotation");
+    QTest::newRow("spot 16x8") << 0 << 0.0;
+    QTest::newRow("studio 64x32") << 1 << 0.0;
+    QTest::newRow("studio 64x32 rotated 40") << 1 << 40.0; // rotation is applied at shading time
+    QTest::newRow("sky 128x64") << 2 << 0.0;
+    QTest::newRow("uniform") << 3 << 0.0;
+}
+
+void EnvironmentTest::samplingTablesLayout()
+{
+    QFETCH(int, which);
+    QFETCH(double, rotation);
+    Environment environment;
+    int brightRow = -1; // the image row of the spot
+    if (which == 0) {
+        Image image(16, 8, glm::vec4(0.5f));
+        brightRow = 1;
+        image.at(5, brightRow) = glm::vec4(400.0f);
+        environment = Environment(image, "spot");
+    } else if (which == 1) {
+        environment = Environment::builtin(Environment::Builtin::Studio, 64);
+    } else if (which == 2) {
+        environment = Environment::builtin(Environment::Builtin::Sky, 128);
+    } else {
+        environment = Environment::uniform(glm::dvec3(2.0));
+    }
+    environment.setRotationDegrees(rotation);
+    const facet::EnvironmentSampler sampler(environment);
+    const facet::EnvironmentSamplingTables tables = sampler.tables();
+    const int w = environment.image().width();
+    const int h = environment.image().height();
+    QCOMPARE(tables.width, w);
+    QCOMPARE(tables.height, h);
+    QCOMPARE(int(tables.conditionalCdf.size()), h * (w + 1));
+    QCOMPARE(int(tables.marginalCdf.size()), h + 1);
+    QCOMPARE(int(tables.pdfUv.size()), w * h);
+    QCOMPARE(tables.bytes(), (std::size_t(h) * (w + 1) + (h + 1) + std::size_t(w) * h) * sizeof(float));
+    auto checkCdf = [](std::span<const float> cdf) {
+        if (cdf.front() != 0.0f || cdf.back() != 1.0f)
+            return false;
+        return std::is_sorted(cdf.begin(), cdf.end());
+    };
+    QVERIFY(checkCdf(tables.marginalCdf));
+    for (int row = 0; row < h; ++row)
+        QVERIFY2(checkCdf(tables.conditionalRow(row)), qPrintable(QString::number(row)));
+    // A density over the unit square: the cells' pdf / (W H) sums to 1; and each is the
+    // distribution's own pdf, rounded once.
+    double sum = 0.0;
+    double worst = 0.0;
+    for (int row = 0; row < h; ++row)
+        for (int column = 0; column < w; ++column) {
+            const double exact = sampler.distribution().pdf({(column + 0.5) / w, (row + 0.5) / h});
+            const double stored = tables.pdfAt(column, row);
+            sum += stored;
+            if (exact > 0.0)
+                worst = std::max(worst, std::abs(stored - exact) / exact);
+            else
+                QCOMPARE(stored, 0.0);
+        }
+    QVERIFY2(
+        std::abs(sum / (double(w) * h) - 1.0) < 1e-6, qPrintable(QString::number(sum / (double(w) * h))));
+    QVERIFY2(worst <= 6e-8, qPrintable(QString::number(worst))); // float rounding, 2^-24
+    // The pdf in solid angle is pdfUv / (2 pi^2 cos(lat)), in the image frame: the sampler's.
+    const glm::dvec3 direction = glm::normalize(glm::dvec3(0.3, 0.4, -0.5));
+    const glm::dvec3 local = environment.toImageFrame(direction);
+    const glm::dvec2 uv = equirectUvFromDirection(local);
+    const double cosLat = std::sqrt(1.0 - local.y * local.y);
+    const double fromTable = facet::sampling::tablesPdf(tables, glm::vec2(uv)) / (2.0 * kPi * kPi * cosLat);
+    QVERIFY2(
+        std::abs(fromTable / sampler.pdf(direction) - 1.0) < 1e-6, qPrintable(QString::number(fromTable)));
+    if (brightRow >= 0) {
+        // Distribution row r is image row H-1-r: per unit solid angle, the marginal's steps are
+        // largest (and equal, by the 3x3 maximum) at the spot's row and its two neighbours.
+        auto perSolidAngle = [&](int row) {
+            const double lat0 = kPi * (double(row) / h - 0.5);
+            const double lat1 = kPi * (double(row + 1) / h - 0.5);
+            return double(tables.marginalCdf[row + 1] - tables.marginalCdf[row])
+                / (std::sin(lat1) - std::sin(lat0));
+        };
+        const int spot = h - 1 - brightRow;
+        for (int row = 0; row < h; ++row) {
+            if (std::abs(row - spot) <= 1)
+                QVERIFY2(std::abs(perSolidAngle(row) / perSolidAngle(spot) - 1.0) < 1e-5,
+                    qPrintable(QString::number(row)));
+            else
+                QVERIFY2(perSolidAngle(row) < 0.1 * perSolidAngle(spot), qPrintable(QString::number(row)));
+        }
+    }
+    if (which == 3) // uniform: the density is the solid angle of the cells, cos(lat) 2 pi^2
+        for (int row = 0; row < h; ++row) {
+            const double lat0 = kPi * (double(row) / h - 0.5);
+            const double lat1 = kPi * (double(row + 1) / h - 0.5);
+            const double expected
+                = (std::sin(lat1) - std::sin(lat0)) / 2.0 * h; // solid angle / (4 pi) * W H / W
+            QVERIFY2(
+                std::abs(tables.pdfAt(0, row) / expected - 1.0) < 1e-6, qPrintable(QString::number(row)));
+        }
+}
+
+// The 3x3 maximum of EnvironmentSampler's weights survives into the tables: the eight
+// neighbours of one bright texel get its weight (times their own row's solid angle), wrapping in
+// u and clamped in v; the texels two away do not.
+void EnvironmentTest::samplingTablesKeepTheMaxFilter_data()
+{
+    QTest::addColumn<int>("x");
+    QTest::addColumn<int>("y");
+    QTest::newRow("interior") << 7 << 4;
+    QTest::newRow("column 0 wraps to the last") << 0 << 3;
+    QTest::newRow("last column wraps to 0") << 15 << 5;
+    QTest::newRow("top row clamps") << 9 << 0;
+    QTest::newRow("bottom row clamps") << 2 << 7;
+}
+
+void EnvironmentTest::samplingTablesKeepTheMaxFilter()
+{
+    QFETCH(int, x);
+    QFETCH(int, y);
+    const int w = 16;
+    const int h = 8;
+    Image image(w, h, glm::vec4(0.01f, 0.01f, 0.01f, 1.0f));
+    image.at(x, y) = glm::vec4(100.0f, 100.0f, 100.0f, 1.0f);
+    const facet::EnvironmentSampler sampler(Environment(image, "max"));
+    const facet::EnvironmentSamplingTables tables = sampler.tables();
+    // pdf per unit solid angle of distribution row r: pdfUv / (cell solid angle * W H / 4 pi ...);
+    // comparing within the block, divide by the row's solid angle (the weight's other factor).
+    auto perSolidAngle = [&](int column, int imageRow) {
+        const int row = h - 1 - imageRow;
+        const double lat0 = kPi * (double(row) / h - 0.5);
+        const double lat1 = kPi * (double(row + 1) / h - 0.5);
+        return double(tables.pdfAt((column + w) % w, row)) / (std::sin(lat1) - std::sin(lat0));
+    };
+    const double centre = perSolidAngle(x, y);
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+            const int yy = y + dy;
+            if (yy < 0 || yy >= h)
+                continue;
+            const double neighbour = perSolidAngle(x + dx, yy);
+            QVERIFY2(std::abs(neighbour / centre - 1.0) < 1e-6,
+                qPrintable(QStringLiteral("(%1, %2): %3 vs %4").arg(dx).arg(dy).arg(neighbour).arg(centre)));
+        }
+    // Two texels away (same row): the background, 1e4 times dimmer.
+    QVERIFY(perSolidAngle(x + 2, y) < 1e-3 * centre);
+    QVERIFY(perSolidAngle(x - 2, y) < 1e-3 * centre);
 }
 
 QTEST_GUILESS_MAIN(EnvironmentTest)

@@ -16,6 +16,46 @@ float radicalInverse(uint bits)
 // The i-th of n Hammersley points [Hammersley & Handscomb 1964].
 vec2 hammersley(uint i, uint n) { return vec2(float(i) / float(n), radicalInverse(i)); }
 
+// Sobol' dimensions 1 and 2 as 32-bit fractions [Sobol' 1967; Kollig & Keller 2002]: x is the
+// radical inverse, y the XOR of direction numbers v_1 = 2^31, v_{k+1} = v_k ^ (v_k >> 1) over the
+// set bits of s. Every aligned block of 2^m points is a (0, m, 2)-net (core/Sampling.h).
+uvec2 sobol2DBits(uint s)
+{
+    uint y = 0u;
+    uint v = 0x80000000u;
+    for (uint bits = s; bits != 0u; bits >>= 1u) {
+        if ((bits & 1u) != 0u)
+            y ^= v;
+        v ^= v >> 1u;
+    }
+    return uvec2(bitfieldReverse(s), y);
+}
+// sobol2DBits / 2^32 in float (rounded: may be 1.0; samples use shiftedSobol2D).
+vec2 sobol2D(uint s) { return vec2(sobol2DBits(s)) * 2.3283064365386963e-10; }
+
+// The "pcg" hash [Jarzynski & Olano 2020, "Hash Functions for GPU Rendering", JCGT 9(3)].
+uint pcgHash(uint value)
+{
+    uint state = value * 747796405u + 2891336453u;
+    uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+    return (word >> 22u) ^ word;
+}
+
+// A Cranley-Patterson shift per pixel, seed and strategy (nested pcg hashes; core/Sampling.h).
+uvec2 cranleyPattersonShift(uint x, uint y, uint seed, uint strategy)
+{
+    uint h = pcgHash(x + pcgHash(y + pcgHash(seed + pcgHash(strategy))));
+    return uvec2(h, pcgHash(h));
+}
+
+// Sample s shifted: frac(sobol2D(s) + shift) in 32-bit fixed point, truncated to 24 bits so the
+// float is exact and below 1.
+vec2 shiftedSobol2D(uint s, uvec2 shift)
+{
+    uvec2 bits = sobol2DBits(s) + shift;
+    return vec2(bits >> 8u) * 5.9604644775390625e-8;
+}
+
 // Orthonormal basis around unit n [Duff et al. 2017].
 void buildOrthonormalBasis(vec3 n, out vec3 t, out vec3 b)
 {
