@@ -5,6 +5,7 @@
 // (Environment::toImageFrame: R_y(-rotation)), and radiance is multiplied by the intensity.
 #include "ibl_lookup.glsl"
 #include "debug_views.glsl"
+#include "environment_frame.glsl"
 
 uniform samplerCube uPrefilteredMap;
 uniform float uPrefilteredLevels;
@@ -13,8 +14,6 @@ uniform vec3 uIrradianceSH[9]; // c_i * A_l of the UNROTATED environment (core i
 #else
 uniform samplerCube uIrradianceMap; // irradiance E (not / pi)
 #endif
-uniform mat3 uEnvironmentRotation; // world -> image frame
-uniform float uEnvironmentIntensity;
 
 vec3 toEnvironmentFrame(vec3 d) { return uEnvironmentRotation * d; }
 
