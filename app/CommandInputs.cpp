@@ -8,6 +8,34 @@
 
 namespace facet {
 
+bool applyIblOptions(const QString* method, const QString* samples, EnvironmentSettings& environment, QString* error)
+{
+    if (method) {
+        const std::optional<IblMethod> parsed = iblMethodFromString(method->toStdString());
+        if (!parsed) {
+            *error = QStringLiteral("--ibl: '%1' is not split-sum or reference").arg(*method);
+            return false;
+        }
+        environment.method = *parsed;
+    }
+    if (samples) {
+        bool ok = false;
+        const int count = samples->toInt(&ok);
+        if (!ok || count < 1 || count > kMaxIblSamples) {
+            *error = QStringLiteral("--ibl-samples: '%1' is not a whole number from 1 to %2").arg(*samples).arg(kMaxIblSamples);
+            return false;
+        }
+        if (environment.method == IblMethod::SplitSum) {
+            *error = QStringLiteral("--ibl-samples: %1 given with --ibl split-sum, which takes no samples "
+                                    "(add --ibl reference)")
+                         .arg(count);
+            return false;
+        }
+        environment.samples = count;
+    }
+    return true;
+}
+
 bool checkOneInput(const QStringList& positional, QString* error)
 {
     if (positional.size() <= 1)

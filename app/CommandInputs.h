@@ -23,6 +23,11 @@ std::optional<std::string> exrOrPngOutput(
 // "facet COMMAND: ". nullopt with *error when the file cannot be read.
 std::optional<Project> commandInputProject(const QStringList& positional, const QString& command, QString* error);
 
+// --ibl METHOD and --ibl-samples N (null: not given) into environment.method and .samples. False
+// with *error naming the flag: an unknown method ("--ibl: 'X' is not split-sum or reference"), a
+// count outside 1..kMaxIblSamples, or a count for the split sum, which takes none.
+bool applyIblOptions(const QString* method, const QString* samples, EnvironmentSettings& environment, QString* error);
+
 // "WxH" (case-insensitive x) with minimum <= W, H <= maximum; else false with
 // *error = "--FLAG: 'TEXT' is not WxH with MIN <= W, H <= MAX".
 bool parseImageSize(const QString& flag, const QString& text, int minimum, int maximum, int* width, int* height,

@@ -21,6 +21,7 @@
 #include "core/MaterialBrdf.h"
 #include "core/MaterialPresets.h"
 #include "core/ProjectAssets.h"
+#include "core/ReferenceView.h"
 #include "core/ToneMap.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblSettings.h"
@@ -69,6 +70,13 @@ struct Options {
                            QStringLiteral("N")};
     QCommandLineOption quality{QStringLiteral("quality"), QStringLiteral("IBL quality preset: draft, default, high."),
                                QStringLiteral("preset")};
+    QCommandLineOption ibl{QStringLiteral("ibl"),
+                           QStringLiteral("How the surface integrates the environment: split-sum (real time) or "
+                                          "reference (Monte Carlo on the GPU, converging; see --ibl-samples)."),
+                           QStringLiteral("method")};
+    QCommandLineOption iblSamples{QStringLiteral("ibl-samples"),
+                                  QStringLiteral("Samples per pixel for --ibl reference (default 1024)."),
+                                  QStringLiteral("N")};
     QCommandLineOption stats{QStringLiteral("stats"), QStringLiteral("Print timings and work counters.")};
     QCommandLineOption output{{QStringLiteral("o"), QStringLiteral("output")},
                               QStringLiteral("Output image: .exr (linear radiance) or .png (display-referred)."),
@@ -82,7 +90,7 @@ struct Options {
             "view transform. With --spp the CPU ground truth renders the reference view instead."));
         for (const QCommandLineOption* option : {&help, &env, &material, &baseColor, &metallic, &roughness, &brdf,
                                                  &multiScatter, &mesh, &view, &size, &referenceView, &spp, &quality,
-                                                 &stats, &output})
+                                                 &ibl, &iblSamples, &stats, &output})
             parser.addOption(*option);
         parser.addPositionalArgument(QStringLiteral("input"),
                                      QStringLiteral("A project file (JSON) or a glTF asset (.gltf, .glb) with its materials."),
@@ -229,6 +237,18 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
         }
         project.environment.quality = *quality;
     }
+    if (o.parser.isSet(o.ibl) || o.parser.isSet(o.iblSamples)) {
+        if (o.parser.isSet(o.spp)) {
+            *error = QStringLiteral("--spp renders with the CPU ground truth; --ibl and --ibl-samples choose the GPU's "
+                                    "method: give one or the other");
+            return std::nullopt;
+        }
+        const QString method = o.parser.value(o.ibl);
+        const QString samples = o.parser.value(o.iblSamples);
+        if (!applyIblOptions(o.parser.isSet(o.ibl) ? &method : nullptr,
+                o.parser.isSet(o.iblSamples) ? &samples : nullptr, project.environment, error))
+            return std::nullopt;
+    }
     if (o.parser.isSet(o.size)
         && !parseImageSize(QStringLiteral("size"), o.parser.value(o.size), 1, kMaxImageSide, &request.width,
             &request.height, error))
@@ -353,8 +373,20 @@ int runGpu(const RenderRequest& request)
         Renderer& renderer = frames.renderer();
         renderer.setTimingEnabled(request.printStats);
         const bool png = QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower() == QStringLiteral("png");
-        const std::optional<Image> image = frames.renderImage(*scene, request.width, request.height,
-            png ? FrameOutput::DisplayReferred : FrameOutput::LinearRadiance, &error);
+        // The noise estimate of a reference render covers the interior sphere pixels in the
+        // reference view (the pixels the accuracy metric reads), else every pixel.
+        std::vector<std::uint8_t> noiseMask;
+        if (request.referenceView) {
+            noiseMask.resize(std::size_t(request.width) * std::size_t(request.height));
+            for (int y = 0; y < request.height; ++y)
+                for (int x = 0; x < request.width; ++x)
+                    noiseMask[std::size_t(y) * std::size_t(request.width) + std::size_t(x)]
+                        = referenceview::isInteriorSpherePixel(x, y, request.width, request.height) ? 1 : 0;
+        }
+        FrameRenderer::ConvergedStats converged;
+        const std::optional<Image> image = frames.renderConverged(*scene, request.width, request.height,
+            png ? FrameOutput::DisplayReferred : FrameOutput::LinearRadiance, scene->sampling.samples, &error,
+            &converged, noiseMask);
         if (!image) {
             std::fprintf(stderr, "facet render: %s\n", error.c_str());
             return RenderCommand::kExitFailure;
@@ -368,6 +400,13 @@ int runGpu(const RenderRequest& request)
             const GLInfo& gl = context->info();
             std::printf("renderer: gpu\ngl: %s\ngl_renderer: %s\nsize: %dx%d\nquality: %s\n", gl.version.c_str(),
                         gl.renderer.c_str(), request.width, request.height, toString(project.environment.quality));
+            std::printf("ibl_method: %s\n", toString(project.environment.method));
+            if (project.environment.method != IblMethod::SplitSum) {
+                std::printf("ibl_samples: %d\ndraws: %d\nconverge_ms: %.1f\n", converged.samples, converged.draws,
+                            converged.seconds * 1000.0);
+                if (converged.noise)
+                    std::printf("noise: %.5f\n", *converged.noise);
+            }
             std::printf("load_ms: %.1f\n",
                         std::chrono::duration<double, std::milli>(loaded - start).count());
             std::printf("ibl_passes_run: %d\nibl_cache_hits_memory: %d\nibl_cache_hits_disk: %d\n", iblStats.passesRun,

@@ -62,6 +62,11 @@ struct Options {
         QStringLiteral("Row and column labels on a PNG sheet: on (default) or off."), QStringLiteral("on|off")};
     QCommandLineOption quality {
         QStringLiteral("quality"), QStringLiteral("IBL quality preset: draft, default, high."), QStringLiteral("preset")};
+    QCommandLineOption ibl {QStringLiteral("ibl"),
+        QStringLiteral("How the surface integrates the environment: split-sum or reference (see facet render)."),
+        QStringLiteral("method")};
+    QCommandLineOption iblSamples {
+        QStringLiteral("ibl-samples"), QStringLiteral("Samples per pixel for --ibl reference."), QStringLiteral("N")};
     QCommandLineOption referenceView {QStringLiteral("reference-view"),
         QStringLiteral("Every cell uses DESIGN.md's reference camera (unit sphere, camera at (0,0,3), 45 degree "
                        "FOV).")};
@@ -78,7 +83,7 @@ struct Options {
             "columns environments (or --wedge2). Each cell is what 'facet render' gives for that material "
             "and environment."));
         for (const QCommandLineOption* option : {&help, &materials, &envs, &wedge, &wedge2, &mesh, &cell, &labels,
-                 &quality, &referenceView, &stats, &output})
+                 &quality, &ibl, &iblSamples, &referenceView, &stats, &output})
             parser.addOption(*option);
         parser.addPositionalArgument(QStringLiteral("input"),
             QStringLiteral("A project file (JSON) or a glTF asset (.gltf, .glb); default: the built-in project."),
@@ -267,6 +272,13 @@ std::optional<SheetRequest> SheetCommand::parse(const QStringList& arguments, QS
             return std::nullopt;
         }
         request.project.environment.quality = *quality;
+    }
+    {
+        const QString method = o.parser.value(o.ibl);
+        const QString samples = o.parser.value(o.iblSamples);
+        if (!applyIblOptions(o.parser.isSet(o.ibl) ? &method : nullptr,
+                o.parser.isSet(o.iblSamples) ? &samples : nullptr, request.project.environment, error))
+            return std::nullopt;
     }
     if (o.parser.isSet(o.materials)) {
         QStringList items;
@@ -489,8 +501,8 @@ int SheetCommand::run(const SheetRequest& request)
             total.cacheHitsDisk += stats.cacheHitsDisk;
             total.msTotal += stats.msTotal;
             const auto cellStart = Clock::now();
-            auto image = frames.renderImage(*scene, request.cellWidth, request.cellHeight,
-                png ? FrameOutput::DisplayReferred : FrameOutput::LinearRadiance, &error);
+            auto image = frames.renderConverged(*scene, request.cellWidth, request.cellHeight,
+                png ? FrameOutput::DisplayReferred : FrameOutput::LinearRadiance, scene->sampling.samples, &error);
             if (!image)
                 return fail(error);
             renderMs += std::chrono::duration<double, std::milli>(Clock::now() - cellStart).count();
@@ -527,6 +539,7 @@ int SheetCommand::run(const SheetRequest& request)
         std::printf("renderer: gpu\ngl_renderer: %s\ncells: %zu (%zu x %zu)\ncell: %dx%d\nquality: %s\n",
             gl.renderer.c_str(), cells.size(), grid.rows.size(), grid.columns.size(), request.cellWidth,
             request.cellHeight, toString(request.project.environment.quality));
+        std::printf("ibl_method: %s\n", toString(request.project.environment.method));
         std::printf("environments_loaded: %d\nibl_environments_prepared: %d\nibl_passes_run: %d\nibl_cache_hits_memory: "
                     "%d\nibl_cache_hits_disk: %d\nibl_ms: %.1f\n",
             cache.environmentLoads(), prepared, total.passesRun, total.cacheHitsMemory, total.cacheHitsDisk,

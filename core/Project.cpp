@@ -36,6 +36,8 @@ constexpr std::pair<BackgroundMode, const char*> kBackgroundModes[]
         {BackgroundMode::Color, "color"}};
 constexpr std::pair<IblQuality, const char*> kIblQualities[]
     = {{IblQuality::Draft, "draft"}, {IblQuality::Default, "default"}, {IblQuality::High, "high"}};
+constexpr std::pair<IblMethod, const char*> kIblMethods[]
+    = {{IblMethod::SplitSum, "split-sum"}, {IblMethod::Reference, "reference"}};
 
 // ---- Value types <-> JSON ---------------------------------------------------------------
 
@@ -220,6 +222,12 @@ QJsonObject environmentToJson(const EnvironmentSettings& environment, const std:
     o[QLatin1String("rotationDegrees")] = environment.rotationDegrees;
     o[QLatin1String("intensity")] = environment.intensity;
     o[QLatin1String("quality")] = QLatin1String(toString(environment.quality));
+    // Written only when they say something: a split-sum project stays the file an older Facet
+    // wrote and reads (it would warn about unknown keys).
+    if (environment.method != IblMethod::SplitSum)
+        o[QLatin1String("method")] = QLatin1String(toString(environment.method));
+    if (environment.samples != 0)
+        o[QLatin1String("samples")] = environment.samples;
     return o;
 }
 
@@ -233,6 +241,8 @@ void readEnvironment(Messages& messages, const QJsonObject& object, const std::s
     r.number("rotationDegrees", environment.rotationDegrees);
     r.number("intensity", environment.intensity);
     r.enumeration("quality", environment.quality, kIblQualities);
+    r.enumeration("method", environment.method, kIblMethods);
+    r.integer("samples", environment.samples);
     r.warnAboutUnknownKeys();
 }
 
@@ -427,6 +437,22 @@ std::optional<IblQuality> iblQualityFromString(std::string_view name)
 {
     return enumFromName(kIblQualities, name);
 }
+const char* toString(IblMethod value)
+{
+    return enumName(kIblMethods, value);
+}
+std::optional<IblMethod> iblMethodFromString(std::string_view name)
+{
+    return enumFromName(kIblMethods, name);
+}
+int defaultIblSamples(IblMethod method)
+{
+    switch (method) {
+    case IblMethod::SplitSum: return 0;
+    case IblMethod::Reference: return 1024;
+    }
+    return 0;
+}
 
 // ---- Validation -------------------------------------------------------------------------
 
@@ -473,6 +499,14 @@ bool EnvironmentSettings::validate(std::string* problem) const
         return fail("rotationDegrees: must be finite", problem);
     if (!std::isfinite(intensity) || intensity < 0.0)
         return fail("intensity: " + number(intensity) + " must be a finite number >= 0", problem);
+    if (samples < 0 || samples > kMaxIblSamples)
+        return fail("samples: " + std::to_string(samples) + " must be 0 (the method's default) to "
+                        + std::to_string(kMaxIblSamples),
+                    problem);
+    if (samples != 0 && method == IblMethod::SplitSum)
+        return fail("samples: " + std::to_string(samples)
+                        + " given with the split-sum method, which takes no samples (use \"reference\")",
+                    problem);
     return true;
 }
 

@@ -51,6 +51,19 @@ enum class IblQuality { Draft, Default, High };
 const char* toString(IblQuality value); // "draft", "default", "high"
 std::optional<IblQuality> iblQualityFromString(std::string_view name);
 
+// How the surface integrates the environment's light (docs/rendering.md, "IBL methods"):
+// SplitSum: prefiltered radiance x DFG table, one lookup (the real-time default).
+// Reference: Monte Carlo with multiple importance sampling of the BRDF and the environment, the
+//   integral core/GroundTruth computes; converges as frames accumulate.
+enum class IblMethod { SplitSum, Reference };
+const char* toString(IblMethod value); // "split-sum", "reference"
+std::optional<IblMethod> iblMethodFromString(std::string_view name);
+// Samples per pixel an IblMethod may be asked for (--ibl-samples, environment.samples).
+inline constexpr int kMaxIblSamples = 65536;
+// The samples a method takes when none are given: Reference 1024 (its accuracy target's
+// count, docs/accuracy.md), the split sum none.
+int defaultIblSamples(IblMethod method);
+
 struct ViewSettings {
     // 2^20 either way covers a candle-lit room to the midday sun with room to spare.
     static constexpr double kMinExposureEV = -20.0;
@@ -84,6 +97,10 @@ struct EnvironmentSettings {
     double rotationDegrees = 0.0; // about +Y (DESIGN.md)
     double intensity = 1.0; // linear radiance multiplier, >= 0 (the UI shows log2 as EV)
     IblQuality quality = IblQuality::Default;
+    IblMethod method = IblMethod::SplitSum;
+    // Samples per pixel for Reference, 1..kMaxIblSamples; 0: the method's default. The
+    // split sum takes none (validate() refuses a count with it).
+    int samples = 0;
 
     // On failure: "<field>: <problem>" (the caller prefixes "environment.").
     bool validate(std::string* problem) const;

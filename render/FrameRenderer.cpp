@@ -3,15 +3,22 @@
 #include <epoxy/gl.h>
 
 #include "core/ProjectAssets.h"
+#include "render/FrameAccumulator.h"
 #include "render/IblSettings.h"
 #include "render/Renderer.h"
 #include "render/TextureCache.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <utility>
 
 namespace facet {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+} // namespace
 
 FrameRenderer::FrameRenderer(const QString& cacheDirectory, bool useDiskCache)
     : FrameRenderer(std::make_shared<IblPrecompute>(cacheDirectory, useDiskCache))
@@ -30,6 +37,7 @@ FrameRenderer::~FrameRenderer()
     // GL objects go while the caller holds the context current: targets and the renderer's
     // objects first, then the precompute (when this was its last holder).
     m_targets.clear();
+    m_accumulator.reset();
     m_renderer.reset();
     m_precompute.reset();
 }
@@ -68,9 +76,21 @@ std::optional<RenderScene> FrameRenderer::prepare(const Project& project, const 
     if (!ibl)
         return std::nullopt;
     RenderScene scene = sceneFromProject(project, assets, ibl, options);
-    if (!addDfgTables(settings, scene, stats, error))
+    if (!addDfgTables(settings, scene, stats, error) || !addEnvironmentSource(assets.environment, scene, stats, error))
         return std::nullopt;
     return scene;
+}
+
+bool FrameRenderer::addEnvironmentSource(
+    const Environment& environment, RenderScene& scene, IblStats* stats, std::string* error)
+{
+    if (scene.sampling.method != IblMethod::Reference)
+        return true;
+    const auto source = m_precompute->source(environment, stats, error);
+    if (!source)
+        return false;
+    scene.environment.setSource(source);
+    return true;
 }
 
 Framebuffer* FrameRenderer::target(
@@ -105,6 +125,54 @@ std::optional<Image> FrameRenderer::renderImage(const RenderScene& scene, int wi
     // The viewport's own display transform, on the GPU.
     Framebuffer* display = target(width, height, FramebufferFormat::RGBA16F, 1, error);
     if (!display || !m_renderer->toneMap(*hdr, *display, scene.view, error))
+        return std::nullopt;
+    Image image = display->readPixels();
+    image.setEncoding(ColorEncoding::SRGB);
+    return image;
+}
+
+std::optional<Image> FrameRenderer::renderConverged(const RenderScene& scene, int width, int height,
+    FrameOutput output, int samples, std::string* error, ConvergedStats* stats,
+    const std::vector<std::uint8_t>& noiseMask, FramebufferFormat format)
+{
+    const Clock::time_point start = Clock::now();
+    ConvergedStats ignored;
+    if (!stats)
+        stats = &ignored;
+    *stats = {};
+    if (scene.sampling.method != IblMethod::Reference) {
+        auto image = renderImage(scene, width, height, output, error, format);
+        stats->draws = 1;
+        stats->seconds = secondsSince(start);
+        return image;
+    }
+    if (!m_accumulator)
+        m_accumulator = std::make_unique<FrameAccumulator>();
+    Framebuffer* frame = target(width, height, FramebufferFormat::RGBA32F, 0, error);
+    if (!frame || !m_accumulator->reset(width, height, error))
+        return std::nullopt;
+    RenderScene draw = scene;
+    draw.view.msaaSamples = 1; // a draw's pixel is its centre's samples: no resolve mixes them
+    samples = std::max(samples, 1);
+    for (int done = 0; done < samples;) {
+        draw.sampling.sampleBase = done;
+        draw.sampling.samples = std::min(kSamplesPerDraw, samples - done);
+        if (!m_renderer->render(draw, *frame, error) || !m_accumulator->add(*frame, draw.sampling.samples, error))
+            return std::nullopt;
+        done += draw.sampling.samples;
+    }
+    // The resolved mean goes back into the frame target (the sums are separate textures).
+    if (!m_accumulator->resolve(*frame, error))
+        return std::nullopt;
+    glFinish();
+    stats->samples = m_accumulator->samples();
+    stats->draws = m_accumulator->draws();
+    stats->seconds = secondsSince(start);
+    stats->noise = m_accumulator->noise(noiseMask);
+    if (output == FrameOutput::LinearRadiance)
+        return frame->readPixels();
+    Framebuffer* display = target(width, height, FramebufferFormat::RGBA16F, 1, error);
+    if (!display || !m_renderer->toneMap(*frame, *display, scene.view, error))
         return std::nullopt;
     Image image = display->readPixels();
     image.setEncoding(ColorEncoding::SRGB);

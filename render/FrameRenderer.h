@@ -30,13 +30,17 @@
 
 #include <QString>
 
+#include <cstdint>
 #include <list>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace facet {
 
+class Environment;
+class FrameAccumulator;
 class Renderer;
 class TextureCache;
 struct IblSettings;
@@ -86,10 +90,30 @@ public:
         const Environment& environment, const IblSettings& settings, IblStats* stats, std::string* error);
     bool addDfgTables(const IblSettings& settings, RenderScene& scene, IblStats* stats, std::string* error);
 
+    // The environment at source resolution (IblPrecompute::source) put into `scene` when its
+    // method reads it (IblMethod::Reference); prepare() calls it. False with *error on failure.
+    bool addEnvironmentSource(const Environment& environment, RenderScene& scene, IblStats* stats, std::string* error);
+
     // Renders `scene` into a width x height target of `format` and reads it back (top row first).
     // nullopt with *error set by the step that failed ("Framebuffer::create: ...", "Renderer::render: ...").
     std::optional<Image> renderImage(const RenderScene& scene, int width, int height, FrameOutput output,
         std::string* error, FramebufferFormat format = FramebufferFormat::RGBA16F);
+
+    // What renderConverged() did.
+    struct ConvergedStats {
+        int samples = 0; // per pixel
+        int draws = 0;
+        double seconds = 0.0; // wall time of the draws, glFinish'ed
+        std::optional<double> noise; // FrameAccumulator::noise over `noiseMask`; unset for one draw
+    };
+    // renderImage() for any method: a Reference scene is drawn in draws of at most
+    // kSamplesPerDraw samples ([0, samples) of each pixel's sequence, scene.sampling's
+    // sampleBase and samples replaced) into RGBA32F targets summed by a FrameAccumulator, then
+    // resolved and read back; other scenes are one renderImage() into a target of `format`.
+    static constexpr int kSamplesPerDraw = 64;
+    std::optional<Image> renderConverged(const RenderScene& scene, int width, int height, FrameOutput output,
+        int samples, std::string* error, ConvergedStats* stats = nullptr,
+        const std::vector<std::uint8_t>& noiseMask = {}, FramebufferFormat format = FramebufferFormat::RGBA16F);
 
     // Renders `scene` at `scale` in (0, 1] of `rect`'s size and writes its display transform into
     // `rect` of `framebuffer` (0: the default one, e.g. a widget's): at scale 1 over the whole
@@ -127,6 +151,7 @@ private:
     };
     std::shared_ptr<IblPrecompute> m_precompute;
     std::unique_ptr<Renderer> m_renderer;
+    std::unique_ptr<FrameAccumulator> m_accumulator;
     std::list<PooledTarget> m_targets; // most recently used first
     int m_lastWidth = 0;
     int m_lastHeight = 0;

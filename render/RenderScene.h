@@ -24,6 +24,7 @@
 #include "core/Project.h"
 #include "core/ShadingModel.h"
 #include "render/DfgLut.h"
+#include "render/EnvironmentSource.h"
 #include "render/IblTextures.h"
 
 namespace facet {
@@ -39,8 +40,17 @@ struct RenderMapImage {
 
 // One split-sum DFG table as the renderer binds it (render/DfgLut.h has the layout).
 struct DfgLutBinding {
-    unsigned texture = 0; // GL_TEXTURE_2D, RGB = scale, bias, E (core/DfgTable.h layout), LINEAR; 0: none
+    unsigned texture = 0; // GL_TEXTURE_2D, RGBA = scale, bias, E, W (core/DfgTable.h layout), LINEAR; 0: none
     int size = 0;
+};
+
+// The environment at source resolution and its sampling tables (render/EnvironmentSource.h), as
+// GL names: what IblMethod::Reference reads instead of the cubes.
+struct EnvironmentSourceBinding {
+    unsigned radiance = 0; // GL_RGB32F equirect; 0: none (the scene cannot use those methods)
+    unsigned conditionalCdf = 0;
+    unsigned marginalCdf = 0;
+    unsigned pdf = 0;
 };
 
 // The IBL textures of the environment (render/IblTextures.h, made by render/IblPrecompute), as
@@ -61,8 +71,18 @@ struct EnvironmentLighting {
     std::array<glm::vec3, 9> irradianceSH {}; // premultiplied c_i A_l of the UNROTATED environment
     double rotationDegrees = 0.0; // about +Y (Environment::toImageFrame)
     double intensity = 1.0;       // linear radiance multiplier
+    EnvironmentSourceBinding source;
+    // The source textures of IblPrecompute::source(), bound and kept alive.
+    void setSource(const std::shared_ptr<const EnvironmentSourceTextures>& made)
+    {
+        sourceTextures = made;
+        source = made ? EnvironmentSourceBinding {made->radiance.id(), made->conditionalCdf.id(), made->marginalCdf.id(),
+                                                  made->pdf.id()}
+                      : EnvironmentSourceBinding {};
+    }
     // Keep the textures above alive while the scene is held (optional).
     std::shared_ptr<const IblTextures> textures;
+    std::shared_ptr<const EnvironmentSourceTextures> sourceTextures;
     std::array<std::shared_ptr<const DfgLut>, kVisibilityCount> dfgTables {};
 
     // The table for materials of visibility term `visibility`; null when the scene has none.
@@ -123,6 +143,18 @@ struct RenderPart {
     bool visible = true;
 };
 
+// How a draw integrates the environment (core/Project.h IblMethod). Reference draws take samples
+// [sampleBase, sampleBase + samples) of each pixel's sequence (shifted Sobol' points: any split of
+// a run into draws gives the same points, core/Sampling.h), so frames accumulated by
+// render/FrameAccumulator converge as one long run would.
+struct IblSampling {
+    IblMethod method = IblMethod::SplitSum;
+    int samples = 1;
+    int sampleBase = 0;
+    std::uint32_t seed = 0;
+    bool operator==(const IblSampling&) const = default;
+};
+
 struct RenderScene {
     std::shared_ptr<const Mesh> mesh; // drawn with the model matrix; null: background only
     std::uint64_t meshKey = 0;        // content key: a new key re-uploads, the same key never does
@@ -134,6 +166,7 @@ struct RenderScene {
     std::vector<Light> lights; // enabled ones are drawn, at most kMaxPunctualLights
     Camera camera;
     EnvironmentLighting environment;
+    IblSampling sampling;
     // exposureEV, toneMapper, displayEncoding, gamma (tone-map pass); debugView, msaaSamples,
     // background, backgroundColor, backgroundBlurRoughness (surface pass).
     ViewSettings view;

@@ -30,6 +30,12 @@ constexpr int kDfgUnit = kMapUnit0 + kMapSlotCount;
 constexpr int kPrefilteredUnit = kDfgUnit + 1;
 constexpr int kIrradianceUnit = kDfgUnit + 2;
 constexpr int kEnvironmentUnit = kDfgUnit + 3;
+// IblMethod::Reference: the source equirect and its sampling tables (units 10-13; GL 4.1
+// guarantees 16 in the fragment stage).
+constexpr int kSourceRadianceUnit = kDfgUnit + 4;
+constexpr int kSourceConditionalUnit = kDfgUnit + 5;
+constexpr int kSourceMarginalUnit = kDfgUnit + 6;
+constexpr int kSourcePdfUnit = kDfgUnit + 7;
 
 constexpr std::array<const char*, kMapSlotCount> kMapSamplers
     = {"uBaseColorMap", "uNormalMap", "uMetallicMap", "uRoughnessMap", "uOcclusionMap", "uEmissiveMap"};
@@ -137,6 +143,8 @@ SurfaceVariantKey Renderer::variantKeyFor(const RenderScene& scene, int material
     key.features
         = surfaceFeaturesFor(material.material, hasImage, enabledLightCount(scene) > 0, scene.environment.useSH);
     key.features |= sharedTexelFeatures(material.material, key.features, textures);
+    if (scene.sampling.method == IblMethod::Reference)
+        key.features = key.features | SurfaceFeature::IblReference;
     key.debugView = debugViewFromString(scene.view.debugView).value_or(DebugView::None);
     return key;
 }
@@ -219,6 +227,12 @@ bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::str
                     + "' of its material (EnvironmentLighting::setDfgLut, addDfgTables)";
             return false;
         }
+    if (scene.sampling.method == IblMethod::Reference && scene.mesh && !scene.environment.source.radiance) {
+        if (error)
+            *error = "Renderer::render: the reference method needs the environment at source resolution "
+                     "(EnvironmentLighting::source, IblPrecompute::source)";
+        return false;
+    }
     const int width = hdrTarget.width();
     const int height = hdrTarget.height();
     const bool fullFloat = hdrTarget.format() == FramebufferFormat::RGBA32F;
@@ -344,6 +358,21 @@ void Renderer::setFrameUniforms(const ShaderProgram& program, const SurfaceVaria
     }
     setMat3(program, "uEnvironmentRotation", environmentRotation(env.rotationDegrees));
     program.setFloat("uEnvironmentIntensity", float(env.intensity));
+    if (hasFeature(key.features, SurfaceFeature::IblReference)) {
+        const std::pair<int, unsigned> sources[] = {{kSourceRadianceUnit, env.source.radiance},
+            {kSourceConditionalUnit, env.source.conditionalCdf}, {kSourceMarginalUnit, env.source.marginalCdf},
+            {kSourcePdfUnit, env.source.pdf}};
+        const char* const names[] = {"uEnvironmentSource", "uEnvironmentConditionalCdf", "uEnvironmentMarginalCdf",
+            "uEnvironmentPdf"};
+        for (std::size_t i = 0; i < std::size(sources); ++i) {
+            glActiveTexture(GLenum(GL_TEXTURE0 + sources[i].first));
+            glBindTexture(GL_TEXTURE_2D, sources[i].second);
+            program.setInt(names[i], sources[i].first);
+        }
+        program.setInt("uIblSampleBase", scene.sampling.sampleBase);
+        program.setInt("uIblSamples", std::max(scene.sampling.samples, 1));
+        program.setInt("uIblSeed", int(scene.sampling.seed)); // the shader reads the bits as uint
+    }
 
     // Punctual lights (KHR_lights_punctual units), enabled ones, at most kMaxPunctualLights.
     if (hasFeature(key.features, SurfaceFeature::HasPunctualLights)) {

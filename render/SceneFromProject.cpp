@@ -5,6 +5,7 @@
 
 #include "core/Brdf.h"
 #include "core/DfgTable.h"
+#include "core/GroundTruth.h"
 #include "core/MaterialBrdf.h"
 #include "core/Project.h"
 #include "core/ProjectAssets.h"
@@ -13,11 +14,18 @@
 
 namespace facet {
 
-double dielectricAverageAlbedoFor(const Material& material)
+double dielectricAverageAlbedoFor(const Material& material, IblMethod method)
 {
     const ShadingModel& shading = material.shading;
     if (shading.coupling != DielectricCoupling::EnergyPreserving)
         return 0.0;
+    if (method == IblMethod::Reference) {
+        // The ground truth's own albedo table (core/GroundTruth), so the reference method
+        // integrates the same BRDF as `facet render --spp`.
+        const GroundTruthSettings truth;
+        const MaterialBrdf brdf(shading, *albedoTable(truth.albedoTableSize, truth.albedoTableSamples, shading.visibility));
+        return brdf.dielectricSpecularAverageAlbedo(shading::f0FromIor(material.ior), material.roughness());
+    }
     // One 32 x 32 table per visibility term for the process: E_s,avg is an integral over n.v, so
     // the table's resolution is ample (docs/energy.md).
     static std::mutex mutex;
@@ -34,11 +42,23 @@ double dielectricAverageAlbedoFor(const Material& material)
     return brdf.dielectricSpecularAverageAlbedo(shading::f0FromIor(material.ior), material.roughness());
 }
 
+IblSettings dfgSettingsFor(const IblSettings& settings, IblMethod method)
+{
+    IblSettings s = settings;
+    if (method == IblMethod::Reference) {
+        const GroundTruthSettings truth;
+        s.dfgSize = truth.albedoTableSize;
+        s.dfgSamples = truth.albedoTableSamples;
+    }
+    return s;
+}
+
 bool addDfgTables(IblPrecompute& precompute, const IblSettings& settings, RenderScene& scene, IblStats* stats,
     std::string* error)
 {
+    const IblSettings tableSettings = dfgSettingsFor(settings, scene.sampling.method);
     for (Visibility visibility : dfgVisibilitiesFor(scene)) {
-        const std::shared_ptr<const DfgLut> table = precompute.dfgTable(settings, visibility, stats, error);
+        const std::shared_ptr<const DfgLut> table = precompute.dfgTable(tableSettings, visibility, stats, error);
         if (!table)
             return false;
         scene.environment.setDfgLut(table);
@@ -56,7 +76,7 @@ RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets
     for (std::size_t m = 0; m < project.materials.size(); ++m) {
         RenderMaterial& material = scene.materials[m];
         material.material = project.materials[m];
-        material.dielectricAverageAlbedo = dielectricAverageAlbedoFor(material.material);
+        material.dielectricAverageAlbedo = dielectricAverageAlbedoFor(material.material, project.environment.method);
         if (m >= assets.maps.size())
             continue; // not loaded (yet): the factors alone
         for (MapSlot slot : kAllMapSlots) {
@@ -68,6 +88,9 @@ RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets
     for (const MeshPart& part : project.parts)
         scene.parts.push_back(RenderPart {part.material, part.visible});
     scene.lights = project.lights;
+    scene.sampling.method = project.environment.method;
+    scene.sampling.samples = project.environment.samples > 0 ? project.environment.samples
+                                                             : defaultIblSamples(project.environment.method);
     scene.view = project.view;
     scene.camera = project.camera;
     if (options.referenceView) {

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "render/IblSettings.h"
 #include "render/RenderScene.h"
 
 namespace facet {
@@ -14,7 +15,6 @@ struct Material;
 struct Project;
 struct ProjectAssets;
 struct IblTextures;
-struct IblSettings;
 struct IblStats;
 class IblPrecompute;
 
@@ -37,8 +37,14 @@ SceneOptions sceneOptionsFor(const IblSettings& settings, bool referenceView);
 RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets,
                              const std::shared_ptr<const IblTextures>& ibl, const SceneOptions& options = {});
 
+// The DFG table settings a frame of `method` uses: `settings`' for the split sum; for Reference the
+// ground truth's albedo table size and samples (GroundTruthSettings: 64^2 x 2048), so that the
+// multiple-scattering and coupling terms read the E the truth reads.
+IblSettings dfgSettingsFor(const IblSettings& settings, IblMethod method);
+
 // Puts into scene.environment the split-sum DFG table of every visibility term the scene's
-// materials use (dfgVisibilitiesFor), from `precompute` (memory, disk, or one GPU pass each), so
+// materials use (dfgVisibilitiesFor), at dfgSettingsFor(settings, scene.sampling.method), from
+// `precompute` (memory, disk, or one GPU pass each), so
 // that Renderer::render finds the table of each material's own variant. Needs the precompute's
 // GL context current. `stats` (optional) is added to (IblStats). False with *error
 // ("IblPrecompute::dfgTable: ...") when a table cannot be made.
@@ -46,7 +52,8 @@ bool addDfgTables(IblPrecompute& precompute, const IblSettings& settings, Render
     std::string* error);
 
 // The dielectric layer's average albedo E_s,avg of `material` (0 unless it uses the
-// energy-preserving coupling); cheap after the first call per visibility term.
-double dielectricAverageAlbedoFor(const Material& material);
+// energy-preserving coupling); cheap after the first call per visibility term. Reference frames
+// take it from the ground truth's albedo table, the others from a 32^2 x 512 one.
+double dielectricAverageAlbedoFor(const Material& material, IblMethod method = IblMethod::SplitSum);
 
 } // namespace facet

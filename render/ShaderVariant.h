@@ -51,8 +51,11 @@ enum class SurfaceFeature : uint32_t {
     RoughnessTexelFromMetallic = 1u << 17, // ROUGHNESS_TEXEL_FROM_METALLIC
     OcclusionTexelFromMetallic = 1u << 18, // OCCLUSION_TEXEL_FROM_METALLIC
     OcclusionTexelFromRoughness = 1u << 19, // OCCLUSION_TEXEL_FROM_ROUGHNESS
+    // IBL_REFERENCE: the environment by Monte Carlo (IblMethod::Reference, ibl_reference.glsl)
+    // from the source equirect and its sampling tables, instead of the split sum's cubes.
+    IblReference = 1u << 20,
 };
-inline constexpr int kSurfaceFeatureBits = 20;
+inline constexpr int kSurfaceFeatureBits = 21;
 
 using SurfaceFeatures = uint32_t;
 inline constexpr SurfaceFeatures operator|(SurfaceFeature a, SurfaceFeature b) { return uint32_t(a) | uint32_t(b); }

@@ -103,6 +103,8 @@ Project everythingChanged(const QString& root)
     p.environment.rotationDegrees = 123.5;
     p.environment.intensity = 0.125;
     p.environment.quality = IblQuality::High;
+    p.environment.method = IblMethod::Reference;
+    p.environment.samples = 48;
 
     Light sun;
     sun.name = "Sun";
@@ -233,6 +235,9 @@ private Q_SLOTS:
             QCOMPARE(toString(*backgroundModeFromString(name)), name);
         for (const char* name : {"draft", "default", "high"})
             QCOMPARE(toString(*iblQualityFromString(name)), name);
+        for (const char* name : {"split-sum", "reference"})
+            QCOMPARE(toString(*iblMethodFromString(name)), name);
+        QVERIFY(!iblMethodFromString("splitsum"));
         QVERIFY(!toneMapperFromString("filmic"));
     }
 
@@ -600,6 +605,16 @@ private Q_SLOTS:
             << minimalWith(R"("environment": {"intensity": -1})") << QStringLiteral("environment.intensity");
         QTest::newRow("unknown quality") << minimalWith(R"("environment": {"quality": "ultra"})")
                                          << QStringLiteral("environment.quality: unknown name \"ultra\"");
+        QTest::newRow("unknown method") << minimalWith(R"("environment": {"method": "path-tracing"})")
+                                        << QStringLiteral("environment.method: unknown name \"path-tracing\"");
+        QTest::newRow("negative samples") << minimalWith(R"("environment": {"method": "reference", "samples": -4})")
+                                          << QStringLiteral("environment.samples: -4 must be 0");
+        QTest::newRow("too many samples")
+            << minimalWith(R"("environment": {"method": "reference", "samples": 65537})")
+            << QStringLiteral("environment.samples: 65537 must be 0 (the method's default) to 65536");
+        QTest::newRow("samples with the split sum")
+            << minimalWith(R"("environment": {"samples": 64})")
+            << QStringLiteral("environment.samples: 64 given with the split-sum method");
         // Qt's parser refuses numbers beyond double range, so no infinity reaches the model.
         QTest::newRow("huge number") << minimalWith(R"("environment": {"rotationDegrees": 1e999})")
                                      << QStringLiteral("line 1, column 83: illegal number");

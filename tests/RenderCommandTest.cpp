@@ -384,6 +384,33 @@ private Q_SLOTS:
                 }
     }
 
+    // --ibl reference: the GPU integrator, converging over draws of at most 64 samples; --stats
+    // says what ran. 100 samples are two draws (64 + 36), so both half-buffers hold samples and
+    // the noise estimate exists. Its accuracy against the ground truth is ReferenceGLTest's.
+    void referenceMethodRenders()
+    {
+        const QString out = path(QStringLiteral("reference.exr"));
+        const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--env"), QStringLiteral("sky"),
+                                   QStringLiteral("--ibl"), QStringLiteral("reference"), QStringLiteral("--ibl-samples"),
+                                   QStringLiteral("100"), QStringLiteral("--reference-view"), QStringLiteral("--quality"),
+                                   QStringLiteral("draft"), QStringLiteral("--size"), QStringLiteral("16x16"),
+                                   QStringLiteral("--stats"), QStringLiteral("-o"), out});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        for (const char* line : {"ibl_method: reference\n", "ibl_samples: 100\n", "draws: 2\n", "noise: "})
+            QVERIFY2(r.out.contains(QLatin1String(line)), qPrintable(r.out));
+        std::string error;
+        const auto image = Image::load(out.toStdString(), &error);
+        QVERIFY2(image, error.c_str());
+        const glm::vec4 centre = image->at(8, 8);
+        QVERIFY2(centre.r > 0.0f && std::isfinite(centre.r), qPrintable(QString::number(double(centre.r))));
+        // The split sum stays the default and prints no sample count.
+        const Result splitSum = runFacet({QStringLiteral("render"), QStringLiteral("--size"), QStringLiteral("8x8"),
+                                          QStringLiteral("--stats"), QStringLiteral("-o"), path(QStringLiteral("ss.exr"))});
+        QVERIFY2(splitSum.exitCode == 0, qPrintable(splitSum.err));
+        QVERIFY(splitSum.out.contains(QLatin1String("ibl_method: split-sum\n")));
+        QVERIFY(!splitSum.out.contains(QLatin1String("ibl_samples:")));
+    }
+
     void pngIsDisplayReferred()
     {
         const QString out = path(QStringLiteral("shot.png"));
@@ -472,6 +499,21 @@ private Q_SLOTS:
         QTest::newRow("project's unknown debug view")
             << QStringList{QStringLiteral("render"), path(QStringLiteral("projects/bad-view.json")), QStringLiteral("-o"), out}
             << 1 << QStringLiteral("bad-view.json: view.debugView: unknown debug view \"bogus\" (expected one of: none, ");
+        QTest::newRow("ibl method") << QStringList{QStringLiteral("render"), QStringLiteral("--ibl"),
+                                                   QStringLiteral("path-tracing"), QStringLiteral("-o"), out}
+                                    << 2 << QStringLiteral("--ibl: 'path-tracing' is not split-sum or reference");
+        QTest::newRow("ibl samples zero") << QStringList{QStringLiteral("render"), QStringLiteral("--ibl"),
+                                                         QStringLiteral("reference"), QStringLiteral("--ibl-samples"),
+                                                         QStringLiteral("0"), QStringLiteral("-o"), out}
+                                          << 2 << QStringLiteral("--ibl-samples: '0' is not a whole number from 1 to 65536");
+        QTest::newRow("ibl samples with the split sum")
+            << QStringList{QStringLiteral("render"), QStringLiteral("--ibl-samples"), QStringLiteral("64"),
+                           QStringLiteral("-o"), out}
+            << 2 << QStringLiteral("--ibl-samples: 64 given with --ibl split-sum");
+        QTest::newRow("ibl with spp") << QStringList{QStringLiteral("render"), QStringLiteral("--ibl"),
+                                                     QStringLiteral("reference"), QStringLiteral("--spp"),
+                                                     QStringLiteral("16"), QStringLiteral("-o"), out}
+                                      << 2 << QStringLiteral("give one or the other");
         QTest::newRow("ground truth mesh") << QStringList{QStringLiteral("render"), QStringLiteral("--mesh"),
                                                           QStringLiteral("cube"), QStringLiteral("--spp"),
                                                           QStringLiteral("4"), QStringLiteral("-o"), out}

@@ -1,4 +1,6 @@
-// Image-based lighting by the split sum [Karis 2013], from the textures of render/IblTextures
+// Image-based lighting. environmentLobes() dispatches on the IBL method's variant bit
+// (render/ShaderVariant.h): IBL_REFERENCE integrates by Monte Carlo (ibl_reference.glsl);
+// otherwise the split sum [Karis 2013], from the textures of render/IblTextures
 // (prefiltered specular cubemap, irradiance cubemap storing E or 9 premultiplied SH
 // coefficients, DFG LUT). Twin: core/SplitSum.h splitSumRadiance(); docs/rendering.md gives the
 // formulas. Lookups turn world directions into the environment image's frame
@@ -66,7 +68,7 @@ vec3 irradiance(vec3 n)
 // LearnOpenGL: F0 = mix(F0_d, c, m), specular = spec(F0), w_d = (1 - F0) W(n.v) (1 - m) (kD =
 //        (1 - F(v.h)) (1 - m) per direction) or (1 - E_s(n.v)) (1 - m) (energy preserving).
 // W(n.v) is the DFG table's alpha (core/DfgTable.h).
-BrdfLobes environmentLobes(MaterialInfo m, vec3 n, vec3 v)
+BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
 {
     BrdfLobes lobes;
     float NoV = clamp(dot(n, v), 0.0, 1.0);
@@ -101,3 +103,16 @@ BrdfLobes environmentLobes(MaterialInfo m, vec3 n, vec3 v)
     return lobes;
 }
 
+#ifdef IBL_REFERENCE
+#include "ibl_reference.glsl"
+#endif
+
+// The environment's light leaving towards v, per lobe, before ambient occlusion.
+BrdfLobes environmentLobes(MaterialInfo m, vec3 n, vec3 v)
+{
+#ifdef IBL_REFERENCE
+    return referenceEnvironmentLobes(m, n, v);
+#else
+    return splitSumEnvironmentLobes(m, n, v);
+#endif
+}

@@ -4,6 +4,7 @@
 
 #include "core/Project.h"
 #include "core/ProjectAssets.h"
+#include "core/ReferenceView.h"
 #include "render/FrameRenderer.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblSettings.h"
@@ -60,13 +61,24 @@ std::optional<RenderScene> ReferenceViewRenderer::prepareScene(
 }
 
 std::optional<Image> ReferenceViewRenderer::render(
-    const Project& project, const std::string& preset, int size, std::string* error)
+    const Project& project, const std::string& preset, int size, std::string* error, std::optional<double>* noise)
 {
     const auto scene = prepareScene(project, preset, error);
     if (!scene)
         return std::nullopt;
-    return m_state->frames->renderImage(
-        *scene, size, size, FrameOutput::LinearRadiance, error, FramebufferFormat::RGBA32F);
+    // The noise estimate over the pixels the accuracy metric reads.
+    std::vector<std::uint8_t> mask(std::size_t(size) * std::size_t(size));
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            mask[std::size_t(y) * std::size_t(size) + std::size_t(x)]
+                = referenceview::isInteriorSpherePixel(x, y, size, size) ? 1 : 0;
+    FrameRenderer::ConvergedStats stats;
+    auto image = m_state->frames->renderConverged(
+        *scene, size, size, FrameOutput::LinearRadiance, scene->sampling.samples, error, &stats, mask,
+        FramebufferFormat::RGBA32F);
+    if (noise)
+        *noise = stats.noise;
+    return image;
 }
 
 std::optional<Image> ReferenceViewRenderer::renderAsCommand(

@@ -28,9 +28,11 @@ public:
     bool initialize(std::string* error);
 
     // Linear radiance (RGBA32F read back) of `project`'s reference view, size x size, with the IBL
-    // preset `preset` ("draft", "default", "high"). nullopt with *error on any failure.
-    std::optional<Image> render(
-        const Project& project, const std::string& preset, int size, std::string* error);
+    // preset `preset` ("draft", "default", "high"), by the project's IBL method at its samples
+    // (FrameRenderer::renderConverged). `noise` (optional): the accumulation's noise estimate over
+    // the interior sphere pixels (unset for the split sum). nullopt with *error on any failure.
+    std::optional<Image> render(const Project& project, const std::string& preset, int size, std::string* error,
+                                std::optional<double>* noise = nullptr);
     // The same through `facet render --reference-view`'s own path: a fresh surface renderer (every
     // map and the mesh uploaded in this frame, as after opening a project), an RGBA16F target
     // read back by FrameRenderer::renderImage.

@@ -1,0 +1,123 @@
+// IblMethod::Reference: the environment's light by Monte Carlo, the GLSL twin of the loop of
+// core/GroundTruth.cpp integrateOutgoingRadiance (same integrand, same strategies, same weights):
+// each sample draws one direction from the BRDF (the lobe picked by specularSelectionProbability,
+// then visible-normal GGX [Heitz 2018] or cosine) and one from the environment's luminance tables
+// (environment_sampling.glsl), combined by the power heuristic [Veach 1997, ch. 9]; f is
+// evaluateBrdf(), the material's own composition, and the radiance is the source equirect read
+// as Environment::radiance reads it. The points differ from the CPU's: sample s of a pixel is the
+// shifted Sobol' point shiftedSobol2D(s, shift) with one Cranley-Patterson shift per pixel, seed
+// and strategy, so draws of k samples at increasing sampleBase add up to one longer run
+// (render/FrameAccumulator); the integral is the same.
+#include "common_sampling.glsl"
+#include "environment_sampling.glsl"
+
+uniform int uIblSampleBase;
+uniform int uIblSamples;
+uniform int uIblSeed; // bits of a uint32 (IblSampling::seed)
+
+const uint kStrategyBrdf = 0u;
+const uint kStrategyEnvironment = 1u;
+
+// Twin of GroundTruth.cpp specularSelectionProbability (Lobes::Material).
+float specularSelectionProbability(MaterialInfo m, float NoV)
+{
+    float metallic = saturate(m.metallic);
+    vec3 baseColor = max(m.baseColor, vec3(0.0));
+    vec3 f0 = mix(vec3(f0FromIor(m.ior)), baseColor, metallic);
+    const vec3 lum = vec3(0.2126, 0.7152, 0.0722);
+    float specular = dot(F_Schlick(f0, 1.0, NoV), lum);
+    float diffuse = dot(baseColor, lum) * (1.0 - metallic) * (1.0 - specular);
+    if (diffuse <= 0.0)
+        return 1.0;
+    return clamp(specular / (specular + diffuse), 0.1, 0.9);
+}
+
+float powerHeuristic(float pdfA, float pdfB)
+{
+    float a = pdfA * pdfA;
+    float b = pdfB * pdfB;
+    return a + b > 0.0 ? a / (a + b) : 0.0;
+}
+
+// The BRDF strategy's density for world direction l: the lobe mixture.
+float brdfSamplingPdf(vec3 n, vec3 v, vec3 l, float NoV, float alpha, float pSpecular)
+{
+    float NoL = dot(n, l);
+    if (NoL <= 0.0)
+        return 0.0;
+    float pdf = (1.0 - pSpecular) * pdfCosineHemisphere(NoL);
+    if (pSpecular > 0.0 && NoV > 0.0) {
+        float NoH = dot(n, normalize(v + l));
+        if (NoH > 0.0)
+            pdf += pSpecular * G1_SmithGGX(NoV, alpha) * D_GGX(NoH, alpha) / (4.0 * NoV);
+    }
+    return pdf;
+}
+
+bool isUsable(vec3 c) { return !any(isnan(c)) && !any(isinf(c)); }
+
+// Adds f L (n.l) w / pdf of direction l to the lobes; what is not finite is dropped, as on the CPU.
+void addContribution(inout BrdfLobes sum, MaterialInfo m, vec3 n, vec3 v, vec3 l, float weightOverPdf)
+{
+    BrdfLobes f = evaluateBrdf(m, n, v, l, false);
+#if DEBUG_VIEW == DEBUG_WHITE_FURNACE
+    vec3 radiance = vec3(1.0);
+#else
+    vec3 radiance = environmentRadiance(l);
+#endif
+    vec3 scale = radiance * (dot(n, l) * weightOverPdf);
+    vec3 diffuse = f.diffuse * scale;
+    vec3 specular = f.specular * scale;
+    if (isUsable(diffuse) && isUsable(specular)) {
+        sum.diffuse += diffuse;
+        sum.specular += specular;
+    }
+}
+
+// The mean of samples [uIblSampleBase, uIblSampleBase + uIblSamples) of this pixel, per lobe.
+BrdfLobes referenceEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
+{
+    BrdfLobes sum;
+    sum.diffuse = vec3(0.0);
+    sum.specular = vec3(0.0);
+    float NoV = dot(n, v);
+    if (NoV < 0.0)
+        return sum; // evaluateBrdf's rule: nothing is seen from below the surface
+    float alpha = alphaFromRoughness(m.perceptualRoughness);
+    float pSpecular = specularSelectionProbability(m, min(NoV, 1.0));
+    vec3 t;
+    vec3 b;
+    buildOrthonormalBasis(n, t, b);
+    vec3 vLocal = vec3(dot(v, t), dot(v, b), NoV);
+    uvec2 pixel = uvec2(gl_FragCoord.xy);
+    uvec2 brdfShift = cranleyPattersonShift(pixel.x, pixel.y, uint(uIblSeed), kStrategyBrdf);
+    uvec2 environmentShift = cranleyPattersonShift(pixel.x, pixel.y, uint(uIblSeed), kStrategyEnvironment);
+    const float belowOne = 0.99999994;
+    int count = max(uIblSamples, 1);
+    for (int i = 0; i < count; ++i) {
+        uint s = uint(uIblSampleBase + i);
+        // BRDF strategy: the first coordinate picks the lobe and is stretched back to [0, 1).
+        vec2 u = shiftedSobol2D(s, brdfShift);
+        vec3 l;
+        if (u.x < pSpecular) {
+            u.x = min(u.x / pSpecular, belowOne);
+            l = tangentToWorld(reflectAbout(vLocal, importanceSampleVNDF(u, vLocal, alpha)), t, b, n);
+        } else {
+            u.x = min((u.x - pSpecular) / (1.0 - pSpecular), belowOne);
+            l = tangentToWorld(sampleCosineHemisphere(u), t, b, n);
+        }
+        float pdf = brdfSamplingPdf(n, v, l, NoV, alpha, pSpecular);
+        if (dot(n, l) > 0.0 && pdf > 0.0)
+            addContribution(sum, m, n, v, l, powerHeuristic(pdf, environmentPdf(l)) / pdf);
+        // Environment strategy.
+        float environmentDensity;
+        l = sampleEnvironment(shiftedSobol2D(s, environmentShift), environmentDensity);
+        if (dot(n, l) > 0.0 && environmentDensity > 0.0)
+            addContribution(sum, m, n, v, l,
+                            powerHeuristic(environmentDensity, brdfSamplingPdf(n, v, l, NoV, alpha, pSpecular))
+                                / environmentDensity);
+    }
+    sum.diffuse /= float(count);
+    sum.specular /= float(count);
+    return sum;
+}
