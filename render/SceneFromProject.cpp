@@ -69,6 +69,7 @@ bool addDfgTables(IblPrecompute& precompute, const IblSettings& settings, Render
 RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets,
                              const std::shared_ptr<const IblTextures>& ibl, const SceneOptions& options)
 {
+    const IblMethod method = options.iblMethod.value_or(project.environment.method);
     RenderScene scene;
     scene.mesh = assets.mesh;
     scene.meshKey = assets.meshKey;
@@ -76,7 +77,7 @@ RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets
     for (std::size_t m = 0; m < project.materials.size(); ++m) {
         RenderMaterial& material = scene.materials[m];
         material.material = project.materials[m];
-        material.dielectricAverageAlbedo = dielectricAverageAlbedoFor(material.material, project.environment.method);
+        material.dielectricAverageAlbedo = dielectricAverageAlbedoFor(material.material, method);
         if (m >= assets.maps.size())
             continue; // not loaded (yet): the factors alone
         for (MapSlot slot : kAllMapSlots) {
@@ -88,9 +89,10 @@ RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets
     for (const MeshPart& part : project.parts)
         scene.parts.push_back(RenderPart {part.material, part.visible});
     scene.lights = project.lights;
-    scene.sampling.method = project.environment.method;
-    scene.sampling.samples = project.environment.samples > 0 ? project.environment.samples
-                                                             : defaultIblSamples(project.environment.method);
+    scene.sampling.method = method;
+    scene.sampling.samples = project.environment.samples > 0 && method == project.environment.method
+        ? project.environment.samples
+        : defaultIblSamples(method);
     scene.view = project.view;
     scene.camera = project.camera;
     if (options.referenceView) {

@@ -4,6 +4,7 @@
 // same thing for the same project.
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "render/IblSettings.h"
@@ -24,6 +25,10 @@ struct SceneOptions {
     bool referenceView = false;
     // Irradiance from the 9 SH coefficients instead of the irradiance cubemap.
     bool irradianceFromSH = false;
+    // The IBL method of the frame instead of the project's environment.method: the window
+    // previews with the split sum (converging refinement of the project's method is a later step
+    // of issue 10).
+    std::optional<IblMethod> iblMethod;
 };
 
 // The SceneOptions that go with IBL `settings`: irradiance from the SH9 coefficients when the

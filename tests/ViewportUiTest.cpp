@@ -109,6 +109,7 @@ private Q_SLOTS:
     void idleWindowDrawsNothing();
     void materialEditRerendersWithoutReloading();
     void brdfSwitchFetchesItsOwnTable();
+    void referenceProjectPreviewsWithTheSplitSum();
     void cameraDragPreviewsThenRefines();
     void cameraKeysAndWheel();
     void turntableDrawsOnlyWhileRunning();
@@ -257,6 +258,29 @@ void ViewportUiTest::brdfSwitchFetchesItsOwnTable()
     QVERIFY(waitForFrame(m_viewport));
     QVERIFY2(m_viewport->lastError().isEmpty(), qPrintable(m_viewport->lastError()));
     QCOMPARE(m_viewport->lastFrameStats().iblMs, 0.0); // its table is still in memory
+}
+
+void ViewportUiTest::referenceProjectPreviewsWithTheSplitSum()
+{
+    // A project whose environment.method is "reference" opens and draws: the window previews with
+    // the split sum (SceneOptions::iblMethod), the same image as the split-sum project, never the
+    // renderer's refusal of a reference frame without source textures.
+    QVERIFY(waitForFullFrame(m_viewport));
+    Document* document = m_window->document();
+    const QImage before = m_viewport->grabFramebuffer();
+    EnvironmentSettings environment = document->project().environment;
+    const EnvironmentSettings original = environment;
+    environment.method = IblMethod::Reference;
+    environment.samples = 64;
+    document->setEnvironment(environment, QStringLiteral("IBL method"));
+    // The preview does not change with the method (DocumentChanges has no kind for it yet), so
+    // nothing redraws by itself: ask for a frame.
+    m_viewport->update();
+    QVERIFY(waitForFrame(m_viewport));
+    QVERIFY(waitForFullFrame(m_viewport));
+    QVERIFY2(m_viewport->lastError().isEmpty(), qPrintable(m_viewport->lastError()));
+    QCOMPARE(m_viewport->grabFramebuffer(), before);
+    document->setEnvironment(original, QStringLiteral("IBL method"));
 }
 
 void ViewportUiTest::cameraDragPreviewsThenRefines()

@@ -169,7 +169,9 @@ bool CompareRenderer::drawCell(const CompareCellDraw& cell, double scale, std::s
     if (!ibl)
         return false;
     const IblSettings settings = iblSettingsOf(cell.project);
-    RenderScene scene = sceneFromProject(cell.project, cell.assets, ibl, sceneOptionsFor(settings, false));
+    SceneOptions options = sceneOptionsFor(settings, false);
+    options.iblMethod = IblMethod::SplitSum; // the window's preview (SceneOptions::iblMethod)
+    RenderScene scene = sceneFromProject(cell.project, cell.assets, ibl, options);
     IblStats dfgStats;
     if (!m_frames->addDfgTables(settings, scene, &dfgStats, error))
         return false;

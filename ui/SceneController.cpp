@@ -465,6 +465,7 @@ RenderScene SceneController::scene(const std::shared_ptr<const IblTextures>& ibl
     const IblSettings settings = iblSettings();
     SceneOptions options;
     options.irradianceFromSH = settings.irradiance == IblSettings::Irradiance::SH;
+    options.iblMethod = IblMethod::SplitSum; // the window's preview (SceneOptions::iblMethod)
     RenderScene scene = sceneFromProject(m_document->project(), m_assets, ibl, options);
     if (m_objectTurntableDegrees != 0.0)
         scene.modelMatrix = modelMatrix();
