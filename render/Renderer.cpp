@@ -145,6 +145,8 @@ SurfaceVariantKey Renderer::variantKeyFor(const RenderScene& scene, int material
     key.features |= sharedTexelFeatures(material.material, key.features, textures);
     if (scene.sampling.method == IblMethod::Reference)
         key.features = key.features | SurfaceFeature::IblReference;
+    if (scene.analyticSphere)
+        key.features = key.features | SurfaceFeature::AnalyticSphereNormal;
     key.debugView = debugViewFromString(scene.view.debugView).value_or(DebugView::None);
     return key;
 }

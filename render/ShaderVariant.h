@@ -54,8 +54,12 @@ enum class SurfaceFeature : uint32_t {
     // IBL_REFERENCE: the environment by Monte Carlo (IblMethod::Reference, ibl_reference.glsl)
     // from the source equirect and its sampling tables, instead of the split sum's cubes.
     IblReference = 1u << 20,
+    // ANALYTIC_SPHERE_NORMAL: DESIGN.md's reference view of the unit sphere, shaded at the exact
+    // hit of the pixel's ray (n = hit, v = -ray) instead of the mesh's interpolated normal, as the
+    // CPU ground truth does (RenderScene::analyticSphere).
+    AnalyticSphereNormal = 1u << 21,
 };
-inline constexpr int kSurfaceFeatureBits = 21;
+inline constexpr int kSurfaceFeatureBits = 22;
 
 using SurfaceFeatures = uint32_t;
 inline constexpr SurfaceFeatures operator|(SurfaceFeature a, SurfaceFeature b) { return uint32_t(a) | uint32_t(b); }

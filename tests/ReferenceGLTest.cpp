@@ -6,10 +6,11 @@
 //
 // The bound of an agreement row is statistical: rmse(GPU, CPU) < 3 sqrt(nG^2 + nC^2) + 2e-3, where
 // nG is the GPU's own noise estimate (FrameAccumulator's two half-buffers) and nC the CPU's,
-// relativeRmse of two CPU renders with different seeds over sqrt 2. The 2e-3 is the floor of
-// what the two sides do differently on purpose: the GPU sphere's interpolated normals (a 64 x 32
-// mesh, about 1e-3 rad) and float arithmetic. A broken term (a lobe, a weight, a pdf) shows as a
-// bias far above the noise.
+// relativeRmse of two CPU renders with different seeds over sqrt 2, plus 2e-3 for float
+// arithmetic. The GPU shades the analytic sphere in the reference view, as the CPU does
+// (RenderScene::analyticSphere): with the 64 x 32 mesh's interpolated normals (about 1e-3 rad
+// off) the smooth metal row measured 2.0% against a bound of 1.7%; with it, 0.29%. A broken term
+// (a lobe, a weight, a pdf) shows as a bias far above the noise.
 
 #include "core/GroundTruth.h"
 #include "core/ImageMetrics.h"
@@ -32,9 +33,9 @@ namespace {
 
 constexpr int kSize = 32;
 constexpr int kSamples = 256;
-// What the two sides do differently on purpose, in the mean over the sphere: the GPU sphere's
-// interpolated normals and float arithmetic (measured at most 0.16%, Beckmann and half metal;
-// printed per row).
+// What the two sides do differently on purpose, in the mean over the sphere: float arithmetic
+// and the two sequences' stratification (measured at most 0.24%, Beckmann; -0.05 to -0.11% for
+// the dielectrics under the rotated studio; printed per row).
 constexpr double kMeanFloor = 2e-3;
 
 struct Row {
@@ -103,6 +104,10 @@ const Row kRows[] = {
     {"gltf dielectric", Gltf},
     {"gltf metal", Gltf, SmithGGXCorrelated, Distribution::GGX, Fresnel::Schlick, DielectricCoupling::FresnelMix, true,
         {0.95, 0.64, 0.54}, 1.0, 0.3},
+    {"gltf metal smooth", Gltf, SmithGGXCorrelated, Distribution::GGX, Fresnel::Schlick, DielectricCoupling::FresnelMix,
+        true, {0.95, 0.64, 0.54}, 1.0, 0.05},
+    {"gltf dielectric smooth", Gltf, SmithGGXCorrelated, Distribution::GGX, Fresnel::Schlick,
+        DielectricCoupling::FresnelMix, true, {0.8, 0.3, 0.1}, 0.0, 0.05},
     {"gltf dielectric rough", Gltf, SmithGGXCorrelated, Distribution::GGX, Fresnel::Schlick,
         DielectricCoupling::FresnelMix, true, {0.8, 0.3, 0.1}, 0.0, 0.9},
     {"gltf energy-preserving", Gltf, SmithGGXCorrelated, Distribution::GGX, Fresnel::Schlick,

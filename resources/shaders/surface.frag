@@ -32,6 +32,21 @@ void main()
     vec3 ng = normalize(vNormal);
     if (!gl_FrontFacing)
         ng = -ng; // two-sided: shade the side the camera sees
+#ifdef ANALYTIC_SPHERE_NORMAL
+    // The unit sphere itself (model = identity), hit by this pixel's ray from the camera: the
+    // ground truth's n and v (core/ReferenceView.h intersectSphere). The mesh's faces lie inside
+    // the sphere, so every fragment's ray hits it.
+    {
+        vec3 direction = normalize(vWorldPosition - uCameraPosition);
+        float b = dot(uCameraPosition, direction);
+        float c = dot(uCameraPosition, uCameraPosition) - 1.0;
+        float discriminant = b * b - c;
+        if (discriminant >= 0.0) {
+            ng = normalize(uCameraPosition + (-b - sqrt(discriminant)) * direction);
+            v = -direction;
+        }
+    }
+#endif
     MaterialInfo m = materialInputs(vUv);
 #ifdef ALPHA_MASK
     // glTF alphaMode MASK: below the cutoff nothing is drawn, above it the surface is opaque.
