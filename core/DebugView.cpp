@@ -63,6 +63,21 @@ std::optional<DebugView> debugViewFromString(const std::string& name)
     return std::nullopt;
 }
 
+bool debugViewShowsIntegratedLight(DebugView view)
+{
+    switch (view) {
+    case DebugView::None:
+    case DebugView::IblDiffuse:
+    case DebugView::IblSpecular:
+    case DebugView::IblTotal:
+    case DebugView::WhiteFurnace:
+    case DebugView::NonFinite:
+        return true;
+    default:
+        return false;
+    }
+}
+
 std::string debugViewNameList()
 {
     std::string list;

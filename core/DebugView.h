@@ -51,5 +51,9 @@ const char* debugViewLabel(DebugView view);
 std::optional<DebugView> debugViewFromString(const std::string& name);
 // "none, base-color, ..., distribution (or d), ...": the accepted names, for messages.
 std::string debugViewNameList();
+// Whether the view shows the environment's light as the IBL method integrates it (None,
+// IblDiffuse, IblSpecular, IblTotal, WhiteFurnace, NonFinite): a converging method's samples
+// change it. Every other view is the same after one sample, so it is drawn once.
+bool debugViewShowsIntegratedLight(DebugView view);
 
 } // namespace facet

@@ -154,6 +154,9 @@ std::optional<Image> FrameRenderer::renderConverged(const RenderScene& scene, in
     RenderScene draw = scene;
     draw.view.msaaSamples = 1; // a draw's pixel is its centre's samples: no resolve mixes them
     samples = std::max(samples, 1);
+    // A view of a value the samples do not change (base colour, normals, ...) is one draw.
+    if (!debugViewShowsIntegratedLight(debugViewFromString(scene.view.debugView).value_or(DebugView::None)))
+        samples = 1;
     for (int done = 0; done < samples;) {
         draw.sampling.sampleBase = done;
         draw.sampling.samples = std::min(kSamplesPerDraw, samples - done);

@@ -109,7 +109,9 @@ public:
     // renderImage() for any method: a Reference scene is drawn in draws of at most
     // kSamplesPerDraw samples ([0, samples) of each pixel's sequence, scene.sampling's
     // sampleBase and samples replaced) into RGBA32F targets summed by a FrameAccumulator, then
-    // resolved and read back; other scenes are one renderImage() into a target of `format`.
+    // resolved and read back; other scenes are one renderImage() into a target of `format`. A
+    // debug view that does not show the integrated light (debugViewShowsIntegratedLight) takes
+    // one sample whatever `samples` says.
     static constexpr int kSamplesPerDraw = 64;
     std::optional<Image> renderConverged(const RenderScene& scene, int width, int height, FrameOutput output,
         int samples, std::string* error, ConvergedStats* stats = nullptr,

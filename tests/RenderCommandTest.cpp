@@ -411,6 +411,30 @@ private Q_SLOTS:
         QVERIFY(!splitSum.out.contains(QLatin1String("ibl_samples:")));
     }
 
+    // Debug views with the reference method: one that shows the integrated light converges like
+    // the image; one the samples cannot change (base colour) is drawn once, not 100 times.
+    void referenceMethodDebugViews_data()
+    {
+        QTest::addColumn<QString>("view");
+        QTest::addColumn<QString>("stats");
+        QTest::newRow("ibl-specular") << QStringLiteral("ibl-specular") << QStringLiteral("ibl_samples: 100\ndraws: 2\n");
+        QTest::newRow("white-furnace") << QStringLiteral("white-furnace") << QStringLiteral("ibl_samples: 100\ndraws: 2\n");
+        QTest::newRow("base-color") << QStringLiteral("base-color") << QStringLiteral("ibl_samples: 1\ndraws: 1\n");
+        QTest::newRow("roughness") << QStringLiteral("roughness") << QStringLiteral("ibl_samples: 1\ndraws: 1\n");
+    }
+    void referenceMethodDebugViews()
+    {
+        QFETCH(QString, view);
+        QFETCH(QString, stats);
+        const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--ibl"), QStringLiteral("reference"),
+                                   QStringLiteral("--ibl-samples"), QStringLiteral("100"), QStringLiteral("--view"), view,
+                                   QStringLiteral("--quality"), QStringLiteral("draft"), QStringLiteral("--size"),
+                                   QStringLiteral("8x8"), QStringLiteral("--stats"), QStringLiteral("-o"),
+                                   path(QStringLiteral("view.exr"))});
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains(stats), qPrintable(r.out));
+    }
+
     void pngIsDisplayReferred()
     {
         const QString out = path(QStringLiteral("shot.png"));
