@@ -2,6 +2,8 @@
 
 #include "render/EnvironmentSource.h"
 
+#include "render/GLDebug.h"
+
 #include "core/Environment.h"
 #include "core/EnvironmentSampler.h"
 
@@ -29,22 +31,6 @@ GLTexture makeTexture(
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, linear ? GL_REPEAT : GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     return texture;
-}
-
-std::string glErrorName(GLenum error)
-{
-    switch (error) {
-    case GL_INVALID_ENUM:
-        return "GL_INVALID_ENUM";
-    case GL_INVALID_VALUE:
-        return "GL_INVALID_VALUE";
-    case GL_INVALID_OPERATION:
-        return "GL_INVALID_OPERATION";
-    case GL_OUT_OF_MEMORY:
-        return "GL_OUT_OF_MEMORY";
-    default:
-        return "GL error " + std::to_string(error);
-    }
 }
 
 } // namespace

@@ -1,5 +1,7 @@
 #include "render/Framebuffer.h"
 
+#include "render/GLDebug.h"
+
 #include <epoxy/gl.h>
 
 #include <QtGlobal>
@@ -28,24 +30,6 @@ const char* framebufferStatusName(GLenum status)
         return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
     default:
         return "unknown framebuffer status";
-    }
-}
-
-const char* glErrorName(GLenum error)
-{
-    switch (error) {
-    case GL_INVALID_ENUM:
-        return "GL_INVALID_ENUM";
-    case GL_INVALID_VALUE:
-        return "GL_INVALID_VALUE";
-    case GL_INVALID_OPERATION:
-        return "GL_INVALID_OPERATION";
-    case GL_INVALID_FRAMEBUFFER_OPERATION:
-        return "GL_INVALID_FRAMEBUFFER_OPERATION";
-    case GL_OUT_OF_MEMORY:
-        return "GL_OUT_OF_MEMORY";
-    default:
-        return "unknown GL error";
     }
 }
 

@@ -93,4 +93,16 @@ void disableGLDebugOutput()
     glDisable(GL_DEBUG_OUTPUT);
 }
 
+std::string glErrorName(unsigned error)
+{
+    switch (error) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    default: return "GL error " + std::to_string(error);
+    }
+}
+
 } // namespace facet

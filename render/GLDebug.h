@@ -2,6 +2,7 @@
 // OpenGL debug output (KHR_debug / GL 4.3) routed to a logging function.
 
 #include <functional>
+#include <string>
 #include <string_view>
 
 namespace facet {
@@ -20,5 +21,9 @@ bool enableGLDebugOutput(const GLDebugLogFunction* log);
 
 // Removes the callback from the context current on this thread. Harmless when none was installed.
 void disableGLDebugOutput();
+
+// The name of a glGetError() value ("GL_OUT_OF_MEMORY"), or "GL error <number>" for another value:
+// the one spelling every message of render/ uses. (A GLenum, taken as unsigned: no GL header here.)
+std::string glErrorName(unsigned error);
 
 } // namespace facet

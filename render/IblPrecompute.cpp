@@ -4,6 +4,7 @@
 
 #include "core/IblDiskCache.h"
 #include "core/SphericalHarmonics.h"
+#include "render/GLDebug.h"
 #include "render/ShaderProgram.h"
 
 #include <QtGlobal>
@@ -158,18 +159,6 @@ void appendCubemapLayers(const GLTexture& texture, int levels, std::vector<IblCa
             layer.half.insert(layer.half.end(), pixels.begin(), pixels.end());
         }
         out.push_back(std::move(layer));
-    }
-}
-
-std::string glErrorText(GLenum error)
-{
-    switch (error) {
-    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
-    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
-    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
-    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
-    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
-    default: return "GL error " + std::to_string(error);
     }
 }
 
@@ -349,7 +338,7 @@ std::shared_ptr<const DfgLut> IblPrecompute::dfgTable(
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
     if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
         if (error)
-            *error = "IblPrecompute::dfgTable: " + glErrorText(glError) + " during the pass";
+            *error = "IblPrecompute::dfgTable: " + glErrorName(glError) + " during the pass";
         return nullptr;
     }
     stats->msDfg += msSince(passStart);
@@ -623,7 +612,7 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
 
         if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
             if (error)
-                *error = "IblPrecompute::prepare: " + glErrorText(glError) + " during the passes";
+                *error = "IblPrecompute::prepare: " + glErrorName(glError) + " during the passes";
             return nullptr;
         }
         if (m_useDiskCache) {
