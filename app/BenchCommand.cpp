@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <tuple>
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -30,6 +31,7 @@
 #include "core/ImageMetrics.h"
 #include "core/Project.h"
 #include "core/ProjectAssets.h"
+#include "core/ReferenceView.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblPrecompute.h"
 #include "render/RenderScene.h"
@@ -47,11 +49,13 @@ constexpr int kMaxSamplesPerPixel = 1 << 20;
 constexpr int kMaxRepeats = 100;
 constexpr int kMaxThreads = 1024;
 
-// The CC0 maps of packaging/fetch-assets.sh the full run measures: a high-contrast studio with
-// small bright light boxes and dark walls (where SH9 and the prefilter's blur are worst), a city
-// (mid contrast, broad sky) and a sunset (a low sun: one very bright small source).
-const QStringList kDefaultEnvironments
-    = {QStringLiteral("studio"), QStringLiteral("city"), QStringLiteral("sunset")};
+// The CC0 maps of packaging/fetch-assets.sh the full run measures (issue 10's five): a
+// high-contrast studio with small bright light boxes and dark walls (where SH9 and the
+// prefilter's blur are worst), a city (mid contrast, broad sky), a sunset (a low sun: one very
+// bright small source), a night street (dark, with small lamps: the largest dynamic range) and a
+// forest (detailed, mid-frequency light through leaves).
+const QStringList kDefaultEnvironments = {QStringLiteral("studio"), QStringLiteral("city"),
+    QStringLiteral("sunset"), QStringLiteral("night"), QStringLiteral("forest")};
 const std::vector<double> kDefaultRoughnesses = {0.05, 0.25, 0.5, 0.75, 1.0};
 // --quick: a CI-sized run (one map, two roughness values, two configurations).
 const std::vector<double> kQuickRoughnesses = {0.25, 0.75};
@@ -77,9 +81,10 @@ struct Options {
     QCommandLineOption help {
         {QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Displays this help.")};
     QCommandLineOption env {QStringLiteral("env"),
-        QStringLiteral("Environments, comma-separated: a CC0 map name from packaging/fetch-assets.sh (city, "
-                       "studio, ...; $FACET_ASSETS_DIR/hdri/NAME.exr), builtin:studio or builtin:sky, "
-                       "uniform:VALUE, or an image path. Default: studio,city,sunset (--quick: city)."),
+        QStringLiteral(
+            "Environments, comma-separated: a CC0 map name from packaging/fetch-assets.sh (city, "
+            "studio, ...; $FACET_ASSETS_DIR/hdri/NAME.exr), builtin:studio or builtin:sky, "
+            "uniform:VALUE, or an image path. Default: studio,city,sunset,night,forest (--quick: city)."),
         QStringLiteral("names")};
     QCommandLineOption size {QStringLiteral("size"),
         QStringLiteral("Reference view size N (N x N pixels). Default 64 (--quick: 32)."),
@@ -91,10 +96,17 @@ struct Options {
                        "0.05,0.25,0.5,0.75,1 (--quick: 0.25,0.75)."),
         QStringLiteral("list")};
     QCommandLineOption sweep {QStringLiteral("sweep"),
-        QStringLiteral("Configuration groups, comma-separated: %1. Default: all (--quick: the draft and "
-                       "default presets only).")
+        QStringLiteral("Configuration groups, comma-separated: %1. The split-sum groups time the IBL "
+                       "precompute; reference (the converging GPU integrator, --ibl reference) times "
+                       "the render at each sample count. Default: all (--quick: the draft and default "
+                       "presets only).")
             .arg(BenchCommand::sweepGroups().join(QStringLiteral(", "))),
         QStringLiteral("groups")};
+    QCommandLineOption iblSamples {QStringLiteral("ibl-samples"),
+        QStringLiteral("Samples per pixel of the reference group, comma-separated, each from 1 to %1. "
+                       "Default 16,64,256,1024,4096.")
+            .arg(kMaxIblSamples),
+        QStringLiteral("list")};
     QCommandLineOption repeat {QStringLiteral("repeat"),
         QStringLiteral("Run each IBL precompute N times and keep the fastest (the machine is shared). "
                        "Default 1."),
@@ -102,6 +114,10 @@ struct Options {
     QCommandLineOption threads {QStringLiteral("threads"),
         QStringLiteral("CPU threads of the ground-truth integrator. Default: all cores."),
         QStringLiteral("N")};
+    QCommandLineOption truthNoise {QStringLiteral("truth-noise"),
+        QStringLiteral("Also measure the ground truth's own noise: a second truth per case with another "
+                       "seed (cached too), compared with the first (relative RMSE / sqrt 2: each one's "
+                       "noise). Reference errors at high samples are read against it.")};
     QCommandLineOption noTruthCache {QStringLiteral("no-truth-cache"),
         QStringLiteral("Recompute the ground-truth images instead of reading them from the disk cache "
                        "(they are stored again).")};
@@ -120,8 +136,8 @@ struct Options {
             "view of a metal and a dielectric at several roughness values is rendered on the GPU and\n"
             "compared with the CPU ground truth (relative RMSE over the sphere). Ground-truth images are\n"
             "cached on disk ($FACET_CACHE_DIR/ground-truth or the user cache directory)."));
-        for (const QCommandLineOption* option :
-            {&help, &env, &size, &spp, &roughness, &sweep, &repeat, &threads, &noTruthCache, &quick, &csv})
+        for (const QCommandLineOption* option : {&help, &env, &size, &spp, &roughness, &sweep, &iblSamples,
+                 &repeat, &threads, &truthNoise, &noTruthCache, &quick, &csv})
             parser.addOption(*option);
     }
 };
@@ -229,7 +245,7 @@ IblSettings defaultSettings()
 
 BenchConfig variant(const char* group, const std::string& name, IblSettings settings)
 {
-    return BenchConfig {group, name, settings};
+    return BenchConfig {group, name, settings, IblMethod::SplitSum, 0};
 }
 
 } // namespace
@@ -237,10 +253,16 @@ BenchConfig variant(const char* group, const std::string& name, IblSettings sett
 QStringList BenchCommand::sweepGroups()
 {
     return {QStringLiteral("presets"), QStringLiteral("samples"), QStringLiteral("cube"),
-        QStringLiteral("prefilter-size"), QStringLiteral("irradiance")};
+        QStringLiteral("prefilter-size"), QStringLiteral("irradiance"), QStringLiteral("reference")};
 }
 
-std::vector<BenchConfig> BenchCommand::configsFor(const QStringList& groups)
+std::vector<int> BenchCommand::defaultReferenceSamples()
+{
+    return {16, 64, 256, 1024, 4096};
+}
+
+std::vector<BenchConfig> BenchCommand::configsFor(
+    const QStringList& groups, const std::vector<int>& referenceSamples)
 {
     std::vector<BenchConfig> configs;
     const IblSettings base = defaultSettings();
@@ -283,6 +305,13 @@ std::vector<BenchConfig> BenchCommand::configsFor(const QStringList& groups)
                 s.irradianceSamples = samples;
                 configs.push_back(variant("irradiance", "irradiance=map/" + std::to_string(samples), s));
             }
+        } else if (group == QStringLiteral("reference")) {
+            // The converging integrator of core/GroundTruth on the GPU: its error against the truth
+            // is its noise (plus the truth's), so the sweep is over samples per pixel. The
+            // settings are the default preset's: they only draw the background.
+            for (int samples : referenceSamples)
+                configs.push_back(BenchConfig {"reference", "reference=" + std::to_string(samples), base,
+                    IblMethod::Reference, samples});
         }
     }
     return configs;
@@ -325,6 +354,7 @@ std::optional<BenchRequest> BenchCommand::parse(const QStringList& arguments, QS
             QStringLiteral("threads"), o.parser.value(o.threads), 1, kMaxThreads, &request.threads, error))
         return std::nullopt;
     request.truthCache = !o.parser.isSet(o.noTruthCache);
+    request.truthNoise = o.parser.isSet(o.truthNoise);
 
     request.roughnesses = quick ? kQuickRoughnesses : kDefaultRoughnesses;
     if (o.parser.isSet(o.roughness)) {
@@ -356,7 +386,24 @@ std::optional<BenchRequest> BenchCommand::parse(const QStringList& arguments, QS
             }
         }
     }
-    request.configs = configsFor(groups);
+    std::vector<int> referenceSamples = defaultReferenceSamples();
+    if (o.parser.isSet(o.iblSamples)) {
+        if (!groups.contains(QStringLiteral("reference"))) {
+            *error = QStringLiteral("--ibl-samples: the sample counts of the reference group, which --sweep "
+                                    "leaves out (add --sweep reference)");
+            return std::nullopt;
+        }
+        referenceSamples.clear();
+        for (const QString& part : o.parser.value(o.iblSamples).split(QLatin1Char(','))) {
+            int samples = 0;
+            if (!parseInteger(QStringLiteral("ibl-samples"), part, 1, kMaxIblSamples, &samples, error))
+                return std::nullopt;
+            if (std::find(referenceSamples.begin(), referenceSamples.end(), samples)
+                == referenceSamples.end())
+                referenceSamples.push_back(samples);
+        }
+    }
+    request.configs = configsFor(groups, referenceSamples);
     if (quick && !o.parser.isSet(o.sweep)) {
         // Two configurations: the cheapest preset and the default one.
         std::erase_if(request.configs, [](const BenchConfig& c) { return c.name == "preset=high"; });
@@ -416,6 +463,10 @@ struct Scene {
     double roughness;
     Project project; // the environment, the material at this roughness, the reference view
     Image truth;
+    // --truth-noise: relativeRmse(truth, truth of another seed) / sqrt(2), the noise of each (two
+    // independent estimates of one image: the difference's variance is twice either's); NaN if not
+    // measured.
+    double truthNoise = std::nan("");
 };
 
 // The project of one measurement: no lights (the benchmark measures image-based lighting only),
@@ -483,29 +534,38 @@ bool BenchRun::prepareTruths(const BenchEnvironment& environment, std::vector<Sc
                 fail(error);
                 return false;
             }
-            std::optional<Image> cached;
-            if (m_request.truthCache) {
-                std::string cacheWarning;
-                cached = m_truthCache.load(*truthScene, settings, &cacheWarning);
+            const auto truth = [&](const GroundTruthSettings& truthSettings) {
+                std::optional<Image> cached;
+                if (m_request.truthCache) {
+                    std::string cacheWarning;
+                    cached = m_truthCache.load(*truthScene, truthSettings, &cacheWarning);
+                    if (cached)
+                        ++m_truthsCached;
+                    else if (!cacheWarning.empty())
+                        fail(cacheWarning);
+                }
                 if (cached)
-                    ++m_truthsCached;
-                else if (!cacheWarning.empty())
-                    fail(cacheWarning);
-            }
-            if (cached) {
-                scene.truth = std::move(*cached);
-            } else {
-                std::fprintf(stderr, "facet bench: ground truth %s %s r=%.2f (%dx%d, %d spp)...",
-                    environment.label.c_str(), material.name, roughness, settings.width, settings.height,
-                    settings.samplesPerPixel);
+                    return std::move(*cached);
+                std::fprintf(stderr, "facet bench: ground truth %s %s r=%.2f (%dx%d, %d spp, seed %llu)...",
+                    environment.label.c_str(), material.name, roughness, truthSettings.width,
+                    truthSettings.height, truthSettings.samplesPerPixel,
+                    static_cast<unsigned long long>(truthSettings.seed));
                 std::fflush(stderr);
                 GroundTruthStats stats;
-                scene.truth = renderGroundTruth(*truthScene, settings, &stats);
+                Image image = renderGroundTruth(*truthScene, truthSettings, &stats);
                 std::fprintf(stderr, " %.1f s\n", stats.seconds);
                 m_truthSeconds += stats.seconds;
                 ++m_truthsComputed;
-                if (!m_truthCache.store(*truthScene, settings, scene.truth, &error))
-                    fail(error + " (continuing without caching it)");
+                std::string storeError;
+                if (!m_truthCache.store(*truthScene, truthSettings, image, &storeError))
+                    fail(storeError + " (continuing without caching it)");
+                return image;
+            };
+            scene.truth = truth(settings);
+            if (m_request.truthNoise) {
+                GroundTruthSettings other = settings;
+                other.seed = settings.seed + 1;
+                scene.truthNoise = sphereErrorStats(truth(other), scene.truth).relativeRmse / std::sqrt(2.0);
             }
             scenes->push_back(std::move(scene));
         }
@@ -515,9 +575,13 @@ bool BenchRun::prepareTruths(const BenchEnvironment& environment, std::vector<Sc
 bool BenchRun::measure(const BenchConfig& config, const BenchEnvironment& environment,
     const ProjectAssets& assets, const std::vector<Scene>& scenes)
 {
+    const bool reference = config.method == IblMethod::Reference;
+    // The DFG table the method's frames read: the split sum's own, or for Reference the ground
+    // truth's albedo table (dfgSettingsFor).
+    const IblSettings dfgSettings = dfgSettingsFor(config.settings, config.method);
     // A fresh precompute every time: the memory cache is dropped (the disk cache is off), so
-    // every pass, the DFG LUT included, runs and is timed. The fastest of the repeats counts:
-    // on a shared machine the slow runs measure the neighbours.
+    // every pass, the DFG LUT and Reference's source textures included, runs and is timed. The
+    // fastest of the repeats counts: on a shared machine the slow runs measure the neighbours.
     IblStats best;
     std::shared_ptr<const IblTextures> ibl;
     std::string error;
@@ -535,10 +599,15 @@ bool BenchRun::measure(const BenchConfig& config, const BenchEnvironment& enviro
         for (const Scene& scene : scenes)
             visibilities.insert(scene.project.material().shading.visibility);
         for (Visibility visibility : visibilities)
-            if (!m_frames->precompute().dfgTable(config.settings, visibility, &stats, &error)) {
+            if (!m_frames->precompute().dfgTable(dfgSettings, visibility, &stats, &error)) {
                 fail(error);
                 return false;
             }
+        // Reference reads the source equirect and its sampling tables (EnvironmentSourceTextures).
+        if (reference && !m_frames->precompute().source(assets.environment, &stats, &error)) {
+            fail(error);
+            return false;
+        }
         if (i == 0 || stats.msTotal < best.msTotal)
             best = stats;
     }
@@ -546,42 +615,63 @@ bool BenchRun::measure(const BenchConfig& config, const BenchEnvironment& enviro
     base.group = config.group;
     base.config = config.name;
     base.settings = config.settings.sanitized();
+    base.method = config.method;
+    base.iblSamples = reference ? config.samples : 0;
     base.environment = environment.label;
     base.size = m_request.size;
     base.truthSamplesPerPixel = m_request.samplesPerPixel;
     base.ibl = best;
-    base.iblNeededMs = best.msTotal
-        - (config.settings.irradiance == IblSettings::Irradiance::SH ? best.msIrradiance : 0.0);
+    // What the sphere's shading needs: for the split sum every pass but the irradiance cubemap
+    // when irradiance comes from SH (IblPrecompute computes both today); for Reference the
+    // source textures and its DFG table (the cubes only draw the background).
+    base.iblNeededMs = reference ? best.msSource + best.msDfg
+                                 : best.msTotal
+            - (config.settings.irradiance == IblSettings::Irradiance::SH ? best.msIrradiance : 0.0);
 
-    const SceneOptions options = sceneOptionsFor(config.settings, /*referenceView=*/true);
+    SceneOptions options = sceneOptionsFor(config.settings, /*referenceView=*/true);
+    options.iblMethod = config.method;
+    // The noise estimate covers the pixels the error reads: the interior sphere pixels.
+    std::vector<std::uint8_t> noiseMask(std::size_t(m_request.size) * std::size_t(m_request.size));
+    for (int y = 0; y < m_request.size; ++y)
+        for (int x = 0; x < m_request.size; ++x)
+            noiseMask[std::size_t(y) * std::size_t(m_request.size) + std::size_t(x)]
+                = referenceview::isInteriorSpherePixel(x, y, m_request.size, m_request.size) ? 1 : 0;
     bool warmedUp = false;
     for (const Scene& scene : scenes) {
         RenderScene renderScene = sceneFromProject(scene.project, assets, ibl, options);
-        if (!m_frames->addDfgTables(config.settings, renderScene, nullptr, &error)) { // memory hits
+        // Memory hits: the tables and the source were made above.
+        if (!m_frames->addDfgTables(config.settings, renderScene, nullptr, &error)
+            || !m_frames->addEnvironmentSource(assets.environment, renderScene, nullptr, &error)) {
             fail(error);
             return false;
         }
         if (!warmedUp) {
-            // The first frame of a shader variant compiles it (and llvmpipe JITs it): not a frame's cost.
-            if (!m_frames->renderImage(
-                    renderScene, m_request.size, m_request.size, FrameOutput::LinearRadiance, &error)) {
+            // The first frame of a shader variant compiles it (and llvmpipe JITs it): not a frame's
+            // cost. One sample is enough for that.
+            if (!m_frames->renderConverged(
+                    renderScene, m_request.size, m_request.size, FrameOutput::LinearRadiance, 1, &error)) {
                 fail(error);
                 return false;
             }
             warmedUp = true;
         }
+        FrameRenderer::ConvergedStats converged;
         const Clock::time_point start = Clock::now();
-        const std::optional<Image> image
-            = m_frames->renderImage(renderScene, m_request.size, m_request.size, FrameOutput::LinearRadiance, &error);
+        const std::optional<Image> image = m_frames->renderConverged(renderScene, m_request.size,
+            m_request.size, FrameOutput::LinearRadiance, base.iblSamples, &error, &converged, noiseMask);
         if (!image) {
             fail(error);
             return false;
         }
         BenchRow row = base;
-        row.renderMs = msSince(start); // read-back included: it waits for the frame to finish
+        // Read-back included: it waits for the frame (for Reference every draw) to finish.
+        row.renderMs = msSince(start);
+        row.draws = converged.draws;
+        row.noise = converged.noise.value_or(std::nan(""));
         row.material = scene.material->name;
         row.roughness = scene.roughness;
         row.error = sphereErrorStats(*image, scene.truth);
+        row.truthNoise = scene.truthNoise;
         m_rows.push_back(std::move(row));
     }
     return true;
@@ -666,11 +756,13 @@ int BenchRun::run()
                 break;
             warmedUp = true;
         }
-        // Configurations with the same settings (the default preset appears in every sweep) are
-        // measured once and reported under each name.
-        std::map<std::uint64_t, std::size_t> measured; // settings hash -> first row of its block
+        // Configurations with the same method, samples and settings (the default preset appears
+        // in every split-sum sweep) are measured once and reported under each name.
+        using Key = std::tuple<IblMethod, int, std::uint64_t>;
+        std::map<Key, std::size_t> measured; // -> first row of its block
         for (const BenchConfig& config : m_request.configs) {
-            const std::uint64_t key = config.settings.sanitized().hash();
+            const Key key {config.method, config.method == IblMethod::SplitSum ? 0 : config.samples,
+                config.settings.sanitized().hash()};
             if (const auto it = measured.find(key); it != measured.end()) {
                 const std::size_t first = it->second;
                 const std::size_t count = scenes.size();

@@ -7,8 +7,12 @@
 // sphere (core/ImageMetrics.h). It prints tables (time and error side by side) and writes a CSV.
 //
 //   facet bench [--env NAME[,NAME...]] [--size N] [--spp N] [--roughness R[,R...]]
-//       [--sweep GROUP[,GROUP...]] [--repeat N] [--threads N] [--no-truth-cache] [--quick]
-//       [--csv OUT.csv]
+//       [--sweep GROUP[,GROUP...]] [--ibl-samples N[,N...]] [--repeat N] [--threads N]
+//       [--truth-noise] [--no-truth-cache] [--quick] [--csv OUT.csv]
+//
+// The split-sum groups time the precompute (the frame is one cheap draw); the `reference` group
+// (IblMethod::Reference at several samples per pixel) times the converging render, which is its
+// cost.
 //
 // Ground-truth images are cached on disk (app/GroundTruthCache.h), so a second run only pays for
 // the GPU side. docs/benchmarks.md has a measured table and how to read it.
@@ -20,6 +24,7 @@
 #include <QString>
 #include <QStringList>
 
+#include "core/Project.h"
 #include "render/IblSettings.h"
 
 namespace facet {
@@ -32,11 +37,13 @@ struct BenchEnvironment {
 };
 
 // One IBL configuration: `group` is the sweep it belongs to ("preset", "samples", ...), `name`
-// says what differs from the default preset (e.g. "samples=512").
+// says what differs from the default preset (e.g. "samples=512", "reference=1024").
 struct BenchConfig {
     std::string group;
     std::string name;
-    IblSettings settings;
+    IblSettings settings; // the split sum's; a reference frame draws only its background with them
+    IblMethod method = IblMethod::SplitSum;
+    int samples = 0; // per pixel, for a converging method (Reference); 0 for the split sum
 };
 
 struct BenchRequest {
@@ -48,6 +55,7 @@ struct BenchRequest {
     int threads = 0; // of the ground truth; 0: all cores
     int repeats = 1; // precompute runs per configuration and environment; the fastest counts
     bool truthCache = true;
+    bool truthNoise = false; // also a second truth per case (another seed): its own noise
     QString csvPath; // empty: no CSV
     QStringList warnings; // resolved at parse time (e.g. a built-in used for a missing CC0 map)
 };
@@ -66,10 +74,16 @@ public:
 
     // The sweep groups --sweep accepts, in the order they run.
     static QStringList sweepGroups();
-    // The configurations of the given groups (IblSettings::presetNames() for "preset"; the other
-    // groups vary one setting of the default preset). Duplicates of an earlier configuration's
-    // settings are kept (each sweep reads on its own) but measured once.
-    static std::vector<BenchConfig> configsFor(const QStringList& groups);
+    // The samples per pixel the `reference` group renders at unless --ibl-samples says otherwise:
+    // 16 ... 4096 (issue 10), each a multiple of FrameRenderer::kSamplesPerDraw or below it.
+    static std::vector<int> defaultReferenceSamples();
+    // The configurations of the given groups (IblSettings::presetNames() for "preset"; the
+    // split-sum groups vary one setting of the default preset; "reference" is
+    // IblMethod::Reference at each of `referenceSamples`). Duplicates of an earlier
+    // configuration (same method, samples and settings) are kept (each sweep reads on its own)
+    // but measured once.
+    static std::vector<BenchConfig> configsFor(
+        const QStringList& groups, const std::vector<int>& referenceSamples = defaultReferenceSamples());
 };
 
 } // namespace facet

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <utility>
 
 #include "core/AtomicFile.h"
@@ -37,11 +38,51 @@ Columns settingsColumns(const IblSettings& s)
     };
 }
 
-Columns rowColumns(const BenchRow& row)
+// The relative RMSE of a configuration over every environment, material and roughness.
+struct ConfigSummary {
+    double mean = 0.0;
+    double median = 0.0;
+    double max = 0.0;
+};
+
+// Median of `values` (sorted here); NaN when any value is NaN or there is none, so a broken
+// render shows instead of sorting somewhere (std::sort with NaN is undefined).
+double medianOf(std::vector<double> values)
+{
+    if (values.empty() || std::any_of(values.begin(), values.end(), [](double v) { return std::isnan(v); }))
+        return std::nan("");
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+ConfigSummary summarize(const std::vector<BenchRow>& rows, const std::string& config)
+{
+    std::vector<double> errors;
+    for (const BenchRow& row : rows)
+        if (row.config == config)
+            errors.push_back(row.error.relativeRmse);
+    ConfigSummary summary;
+    if (errors.empty())
+        return summary;
+    double sum = 0.0;
+    for (double e : errors) {
+        sum += e;
+        // NaN is the worst: it must show, not vanish in std::max.
+        summary.max = std::isnan(e) || std::isnan(summary.max) ? std::nan("") : std::max(summary.max, e);
+    }
+    summary.mean = sum / double(errors.size());
+    summary.median = medianOf(errors);
+    return summary;
+}
+
+Columns rowColumns(const BenchRow& row, const ConfigSummary& summary)
 {
     Columns columns = {
         {"group", row.group},
         {"config", row.config},
+        {"method", toString(row.method)},
+        {"ibl_samples", std::to_string(row.iblSamples)},
         {"environment", row.environment},
         {"material", row.material},
         {"roughness", number(row.roughness)},
@@ -58,11 +99,18 @@ Columns rowColumns(const BenchRow& row)
         {"ibl_irradiance_ms", number(row.ibl.msIrradiance, "%.2f")},
         {"ibl_dfg_ms", number(row.ibl.msDfg, "%.2f")},
         {"ibl_sh_ms", number(row.ibl.msSh, "%.2f")},
+        {"ibl_source_ms", number(row.ibl.msSource, "%.2f")},
         {"render_ms", number(row.renderMs, "%.2f")},
+        {"draws", std::to_string(row.draws)},
+        {"noise", number(row.noise)},
         {"rel_rmse", number(row.error.relativeRmse)},
         {"max_rel_error", number(row.error.maxRelativeError)},
         {"mean_rel_error", number(row.error.meanRelativeError)},
         {"pixels", std::to_string(row.error.pixelCount)},
+        {"truth_noise", number(row.truthNoise)},
+        {"config_mean_rel_rmse", number(summary.mean)},
+        {"config_median_rel_rmse", number(summary.median)},
+        {"config_max_rel_rmse", number(summary.max)},
     };
     columns.insert(columns.end(), measured.begin(), measured.end());
     return columns;
@@ -94,9 +142,13 @@ std::string joinCsv(const Columns& columns, bool names)
     return line;
 }
 
-// "256/128x6@128 map32/1536": cube / prefilter size x levels @ samples, irradiance.
-std::string settingsSummary(const IblSettings& s)
+// "256/128x6@128 map32/1536": cube / prefilter size x levels @ samples, irradiance; for a
+// Reference row its samples per pixel ("reference 1024 spp").
+std::string settingsSummary(const BenchRow& row)
 {
+    if (row.method == IblMethod::Reference)
+        return std::string(toString(row.method)) + " " + std::to_string(row.iblSamples) + " spp";
+    const IblSettings& s = row.settings;
     const std::string irradiance = s.irradiance == IblSettings::Irradiance::SH
         ? std::string("sh9")
         : "map" + std::to_string(s.irradianceSize) + "/" + std::to_string(s.irradianceSamples);
@@ -136,21 +188,24 @@ struct Mean {
 
 std::string percent(double fraction)
 {
-    return std::isfinite(fraction) ? number(100.0 * fraction, "%.1f") : std::string("n/a");
+    return std::isfinite(fraction) ? number(100.0 * fraction, "%.2f") : std::string("n/a");
 }
 
 } // namespace
 
 std::string benchCsvHeader()
 {
-    return joinCsv(rowColumns(BenchRow {}), true);
+    return joinCsv(rowColumns(BenchRow {}, ConfigSummary {}), true);
 }
 
 bool writeBenchCsv(const QString& path, const std::vector<BenchRow>& rows, std::string* error)
 {
     std::string text = benchCsvHeader() + "\n";
+    std::map<std::string, ConfigSummary> summaries;
+    for (const std::string& config : configOrder(rows))
+        summaries[config] = summarize(rows, config);
     for (const BenchRow& row : rows)
-        text += joinCsv(rowColumns(row), false) + "\n";
+        text += joinCsv(rowColumns(row, summaries[row.config]), false) + "\n";
     std::string reason;
     if (!writeFileAtomically(path.toStdString(), text, &reason)) {
         if (error)
@@ -172,16 +227,17 @@ void printBenchTables(std::FILE* out, const std::vector<BenchRow>& rows)
         "Time against error per configuration. Times in ms, the median over the environments (the\n"
         "precompute's cost does not depend on the map's content; the median drops a run a neighbour\n"
         "slowed): ibl = a fresh IBL precompute (no cache), needed = without the passes the configuration\n"
-        "does not use, then its prefilter and irradiance passes; render = one %dx%d frame.\n"
+        "does not use (reference: its source textures and DFG table), then its prefilter and\n"
+        "irradiance passes; render = one %dx%d frame, the mean over the cases (reference: every draw\n"
+        "of its samples, the method's cost); noise = reference's own noise estimate, in %%.\n"
         "Errors: relative RMSE over the sphere against the ground truth (%d spp), in %%: the mean per\n"
-        "material, the mean and the max over all. The CSV has every row and the per-pixel errors.\n\n",
+        "material, the mean, median and max over all. The CSV has every row and the per-pixel errors.\n\n",
         rows.front().size, rows.front().size, rows.front().truthSamplesPerPixel);
-    std::fprintf(out, "%-20s %-26s %8s %8s %8s %8s %7s %7s %7s %7s %7s\n", "config", "settings", "ibl",
-        "needed", "prefilt", "irrad", "render", "metal", "dielec", "mean", "max");
+    std::fprintf(out, "%-20s %-26s %8s %8s %8s %8s %8s %6s %7s %7s %7s %7s %7s\n", "config", "settings",
+        "ibl", "needed", "prefilt", "irrad", "render", "noise", "metal", "dielec", "mean", "median", "max");
     for (const std::string& config : configs) {
-        Mean metal, dielectric, all, render;
+        Mean metal, dielectric, render, noise;
         std::map<std::string, const BenchRow*> byEnvironment; // the precompute is per (config, environment)
-        double worst = 0.0;
         const BenchRow* first = nullptr;
         for (const BenchRow& row : rows) {
             if (row.config != config)
@@ -189,27 +245,27 @@ void printBenchTables(std::FILE* out, const std::vector<BenchRow>& rows)
             first = first ? first : &row;
             const double e = row.error.relativeRmse;
             (row.material == "metal" ? metal : dielectric).add(e);
-            all.add(e);
             render.add(row.renderMs);
+            if (std::isfinite(row.noise)) // Reference after two draws or more
+                noise.add(row.noise);
             byEnvironment[row.environment] = &row;
-            // NaN is the worst: it must show, not vanish in std::max.
-            worst = std::isnan(e) || std::isnan(worst) ? std::nan("") : std::max(worst, e);
         }
         auto median = [&](auto field) {
             std::vector<double> values;
             for (const auto& [environment, row] : byEnvironment)
                 values.push_back(field(*row));
-            std::sort(values.begin(), values.end());
-            const std::size_t n = values.size();
-            return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+            return medianOf(values);
         };
-        std::fprintf(out, "%-20s %-26s %8.1f %8.1f %8.1f %8.1f %7.2f %7s %7s %7s %7s\n", config.c_str(),
-            settingsSummary(first->settings).c_str(), median([](const BenchRow& r) { return r.ibl.msTotal; }),
+        const ConfigSummary summary = summarize(rows, config);
+        std::fprintf(out, "%-20s %-26s %8.1f %8.1f %8.1f %8.1f %8.1f %6s %7s %7s %7s %7s %7s\n",
+            config.c_str(), settingsSummary(*first).c_str(),
+            median([](const BenchRow& r) { return r.ibl.msTotal; }),
             median([](const BenchRow& r) { return r.iblNeededMs; }),
             median([](const BenchRow& r) { return r.ibl.msPrefilter; }),
             median([](const BenchRow& r) { return r.ibl.msIrradiance; }), render.value(),
-            percent(metal.value()).c_str(), percent(dielectric.value()).c_str(), percent(all.value()).c_str(),
-            percent(worst).c_str());
+            noise.count ? number(100.0 * noise.value(), "%.2f").c_str() : "-", percent(metal.value()).c_str(),
+            percent(dielectric.value()).c_str(), percent(summary.mean).c_str(),
+            percent(summary.median).c_str(), percent(summary.max).c_str());
     }
 
     // Pivot: mean relative RMSE (%) per configuration and column value.
@@ -246,6 +302,30 @@ void printBenchTables(std::FILE* out, const std::vector<BenchRow>& rows)
             return std::size_t(
                 std::find(environments.begin(), environments.end(), row.environment) - environments.begin());
         });
+
+    // --truth-noise: once per case (every configuration's rows share their case's truth).
+    std::map<std::tuple<std::string, std::string, double>, double> truthNoise;
+    for (const BenchRow& row : rows)
+        if (!std::isnan(row.truthNoise))
+            truthNoise[{row.environment, row.material, row.roughness}] = row.truthNoise;
+    if (truthNoise.empty())
+        return;
+    std::vector<double> all;
+    for (const auto& [ignored, noise] : truthNoise)
+        all.push_back(noise);
+    std::fprintf(out,
+        "\nThe ground truth's own noise (relative RMSE against a truth of another seed / sqrt 2), in %%:\n"
+        "median %s, max %s over %zu cases; by roughness (max over environments and materials):",
+        percent(medianOf(all)).c_str(), percent(*std::max_element(all.begin(), all.end())).c_str(),
+        all.size());
+    for (double r : roughnesses) {
+        double worst = 0.0;
+        for (const auto& [key, noise] : truthNoise)
+            if (std::get<2>(key) == r)
+                worst = std::max(worst, noise);
+        std::fprintf(out, " r=%s %s", number(r, "%.2f").c_str(), percent(worst).c_str());
+    }
+    std::fprintf(out, "\n");
 }
 
 } // namespace facet

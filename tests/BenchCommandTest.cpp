@@ -2,9 +2,12 @@
 // read back (columns, one row per measurement, finite errors), its ground-truth cache, and its
 // command-line errors (exit 2 with a message naming the flag).
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <QFile>
+#include <QMap>
 #include <QProcessEnvironment>
 #include <QTemporaryDir>
 #include <QtTest/QTest>
@@ -79,7 +82,8 @@ private Q_SLOTS:
             {"group", "config", "environment", "material", "roughness", "size", "truth_spp", "cube_size",
                 "prefilter_size", "prefilter_mip_levels", "prefilter_samples", "irradiance",
                 "irradiance_size", "irradiance_samples", "dfg_size", "dfg_samples", "ibl_ms", "ibl_needed_ms",
-                "ibl_prefilter_ms", "render_ms", "rel_rmse", "max_rel_error", "mean_rel_error", "pixels"})
+                "ibl_prefilter_ms", "render_ms", "rel_rmse", "max_rel_error", "mean_rel_error", "pixels",
+                "method", "ibl_samples", "draws", "noise", "config_median_rel_rmse", "truth_noise"})
             QVERIFY2(csv.column(name) >= 0, name);
         QCOMPARE(csv.rows.size(), 8); // 2 configurations x 1 map x 2 materials x 2 roughness values
         const int rmse = csv.column("rel_rmse");
@@ -94,6 +98,12 @@ private Q_SLOTS:
                 qPrintable(row.join(QLatin1Char(','))));
             QVERIFY(row[csv.column("ibl_ms")].toDouble() > 0.0);
             QVERIFY(row[csv.column("pixels")].toInt() > 100);
+            // Split-sum rows: one draw, no noise estimate; no --truth-noise: none measured.
+            QCOMPARE(row[csv.column("method")], QStringLiteral("split-sum"));
+            QCOMPARE(row[csv.column("ibl_samples")], QStringLiteral("0"));
+            QCOMPARE(row[csv.column("draws")], QStringLiteral("1"));
+            QCOMPARE(row[csv.column("noise")], QStringLiteral("nan"));
+            QCOMPARE(row[csv.column("truth_noise")], QStringLiteral("nan"));
         }
         QCOMPARE(csv.rows.first()[csv.column("config")], QStringLiteral("preset=draft"));
         QCOMPARE(csv.rows.last()[csv.column("config")], QStringLiteral("preset=default"));
@@ -116,12 +126,99 @@ private Q_SLOTS:
         }
     }
 
+    // The reference group: IblMethod::Reference at each --ibl-samples count, one row per count and
+    // case, measured separately (the configurations differ only in their samples), its render
+    // timed in draws of 64 samples, its noise estimate falling with the samples, and the
+    // configuration's median next to its mean and max.
+    void referenceSweep()
+    {
+        FACET_REQUIRE_ASSET(facet::test::hdriPath(QStringLiteral("city")), "hdri/city.exr");
+        const QString csvPath = path(QStringLiteral("reference.csv"));
+        const Result r
+            = runFacet({QStringLiteral("bench"), QStringLiteral("--quick"), QStringLiteral("--sweep"),
+                           QStringLiteral("reference"), QStringLiteral("--ibl-samples"),
+                           QStringLiteral("128,1024"), QStringLiteral("--size"), QStringLiteral("16"),
+                           QStringLiteral("--roughness"), QStringLiteral("0.25,0.75"),
+                           QStringLiteral("--truth-noise"), QStringLiteral("--csv"), csvPath},
+                path(QStringLiteral("cache")));
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        // Two truths per case (seeds 1 and 2) for --truth-noise.
+        QVERIFY2(r.out.contains(QStringLiteral("ground truth: 8 images computed"))
+                && r.out.contains(QStringLiteral("The ground truth's own noise")),
+            qPrintable(r.out));
+        QVERIFY2(r.out.contains(QStringLiteral("median")) && r.out.contains(QStringLiteral("reference=128"))
+                && r.out.contains(QStringLiteral("reference 1024 spp")),
+            qPrintable(r.out));
+
+        const Csv csv = readCsv(csvPath);
+        for (const char* name : {"method", "ibl_samples", "draws", "noise", "ibl_source_ms", "render_ms",
+                 "config_mean_rel_rmse", "config_median_rel_rmse", "config_max_rel_rmse"})
+            QVERIFY2(csv.column(name) >= 0, name);
+        QCOMPARE(csv.rows.size(), 8); // 2 sample counts x 1 map x 2 materials x 2 roughness values
+        QMap<int, QList<QStringList>> bySamples;
+        for (const QStringList& row : csv.rows) {
+            QCOMPARE(row.size(), csv.header.size());
+            QCOMPARE(row[csv.column("method")], QStringLiteral("reference"));
+            QCOMPARE(row[csv.column("group")], QStringLiteral("reference"));
+            bySamples[row[csv.column("ibl_samples")].toInt()].append(row);
+        }
+        QCOMPARE(bySamples.keys(), (QList<int> {128, 1024}));
+        double noiseAt128 = 0.0;
+        for (const auto& [samples, rows] : bySamples.asKeyValueRange()) {
+            QCOMPARE(rows.size(), 4); // metal and dielectric at two roughness values
+            std::vector<double> errors;
+            for (const QStringList& row : rows) {
+                QCOMPARE(row[csv.column("config")], QStringLiteral("reference=%1").arg(samples));
+                // Draws of at most FrameRenderer::kSamplesPerDraw = 64 samples.
+                QCOMPARE(row[csv.column("draws")].toInt(), samples / 64);
+                const double error = row[csv.column("rel_rmse")].toDouble();
+                // The integrator of the truth: within its noise (and the 256-spp truth's), far from
+                // a broken render's 100%.
+                QVERIFY2(std::isfinite(error) && error > 0.0 && error < 0.2,
+                    qPrintable(row.join(QLatin1Char(','))));
+                QVERIFY(row[csv.column("ibl_source_ms")].toDouble() > 0.0);
+                // Two 256-spp truths differ by well under 5% (a few tenths of a percent here).
+                const double truthNoise = row[csv.column("truth_noise")].toDouble();
+                QVERIFY2(std::isfinite(truthNoise) && truthNoise > 0.0 && truthNoise < 0.05,
+                    qPrintable(row.join(QLatin1Char(','))));
+                QVERIFY(row[csv.column("render_ms")].toDouble() > 0.0);
+                errors.push_back(error);
+            }
+            // Four cases: the median is the mean of the middle two (not the mean of all).
+            std::sort(errors.begin(), errors.end());
+            const double median = 0.5 * (errors[1] + errors[2]);
+            const double mean = (errors[0] + errors[1] + errors[2] + errors[3]) / 4;
+            for (const QStringList& row : rows) {
+                const QString line = row.join(QLatin1Char(','));
+                QVERIFY2(
+                    std::abs(row[csv.column("config_median_rel_rmse")].toDouble() - median) <= 1e-5 * median,
+                    qPrintable(line));
+                QVERIFY2(std::abs(row[csv.column("config_mean_rel_rmse")].toDouble() - mean) <= 1e-5 * mean,
+                    qPrintable(line));
+                QVERIFY2(std::abs(row[csv.column("config_max_rel_rmse")].toDouble() - errors[3])
+                        <= 1e-5 * errors[3],
+                    qPrintable(line));
+            }
+            const QStringList& row = rows.first();
+            // The noise estimate (two draws at least: one per half-buffer) falls as 1/sqrt(samples)
+            // or faster: 8x the samples, about 1/2.8.
+            const double noise = row[csv.column("noise")].toDouble();
+            QVERIFY2(std::isfinite(noise) && noise > 0.0, qPrintable(row.join(QLatin1Char(','))));
+            if (samples == 128)
+                noiseAt128 = noise;
+            else
+                QVERIFY2(noise < 0.6 * noiseAt128,
+                    qPrintable(QStringLiteral("%1 vs %2").arg(noise).arg(noiseAt128)));
+        }
+    }
+
     void helpListsTheOptions()
     {
         const Result r
             = runFacet({QStringLiteral("bench"), QStringLiteral("--help")}, path(QStringLiteral("cache")));
         QCOMPARE(r.exitCode, 0);
-        for (const char* option : {"--env", "--size", "--spp", "--quick", "--csv", "--threads", "--sweep"})
+        for (const char* option : {"--env", "--size", "--spp", "--quick", "--csv", "--threads", "--sweep",
+                 "--ibl-samples", "reference"})
             QVERIFY2(r.out.contains(QString::fromLatin1(option)), option);
     }
 
@@ -151,8 +248,24 @@ private Q_SLOTS:
                                 << QStringLiteral("--repeat: '1.5' is not a whole number");
         QTest::newRow("roughness") << QStringList {QStringLiteral("--roughness"), QStringLiteral("0.5,2")}
                                    << QStringLiteral("--roughness: '2' is not a number in [0, 1]");
-        QTest::newRow("sweep") << QStringList {QStringLiteral("--sweep"), QStringLiteral("presets,colour")}
-                               << QStringLiteral("--sweep: 'colour' is not one of presets, samples");
+        QTest::newRow("sweep")
+            << QStringList {QStringLiteral("--sweep"), QStringLiteral("presets,colour")}
+            << QStringLiteral(
+                   "--sweep: 'colour' is not one of presets, samples, cube, prefilter-size, irradiance, "
+                   "reference");
+        QTest::newRow("ibl-samples zero")
+            << QStringList {QStringLiteral("--ibl-samples"), QStringLiteral("16,0")}
+            << QStringLiteral("--ibl-samples: '0' is not a whole number from 1 to 65536");
+        QTest::newRow("ibl-samples text") << QStringList {QStringLiteral("--ibl-samples"),
+            QStringLiteral("many")} << QStringLiteral("--ibl-samples: 'many' is not a whole number");
+        QTest::newRow("ibl-samples without reference")
+            << QStringList {QStringLiteral("--sweep"), QStringLiteral("presets"),
+                   QStringLiteral("--ibl-samples"), QStringLiteral("16")}
+            << QStringLiteral(
+                   "--ibl-samples: the sample counts of the reference group, which --sweep leaves out");
+        QTest::newRow("ibl-samples with quick")
+            << QStringList {QStringLiteral("--quick"), QStringLiteral("--ibl-samples"), QStringLiteral("16")}
+            << QStringLiteral("--ibl-samples: the sample counts of the reference group");
         QTest::newRow("csv folder")
             << QStringList {QStringLiteral("--csv"), QStringLiteral("/no/such/dir/out.csv")}
             << QStringLiteral("--csv '/no/such/dir/out.csv': the folder /no/such/dir does not exist");
