@@ -10,7 +10,8 @@
 // estimate (relative RMSE of the mean, FrameAccumulator::noise) over the object's pixels, until
 // the noise is at most --target (0.01), or --max-samples (4096) is reached, or the next doubling
 // (about twice the last step's time) would end past --max-seconds (600) of rendering in all.
-// Each step's time is the time to converge to its noise, start to finish.
+// Each step's time is the time to converge to its noise, start to finish; Msamples/s counts the
+// object's pixels only (the background is one look-up).
 //
 // The object's pixels: those that do not change when the background colour does (two split-sum
 // frames with a black and a bright solid background, one sample per pixel). The environment
@@ -88,11 +89,11 @@ std::optional<std::vector<std::uint8_t>> objectMask(
     scene.view.msaaSamples = 1;
     scene.view.background = BackgroundMode::Color;
     scene.view.backgroundColor = glm::dvec3(0.0);
-    const auto dark = frames.renderImage(scene, width, height, FrameOutput::LinearRadiance, error,
-        FramebufferFormat::RGBA32F);
+    const auto dark = frames.renderImage(
+        scene, width, height, FrameOutput::LinearRadiance, error, FramebufferFormat::RGBA32F);
     scene.view.backgroundColor = glm::dvec3(1000.0);
-    const auto bright = frames.renderImage(scene, width, height, FrameOutput::LinearRadiance, error,
-        FramebufferFormat::RGBA32F);
+    const auto bright = frames.renderImage(
+        scene, width, height, FrameOutput::LinearRadiance, error, FramebufferFormat::RGBA32F);
     if (!dark || !bright)
         return std::nullopt;
     std::vector<std::uint8_t> mask(std::size_t(width) * std::size_t(height));
@@ -111,7 +112,8 @@ int main(int argc, char** argv)
     const std::optional<Options> options = parse(app.arguments());
     if (!options) {
         std::fprintf(stderr,
-            "usage: reference_convergence [--size WxH] [--target NOISE] [--max-samples N] [--max-seconds S]\n");
+            "usage: reference_convergence [--size WxH] [--target NOISE] [--max-samples N] [--max-seconds "
+            "S]\n");
         return 2;
     }
     const int width = options->width;
@@ -150,12 +152,12 @@ int main(int argc, char** argv)
         for (std::uint8_t m : *mask)
             covered += m;
         const GLInfo& gl = context->info();
-        std::printf("reference_convergence: %dx%d, default project (%s, %s), object %zu pixels (%.1f%%)\n", width,
-            height, project.view.mesh.c_str(), project.environment.source.c_str(), covered,
+        std::printf("reference_convergence: %dx%d, default project (%s, %s), object %zu pixels (%.1f%%)\n",
+            width, height, project.view.mesh.c_str(), project.environment.source.c_str(), covered,
             100.0 * double(covered) / double(mask->size()));
         std::printf("gl: %s; %s\n", gl.renderer.c_str(), gl.version.c_str());
-        std::printf("stops at noise <= %.2f%%, %d spp, or past %.0f s of rendering\n\n", 100.0 * options->target,
-            options->maxSamples, options->maxSeconds);
+        std::printf("stops at noise <= %.2f%%, %d spp, or past %.0f s of rendering\n\n",
+            100.0 * options->target, options->maxSamples, options->maxSeconds);
         std::printf("%8s %6s %10s %12s %9s\n", "spp", "draws", "seconds", "Msamples/s", "noise%");
         std::fflush(stdout);
 
@@ -177,8 +179,10 @@ int main(int argc, char** argv)
             lastSeconds = stats.seconds;
             total += stats.seconds;
             const double noise = stats.noise.value_or(-1.0);
-            std::printf("%8d %6d %10.2f %12.1f %9.3f\n", stats.samples, stats.draws, stats.seconds,
-                double(covered) * double(stats.samples) / stats.seconds * 1e-6, 100.0 * noise);
+            // No estimate from one draw (it needs both half-buffers).
+            const std::string noiseText = stats.noise ? std::to_string(100.0 * noise).substr(0, 6) : "n/a";
+            std::printf("%8d %6d %10.2f %12.2f %9s\n", stats.samples, stats.draws, stats.seconds,
+                double(covered) * double(stats.samples) / stats.seconds * 1e-6, noiseText.c_str());
             std::fflush(stdout);
             if (stats.noise && noise <= options->target) {
                 std::printf("\nconverged: %d spp, %.2f%% noise in %.2f s\n", stats.samples, 100.0 * noise,
