@@ -134,8 +134,10 @@ struct Options {
             "Measures run time against error of the real-time renderer's IBL quality settings: for each\n"
             "configuration and environment, a fresh IBL precompute (no cache) is timed and the reference\n"
             "view of a metal and a dielectric at several roughness values is rendered on the GPU and\n"
-            "compared with the CPU ground truth (relative RMSE over the sphere). Ground-truth images are\n"
-            "cached on disk ($FACET_CACHE_DIR/ground-truth or the user cache directory)."));
+            "compared with the CPU ground truth (relative RMSE over the sphere). The reference group\n"
+            "(--ibl reference at several samples per pixel) times its converging render instead.\n"
+            "Ground-truth images are cached on disk ($FACET_CACHE_DIR/ground-truth or the user cache\n"
+            "directory)."));
         for (const QCommandLineOption* option : {&help, &env, &size, &spp, &roughness, &sweep, &iblSamples,
                  &repeat, &threads, &truthNoise, &noTruthCache, &quick, &csv})
             parser.addOption(*option);
@@ -306,9 +308,10 @@ std::vector<BenchConfig> BenchCommand::configsFor(
                 configs.push_back(variant("irradiance", "irradiance=map/" + std::to_string(samples), s));
             }
         } else if (group == QStringLiteral("reference")) {
-            // The converging integrator of core/GroundTruth on the GPU: its error against the truth
-            // is its noise (plus the truth's), so the sweep is over samples per pixel. The
-            // settings are the default preset's: they only draw the background.
+            // The converging integrator of core/GroundTruth on the GPU: it estimates the truth's
+            // integral, so its error should be its noise plus the truth's, and the sweep is over
+            // samples per pixel. The settings are the default preset's: they only draw the
+            // background.
             for (int samples : referenceSamples)
                 configs.push_back(BenchConfig {"reference", "reference=" + std::to_string(samples), base,
                     IblMethod::Reference, samples});
