@@ -112,10 +112,13 @@ void CompareRenderer::fill(const FrameRect& rect, float grey)
     glDisable(GL_SCISSOR_TEST);
 }
 
-std::pair<const void*, std::uint64_t> CompareRenderer::lightingKeyOf(const CompareCellDraw& cell)
+std::pair<std::uint64_t, std::uint64_t> CompareRenderer::lightingKeyOf(const CompareCellDraw& cell)
 {
-    return std::make_pair(
-        static_cast<const void*>(&cell.assets.environment.image()), iblSettingsOf(cell.project).hash());
+    // By content, not by the image's address: an environment freed after one frame and another
+    // made at the same address before the next must not find the first one's lighting (the
+    // grid showed a cell lit by the previous environment; CompareUiTest's prepared-once row
+    // counted one request for two environments when that happened).
+    return std::make_pair(cell.assets.environment.contentHash(), iblSettingsOf(cell.project).hash());
 }
 
 bool CompareRenderer::needsLighting(const CompareCellDraw& cell) const
@@ -128,7 +131,7 @@ bool CompareRenderer::needsLighting(const CompareCellDraw& cell) const
 
 int CompareRenderer::lightingToPrepare(const std::vector<CompareCellDraw>& cells) const
 {
-    std::set<std::pair<const void*, std::uint64_t>> keys;
+    std::set<std::pair<std::uint64_t, std::uint64_t>> keys;
     for (const CompareCellDraw& cell : cells)
         if (needsLighting(cell))
             keys.insert(lightingKeyOf(cell));
@@ -248,11 +251,11 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
     m_frames->textureCache().setMaxAnisotropy(TextureFiltering::anisotropyFor(m_glInfo, reduced));
 
     bool ok = true;
-    std::set<std::pair<const void*, std::uint64_t>> shown;
+    std::set<std::pair<std::uint64_t, std::uint64_t>> shown;
     for (std::size_t i = 0; i < cells.size(); ++i) {
         const CompareCellDraw& cell = cells[i];
         if (!cell.assets.environment.isEmpty())
-            shown.emplace(&cell.assets.environment.image(), iblSettingsOf(cell.project).hash());
+            shown.insert(lightingKeyOf(cell));
         CellKey key = keyOf(cell, scale);
         if (m_drawn[i] && *m_drawn[i] == key) {
             ++m_stats.cellsKept;

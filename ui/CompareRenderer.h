@@ -118,7 +118,7 @@ private:
         bool operator==(const CellKey&) const = default;
     };
     static CellKey keyOf(const CompareCellDraw& cell, double scale);
-    static std::pair<const void*, std::uint64_t> lightingKeyOf(const CompareCellDraw& cell);
+    static std::pair<std::uint64_t, std::uint64_t> lightingKeyOf(const CompareCellDraw& cell);
     bool drawCell(const CompareCellDraw& cell, double scale, std::string* error);
     std::shared_ptr<const IblTextures> lightingFor(const CompareCellDraw& cell, std::string* error);
     void fill(const FrameRect& rect, float grey);
@@ -131,7 +131,7 @@ private:
     std::vector<std::optional<CellKey>> m_drawn; // by cell index
     std::vector<FrameRect> m_rects; // the cells' rectangles in the last paint
     // The IBL sets of the environments shown, by pixel identity and IBL quality.
-    std::map<std::pair<const void*, std::uint64_t>, std::shared_ptr<const IblTextures>> m_lighting;
+    std::map<std::pair<std::uint64_t, std::uint64_t>, std::shared_ptr<const IblTextures>> m_lighting;
     CompareFrameStats m_stats;
     GLInfo m_glInfo;
 };
