@@ -43,7 +43,7 @@ struct BenchConfig {
     std::string name;
     IblSettings settings; // the split sum's; a reference frame draws only its background with them
     IblMethod method = IblMethod::SplitSum;
-    int samples = 0; // per pixel, for a converging method (Reference); 0 for the split sum
+    int samples = 0; // per pixel, for a sampled method (Fis, Reference); 0 for the split sum
 };
 
 struct BenchRequest {
@@ -77,13 +77,16 @@ public:
     // The samples per pixel the `reference` group renders at unless --ibl-samples says otherwise:
     // 16 ... 4096 (issue 10), each a multiple of FrameRenderer::kSamplesPerDraw or below it.
     static std::vector<int> defaultReferenceSamples();
+    // The fis group's samples per pixel unless --ibl-samples says otherwise: 4 ... 256 (issue 10).
+    static std::vector<int> defaultFisSamples();
     // The configurations of the given groups (IblSettings::presetNames() for "preset"; the
-    // split-sum groups vary one setting of the default preset; "reference" is
-    // IblMethod::Reference at each of `referenceSamples`). Duplicates of an earlier
+    // split-sum groups vary one setting of the default preset; "fis" is IblMethod::Fis at each
+    // of `fisSamples`, "reference" IblMethod::Reference at each of `referenceSamples`). Duplicates of an earlier
     // configuration (same method, samples and settings) are kept (each sweep reads on its own)
     // but measured once.
     static std::vector<BenchConfig> configsFor(
-        const QStringList& groups, const std::vector<int>& referenceSamples = defaultReferenceSamples());
+        const QStringList& groups, const std::vector<int>& referenceSamples = defaultReferenceSamples(),
+        const std::vector<int>& fisSamples = defaultFisSamples());
 };
 
 } // namespace facet

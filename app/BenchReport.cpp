@@ -143,11 +143,15 @@ std::string joinCsv(const Columns& columns, bool names)
 }
 
 // "256/128x6@128 map32/1536": cube / prefilter size x levels @ samples, irradiance; for a
-// Reference row its samples per pixel ("reference 1024 spp").
+// Reference row its samples per pixel ("reference 1024 spp"), for Fis its samples and the cube
+// it reads ("fis 32 spp 256").
 std::string settingsSummary(const BenchRow& row)
 {
     if (row.method == IblMethod::Reference)
         return std::string(toString(row.method)) + " " + std::to_string(row.iblSamples) + " spp";
+    if (row.method == IblMethod::Fis)
+        return std::string(toString(row.method)) + " " + std::to_string(row.iblSamples) + " spp "
+            + std::to_string(row.settings.cubeSize);
     const IblSettings& s = row.settings;
     const std::string irradiance = s.irradiance == IblSettings::Irradiance::SH
         ? std::string("sh9")
@@ -227,9 +231,9 @@ void printBenchTables(std::FILE* out, const std::vector<BenchRow>& rows)
         "Time against error per configuration. Times in ms, the median over the environments (the\n"
         "precompute's cost does not depend on the map's content; the median drops a run a neighbour\n"
         "slowed): ibl = a fresh IBL precompute (no cache), needed = without the passes the configuration\n"
-        "does not use (reference: its source textures and DFG table), then its prefilter and\n"
-        "irradiance passes; render = one %dx%d frame, the mean over the cases (reference: every draw\n"
-        "of its samples, the method's cost); noise = reference's own noise estimate, in %%.\n"
+        "does not use (reference: its source textures and DFG table; fis: those, the environment\n"
+        "cube and irradiance), then its prefilter and irradiance passes; render = one %dx%d frame,\n"
+        "the mean over the cases (fis, reference: every draw of its samples, the method's cost); noise = reference's own noise estimate, in %%.\n"
         "Errors: relative RMSE over the sphere against the ground truth (%d spp), in %%: the mean per\n"
         "material, the mean, median and max over all. The CSV has every row and the per-pixel errors.\n\n",
         rows.front().size, rows.front().size, rows.front().truthSamplesPerPixel);

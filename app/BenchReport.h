@@ -22,7 +22,7 @@ struct BenchRow {
     std::string config;
     IblSettings settings;
     IblMethod method = IblMethod::SplitSum;
-    int iblSamples = 0; // per pixel of a Reference render; 0 for the split sum
+    int iblSamples = 0; // per pixel of a Fis or Reference render; 0 for the split sum
     std::string environment; // BenchEnvironment::label
     std::string material; // "metal" or "dielectric"
     double roughness = 0.0;

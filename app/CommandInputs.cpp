@@ -13,7 +13,7 @@ bool applyIblOptions(const QString* method, const QString* samples, EnvironmentS
     if (method) {
         const std::optional<IblMethod> parsed = iblMethodFromString(method->toStdString());
         if (!parsed) {
-            *error = QStringLiteral("--ibl: '%1' is not split-sum or reference").arg(*method);
+            *error = QStringLiteral("--ibl: '%1' is not split-sum, fis or reference").arg(*method);
             return false;
         }
         environment.method = *parsed;
@@ -27,7 +27,7 @@ bool applyIblOptions(const QString* method, const QString* samples, EnvironmentS
         }
         if (environment.method == IblMethod::SplitSum) {
             *error = QStringLiteral("--ibl-samples: %1 given with --ibl split-sum, which takes no samples "
-                                    "(add --ibl reference)")
+                                    "(add --ibl fis or --ibl reference)")
                          .arg(count);
             return false;
         }

@@ -71,11 +71,14 @@ struct Options {
     QCommandLineOption quality{QStringLiteral("quality"), QStringLiteral("IBL quality preset: draft, default, high."),
                                QStringLiteral("preset")};
     QCommandLineOption ibl{QStringLiteral("ibl"),
-                           QStringLiteral("How the surface integrates the environment: split-sum (real time) or "
-                                          "reference (Monte Carlo on the GPU, converging; see --ibl-samples)."),
+                           QStringLiteral("How the surface integrates the environment: split-sum (real time), fis "
+                                          "(filtered importance sampling of each pixel's lobe) or reference (Monte "
+                                          "Carlo on the GPU, converging; see --ibl-samples)."),
                            QStringLiteral("method")};
     QCommandLineOption iblSamples{QStringLiteral("ibl-samples"),
-                                  QStringLiteral("Samples per pixel for --ibl reference (default 1024)."),
+                                  QStringLiteral("Samples per pixel for --ibl fis (default %1) or reference (default %2).")
+                                      .arg(kDefaultFisSamples)
+                                      .arg(defaultIblSamples(IblMethod::Reference)),
                                   QStringLiteral("N")};
     QCommandLineOption stats{QStringLiteral("stats"), QStringLiteral("Print timings and work counters.")};
     QCommandLineOption output{{QStringLiteral("o"), QStringLiteral("output")},

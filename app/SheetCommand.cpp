@@ -63,10 +63,10 @@ struct Options {
     QCommandLineOption quality {
         QStringLiteral("quality"), QStringLiteral("IBL quality preset: draft, default, high."), QStringLiteral("preset")};
     QCommandLineOption ibl {QStringLiteral("ibl"),
-        QStringLiteral("How the surface integrates the environment: split-sum or reference (see facet render)."),
+        QStringLiteral("How the surface integrates the environment: split-sum, fis or reference (see facet render)."),
         QStringLiteral("method")};
     QCommandLineOption iblSamples {
-        QStringLiteral("ibl-samples"), QStringLiteral("Samples per pixel for --ibl reference."), QStringLiteral("N")};
+        QStringLiteral("ibl-samples"), QStringLiteral("Samples per pixel for --ibl fis or reference."), QStringLiteral("N")};
     QCommandLineOption referenceView {QStringLiteral("reference-view"),
         QStringLiteral("Every cell uses DESIGN.md's reference camera (unit sphere, camera at (0,0,3), 45 degree "
                        "FOV).")};

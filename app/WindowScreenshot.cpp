@@ -27,10 +27,14 @@ WindowScreenshot::WindowScreenshot(
 {
     // The grab goes after the first complete frame has reached the window, from the event loop,
     // so that the layout has settled and the viewport holds a finished picture. Previews drawn
-    // while maps decode and upload (ViewportFrameStats::loadingMaps) are not it.
+    // while maps decode and upload (ViewportFrameStats::loadingMaps) are not it, nor, for a
+    // project lit by fis or reference, the frames before its refinement is done.
     connect(viewport, &QOpenGLWidget::frameSwapped, this, [this, viewport] {
         const ViewportFrameStats& frame = viewport->lastFrameStats();
-        if (!m_done && !frame.reduced && !frame.loadingMaps && frame.mapsHeldBack == 0
+        const bool refined = frame.refineMethod == IblMethod::SplitSum || frame.refinement.done();
+        if (!refined)
+            m_timeout.start(kFirstFrameTimeoutMs); // progress: a refinement may take minutes
+        if (!m_done && !frame.reduced && !frame.loadingMaps && frame.mapsHeldBack == 0 && refined
             && viewport->sceneController() && viewport->sceneController()->pendingAssetLoads() == 0)
             QTimer::singleShot(0, this, &WindowScreenshot::save);
     });

@@ -19,7 +19,8 @@ class ViewportWidget;
 class WindowScreenshot : public QObject {
     Q_OBJECT
 public:
-    // How long to wait for the first complete frame before giving up (a context that never comes up).
+    // How long to wait for the first complete frame before giving up (a context that never comes
+    // up); a refining view's frames (fis, reference) restart the wait.
     static constexpr int kFirstFrameTimeoutMs = 60000;
 
     WindowScreenshot(QWidget* window, ViewportWidget* viewport, CompareView* compare, QString path,

@@ -89,4 +89,16 @@ double filteredLod(double pdf, double sampleCount, double sourceSize, double max
     return std::clamp(0.5 * std::log2(omegaS / omegaP) + 1.0, 0.0, maxLod);
 }
 
+double cubeTexelSolidAngle(const glm::dvec3& d, double sourceSize)
+{
+    const double major = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+    return 4.0 * major * major * major / (sourceSize * sourceSize);
+}
+
+double filteredLodAt(double pdf, double sampleCount, double sourceSize, double maxLod, const glm::dvec3& d)
+{
+    const double omegaS = 1.0 / (sampleCount * std::max(pdf, 0.5 * shading::kInvPi));
+    return std::clamp(0.5 * std::log2(omegaS / cubeTexelSolidAngle(d, sourceSize)), 0.0, maxLod);
+}
+
 } // namespace facet

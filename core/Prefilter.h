@@ -37,5 +37,14 @@ glm::dvec3 prefilteredRadiance(const Environment& environment, const glm::dvec3&
 // clamped to [0, maxLod], with pdf floored at 1 / (2 pi) (a uniform hemisphere's: a rare
 // grazing or tail sample must not read a level that averages light from behind). GLSL twin: resources/shaders/ibl_filtering.glsl.
 double filteredLod(double pdf, double sampleCount, double sourceSize, double maxLod);
+// The solid angle of the texel of a size-w cubemap face at direction d (unit):
+// (2/w)^2 / (1 + a^2 + b^2)^(3/2) = 4 |d|_max^3 / w^2, a and b the face coordinates. The texels
+// of a face sum to 4 pi / 6.
+double cubeTexelSolidAngle(const glm::dvec3& d, double sourceSize);
+// filteredLod against the texel at d (cubeTexelSolidAngle) instead of the face average, and
+// without its +1 (measured: the blur is Fis's bias): lod = 0.5 log2(Omega_s / Omega_p(d)),
+// clamped to [0, maxLod]. What IblMethod::Fis reads its samples at. GLSL twin:
+// resources/shaders/ibl_filtering.glsl.
+double filteredLodAt(double pdf, double sampleCount, double sourceSize, double maxLod, const glm::dvec3& d);
 
 } // namespace facet

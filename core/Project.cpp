@@ -37,7 +37,7 @@ constexpr std::pair<BackgroundMode, const char*> kBackgroundModes[]
 constexpr std::pair<IblQuality, const char*> kIblQualities[]
     = {{IblQuality::Draft, "draft"}, {IblQuality::Default, "default"}, {IblQuality::High, "high"}};
 constexpr std::pair<IblMethod, const char*> kIblMethods[]
-    = {{IblMethod::SplitSum, "split-sum"}, {IblMethod::Reference, "reference"}};
+    = {{IblMethod::SplitSum, "split-sum"}, {IblMethod::Fis, "fis"}, {IblMethod::Reference, "reference"}};
 
 // ---- Value types <-> JSON ---------------------------------------------------------------
 
@@ -449,6 +449,7 @@ int defaultIblSamples(IblMethod method)
 {
     switch (method) {
     case IblMethod::SplitSum: return 0;
+    case IblMethod::Fis: return kDefaultFisSamples;
     case IblMethod::Reference: return 1024;
     }
     return 0;
@@ -505,7 +506,7 @@ bool EnvironmentSettings::validate(std::string* problem) const
                     problem);
     if (samples != 0 && method == IblMethod::SplitSum)
         return fail("samples: " + std::to_string(samples)
-                        + " given with the split-sum method, which takes no samples (use \"reference\")",
+                        + " given with the split-sum method, which takes no samples (use \"fis\" or \"reference\")",
                     problem);
     return true;
 }

@@ -53,15 +53,22 @@ std::optional<IblQuality> iblQualityFromString(std::string_view name);
 
 // How the surface integrates the environment's light (docs/rendering.md, "IBL methods"):
 // SplitSum: prefiltered radiance x DFG table, one lookup (the real-time default).
+// Fis: filtered importance sampling of the pixel's own lobe: N visible-normal GGX samples per
+//   pixel, each read from the environment's mip level of its footprint, with the BRDF evaluated
+//   per sample; diffuse from the irradiance map. Deterministic (no noise), biased by the filter.
 // Reference: Monte Carlo with multiple importance sampling of the BRDF and the environment, the
 //   integral core/GroundTruth computes; converges as frames accumulate.
-enum class IblMethod { SplitSum, Reference };
-const char* toString(IblMethod value); // "split-sum", "reference"
+enum class IblMethod { SplitSum, Fis, Reference };
+const char* toString(IblMethod value); // "split-sum", "fis", "reference"
 std::optional<IblMethod> iblMethodFromString(std::string_view name);
 // Samples per pixel an IblMethod may be asked for (--ibl-samples, environment.samples).
 inline constexpr int kMaxIblSamples = 65536;
-// The samples a method takes when none are given: Reference 1024 (its accuracy target's
-// count, docs/accuracy.md), the split sum none.
+// Fis's samples per pixel unless told: the fewest of `facet bench --sweep fis` (4 ... 256, five
+// CC0 maps) meeting issue 10's targets, median <= 3% and worst <= 10% (256: 1.53% / 6.44%; 128
+// misses with 11.4% on studio; docs/benchmarks.md, "IBL methods").
+inline constexpr int kDefaultFisSamples = 256;
+// The samples a method takes when none are given: Fis kDefaultFisSamples, Reference 1024 (its
+// accuracy target's count, docs/accuracy.md), the split sum none.
 int defaultIblSamples(IblMethod method);
 
 struct ViewSettings {

@@ -32,12 +32,22 @@ FrameRenderer::FrameRenderer(
 {
 }
 
+// A view's refinement: its own accumulator and targets, so a grid's or a command's renders in
+// the same FrameRenderer never disturb it.
+struct FrameRenderer::ViewRefinement {
+    FrameAccumulator accumulator;
+    std::optional<Framebuffer> frame; // RGBA32F: one draw, then the resolved mean
+    std::optional<Framebuffer> held;  // RGBA16F: the split-sum frame shown until the mean is
+    Refinement state;
+};
+
 FrameRenderer::~FrameRenderer()
 {
     // GL objects go while the caller holds the context current: targets and the renderer's
     // objects first, then the precompute (when this was its last holder).
     m_targets.clear();
     m_accumulator.reset();
+    m_view.reset();
     m_renderer.reset();
     m_precompute.reset();
 }
@@ -84,7 +94,7 @@ std::optional<RenderScene> FrameRenderer::prepare(const Project& project, const 
 bool FrameRenderer::addEnvironmentSource(
     const Environment& environment, RenderScene& scene, IblStats* stats, std::string* error)
 {
-    if (scene.sampling.method != IblMethod::Reference)
+    if (scene.sampling.method == IblMethod::SplitSum)
         return true;
     const auto source = m_precompute->source(environment, stats, error);
     if (!source)
@@ -120,11 +130,17 @@ std::optional<Image> FrameRenderer::renderImage(const RenderScene& scene, int wi
     Framebuffer* hdr = target(width, height, format, 0, error);
     if (!hdr || !m_renderer->render(scene, *hdr, error))
         return std::nullopt;
+    return readBack(*hdr, scene, output, error);
+}
+
+std::optional<Image> FrameRenderer::readBack(
+    Framebuffer& hdr, const RenderScene& scene, FrameOutput output, std::string* error)
+{
     if (output == FrameOutput::LinearRadiance)
-        return hdr->readPixels();
+        return hdr.readPixels();
     // The viewport's own display transform, on the GPU.
-    Framebuffer* display = target(width, height, FramebufferFormat::RGBA16F, 1, error);
-    if (!display || !m_renderer->toneMap(*hdr, *display, scene.view, error))
+    Framebuffer* display = target(hdr.width(), hdr.height(), FramebufferFormat::RGBA16F, 1, error);
+    if (!display || !m_renderer->toneMap(hdr, *display, scene.view, error))
         return std::nullopt;
     Image image = display->readPixels();
     image.setEncoding(ColorEncoding::SRGB);
@@ -140,7 +156,7 @@ std::optional<Image> FrameRenderer::renderConverged(const RenderScene& scene, in
     if (!stats)
         stats = &ignored;
     *stats = {};
-    if (scene.sampling.method != IblMethod::Reference) {
+    if (scene.sampling.method == IblMethod::SplitSum) {
         auto image = renderImage(scene, width, height, output, error, format);
         stats->draws = 1;
         stats->seconds = secondsSince(start);
@@ -157,6 +173,7 @@ std::optional<Image> FrameRenderer::renderConverged(const RenderScene& scene, in
     // A view of a value the samples do not change (base colour, normals, ...) is one draw.
     if (!debugViewShowsIntegratedLight(debugViewFromString(scene.view.debugView).value_or(DebugView::None)))
         samples = 1;
+    draw.sampling.runLength = samples;
     for (int done = 0; done < samples;) {
         draw.sampling.sampleBase = done;
         draw.sampling.samples = std::min(kSamplesPerDraw, samples - done);
@@ -171,15 +188,9 @@ std::optional<Image> FrameRenderer::renderConverged(const RenderScene& scene, in
     stats->samples = m_accumulator->samples();
     stats->draws = m_accumulator->draws();
     stats->seconds = secondsSince(start);
-    stats->noise = m_accumulator->noise(noiseMask);
-    if (output == FrameOutput::LinearRadiance)
-        return frame->readPixels();
-    Framebuffer* display = target(width, height, FramebufferFormat::RGBA16F, 1, error);
-    if (!display || !m_renderer->toneMap(*frame, *display, scene.view, error))
-        return std::nullopt;
-    Image image = display->readPixels();
-    image.setEncoding(ColorEncoding::SRGB);
-    return image;
+    if (scene.sampling.method == IblMethod::Reference)
+        stats->noise = m_accumulator->noise(noiseMask);
+    return readBack(*frame, scene, output, error);
 }
 
 bool FrameRenderer::present(
@@ -193,16 +204,23 @@ bool FrameRenderer::present(
         return false;
     m_lastWidth = width;
     m_lastHeight = height;
-    const bool direct
-        = scale >= 1.0 && rect.x == 0 && rect.y == 0 && width == rect.width && height == rect.height;
+    return show(*hdr, scene.view, framebuffer, rect, error);
+}
+
+bool FrameRenderer::show(
+    const Framebuffer& hdr, const ViewSettings& view, unsigned framebuffer, const FrameRect& rect, std::string* error)
+{
+    const int width = hdr.width();
+    const int height = hdr.height();
+    const bool direct = rect.x == 0 && rect.y == 0 && width == rect.width && height == rect.height;
     if (direct) {
         // The common case (the single view at full resolution): tone-map straight into the
         // caller's framebuffer, no copy.
-        if (!m_renderer->toneMapTo(*hdr, framebuffer, scene.view, error))
+        if (!m_renderer->toneMapTo(hdr, framebuffer, view, error))
             return false;
     } else {
         Framebuffer* display = target(width, height, FramebufferFormat::RGBA16F, 1, error);
-        if (!display || !m_renderer->toneMap(*hdr, *display, scene.view, error))
+        if (!display || !m_renderer->toneMap(hdr, *display, view, error))
             return false;
         // Into the rectangle: stretched (bilinear) when reduced, texel for texel otherwise.
         glBindFramebuffer(GL_READ_FRAMEBUFFER, display->framebufferId());
@@ -213,6 +231,70 @@ bool FrameRenderer::present(
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     glViewport(rect.x, rect.y, rect.width, rect.height);
     return true;
+}
+
+bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene, unsigned framebuffer,
+    const FrameRect& rect, bool restart, int drawSamples, std::string* error)
+{
+    if (!m_view)
+        m_view = std::make_unique<ViewRefinement>();
+    ViewRefinement& view = *m_view;
+    const int width = std::max(rect.width, 1);
+    const int height = std::max(rect.height, 1);
+    if (!view.frame || view.frame->width() != width || view.frame->height() != height) {
+        view.frame = Framebuffer::create(width, height, FramebufferFormat::RGBA32F, error);
+        view.held = Framebuffer::create(width, height, FramebufferFormat::RGBA16F, error);
+        if (!view.frame || !view.held) {
+            view.frame.reset();
+            return false;
+        }
+        restart = true;
+    }
+    if (restart) {
+        // The split-sum frame first: shown at once, and until the accumulation is worth showing.
+        view.state = {};
+        view.state.target = std::max(scene.sampling.samples, 1);
+        if (!debugViewShowsIntegratedLight(debugViewFromString(scene.view.debugView).value_or(DebugView::None)))
+            view.state.target = 1;
+        if (!view.accumulator.reset(width, height, error) || !m_renderer->render(preview, *view.held, error))
+            return false;
+        m_lastWidth = width;
+        m_lastHeight = height;
+        return show(*view.held, scene.view, framebuffer, rect, error);
+    }
+    Refinement& state = view.state;
+    if (!state.done()) {
+        RenderScene draw = scene;
+        draw.view.msaaSamples = 1;
+        draw.sampling.sampleBase = state.samples;
+        draw.sampling.samples = std::clamp(drawSamples, 1, state.target - state.samples);
+        draw.sampling.runLength = state.target;
+        const Clock::time_point start = Clock::now();
+        if (!m_renderer->render(draw, *view.frame, error)
+            || !view.accumulator.add(*view.frame, draw.sampling.samples, error))
+            return false;
+        glFinish();
+        state.lastDrawMs = secondsSince(start) * 1000.0;
+        state.seconds += state.lastDrawMs / 1000.0;
+        state.samples += draw.sampling.samples;
+        ++state.draws;
+    }
+    m_lastWidth = width;
+    m_lastHeight = height;
+    // Fis's partial runs are biased (a Hammersley prefix covers only part of the lobe): shown
+    // when complete. Reference's are unbiased, and shown once no longer mostly noise.
+    state.showing = state.samples
+        >= (scene.sampling.method == IblMethod::Fis ? state.target : std::min(kRefinementShownAfter, state.target));
+    if (!state.showing)
+        return show(*view.held, scene.view, framebuffer, rect, error);
+    // The mean so far into the frame target (the sums are the accumulator's own textures).
+    return view.accumulator.resolve(*view.frame, error) && show(*view.frame, scene.view, framebuffer, rect, error);
+}
+
+const FrameRenderer::Refinement& FrameRenderer::refinement() const
+{
+    static const Refinement none;
+    return m_view ? m_view->state : none;
 }
 
 } // namespace facet

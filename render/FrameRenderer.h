@@ -91,7 +91,7 @@ public:
     bool addDfgTables(const IblSettings& settings, RenderScene& scene, IblStats* stats, std::string* error);
 
     // The environment at source resolution (IblPrecompute::source) put into `scene` when its
-    // method reads it (IblMethod::Reference); prepare() calls it. False with *error on failure.
+    // method reads it (IblMethod::Fis and Reference); prepare() calls it. False with *error on failure.
     bool addEnvironmentSource(const Environment& environment, RenderScene& scene, IblStats* stats, std::string* error);
 
     // Renders `scene` into a width x height target of `format` and reads it back (top row first).
@@ -104,12 +104,14 @@ public:
         int samples = 0; // per pixel
         int draws = 0;
         double seconds = 0.0; // wall time of the draws, glFinish'ed
-        std::optional<double> noise; // FrameAccumulator::noise over `noiseMask`; unset for one draw
+        // FrameAccumulator::noise over `noiseMask` (Reference: a random estimate); unset for one draw
+        // and for Fis (deterministic: its error is a bias, not noise)
+        std::optional<double> noise;
     };
-    // renderImage() for any method: a Reference scene is drawn in draws of at most
-    // kSamplesPerDraw samples ([0, samples) of each pixel's sequence, scene.sampling's
-    // sampleBase and samples replaced) into RGBA32F targets summed by a FrameAccumulator, then
-    // resolved and read back; other scenes are one renderImage() into a target of `format`. A
+    // renderImage() for any method: a Reference or Fis scene is drawn in draws of at most
+    // kSamplesPerDraw samples ([0, samples) of a run of `samples`, scene.sampling's sampleBase,
+    // samples and runLength replaced) into RGBA32F targets summed by a FrameAccumulator, then
+    // resolved and read back; a split-sum scene is one renderImage() into a target of `format`. A
     // debug view that does not show the integrated light (debugViewShowsIntegratedLight) takes
     // one sample whatever `samples` says.
     static constexpr int kSamplesPerDraw = 64;
@@ -124,6 +126,29 @@ public:
     // False with *error when a step failed; the rectangle is then untouched.
     bool present(const RenderScene& scene, unsigned framebuffer, const FrameRect& rect, double scale,
         std::string* error);
+    // One step of a view's progressive refinement (the window's still frame, docs/rendering.md
+    // "Refinement"): `scene` drawn by its sampled method (Fis, Reference) toward
+    // scene.sampling.samples per pixel, accumulated across calls, shown in `rect` of
+    // `framebuffer` at full resolution. A restart (`restart`, or a new size) draws `preview` (the
+    // same scene by the split sum) into a held target and shows it; each later call adds one draw
+    // of `drawSamples` samples (at most what is left) and shows the held frame until
+    // kRefinementShownAfter samples are in for Reference (an image of a few samples is noise) or
+    // all of them for Fis (a partial run of its points covers part of the lobe), then the mean
+    // so far. Calls once done add nothing and show the mean again (an exposure edit).
+    struct Refinement {
+        int samples = 0; // per pixel so far
+        int target = 0; // per pixel when done (1 for a debug view the samples cannot change)
+        int draws = 0;
+        double seconds = 0.0; // of the draws, glFinish'ed
+        double lastDrawMs = 0.0;
+        bool showing = false; // the accumulation, not the held split-sum frame, is on screen
+        bool done() const { return target > 0 && samples >= target; }
+    };
+    static constexpr int kRefinementShownAfter = 16;
+    bool refine(const RenderScene& preview, const RenderScene& scene, unsigned framebuffer, const FrameRect& rect,
+        bool restart, int drawSamples, std::string* error);
+    const Refinement& refinement() const;
+
     // The size present() rendered at in its last call.
     int lastRenderWidth() const { return m_lastWidth; }
     int lastRenderHeight() const { return m_lastHeight; }
@@ -146,6 +171,13 @@ public:
 private:
     // A pooled target of this size and format, made on first use.
     Framebuffer* target(int width, int height, FramebufferFormat format, int slot, std::string* error);
+    // `hdr`'s display transform into `rect` of `framebuffer` (directly when it fills it, else
+    // through a pooled display target, stretched).
+    bool show(const Framebuffer& hdr, const ViewSettings& view, unsigned framebuffer, const FrameRect& rect,
+        std::string* error);
+    // `hdr` read back as `output`: itself, or its display transform through a pooled target.
+    std::optional<Image> readBack(
+        Framebuffer& hdr, const RenderScene& scene, FrameOutput output, std::string* error);
 
     struct PooledTarget {
         int slot = 0; // two targets of one size in one frame (the HDR image and its display copy)
@@ -154,6 +186,8 @@ private:
     std::shared_ptr<IblPrecompute> m_precompute;
     std::unique_ptr<Renderer> m_renderer;
     std::unique_ptr<FrameAccumulator> m_accumulator;
+    struct ViewRefinement;
+    std::unique_ptr<ViewRefinement> m_view;
     std::list<PooledTarget> m_targets; // most recently used first
     int m_lastWidth = 0;
     int m_lastHeight = 0;

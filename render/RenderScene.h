@@ -45,7 +45,7 @@ struct DfgLutBinding {
 };
 
 // The environment at source resolution and its sampling tables (render/EnvironmentSource.h), as
-// GL names: what IblMethod::Reference reads instead of the cubes.
+// GL names: what IblMethod::Reference reads instead of the cubes, and Fis for its sharpest lobes.
 struct EnvironmentSourceBinding {
     unsigned radiance = 0; // GL_RGB32F equirect; 0: none (the scene cannot use those methods)
     unsigned conditionalCdf = 0;
@@ -57,7 +57,9 @@ struct EnvironmentSourceBinding {
 // GL names owned by whoever made them (or by `textures` and `dfgTables`); they must outlive the
 // render() call. Tests build tiny ones by hand (a uniform environment needs no precompute).
 struct EnvironmentLighting {
-    unsigned environmentCubemap = 0; // radiance, for the background (level 0)
+    unsigned environmentCubemap = 0; // radiance with its box-filtered mip chain (the background, Fis)
+    int environmentSize = 0;         // its level-0 face size
+    int environmentMipLevels = 1;
     unsigned prefilteredCubemap = 0; // level i: perceptual roughness i / (levels - 1)
     int prefilteredLevels = 1;
     unsigned irradianceCubemap = 0; // irradiance E (not / pi); unused when useSH
@@ -116,6 +118,8 @@ inline EnvironmentLighting environmentLighting(const std::shared_ptr<const IblTe
     EnvironmentLighting lighting;
     if (ibl) {
         lighting.environmentCubemap = ibl->environmentCubemap();
+        lighting.environmentSize = ibl->environmentSize;
+        lighting.environmentMipLevels = ibl->environmentMipLevels;
         lighting.prefilteredCubemap = ibl->prefilteredCubemap();
         lighting.prefilteredLevels = ibl->prefilteredMipLevels;
         lighting.irradianceCubemap = ibl->irradianceCubemap();
@@ -143,15 +147,19 @@ struct RenderPart {
     bool visible = true;
 };
 
-// How a draw integrates the environment (core/Project.h IblMethod). Reference draws take samples
-// [sampleBase, sampleBase + samples) of each pixel's sequence (shifted Sobol' points: any split of
-// a run into draws gives the same points, core/Sampling.h), so frames accumulated by
-// render/FrameAccumulator converge as one long run would.
+// How a draw integrates the environment (core/Project.h IblMethod). Reference and Fis draws take
+// samples [sampleBase, sampleBase + samples) of a run of `total`: Reference of each pixel's
+// sequence (shifted Sobol' points: any split of a run into draws gives the same points,
+// core/Sampling.h), Fis of hammersley(., total), whose points and footprints depend on the run's
+// length; so frames accumulated by render/FrameAccumulator give what one draw of the whole run
+// would.
 struct IblSampling {
     IblMethod method = IblMethod::SplitSum;
     int samples = 1;
     int sampleBase = 0;
+    int runLength = 0; // the run's samples per pixel; 0: `samples` (one draw is the run)
     std::uint32_t seed = 0;
+    int total() const { return runLength > 0 ? runLength : samples; }
     bool operator==(const IblSampling&) const = default;
 };
 

@@ -145,6 +145,8 @@ SurfaceVariantKey Renderer::variantKeyFor(const RenderScene& scene, int material
     key.features |= sharedTexelFeatures(material.material, key.features, textures);
     if (scene.sampling.method == IblMethod::Reference)
         key.features = key.features | SurfaceFeature::IblReference;
+    else if (scene.sampling.method == IblMethod::Fis)
+        key.features = key.features | SurfaceFeature::IblFis;
     if (scene.analyticSphere)
         key.features = key.features | SurfaceFeature::AnalyticSphereNormal;
     key.debugView = debugViewFromString(scene.view.debugView).value_or(DebugView::None);
@@ -229,10 +231,11 @@ bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::str
                     + "' of its material (EnvironmentLighting::setDfgLut, addDfgTables)";
             return false;
         }
-    if (scene.sampling.method == IblMethod::Reference && scene.mesh && !scene.environment.source.radiance) {
+    if (scene.sampling.method != IblMethod::SplitSum && scene.mesh && !scene.environment.source.radiance) {
         if (error)
-            *error = "Renderer::render: the reference method needs the environment at source resolution "
-                     "(EnvironmentLighting::source, IblPrecompute::source)";
+            *error = std::string("Renderer::render: the ") + toString(scene.sampling.method)
+                + " method needs the environment at source resolution (EnvironmentLighting::source, "
+                  "IblPrecompute::source)";
         return false;
     }
     const int width = hdrTarget.width();
@@ -360,7 +363,8 @@ void Renderer::setFrameUniforms(const ShaderProgram& program, const SurfaceVaria
     }
     setMat3(program, "uEnvironmentRotation", environmentRotation(env.rotationDegrees));
     program.setFloat("uEnvironmentIntensity", float(env.intensity));
-    if (hasFeature(key.features, SurfaceFeature::IblReference)) {
+    const bool fis = hasFeature(key.features, SurfaceFeature::IblFis);
+    if (fis || hasFeature(key.features, SurfaceFeature::IblReference)) {
         const std::pair<int, unsigned> sources[] = {{kSourceRadianceUnit, env.source.radiance},
             {kSourceConditionalUnit, env.source.conditionalCdf}, {kSourceMarginalUnit, env.source.marginalCdf},
             {kSourcePdfUnit, env.source.pdf}};
@@ -374,6 +378,14 @@ void Renderer::setFrameUniforms(const ShaderProgram& program, const SurfaceVaria
         program.setInt("uIblSampleBase", scene.sampling.sampleBase);
         program.setInt("uIblSamples", std::max(scene.sampling.samples, 1));
         program.setInt("uIblSeed", int(scene.sampling.seed)); // the shader reads the bits as uint
+    }
+    if (fis) {
+        glActiveTexture(GL_TEXTURE0 + kEnvironmentUnit);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, env.environmentCubemap);
+        program.setInt("uEnvironmentMap", kEnvironmentUnit);
+        program.setFloat("uEnvironmentSize", float(std::max(env.environmentSize, 1)));
+        program.setFloat("uEnvironmentMaxLod", float(std::max(env.environmentMipLevels - 1, 0)));
+        program.setInt("uIblSampleTotal", std::max(scene.sampling.total(), 1));
     }
 
     // Punctual lights (KHR_lights_punctual units), enabled ones, at most kMaxPunctualLights.

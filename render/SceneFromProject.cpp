@@ -99,7 +99,7 @@ RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets
         scene.camera = Camera::referenceView();
         scene.view.msaaSamples = 1;
         scene.view.background = BackgroundMode::Environment;
-        scene.analyticSphere = method == IblMethod::Reference && project.view.mesh == "sphere";
+        scene.analyticSphere = method != IblMethod::SplitSum && project.view.mesh == "sphere";
     }
     scene.environment = environmentLighting(ibl, assets.environment.rotationDegrees(), assets.environment.intensity(),
                                             options.irradianceFromSH);

@@ -21,8 +21,8 @@ class IblPrecompute;
 
 struct SceneOptions {
     // DESIGN.md's reference view: the reference camera, one sample through each pixel centre
-    // (no MSAA), the environment behind the object. With the reference method and the "sphere"
-    // mesh, also the analytic sphere (RenderScene::analyticSphere): the split sum keeps the mesh
+    // (no MSAA), the environment behind the object. With the fis or reference method and the
+    // "sphere" mesh, also the analytic sphere (RenderScene::analyticSphere): the split sum keeps the mesh
     // normals, so its goldens and measured errors stay those of the real-time path.
     bool referenceView = false;
     // Irradiance from the 9 SH coefficients instead of the irradiance cubemap.

@@ -58,8 +58,11 @@ enum class SurfaceFeature : uint32_t {
     // hit of the pixel's ray (n = hit, v = -ray) instead of the mesh's interpolated normal, as the
     // CPU ground truth does (RenderScene::analyticSphere).
     AnalyticSphereNormal = 1u << 21,
+    // IBL_FIS: the environment by filtered importance sampling of the pixel's own lobe
+    // (IblMethod::Fis, ibl_fis.glsl) from the environment cube's mip chain and the source equirect.
+    IblFis = 1u << 22,
 };
-inline constexpr int kSurfaceFeatureBits = 22;
+inline constexpr int kSurfaceFeatureBits = 23;
 
 using SurfaceFeatures = uint32_t;
 inline constexpr SurfaceFeatures operator|(SurfaceFeature a, SurfaceFeature b) { return uint32_t(a) | uint32_t(b); }

@@ -212,6 +212,37 @@ private Q_SLOTS:
         }
     }
 
+    // The fis group: IblMethod::Fis at each --ibl-samples count, one row per count and case, no
+    // noise column (it is deterministic), its error falling as the samples grow.
+    void fisSweep()
+    {
+        FACET_REQUIRE_ASSET(facet::test::hdriPath(QStringLiteral("city")), "hdri/city.exr");
+        const QString csvPath = path(QStringLiteral("fis.csv"));
+        const Result r = runFacet({QStringLiteral("bench"), QStringLiteral("--quick"), QStringLiteral("--sweep"),
+                                      QStringLiteral("fis"), QStringLiteral("--ibl-samples"), QStringLiteral("4,128"),
+                                      QStringLiteral("--size"), QStringLiteral("16"), QStringLiteral("--roughness"),
+                                      QStringLiteral("0.25,0.75"), QStringLiteral("--csv"), csvPath},
+            path(QStringLiteral("cache")));
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("fis=4")) && r.out.contains(QStringLiteral("fis 128 spp")),
+            qPrintable(r.out));
+        const Csv csv = readCsv(csvPath);
+        QCOMPARE(csv.rows.size(), 8); // 2 sample counts x 1 map x 2 materials x 2 roughness values
+        QMap<int, double> meanError;
+        for (const QStringList& row : csv.rows) {
+            QCOMPARE(row[csv.column("method")], QStringLiteral("fis"));
+            QCOMPARE(row[csv.column("group")], QStringLiteral("fis"));
+            const int samples = row[csv.column("ibl_samples")].toInt();
+            QCOMPARE(row[csv.column("draws")].toInt(), (samples + 63) / 64);
+            const double error = row[csv.column("rel_rmse")].toDouble();
+            QVERIFY2(std::isfinite(error) && error > 0.0 && error < 0.5, qPrintable(row.join(QLatin1Char(','))));
+            meanError[samples] += error / 4.0;
+        }
+        QCOMPARE(meanError.keys(), (QList<int> {4, 128}));
+        QVERIFY2(meanError[128] < 0.5 * meanError[4],
+            qPrintable(QStringLiteral("%1 vs %2").arg(meanError[128]).arg(meanError[4])));
+    }
+
     void helpListsTheOptions()
     {
         const Result r
@@ -252,7 +283,7 @@ private Q_SLOTS:
             << QStringList {QStringLiteral("--sweep"), QStringLiteral("presets,colour")}
             << QStringLiteral(
                    "--sweep: 'colour' is not one of presets, samples, cube, prefilter-size, irradiance, "
-                   "reference");
+                   "fis, reference");
         QTest::newRow("ibl-samples zero")
             << QStringList {QStringLiteral("--ibl-samples"), QStringLiteral("16,0")}
             << QStringLiteral("--ibl-samples: '0' is not a whole number from 1 to 65536");
@@ -262,10 +293,10 @@ private Q_SLOTS:
             << QStringList {QStringLiteral("--sweep"), QStringLiteral("presets"),
                    QStringLiteral("--ibl-samples"), QStringLiteral("16")}
             << QStringLiteral(
-                   "--ibl-samples: the sample counts of the reference group, which --sweep leaves out");
+                   "--ibl-samples: the sample counts of the fis and reference groups, which --sweep leaves out");
         QTest::newRow("ibl-samples with quick")
             << QStringList {QStringLiteral("--quick"), QStringLiteral("--ibl-samples"), QStringLiteral("16")}
-            << QStringLiteral("--ibl-samples: the sample counts of the reference group");
+            << QStringLiteral("--ibl-samples: the sample counts of the fis and reference groups");
         QTest::newRow("csv folder")
             << QStringList {QStringLiteral("--csv"), QStringLiteral("/no/such/dir/out.csv")}
             << QStringLiteral("--csv '/no/such/dir/out.csv': the folder /no/such/dir does not exist");

@@ -282,6 +282,10 @@ std::vector<Row> rows()
     add(
         "IBL quality", [](Project& p) { p.environment.quality = IblQuality::Draft; },
         DocumentChange::IblQuality);
+    add(
+        "IBL method", [](Project& p) { p.environment.method = IblMethod::Fis; }, DocumentChange::IblQuality);
+    add(
+        "IBL samples", [](Project& p) { p.environment.samples = 64; }, DocumentChange::IblQuality);
 
     // --- Each view field; the mesh is a kind of its own.
     add(

@@ -235,7 +235,7 @@ private Q_SLOTS:
             QCOMPARE(toString(*backgroundModeFromString(name)), name);
         for (const char* name : {"draft", "default", "high"})
             QCOMPARE(toString(*iblQualityFromString(name)), name);
-        for (const char* name : {"split-sum", "reference"})
+        for (const char* name : {"split-sum", "fis", "reference"})
             QCOMPARE(toString(*iblMethodFromString(name)), name);
         QVERIFY(!iblMethodFromString("splitsum"));
         QVERIFY(!toneMapperFromString("filmic"));

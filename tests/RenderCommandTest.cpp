@@ -384,20 +384,42 @@ private Q_SLOTS:
                 }
     }
 
-    // --ibl reference: the GPU integrator, converging over draws of at most 64 samples; --stats
-    // says what ran. 100 samples are two draws (64 + 36), so both half-buffers hold samples and
-    // the noise estimate exists. Its accuracy against the ground truth is ReferenceGLTest's.
-    void referenceMethodRenders()
+    // --ibl reference (the GPU integrator) and --ibl fis (filtered importance sampling): both draw
+    // their samples in draws of at most 64; --stats says what ran. 100 samples are two draws (64 +
+    // 36): for reference both half-buffers then hold samples and the noise estimate exists; fis is
+    // deterministic and prints none. Their accuracy against the ground truth is ReferenceGLTest's
+    // and FisGLTest's.
+    void sampledMethodRenders_data()
     {
-        const QString out = path(QStringLiteral("reference.exr"));
+        QTest::addColumn<QString>("method");
+        QTest::addColumn<QStringList>("lines");
+        QTest::addColumn<QStringList>("absent");
+        QTest::newRow("reference") << QStringLiteral("reference")
+                                   << QStringList {QStringLiteral("ibl_method: reference\n"),
+                                          QStringLiteral("ibl_samples: 100\n"), QStringLiteral("draws: 2\n"),
+                                          QStringLiteral("noise: ")}
+                                   << QStringList {};
+        QTest::newRow("fis") << QStringLiteral("fis")
+                             << QStringList {QStringLiteral("ibl_method: fis\n"), QStringLiteral("ibl_samples: 100\n"),
+                                    QStringLiteral("draws: 2\n")}
+                             << QStringList {QStringLiteral("noise: ")};
+    }
+    void sampledMethodRenders()
+    {
+        QFETCH(QString, method);
+        QFETCH(QStringList, lines);
+        QFETCH(QStringList, absent);
+        const QString out = path(method + QStringLiteral(".exr"));
         const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--env"), QStringLiteral("sky"),
-                                   QStringLiteral("--ibl"), QStringLiteral("reference"), QStringLiteral("--ibl-samples"),
+                                   QStringLiteral("--ibl"), method, QStringLiteral("--ibl-samples"),
                                    QStringLiteral("100"), QStringLiteral("--reference-view"), QStringLiteral("--quality"),
                                    QStringLiteral("draft"), QStringLiteral("--size"), QStringLiteral("16x16"),
                                    QStringLiteral("--stats"), QStringLiteral("-o"), out});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-        for (const char* line : {"ibl_method: reference\n", "ibl_samples: 100\n", "draws: 2\n", "noise: "})
-            QVERIFY2(r.out.contains(QLatin1String(line)), qPrintable(r.out));
+        for (const QString& line : lines)
+            QVERIFY2(r.out.contains(line), qPrintable(r.out));
+        for (const QString& line : absent)
+            QVERIFY2(!r.out.contains(line), qPrintable(r.out));
         std::string error;
         const auto image = Image::load(out.toStdString(), &error);
         QVERIFY2(image, error.c_str());
@@ -411,22 +433,31 @@ private Q_SLOTS:
         QVERIFY(!splitSum.out.contains(QLatin1String("ibl_samples:")));
     }
 
-    // Debug views with the reference method: one that shows the integrated light converges like
-    // the image; one the samples cannot change (base colour) is drawn once, not 100 times.
-    void referenceMethodDebugViews_data()
+    // Debug views with the sampled methods: one that shows the integrated light takes every
+    // sample; one the samples cannot change (base colour) is drawn once, not 100 times.
+    void sampledMethodDebugViews_data()
     {
+        QTest::addColumn<QString>("method");
         QTest::addColumn<QString>("view");
         QTest::addColumn<QString>("stats");
-        QTest::newRow("ibl-specular") << QStringLiteral("ibl-specular") << QStringLiteral("ibl_samples: 100\ndraws: 2\n");
-        QTest::newRow("white-furnace") << QStringLiteral("white-furnace") << QStringLiteral("ibl_samples: 100\ndraws: 2\n");
-        QTest::newRow("base-color") << QStringLiteral("base-color") << QStringLiteral("ibl_samples: 1\ndraws: 1\n");
-        QTest::newRow("roughness") << QStringLiteral("roughness") << QStringLiteral("ibl_samples: 1\ndraws: 1\n");
+        for (const QString& method : {QStringLiteral("reference"), QStringLiteral("fis")}) {
+            const QByteArray m = method.toUtf8();
+            QTest::newRow(m + " ibl-specular") << method << QStringLiteral("ibl-specular")
+                                               << QStringLiteral("ibl_samples: 100\ndraws: 2\n");
+            QTest::newRow(m + " white-furnace") << method << QStringLiteral("white-furnace")
+                                                << QStringLiteral("ibl_samples: 100\ndraws: 2\n");
+            QTest::newRow(m + " base-color") << method << QStringLiteral("base-color")
+                                             << QStringLiteral("ibl_samples: 1\ndraws: 1\n");
+            QTest::newRow(m + " roughness") << method << QStringLiteral("roughness")
+                                            << QStringLiteral("ibl_samples: 1\ndraws: 1\n");
+        }
     }
-    void referenceMethodDebugViews()
+    void sampledMethodDebugViews()
     {
+        QFETCH(QString, method);
         QFETCH(QString, view);
         QFETCH(QString, stats);
-        const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--ibl"), QStringLiteral("reference"),
+        const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--ibl"), method,
                                    QStringLiteral("--ibl-samples"), QStringLiteral("100"), QStringLiteral("--view"), view,
                                    QStringLiteral("--quality"), QStringLiteral("draft"), QStringLiteral("--size"),
                                    QStringLiteral("8x8"), QStringLiteral("--stats"), QStringLiteral("-o"),
@@ -525,7 +556,7 @@ private Q_SLOTS:
             << 1 << QStringLiteral("bad-view.json: view.debugView: unknown debug view \"bogus\" (expected one of: none, ");
         QTest::newRow("ibl method") << QStringList{QStringLiteral("render"), QStringLiteral("--ibl"),
                                                    QStringLiteral("path-tracing"), QStringLiteral("-o"), out}
-                                    << 2 << QStringLiteral("--ibl: 'path-tracing' is not split-sum or reference");
+                                    << 2 << QStringLiteral("--ibl: 'path-tracing' is not split-sum, fis or reference");
         QTest::newRow("ibl samples zero") << QStringList{QStringLiteral("render"), QStringLiteral("--ibl"),
                                                          QStringLiteral("reference"), QStringLiteral("--ibl-samples"),
                                                          QStringLiteral("0"), QStringLiteral("-o"), out}

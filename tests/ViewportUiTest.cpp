@@ -109,7 +109,8 @@ private Q_SLOTS:
     void idleWindowDrawsNothing();
     void materialEditRerendersWithoutReloading();
     void brdfSwitchFetchesItsOwnTable();
-    void referenceProjectPreviewsWithTheSplitSum();
+    void sampledMethodRefinesTheStillFrame_data();
+    void sampledMethodRefinesTheStillFrame();
     void cameraDragPreviewsThenRefines();
     void cameraKeysAndWheel();
     void turntableDrawsOnlyWhileRunning();
@@ -260,27 +261,73 @@ void ViewportUiTest::brdfSwitchFetchesItsOwnTable()
     QCOMPARE(m_viewport->lastFrameStats().iblMs, 0.0); // its table is still in memory
 }
 
-void ViewportUiTest::referenceProjectPreviewsWithTheSplitSum()
+void ViewportUiTest::sampledMethodRefinesTheStillFrame_data()
 {
-    // A project whose environment.method is "reference" opens and draws: the window previews with
-    // the split sum (SceneOptions::iblMethod), the same image as the split-sum project, never the
-    // renderer's refusal of a reference frame without source textures.
+    QTest::addColumn<int>("method");
+    QTest::newRow("reference") << int(IblMethod::Reference);
+    QTest::newRow("fis") << int(IblMethod::Fis);
+}
+
+void ViewportUiTest::sampledMethodRefinesTheStillFrame()
+{
+    // A project whose environment.method is fis or reference: the still frame refines by it, one
+    // draw per paint, to the project's samples, the status text saying where it stands; then the
+    // window draws nothing more. An edit starts the refinement again.
+    QFETCH(int, method);
+    constexpr int kSamples = 32;
     QVERIFY(waitForFullFrame(m_viewport));
     Document* document = m_window->document();
-    const QImage before = m_viewport->grabFramebuffer();
+    const QImage splitSum = m_viewport->grabFramebuffer();
     EnvironmentSettings environment = document->project().environment;
     const EnvironmentSettings original = environment;
-    environment.method = IblMethod::Reference;
-    environment.samples = 64;
-    document->setEnvironment(environment, QStringLiteral("IBL method"));
-    // The preview does not change with the method (DocumentChanges has no kind for it yet), so
-    // nothing redraws by itself: ask for a frame.
-    m_viewport->update();
+    environment.method = IblMethod(method);
+    environment.samples = kSamples;
+    QElapsedTimer clock;
+    clock.start();
+    document->setEnvironment(environment, QStringLiteral("Lighting Method"));
+    QTRY_VERIFY_WITH_TIMEOUT(m_viewport->lastFrameStats().refinement.done(), 120000);
+    const double seconds = double(clock.elapsed()) / 1000.0;
+    QVERIFY2(m_viewport->lastError().isEmpty(), qPrintable(m_viewport->lastError()));
+    const ViewportFrameStats done = m_viewport->lastFrameStats();
+    QCOMPARE(int(done.refineMethod), method);
+    QCOMPARE(done.refinement.samples, kSamples);
+    QCOMPARE(done.refinement.target, kSamples);
+    QVERIFY(done.refinement.showing);
+    QVERIFY2(done.refinement.draws >= 2, qPrintable(QString::number(done.refinement.draws)));
+    QVERIFY2(done.summary().contains(QStringLiteral("32/32 spp")) && done.summary().endsWith(QStringLiteral("(done)")),
+        qPrintable(done.summary()));
+    qInfo("%s: %d samples in %d draws, %.1f s of drawing, %.1f s in all", qPrintable(done.summary()),
+        done.refinement.samples, done.refinement.draws, done.refinement.seconds, seconds);
+    // Another image of the same object: close to the split sum's on the whole, not the same.
+    const QImage refined = m_viewport->grabFramebuffer();
+    QVERIFY(refined != splitSum);
+    const QRect area = refined.rect();
+    const double before = summarize(splitSum.convertToFormat(QImage::Format_RGB32), area).meanLuma;
+    const double after = summarize(refined.convertToFormat(QImage::Format_RGB32), area).meanLuma;
+    QVERIFY2(std::abs(after - before) < 0.15 * before, qPrintable(QStringLiteral("%1 vs %2").arg(after).arg(before)));
+    // Done: idle.
+    const std::uint64_t frames = m_viewport->frameCount();
+    QTest::qWait(1000);
+    QCOMPARE(m_viewport->frameCount(), frames);
+
+    // An edit restarts it: the first frame after it is the split sum's again (no samples), then
+    // the samples grow draw by draw to the target.
+    Material material = document->project().material();
+    material.setFactor(MapSlot::Roughness, material.roughness() * 0.5);
+    std::vector<int> samplesSeen;
+    const auto connection = connect(m_viewport, &ViewportWidget::frameRendered, this,
+        [&] { samplesSeen.push_back(m_viewport->lastFrameStats().refinement.samples); });
+    document->setMaterial(material, QStringLiteral("Roughness"), MergeId::None);
+    QTRY_VERIFY_WITH_TIMEOUT(!samplesSeen.empty() && samplesSeen.back() == kSamples, 120000);
+    disconnect(connection);
+    QCOMPARE(samplesSeen.front(), 0);
+    QVERIFY(std::is_sorted(samplesSeen.begin(), samplesSeen.end()));
+    QVERIFY(samplesSeen.size() >= 3);
+    document->undoStack()->undo(); // the roughness
+    document->setEnvironment(original, QStringLiteral("Lighting Method"));
     QVERIFY(waitForFrame(m_viewport));
     QVERIFY(waitForFullFrame(m_viewport));
-    QVERIFY2(m_viewport->lastError().isEmpty(), qPrintable(m_viewport->lastError()));
-    QCOMPARE(m_viewport->grabFramebuffer(), before);
-    document->setEnvironment(original, QStringLiteral("IBL method"));
+    QCOMPARE(int(m_viewport->lastFrameStats().refineMethod), int(IblMethod::SplitSum));
 }
 
 void ViewportUiTest::cameraDragPreviewsThenRefines()

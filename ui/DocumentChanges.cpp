@@ -538,7 +538,7 @@ DocumentChanges changesBetween(const Project& before, const Project& after)
         kinds |= DocumentChange::EnvironmentRotation;
     if (ea.intensity != eb.intensity)
         kinds |= DocumentChange::EnvironmentIntensity;
-    if (ea.quality != eb.quality)
+    if (ea.quality != eb.quality || ea.method != eb.method || ea.samples != eb.samples)
         kinds |= DocumentChange::IblQuality;
     if (before.camera != after.camera)
         kinds |= DocumentChange::Camera;

@@ -46,7 +46,7 @@ enum class DocumentChange : unsigned {
     EnvironmentSource = 1u << 3, // environment.source (load an image, rerun or fetch the IBL)
     EnvironmentRotation = 1u << 4, // environment.rotationDegrees (a uniform)
     EnvironmentIntensity = 1u << 5, // environment.intensity (a uniform)
-    IblQuality = 1u << 6, // environment.quality (rerun or fetch the IBL)
+    IblQuality = 1u << 6, // environment.quality (rerun or fetch the IBL), .method, .samples (refine anew)
     Lights = 1u << 7, // the punctual lights (added, removed, reordered, edited)
     View = 1u << 8, // view settings other than the mesh (exposure, tone mapper, background, MSAA)
     Camera = 1u << 9, // the camera (orbit, pan, dolly, frame, fly)

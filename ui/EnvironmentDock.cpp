@@ -127,6 +127,7 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
     , m_blur(new ValueSlider(0.0, 1.0, 2, this))
     , m_backgroundColor(new ColorButton(this))
     , m_quality(new QComboBox(this))
+    , m_method(new QComboBox(this))
     , m_status(new QLabel(this))
     , m_busy(new QProgressBar(this))
 {
@@ -164,6 +165,13 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
     for (const std::string& name : IblSettings::presetNames())
         if (const auto quality = iblQualityFromString(name))
             m_quality->addItem(QString::fromStdString(name), int(*quality));
+    m_method->setObjectName(QStringLiteral("iblMethodCombo"));
+    m_method->addItem(tr("Split sum (real time)"), int(IblMethod::SplitSum));
+    m_method->addItem(tr("FIS (importance sampled)"), int(IblMethod::Fis));
+    m_method->addItem(tr("Reference (converging)"), int(IblMethod::Reference));
+    m_method->setToolTip(tr("How the still view integrates the environment's light. While you move the camera "
+                            "or drag a slider the view shows the split sum; when you stop, FIS and Reference "
+                            "refine it to their samples (the status bar shows the progress)."));
     m_status->setObjectName(QStringLiteral("environmentStatus"));
     m_status->setWordWrap(true);
     // It names the environment: a long file name (one word) is cut at the dock's edge rather than
@@ -195,6 +203,7 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
     form->addRow(tr("Blur"), m_blur);
     form->addRow(tr("Colour"), m_backgroundColor);
     form->addRow(tr("IBL quality"), m_quality);
+    form->addRow(tr("Lighting"), m_method);
     layout->addLayout(form);
     layout->addWidget(m_busy);
     layout->addWidget(m_status);
@@ -258,6 +267,12 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
         EnvironmentSettings environment = m_document->project().environment;
         environment.quality = IblQuality(m_quality->currentData().toInt());
         m_document->setEnvironment(environment, tr("IBL Quality"));
+    });
+    connect(m_method, &QComboBox::activated, this, [this] {
+        EnvironmentSettings environment = m_document->project().environment;
+        environment.method = IblMethod(m_method->currentData().toInt());
+        environment.samples = 0; // the method's own default; a count is a split-sum error
+        m_document->setEnvironment(environment, tr("Lighting Method"));
     });
     connect(m_document, &Document::changed, this, &EnvironmentDock::onDocumentChanged);
     QSettings settings;
@@ -425,6 +440,8 @@ void EnvironmentDock::onDocumentChanged(DocumentChanges changes)
         m_background->setCurrentIndex(m_background->findData(int(project.view.background)));
         const QSignalBlocker qualityBlocker(m_quality);
         m_quality->setCurrentIndex(m_quality->findData(int(project.environment.quality)));
+        const QSignalBlocker methodBlocker(m_method);
+        m_method->setCurrentIndex(m_method->findData(int(project.environment.method)));
     }
     m_blur->setValue(project.view.backgroundBlurRoughness);
     m_blur->setEnabled(project.view.background == BackgroundMode::Blurred);

@@ -80,6 +80,7 @@ private:
     ValueSlider* m_blur;
     ColorButton* m_backgroundColor;
     QComboBox* m_quality;
+    QComboBox* m_method; // environment.method: what the still view refines to
     QLabel* m_status; // objectName "environmentStatus"
     QProgressBar* m_busy;
     double m_thumbnailMs = 0.0;

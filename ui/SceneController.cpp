@@ -460,17 +460,22 @@ QString SceneController::environmentName() const
     return json::isBuiltinSpec(name) ? source : QFileInfo(source).fileName();
 }
 
-RenderScene SceneController::scene(const std::shared_ptr<const IblTextures>& ibl) const
+RenderScene SceneController::scene(const std::shared_ptr<const IblTextures>& ibl, IblMethod method) const
 {
     const IblSettings settings = iblSettings();
     SceneOptions options;
     options.irradianceFromSH = settings.irradiance == IblSettings::Irradiance::SH;
-    options.iblMethod = IblMethod::SplitSum; // the window's preview (SceneOptions::iblMethod)
+    options.iblMethod = method;
     RenderScene scene = sceneFromProject(m_document->project(), m_assets, ibl, options);
     if (m_objectTurntableDegrees != 0.0)
         scene.modelMatrix = modelMatrix();
     scene.environment.rotationDegrees += m_environmentTurntableDegrees;
     return scene;
+}
+
+IblMethod SceneController::refinementMethod() const
+{
+    return m_document->project().environment.method;
 }
 
 glm::dmat4 SceneController::modelMatrix() const

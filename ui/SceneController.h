@@ -104,8 +104,12 @@ public:
     // file ("night.exr is missing; ..."); empty when it is in use.
     const QString& environmentProblem() const { return m_environmentProblem; }
 
-    // The frame to draw, with the environment's IBL textures (null: background-only lighting).
-    RenderScene scene(const std::shared_ptr<const IblTextures>& ibl) const;
+    // The frame to draw, with the environment's IBL textures (null: background-only lighting), by
+    // the split sum (the interactive preview) or by `method` at the project's samples for it
+    // (the still frame's refinement, ViewportRenderer::refine).
+    RenderScene scene(const std::shared_ptr<const IblTextures>& ibl, IblMethod method = IblMethod::SplitSum) const;
+    // The method the still frame refines to: the project's environment.method (split-sum: none).
+    IblMethod refinementMethod() const;
 
     // Viewport-only turntable angles (not part of the project, not undoable): the object turns
     // about +Y by objectTurntableDegrees, the environment by environmentTurntableDegrees on top of

@@ -34,6 +34,21 @@ QString ViewportFrameStats::summary() const
                        .arg(frameMs, 0, 'f', 0);
     if (reduced)
         text += QCoreApplication::translate("ViewportRenderer", " (preview)");
+    if (refineMethod != IblMethod::SplitSum && refinement.target > 0) {
+        // "1280×720 · Reference 256/1024 spp · 41.2 s (refining)"
+        const QString method = refineMethod == IblMethod::Fis
+            ? QCoreApplication::translate("ViewportRenderer", "FIS")
+            : QCoreApplication::translate("ViewportRenderer", "Reference");
+        text = QCoreApplication::translate("ViewportRenderer", "%1×%2 · %3 %4/%5 spp · %6 s %7")
+                   .arg(width)
+                   .arg(height)
+                   .arg(method)
+                   .arg(refinement.samples)
+                   .arg(refinement.target)
+                   .arg(refinement.seconds, 0, 'f', 1)
+                   .arg(refinement.done() ? QCoreApplication::translate("ViewportRenderer", "(done)")
+                                          : QCoreApplication::translate("ViewportRenderer", "(refining)"));
+    }
     return text;
 }
 
@@ -64,6 +79,32 @@ bool ViewportRenderer::needsIbl(const SceneController& scene) const
 
 bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFramebuffer, int width, int height,
     double scale, std::string* error)
+{
+    return draw(scene, targetFramebuffer, width, height, scale, nullptr, error);
+}
+
+bool ViewportRenderer::refine(
+    const SceneController& scene, unsigned targetFramebuffer, int width, int height, bool restart, std::string* error)
+{
+    return draw(scene, targetFramebuffer, width, height, 1.0, &restart, error);
+}
+
+int ViewportRenderer::nextDrawSamples(int samples, double milliseconds, double budgetMs)
+{
+    if (!(milliseconds > 0.0))
+        return std::max(samples, 1);
+    // A power of two near what fits the budget, changing by at most 4x a draw (a draw that
+    // caught a busy moment does not swing the next far).
+    const double fit = std::clamp(double(std::max(samples, 1)) * budgetMs / milliseconds,
+        double(std::max(samples, 1)) / 4.0, double(std::max(samples, 1)) * 4.0);
+    int next = 1;
+    while (next * 2 <= fit && next < FrameRenderer::kSamplesPerDraw)
+        next *= 2;
+    return next;
+}
+
+bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebuffer, int width, int height,
+    double scale, const bool* refineRestart, std::string* error)
 {
     QElapsedTimer clock;
     clock.start();
@@ -127,8 +168,31 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
         m_stats.ibl.msDfg += dfgStats.msDfg;
         m_stats.ibl.msTotal += dfgStats.msTotal;
     }
-    if (!m_frames->present(frame, targetFramebuffer, FrameRect {0, 0, width, height}, scale, &problem))
-        return fail(problem);
+    if (refineRestart) {
+        // The still frame, refined by the project's method; `frame` (the split sum) is shown
+        // until the accumulation is worth showing.
+        RenderScene sampled = scene.scene(m_ibl, scene.refinementMethod());
+        std::string ignored;
+        holdBackUnreadyMaps(sampled, &ignored);
+        if (!m_frames->addDfgTables(scene.iblSettings(), sampled, nullptr, &problem)
+            || !m_frames->addEnvironmentSource(scene.assets().environment, sampled, nullptr, &problem))
+            return fail(problem);
+        if (*refineRestart)
+            m_drawSamples = 1;
+        if (!m_frames->refine(frame, sampled, targetFramebuffer, FrameRect {0, 0, width, height}, *refineRestart,
+                m_drawSamples, &problem))
+            return fail(problem);
+        const FrameRenderer::Refinement& refinement = m_frames->refinement();
+        if (!*refineRestart && refinement.draws > 0)
+            m_drawSamples = nextDrawSamples(m_drawSamples, refinement.lastDrawMs, kRefineDrawBudgetMs);
+        m_stats.refineMethod = sampled.sampling.method;
+        m_stats.refinement = refinement;
+    } else {
+        if (!m_frames->present(frame, targetFramebuffer, FrameRect {0, 0, width, height}, scale, &problem))
+            return fail(problem);
+        m_stats.refineMethod = IblMethod::SplitSum;
+        m_stats.refinement = {};
+    }
     // The textures this frame neither drew nor queued go (another material's, a replaced file's).
     m_frames->finishFrame();
     const int renderWidth = m_frames->lastRenderWidth();

@@ -21,6 +21,7 @@
 #include "core/Image.h"
 #include "render/GLInfo.h"
 #include "render/IblPrecompute.h"
+#include "render/FrameRenderer.h"
 #include "render/RenderStats.h"
 
 #include <QString>
@@ -52,8 +53,13 @@ struct ViewportFrameStats {
     std::string textureProblem; // a map that cannot be a texture on this GL (named), else empty
     IblStats ibl; // of the last precompute (kept until the next one)
     RenderStats render; // Renderer::lastFrameStats()
+    // A refinement frame (ViewportRenderer::refine): the method and where it stands; SplitSum
+    // and empty for a plain frame.
+    IblMethod refineMethod = IblMethod::SplitSum;
+    FrameRenderer::Refinement refinement;
 
-    // "1280×720 · 112 ms" (+ " (preview)" when reduced).
+    // "1280×720 · 112 ms" (+ " (preview)" when reduced); while refining
+    // "1280×720 · Reference 256/1024 spp · 41.2 s (refining)", then "(done)".
     QString summary() const;
 };
 
@@ -80,6 +86,21 @@ public:
     bool paint(const SceneController& scene, unsigned targetFramebuffer, int width, int height, double scale,
         std::string* error);
 
+    // One step of the still frame's refinement by the project's IBL method
+    // (SceneController::refinementMethod, Fis or Reference; FrameRenderer::refine): `restart`
+    // (after any change of the scene) draws and shows the split-sum frame and starts an empty
+    // accumulation; each later call adds one draw of samples sized to kRefineDrawBudgetMs and
+    // shows the mean once it has FrameRenderer::kRefinementShownAfter samples.
+    // lastFrame().refinement says where it stands; once done() a call only shows it again.
+    bool refine(const SceneController& scene, unsigned targetFramebuffer, int width, int height, bool restart,
+        std::string* error);
+    // What one refinement draw may take, so input events run between draws (llvmpipe: a
+    // reference sample over a 720p view costs about 0.2 s, so draws there are 1 sample).
+    static constexpr double kRefineDrawBudgetMs = 100.0;
+    // The samples of the next draw after one of `samples` took `milliseconds`: a power of two,
+    // from 1 to FrameRenderer::kSamplesPerDraw, near `budgetMs`, at most 4x up or down.
+    static int nextDrawSamples(int samples, double milliseconds, double budgetMs);
+
     const ViewportFrameStats& lastFrame() const { return m_stats; }
 
     // Map uploads queued by frames (or queueUploads) and not finished yet.
@@ -105,6 +126,9 @@ public:
     std::vector<std::string> takeReleasedMapsNeeded();
 
 private:
+    // paint() (refineRestart null) or refine().
+    bool draw(const SceneController& scene, unsigned targetFramebuffer, int width, int height, double scale,
+        const bool* refineRestart, std::string* error);
     // Takes out of `frame` the maps whose textures are not complete (the previous version of the
     // file where there is one) and queues their uploads; returns how many were held back.
     int holdBackUnreadyMaps(RenderScene& frame, std::string* problem);
@@ -116,6 +140,7 @@ private:
     ViewportFrameStats m_stats;
     GLInfo m_glInfo;
     std::vector<std::string> m_releasedMapsNeeded;
+    int m_drawSamples = 1; // of the next refinement draw
 };
 
 } // namespace facet

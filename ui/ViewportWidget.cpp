@@ -7,6 +7,8 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 
+#include <utility>
+
 namespace facet {
 
 ViewportWidget::ViewportWidget(QWidget* parent)
@@ -51,6 +53,7 @@ void ViewportWidget::setSceneController(SceneController* scene)
     }
     m_scene = scene;
     m_uploads->setSceneController(scene);
+    m_restartRefinement = true;
     if (m_scene) {
         connect(m_scene, &SceneController::sceneChanged, this, &ViewportWidget::onSceneChanged);
         connect(m_scene, &SceneController::mapsArrived, m_uploads, &MapUploadScheduler::mapsArrived);
@@ -60,6 +63,7 @@ void ViewportWidget::setSceneController(SceneController* scene)
 
 void ViewportWidget::onSceneChanged(bool interactive)
 {
+    m_restartRefinement = true;
     if (interactive)
         markInteractive();
     else
@@ -69,6 +73,7 @@ void ViewportWidget::onSceneChanged(bool interactive)
 void ViewportWidget::markInteractive()
 {
     m_previewing = true;
+    m_restartRefinement = true;
     m_refineTimer.start();
     requestFrame();
 }
@@ -124,9 +129,25 @@ void ViewportWidget::paintGL()
     const bool precompute = m_renderer->needsIbl(*m_scene);
     const qreal ratio = devicePixelRatioF();
     std::string error;
-    const bool ok = m_renderer->paint(*m_scene, defaultFramebufferObject(), int(width() * ratio),
-        int(height() * ratio), m_previewing ? kPreviewScale : 1.0, &error);
+    // The still frame refines by the project's method (docs/rendering.md "Refinement"): not while
+    // an interaction previews, nor while a texture set is still arriving (those frames are
+    // previews too); any change of the scene starts it again.
+    const bool refining = !m_previewing && m_scene->refinementMethod() != IblMethod::SplitSum
+        && m_scene->pendingMapLoads() == 0 && !m_renderer->hasPendingUploads();
+    bool ok = false;
+    if (refining) {
+        ok = m_renderer->refine(*m_scene, defaultFramebufferObject(), int(width() * ratio), int(height() * ratio),
+            std::exchange(m_restartRefinement, false), &error);
+    } else {
+        ok = m_renderer->paint(*m_scene, defaultFramebufferObject(), int(width() * ratio), int(height() * ratio),
+            m_previewing ? kPreviewScale : 1.0, &error);
+        m_restartRefinement = true;
+    }
     m_stats = m_renderer->lastFrame();
+    // The next draw of the refinement, after the events queued meanwhile (input stops it); once
+    // done, nothing more is drawn until the scene changes.
+    if (refining && ok && !m_stats.refinement.done())
+        QTimer::singleShot(0, this, [this] { update(); });
     m_lastError = ok ? QString() : QString::fromStdString(error);
     m_uploads->frameDrawn(); // maps the frame could not show yet go up between frames
     // Memory: once a frame shows every map from the GPU, the decoded copies go; a released map

@@ -7,7 +7,10 @@
 // Render on demand: paintGL() runs only after update() (a scene change, a resize, an expose),
 // never on a timer; an idle window draws nothing. While something is being dragged
 // (markInteractive()) frames are drawn at kPreviewScale of the resolution, and one full frame
-// follows kRefineDelayMs after the last interactive change.
+// follows kRefineDelayMs after the last interactive change. When the project's IBL method is fis
+// or reference, that still frame then refines (ViewportRenderer::refine): one draw per paint,
+// each paint chained to the next by a zero-time timer (input events run in between), until the
+// method's samples are in; then nothing is drawn until the scene changes.
 
 #include "render/GLInfo.h"
 #include "ui/ViewportRenderer.h"
@@ -96,6 +99,7 @@ private:
     QTimer m_refineTimer;
     MapUploadScheduler* m_uploads; // map uploads between frames
     bool m_previewing = false;
+    bool m_restartRefinement = true; // the scene changed since the refinement began
     bool m_announcedIbl = false;
 };
 

@@ -1,6 +1,6 @@
 // Image-based lighting. environmentLobes() dispatches on the IBL method's variant bit
-// (render/ShaderVariant.h): IBL_REFERENCE integrates by Monte Carlo (ibl_reference.glsl);
-// otherwise the split sum [Karis 2013], from the textures of render/IblTextures
+// (render/ShaderVariant.h): IBL_REFERENCE integrates by Monte Carlo (ibl_reference.glsl), IBL_FIS
+// by filtered importance sampling of the pixel's lobe (ibl_fis.glsl); otherwise the split sum [Karis 2013], from the textures of render/IblTextures
 // (prefiltered specular cubemap, irradiance cubemap storing E or 9 premultiplied SH
 // coefficients, DFG LUT). Twin: core/SplitSum.h splitSumRadiance(); docs/rendering.md gives the
 // formulas. Lookups turn world directions into the environment image's frame
@@ -59,15 +59,33 @@ vec3 irradiance(vec3 n)
 #endif
 }
 
+// The diffuse lobe's albedo c w_d under uniform light of radiance 1, per composition (what the
+// irradiance E(n) / pi is multiplied by):
+// glTF:  w_d = (1 - m) (1 - F0_d) W(n.v) for fresnel_mix (the albedo of its base
+//        c / pi (1 - F(v.h)): the ground truth's model), (1 - m) (1 - E_s(n.v)) for the
+//        energy-preserving coupling.
+// LearnOpenGL: w_d = (1 - F0) W(n.v) (1 - m) with F0 = mix(F0_d, c, m) (kD = (1 - F(v.h)) (1 - m)
+//        per direction), or (1 - E_s(n.v)) (1 - m) (energy preserving).
+// W(n.v) is the DFG table's alpha (core/DfgTable.h).
+vec3 environmentDiffuseAlbedo(MaterialInfo m, float NoV, float roughness)
+{
+    float metallic = saturate(m.metallic);
+    vec3 baseColor = max(m.baseColor, vec3(0.0));
+    float f0Dielectric = f0FromIor(m.ior);
+#ifdef COUPLING_ENERGY_PRESERVING
+    vec3 weight = vec3(max(0.0, 1.0 - dielectricSpecularAlbedo(f0Dielectric, NoV, roughness)));
+#elif defined(COMPOSITION_LEARNOPENGL)
+    vec3 weight = (vec3(1.0) - mix(vec3(f0Dielectric), baseColor, metallic)) * dfgLookup(NoV, roughness).a;
+#else
+    vec3 weight = vec3((1.0 - f0Dielectric) * dfgLookup(NoV, roughness).a);
+#endif
+    return baseColor * weight * (1.0 - metallic);
+}
+
 // The split-sum lobes for the view direction v (unit, towards the viewer) at normal n:
 //   specular = prefiltered(R, lod(r)) * (F0 scale + bias) * M(F0)             (per lobe F0)
-//   diffuse  = E(n) / pi * c * w_d
-// glTF:  specular = (1 - m) spec(F0_d) + m spec(c);  diffuse weight w_d = (1 - m) (1 - F0_d) W(n.v)
-//        for fresnel_mix (the albedo of its base c / pi (1 - F(v.h)): the ground truth's model),
-//        (1 - m) (1 - E_s(n.v)) for the energy-preserving coupling.
-// LearnOpenGL: F0 = mix(F0_d, c, m), specular = spec(F0), w_d = (1 - F0) W(n.v) (1 - m) (kD =
-//        (1 - F(v.h)) (1 - m) per direction) or (1 - E_s(n.v)) (1 - m) (energy preserving).
-// W(n.v) is the DFG table's alpha (core/DfgTable.h).
+//   diffuse  = E(n) / pi * environmentDiffuseAlbedo
+// glTF:  specular = (1 - m) spec(F0_d) + m spec(c);  LearnOpenGL: F0 = mix(F0_d, c, m), spec(F0).
 BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
 {
     BrdfLobes lobes;
@@ -77,41 +95,52 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     vec3 baseColor = max(m.baseColor, vec3(0.0));
     vec3 R = specularDominantDirection(n, reflect(-v, n), roughness * roughness);
     vec3 radiance = prefilteredRadiance(R, roughness);
-    vec3 diffuseLight = irradiance(n) * INV_PI;
     vec4 dfg = dfgLookup(NoV, roughness);
     float f0Dielectric = f0FromIor(m.ior);
 #ifdef COMPOSITION_LEARNOPENGL
     vec3 f0 = mix(vec3(f0Dielectric), baseColor, metallic);
     lobes.specular = radiance * (f0 * dfg.r + dfg.g) * multiScatterFactor(f0, NoV, roughness);
-#ifdef COUPLING_ENERGY_PRESERVING
-    vec3 kD = vec3((1.0 - dielectricSpecularAlbedo(f0Dielectric, NoV, roughness)) * (1.0 - metallic));
-#else
-    vec3 kD = (vec3(1.0) - f0) * (dfg.a * (1.0 - metallic));
-#endif
-    lobes.diffuse = diffuseLight * baseColor * kD;
 #else
     vec3 specularDielectric = vec3((f0Dielectric * dfg.r + dfg.g) * multiScatterFactor(vec3(f0Dielectric), NoV, roughness).x);
     vec3 specularMetal = (baseColor * dfg.r + dfg.g) * multiScatterFactor(baseColor, NoV, roughness);
     lobes.specular = radiance * mix(specularDielectric, specularMetal, metallic);
-#ifdef COUPLING_ENERGY_PRESERVING
-    float diffuseWeight = max(0.0, 1.0 - dielectricSpecularAlbedo(f0Dielectric, NoV, roughness));
-#else
-    float diffuseWeight = (1.0 - f0Dielectric) * dfg.a;
 #endif
-    lobes.diffuse = diffuseLight * baseColor * (diffuseWeight * (1.0 - metallic));
-#endif
+    lobes.diffuse = irradiance(n) * INV_PI * environmentDiffuseAlbedo(m, NoV, roughness);
     return lobes;
 }
 
+// A normal-mapped (or interpolated) normal can face away from the viewer, n.v < 0, where the
+// sampled methods' integrand is zero (evaluateBrdf: nothing is seen from below the surface): black
+// specks along a normal-mapped mesh's silhouettes. They shade with n bent towards v until n.v =
+// 1e-3 instead (the usual clamp of real-time renderers; the split sum clamps n.v itself). The
+// analytic sphere of the reference view always has n.v > 0, so the ground truth's rule holds there.
+vec3 facingNormal(vec3 n, vec3 v)
+{
+    const float minNoV = 1e-3;
+    float NoV = dot(n, v);
+    return NoV >= minNoV ? n : normalize(n + v * (minNoV - NoV));
+}
+
+// The methods' shared chunks, outside the #ifdefs below: includes are expanded once, before the
+// preprocessor runs (render/ShaderProgram), so a chunk first included inside a disabled block
+// would be missing from the enabled one. Unused functions and samplers cost nothing.
+#include "common_sampling.glsl"
+#include "environment_sampling.glsl"
+#include "ibl_filtering.glsl"
 #ifdef IBL_REFERENCE
 #include "ibl_reference.glsl"
+#endif
+#ifdef IBL_FIS
+#include "ibl_fis.glsl"
 #endif
 
 // The environment's light leaving towards v, per lobe, before ambient occlusion.
 BrdfLobes environmentLobes(MaterialInfo m, vec3 n, vec3 v)
 {
 #ifdef IBL_REFERENCE
-    return referenceEnvironmentLobes(m, n, v);
+    return referenceEnvironmentLobes(m, facingNormal(n, v), v);
+#elif defined(IBL_FIS)
+    return fisEnvironmentLobes(m, facingNormal(n, v), v);
 #else
     return splitSumEnvironmentLobes(m, n, v);
 #endif
