@@ -27,6 +27,15 @@ double radicalInverse(std::uint32_t bits)
     return double(reverseBits(bits)) * 2.3283064365386963e-10; // / 2^32
 }
 
+glm::dvec2 halton23(std::uint32_t i)
+{
+    double y = 0.0;
+    double scale = 1.0 / 3.0;
+    for (std::uint32_t k = i; k > 0; k /= 3, scale /= 3.0)
+        y += double(k % 3) * scale;
+    return {radicalInverse(i), y};
+}
+
 glm::dvec2 hammersley(std::uint32_t i, std::uint32_t n) { return {double(i) / double(n), radicalInverse(i)}; }
 
 glm::uvec2 sobol2DBits(std::uint32_t s)

@@ -22,6 +22,9 @@ namespace facet::sampling {
 
 // Van der Corput radical inverse in base 2: the bits of i mirrored about the binary point.
 double radicalInverse(std::uint32_t i);
+// The i-th point of the Halton sequence in bases 2 and 3, in [0, 1)^2 [Halton 1960]: the
+// sub-pixel offsets of accumulated draws (any prefix spreads over the pixel).
+glm::dvec2 halton23(std::uint32_t i);
 // The i-th of n Hammersley points: (i / n, radicalInverse(i)) [Hammersley & Handscomb 1964].
 glm::dvec2 hammersley(std::uint32_t i, std::uint32_t n);
 

@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include "core/ProjectAssets.h"
+#include "core/Sampling.h"
 #include "render/FrameAccumulator.h"
 #include "render/IblSettings.h"
 #include "render/Renderer.h"
@@ -18,6 +19,17 @@ namespace facet {
 namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Draw `index`'s sub-pixel offset: the Halton (2, 3) point index + 1 about the pixel's centre
+// (index + 1: point 0 is the corner), none in the reference view (pixel centres) or for a view the
+// samples do not change (one draw).
+glm::dvec2 jitterOf(const RenderScene& scene, int index)
+{
+    if (scene.pixelCentres
+        || !debugViewShowsIntegratedLight(debugViewFromString(scene.view.debugView).value_or(DebugView::None)))
+        return glm::dvec2(0.0);
+    return sampling::halton23(std::uint32_t(index) + 1u) - glm::dvec2(0.5);
+}
 } // namespace
 
 FrameRenderer::FrameRenderer(const QString& cacheDirectory, bool useDiskCache)
@@ -175,6 +187,7 @@ std::optional<Image> FrameRenderer::renderConverged(const RenderScene& scene, in
         samples = 1;
     draw.sampling.runLength = samples;
     for (int done = 0; done < samples;) {
+        draw.subpixelJitter = jitterOf(draw, m_accumulator->draws());
         draw.sampling.sampleBase = done;
         draw.sampling.samples = std::min(kSamplesPerDraw, samples - done);
         if (!m_renderer->render(draw, *frame, error) || !m_accumulator->add(*frame, draw.sampling.samples, error))
@@ -269,6 +282,7 @@ bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene,
         draw.sampling.sampleBase = state.samples;
         draw.sampling.samples = std::clamp(drawSamples, 1, state.target - state.samples);
         draw.sampling.runLength = state.target;
+        draw.subpixelJitter = jitterOf(draw, state.draws);
         const Clock::time_point start = Clock::now();
         if (!m_renderer->render(draw, *view.frame, error)
             || !view.accumulator.add(*view.frame, draw.sampling.samples, error))

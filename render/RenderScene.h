@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/Camera.h"
@@ -180,6 +181,13 @@ struct RenderScene {
     // The sphere mesh's interpolated normals are off by up to ~1e-3 rad, which moves a
     // roughness-0.05 reflection by about its own width (2% relative RMSE against the truth).
     bool analyticSphere = false;
+    // DESIGN.md's reference view: one ray through each pixel centre, so a converging method's
+    // draws are not jittered (the metric compares pixel centres with the ground truth's).
+    bool pixelCentres = false;
+    // This draw's sub-pixel offset in pixels, each in [-0.5, 0.5): the projection is translated
+    // by it, so draws accumulated at different offsets anti-alias the edges (FrameRenderer sets
+    // it per draw of a converging method; 0 for every other frame).
+    glm::dvec2 subpixelJitter {0.0};
     // exposureEV, toneMapper, displayEncoding, gamma (tone-map pass); debugView, msaaSamples,
     // background, backgroundColor, backgroundBlurRoughness (surface pass).
     ViewSettings view;

@@ -266,7 +266,15 @@ bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::str
     glClear(GL_DEPTH_BUFFER_BIT);
 
     const glm::dmat4 view = scene.camera.viewMatrix();
-    const glm::dmat4 projection = scene.camera.projectionMatrix(double(width) / double(height));
+    glm::dmat4 projection = scene.camera.projectionMatrix(double(width) / double(height));
+    if (scene.subpixelJitter != glm::dvec2(0.0)) {
+        // A translation in clip space of the offset's share of the [-1, 1] viewport (after the
+        // perspective divide: x_ndc += 2 jx / W), so every fragment moves by the same sub-pixel amount.
+        glm::dmat4 jitter(1.0);
+        jitter[3][0] = 2.0 * scene.subpixelJitter.x / double(width);
+        jitter[3][1] = 2.0 * scene.subpixelJitter.y / double(height);
+        projection = jitter * projection;
+    }
     // Opaque (and masked) surfaces first, then the background where the depth buffer is still
     // clear (far plane, GL_LEQUAL): covered pixels run no background shader. Blended surfaces
     // come last, over both.

@@ -100,6 +100,7 @@ RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets
         scene.view.msaaSamples = 1;
         scene.view.background = BackgroundMode::Environment;
         scene.analyticSphere = method != IblMethod::SplitSum && project.view.mesh == "sphere";
+        scene.pixelCentres = true;
     }
     scene.environment = environmentLighting(ibl, assets.environment.rotationDegrees(), assets.environment.intensity(),
                                             options.irradianceFromSH);

@@ -317,6 +317,42 @@ private Q_SLOTS:
         QCOMPARE(black, 0);
     }
 
+    // Outside the reference view a converging method's draws are offset within the pixel
+    // (Halton 2, 3 per draw), so the accumulated silhouette is anti-aliased: a dark sphere on a
+    // white background has pixels in between; through pixel centres it has none. 256 samples are
+    // 4 draws.
+    void drawsAreJitteredOutsideTheReferenceView_data()
+    {
+        QTest::addColumn<int>("method");
+        QTest::newRow("fis") << int(IblMethod::Fis);
+        QTest::newRow("reference") << int(IblMethod::Reference);
+    }
+    void drawsAreJitteredOutsideTheReferenceView()
+    {
+        QFETCH(int, method);
+        Row row {"dark"};
+        row.environment = "uniform:1.0";
+        row.baseColor = glm::dvec3(0.0);
+        row.roughness = 1.0;
+        Project project = projectOf(row, 4 * FrameRenderer::kSamplesPerDraw);
+        project.environment.method = IblMethod(method);
+        std::string error;
+        int partial[2] = {0, 0};
+        for (int jittered = 0; jittered < 2; ++jittered) {
+            const auto gpu = m_gpu.render(project, "draft", kSize, &error, nullptr, jittered == 1);
+            QVERIFY2(gpu, error.c_str());
+            for (int y = 0; y < kSize; ++y)
+                for (int x = 0; x < kSize; ++x) {
+                    const float g = gpu->at(x, y).g;
+                    partial[jittered] += (g > 0.25f && g < 0.75f) ? 1 : 0;
+                }
+        }
+        std::printf("  pixels between the sphere and the background: %d through centres, %d jittered\n", partial[0],
+                    partial[1]);
+        QCOMPARE(partial[0], 0);
+        QVERIFY2(partial[1] >= 20, qPrintable(QString::number(partial[1])));
+    }
+
     // Radiance of a million suns and of a near-black map: every pixel finite and >= 0.
     void extremeRadianceStaysFinite_data()
     {

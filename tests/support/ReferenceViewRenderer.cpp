@@ -60,12 +60,13 @@ std::optional<RenderScene> ReferenceViewRenderer::prepareScene(
         project, *assets, *settings, sceneOptionsFor(*settings, /*referenceView=*/true), nullptr, error);
 }
 
-std::optional<Image> ReferenceViewRenderer::render(
-    const Project& project, const std::string& preset, int size, std::string* error, std::optional<double>* noise)
+std::optional<Image> ReferenceViewRenderer::render(const Project& project, const std::string& preset, int size,
+    std::string* error, std::optional<double>* noise, bool jittered)
 {
-    const auto scene = prepareScene(project, preset, error);
+    auto scene = prepareScene(project, preset, error);
     if (!scene)
         return std::nullopt;
+    scene->pixelCentres = !jittered;
     // The noise estimate over the pixels the accuracy metric reads.
     std::vector<std::uint8_t> mask(std::size_t(size) * std::size_t(size));
     for (int y = 0; y < size; ++y)

@@ -31,8 +31,10 @@ public:
     // preset `preset` ("draft", "default", "high"), by the project's IBL method at its samples
     // (FrameRenderer::renderConverged). `noise` (optional): the accumulation's noise estimate over
     // the interior sphere pixels (unset for the split sum). nullopt with *error on any failure.
+    // `jittered`: the draws are offset within the pixel (RenderScene::subpixelJitter) as outside
+    // the reference view, instead of through pixel centres.
     std::optional<Image> render(const Project& project, const std::string& preset, int size, std::string* error,
-                                std::optional<double>* noise = nullptr);
+                                std::optional<double>* noise = nullptr, bool jittered = false);
     // The same through `facet render --reference-view`'s own path: a fresh surface renderer (every
     // map and the mesh uploaded in this frame, as after opening a project), an RGBA16F target
     // read back by FrameRenderer::renderImage.
