@@ -17,6 +17,7 @@
 #include "core/Project.h"
 #include "core/ReferenceView.h"
 
+#include "IblMethodCase.h"
 #include "ReferenceViewRenderer.h"
 #include "TestSupport.h"
 
@@ -38,64 +39,16 @@ constexpr int kSamples = 256;
 // the dielectrics under the rotated studio; printed per row).
 constexpr double kMeanFloor = 2e-3;
 
-struct Row {
-    const char* name;
-    BrdfComposition composition = BrdfComposition::Gltf;
-    Visibility visibility = Visibility::SmithGGXCorrelated;
-    Distribution distribution = Distribution::GGX;
-    Fresnel fresnel = Fresnel::Schlick;
-    DielectricCoupling coupling = DielectricCoupling::FresnelMix;
-    bool multiScatter = true;
-    glm::dvec3 baseColor {0.8, 0.3, 0.1};
-    double metallic = 0.0;
-    double roughness = 0.4;
-    const char* environment = "studio";
-    double rotationDegrees = 40.0;
-    bool light = false;
-};
+using Row = facet::test::IblMethodCase;
 
 Project projectOf(const Row& row)
 {
-    Project project = Project::defaultProject();
-    project.environment.source = row.environment;
-    project.environment.rotationDegrees = row.rotationDegrees;
-    project.environment.method = IblMethod::Reference;
-    project.environment.samples = kSamples;
-    project.view.mesh = "sphere";
-    project.view.debugView = "none";
-    project.lights.clear();
-    if (row.light) {
-        Light sun;
-        sun.type = LightType::Directional;
-        sun.intensity = 2.0;
-        sun.direction = {-0.5, -0.6, -0.6};
-        project.lights.push_back(sun);
-    }
-    Material& m = project.material();
-    m.setBaseColor(row.baseColor);
-    m.setFactor(MapSlot::Metallic, row.metallic);
-    m.setFactor(MapSlot::Roughness, row.roughness);
-    m.shading.composition = row.composition;
-    m.shading.visibility = row.visibility;
-    m.shading.distribution = row.distribution;
-    m.shading.fresnel = row.fresnel;
-    m.shading.coupling = row.coupling;
-    m.shading.multiScatter = row.multiScatter;
-    return project;
+    return facet::test::iblMethodCaseProject(row, IblMethod::Reference, kSamples);
 }
 
 std::optional<Image> cpuTruth(const Project& project, std::uint64_t seed, std::string* error)
 {
-    std::string warning;
-    const auto scene = groundTruthSceneFromProject(project, error, &warning);
-    if (!scene)
-        return std::nullopt;
-    GroundTruthSettings settings;
-    settings.width = kSize;
-    settings.height = kSize;
-    settings.samplesPerPixel = kSamples;
-    settings.seed = seed;
-    return renderGroundTruth(*scene, settings);
+    return facet::test::groundTruthImage(project, kSize, kSamples, seed, error);
 }
 
 using enum BrdfComposition;
@@ -242,13 +195,8 @@ private Q_SLOTS:
         std::string error;
         const std::optional<Image> gpu = m_gpu.render(project, "draft", 16, &error);
         QVERIFY2(gpu, error.c_str());
-        for (int y = 0; y < gpu->height(); ++y)
-            for (int x = 0; x < gpu->width(); ++x)
-                for (int c = 0; c < 3; ++c) {
-                    const float v = gpu->at(x, y)[c];
-                    QVERIFY2(std::isfinite(v) && v >= 0.0f,
-                             qPrintable(QStringLiteral("(%1, %2): %3").arg(x).arg(y).arg(double(v))));
-                }
+        const std::string bad = facet::test::firstUnusablePixel(*gpu);
+        QVERIFY2(bad.empty(), bad.c_str());
     }
 
 private:
