@@ -15,6 +15,7 @@
 #include "ui/ProjectFileController.h"
 #include "ui/SceneController.h"
 #include "ui/SurfaceFormat.h"
+#include "ui/ViewportRenderer.h"
 #include "ui/ViewportWidget.h"
 
 #include "TestSupport.h"
@@ -109,6 +110,8 @@ private Q_SLOTS:
     void idleWindowDrawsNothing();
     void materialEditRerendersWithoutReloading();
     void brdfSwitchFetchesItsOwnTable();
+    void refinementDrawsFollowTheBudget_data();
+    void refinementDrawsFollowTheBudget();
     void sampledMethodRefinesTheStillFrame_data();
     void sampledMethodRefinesTheStillFrame();
     void cameraDragPreviewsThenRefines();
@@ -259,6 +262,33 @@ void ViewportUiTest::brdfSwitchFetchesItsOwnTable()
     QVERIFY(waitForFrame(m_viewport));
     QVERIFY2(m_viewport->lastError().isEmpty(), qPrintable(m_viewport->lastError()));
     QCOMPARE(m_viewport->lastFrameStats().iblMs, 0.0); // its table is still in memory
+}
+
+void ViewportUiTest::refinementDrawsFollowTheBudget_data()
+{
+    // The samples of the next refinement draw after one of `samples` took `ms`, for a 100 ms
+    // budget: a power of two near the budget, at most 4x up or down a draw, from 1 to 64.
+    QTest::addColumn<int>("samples");
+    QTest::addColumn<double>("ms");
+    QTest::addColumn<int>("expected");
+    QTest::newRow("on budget") << 4 << 100.0 << 4;
+    QTest::newRow("half the budget") << 4 << 50.0 << 8;
+    QTest::newRow("a quarter") << 4 << 25.0 << 16;
+    QTest::newRow("far under: 4x at most") << 4 << 1.0 << 16;
+    QTest::newRow("twice over") << 4 << 200.0 << 2;
+    QTest::newRow("far over: a quarter at most") << 16 << 10000.0 << 4;
+    QTest::newRow("never below 1") << 1 << 10000.0 << 1;
+    QTest::newRow("never above 64") << 64 << 1.0 << 64;
+    QTest::newRow("a power of two") << 3 << 100.0 << 2;
+    QTest::newRow("no time measured") << 8 << 0.0 << 8;
+}
+
+void ViewportUiTest::refinementDrawsFollowTheBudget()
+{
+    QFETCH(int, samples);
+    QFETCH(double, ms);
+    QFETCH(int, expected);
+    QCOMPARE(ViewportRenderer::nextDrawSamples(samples, ms, 100.0), expected);
 }
 
 void ViewportUiTest::sampledMethodRefinesTheStillFrame_data()
