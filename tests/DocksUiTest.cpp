@@ -160,6 +160,7 @@ private Q_SLOTS:
     void environmentLibraryTellsStudiosApart_data();
     void environmentLibraryTellsStudiosApart();
     void lightsAddEditRemove();
+    void lightingMethodRefinesTheView();
     void viewDockExposureAndDebugView();
     void debugViewsHaveDescriptiveNames_data();
     void debugViewsHaveDescriptiveNames();
@@ -485,6 +486,34 @@ void DocksUiTest::lightsAddEditRemove()
     QCOMPARE(m_document->project().lights[0].intensity, 40.0);
     QCOMPARE(dock->list()->count(), 1);
     QCOMPARE(dock->intensitySlider()->value(), 40.0);
+}
+
+void DocksUiTest::lightingMethodRefinesTheView()
+{
+    // The Environment dock's Lighting: one undo step, the project's method (with its default
+    // samples), and the still view refines by it; undo brings back the split sum.
+    EnvironmentDock* dock = m_window->environmentDock();
+    dock->raise();
+    QVERIFY(waitFor([&] { return !m_viewport->isPreviewing(); }));
+    auto* combo = dock->findChild<QComboBox*>(QStringLiteral("iblMethodCombo"));
+    QVERIFY(combo);
+    QCOMPARE(combo->currentText(), QStringLiteral("Split sum (real time)"));
+    const int steps = m_document->undoStack()->index();
+    QVERIFY(chooseInCombo(combo, QStringLiteral("Reference (converging)")));
+    QCOMPARE(m_document->project().environment.method, IblMethod::Reference);
+    QCOMPARE(m_document->project().environment.samples, 0);
+    QCOMPARE(m_document->undoStack()->index(), steps + 1);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Lighting Method"));
+    QVERIFY(waitFor([&] {
+        const ViewportFrameStats& stats = m_viewport->lastFrameStats();
+        return stats.refineMethod == IblMethod::Reference && stats.refinement.samples > 0;
+    }));
+    QCOMPARE(m_viewport->lastFrameStats().refinement.target, defaultIblSamples(IblMethod::Reference));
+    QVERIFY2(m_viewport->lastError().isEmpty(), qPrintable(m_viewport->lastError()));
+    m_document->undoStack()->undo();
+    QCOMPARE(m_document->project().environment.method, IblMethod::SplitSum);
+    QCOMPARE(combo->currentText(), QStringLiteral("Split sum (real time)"));
+    QVERIFY(waitFor([&] { return m_viewport->lastFrameStats().refineMethod == IblMethod::SplitSum; }));
 }
 
 void DocksUiTest::viewDockExposureAndDebugView()
