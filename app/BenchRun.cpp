@@ -29,7 +29,6 @@
 #include "core/ImageMetrics.h"
 #include "core/Project.h"
 #include "core/ProjectAssets.h"
-#include "core/ReferenceView.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblPrecompute.h"
 #include "render/RenderScene.h"
@@ -254,11 +253,7 @@ bool BenchRun::measure(const BenchConfig& config, const BenchEnvironment& enviro
     SceneOptions options = sceneOptionsFor(config.settings, /*referenceView=*/true);
     options.iblMethod = config.method;
     // The noise estimate covers the pixels the error reads: the interior sphere pixels.
-    std::vector<std::uint8_t> noiseMask(std::size_t(m_request.size) * std::size_t(m_request.size));
-    for (int y = 0; y < m_request.size; ++y)
-        for (int x = 0; x < m_request.size; ++x)
-            noiseMask[std::size_t(y) * std::size_t(m_request.size) + std::size_t(x)]
-                = referenceview::isInteriorSpherePixel(x, y, m_request.size, m_request.size) ? 1 : 0;
+    const PixelMask noiseMask = sphereMask(m_request.size, m_request.size);
     bool warmedUp = false;
     for (const Scene& scene : scenes) {
         RenderScene renderScene = sceneFromProject(scene.project, assets, ibl, options);

@@ -21,7 +21,7 @@
 #include "core/MaterialBrdf.h"
 #include "core/MaterialPresets.h"
 #include "core/ProjectAssets.h"
-#include "core/ReferenceView.h"
+#include "core/ImageMetrics.h"
 #include "core/ToneMap.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblSettings.h"
@@ -378,14 +378,7 @@ int runGpu(const RenderRequest& request)
         const bool png = QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower() == QStringLiteral("png");
         // The noise estimate of a reference render covers the interior sphere pixels in the
         // reference view (the pixels the accuracy metric reads), else every pixel.
-        std::vector<std::uint8_t> noiseMask;
-        if (request.referenceView) {
-            noiseMask.resize(std::size_t(request.width) * std::size_t(request.height));
-            for (int y = 0; y < request.height; ++y)
-                for (int x = 0; x < request.width; ++x)
-                    noiseMask[std::size_t(y) * std::size_t(request.width) + std::size_t(x)]
-                        = referenceview::isInteriorSpherePixel(x, y, request.width, request.height) ? 1 : 0;
-        }
+        const PixelMask noiseMask = request.referenceView ? sphereMask(request.width, request.height) : PixelMask {};
         FrameRenderer::ConvergedStats converged;
         const std::optional<Image> image = frames.renderConverged(*scene, request.width, request.height,
             png ? FrameOutput::DisplayReferred : FrameOutput::LinearRadiance, scene->sampling.samples, &error,

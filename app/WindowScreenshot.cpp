@@ -39,11 +39,15 @@ WindowScreenshot::WindowScreenshot(
             QTimer::singleShot(0, this, &WindowScreenshot::save);
     });
     // A project saved in a Compare mode opens in it, and the single viewport, hidden, draws
-    // nothing: the compare view's first full frame with every environment loaded is the one.
+    // nothing: the compare view's first full frame with every environment loaded is the one
+    // (in the error view, once its reference is done).
     if (compare)
         connect(compare, &QOpenGLWidget::frameSwapped, this, [this, compare] {
             const CompareFrameStats& frame = compare->lastFrameStats();
-            if (!m_done && compare->isVisible() && frame.frameNumber > 0 && !frame.reduced && !compare->isLoading())
+            if (compare->isRefining())
+                m_timeout.start(kFirstFrameTimeoutMs); // progress, as the single view's refinement
+            if (!m_done && compare->isVisible() && frame.frameNumber > 0 && !frame.reduced && !compare->isLoading()
+                && !compare->isRefining())
                 QTimer::singleShot(0, this, &WindowScreenshot::save);
         });
     m_timeout.setSingleShot(true);

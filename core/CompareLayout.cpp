@@ -21,8 +21,9 @@ namespace {
 
 using namespace jsonsupport;
 
-constexpr std::pair<CompareMode, const char*> kModes[] = {{CompareMode::Single, "single"},
-    {CompareMode::Environments, "environments"}, {CompareMode::AB, "ab"}, {CompareMode::Wedge, "wedge"}};
+constexpr std::pair<CompareMode, const char*> kModes[]
+    = {{CompareMode::Single, "single"}, {CompareMode::Environments, "environments"}, {CompareMode::AB, "ab"},
+        {CompareMode::Wedge, "wedge"}, {CompareMode::Error, "error"}};
 constexpr std::pair<BSource, const char*> kBSources[]
     = {{BSource::Material, "material"}, {BSource::Snapshot, "snapshot"}, {BSource::Preset, "preset"}};
 constexpr std::pair<ABLayout, const char*> kABLayouts[]
@@ -240,6 +241,13 @@ void readCompareLayout(Messages& messages, const QJsonObject& object, const std:
         readAB(messages, *ab, r.pathOf("ab"), baseDir, layout.ab);
     if (const std::optional<QJsonObject> wedge = r.object("wedge"))
         readWedge(messages, *wedge, r.pathOf("wedge"), baseDir, layout.wedge);
+    if (const std::optional<QJsonObject> error = r.object("error")) {
+        ObjectReader e(messages, *error, r.pathOf("error"));
+        e.integer("samples", layout.error.samples);
+        e.number("scale", layout.error.scale);
+        e.boolean("showNoise", layout.error.showNoise);
+        e.warnAboutUnknownKeys();
+    }
     r.warnAboutUnknownKeys();
 }
 
@@ -405,6 +413,16 @@ bool CompareLayout::validate(std::size_t materialCount, std::string* problem) co
         return fail("wedge.rows." + local, problem);
     if (wedge.columns && !wedge.columns->validate(&local))
         return fail("wedge.columns." + local, problem);
+
+    if (error.samples < 1 || error.samples > kMaxIblSamples)
+        return fail("error.samples: " + std::to_string(error.samples) + " is outside [1, "
+                + std::to_string(kMaxIblSamples) + "]",
+            problem);
+    if (!std::isfinite(error.scale) || error.scale < ErrorCompare::kMinScale
+        || error.scale > ErrorCompare::kMaxScale)
+        return fail("error.scale: " + number(error.scale) + " is outside [" + number(ErrorCompare::kMinScale)
+                + ", " + number(ErrorCompare::kMaxScale) + "]",
+            problem);
     return true;
 }
 
@@ -457,6 +475,11 @@ QJsonObject CompareLayout::toJson(const std::string& baseDir) const
     o[QLatin1String("environments")] = grid;
     o[QLatin1String("ab")] = abToJson(ab, baseDir);
     o[QLatin1String("wedge")] = wedgeObject;
+    QJsonObject errorObject;
+    errorObject[QLatin1String("samples")] = error.samples;
+    errorObject[QLatin1String("scale")] = error.scale;
+    errorObject[QLatin1String("showNoise")] = error.showNoise;
+    o[QLatin1String("error")] = errorObject;
     return o;
 }
 

@@ -6,6 +6,8 @@
 //   environments  the current material in 2 to 9 environments at once (EnvironmentGrid)
 //   ab            the current material (A) against another one (B) in one view (ABCompare)
 //   wedge         the current material with one or two parameters swept (WedgeAxis rows x columns)
+//   error         the current view by the real-time split sum beside a converging reference, and
+//                 the per-pixel relative error between them (ErrorCompare)
 //
 // Plain values, like the rest of the project: the window changes them through undoable commands,
 // `facet sheet` reads them. A layout keeps the settings of every mode, not only the shown one, so
@@ -31,8 +33,8 @@ namespace facet {
 struct Project;
 struct EnvironmentSettings;
 
-enum class CompareMode { Single, Environments, AB, Wedge };
-const char* toString(CompareMode mode); // "single", "environments", "ab", "wedge"
+enum class CompareMode { Single, Environments, AB, Wedge, Error };
+const char* toString(CompareMode mode); // "single", "environments", "ab", "wedge", "error"
 std::optional<CompareMode> compareModeFromString(std::string_view name);
 
 // One cell of the environment grid.
@@ -138,11 +140,33 @@ struct WedgeLayout {
     bool operator==(const WedgeLayout&) const = default;
 };
 
+// The error view: the project's view (environment, camera, current material, view settings) by
+// the real-time split sum at the project's IBL quality, the same view by the `reference`
+// integrator converging to `samples` per pixel, and the per-pixel relative error of the first
+// against the second as a heat map from 0 to `scale` (core/HeatMap.h), with the relative RMSE
+// over the object's covered pixels (core/ImageMetrics errorStats, objectMask). With
+// `showNoise` the heat map shows the reference's own noise estimate instead: where it is not
+// far below the error, the error is not yet measured.
+struct ErrorCompare {
+    static constexpr int kDefaultSamples = 1024; // the accuracy target's reference (docs/accuracy.md)
+    static constexpr double kMinScale = 0.001;
+    static constexpr double kMaxScale = 10.0;
+    // The scales the window offers (Compare > Error Scale).
+    static constexpr double kScaleChoices[] = {0.01, 0.02, 0.05, 0.1, 0.25, 0.5, 1.0};
+
+    int samples = kDefaultSamples; // 1..kMaxIblSamples
+    double scale = 0.25; // the heat map's top: relative error 0.25 (25%) is its last colour
+    bool showNoise = false;
+
+    bool operator==(const ErrorCompare&) const = default;
+};
+
 struct CompareLayout {
     CompareMode mode = CompareMode::Single;
     EnvironmentGrid environments;
     ABCompare ab;
     WedgeLayout wedge;
+    ErrorCompare error;
 
     // The layout a project starts with: the grid holds the project's environment and the built-in
     // ones (EnvironmentGrid::defaultCells), B is a snapshot of the current material. Also what a

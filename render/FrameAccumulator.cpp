@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+
 #include "render/ShaderProgram.h"
 
 namespace facet {
@@ -132,19 +133,16 @@ bool FrameAccumulator::resolve(Framebuffer& out, std::string* error)
     return true;
 }
 
-std::optional<double> FrameAccumulator::noise(const std::vector<std::uint8_t>& mask) const
+std::optional<FrameAccumulator::Spread> FrameAccumulator::spread() const
 {
     if (!m_halves[0] || m_halfSamples[0] == 0 || m_halfSamples[1] == 0)
         return std::nullopt;
     const Image a = m_halves[0]->readPixels();
     const Image b = m_halves[1]->readPixels();
-    double variance = 0.0;
-    double signal = 0.0;
+    Spread spread {Image(m_width, m_height), std::vector<float>(a.pixelCount(), 0.0f)};
     for (int y = 0; y < m_height; ++y)
         for (int x = 0; x < m_width; ++x) {
             const std::size_t index = std::size_t(y) * std::size_t(m_width) + std::size_t(x);
-            if (!mask.empty() && (index >= mask.size() || !mask[index]))
-                continue;
             const glm::vec4 sa = a.at(x, y);
             const glm::vec4 sb = b.at(x, y);
             const double na = sa.a;
@@ -152,17 +150,25 @@ std::optional<double> FrameAccumulator::noise(const std::vector<std::uint8_t>& m
             if (na <= 0.0 || nb <= 0.0)
                 continue;
             const double weight = na * nb / ((na + nb) * (na + nb));
+            double variance = 0.0;
+            glm::vec4 mean(0.0f, 0.0f, 0.0f, 1.0f);
             for (int c = 0; c < 3; ++c) {
-                const double ma = sa[c] / na;
-                const double mb = sb[c] / nb;
-                const double mean = (sa[c] + sb[c]) / (na + nb);
-                variance += (ma - mb) * (ma - mb) * weight;
-                signal += mean * mean;
+                const double difference = sa[c] / na - sb[c] / nb;
+                variance += difference * difference * weight;
+                mean[c] = float((sa[c] + sb[c]) / (na + nb));
             }
+            spread.mean.at(x, y) = mean;
+            spread.variance[index] = float(variance);
         }
-    if (signal <= 0.0)
-        return 0.0;
-    return std::sqrt(variance / signal);
+    return spread;
+}
+
+std::optional<double> FrameAccumulator::noise(const PixelMask& mask) const
+{
+    const std::optional<Spread> halves = spread();
+    if (!halves)
+        return std::nullopt;
+    return relativeNoiseRmse(halves->mean, halves->variance, mask);
 }
 
 } // namespace facet

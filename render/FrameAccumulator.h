@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/Image.h"
+#include "core/ImageMetrics.h"
 #include "render/Framebuffer.h"
 
 namespace facet {
@@ -52,7 +53,15 @@ public:
     // (core/ImageMetrics relativeRmse): sqrt(sum var_p / sum |m_p|^2) over the pixels `mask`
     // marks (row-major, top row first, as Image; empty: every pixel), from read-backs of A and B.
     // nullopt before both halves hold a draw.
-    std::optional<double> noise(const std::vector<std::uint8_t>& mask = {}) const;
+    std::optional<double> noise(const PixelMask& mask = {}) const;
+    // What noise() reads, per pixel: the mean so far (rgb; alpha 1) and the estimated variance of
+    // that mean summed over RGB (core/ImageMetrics relativeNoise turns it into a relative noise).
+    // nullopt before both halves hold a draw.
+    struct Spread {
+        Image mean;
+        std::vector<float> variance;
+    };
+    std::optional<Spread> spread() const;
 
 private:
     bool ensureProgram(std::string* error);

@@ -311,4 +311,9 @@ const FrameRenderer::Refinement& FrameRenderer::refinement() const
     return m_view ? m_view->state : none;
 }
 
+std::optional<FrameAccumulator::Spread> FrameRenderer::refinementSpread() const
+{
+    return m_view ? m_view->accumulator.spread() : std::nullopt;
+}
+
 } // namespace facet

@@ -22,6 +22,7 @@
 // `facet render`-style tests make a fresh surface renderer per frame and keep the IBL results.
 
 #include "core/Image.h"
+#include "render/FrameAccumulator.h"
 #include "render/Framebuffer.h"
 #include "render/IblPrecompute.h"
 #include "render/RenderScene.h"
@@ -40,7 +41,6 @@
 namespace facet {
 
 class Environment;
-class FrameAccumulator;
 class Renderer;
 class TextureCache;
 struct IblSettings;
@@ -148,6 +148,10 @@ public:
     bool refine(const RenderScene& preview, const RenderScene& scene, unsigned framebuffer, const FrameRect& rect,
         bool restart, int drawSamples, std::string* error);
     const Refinement& refinement() const;
+    // The refinement's mean so far and its per-pixel noise (FrameAccumulator::spread, linear
+    // radiance, top row first): what the error view measures against. nullopt before both of the
+    // accumulator's halves hold a draw.
+    std::optional<FrameAccumulator::Spread> refinementSpread() const;
 
     // The size present() rendered at in its last call.
     int lastRenderWidth() const { return m_lastWidth; }

@@ -188,6 +188,10 @@ struct RenderScene {
     // by it, so draws accumulated at different offsets anti-alias the edges (FrameRenderer sets
     // it per draw of a converging method; 0 for every other frame).
     glm::dvec2 subpixelJitter {0.0};
+    // The background writes alpha 0 instead of 1, so the target's alpha is the object's coverage
+    // (fractional at MSAA-resolved silhouettes and under blended materials): what the error view
+    // masks its numbers with (core/ImageMetrics objectMask). Radiance is the same either way.
+    bool coverageAlpha = false;
     // exposureEV, toneMapper, displayEncoding, gamma (tone-map pass); debugView, msaaSamples,
     // background, backgroundColor, backgroundBlurRoughness (surface pass).
     ViewSettings view;

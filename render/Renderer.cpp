@@ -319,6 +319,7 @@ void Renderer::drawBackground(const RenderScene& scene, const glm::dmat4& view, 
     else if (scene.view.background != BackgroundMode::Color && env.prefilteredCubemap)
         mode = 1; // blurred, or the sharp environment is missing
     program.setInt("uBackgroundMode", mode);
+    program.setFloat("uBackgroundAlpha", scene.coverageAlpha ? 0.0f : 1.0f);
     setVec3(program, "uBackgroundColor", scene.view.backgroundColor);
     setMat4(program, "uInverseViewProjection", glm::inverse(projection * view));
     setVec3(program, "uCameraPosition", scene.camera.position);

@@ -28,8 +28,8 @@ struct SceneOptions {
     // Irradiance from the 9 SH coefficients instead of the irradiance cubemap.
     bool irradianceFromSH = false;
     // The IBL method of the frame instead of the project's environment.method: the window
-    // previews with the split sum (converging refinement of the project's method is a later step
-    // of issue 10).
+    // previews with the split sum and refines by the sampled method in scenes of its own
+    // (FrameRenderer::refine; the error view's reference).
     std::optional<IblMethod> iblMethod;
 };
 

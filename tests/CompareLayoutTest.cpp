@@ -149,7 +149,8 @@ private Q_SLOTS:
         const Project base = threeMaterials();
         const CompareLayout plain = base.compare;
         QTest::newRow("default") << plain;
-        for (CompareMode mode : {CompareMode::Environments, CompareMode::AB, CompareMode::Wedge}) {
+        for (CompareMode mode :
+            {CompareMode::Environments, CompareMode::AB, CompareMode::Wedge, CompareMode::Error}) {
             CompareLayout l = plain;
             l.mode = mode;
             QTest::newRow((std::string("mode ") + toString(mode)).c_str()) << l;
@@ -231,6 +232,18 @@ private Q_SLOTS:
         l.ab.snapshot.name = "Kept";
         l.ab.split = 0.3;
         QTest::newRow("everything at once") << l;
+        l = plain;
+        l.mode = CompareMode::Error;
+        l.error.samples = 1;
+        l.error.scale = ErrorCompare::kMinScale;
+        l.error.showNoise = true;
+        QTest::newRow("error view: the fewest samples, the smallest scale, noise") << l;
+        l.error.samples = kMaxIblSamples;
+        l.error.scale = ErrorCompare::kMaxScale;
+        l.error.showNoise = false;
+        QTest::newRow("error view: the most samples, the largest scale") << l;
+        l.error.scale = 0.123456789;
+        QTest::newRow("error view: a scale that needs all its digits") << l;
     }
     void roundTrip()
     {
@@ -272,7 +285,7 @@ private Q_SLOTS:
         QTest::newRow("not an object") << QByteArray(R"([])") << "compare: expected an object, got an array";
         QTest::newRow("mode unknown")
             << QByteArray(R"({"mode": "grid"})")
-            << R"(compare.mode: unknown name "grid" (expected one of "single", "environments", "ab", "wedge"))";
+            << R"(compare.mode: unknown name "grid" (expected one of "single", "environments", "ab", "wedge", "error"))";
         QTest::newRow("mode not a string")
             << QByteArray(R"({"mode": 1})") << "compare.mode: expected a string, got a number";
         QTest::newRow("environments not an object") << QByteArray(
@@ -381,6 +394,20 @@ private Q_SLOTS:
         QTest::newRow("axis without values")
             << QByteArray(R"({"wedge": {"rows": {"parameter": "roughness", "values": []}}})")
             << "compare.wedge.rows.values: needs at least one value";
+        QTest::newRow("error not an object")
+            << QByteArray(R"({"error": 1024})") << "compare.error: expected an object, got a number";
+        QTest::newRow("error samples 0")
+            << QByteArray(R"({"error": {"samples": 0}})") << "compare.error.samples: 0 is outside [1, 65536]";
+        QTest::newRow("error samples too many") << QByteArray(R"({"error": {"samples": 65537}})")
+                                                << "compare.error.samples: 65537 is outside [1, 65536]";
+        QTest::newRow("error samples a fraction")
+            << QByteArray(R"({"error": {"samples": 2.5}})") << "compare.error.samples: expected an integer";
+        QTest::newRow("error scale 0")
+            << QByteArray(R"({"error": {"scale": 0}})") << "compare.error.scale: 0 is outside [0.001, 10]";
+        QTest::newRow("error scale above 10")
+            << QByteArray(R"({"error": {"scale": 11}})") << "compare.error.scale: 11 is outside [0.001, 10]";
+        QTest::newRow("error showNoise not a boolean") << QByteArray(R"({"error": {"showNoise": "yes"}})")
+                                                       << "compare.error.showNoise: expected true or false";
         QTest::newRow("axis of 17 values") << QByteArray(
             R"({"wedge": {"columns": {"parameter": "metallic", "values": [0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,1]}}})")
                                            << "compare.wedge.columns.values: 17 values, more than the 16 an "

@@ -179,6 +179,11 @@ void CompareUiTest::cellsForEachMode_data()
     QTest::newRow("wedge 5x2 (default)")
         << Edit([](Project& p) { p.compare.mode = CompareMode::Wedge; }) << 1 << 10 << 5 << 2 << QString()
         << 7 << QStringLiteral("compare-wedge.png");
+    QTest::newRow("error view (2x2)") << Edit([](Project& p) {
+        p.compare.mode = CompareMode::Error;
+        p.compare.error.samples = 32;
+    }) << 1 << 3 << 2 << 2 << QStringLiteral("Real time · split sum (draft)")
+                                      << 0 << QStringLiteral("compare-error.png");
     QTest::newRow("wedge one axis") << Edit([](Project& p) {
         p.compare.mode = CompareMode::Wedge;
         p.compare.wedge.rows = *WedgeAxis::parse("ior=1,1.5,2.5", nullptr);
@@ -447,6 +452,14 @@ void CompareUiTest::compareEditsUndoAndRedo_data()
     QTest::newRow("wedge axes") << E([](CompareController& c) {
         QVERIFY(c.setWedge("metallic=0,1", "ior=1.2,1.8", nullptr));
     }) << QStringLiteral("Wedge Axes");
+    QTest::newRow("error view") << E([](CompareController& c) { c.setMode(CompareMode::Error); })
+                                << QStringLiteral("Compare: Error View");
+    QTest::newRow("error scale") << E([](CompareController& c) { c.setErrorScale(0.05); })
+                                 << QStringLiteral("Error Scale");
+    QTest::newRow("error noise") << E([](CompareController& c) { c.setErrorShowsNoise(true); })
+                                 << QStringLiteral("Show Reference Noise");
+    QTest::newRow("error samples") << E([](CompareController& c) { c.setErrorSamples(16); })
+                                   << QStringLiteral("Error View Samples");
     QTest::newRow("promote") << E([](CompareController& c) { c.promoteCell(1); })
                              << QStringLiteral("Promote Cell to Single View");
 }

@@ -9,6 +9,7 @@
 
 #include <epoxy/gl.h> // before any header that could pull in <GL/gl.h>
 
+#include "core/ImageMetrics.h"
 #include "core/Project.h"
 #include "core/ProjectAssets.h"
 #include "render/FrameRenderer.h"
@@ -120,6 +121,8 @@ private Q_SLOTS:
     void presentWritesItsRectangle_data();
     void presentWritesItsRectangle();
     void targetPoolIsBounded();
+    void coverageAlphaIsTheObject_data();
+    void coverageAlphaIsTheObject();
     void texturesOfEveryCellStayUntilTheFrameEnds();
     void renderersSharingTexturesUploadOnce();
     void seamlessCubeFilteringInTheDrawingContext();
@@ -341,6 +344,65 @@ void FrameRendererGLTest::targetPoolIsBounded()
         QVERIFY(frames.pooledTargets() <= FrameRenderer::kPooledTargets);
     }
     QCOMPARE(frames.pooledTargets(), FrameRenderer::kPooledTargets);
+}
+
+void FrameRendererGLTest::coverageAlphaIsTheObject_data()
+{
+    QTest::addColumn<QString>("background");
+    QTest::addColumn<int>("msaa");
+    QTest::newRow("environment") << QStringLiteral("environment") << 1;
+    QTest::newRow("blurred") << QStringLiteral("blurred") << 1;
+    QTest::newRow("colour") << QStringLiteral("color") << 1;
+    QTest::newRow("environment, 4x MSAA") << QStringLiteral("environment") << 4;
+}
+
+// RenderScene::coverageAlpha: the background writes alpha 0 and the sphere 1 (fractions only
+// at an MSAA-resolved silhouette); the radiance is the same with and without it. The error view's
+// mask (core/ImageMetrics objectMask) is made from it.
+void FrameRendererGLTest::coverageAlphaIsTheObject()
+{
+    QFETCH(QString, background);
+    QFETCH(int, msaa);
+    FrameRenderer frames(m_cacheDir.path(), /*useDiskCache=*/false);
+    const IblSettings settings = tinySettings();
+    std::string error;
+    Project project = sphereIn("uniform:0.5");
+    project.view.background = *backgroundModeFromString(background.toStdString());
+    project.view.msaaSamples = msaa;
+    const auto assets = loadProjectAssets(project, &error);
+    QVERIFY2(assets, error.c_str());
+    auto scene
+        = frames.prepare(project, *assets, settings, sceneOptionsFor(settings, false), nullptr, &error);
+    QVERIFY2(scene, error.c_str());
+    constexpr int kSize = 48;
+    const auto plain = frames.renderImage(
+        *scene, kSize, kSize, FrameOutput::LinearRadiance, &error, FramebufferFormat::RGBA32F);
+    QVERIFY2(plain, error.c_str());
+    scene->coverageAlpha = true;
+    const auto covered = frames.renderImage(
+        *scene, kSize, kSize, FrameOutput::LinearRadiance, &error, FramebufferFormat::RGBA32F);
+    QVERIFY2(covered, error.c_str());
+    QCOMPARE(difference(*plain, *covered).max, 0.0f);
+    int object = 0;
+    int partial = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            QCOMPARE(plain->at(x, y).a, 1.0f);
+            const float alpha = covered->at(x, y).a;
+            QVERIFY(alpha >= 0.0f && alpha <= 1.0f);
+            object += alpha == 1.0f ? 1 : 0;
+            partial += alpha > 0.0f && alpha < 1.0f ? 1 : 0;
+        }
+    QCOMPARE(covered->at(0, 0).a, 0.0f); // the corners are background
+    QCOMPARE(covered->at(kSize - 1, kSize - 1).a, 0.0f);
+    QCOMPARE(covered->at(kSize / 2, kSize / 2).a, 1.0f); // the centre the sphere
+    // The default camera frames the unit sphere: a disc of a good part of the image.
+    QVERIFY2(
+        object > kSize * kSize / 8 && object < kSize * kSize * 3 / 4, qPrintable(QString::number(object)));
+    QCOMPARE(partial > 0, msaa > 1);
+    const PixelMask mask = objectMask(*covered);
+    const auto marked = std::count(mask.begin(), mask.end(), std::uint8_t(1));
+    QVERIFY(marked > 0 && marked < object);
 }
 
 void FrameRendererGLTest::texturesOfEveryCellStayUntilTheFrameEnds()

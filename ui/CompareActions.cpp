@@ -39,13 +39,14 @@ CompareActions::CompareActions(
         {CompareMode::Environments, tr("&Environment Grid"), "compareEnvironmentsAction", Qt::Key_2},
         {CompareMode::AB, tr("&A/B"), "compareABAction", Qt::Key_3},
         {CompareMode::Wedge, tr("&Wedge"), "compareWedgeAction", Qt::Key_4},
+        {CompareMode::Error, tr("E&rror View"), "compareErrorAction", Qt::Key_5},
     };
     for (const Entry& entry : entries) {
         QAction* action = m_menu->addAction(entry.text);
         action->setObjectName(QLatin1String(entry.name));
         action->setCheckable(true);
         action->setData(int(entry.mode));
-        // Alt+1..4: the number keys alone apply presets (Edit > Apply Preset).
+        // Alt+1..5: the number keys alone apply presets (Edit > Apply Preset).
         action->setShortcut(QKeySequence(Qt::ALT | entry.key));
         m_modes->addAction(action);
         m_toolBar->addAction(action);
@@ -65,6 +66,28 @@ CompareActions::CompareActions(
            "environment grid")
             .arg(EnvironmentGrid::kMaxCells));
     m_compareSelected->setEnabled(false);
+
+    // The error view's settings (ErrorCompare): what the heat map shows and its scale.
+    m_menu->addSeparator();
+    m_showNoise = m_menu->addAction(tr("Show Reference &Noise"));
+    m_showNoise->setObjectName(QStringLiteral("compareShowNoiseAction"));
+    m_showNoise->setCheckable(true);
+    m_showNoise->setStatusTip(
+        tr("The error view's heat map shows the reference's own noise estimate instead of "
+           "the real-time image's error: where the noise is not well below the error, "
+           "the error is not measured yet"));
+    connect(m_showNoise, &QAction::triggered, controller, &CompareController::setErrorShowsNoise);
+    m_errorScaleMenu = m_menu->addMenu(tr("Error &Scale"));
+    m_errorScaleMenu->setObjectName(QStringLiteral("compareErrorScaleMenu"));
+    m_errorScales = new QActionGroup(this);
+    for (double scale : ErrorCompare::kScaleChoices) {
+        QAction* action = m_errorScaleMenu->addAction(tr("0 to %1%").arg(scale * 100.0, 0, 'g', 3));
+        action->setCheckable(true);
+        action->setData(scale);
+        m_errorScales->addAction(action);
+        connect(action, &QAction::triggered, controller,
+            [controller, scale] { controller->setErrorScale(scale); });
+    }
     connect(m_document, &Document::changed, this, &CompareActions::sync);
     sync();
 }
@@ -83,6 +106,12 @@ void CompareActions::sync()
     if (QAction* action = modeAction(mode); action && !action->isChecked())
         action->setChecked(true);
     m_swap->setEnabled(mode == CompareMode::AB);
+    const ErrorCompare& error = m_document->project().compare.error;
+    m_showNoise->setEnabled(mode == CompareMode::Error);
+    m_showNoise->setChecked(error.showNoise);
+    m_errorScaleMenu->setEnabled(mode == CompareMode::Error);
+    for (QAction* action : m_errorScales->actions())
+        action->setChecked(action->data().toDouble() == error.scale);
     m_central->setCurrentIndex(mode == CompareMode::Single ? 0 : 1);
 }
 

@@ -38,6 +38,10 @@ public:
     QAction* modeAction(CompareMode mode) const;
     QAction* swapAction() const { return m_swap; }
     QAction* compareSelectedAction() const { return m_compareSelected; }
+    // The error view's: Show Reference Noise, and the Error Scale menu (one checkable action per
+    // ErrorCompare::kScaleChoices, its value in data()).
+    QAction* showNoiseAction() const { return m_showNoise; }
+    QMenu* errorScaleMenu() const { return m_errorScaleMenu; }
 
     // Wires Compare Selected Environments to `dock`'s library: enabled while at least
     // EnvironmentGrid::kMinCells entries are selected; also in the library's context menu.
@@ -68,6 +72,9 @@ private:
     QActionGroup* m_modes;
     QAction* m_swap;
     QAction* m_compareSelected;
+    QAction* m_showNoise;
+    QMenu* m_errorScaleMenu;
+    QActionGroup* m_errorScales;
 };
 
 } // namespace facet

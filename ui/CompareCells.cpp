@@ -107,6 +107,34 @@ std::vector<CompareCell> compareCells(const Project& project)
         cells.push_back(std::move(b));
         break;
     }
+    case CompareMode::Error: {
+        // Three cells of a 2 x 2 grid (gridShapeFor(3)): wide enough for the object in a tall
+        // window as in a wide one.
+        const ErrorCompare& error = layout.error;
+        CompareCell realTime;
+        realTime.role = CompareCell::Role::RealTime;
+        realTime.project = project;
+        realTime.project.environment.method = IblMethod::SplitSum;
+        realTime.project.environment.samples = 0;
+        realTime.label = tr("Real time · split sum (%1)")
+                             .arg(QString::fromLatin1(toString(project.environment.quality)));
+        CompareCell reference;
+        reference.role = CompareCell::Role::Reference;
+        reference.column = 1;
+        reference.project = project;
+        reference.project.environment.method = IblMethod::Reference;
+        reference.project.environment.samples = error.samples;
+        reference.label = tr("Reference");
+        CompareCell difference;
+        difference.role = CompareCell::Role::Error;
+        difference.row = 1;
+        difference.project = reference.project;
+        difference.label = error.showNoise ? tr("Reference noise") : tr("Relative error");
+        cells.push_back(std::move(realTime));
+        cells.push_back(std::move(reference));
+        cells.push_back(std::move(difference));
+        break;
+    }
     case CompareMode::Wedge: {
         const WedgeLayout& wedge = layout.wedge;
         for (std::size_t r = 0; r < wedge.rowCount(); ++r)
@@ -151,6 +179,8 @@ GridShape gridShapeOf(const Project& project)
         return layout.ab.layout == ABLayout::Split ? GridShape {} : GridShape {1, 2};
     case CompareMode::Wedge:
         return GridShape {int(layout.wedge.rowCount()), int(layout.wedge.columnCount())};
+    case CompareMode::Error:
+        return gridShapeFor(3);
     }
     return {};
 }

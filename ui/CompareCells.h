@@ -25,6 +25,9 @@ struct CompareCell {
         B, // A/B: ABCompare::materialB
         Wedge, // a wedge cell (row, column)
         Single, // the single view's project (CompareMode::Single; the window shows its viewport)
+        RealTime, // the error view: the project by the split sum
+        Reference, // the error view: the project by the reference integrator (ErrorCompare::samples)
+        Error, // the error view: the relative error of RealTime against Reference (or its noise)
     };
     Role role = Role::Single;
     std::size_t index = 0; // Grid: the cell of EnvironmentGrid::cells

@@ -30,7 +30,8 @@ void CompareController::setMode(CompareMode mode)
 {
     Project after = m_document->project();
     after.compare.mode = mode;
-    const QString names[] = {tr("Single View"), tr("Environment Grid"), tr("A/B"), tr("Wedge")};
+    const QString names[]
+        = {tr("Single View"), tr("Environment Grid"), tr("A/B"), tr("Wedge"), tr("Error View")};
     push(after, tr("Compare: %1").arg(names[int(mode)]));
 }
 
@@ -171,6 +172,27 @@ void CompareController::setSplit(double split)
     Project after = m_document->project();
     after.compare.ab.split = std::clamp(split, 0.0, 1.0);
     push(after, tr("A/B Split"), kSplitMergeId);
+}
+
+void CompareController::setErrorScale(double scale)
+{
+    Project after = m_document->project();
+    after.compare.error.scale = std::clamp(scale, ErrorCompare::kMinScale, ErrorCompare::kMaxScale);
+    push(after, tr("Error Scale"));
+}
+
+void CompareController::setErrorShowsNoise(bool noise)
+{
+    Project after = m_document->project();
+    after.compare.error.showNoise = noise;
+    push(after, noise ? tr("Show Reference Noise") : tr("Show Relative Error"));
+}
+
+void CompareController::setErrorSamples(int samples)
+{
+    Project after = m_document->project();
+    after.compare.error.samples = std::clamp(samples, 1, kMaxIblSamples);
+    push(after, tr("Error View Samples"));
 }
 
 void CompareController::setABLayout(ABLayout abLayout)

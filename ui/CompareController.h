@@ -38,7 +38,7 @@ public:
 
     const CompareLayout& layout() const;
 
-    // Compare > Single / Environment Grid / A-B / Wedge.
+    // Compare > Single / Environment Grid / A-B / Wedge / Error View.
     void setMode(CompareMode mode);
 
     // --- Environment grid
@@ -82,6 +82,13 @@ public:
     // The wedge's axes ("roughness=0,0.5,1", WedgeAxis::parse; empty columns: one column). False
     // with *error (parse's message) when a text is not an axis.
     bool setWedge(const std::string& rows, const std::string& columns, std::string* error);
+
+    // --- Error view (ErrorCompare)
+    // The heat map's top (clamped to ErrorCompare's range); whether it shows the reference's
+    // noise instead of the error; the reference's samples per pixel (1..kMaxIblSamples).
+    void setErrorScale(double scale);
+    void setErrorShowsNoise(bool noise);
+    void setErrorSamples(int samples);
 
 private:
     // Pushes `after` (a copy of the project with its compare layout edited) as one step.

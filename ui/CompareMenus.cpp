@@ -130,6 +130,32 @@ void fillWedge(QMenu& menu, CompareController& controller, const Project& projec
     axes->setObjectName(QStringLiteral("wedgeAxesAction"));
 }
 
+// The error view's settings (ErrorCompare): what the heat map shows, its scale, the samples.
+void fillError(QMenu& menu, CompareController& controller, const Project& project)
+{
+    const ErrorCompare& error = project.compare.error;
+    QAction* noise = menu.addAction(tr("Show Reference &Noise"), &controller,
+        [&controller, showNoise = error.showNoise] { controller.setErrorShowsNoise(!showNoise); });
+    noise->setObjectName(QStringLiteral("errorShowNoiseAction"));
+    noise->setCheckable(true);
+    noise->setChecked(error.showNoise);
+    QMenu* scales = menu.addMenu(tr("Error &Scale"));
+    for (double scale : ErrorCompare::kScaleChoices) {
+        QAction* action = scales->addAction(tr("0 to %1%").arg(scale * 100.0, 0, 'g', 3), &controller,
+            [&controller, scale] { controller.setErrorScale(scale); });
+        action->setCheckable(true);
+        action->setChecked(error.scale == scale);
+    }
+    QMenu* samples = menu.addMenu(tr("Reference &Samples"));
+    samples->setObjectName(QStringLiteral("errorSamplesMenu"));
+    for (int count : {256, 1024, 4096, 16384}) {
+        QAction* action = samples->addAction(tr("%1 per pixel").arg(count), &controller,
+            [&controller, count] { controller.setErrorSamples(count); });
+        action->setCheckable(true);
+        action->setChecked(error.samples == count);
+    }
+}
+
 } // namespace
 
 void CompareMenus::fill(QMenu& menu, CompareController& controller, const Project& project,
@@ -145,6 +171,11 @@ void CompareMenus::fill(QMenu& menu, CompareController& controller, const Projec
         break;
     case CompareCell::Role::Wedge:
         fillWedge(menu, controller, project, dialogParent);
+        break;
+    case CompareCell::Role::RealTime:
+    case CompareCell::Role::Reference:
+    case CompareCell::Role::Error:
+        fillError(menu, controller, project);
         break;
     case CompareCell::Role::Single:
         break;

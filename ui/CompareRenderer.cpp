@@ -10,9 +10,17 @@
 #include "render/TextureCache.h"
 #include "render/TextureFiltering.h"
 
+#include "core/HeatMap.h"
+#include "ui/ViewportRenderer.h"
+
+#include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QFontMetrics>
+#include <QImage>
+#include <QPainter>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace facet {
@@ -158,6 +166,24 @@ std::shared_ptr<const IblTextures> CompareRenderer::lightingFor(
     return ibl;
 }
 
+std::optional<RenderScene> CompareRenderer::sceneOf(
+    const CompareCellDraw& cell, std::optional<IblMethod> method, std::string* error)
+{
+    const auto ibl = lightingFor(cell, error);
+    if (!ibl)
+        return std::nullopt;
+    const IblSettings settings = iblSettingsOf(cell.project);
+    SceneOptions options = sceneOptionsFor(settings, false);
+    options.iblMethod = method;
+    RenderScene scene = sceneFromProject(cell.project, cell.assets, ibl, options);
+    IblStats stats;
+    if (!m_frames->addDfgTables(settings, scene, &stats, error)
+        || !m_frames->addEnvironmentSource(cell.assets.environment, scene, &stats, error))
+        return std::nullopt;
+    m_stats.iblMs += stats.msTotal;
+    return scene;
+}
+
 bool CompareRenderer::drawCell(const CompareCellDraw& cell, double scale, std::string* error)
 {
     if (cell.assets.environment.isEmpty()) {
@@ -168,17 +194,11 @@ bool CompareRenderer::drawCell(const CompareCellDraw& cell, double scale, std::s
     }
     if (cell.clip && (cell.clip->width <= 0 || cell.clip->height <= 0))
         return true; // the divider at the edge: nothing of this side shows
-    const auto ibl = lightingFor(cell, error);
-    if (!ibl)
+    // The window's preview (SceneOptions::iblMethod): the split sum.
+    const std::optional<RenderScene> prepared = sceneOf(cell, IblMethod::SplitSum, error);
+    if (!prepared)
         return false;
-    const IblSettings settings = iblSettingsOf(cell.project);
-    SceneOptions options = sceneOptionsFor(settings, false);
-    options.iblMethod = IblMethod::SplitSum; // the window's preview (SceneOptions::iblMethod)
-    RenderScene scene = sceneFromProject(cell.project, cell.assets, ibl, options);
-    IblStats dfgStats;
-    if (!m_frames->addDfgTables(settings, scene, &dfgStats, error))
-        return false;
-    m_stats.iblMs += dfgStats.msTotal;
+    const RenderScene& scene = *prepared;
     if (!cell.clip) {
         const bool presented
             = m_frames->present(scene, m_composite->framebufferId(), cell.rect, scale, error);
@@ -206,6 +226,222 @@ bool CompareRenderer::drawCell(const CompareCellDraw& cell, double scale, std::s
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_composite->framebufferId());
     glBlitFramebuffer(sx, sy, sx + clip.width, sy + clip.height, clip.x, clip.y, clip.x + clip.width,
         clip.y + clip.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    return true;
+}
+
+namespace {
+
+// What the error view's images are made of: the cell's inputs without the display transform,
+// the compare layout and the names of materials and lights (an exposure, a heat-map scale or a rename changes
+// what is shown or said, not what is summed).
+void dropDisplaySettings(Project& project)
+{
+    for (Material& material : project.materials)
+        material.name.clear();
+    for (Light& light : project.lights)
+        light.name.clear();
+    const ViewSettings defaults;
+    project.view.exposureEV = defaults.exposureEV;
+    project.view.toneMapper = defaults.toneMapper;
+    project.view.displayEncoding = defaults.displayEncoding;
+    project.view.gamma = defaults.gamma;
+    project.view.ocioDisplay.clear();
+    project.view.ocioView.clear();
+    project.compare = {};
+}
+
+// The heat map's legend, along the bottom of the cell: the colour ramp from 0 to `scale`, its
+// ends and middle in percent, and what is off the scale.
+void paintLegend(QImage& image, double scale, bool noise)
+{
+    const int margin = 8;
+    const int barHeight = 10;
+    const int width = std::min(image.width() - 2 * margin, 320);
+    if (width < 60 || image.height() < 60)
+        return;
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::TextAntialiasing);
+    QFont font = painter.font();
+    font.setPixelSize(11);
+    painter.setFont(font);
+    const int textHeight = QFontMetrics(font).height();
+    const int top = image.height() - margin - barHeight - textHeight - 4;
+    painter.fillRect(
+        QRect(margin - 4, top - 4, width + 8 + 24, barHeight + textHeight + 12), QColor(0, 0, 0, 150));
+    for (int x = 0; x < width; ++x) {
+        const glm::vec3 c = heatmap::ramp(double(x) / double(std::max(width - 1, 1)));
+        painter.fillRect(QRect(margin + x, top, 1, barHeight), QColor::fromRgbF(c.r, c.g, c.b));
+    }
+    const glm::vec3 over = heatmap::kOverScale;
+    painter.fillRect(QRect(margin + width + 4, top, 16, barHeight), QColor::fromRgbF(over.r, over.g, over.b));
+    painter.setPen(Qt::white);
+    const auto percent = [](double value) { return QStringLiteral("%1%").arg(value * 100.0, 0, 'g', 3); };
+    const int textTop = top + barHeight + 2;
+    painter.drawText(QRect(margin, textTop, width, textHeight), Qt::AlignLeft, QStringLiteral("0"));
+    painter.drawText(QRect(margin, textTop, width, textHeight), Qt::AlignHCenter,
+        (noise ? QCoreApplication::translate("CompareRenderer", "noise %1")
+               : QCoreApplication::translate("CompareRenderer", "error %1"))
+            .arg(percent(scale / 2.0)));
+    painter.drawText(QRect(margin, textTop, width, textHeight), Qt::AlignRight, percent(scale));
+    painter.drawText(QRect(margin + width + 2, textTop, 24, textHeight), Qt::AlignLeft, QStringLiteral(">"));
+}
+
+} // namespace
+
+bool CompareRenderer::isRefining() const
+{
+    return m_stats.error && !m_stats.error->done();
+}
+
+bool CompareRenderer::drawHeatMap(
+    const CompareCellDraw& heat, const std::vector<float>& values, double scale, std::string* error)
+{
+    const FrameRect& rect = heat.rect;
+    const ErrorCompare& settings = heat.project.compare.error;
+    QImage image(rect.width, rect.height, QImage::Format_RGBA8888);
+    // Outside the object: the gap's grey, a shade lighter, so the mask's outline shows.
+    const int outside = int(std::lround(displayGrey(kGapGrey * 2.0f) * 255.0f));
+    image.fill(QColor(outside, outside, outside));
+    if (values.size() == std::size_t(rect.width) * std::size_t(rect.height))
+        for (int y = 0; y < rect.height; ++y) {
+            auto* line = reinterpret_cast<std::uint8_t*>(image.scanLine(y));
+            for (int x = 0; x < rect.width; ++x) {
+                const float value = values[std::size_t(y) * std::size_t(rect.width) + std::size_t(x)];
+                if (std::isnan(value))
+                    continue;
+                const glm::vec3 c = heatmap::color(double(value), settings.scale);
+                line[4 * x + 0] = std::uint8_t(std::lround(c.r * 255.0f));
+                line[4 * x + 1] = std::uint8_t(std::lround(c.g * 255.0f));
+                line[4 * x + 2] = std::uint8_t(std::lround(c.b * 255.0f));
+                line[4 * x + 3] = 255;
+            }
+        }
+    paintLegend(image, settings.scale, settings.showNoise);
+    (void)scale;
+    if (!m_error.heat || m_error.heat->width() != rect.width || m_error.heat->height() != rect.height) {
+        m_error.heat.reset();
+        m_error.heat = Framebuffer::create(rect.width, rect.height, FramebufferFormat::RGBA16F, error);
+        if (!m_error.heat)
+            return false;
+    }
+    // Image rows are top first, GL's bottom first. The composite holds display-encoded values,
+    // as the bytes are.
+    const QImage flipped = image.mirrored();
+    glBindTexture(GL_TEXTURE_2D, m_error.heat->colorTexture());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexSubImage2D(
+        GL_TEXTURE_2D, 0, 0, 0, rect.width, rect.height, GL_RGBA, GL_UNSIGNED_BYTE, flipped.constBits());
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_error.heat->framebufferId());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_composite->framebufferId());
+    glBlitFramebuffer(0, 0, rect.width, rect.height, rect.x, rect.y, rect.x + rect.width,
+        rect.y + rect.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    return true;
+}
+
+bool CompareRenderer::drawErrorView(const CompareCellDraw& reference, const CompareCellDraw& heat,
+    double scale, bool heatShown, std::string* error)
+{
+    const ErrorCompare& settings = reference.project.compare.error;
+    ErrorViewStats& stats = m_error.stats;
+    stats.scale = settings.scale;
+    stats.showingNoise = settings.showNoise;
+    if (reference.assets.environment.isEmpty()) {
+        // Its environment or lighting is on its way. What was summed stays (a new environment
+        // changes the key; lighting for another split-sum quality does not).
+        fill(reference.rect, kLoadingGrey);
+        fill(heat.rect, kLoadingGrey);
+        m_stats.cellsLoading += 2;
+        touchMaps(reference);
+        m_error.heatSamples = -1;
+        return true;
+    }
+    const int width = reference.rect.width;
+    const int height = reference.rect.height;
+    // The real-time image depends on all of these; the reference on all but the split sum's
+    // precompute quality.
+    CellKey tested = keyOf(reference, 1.0);
+    dropDisplaySettings(tested.project);
+    CellKey accumulation = tested;
+    accumulation.project.environment.quality = {};
+    // While the user drags, each frame starts again (what is summed moves); the reference then
+    // shows its split-sum frame, as the single view does.
+    const bool restart = !m_error.accumulation || *m_error.accumulation != accumulation || scale < 1.0
+        || m_error.test.width() != width || m_error.test.height() != height;
+    const bool retest = restart || !m_error.tested || *m_error.tested != tested;
+
+    const std::optional<RenderScene> preview = sceneOf(reference, IblMethod::SplitSum, error);
+    std::optional<RenderScene> sampled
+        = preview ? sceneOf(reference, IblMethod::Reference, error) : std::nullopt;
+    if (!sampled)
+        return false;
+    // Like for like: the real-time image shades each pixel at its centre (MSAA resolves only
+    // edges, which the mask leaves out), so the reference does too. Jittered, it would be the
+    // pixel's average, and a detailed normal map's aliasing would count as lighting error.
+    sampled->pixelCentres = true;
+    if (retest) {
+        // The real-time image the error is of: the preview at the cell's full size, in float,
+        // with the object's coverage in alpha for the mask.
+        RenderScene covered = *preview;
+        covered.coverageAlpha = true;
+        const std::optional<Image> test = m_frames->renderImage(
+            covered, width, height, FrameOutput::LinearRadiance, error, FramebufferFormat::RGBA32F);
+        if (!test)
+            return false;
+        m_error.test = *test;
+        m_error.mask = objectMask(m_error.test);
+        m_error.heatSamples = -1;
+        m_error.tested = tested;
+    }
+    if (restart) {
+        m_error.reference = Image();
+        m_error.accumulation = accumulation;
+        stats = {};
+        stats.scale = settings.scale;
+        stats.showingNoise = settings.showNoise;
+    }
+    // At most half the target per draw: the noise estimate needs a draw in each of the
+    // accumulator's halves before the end.
+    const int drawSamples = std::min(m_error.drawSamples, std::max(1, m_frames->refinement().target / 2));
+    if (!m_frames->refine(
+            *preview, *sampled, m_composite->framebufferId(), reference.rect, restart, drawSamples, error))
+        return false;
+    const FrameRenderer::Refinement& state = m_frames->refinement();
+    if (!restart && state.draws > 0)
+        m_error.drawSamples = ViewportRenderer::nextDrawSamples(
+            m_error.drawSamples, state.lastDrawMs, ViewportRenderer::kRefineDrawBudgetMs);
+    stats.samples = state.samples;
+    stats.target = state.target;
+    stats.seconds = state.seconds;
+
+    const bool current = heatShown && m_error.heatSamples == state.samples
+        && m_error.heatScale == settings.scale && m_error.heatNoise == settings.showNoise;
+    if (!state.showing) {
+        // A few samples are noise, not a measure: the heat map waits.
+        fill(heat.rect, kLoadingGrey);
+        return true;
+    }
+    if (current)
+        return true; // nothing new: the heat map in the composite stands
+    std::vector<float> values;
+    if (m_error.heatSamples != state.samples) {
+        std::optional<FrameAccumulator::Spread> spread = m_frames->refinementSpread();
+        if (!spread) {
+            fill(heat.rect, kLoadingGrey); // both halves hold a draw after the next one
+            return true;
+        }
+        stats.noise = relativeNoiseRmse(spread->mean, spread->variance, m_error.mask);
+        m_error.reference = std::move(spread->mean);
+        m_error.variance = std::move(spread->variance);
+        stats.error = errorStats(m_error.test, m_error.reference, m_error.mask);
+    }
+    values = settings.showNoise ? relativeNoise(m_error.reference, m_error.variance, m_error.mask)
+                                : relativeErrors(m_error.test, m_error.reference, m_error.mask);
+    if (!drawHeatMap(heat, values, scale, error))
+        return false;
+    m_error.heatSamples = state.samples;
+    m_error.heatScale = settings.scale;
+    m_error.heatNoise = settings.showNoise;
     return true;
 }
 
@@ -252,8 +488,45 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
 
     bool ok = true;
     std::set<std::pair<std::uint64_t, std::uint64_t>> shown;
+    const auto findKind = [&cells](CompareCellDraw::Kind kind) {
+        return std::find_if(
+            cells.begin(), cells.end(), [kind](const CompareCellDraw& c) { return c.kind == kind; });
+    };
+    const auto referenceCell = findKind(CompareCellDraw::Kind::Reference);
+    const auto heatCell = findKind(CompareCellDraw::Kind::Error);
+    m_stats.error.reset();
+    if (referenceCell != cells.end() && heatCell != cells.end()) {
+        const std::size_t r = std::size_t(referenceCell - cells.begin());
+        const std::size_t h = std::size_t(heatCell - cells.begin());
+        if (!referenceCell->assets.environment.isEmpty())
+            shown.insert(lightingKeyOf(*referenceCell));
+        CellKey key = keyOf(*referenceCell, scale);
+        const ErrorCompare& settings = referenceCell->project.compare.error;
+        const bool kept = m_drawn[r] && *m_drawn[r] == key && m_drawn[h] && m_frames->refinement().done()
+            && m_error.heatScale == settings.scale && m_error.heatNoise == settings.showNoise;
+        std::string cellProblem;
+        if (kept) {
+            m_stats.cellsKept += 2;
+            touchMaps(*referenceCell);
+        } else if (drawErrorView(*referenceCell, *heatCell, scale, m_drawn[h].has_value(), &cellProblem)) {
+            m_drawn[r] = std::move(key);
+            m_drawn[h] = m_drawn[r];
+            m_stats.cellsDrawn += 2;
+        } else {
+            fill(referenceCell->rect, kLoadingGrey);
+            fill(heatCell->rect, kLoadingGrey);
+            m_drawn[r].reset();
+            m_drawn[h].reset();
+            m_error.accumulation.reset();
+            *error = "CompareRenderer::paint: " + cellProblem;
+            ok = false;
+        }
+        m_stats.error = m_error.stats;
+    }
     for (std::size_t i = 0; i < cells.size(); ++i) {
         const CompareCellDraw& cell = cells[i];
+        if (cell.kind != CompareCellDraw::Kind::Shaded)
+            continue; // the error view's, drawn above
         if (!cell.assets.environment.isEmpty())
             shown.insert(lightingKeyOf(cell));
         CellKey key = keyOf(cell, scale);

@@ -14,6 +14,7 @@
 //
 // Every call needs the view's context current; destroy it with the context current.
 
+#include "core/ImageMetrics.h"
 #include "core/Project.h"
 #include "core/ProjectAssets.h"
 #include "render/FrameRenderer.h"
@@ -33,12 +34,35 @@ namespace facet {
 
 // One cell of a frame.
 struct CompareCellDraw {
+    // What the cell shows: its project shaded as the window previews (the split sum), or a part of
+    // the error view (core/CompareLayout.h ErrorCompare): the reference converging over frames,
+    // or the heat map of the real-time image's error against it. An error view is one Reference
+    // cell and one Error cell (and a Shaded cell of the real-time image) of one size.
+    enum class Kind { Shaded, Reference, Error };
+    Kind kind = Kind::Shaded;
     Project project; // what the cell shows (core/CompareLayout.h's variant of the document's project)
     // The mesh, the map images of project's materials and the environment (rotation and
     // intensity applied); an empty environment: still loading, the cell is filled with kLoadingGrey.
     ProjectAssets assets;
     FrameRect rect; // device pixels, origin bottom-left (GL's)
     std::optional<FrameRect> clip; // only this part of rect is written (within rect)
+};
+
+// The error view's state after a frame (CompareFrameStats::error).
+struct ErrorViewStats {
+    int samples = 0; // the reference's samples per pixel so far
+    int target = 0; // ErrorCompare::samples (1 for a debug view the samples do not change)
+    double seconds = 0.0; // of the reference's draws
+    bool done() const { return target > 0 && samples >= target; }
+    // The numbers of the heat map shown (core/ImageMetrics errorStats of the real-time image
+    // against the reference's mean over objectMask of the real-time image's coverage); unset
+    // until the reference is shown (FrameRenderer::kRefinementShownAfter samples).
+    std::optional<ImageErrorStats> error;
+    // The reference's own noise estimate over the same pixels (relativeNoiseRmse); unset until
+    // both accumulator halves hold a draw.
+    std::optional<double> noise;
+    bool showingNoise = false; // the heat map shows the noise, not the error
+    double scale = 0.0; // the heat map's top
 };
 
 struct CompareFrameStats {
@@ -59,6 +83,8 @@ struct CompareFrameStats {
     int texturesResident = 0; // material textures on the GPU after the last frame (the shared cache)
     int iblComputed = 0;
     int iblFromDisk = 0;
+    // Set while an error view is shown.
+    std::optional<ErrorViewStats> error;
 };
 
 class CompareRenderer {
@@ -101,6 +127,15 @@ public:
     int lightingToPrepare(const std::vector<CompareCellDraw>& cells) const;
 
     const CompareFrameStats& lastFrame() const { return m_stats; }
+    // Whether the error view shown is converging: paint again to add samples.
+    bool isRefining() const;
+    // The images the error view's numbers come from (tests compare them with core/ImageMetrics):
+    // the real-time image (linear, alpha the coverage), the reference's mean, the mask. Empty
+    // before the first error frame.
+    const Image& errorTestImage() const { return m_error.test; }
+    const Image& errorReferenceImage() const { return m_error.reference; }
+    const PixelMask& errorMask() const { return m_error.mask; }
+    const std::vector<float>& errorVariance() const { return m_error.variance; }
     FrameRenderer& frames() { return *m_frames; }
 
 private:
@@ -120,6 +155,15 @@ private:
     static CellKey keyOf(const CompareCellDraw& cell, double scale);
     static std::pair<std::uint64_t, std::uint64_t> lightingKeyOf(const CompareCellDraw& cell);
     bool drawCell(const CompareCellDraw& cell, double scale, std::string* error);
+    // The error view's Reference and Error cells (drawn every frame until the reference is done).
+    // `heatShown`: the composite holds the heat map last made (it need not be drawn again when
+    // nothing it shows changed).
+    bool drawErrorView(const CompareCellDraw& reference, const CompareCellDraw& heat, double scale,
+        bool heatShown, std::string* error);
+    bool drawHeatMap(
+        const CompareCellDraw& heat, const std::vector<float>& values, double scale, std::string* error);
+    std::optional<RenderScene> sceneOf(
+        const CompareCellDraw& cell, std::optional<IblMethod> method, std::string* error);
     std::shared_ptr<const IblTextures> lightingFor(const CompareCellDraw& cell, std::string* error);
     void fill(const FrameRect& rect, float grey);
     // Marks the cell's map textures used this frame without drawing it (a kept or waiting cell).
@@ -134,6 +178,22 @@ private:
     std::map<std::pair<std::uint64_t, std::uint64_t>, std::shared_ptr<const IblTextures>> m_lighting;
     CompareFrameStats m_stats;
     GLInfo m_glInfo;
+    // The error view between frames.
+    struct ErrorPane {
+        std::optional<CellKey> accumulation; // what the reference accumulates (no display settings)
+        std::optional<CellKey> tested; // what the real-time image shows (the same and its IBL quality)
+        std::optional<CellKey> shown; // what the reference cell shows (with them)
+        Image test; // the real-time image, linear, alpha the coverage
+        PixelMask mask;
+        Image reference; // the reference's mean when the heat map was made
+        std::vector<float> variance; // its variance per pixel (FrameAccumulator::Spread)
+        std::optional<Framebuffer> heat; // the heat map's upload target
+        int heatSamples = -1; // the samples, scale and mode the heat map was made with
+        double heatScale = 0.0;
+        bool heatNoise = false;
+        int drawSamples = 1;
+        ErrorViewStats stats;
+    } m_error;
 };
 
 } // namespace facet

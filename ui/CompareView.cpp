@@ -229,7 +229,7 @@ void CompareView::layoutOverlays()
     std::vector<Qt::Alignment> alignments;
     for (std::size_t i = 0; i < m_cells.size(); ++i) {
         const CompareCell& cell = m_cells[i];
-        QString text = cell.label;
+        QString text = mode == CompareMode::Error ? errorLabel(cell) : cell.label;
         const std::string& source = cell.project.environment.source;
         if (m_assets->isLoading(DocumentAssets::Kind::Environment, source))
             text = tr("Loading %1…").arg(environmentLabel(source));
@@ -317,6 +317,18 @@ std::vector<CompareCellDraw> CompareView::cellDraws()
         CompareCellDraw draw;
         draw.project = cell.project;
         draw.project.compare = CompareLayout {}; // not drawn: a layout edit must not redraw every cell
+        switch (cell.role) {
+        case CompareCell::Role::Reference:
+            draw.kind = CompareCellDraw::Kind::Reference;
+            draw.project.compare.error = cell.project.compare.error; // what the heat map shows
+            break;
+        case CompareCell::Role::Error:
+            draw.kind = CompareCellDraw::Kind::Error;
+            draw.project.compare.error = cell.project.compare.error;
+            break;
+        default:
+            break;
+        }
         draw.assets.mesh = shared.mesh;
         draw.assets.meshKey = shared.meshKey;
         // No mesh yet (the project's first mesh file is loading): the cell waits, as for its
@@ -371,6 +383,21 @@ std::vector<CompareCellDraw> CompareView::cellDraws()
         }
         draws.push_back(std::move(draw));
     }
+    if (m_document->project().compare.mode == CompareMode::Error && !draws.empty()) {
+        // One size for the error view's three images (a grid's cells may differ by a pixel): the
+        // heat map is a pixel-for-pixel function of the other two. Top-left corners stay.
+        int width = draws.front().rect.width;
+        int height = draws.front().rect.height;
+        for (const CompareCellDraw& draw : draws) {
+            width = std::min(width, draw.rect.width);
+            height = std::min(height, draw.rect.height);
+        }
+        for (CompareCellDraw& draw : draws) {
+            draw.rect.y += draw.rect.height - height;
+            draw.rect.width = width;
+            draw.rect.height = height;
+        }
+    }
     return draws;
 }
 
@@ -404,7 +431,68 @@ void CompareView::paintGL()
     m_lastError = ok ? QString() : QString::fromStdString(error);
     if (!announcing && m_lightingAnnounced > 0)
         Q_EMIT lightingReady(std::exchange(m_lightingAnnounced, 0), m_stats.iblMs);
+    if (m_stats.error) {
+        updateErrorLabels();
+        // The reference converges over frames: the next one as soon as the event loop is free
+        // (input stays responsive between draws of about ViewportRenderer::kRefineDrawBudgetMs).
+        if (ok && m_renderer->isRefining())
+            QTimer::singleShot(0, this, [this] {
+                if (isVisible())
+                    update();
+            });
+    }
     Q_EMIT frameRendered();
+}
+
+bool CompareView::isRefining() const
+{
+    return m_renderer && m_stats.error && m_renderer->isRefining();
+}
+
+QString CompareView::errorLabel(const CompareCell& cell) const
+{
+    if (!m_stats.error)
+        return cell.label;
+    const ErrorViewStats& error = *m_stats.error;
+    const auto percent = [](double value) { return QStringLiteral("%1%").arg(value * 100.0, 0, 'f', 2); };
+    if (cell.role == CompareCell::Role::Reference) {
+        QString text = tr("Reference · %1/%2 spp · %3 s")
+                           .arg(error.samples)
+                           .arg(error.target)
+                           .arg(error.seconds, 0, 'f', 1);
+        if (error.noise)
+            text += tr(" · noise %1").arg(percent(*error.noise));
+        if (error.done())
+            text += tr(" (done)");
+        return text;
+    }
+    if (cell.role != CompareCell::Role::Error)
+        return cell.label;
+    if (error.showingNoise)
+        return error.noise
+            ? tr("Reference noise · %1 over the object").arg(percent(*error.noise))
+            : tr("Reference noise · measured after %1 samples").arg(FrameRenderer::kRefinementShownAfter);
+    if (!error.error)
+        return tr("Relative error · measured after %1 samples").arg(FrameRenderer::kRefinementShownAfter);
+    if (std::isnan(error.error->relativeRmse))
+        return tr("Relative error · no object pixel to measure");
+    return tr("Relative error · RMSE %1 over the object (max %2)")
+        .arg(percent(error.error->relativeRmse), percent(error.error->maxRelativeError));
+}
+
+void CompareView::updateErrorLabels()
+{
+    for (std::size_t i = 0; i < m_cells.size() && int(i) < m_cellLabelCount && i < m_labels.size(); ++i) {
+        const CompareCell& cell = m_cells[i];
+        if (cell.role != CompareCell::Role::Reference && cell.role != CompareCell::Role::Error)
+            continue;
+        const QString text = errorLabel(cell);
+        if (m_labelTexts[int(i)] == text)
+            continue;
+        m_labelTexts[int(i)] = text;
+        m_labels[i]->setText(text);
+        m_labels[i]->adjustSize();
+    }
 }
 
 void CompareView::moveCamera(int cell, const std::function<Camera(const Camera&)>& move)

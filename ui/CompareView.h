@@ -14,6 +14,9 @@
 // and keeps the project's view settings (debug view, tone mapper, OCIO, exposure): each cell is a
 // Project variant. Only the cells whose inputs changed are drawn again (CompareRenderer).
 //
+// The error view (CompareMode::Error) draws its reference a few samples per frame and repaints
+// until ErrorCompare::samples are in, then stops; its labels show the numbers.
+//
 // Input: left drag orbits (a linked cell moves every linked cell: the shared camera; an unlinked
 // cell moves alone), the wheel dollies, a drag near the A/B divider moves it, a double click on a
 // grid cell promotes it to the single view, the context menu holds the per-cell edits
@@ -72,11 +75,17 @@ public:
     QStringList axisLabels() const;
 
     DocumentAssets* assets() const { return m_assets; }
+    // The renderer (null before the first show or without OpenGL 4.1): tests read the error
+    // view's images from it.
+    const CompareRenderer* renderer() const { return m_renderer.get(); }
     const CompareFrameStats& lastFrameStats() const { return m_stats; }
     std::uint64_t frameCount() const { return m_stats.frameNumber; }
     const QString& lastError() const { return m_lastError; }
     // Whether any cell waits for its environment or its lighting.
     bool isLoading() const;
+    // Whether the error view's reference is converging (the view draws frame after frame until
+    // it is done, then stops).
+    bool isRefining() const;
 
     // An interaction is under way: draw previews, refine kRefineDelayMs after the last call.
     void markInteractive();
@@ -122,6 +131,10 @@ private:
     std::vector<CompareCellDraw> cellDraws();
     void moveCamera(int cell, const std::function<Camera(const Camera&)>& move);
     void releaseRenderer();
+    // The error view's labels carry its numbers (CompareFrameStats::error): samples, time and
+    // noise on the reference, the relative RMSE on the heat map.
+    QString errorLabel(const CompareCell& cell) const;
+    void updateErrorLabels();
     // The environment source a drag from the Environment dock's list carries; empty for others.
     static QString droppedSource(const QMimeData* mime);
 

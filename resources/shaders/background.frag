@@ -15,13 +15,14 @@ uniform float uBlurRoughness;
 uniform mat3 uEnvironmentRotation;
 uniform float uEnvironmentIntensity;
 uniform float uMaxRadiance; // 65504 for RGBA16F targets (see surface.frag)
+uniform float uBackgroundAlpha; // 1, or 0 when the target's alpha is the object's coverage
 
 out vec4 fragColor;
 
 void main()
 {
     if (uBackgroundMode == 2) {
-        fragColor = vec4(min(uBackgroundColor, vec3(uMaxRadiance)), 1.0);
+        fragColor = vec4(min(uBackgroundColor, vec3(uMaxRadiance)), uBackgroundAlpha);
         return;
     }
     vec4 farPoint = uInverseViewProjection * vec4(vClip, 1.0, 1.0);
@@ -32,5 +33,5 @@ void main()
         radiance = textureLod(uPrefilteredMap, d, lodFromRoughness(uBlurRoughness, uPrefilteredLevels)).rgb;
     else
         radiance = textureLod(uEnvironmentMap, d, 0.0).rgb;
-    fragColor = vec4(min(radiance * uEnvironmentIntensity, vec3(uMaxRadiance)), 1.0);
+    fragColor = vec4(min(radiance * uEnvironmentIntensity, vec3(uMaxRadiance)), uBackgroundAlpha);
 }

@@ -67,7 +67,7 @@ bool CompareTestWindow::waitForSettledFrame(int timeoutMs)
         if (!rendered.wait(5000))
             continue;
         if (!m_view->isPreviewing() && !m_view->isLoading() && !m_view->lastFrameStats().reduced
-            && m_view->lastError().isEmpty())
+            && !m_view->isRefining() && m_view->lastError().isEmpty())
             return true;
         QTest::qWait(50);
     }

@@ -35,7 +35,7 @@ public:
     // Sets `project` through one undo step (and its camera) and waits for a settled frame.
     bool setProject(const Project& project);
     // True at once while the single view is shown; otherwise waits until the Compare view drew
-    // a frame with every cell in full and nothing loading.
+    // a frame with every cell in full, nothing loading and the error view's reference done.
     bool waitForSettledFrame(int timeoutMs = 60000);
 
     MainWindow* window() const { return m_window.get(); }
