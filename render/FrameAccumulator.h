@@ -48,6 +48,8 @@ public:
     // Samples per pixel so far, and draws.
     int samples() const { return m_samples; }
     int draws() const { return m_draws; }
+    // Samples per pixel in half `half` (0: A, which takes draws 0, 2, 4 ...; 1: B).
+    int halfSamples(int half) const { return m_halfSamples[half & 1]; }
 
     // The noise estimate of the mean with the relative RMSE's normalisation
     // (core/ImageMetrics relativeRmse): sqrt(sum var_p / sum |m_p|^2) over the pixels `mask`

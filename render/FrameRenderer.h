@@ -104,8 +104,9 @@ public:
         int samples = 0; // per pixel
         int draws = 0;
         double seconds = 0.0; // wall time of the draws, glFinish'ed
-        // FrameAccumulator::noise over `noiseMask` (Reference: a random estimate); unset for one draw
-        // and for Fis (deterministic: its error is a bias, not noise)
+        // FrameAccumulator::noise over `noiseMask` (Reference: a random estimate; an empty mask:
+        // the object, objectMask of the first draw's coverage, or every pixel when nothing is
+        // covered); unset for one draw and for Fis (deterministic: its error is a bias, not noise)
         std::optional<double> noise;
     };
     // renderImage() for any method: a Reference or Fis scene is drawn in draws of at most
@@ -134,17 +135,35 @@ public:
     // of `drawSamples` samples (at most what is left) and shows the held frame until
     // kRefinementShownAfter samples are in for Reference (an image of a few samples is noise) or
     // all of them for Fis (a partial run of its points covers part of the lobe), then the mean
-    // so far. Calls once done add nothing and show the mean again (an exposure edit).
+    // so far. Calls once done add nothing and show the mean again (an exposure edit). Draws come
+    // in pairs of one power-of-two size and one sub-pixel offset, each pair an aligned block of
+    // the run: a draw takes at most `drawSamples` (rounded down to a power of two), fewer while
+    // the run's alignment allows no more (Refinement::lastDrawSamples says what it took).
+    //
+    // Reference's noise is estimated over the object (FrameAccumulator::noise over objectMask of
+    // the first draw's coverage, RenderScene::coverageAlpha) after a pair of draws once
+    // min(kNoiseIntervalSeconds, four draws' time) of drawing has passed since the last estimate,
+    // and at the end; the refinement is done at its samples or once that estimate is at most
+    // kRefinementNoiseTarget, whichever comes first. Its two halves are independent randomised
+    // quasi-Monte Carlo runs (their own seeds), so the estimate is the mean's error, not a bound
+    // far above it (renderConverged's halves share one run: its estimate is conservative).
     struct Refinement {
         int samples = 0; // per pixel so far
         int target = 0; // per pixel when done (1 for a debug view the samples cannot change)
         int draws = 0;
         double seconds = 0.0; // of the draws, glFinish'ed
         double lastDrawMs = 0.0;
+        int lastDrawSamples = 0; // the last draw's samples (lastDrawMs is its time)
         bool showing = false; // the accumulation, not the held split-sum frame, is on screen
-        bool done() const { return target > 0 && samples >= target; }
+        // Reference: the last noise estimate (relative RMSE of the mean's noise over the object).
+        std::optional<double> noise;
+        double noiseSeconds = 0.0; // `seconds` when it was made
+        bool noiseReached() const { return noise && *noise <= kRefinementNoiseTarget; }
+        bool done() const { return target > 0 && (samples >= target || noiseReached()); }
     };
     static constexpr int kRefinementShownAfter = 16;
+    static constexpr double kRefinementNoiseTarget = 0.01;
+    static constexpr double kNoiseIntervalSeconds = 0.5;
     bool refine(const RenderScene& preview, const RenderScene& scene, unsigned framebuffer, const FrameRect& rect,
         bool restart, int drawSamples, std::string* error);
     const Refinement& refinement() const;

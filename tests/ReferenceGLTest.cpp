@@ -199,6 +199,95 @@ private Q_SLOTS:
         QVERIFY2(bad.empty(), bad.c_str());
     }
 
+    // The window's refinement (FrameRenderer::refine) estimates the reference's noise over the
+    // object (its first draw's coverage, not the background, which has none) and stops at its
+    // samples or at FrameRenderer::kRefinementNoiseTarget, whichever comes first.
+    void refinementStopsAtTheSamplesOrTheNoiseTarget_data()
+    {
+        QTest::addColumn<QString>("environment");
+        QTest::addColumn<double>("roughness");
+        QTest::addColumn<int>("samples");
+        QTest::addColumn<bool>("byNoise"); // done by the noise target, before the samples
+        QTest::addColumn<int>("drawSamples"); // what the budget asks for
+        QTest::newRow("white furnace, 4096 samples: the noise first")
+            << QStringLiteral("uniform:1") << 0.6 << 4096 << true << 16;
+        QTest::newRow("studio, 64 samples: the samples first")
+            << QStringLiteral("studio") << 0.3 << 64 << false << 64;
+        QTest::newRow("studio, 100 samples, draws of 8")
+            << QStringLiteral("studio") << 0.3 << 100 << false << 8;
+    }
+    void refinementStopsAtTheSamplesOrTheNoiseTarget()
+    {
+        QFETCH(QString, environment);
+        QFETCH(double, roughness);
+        QFETCH(int, samples);
+        QFETCH(bool, byNoise);
+        QFETCH(int, drawSamples);
+        Row row {"refinement"};
+        row.environment = "studio";
+        row.baseColor = glm::dvec3(1.0);
+        row.roughness = roughness;
+        row.coupling = DielectricCoupling::EnergyPreserving; // 1 everywhere in the white furnace
+        Project project = projectOf(row);
+        project.environment.source = environment.toStdString();
+        project.environment.samples = samples;
+        constexpr int kRefineSize = 32;
+        std::string error;
+        std::optional<FrameAccumulator::Spread> spread;
+        std::vector<int> draws;
+        const auto state = m_gpu.refine(project, "draft", kRefineSize, drawSamples, &error, &spread, &draws);
+        QVERIFY2(state, error.c_str());
+        // Draws in pairs of one power-of-two size, one to each half, each the next aligned block
+        // of its half's run (the last may be cut short by the target), at most the budget's size.
+        int base[2] = {0, 0};
+        for (std::size_t i = 0; i < draws.size(); ++i) {
+            const int k = draws[i];
+            const int half = int(i % 2);
+            const bool last = base[0] + base[1] + k >= state->samples;
+            QVERIFY2(k >= 1 && k <= drawSamples, qPrintable(QString::number(k)));
+            if (!last) {
+                QVERIFY2((k & (k - 1)) == 0, qPrintable(QStringLiteral("draw %1: %2 samples").arg(i).arg(k)));
+                QVERIFY2(base[half] % k == 0,
+                    qPrintable(QStringLiteral("draw %1 at %2 of its half: %3 samples").arg(i).arg(base[half]).arg(k)));
+                if (half == 1)
+                    QCOMPARE(k, draws[i - 1]);
+            }
+            base[half] += k;
+        }
+        QCOMPARE(base[0] + base[1], state->samples);
+        QVERIFY(base[1] > 0); // both halves drew: the noise is known
+        QVERIFY(state->done());
+        QVERIFY(state->noise && spread);
+        std::printf("  %s: %d of %d samples, noise %.4f\n", qPrintable(environment), state->samples, state->target,
+            *state->noise);
+        QCOMPARE(state->noiseReached(), byNoise);
+        QCOMPARE(state->samples < samples, byNoise);
+        if (byNoise)
+            QVERIFY(*state->noise <= FrameRenderer::kRefinementNoiseTarget);
+        else
+            QCOMPARE(state->samples, samples);
+        // Over the object: the sphere's noise, not diluted by the background's noiseless pixels.
+        const double sphere = relativeNoiseRmse(spread->mean, spread->variance, sphereMask(kRefineSize, kRefineSize));
+        const double everywhere = relativeNoiseRmse(spread->mean, spread->variance);
+        QVERIFY2(std::abs(*state->noise - sphere) < 0.15 * sphere,
+            qPrintable(QStringLiteral("%1 against the sphere's %2").arg(*state->noise).arg(sphere)));
+        // Honest: in the furnace, where the truth is 1, the estimate is the error it estimates
+        // (within 2x either way; before the draws were paired and aligned it was 10 to 20x the error).
+        if (environment == QLatin1String("uniform:1")) {
+            const double actual
+                = errorStats(spread->mean, Image(kRefineSize, kRefineSize, glm::vec4(1.0f)), sphereMask(kRefineSize, kRefineSize))
+                      .relativeRmse;
+            std::printf("  furnace: estimated noise %.4f, actual error %.4f\n", *state->noise, actual);
+            QVERIFY2(*state->noise < 2.0 * actual && *state->noise > 0.5 * actual,
+                qPrintable(QStringLiteral("estimate %1, error %2").arg(*state->noise).arg(actual)));
+        }
+        QVERIFY2(std::abs(*state->noise - sphere) < std::abs(*state->noise - everywhere),
+            qPrintable(QStringLiteral("%1: nearer every pixel's %2 than the sphere's %3")
+                           .arg(*state->noise)
+                           .arg(everywhere)
+                           .arg(sphere)));
+    }
+
 private:
     facet::test::ReferenceViewRenderer m_gpu;
 };

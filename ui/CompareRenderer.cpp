@@ -400,19 +400,19 @@ bool CompareRenderer::drawErrorView(const CompareCellDraw& reference, const Comp
         stats.scale = settings.scale;
         stats.showingNoise = settings.showNoise;
     }
-    // At most half the target per draw: the noise estimate needs a draw in each of the
-    // accumulator's halves before the end.
-    const int drawSamples = std::min(m_error.drawSamples, std::max(1, m_frames->refinement().target / 2));
+    // refine() draws in pairs, one to each accumulator half: the noise is known after two draws.
+    const int drawSamples = m_error.drawSamples;
     if (!m_frames->refine(
             *preview, *sampled, m_composite->framebufferId(), reference.rect, restart, drawSamples, error))
         return false;
     const FrameRenderer::Refinement& state = m_frames->refinement();
     if (!restart && state.draws > 0)
         m_error.drawSamples = ViewportRenderer::nextDrawSamples(
-            m_error.drawSamples, state.lastDrawMs, ViewportRenderer::kRefineDrawBudgetMs);
+            state.lastDrawSamples, state.lastDrawMs, ViewportRenderer::kRefineDrawBudgetMs);
     stats.samples = state.samples;
     stats.target = state.target;
     stats.seconds = state.seconds;
+    stats.complete = state.done();
 
     const bool current = heatShown && m_error.heatSamples == state.samples
         && m_error.heatScale == settings.scale && m_error.heatNoise == settings.showNoise;

@@ -53,7 +53,9 @@ struct ErrorViewStats {
     int samples = 0; // the reference's samples per pixel so far
     int target = 0; // ErrorCompare::samples (1 for a debug view the samples do not change)
     double seconds = 0.0; // of the reference's draws
-    bool done() const { return target > 0 && samples >= target; }
+    // At its samples, or its noise estimate at most FrameRenderer::kRefinementNoiseTarget.
+    bool complete = false;
+    bool done() const { return complete; }
     // The numbers of the heat map shown (core/ImageMetrics errorStats of the real-time image
     // against the reference's mean over objectMask of the real-time image's coverage); unset
     // until the reference is shown (FrameRenderer::kRefinementShownAfter samples).

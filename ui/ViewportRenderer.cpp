@@ -35,19 +35,29 @@ QString ViewportFrameStats::summary() const
     if (reduced)
         text += QCoreApplication::translate("ViewportRenderer", " (preview)");
     if (refineMethod != IblMethod::SplitSum && refinement.target > 0) {
-        // "1280×720 · Reference 256/1024 spp · 41.2 s (refining)"
+        // "1280×720 · Reference 256/1024 spp · noise 1.8% · 41.2 s (refining)"
         const QString method = refineMethod == IblMethod::Fis
             ? QCoreApplication::translate("ViewportRenderer", "FIS")
             : QCoreApplication::translate("ViewportRenderer", "Reference");
-        text = QCoreApplication::translate("ViewportRenderer", "%1×%2 · %3 %4/%5 spp · %6 s %7")
+        // Reference's noise estimate, when it has one: "· noise 1.8%".
+        const QString noise = refinement.noise
+            ? QCoreApplication::translate("ViewportRenderer", " · noise %1%").arg(*refinement.noise * 100.0, 0, 'f', 2)
+            : QString();
+        QString state = QCoreApplication::translate("ViewportRenderer", "(refining)");
+        if (refinement.noiseReached())
+            state = QCoreApplication::translate("ViewportRenderer", "(done: noise under %1%)")
+                        .arg(FrameRenderer::kRefinementNoiseTarget * 100.0, 0, 'g', 3);
+        else if (refinement.done())
+            state = QCoreApplication::translate("ViewportRenderer", "(done)");
+        text = QCoreApplication::translate("ViewportRenderer", "%1×%2 · %3 %4/%5 spp%6 · %7 s %8")
                    .arg(width)
                    .arg(height)
                    .arg(method)
                    .arg(refinement.samples)
                    .arg(refinement.target)
+                   .arg(noise)
                    .arg(refinement.seconds, 0, 'f', 1)
-                   .arg(refinement.done() ? QCoreApplication::translate("ViewportRenderer", "(done)")
-                                          : QCoreApplication::translate("ViewportRenderer", "(refining)"));
+                   .arg(state);
     }
     return text;
 }
@@ -184,7 +194,7 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
             return fail(problem);
         const FrameRenderer::Refinement& refinement = m_frames->refinement();
         if (!*refineRestart && refinement.draws > 0)
-            m_drawSamples = nextDrawSamples(m_drawSamples, refinement.lastDrawMs, kRefineDrawBudgetMs);
+            m_drawSamples = nextDrawSamples(refinement.lastDrawSamples, refinement.lastDrawMs, kRefineDrawBudgetMs);
         m_stats.refineMethod = sampled.sampling.method;
         m_stats.refinement = refinement;
     } else {

@@ -3,6 +3,7 @@
 #include <QTemporaryDir>
 
 #include "core/Project.h"
+#include "core/ImageMetrics.h"
 #include "core/ProjectAssets.h"
 #include "core/ReferenceView.h"
 #include "render/FrameRenderer.h"
@@ -68,11 +69,7 @@ std::optional<Image> ReferenceViewRenderer::render(const Project& project, const
         return std::nullopt;
     scene->pixelCentres = !jittered;
     // The noise estimate over the pixels the accuracy metric reads.
-    std::vector<std::uint8_t> mask(std::size_t(size) * std::size_t(size));
-    for (int y = 0; y < size; ++y)
-        for (int x = 0; x < size; ++x)
-            mask[std::size_t(y) * std::size_t(size) + std::size_t(x)]
-                = referenceview::isInteriorSpherePixel(x, y, size, size) ? 1 : 0;
+    const PixelMask mask = sphereMask(size, size);
     FrameRenderer::ConvergedStats stats;
     auto image = m_state->frames->renderConverged(
         *scene, size, size, FrameOutput::LinearRadiance, scene->sampling.samples, error, &stats, mask,
@@ -80,6 +77,34 @@ std::optional<Image> ReferenceViewRenderer::render(const Project& project, const
     if (noise)
         *noise = stats.noise;
     return image;
+}
+
+std::optional<FrameRenderer::Refinement> ReferenceViewRenderer::refine(const Project& project,
+    const std::string& preset, int size, int drawSamples, std::string* error,
+    std::optional<FrameAccumulator::Spread>* spread, std::vector<int>* draws)
+{
+    auto scene = prepareScene(project, preset, error);
+    if (!scene)
+        return std::nullopt;
+    RenderScene preview = *scene;
+    preview.sampling = {};
+    std::optional<Framebuffer> target = Framebuffer::create(size, size, FramebufferFormat::RGBA16F, error);
+    if (!target)
+        return std::nullopt;
+    FrameRenderer& frames = *m_state->frames;
+    const FrameRect rect {0, 0, size, size};
+    if (!frames.refine(preview, *scene, target->framebufferId(), rect, /*restart=*/true, drawSamples, error))
+        return std::nullopt;
+    // A bound on the calls: the target's draws, and one more.
+    for (int call = 0; !frames.refinement().done() && call <= scene->sampling.samples; ++call) {
+        if (!frames.refine(preview, *scene, target->framebufferId(), rect, false, drawSamples, error))
+            return std::nullopt;
+        if (draws)
+            draws->push_back(frames.refinement().lastDrawSamples);
+    }
+    if (spread)
+        *spread = frames.refinementSpread();
+    return frames.refinement();
 }
 
 std::optional<Image> ReferenceViewRenderer::renderAsCommand(

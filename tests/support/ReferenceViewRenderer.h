@@ -7,8 +7,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/Image.h"
+#include "render/FrameRenderer.h"
 #include "render/RenderScene.h"
 
 namespace facet {
@@ -40,6 +42,12 @@ public:
     // read back by FrameRenderer::renderImage.
     std::optional<Image> renderAsCommand(
         const Project& project, const std::string& preset, int size, std::string* error);
+    // The window's refinement of `project`'s reference view (FrameRenderer::refine, draws of
+    // `drawSamples`) into a size x size target, called until done: its state then, and (optional)
+    // the accumulation's mean and variance, and each draw's samples. nullopt with *error on any failure.
+    std::optional<FrameRenderer::Refinement> refine(const Project& project, const std::string& preset, int size,
+        int drawSamples, std::string* error, std::optional<FrameAccumulator::Spread>* spread = nullptr,
+        std::vector<int>* draws = nullptr);
 
 private:
     std::optional<RenderScene> prepareScene(const Project& project, const std::string& preset, std::string* error);
