@@ -325,8 +325,9 @@ std::optional<Project> readProject(const QJsonObject& object, const std::string&
         if (materials->isEmpty())
             messages.fail("materials", "needs at least one material");
         else if (materials->size() > Project::kMaxMaterials)
-            messages.fail("materials", std::to_string(materials->size()) + " materials, more than the "
-                + std::to_string(Project::kMaxMaterials) + " Facet reads");
+            messages.fail("materials",
+                std::to_string(materials->size()) + " materials, more than the "
+                    + std::to_string(Project::kMaxMaterials) + " Facet reads");
         else
             project.materials.assign(std::size_t(materials->size()), Material {});
         for (int i = 0; i < int(project.materials.size()) && !messages.failed(); ++i) {
@@ -342,8 +343,9 @@ std::optional<Project> readProject(const QJsonObject& object, const std::string&
     r.integer("currentMaterial", project.currentMaterial);
     if (const std::optional<QJsonArray> parts = r.array("parts")) {
         if (parts->size() > Project::kMaxParts)
-            messages.fail("parts", std::to_string(parts->size()) + " parts, more than the "
-                + std::to_string(Project::kMaxParts) + " Facet reads");
+            messages.fail("parts",
+                std::to_string(parts->size()) + " parts, more than the " + std::to_string(Project::kMaxParts)
+                    + " Facet reads");
         for (int i = 0; i < int(parts->size()) && !messages.failed(); ++i) {
             const std::string path = "parts[" + std::to_string(i) + "]";
             const QJsonValue value = parts->at(i);
@@ -393,7 +395,8 @@ std::optional<Project> readProject(const QJsonObject& object, const std::string&
     const bool single = !object.contains(QLatin1String("materials"));
     for (std::size_t i = 0; i < project.materials.size(); ++i)
         if (!project.materials[i].validate(&invalid))
-            return failed((single ? std::string("material.") : "materials[" + std::to_string(i) + "].") + invalid,
+            return failed(
+                (single ? std::string("material.") : "materials[" + std::to_string(i) + "].") + invalid,
                 problem);
     if (!project.validate(&invalid))
         return failed(invalid, problem);
@@ -448,9 +451,12 @@ std::optional<IblMethod> iblMethodFromString(std::string_view name)
 int defaultIblSamples(IblMethod method)
 {
     switch (method) {
-    case IblMethod::SplitSum: return 0;
-    case IblMethod::Fis: return kDefaultFisSamples;
-    case IblMethod::Reference: return 1024;
+    case IblMethod::SplitSum:
+        return 0;
+    case IblMethod::Fis:
+        return kDefaultFisSamples;
+    case IblMethod::Reference:
+        return 1024;
     }
     return 0;
 }
@@ -475,8 +481,8 @@ bool ViewSettings::validate(std::string* problem) const
         return fail("debugView: must not be empty (\"none\" shows the shaded image)", problem);
     // An unknown view would silently show the shaded image.
     if (!debugViewFromString(debugView))
-        return fail("debugView: unknown debug view \"" + debugView + "\" (expected one of: "
-                + debugViewNameList() + ")",
+        return fail("debugView: unknown debug view \"" + debugView
+                + "\" (expected one of: " + debugViewNameList() + ")",
             problem);
     if (mesh.empty())
         return fail("mesh: must not be empty (\"sphere\" is the built-in sphere)", problem);
@@ -502,12 +508,12 @@ bool EnvironmentSettings::validate(std::string* problem) const
         return fail("intensity: " + number(intensity) + " must be a finite number >= 0", problem);
     if (samples < 0 || samples > kMaxIblSamples)
         return fail("samples: " + std::to_string(samples) + " must be 0 (the method's default) to "
-                        + std::to_string(kMaxIblSamples),
-                    problem);
+                + std::to_string(kMaxIblSamples),
+            problem);
     if (samples != 0 && method == IblMethod::SplitSum)
         return fail("samples: " + std::to_string(samples)
-                        + " given with the split-sum method, which takes no samples (use \"fis\" or \"reference\")",
-                    problem);
+                + " given with the split-sum method, which takes no samples (use \"fis\" or \"reference\")",
+            problem);
     return true;
 }
 
@@ -566,7 +572,8 @@ const Material& Project::material() const
 
 int Project::materialOfPart(std::size_t part) const
 {
-    if (part < parts.size() && parts[part].material >= 0 && std::size_t(parts[part].material) < materials.size())
+    if (part < parts.size() && parts[part].material >= 0
+        && std::size_t(parts[part].material) < materials.size())
         return parts[part].material;
     return 0;
 }
@@ -696,6 +703,23 @@ std::optional<Material> materialFromJson(const QJsonObject& object, const std::s
         return failed((jsonPath.empty() ? "" : jsonPath + ".") + invalid, error);
     appendWarnings(warning, messages.warnings, {});
     return material;
+}
+
+Project withoutDisplaySettings(Project project)
+{
+    const ViewSettings defaults;
+    project.view.exposureEV = defaults.exposureEV;
+    project.view.toneMapper = defaults.toneMapper;
+    project.view.displayEncoding = defaults.displayEncoding;
+    project.view.gamma = defaults.gamma;
+    project.view.ocioDisplay.clear();
+    project.view.ocioView.clear();
+    project.compare = {};
+    for (Material& material : project.materials)
+        material.name.clear();
+    for (Light& light : project.lights)
+        light.name.clear();
+    return project;
 }
 
 } // namespace facet

@@ -188,6 +188,13 @@ struct Project {
     bool operator==(const Project&) const = default;
 };
 
+// What a converging render of `project` sums: the project with what only changes how the sum is
+// shown or named at defaults (the display transform: exposure, tone mapper, encoding, gamma, OCIO
+// display and view; the compare layout; the names of materials and lights). Two projects equal
+// by this need no new samples, only a new display of the ones summed (the window's refinement,
+// the error view's reference).
+Project withoutDisplaySettings(Project project);
+
 // Material <-> the JSON object of project files and material presets (docs/project-format.md,
 // "material"). includeTexturePaths false leaves texture paths out (presets by default).
 QJsonObject materialToJson(

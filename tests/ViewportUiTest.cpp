@@ -324,7 +324,8 @@ void ViewportUiTest::sampledMethodRefinesTheStillFrame()
     QCOMPARE(done.refinement.target, kSamples);
     QVERIFY(done.refinement.showing);
     QVERIFY2(done.refinement.draws >= 2, qPrintable(QString::number(done.refinement.draws)));
-    QVERIFY2(done.summary().contains(QStringLiteral("32/32 spp")) && done.summary().endsWith(QStringLiteral("(done)")),
+    QVERIFY2(done.summary().contains(QStringLiteral("32/32 spp"))
+            && done.summary().endsWith(QStringLiteral("(done)")),
         qPrintable(done.summary()));
     qInfo("%s: %d samples in %d draws, %.1f s of drawing, %.1f s in all", qPrintable(done.summary()),
         done.refinement.samples, done.refinement.draws, done.refinement.seconds, seconds);
@@ -334,11 +335,43 @@ void ViewportUiTest::sampledMethodRefinesTheStillFrame()
     const QRect area = refined.rect();
     const double before = summarize(splitSum.convertToFormat(QImage::Format_RGB32), area).meanLuma;
     const double after = summarize(refined.convertToFormat(QImage::Format_RGB32), area).meanLuma;
-    QVERIFY2(std::abs(after - before) < 0.15 * before, qPrintable(QStringLiteral("%1 vs %2").arg(after).arg(before)));
+    QVERIFY2(std::abs(after - before) < 0.15 * before,
+        qPrintable(QStringLiteral("%1 vs %2").arg(after).arg(before)));
     // Done: idle.
     const std::uint64_t frames = m_viewport->frameCount();
     QTest::qWait(1000);
     QCOMPARE(m_viewport->frameCount(), frames);
+
+    // A display-only edit keeps the samples: the frames after an exposure change, a slider drag
+    // included, show the same accumulation anew (brighter), with no preview and no restart.
+    {
+        std::vector<int> shownSamples;
+        std::vector<bool> reduced;
+        const auto watch = connect(m_viewport, &ViewportWidget::frameRendered, this, [&] {
+            shownSamples.push_back(m_viewport->lastFrameStats().refinement.samples);
+            reduced.push_back(m_viewport->lastFrameStats().reduced);
+        });
+        ViewSettings view = document->project().view;
+        view.exposureEV += 1.0;
+        document->beginInteractiveEdit();
+        document->setView(view, QStringLiteral("Exposure"));
+        document->endInteractiveEdit();
+        QTRY_VERIFY_WITH_TIMEOUT(!shownSamples.empty(), 10000);
+        QTest::qWait(300);
+        disconnect(watch);
+        QVERIFY2(std::all_of(shownSamples.begin(), shownSamples.end(), [](int n) { return n == kSamples; }),
+            qPrintable(QStringLiteral("%1 frames, the first with %2 samples")
+                           .arg(shownSamples.size())
+                           .arg(shownSamples.front())));
+        QVERIFY(std::none_of(reduced.begin(), reduced.end(), [](bool r) { return r; }));
+        QVERIFY(m_viewport->lastFrameStats().refinement.done());
+        const double brighter
+            = summarize(m_viewport->grabFramebuffer().convertToFormat(QImage::Format_RGB32), area).meanLuma;
+        QVERIFY2(brighter > after * 1.1, qPrintable(QStringLiteral("%1 vs %2").arg(brighter).arg(after)));
+        document->undoStack()->undo(); // the exposure
+        QVERIFY(waitForFrame(m_viewport));
+        QCOMPARE(m_viewport->lastFrameStats().refinement.samples, kSamples);
+    }
 
     // An edit restarts it: the first frame after it is the split sum's again (no samples), then
     // the samples grow draw by draw to the target.
@@ -604,10 +637,15 @@ void ViewportUiTest::unusableEnvironmentIsNamedNeverReady_data()
     QTest::addColumn<QString>("source"); // {dir}: a temporary folder
     QTest::addColumn<QString>("file"); // the name the messages must use
     QTest::addColumn<QString>("problem"); // how the window says what is wrong
-    QTest::newRow("missing file") << "{dir}/night.exr" << "night.exr" << "night.exr is missing";
-    QTest::newRow("not an image") << "{dir}/broken.exr" << "broken.exr" << "broken.exr";
-    QTest::newRow("library this computer lacks")
-        << "library:nobody/night.exr" << "night.exr" << "night.exr comes from the library “nobody”";
+    QTest::newRow("missing file") << "{dir}/night.exr"
+                                  << "night.exr"
+                                  << "night.exr is missing";
+    QTest::newRow("not an image") << "{dir}/broken.exr"
+                                  << "broken.exr"
+                                  << "broken.exr";
+    QTest::newRow("library this computer lacks") << "library:nobody/night.exr"
+                                                 << "night.exr"
+                                                 << "night.exr comes from the library “nobody”";
 }
 
 // An environment that cannot be used is named, with the reason, in the status bar and the
@@ -640,7 +678,8 @@ void ViewportUiTest::unusableEnvironmentIsNamedNeverReady()
         QVERIFY2(!text.contains(QStringLiteral("ready")), qPrintable(text));
         QVERIFY2(!text.contains(QStringLiteral("Environment::")), qPrintable(text));
     }
-    QVERIFY2(dockStatus->text().contains(QStringLiteral("Showing %1 instead").arg(shown)), qPrintable(dockStatus->text()));
+    QVERIFY2(dockStatus->text().contains(QStringLiteral("Showing %1 instead").arg(shown)),
+        qPrintable(dockStatus->text()));
     QCOMPARE(scene->environmentName(), shown);
     QVERIFY(scene->environmentName() != file);
 
@@ -684,4 +723,3 @@ void ViewportUiTest::projectWithMissingEnvironmentAtStartUp()
 
 QTEST_MAIN(ViewportUiTest)
 #include "ViewportUiTest.moc"
-

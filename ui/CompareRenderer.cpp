@@ -231,25 +231,6 @@ bool CompareRenderer::drawCell(const CompareCellDraw& cell, double scale, std::s
 
 namespace {
 
-// What the error view's images are made of: the cell's inputs without the display transform,
-// the compare layout and the names of materials and lights (an exposure, a heat-map scale or a rename changes
-// what is shown or said, not what is summed).
-void dropDisplaySettings(Project& project)
-{
-    for (Material& material : project.materials)
-        material.name.clear();
-    for (Light& light : project.lights)
-        light.name.clear();
-    const ViewSettings defaults;
-    project.view.exposureEV = defaults.exposureEV;
-    project.view.toneMapper = defaults.toneMapper;
-    project.view.displayEncoding = defaults.displayEncoding;
-    project.view.gamma = defaults.gamma;
-    project.view.ocioDisplay.clear();
-    project.view.ocioView.clear();
-    project.compare = {};
-}
-
 // The heat map's legend, along the bottom of the cell: the colour ramp from 0 to `scale`, its
 // ends and middle in percent, and what is off the scale.
 void paintLegend(QImage& image, double scale, bool noise)
@@ -294,7 +275,7 @@ bool CompareRenderer::isRefining() const
 }
 
 bool CompareRenderer::drawHeatMap(
-    const CompareCellDraw& heat, const std::vector<float>& values, double scale, std::string* error)
+    const CompareCellDraw& heat, const std::vector<float>& values, std::string* error)
 {
     const FrameRect& rect = heat.rect;
     const ErrorCompare& settings = heat.project.compare.error;
@@ -317,7 +298,6 @@ bool CompareRenderer::drawHeatMap(
             }
         }
     paintLegend(image, settings.scale, settings.showNoise);
-    (void)scale;
     if (!m_error.heat || m_error.heat->width() != rect.width || m_error.heat->height() != rect.height) {
         m_error.heat.reset();
         m_error.heat = Framebuffer::create(rect.width, rect.height, FramebufferFormat::RGBA16F, error);
@@ -361,14 +341,20 @@ bool CompareRenderer::drawErrorView(const CompareCellDraw& reference, const Comp
     // The real-time image depends on all of these; the reference on all but the split sum's
     // precompute quality.
     CellKey tested = keyOf(reference, 1.0);
-    dropDisplaySettings(tested.project);
+    tested.project = withoutDisplaySettings(std::move(tested.project));
     CellKey accumulation = tested;
     accumulation.project.environment.quality = {};
     // While the user drags, each frame starts again (what is summed moves); the reference then
     // shows its split-sum frame, as the single view does.
     const bool restart = !m_error.accumulation || *m_error.accumulation != accumulation || scale < 1.0
         || m_error.test.width() != width || m_error.test.height() != height;
-    const bool retest = restart || !m_error.tested || *m_error.tested != tested;
+    // The real-time image is measured on still frames only: a drag's frames show the split sum in
+    // both cells and the heat map waits (a full-size float render and read-back a frame would
+    // slow the drag).
+    const bool previewing = scale < 1.0;
+    const bool retest = !previewing && (restart || !m_error.tested || *m_error.tested != tested);
+    if (previewing)
+        m_error.tested.reset();
 
     const std::optional<RenderScene> preview = sceneOf(reference, IblMethod::SplitSum, error);
     std::optional<RenderScene> sampled
@@ -437,7 +423,7 @@ bool CompareRenderer::drawErrorView(const CompareCellDraw& reference, const Comp
     }
     values = settings.showNoise ? relativeNoise(m_error.reference, m_error.variance, m_error.mask)
                                 : relativeErrors(m_error.test, m_error.reference, m_error.mask);
-    if (!drawHeatMap(heat, values, scale, error))
+    if (!drawHeatMap(heat, values, error))
         return false;
     m_error.heatSamples = state.samples;
     m_error.heatScale = settings.scale;

@@ -162,8 +162,7 @@ private:
     // nothing it shows changed).
     bool drawErrorView(const CompareCellDraw& reference, const CompareCellDraw& heat, double scale,
         bool heatShown, std::string* error);
-    bool drawHeatMap(
-        const CompareCellDraw& heat, const std::vector<float>& values, double scale, std::string* error);
+    bool drawHeatMap(const CompareCellDraw& heat, const std::vector<float>& values, std::string* error);
     std::optional<RenderScene> sceneOf(
         const CompareCellDraw& cell, std::optional<IblMethod> method, std::string* error);
     std::shared_ptr<const IblTextures> lightingFor(const CompareCellDraw& cell, std::string* error);

@@ -8,6 +8,7 @@
 #include "render/SceneFromProject.h"
 #include "render/TextureCache.h"
 #include "render/TextureFiltering.h"
+#include "ui/Document.h"
 #include "ui/SceneController.h"
 
 #include <QCoreApplication>
@@ -41,7 +42,8 @@ QString ViewportFrameStats::summary() const
             : QCoreApplication::translate("ViewportRenderer", "Reference");
         // Reference's noise estimate, when it has one: "· noise 1.8%".
         const QString noise = refinement.noise
-            ? QCoreApplication::translate("ViewportRenderer", " · noise %1%").arg(*refinement.noise * 100.0, 0, 'f', 2)
+            ? QCoreApplication::translate("ViewportRenderer", " · noise %1%")
+                  .arg(*refinement.noise * 100.0, 0, 'f', 2)
             : QString();
         QString state = QCoreApplication::translate("ViewportRenderer", "(refining)");
         if (refinement.noiseReached())
@@ -93,9 +95,39 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
     return draw(scene, targetFramebuffer, width, height, scale, nullptr, error);
 }
 
-bool ViewportRenderer::refine(
-    const SceneController& scene, unsigned targetFramebuffer, int width, int height, bool restart, std::string* error)
+ViewportRenderer::RefineKey ViewportRenderer::refineKeyOf(const SceneController& scene, int width, int height)
 {
+    RefineKey key;
+    key.project = withoutDisplaySettings(scene.document()->project());
+    key.method = scene.refinementMethod();
+    const ProjectAssets& assets = scene.assets();
+    if (!assets.environment.isEmpty())
+        key.environment = assets.environment.contentHash();
+    key.environmentRotation = assets.environment.rotationDegrees();
+    key.environmentIntensity = assets.environment.intensity();
+    key.mesh = assets.mesh.get();
+    for (const auto& material : assets.maps)
+        for (const LoadedMapImage& map : material)
+            key.maps.push_back(map.image.get());
+    key.objectTurntable = scene.objectTurntableDegrees();
+    key.environmentTurntable = scene.environmentTurntableDegrees();
+    key.width = width;
+    key.height = height;
+    return key;
+}
+
+bool ViewportRenderer::refinesSameSamples(const SceneController& scene, int width, int height) const
+{
+    return m_stats.refineMethod != IblMethod::SplitSum && m_refineKey
+        && *m_refineKey == refineKeyOf(scene, width, height);
+}
+
+bool ViewportRenderer::refine(const SceneController& scene, unsigned targetFramebuffer, int width, int height,
+    bool restart, std::string* error)
+{
+    RefineKey key = refineKeyOf(scene, width, height);
+    restart = restart || !m_refineKey || *m_refineKey != key;
+    m_refineKey = std::move(key);
     return draw(scene, targetFramebuffer, width, height, 1.0, &restart, error);
 }
 
@@ -189,12 +221,13 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
             return fail(problem);
         if (*refineRestart)
             m_drawSamples = 1;
-        if (!m_frames->refine(frame, sampled, targetFramebuffer, FrameRect {0, 0, width, height}, *refineRestart,
-                m_drawSamples, &problem))
+        if (!m_frames->refine(frame, sampled, targetFramebuffer, FrameRect {0, 0, width, height},
+                *refineRestart, m_drawSamples, &problem))
             return fail(problem);
         const FrameRenderer::Refinement& refinement = m_frames->refinement();
         if (!*refineRestart && refinement.draws > 0)
-            m_drawSamples = nextDrawSamples(refinement.lastDrawSamples, refinement.lastDrawMs, kRefineDrawBudgetMs);
+            m_drawSamples
+                = nextDrawSamples(refinement.lastDrawSamples, refinement.lastDrawMs, kRefineDrawBudgetMs);
         m_stats.refineMethod = sampled.sampling.method;
         m_stats.refinement = refinement;
     } else {
@@ -268,7 +301,8 @@ std::vector<std::string> ViewportRenderer::takeReleasedMapsNeeded()
     return std::exchange(m_releasedMapsNeeded, {});
 }
 
-bool ViewportRenderer::textureReady(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace) const
+bool ViewportRenderer::textureReady(
+    const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace) const
 {
     return m_frames->textureCache().isReady(path, timestamp, colorSpace);
 }

@@ -1,10 +1,10 @@
 #pragma once
 // The GPU side of the viewport (not a widget): the view's state around a render::FrameRenderer
 // (which owns the IBL results, the surface renderer and the targets in the viewport's GL
-// context), drawing the SceneController's snapshot into the widget's framebuffer. It runs the IBL precompute only when SceneController::iblKey() changed
-// (a new environment image or quality; the disk cache makes a second start fast), fetches the
-// split-sum DFG table of the material's visibility term when the frame needs one it has not
-// made yet (IblPrecompute caches them per variant), and otherwise only renders. At a scale
+// context), drawing the SceneController's snapshot into the widget's framebuffer. It runs the IBL precompute
+// only when SceneController::iblKey() changed (a new environment image or quality; the disk cache makes a
+// second start fast), fetches the split-sum DFG table of the material's visibility term when the frame needs
+// one it has not made yet (IblPrecompute caches them per variant), and otherwise only renders. At a scale
 // below 1 it renders and tone-maps a smaller image and stretches it onto the widget (the
 // interactive preview; llvmpipe's cost is per pixel).
 //
@@ -19,9 +19,10 @@
 // Every call needs the viewport's context current; destroy it with the context current.
 
 #include "core/Image.h"
+#include "core/Project.h"
+#include "render/FrameRenderer.h"
 #include "render/GLInfo.h"
 #include "render/IblPrecompute.h"
-#include "render/FrameRenderer.h"
 #include "render/RenderStats.h"
 
 #include <QString>
@@ -92,8 +93,15 @@ public:
     // accumulation; each later call adds one draw of samples sized to kRefineDrawBudgetMs and
     // shows the mean once it has FrameRenderer::kRefinementShownAfter samples.
     // lastFrame().refinement says where it stands; once done() a call only shows it again.
+    // It also starts again, whatever `restart` says, when what it sums changed since the last
+    // call (the refinement key: the project withoutDisplaySettings, the assets, the turntable,
+    // the size); a change of how it is shown only (exposure, tone mapper, OCIO, names) keeps
+    // the samples and shows them anew.
     bool refine(const SceneController& scene, unsigned targetFramebuffer, int width, int height, bool restart,
         std::string* error);
+    // Whether the refinement shown sums what `scene` at width x height would: a change since was
+    // display-only, and refine() without restarting shows it (the widget then skips previews).
+    bool refinesSameSamples(const SceneController& scene, int width, int height) const;
     // What one refinement draw may take, so input events run between draws (llvmpipe: a
     // reference sample over a 720p view costs about 0.2 s, so draws there are 1 sample).
     static constexpr double kRefineDrawBudgetMs = 100.0;
@@ -141,6 +149,23 @@ private:
     GLInfo m_glInfo;
     std::vector<std::string> m_releasedMapsNeeded;
     int m_drawSamples = 1; // of the next refinement draw
+    // What the refinement sums (refine()'s key).
+    struct RefineKey {
+        Project project;
+        IblMethod method = IblMethod::SplitSum;
+        std::uint64_t environment = 0; // content hash
+        double environmentRotation = 0.0;
+        double environmentIntensity = 1.0;
+        const void* mesh = nullptr;
+        std::vector<const void*> maps;
+        double objectTurntable = 0.0;
+        double environmentTurntable = 0.0;
+        int width = 0;
+        int height = 0;
+        bool operator==(const RefineKey&) const = default;
+    };
+    static RefineKey refineKeyOf(const SceneController& scene, int width, int height);
+    std::optional<RefineKey> m_refineKey;
 };
 
 } // namespace facet

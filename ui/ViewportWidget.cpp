@@ -63,6 +63,17 @@ void ViewportWidget::setSceneController(SceneController* scene)
 
 void ViewportWidget::onSceneChanged(bool interactive)
 {
+    // A change of how the refined frame is shown only (exposure, tone mapper, OCIO, a name)
+    // keeps its samples: the next refine() shows them anew, with no preview even while a slider
+    // drags. Any other change previews while interactive and restarts the refinement; the
+    // renderer also restarts by itself when what it sums differs (ViewportRenderer::refine).
+    if (m_renderer && m_scene && !m_previewing) {
+        const qreal ratio = devicePixelRatioF();
+        if (m_renderer->refinesSameSamples(*m_scene, int(width() * ratio), int(height() * ratio))) {
+            requestFrame();
+            return;
+        }
+    }
     m_restartRefinement = true;
     if (interactive)
         markInteractive();
@@ -136,11 +147,11 @@ void ViewportWidget::paintGL()
         && m_scene->pendingMapLoads() == 0 && !m_renderer->hasPendingUploads();
     bool ok = false;
     if (refining) {
-        ok = m_renderer->refine(*m_scene, defaultFramebufferObject(), int(width() * ratio), int(height() * ratio),
-            std::exchange(m_restartRefinement, false), &error);
+        ok = m_renderer->refine(*m_scene, defaultFramebufferObject(), int(width() * ratio),
+            int(height() * ratio), std::exchange(m_restartRefinement, false), &error);
     } else {
-        ok = m_renderer->paint(*m_scene, defaultFramebufferObject(), int(width() * ratio), int(height() * ratio),
-            m_previewing ? kPreviewScale : 1.0, &error);
+        ok = m_renderer->paint(*m_scene, defaultFramebufferObject(), int(width() * ratio),
+            int(height() * ratio), m_previewing ? kPreviewScale : 1.0, &error);
         m_restartRefinement = true;
     }
     m_stats = m_renderer->lastFrame();
@@ -156,9 +167,10 @@ void ViewportWidget::paintGL()
         QTimer::singleShot(0, m_scene, [scene = m_scene, reload] { scene->reloadMaps(reload); });
     } else if (ok && !m_stats.loadingMaps && m_stats.mapsHeldBack == 0 && m_stats.textureProblem.empty()) {
         ViewportRenderer* renderer = m_renderer.get();
-        m_scene->releaseMapPixels([renderer](const std::string& path, std::int64_t timestamp, ColorEncoding space) {
-            return renderer->textureReady(path, timestamp, space);
-        });
+        m_scene->releaseMapPixels(
+            [renderer](const std::string& path, std::int64_t timestamp, ColorEncoding space) {
+                return renderer->textureReady(path, timestamp, space);
+            });
     }
     if (precompute) {
         m_announcedIbl = false;
