@@ -28,10 +28,15 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 // per draw, each half was a different average over the pixel, and a mesh's inner edges (an ear in
 // front of a head) read as noise that no number of samples takes away (20% at 256 samples on
 // Suzanne in the window, against 6% for `facet render`'s four draws).
+// Whether the scene's debug view shows light the samples integrate (not base colour, normals, ...).
+bool showsIntegratedLight(const RenderScene& scene)
+{
+    return debugViewShowsIntegratedLight(debugViewFromString(scene.view.debugView).value_or(DebugView::None));
+}
+
 glm::dvec2 jitterOf(const RenderScene& scene, int index)
 {
-    if (scene.pixelCentres
-        || !debugViewShowsIntegratedLight(debugViewFromString(scene.view.debugView).value_or(DebugView::None)))
+    if (scene.pixelCentres || !showsIntegratedLight(scene))
         return glm::dvec2(0.0);
     return sampling::halton23(std::uint32_t(index / 2) + 1u) - glm::dvec2(0.5);
 }
@@ -203,7 +208,7 @@ std::optional<Image> FrameRenderer::renderConverged(const RenderScene& scene, in
     draw.view.msaaSamples = 1; // a draw's pixel is its centre's samples: no resolve mixes them
     samples = std::max(samples, 1);
     // A view of a value the samples do not change (base colour, normals, ...) is one draw.
-    if (!debugViewShowsIntegratedLight(debugViewFromString(scene.view.debugView).value_or(DebugView::None)))
+    if (!showsIntegratedLight(scene))
         samples = 1;
     draw.sampling.runLength = samples;
     // The noise is estimated over the object when no mask is given: the first draw's coverage.
@@ -295,7 +300,7 @@ bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene,
         // The split-sum frame first: shown at once, and until the accumulation is worth showing.
         view.state = {};
         view.state.target = std::max(scene.sampling.samples, 1);
-        if (!debugViewShowsIntegratedLight(debugViewFromString(scene.view.debugView).value_or(DebugView::None)))
+        if (!showsIntegratedLight(scene))
             view.state.target = 1;
         if (!view.accumulator.reset(width, height, error) || !m_renderer->render(preview, *view.held, error))
             return false;

@@ -373,6 +373,19 @@ void Renderer::setFrameUniforms(const ShaderProgram& program, const SurfaceVaria
     setMat3(program, "uEnvironmentRotation", environmentRotation(env.rotationDegrees));
     program.setFloat("uEnvironmentIntensity", float(env.intensity));
     const bool fis = hasFeature(key.features, SurfaceFeature::IblFis);
+    // The environment cube with its mips: fis reads it, and so do the split sum's sharp lobes
+    // (IblSampling::sharpLobeSamples), which read it only (no source equirect: as accurate on the
+    // CC0 maps, and a split-sum scene never needs the source's memory).
+    glActiveTexture(GL_TEXTURE0 + kEnvironmentUnit);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, env.environmentCubemap);
+    program.setInt("uEnvironmentMap", kEnvironmentUnit);
+    program.setFloat("uEnvironmentSize", float(std::max(env.environmentSize, 1)));
+    program.setFloat("uEnvironmentMaxLod", float(std::max(env.environmentMipLevels - 1, 0)));
+    program.setInt("uEnvironmentSourceBound", env.source.radiance != 0 ? 1 : 0);
+    // Sharp lobes are those below the prefiltered level 1: none without a level 1 (a one-level map
+    // made by hand) or without the cube they read.
+    const bool sharpLobes = env.environmentCubemap != 0 && env.prefilteredLevels >= 2;
+    program.setInt("uSharpLobeSamples", sharpLobes ? std::max(scene.sampling.sharpLobeSamples, 0) : 0);
     if (fis || hasFeature(key.features, SurfaceFeature::IblReference)) {
         const std::pair<int, unsigned> sources[] = {{kSourceRadianceUnit, env.source.radiance},
             {kSourceConditionalUnit, env.source.conditionalCdf}, {kSourceMarginalUnit, env.source.marginalCdf},
@@ -388,14 +401,8 @@ void Renderer::setFrameUniforms(const ShaderProgram& program, const SurfaceVaria
         program.setInt("uIblSamples", std::max(scene.sampling.samples, 1));
         program.setInt("uIblSeed", int(scene.sampling.seed)); // the shader reads the bits as uint
     }
-    if (fis) {
-        glActiveTexture(GL_TEXTURE0 + kEnvironmentUnit);
-        glBindTexture(GL_TEXTURE_CUBE_MAP, env.environmentCubemap);
-        program.setInt("uEnvironmentMap", kEnvironmentUnit);
-        program.setFloat("uEnvironmentSize", float(std::max(env.environmentSize, 1)));
-        program.setFloat("uEnvironmentMaxLod", float(std::max(env.environmentMipLevels - 1, 0)));
+    if (fis)
         program.setInt("uIblSampleTotal", std::max(scene.sampling.total(), 1));
-    }
 
     // Punctual lights (KHR_lights_punctual units), enabled ones, at most kMaxPunctualLights.
     if (hasFeature(key.features, SurfaceFeature::HasPunctualLights)) {

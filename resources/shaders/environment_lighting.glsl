@@ -1,6 +1,7 @@
 // Image-based lighting. environmentLobes() dispatches on the IBL method's variant bit
 // (render/ShaderVariant.h): IBL_REFERENCE integrates by Monte Carlo (ibl_reference.glsl), IBL_FIS
-// by filtered importance sampling of the pixel's lobe (ibl_fis.glsl); otherwise the split sum [Karis 2013], from the textures of render/IblTextures
+// by filtered importance sampling of the pixel's lobe (ibl_fis.glsl); otherwise the split sum [Karis 2013] (its lobes
+// sharper than the prefiltered level 1 integrated by a few fis samples, below), from the textures of render/IblTextures
 // (prefiltered specular cubemap, irradiance cubemap storing E or 9 premultiplied SH
 // coefficients, DFG LUT). Twin: core/SplitSum.h splitSumRadiance(); docs/rendering.md gives the
 // formulas. Lookups turn world directions into the environment image's frame
@@ -82,6 +83,34 @@ vec3 environmentDiffuseAlbedo(MaterialInfo m, float NoV, float roughness)
     return baseColor * weight * (1.0 - metallic);
 }
 
+// A normal-mapped (or interpolated) normal can face away from the viewer, n.v < 0, where the
+// sampled methods' integrand is zero (evaluateBrdf: nothing is seen from below the surface): black
+// specks along a normal-mapped mesh's silhouettes. They shade with n bent towards v until n.v =
+// 1e-3 instead (the usual clamp of real-time renderers; the split sum clamps n.v itself). The
+// analytic sphere of the reference view always has n.v > 0, so the ground truth's rule holds there.
+vec3 facingNormal(vec3 n, vec3 v)
+{
+    const float minNoV = 1e-3;
+    float NoV = dot(n, v);
+    return NoV >= minNoV ? n : normalize(n + v * (minNoV - NoV));
+}
+
+// The methods' shared chunks, outside the #ifdefs: includes are expanded once, before the
+// preprocessor runs (render/ShaderProgram), so a chunk first included inside a disabled block
+// would be missing from the enabled one. Unused functions and samplers cost nothing.
+#include "common_sampling.glsl"
+#include "environment_sampling.glsl"
+#include "ibl_filtering.glsl"
+
+uniform int uIblSampleBase; // the sampled methods' draw: samples [base, base + samples)
+uniform int uIblSamples;
+uniform samplerCube uEnvironmentMap; // the environment cube with its full box-filtered mip chain
+uniform float uEnvironmentSize;      // its level-0 face size
+uniform float uEnvironmentMaxLod;    // its last level
+uniform int uEnvironmentSourceBound; // 0: no source equirect bound (fis reads the cube's levels only)
+uniform int uSharpLobeSamples;       // the split sum's sharp lobes: fis samples (0: none)
+#include "ibl_fis.glsl"
+
 // The split-sum lobes for the view direction v (unit, towards the viewer) at normal n:
 //   specular = prefiltered(R, lod(r)) * (F0 scale + bias) * M(F0)             (per lobe F0)
 //   diffuse  = E(n) / pi * environmentDiffuseAlbedo
@@ -105,33 +134,22 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     vec3 specularMetal = (baseColor * dfg.r + dfg.g) * multiScatterFactor(baseColor, NoV, roughness);
     lobes.specular = radiance * mix(specularDielectric, specularMetal, metallic);
 #endif
+    // Lobes sharper than level 1: the prefiltered map's level 0 is the environment resampled into
+    // a small cube, and a mirror-like lobe read there is blurred and shifted by that resampling
+    // (20% at roughness 0.05 on forest). Those pixels integrate their own lobe instead, by a few
+    // filtered importance samples of the environment cube (the fis estimator), faded in over lod
+    // 1 to 0.5 so that a roughness map shows no seam. render/RenderScene.h kSplitSumSharpLobeSamples.
+    float sharp = uSharpLobeSamples > 0 ? 1.0 - smoothstep(0.5, 1.0, lodFromRoughness(roughness, uPrefilteredLevels)) : 0.0;
+    if (sharp > 0.0) {
+        vec3 integrated = fisSpecular(m, facingNormal(n, v), v, 0, uSharpLobeSamples, uint(uSharpLobeSamples));
+        lobes.specular = mix(lobes.specular, integrated, sharp);
+    }
     lobes.diffuse = irradiance(n) * INV_PI * environmentDiffuseAlbedo(m, NoV, roughness);
     return lobes;
 }
 
-// A normal-mapped (or interpolated) normal can face away from the viewer, n.v < 0, where the
-// sampled methods' integrand is zero (evaluateBrdf: nothing is seen from below the surface): black
-// specks along a normal-mapped mesh's silhouettes. They shade with n bent towards v until n.v =
-// 1e-3 instead (the usual clamp of real-time renderers; the split sum clamps n.v itself). The
-// analytic sphere of the reference view always has n.v > 0, so the ground truth's rule holds there.
-vec3 facingNormal(vec3 n, vec3 v)
-{
-    const float minNoV = 1e-3;
-    float NoV = dot(n, v);
-    return NoV >= minNoV ? n : normalize(n + v * (minNoV - NoV));
-}
-
-// The methods' shared chunks, outside the #ifdefs below: includes are expanded once, before the
-// preprocessor runs (render/ShaderProgram), so a chunk first included inside a disabled block
-// would be missing from the enabled one. Unused functions and samplers cost nothing.
-#include "common_sampling.glsl"
-#include "environment_sampling.glsl"
-#include "ibl_filtering.glsl"
 #ifdef IBL_REFERENCE
 #include "ibl_reference.glsl"
-#endif
-#ifdef IBL_FIS
-#include "ibl_fis.glsl"
 #endif
 
 // The environment's light leaving towards v, per lobe, before ambient occlusion.

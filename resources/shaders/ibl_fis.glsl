@@ -27,11 +27,6 @@
 #include "environment_sampling.glsl"
 #include "ibl_filtering.glsl"
 
-uniform samplerCube uEnvironmentMap; // the environment cube with its full box-filtered mip chain
-uniform float uEnvironmentSize;      // its level-0 face size
-uniform float uEnvironmentMaxLod;    // its last level
-uniform int uIblSampleBase;
-uniform int uIblSamples;
 uniform int uIblSampleTotal;
 
 // Radiance from world direction l for a sample of solid-angle density `pdf` out of `count`.
@@ -46,6 +41,8 @@ vec3 filteredRadiance(vec3 l, float pdf, float count)
     float omegaSource = 2.0 * PI * PI / (sourceSize.x * sourceSize.y) * sqrt(max(1.0 - d.y * d.y, 0.0));
     float omegaSample = 1.0 / (count * max(pdf, 0.5 * INV_PI));
     float sourceLod = omegaSource > 0.0 ? 0.5 * log2(omegaSample / omegaSource) : 1.0;
+    if (uEnvironmentSourceBound == 0)
+        sourceLod = 1.0;
     if (sourceLod <= 0.0)
         return environmentRadiance(l);
     float lod = filteredLodAt(pdf, count, uEnvironmentSize, uEnvironmentMaxLod, d);
@@ -56,14 +53,13 @@ vec3 filteredRadiance(vec3 l, float pdf, float count)
 #endif
 }
 
-BrdfLobes fisEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
+// The specular lobe's light by `count` samples [base, base + count) of hammersley(., total) for
+// the pixel's own n (facing v) and v.
+vec3 fisSpecular(MaterialInfo m, vec3 n, vec3 v, int base, int count, uint total)
 {
-    BrdfLobes lobes;
-    lobes.diffuse = vec3(0.0);
-    lobes.specular = vec3(0.0);
     float NoV = dot(n, v);
     if (NoV < 0.0)
-        return lobes; // evaluateBrdf's rule: nothing is seen from below the surface
+        return vec3(0.0); // evaluateBrdf's rule: nothing is seen from below the surface
     NoV = min(NoV, 1.0);
     float roughness = clampRoughness(m.perceptualRoughness);
     float alpha = roughness * roughness;
@@ -74,11 +70,10 @@ BrdfLobes fisEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     // The VNDF reflection density G1(v) D(h) / (4 n.v), with n.v kept off 0 (its samples then
     // graze the surface: the density is large and the footprint a texel).
     float densityScale = G1_SmithGGX(NoV, alpha) / (4.0 * max(NoV, 1e-6));
-    uint total = uint(max(uIblSampleTotal, 1));
-    int count = max(uIblSamples, 1);
+    count = max(count, 1);
     vec3 specular = vec3(0.0);
     for (int i = 0; i < count; ++i) {
-        vec3 h = importanceSampleVNDF(hammersley(uint(uIblSampleBase + i), total), vLocal, alpha);
+        vec3 h = importanceSampleVNDF(hammersley(uint(base + i), total), vLocal, alpha);
         vec3 lLocal = reflectAbout(vLocal, h);
         if (lLocal.z <= 0.0)
             continue; // below the horizon: no light, still one of the N
@@ -96,7 +91,16 @@ BrdfLobes fisEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
         if (!any(isnan(contribution)) && !any(isinf(contribution)))
             specular += contribution;
     }
-    lobes.specular = specular / float(count);
-    lobes.diffuse = irradiance(n) * INV_PI * environmentDiffuseAlbedo(m, NoV, roughness);
+    return specular / float(count);
+}
+
+BrdfLobes fisEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
+{
+    BrdfLobes lobes;
+    float NoV = dot(n, v);
+    lobes.specular = fisSpecular(m, n, v, uIblSampleBase, uIblSamples, uint(max(uIblSampleTotal, 1)));
+    lobes.diffuse = NoV < 0.0 ? vec3(0.0)
+                              : irradiance(n) * INV_PI
+            * environmentDiffuseAlbedo(m, min(NoV, 1.0), clampRoughness(m.perceptualRoughness));
     return lobes;
 }

@@ -11,8 +11,6 @@
 #include "common_sampling.glsl"
 #include "environment_sampling.glsl"
 
-uniform int uIblSampleBase;
-uniform int uIblSamples;
 uniform int uIblSeed; // bits of a uint32 (IblSampling::seed)
 
 const uint kStrategyBrdf = 0u;

@@ -18,6 +18,7 @@ struct ReferenceViewRenderer::State {
     std::optional<HeadlessGLContext> context;
     QTemporaryDir cacheDir;
     std::optional<FrameRenderer> frames;
+    int sharpLobeSamples = kSplitSumSharpLobeSamples;
 };
 
 ReferenceViewRenderer::ReferenceViewRenderer() = default;
@@ -57,8 +58,17 @@ std::optional<RenderScene> ReferenceViewRenderer::prepareScene(
         *error = "ReferenceViewRenderer::render: unknown IBL preset '" + preset + "'";
         return std::nullopt;
     }
-    return m_state->frames->prepare(
+    auto scene = m_state->frames->prepare(
         project, *assets, *settings, sceneOptionsFor(*settings, /*referenceView=*/true), nullptr, error);
+    if (scene)
+        scene->sampling.sharpLobeSamples = m_state->sharpLobeSamples;
+    return scene;
+}
+
+void ReferenceViewRenderer::setSharpLobeSamples(int samples)
+{
+    if (m_state)
+        m_state->sharpLobeSamples = samples;
 }
 
 std::optional<Image> ReferenceViewRenderer::render(const Project& project, const std::string& preset, int size,

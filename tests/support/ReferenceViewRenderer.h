@@ -49,6 +49,10 @@ public:
         int drawSamples, std::string* error, std::optional<FrameAccumulator::Spread>* spread = nullptr,
         std::vector<int>* draws = nullptr);
 
+    // The split sum's sharp-lobe samples of the scenes rendered from now on
+    // (IblSampling::sharpLobeSamples; 0: the prefiltered lookup only).
+    void setSharpLobeSamples(int samples);
+
 private:
     std::optional<RenderScene> prepareScene(const Project& project, const std::string& preset, std::string* error);
     struct State;
