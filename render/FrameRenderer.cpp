@@ -84,7 +84,7 @@ FrameRenderer::~FrameRenderer()
     // objects first, then the precompute (when this was its last holder).
     m_targets.clear();
     m_accumulator.reset();
-    m_view.reset();
+    m_views.clear();
     m_renderer.reset();
     m_precompute.reset();
 }
@@ -219,11 +219,7 @@ std::optional<Image> FrameRenderer::renderConverged(const RenderScene& scene, in
         draw.sampling.sampleBase = done;
         draw.sampling.samples = std::min(kSamplesPerDraw, samples - done);
         draw.coverageAlpha = maskFromCoverage && done == 0;
-        if (!m_renderer->render(draw, *frame, error))
-            return std::nullopt;
-        if (draw.coverageAlpha)
-            coverage = coverageMaskOf(*frame);
-        if (!m_accumulator->add(*frame, draw.sampling.samples, error))
+        if (!accumulateDraw(draw, *frame, *m_accumulator, coverage, error))
             return std::nullopt;
         done += draw.sampling.samples;
     }
@@ -237,6 +233,16 @@ std::optional<Image> FrameRenderer::renderConverged(const RenderScene& scene, in
     if (scene.sampling.method == IblMethod::Reference)
         stats->noise = m_accumulator->noise(maskFromCoverage ? coverage : noiseMask);
     return readBack(*frame, scene, output, error);
+}
+
+bool FrameRenderer::accumulateDraw(const RenderScene& draw, Framebuffer& frame, FrameAccumulator& accumulator,
+    PixelMask& coverage, std::string* error)
+{
+    if (!m_renderer->render(draw, frame, error))
+        return false;
+    if (draw.coverageAlpha)
+        coverage = coverageMaskOf(frame);
+    return accumulator.add(frame, draw.sampling.samples, error);
 }
 
 bool FrameRenderer::present(
@@ -280,11 +286,12 @@ bool FrameRenderer::show(
 }
 
 bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene, unsigned framebuffer,
-    const FrameRect& rect, bool restart, int drawSamples, std::string* error)
+    const FrameRect& rect, bool restart, int drawSamples, std::string* error, int slot)
 {
-    if (!m_view)
-        m_view = std::make_unique<ViewRefinement>();
-    ViewRefinement& view = *m_view;
+    std::unique_ptr<ViewRefinement>& made = m_views[slot];
+    if (!made)
+        made = std::make_unique<ViewRefinement>();
+    ViewRefinement& view = *made;
     const int width = std::max(rect.width, 1);
     const int height = std::max(rect.height, 1);
     if (!view.frame || view.frame->width() != width || view.frame->height() != height) {
@@ -348,11 +355,7 @@ bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene,
         const bool reference = scene.sampling.method == IblMethod::Reference;
         draw.coverageAlpha = reference && state.draws == 0; // the object, for the noise estimate
         const Clock::time_point start = Clock::now();
-        if (!m_renderer->render(draw, *view.frame, error))
-            return false;
-        if (draw.coverageAlpha)
-            view.mask = coverageMaskOf(*view.frame);
-        if (!view.accumulator.add(*view.frame, draw.sampling.samples, error))
+        if (!accumulateDraw(draw, *view.frame, view.accumulator, view.mask, error))
             return false;
         glFinish();
         state.lastDrawMs = secondsSince(start) * 1000.0;
@@ -384,15 +387,22 @@ bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene,
     return view.accumulator.resolve(*view.frame, error) && show(*view.frame, scene.view, framebuffer, rect, error);
 }
 
-const FrameRenderer::Refinement& FrameRenderer::refinement() const
+const FrameRenderer::Refinement& FrameRenderer::refinement(int slot) const
 {
     static const Refinement none;
-    return m_view ? m_view->state : none;
+    const auto found = m_views.find(slot);
+    return found != m_views.end() ? found->second->state : none;
 }
 
-std::optional<FrameAccumulator::Spread> FrameRenderer::refinementSpread() const
+std::optional<FrameAccumulator::Spread> FrameRenderer::refinementSpread(int slot) const
 {
-    return m_view ? m_view->accumulator.spread() : std::nullopt;
+    const auto found = m_views.find(slot);
+    return found != m_views.end() ? found->second->accumulator.spread() : std::nullopt;
+}
+
+void FrameRenderer::dropRefinements(const std::function<bool(int slot)>& keep)
+{
+    std::erase_if(m_views, [&keep](const auto& entry) { return !keep(entry.first); });
 }
 
 } // namespace facet

@@ -32,7 +32,9 @@
 #include <QString>
 
 #include <cstdint>
+#include <functional>
 #include <list>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -164,13 +166,17 @@ public:
     static constexpr int kRefinementShownAfter = 16;
     static constexpr double kRefinementNoiseTarget = 0.01;
     static constexpr double kNoiseIntervalSeconds = 0.5;
+    // `slot`: which of several refinements (each its own accumulation and state; the window's view
+    // is slot 0, the Compare view's cells and error view others).
     bool refine(const RenderScene& preview, const RenderScene& scene, unsigned framebuffer, const FrameRect& rect,
-        bool restart, int drawSamples, std::string* error);
-    const Refinement& refinement() const;
+        bool restart, int drawSamples, std::string* error, int slot = 0);
+    const Refinement& refinement(int slot = 0) const;
     // The refinement's mean so far and its per-pixel noise (FrameAccumulator::spread, linear
     // radiance, top row first): what the error view measures against. nullopt before both of the
     // accumulator's halves hold a draw.
-    std::optional<FrameAccumulator::Spread> refinementSpread() const;
+    std::optional<FrameAccumulator::Spread> refinementSpread(int slot = 0) const;
+    // Frees the refinements of the slots `keep` says no (their targets and accumulation).
+    void dropRefinements(const std::function<bool(int slot)>& keep);
 
     // The size present() rendered at in its last call.
     int lastRenderWidth() const { return m_lastWidth; }
@@ -198,6 +204,10 @@ private:
     // through a pooled display target, stretched).
     bool show(const Framebuffer& hdr, const ViewSettings& view, unsigned framebuffer, const FrameRect& rect,
         std::string* error);
+    // One draw of a converging method: `draw` rendered into `frame` and added to `accumulator`
+    // (its draw.sampling.samples); with draw.coverageAlpha, `coverage` becomes the object's mask.
+    bool accumulateDraw(const RenderScene& draw, Framebuffer& frame, FrameAccumulator& accumulator,
+        PixelMask& coverage, std::string* error);
     // `hdr` read back as `output`: itself, or its display transform through a pooled target.
     std::optional<Image> readBack(
         Framebuffer& hdr, const RenderScene& scene, FrameOutput output, std::string* error);
@@ -210,7 +220,7 @@ private:
     std::unique_ptr<Renderer> m_renderer;
     std::unique_ptr<FrameAccumulator> m_accumulator;
     struct ViewRefinement;
-    std::unique_ptr<ViewRefinement> m_view;
+    std::map<int, std::unique_ptr<ViewRefinement>> m_views; // by slot
     std::list<PooledTarget> m_targets; // most recently used first
     int m_lastWidth = 0;
     int m_lastHeight = 0;

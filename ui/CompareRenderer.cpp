@@ -26,6 +26,11 @@
 namespace facet {
 
 namespace {
+// FrameRenderer::refine's slot of the error view's reference; Shaded cells use their index.
+constexpr int kErrorSlot = -1;
+} // namespace
+
+namespace {
 
 IblSettings iblSettingsOf(const Project& project)
 {
@@ -208,17 +213,29 @@ bool CompareRenderer::drawCell(const CompareCellDraw& cell, double scale, std::s
 
     // Rendered whole at the cell's size, then only the clipped part copied: the two sides of a
     // split come from images of one size and camera, so they meet without a seam or a shift.
-    if (!m_scratch || m_scratch->width() != cell.rect.width || m_scratch->height() != cell.rect.height) {
-        m_scratch.reset();
-        m_scratch = Framebuffer::create(cell.rect.width, cell.rect.height, FramebufferFormat::RGBA16F, error);
-        if (!m_scratch)
-            return false;
-    }
+    Framebuffer* scratch = scratchFor(cell, error);
+    if (!scratch)
+        return false;
     const bool presented = m_frames->present(
-        scene, m_scratch->framebufferId(), FrameRect {0, 0, cell.rect.width, cell.rect.height}, scale, error);
+        scene, scratch->framebufferId(), FrameRect {0, 0, cell.rect.width, cell.rect.height}, scale, error);
     m_stats.texturesUploaded += m_frames->renderer().lastFrameStats().texturesUploaded;
     if (!presented)
         return false;
+    copyClip(cell);
+    return true;
+}
+
+Framebuffer* CompareRenderer::scratchFor(const CompareCellDraw& cell, std::string* error)
+{
+    if (!m_scratch || m_scratch->width() != cell.rect.width || m_scratch->height() != cell.rect.height) {
+        m_scratch.reset();
+        m_scratch = Framebuffer::create(cell.rect.width, cell.rect.height, FramebufferFormat::RGBA16F, error);
+    }
+    return m_scratch ? &*m_scratch : nullptr;
+}
+
+void CompareRenderer::copyClip(const CompareCellDraw& cell)
+{
     const FrameRect& clip = *cell.clip;
     const int sx = clip.x - cell.rect.x;
     const int sy = clip.y - cell.rect.y;
@@ -226,7 +243,45 @@ bool CompareRenderer::drawCell(const CompareCellDraw& cell, double scale, std::s
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_composite->framebufferId());
     glBlitFramebuffer(sx, sy, sx + clip.width, sy + clip.height, clip.x, clip.y, clip.x + clip.width,
         clip.y + clip.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+}
+
+bool CompareRenderer::refineCell(const CompareCellDraw& cell, std::size_t index, bool restart, double drawBudgetMs,
+    std::string* error)
+{
+    const std::optional<RenderScene> preview = sceneOf(cell, IblMethod::SplitSum, error);
+    const std::optional<RenderScene> sampled
+        = preview ? sceneOf(cell, cell.project.environment.method, error) : std::nullopt;
+    if (!sampled)
+        return false;
+    const int slot = int(index);
+    int& drawSamples = m_cellDrawSamples[index];
+    if (restart)
+        drawSamples = 1;
+    unsigned framebuffer = m_composite->framebufferId();
+    FrameRect rect = cell.rect;
+    if (cell.clip) {
+        const Framebuffer* scratch = scratchFor(cell, error);
+        if (!scratch)
+            return false;
+        framebuffer = scratch->framebufferId();
+        rect = FrameRect {0, 0, cell.rect.width, cell.rect.height};
+    }
+    if (!m_frames->refine(*preview, *sampled, framebuffer, rect, restart, drawSamples, error, slot))
+        return false;
+    m_stats.texturesUploaded += m_frames->renderer().lastFrameStats().texturesUploaded;
+    const FrameRenderer::Refinement& state = m_frames->refinement(slot);
+    if (!restart && state.draws > 0)
+        drawSamples = ViewportRenderer::nextDrawSamples(state.lastDrawSamples, state.lastDrawMs, drawBudgetMs);
+    if (cell.clip)
+        copyClip(cell);
     return true;
+}
+
+const FrameRenderer::Refinement* CompareRenderer::cellRefinement(std::size_t index) const
+{
+    if (index >= m_accumulated.size() || !m_accumulated[index])
+        return nullptr;
+    return &m_frames->refinement(int(index));
 }
 
 namespace {
@@ -271,7 +326,7 @@ void paintLegend(QImage& image, double scale, bool noise)
 
 bool CompareRenderer::isRefining() const
 {
-    return m_stats.error && !m_stats.error->done();
+    return (m_stats.error && !m_stats.error->done()) || m_stats.cellsRefining > 0;
 }
 
 bool CompareRenderer::drawHeatMap(
@@ -388,10 +443,10 @@ bool CompareRenderer::drawErrorView(const CompareCellDraw& reference, const Comp
     }
     // refine() draws in pairs, one to each accumulator half: the noise is known after two draws.
     const int drawSamples = m_error.drawSamples;
-    if (!m_frames->refine(
-            *preview, *sampled, m_composite->framebufferId(), reference.rect, restart, drawSamples, error))
+    if (!m_frames->refine(*preview, *sampled, m_composite->framebufferId(), reference.rect, restart, drawSamples,
+            error, kErrorSlot))
         return false;
-    const FrameRenderer::Refinement& state = m_frames->refinement();
+    const FrameRenderer::Refinement& state = m_frames->refinement(kErrorSlot);
     if (!restart && state.draws > 0)
         m_error.drawSamples = ViewportRenderer::nextDrawSamples(
             state.lastDrawSamples, state.lastDrawMs, ViewportRenderer::kRefineDrawBudgetMs);
@@ -411,7 +466,7 @@ bool CompareRenderer::drawErrorView(const CompareCellDraw& reference, const Comp
         return true; // nothing new: the heat map in the composite stands
     std::vector<float> values;
     if (m_error.heatSamples != state.samples) {
-        std::optional<FrameAccumulator::Spread> spread = m_frames->refinementSpread();
+        std::optional<FrameAccumulator::Spread> spread = m_frames->refinementSpread(kErrorSlot);
         if (!spread) {
             fill(heat.rect, kLoadingGrey); // both halves hold a draw after the next one
             return true;
@@ -465,6 +520,9 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
         // wedge's axis margins): the gaps and the free part of the grid are new too, and nothing
         // drawn before may show through them.
         m_drawn.assign(cells.size(), std::nullopt);
+        m_accumulated.assign(cells.size(), std::nullopt);
+        m_cellDrawSamples.assign(cells.size(), 1);
+        m_frames->dropRefinements([](int slot) { return slot == kErrorSlot; });
         const float gap = displayGrey(kGapGrey);
         m_composite->clear(glm::vec4(gap, gap, gap, 1.0f));
         m_rects = std::move(rects);
@@ -488,7 +546,7 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
             shown.insert(lightingKeyOf(*referenceCell));
         CellKey key = keyOf(*referenceCell, scale);
         const ErrorCompare& settings = referenceCell->project.compare.error;
-        const bool kept = m_drawn[r] && *m_drawn[r] == key && m_drawn[h] && m_frames->refinement().done()
+        const bool kept = m_drawn[r] && *m_drawn[r] == key && m_drawn[h] && m_frames->refinement(kErrorSlot).done()
             && m_error.heatScale == settings.scale && m_error.heatNoise == settings.showNoise;
         std::string cellProblem;
         if (kept) {
@@ -509,6 +567,15 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
         }
         m_stats.error = m_error.stats;
     }
+    // Cells of a sampled method converge while the view is still, sharing one frame's budget of
+    // drawing (each draw sized to its share, as the single view's are to the whole).
+    const auto sampledCell = [reduced](const CompareCellDraw& cell) {
+        return !reduced && cell.kind == CompareCellDraw::Kind::Shaded && !cell.assets.environment.isEmpty()
+            && cell.project.environment.method != IblMethod::SplitSum;
+    };
+    const auto sampledCells = std::count_if(cells.begin(), cells.end(), sampledCell);
+    const double cellBudgetMs = ViewportRenderer::kRefineDrawBudgetMs / double(std::max<std::ptrdiff_t>(sampledCells, 1));
+    m_stats.cellsRefining = 0;
     for (std::size_t i = 0; i < cells.size(); ++i) {
         const CompareCellDraw& cell = cells[i];
         if (cell.kind != CompareCellDraw::Kind::Shaded)
@@ -516,6 +583,36 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
         if (!cell.assets.environment.isEmpty())
             shown.insert(lightingKeyOf(cell));
         CellKey key = keyOf(cell, scale);
+        if (sampledCell(cell)) {
+            // What the samples sum: the cell without its display settings (an exposure edit shows
+            // the same samples anew).
+            CellKey accumulation = keyOf(cell, 1.0);
+            accumulation.project = withoutDisplaySettings(std::move(accumulation.project));
+            const bool restart = !m_accumulated[i] || *m_accumulated[i] != accumulation;
+            const bool done = !restart && m_frames->refinement(int(i)).done();
+            if (done && m_drawn[i] && *m_drawn[i] == key) {
+                ++m_stats.cellsKept;
+                touchMaps(cell);
+                continue;
+            }
+            std::string cellProblem;
+            if (refineCell(cell, i, restart, cellBudgetMs, &cellProblem)) {
+                m_drawn[i] = std::move(key);
+                m_accumulated[i] = std::move(accumulation);
+                ++m_stats.cellsDrawn;
+                if (!m_frames->refinement(int(i)).done())
+                    ++m_stats.cellsRefining;
+            } else {
+                fill(cell.rect, kLoadingGrey);
+                m_drawn[i].reset();
+                m_accumulated[i].reset();
+                if (ok)
+                    *error = "CompareRenderer::paint: " + cellProblem;
+                ok = false;
+            }
+            continue;
+        }
+        m_accumulated[i].reset(); // drawn by the split sum: a later still frame starts again
         if (m_drawn[i] && *m_drawn[i] == key) {
             ++m_stats.cellsKept;
             touchMaps(cell); // still shown: its textures stay

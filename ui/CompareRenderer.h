@@ -87,6 +87,10 @@ struct CompareFrameStats {
     int iblFromDisk = 0;
     // Set while an error view is shown.
     std::optional<ErrorViewStats> error;
+    // Shaded cells whose project's IBL method is a sampled one (fis, reference) converge over
+    // frames as the single view's still frame does (FrameRenderer::refine): how many are still
+    // adding samples after the last frame.
+    int cellsRefining = 0;
 };
 
 class CompareRenderer {
@@ -129,8 +133,11 @@ public:
     int lightingToPrepare(const std::vector<CompareCellDraw>& cells) const;
 
     const CompareFrameStats& lastFrame() const { return m_stats; }
-    // Whether the error view shown is converging: paint again to add samples.
+    // Whether the error view or a cell shown is converging: paint again to add samples.
     bool isRefining() const;
+    // The refinement of Shaded cell `index` of the last paint: null when the cell is drawn by the
+    // split sum (its project's method, or a reduced frame while the user drags).
+    const FrameRenderer::Refinement* cellRefinement(std::size_t index) const;
     // The images the error view's numbers come from (tests compare them with core/ImageMetrics):
     // the real-time image (linear, alpha the coverage), the reference's mean, the mask. Empty
     // before the first error frame.
@@ -157,6 +164,14 @@ private:
     static CellKey keyOf(const CompareCellDraw& cell, double scale);
     static std::pair<std::uint64_t, std::uint64_t> lightingKeyOf(const CompareCellDraw& cell);
     bool drawCell(const CompareCellDraw& cell, double scale, std::string* error);
+    // One step of a Shaded cell's refinement by its project's sampled method (slot `index` of
+    // FrameRenderer::refine); `drawBudgetMs`: its share of a frame's drawing.
+    bool refineCell(const CompareCellDraw& cell, std::size_t index, bool restart, double drawBudgetMs,
+        std::string* error);
+    // The scratch target a clipped cell is rendered into whole, at the cell's size.
+    Framebuffer* scratchFor(const CompareCellDraw& cell, std::string* error);
+    // The clipped part of the scratch target into the composite.
+    void copyClip(const CompareCellDraw& cell);
     // The error view's Reference and Error cells (drawn every frame until the reference is done).
     // `heatShown`: the composite holds the heat map last made (it need not be drawn again when
     // nothing it shows changed).
@@ -174,6 +189,10 @@ private:
     std::optional<Framebuffer> m_composite;
     std::optional<Framebuffer> m_scratch;
     std::vector<std::optional<CellKey>> m_drawn; // by cell index
+    // What each refining cell's samples sum (its key without display settings), and its draws'
+    // size; unset for a cell drawn by the split sum.
+    std::vector<std::optional<CellKey>> m_accumulated;
+    std::vector<int> m_cellDrawSamples;
     std::vector<FrameRect> m_rects; // the cells' rectangles in the last paint
     // The IBL sets of the environments shown, by pixel identity and IBL quality.
     std::map<std::pair<std::uint64_t, std::uint64_t>, std::shared_ptr<const IblTextures>> m_lighting;

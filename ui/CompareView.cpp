@@ -229,7 +229,7 @@ void CompareView::layoutOverlays()
     std::vector<Qt::Alignment> alignments;
     for (std::size_t i = 0; i < m_cells.size(); ++i) {
         const CompareCell& cell = m_cells[i];
-        QString text = mode == CompareMode::Error ? errorLabel(cell) : cell.label;
+        QString text = cellLabel(i);
         const std::string& source = cell.project.environment.source;
         if (m_assets->isLoading(DocumentAssets::Kind::Environment, source))
             text = tr("Loading %1…").arg(environmentLabel(source));
@@ -431,22 +431,41 @@ void CompareView::paintGL()
     m_lastError = ok ? QString() : QString::fromStdString(error);
     if (!announcing && m_lightingAnnounced > 0)
         Q_EMIT lightingReady(std::exchange(m_lightingAnnounced, 0), m_stats.iblMs);
-    if (m_stats.error) {
-        updateErrorLabels();
-        // The reference converges over frames: the next one as soon as the event loop is free
-        // (input stays responsive between draws of about ViewportRenderer::kRefineDrawBudgetMs).
-        if (ok && m_renderer->isRefining())
-            QTimer::singleShot(0, this, [this] {
-                if (isVisible())
-                    update();
-            });
-    }
+    updateRefiningLabels();
+    // The error view's reference and the cells of a sampled method converge over frames: the
+    // next one as soon as the event loop is free (input stays responsive between draws of about
+    // ViewportRenderer::kRefineDrawBudgetMs).
+    if (ok && m_renderer->isRefining())
+        QTimer::singleShot(0, this, [this] {
+            if (isVisible())
+                update();
+        });
     Q_EMIT frameRendered();
 }
 
 bool CompareView::isRefining() const
 {
-    return m_renderer && m_stats.error && m_renderer->isRefining();
+    return m_renderer && m_renderer->isRefining();
+}
+
+QString CompareView::cellLabel(std::size_t index) const
+{
+    const CompareCell& cell = m_cells[index];
+    if (m_document->project().compare.mode == CompareMode::Error)
+        return errorLabel(cell);
+    const FrameRenderer::Refinement* refinement = m_renderer ? m_renderer->cellRefinement(index) : nullptr;
+    if (!refinement || refinement->target <= 1)
+        return cell.label;
+    const IblMethod method = cell.project.environment.method;
+    QString text = tr("%1 · %2 %3/%4 spp")
+                       .arg(cell.label, method == IblMethod::Fis ? tr("FIS") : tr("Reference"))
+                       .arg(refinement->samples)
+                       .arg(refinement->target);
+    if (refinement->noise)
+        text += tr(" · noise %1%").arg(*refinement->noise * 100.0, 0, 'f', 2);
+    if (refinement->done())
+        text += tr(" (done)");
+    return text;
 }
 
 QString CompareView::errorLabel(const CompareCell& cell) const
@@ -480,13 +499,16 @@ QString CompareView::errorLabel(const CompareCell& cell) const
         .arg(percent(error.error->relativeRmse), percent(error.error->maxRelativeError));
 }
 
-void CompareView::updateErrorLabels()
+void CompareView::updateRefiningLabels()
 {
-    for (std::size_t i = 0; i < m_cells.size() && int(i) < m_cellLabelCount && i < m_labels.size(); ++i) {
+    const bool wedge = m_document->project().compare.mode == CompareMode::Wedge; // values on the axes
+    for (std::size_t i = 0; !wedge && i < m_cells.size() && int(i) < m_cellLabelCount && i < m_labels.size(); ++i) {
         const CompareCell& cell = m_cells[i];
-        if (cell.role != CompareCell::Role::Reference && cell.role != CompareCell::Role::Error)
-            continue;
-        const QString text = errorLabel(cell);
+        const std::string& source = cell.project.environment.source;
+        if (m_assets->isLoading(DocumentAssets::Kind::Environment, source)
+            || !m_assets->problem(DocumentAssets::Kind::Environment, source).empty())
+            continue; // layoutOverlays' message stands
+        const QString text = cellLabel(i);
         if (m_labelTexts[int(i)] == text)
             continue;
         m_labelTexts[int(i)] = text;

@@ -73,6 +73,8 @@ public:
     // The label painted over cell `cell` (and the wedge's axis labels: rowLabels, columnLabels).
     QString labelOf(std::size_t cell) const;
     QStringList axisLabels() const;
+    // The cells' labels as shown (empty for the wedge's, whose values are on the axes).
+    QStringList cellLabels() const { return m_labelTexts.mid(0, m_cellLabelCount); }
 
     DocumentAssets* assets() const { return m_assets; }
     // The renderer (null before the first show or without OpenGL 4.1): tests read the error
@@ -133,8 +135,12 @@ private:
     void releaseRenderer();
     // The error view's labels carry its numbers (CompareFrameStats::error): samples, time and
     // noise on the reference, the relative RMSE on the heat map.
+    // Cell `index`'s label: its variant's name, and the samples of a converging cell (or the
+    // error view's numbers).
+    QString cellLabel(std::size_t index) const;
     QString errorLabel(const CompareCell& cell) const;
-    void updateErrorLabels();
+    // The labels of the error view's and of converging cells, after a frame.
+    void updateRefiningLabels();
     // The environment source a drag from the Environment dock's list carries; empty for others.
     static QString droppedSource(const QMimeData* mime);
 
