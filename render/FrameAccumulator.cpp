@@ -139,7 +139,7 @@ std::optional<FrameAccumulator::Spread> FrameAccumulator::spread() const
         return std::nullopt;
     const Image a = m_halves[0]->readPixels();
     const Image b = m_halves[1]->readPixels();
-    Spread spread {Image(m_width, m_height), std::vector<float>(a.pixelCount(), 0.0f)};
+    Spread spread {Image(m_width, m_height), std::vector<float>(a.pixelCount(), 0.0f), samples()};
     for (int y = 0; y < m_height; ++y)
         for (int x = 0; x < m_width; ++x) {
             const std::size_t index = std::size_t(y) * std::size_t(m_width) + std::size_t(x);

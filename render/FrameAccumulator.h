@@ -62,6 +62,7 @@ public:
     struct Spread {
         Image mean;
         std::vector<float> variance;
+        int samples = 0; // per pixel in the mean (both halves)
     };
     std::optional<Spread> spread() const;
 

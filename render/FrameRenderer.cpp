@@ -76,6 +76,9 @@ struct FrameRenderer::ViewRefinement {
     std::optional<Framebuffer> held;  // RGBA16F: the split-sum frame shown until the mean is
     Refinement state;
     PixelMask mask; // the object, for the noise estimate (Reference)
+    // The accumulation read back for the last noise estimate (refinementSpread hands it out, so
+    // nothing reads the halves back twice).
+    std::optional<FrameAccumulator::Spread> spread;
 };
 
 FrameRenderer::~FrameRenderer()
@@ -306,6 +309,7 @@ bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene,
     if (restart) {
         // The split-sum frame first: shown at once, and until the accumulation is worth showing.
         view.state = {};
+        view.spread.reset();
         view.state.target = std::max(scene.sampling.samples, 1);
         if (!showsIntegratedLight(scene))
             view.state.target = 1;
@@ -369,9 +373,10 @@ bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene,
         if (reference
             && (state.samples >= state.target
                 || (state.draws % 2 == 0 && state.seconds - state.noiseSeconds >= interval))) {
-            if (const std::optional<double> noise = view.accumulator.noise(view.mask)) {
-                state.noise = noise;
+            if (std::optional<FrameAccumulator::Spread> spread = view.accumulator.spread()) {
+                state.noise = relativeNoiseRmse(spread->mean, spread->variance, view.mask);
                 state.noiseSeconds = state.seconds;
+                view.spread = std::move(spread);
             }
         }
     }
@@ -394,10 +399,11 @@ const FrameRenderer::Refinement& FrameRenderer::refinement(int slot) const
     return found != m_views.end() ? found->second->state : none;
 }
 
-std::optional<FrameAccumulator::Spread> FrameRenderer::refinementSpread(int slot) const
+const std::optional<FrameAccumulator::Spread>& FrameRenderer::refinementSpread(int slot) const
 {
+    static const std::optional<FrameAccumulator::Spread> none;
     const auto found = m_views.find(slot);
-    return found != m_views.end() ? found->second->accumulator.spread() : std::nullopt;
+    return found != m_views.end() ? found->second->spread : none;
 }
 
 void FrameRenderer::dropRefinements(const std::function<bool(int slot)>& keep)

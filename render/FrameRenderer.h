@@ -171,10 +171,11 @@ public:
     bool refine(const RenderScene& preview, const RenderScene& scene, unsigned framebuffer, const FrameRect& rect,
         bool restart, int drawSamples, std::string* error, int slot = 0);
     const Refinement& refinement(int slot = 0) const;
-    // The refinement's mean so far and its per-pixel noise (FrameAccumulator::spread, linear
-    // radiance, top row first): what the error view measures against. nullopt before both of the
-    // accumulator's halves hold a draw.
-    std::optional<FrameAccumulator::Spread> refinementSpread(int slot = 0) const;
+    // The Reference refinement's mean and its per-pixel noise (FrameAccumulator::spread, linear
+    // radiance, top row first) as read back for its last noise estimate (Spread::samples says at
+    // how many samples; at the end, all of them): what the error view measures against. nullopt
+    // before the first estimate, and for Fis.
+    const std::optional<FrameAccumulator::Spread>& refinementSpread(int slot = 0) const;
     // Frees the refinements of the slots `keep` says no (their targets and accumulation).
     void dropRefinements(const std::function<bool(int slot)>& keep);
 

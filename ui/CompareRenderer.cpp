@@ -455,32 +455,32 @@ bool CompareRenderer::drawErrorView(const CompareCellDraw& reference, const Comp
     stats.seconds = state.seconds;
     stats.complete = state.done();
 
-    const bool current = heatShown && m_error.heatSamples == state.samples
-        && m_error.heatScale == settings.scale && m_error.heatNoise == settings.showNoise;
-    if (!state.showing) {
+    // The heat map is made of the accumulation the refinement read back for its last noise
+    // estimate (after a pair of draws, at most every kNoiseIntervalSeconds or four draws, and at
+    // the end): nothing reads the halves back twice, and a large cell is not re-measured on
+    // every 100 ms draw.
+    const std::optional<FrameAccumulator::Spread>& spread = m_frames->refinementSpread(kErrorSlot);
+    if (!state.showing || !spread) {
         // A few samples are noise, not a measure: the heat map waits.
         fill(heat.rect, kLoadingGrey);
         return true;
     }
+    const bool current = heatShown && m_error.heatSamples == spread->samples
+        && m_error.heatScale == settings.scale && m_error.heatNoise == settings.showNoise;
     if (current)
         return true; // nothing new: the heat map in the composite stands
-    std::vector<float> values;
-    if (m_error.heatSamples != state.samples) {
-        std::optional<FrameAccumulator::Spread> spread = m_frames->refinementSpread(kErrorSlot);
-        if (!spread) {
-            fill(heat.rect, kLoadingGrey); // both halves hold a draw after the next one
-            return true;
-        }
+    if (m_error.heatSamples != spread->samples) {
         stats.noise = relativeNoiseRmse(spread->mean, spread->variance, m_error.mask);
-        m_error.reference = std::move(spread->mean);
-        m_error.variance = std::move(spread->variance);
+        m_error.reference = spread->mean;
+        m_error.variance = spread->variance;
         stats.error = errorStats(m_error.test, m_error.reference, m_error.mask);
     }
-    values = settings.showNoise ? relativeNoise(m_error.reference, m_error.variance, m_error.mask)
-                                : relativeErrors(m_error.test, m_error.reference, m_error.mask);
+    const std::vector<float> values = settings.showNoise
+        ? relativeNoise(m_error.reference, m_error.variance, m_error.mask)
+        : relativeErrors(m_error.test, m_error.reference, m_error.mask);
     if (!drawHeatMap(heat, values, error))
         return false;
-    m_error.heatSamples = state.samples;
+    m_error.heatSamples = spread->samples;
     m_error.heatScale = settings.scale;
     m_error.heatNoise = settings.showNoise;
     return true;
