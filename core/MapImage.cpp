@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 
 #include <QtGlobal>
 
@@ -155,6 +156,7 @@ MapImage MapImage::withoutPixels(const MapImage& image)
     standIn.m_encoding = image.m_encoding;
     standIn.m_colorSpaceName = image.m_colorSpaceName;
     standIn.m_sourceChannels = image.m_sourceChannels;
+    standIn.m_sampleRange = image.m_sampleRange;
     return standIn;
 }
 
@@ -173,7 +175,44 @@ MapImage MapImage::fromImage(const Image& image, MapLayout layout, MapSampleType
             for (int c = 0; c < map.channels(); ++c)
                 map.setSample(x, image.height() - 1 - y, c, pixel[source[c]]);
         }
+    map.measureSampleRanges();
     return map;
+}
+
+void MapImage::measureSampleRanges()
+{
+    std::array<glm::vec2, 4> range;
+    range.fill(glm::vec2(std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest()));
+    const int n = channels();
+    for (int y = 0; y < m_height; ++y)
+        for (int x = 0; x < m_width; ++x)
+            for (int c = 0; c < n; ++c) {
+                const float value = sample(x, y, c);
+                range[std::size_t(c)].x = std::min(range[std::size_t(c)].x, value);
+                range[std::size_t(c)].y = std::max(range[std::size_t(c)].y, value);
+            }
+    m_sampleRange = isEmpty() ? std::nullopt : std::optional(range);
+}
+
+std::optional<glm::vec2> MapImage::texelRange(int component) const
+{
+    if (!m_sampleRange || component < 0 || component > 3)
+        return std::nullopt;
+    const auto stored = [this](int channel) { return (*m_sampleRange)[std::size_t(channel)]; };
+    const glm::vec2 one(1.0f);
+    switch (m_layout) {
+    case MapLayout::Grey:
+        return component < 3 ? stored(0) : one;
+    case MapLayout::GreyAlpha:
+        return component < 3 ? stored(0) : stored(1);
+    case MapLayout::RedGreen:
+        return component < 2 ? stored(component) : component == 2 ? glm::vec2(0.0f) : one;
+    case MapLayout::Rgb:
+        return component < 3 ? stored(component) : one;
+    case MapLayout::Rgba:
+        break;
+    }
+    return stored(component);
 }
 
 std::uint64_t MapImage::loadCount()
@@ -208,6 +247,7 @@ float MapImage::sample(int x, int rowFromBottom, int channel) const
 
 void MapImage::setSample(int x, int rowFromBottom, int channel, float value)
 {
+    m_sampleRange.reset();
     unsigned char* at = m_bytes.data() + offset(x, rowFromBottom, channel);
     const float unit = std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, 1.0f);
     if (m_type == MapSampleType::UInt8) {
@@ -346,6 +386,7 @@ std::optional<MapImage> MapImage::load(
             }
         }
         input.close();
+        map.measureSampleRanges();
         return map;
     } catch (...) {
         setImageErrorFromException(error, kFunction, path, "reading");

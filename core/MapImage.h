@@ -14,11 +14,13 @@
 // normalised (v / 255, v / 65535), half samples are IEEE 754 binary16.
 
 #include <cstddef>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include "core/Image.h"
@@ -105,7 +107,11 @@ public:
     // The samples, rows bottom to top, channels interleaved, no padding; 16-bit and half samples
     // in the machine's byte order.
     const unsigned char* data() const { return m_bytes.data(); }
-    unsigned char* data() { return m_bytes.data(); }
+    unsigned char* data()
+    {
+        m_sampleRange.reset(); // written through: the range is no longer known
+        return m_bytes.data();
+    }
     const unsigned char* row(int rowFromBottom) const
     {
         return m_bytes.data() + rowBytes() * std::size_t(rowFromBottom);
@@ -116,6 +122,13 @@ public:
     void setSample(int x, int rowFromBottom, int channel, float value); // quantised as fromImage
     // What a linear texture read returns for the texel (layout expanded, see the top).
     glm::vec4 texel(int x, int rowFromBottom) const;
+    // The smallest and largest value component `component` (0-3) of texel() takes over the map,
+    // as stored (no colour decoding): known for maps made by load() and fromImage() (and kept by
+    // withoutPixels), nullopt once the samples were written otherwise. The renderer reads a
+    // roughness map's smallest value from it (render/Renderer.cpp, the split sum's sharp lobes).
+    std::optional<glm::vec2> texelRange(int component) const;
+    // Measures the stored samples' ranges (load() and fromImage() call it).
+    void measureSampleRanges();
 
     // As Image: what the file's numbers mean, its colour-space name, its channel count.
     ColorEncoding encoding() const { return m_encoding; }
@@ -162,6 +175,7 @@ private:
     ColorEncoding m_encoding = ColorEncoding::Linear;
     std::string m_colorSpaceName;
     int m_sourceChannels = 4;
+    std::optional<std::array<glm::vec2, 4>> m_sampleRange; // per stored channel: min, max
 };
 
 } // namespace facet

@@ -32,6 +32,21 @@ double scalarMapValue(const MaterialMap& map, const glm::dvec4& texel)
     return map.invert ? 1.0 - value : value;
 }
 
+std::optional<double> smallestScalarMapValue(const MaterialMap& map, const MapImage& image)
+{
+    const int component = map.channel == MapChannel::G ? 1
+        : map.channel == MapChannel::B                 ? 2
+        : map.channel == MapChannel::A                 ? 3
+                                                       : 0;
+    const std::optional<glm::vec2> range = image.texelRange(component);
+    if (!range)
+        return std::nullopt;
+    // The colour decoding is monotonic (and alpha is never decoded): the ends map to the ends.
+    const bool decode = map.colorSpace == ColorEncoding::SRGB && component < 3;
+    const auto linear = [decode](double v) { return decode ? tonemap::srgbToLinear(v) : v; };
+    return map.invert ? 1.0 - linear(range->y) : linear(range->x);
+}
+
 glm::dvec3 shadingNormal(const glm::dvec3& ng, const glm::dvec4& tangent, const glm::dvec4& normalTexel,
                          double strength, bool flipGreen)
 {

@@ -14,6 +14,7 @@
 // (MapImage::linearHalfFromSrgb), as the upload makes it.
 // Mipmapping is not modelled: compare where the GPU magnifies or the texture is smooth.
 
+#include <optional>
 #include <array>
 
 #include <glm/vec2.hpp>
@@ -34,6 +35,10 @@ double pickChannel(const glm::dvec4& texel, MapChannel channel);
 
 // A scalar map's value: the picked channel, inverted when the map says so (GLSL scalarMapValue).
 double scalarMapValue(const MaterialMap& map, const glm::dvec4& texel);
+
+// The smallest value scalarMapValue() takes over `image` (the map's file, as loaded), its colour
+// space decoded; nullopt when the image's range is not known (MapImage::texelRange).
+std::optional<double> smallestScalarMapValue(const MaterialMap& map, const MapImage& image);
 
 // The shading normal from the unit geometric normal `ng` (facing the viewer), the vertex tangent
 // (xyz along dP/du, any length; w = handedness, glTF 2.0) and the normal map's texel (values in

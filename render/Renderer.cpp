@@ -16,6 +16,7 @@
 
 #include "render/Framebuffer.h"
 #include "render/GpuMesh.h"
+#include "core/MaterialInputs.h"
 #include "render/ShaderProgram.h"
 #include "render/TextureCache.h"
 #include "render/ToneMapping.h"
@@ -104,6 +105,24 @@ struct IndexedName {
     const char* c_str() const { return text; }
 };
 
+// Whether the split sum integrates `material`'s sharp lobes (environment_lighting.glsl): the
+// scene asks for them, its lighting has the cube they read and a level 1, and the material's
+// smallest roughness (its factor times its map's smallest value; 0 when that is not known) is
+// below level 1's.
+bool splitSumSharpLobes(const RenderScene& scene, const RenderMaterial& material)
+{
+    const EnvironmentLighting& env = scene.environment;
+    if (scene.sampling.method != IblMethod::SplitSum || scene.sampling.sharpLobeSamples <= 0
+        || env.environmentCubemap == 0 || env.prefilteredLevels < 2)
+        return false;
+    double roughness = material.material.roughness();
+    const auto& image = material.maps[std::size_t(MapSlot::Roughness)].image;
+    if (image && !image->isEmpty())
+        roughness *= smallestScalarMapValue(material.material.map(MapSlot::Roughness), *image).value_or(0.0);
+    roughness = std::clamp(roughness, Material::kMinPerceptualRoughness, 1.0);
+    return lodFromRoughness(float(roughness), float(env.prefilteredLevels)) < 1.0f;
+}
+
 int enabledLightCount(const RenderScene& scene)
 {
     int count = 0;
@@ -149,6 +168,8 @@ SurfaceVariantKey Renderer::variantKeyFor(const RenderScene& scene, int material
         key.features = key.features | SurfaceFeature::IblFis;
     if (scene.analyticSphere)
         key.features = key.features | SurfaceFeature::AnalyticSphereNormal;
+    if (splitSumSharpLobes(scene, material))
+        key.features = key.features | SurfaceFeature::SplitSumSharpLobes;
     key.debugView = debugViewFromString(scene.view.debugView).value_or(DebugView::None);
     return key;
 }
@@ -382,10 +403,8 @@ void Renderer::setFrameUniforms(const ShaderProgram& program, const SurfaceVaria
     program.setFloat("uEnvironmentSize", float(std::max(env.environmentSize, 1)));
     program.setFloat("uEnvironmentMaxLod", float(std::max(env.environmentMipLevels - 1, 0)));
     program.setInt("uEnvironmentSourceBound", env.source.radiance != 0 ? 1 : 0);
-    // Sharp lobes are those below the prefiltered level 1: none without a level 1 (a one-level map
-    // made by hand) or without the cube they read.
-    const bool sharpLobes = env.environmentCubemap != 0 && env.prefilteredLevels >= 2;
-    program.setInt("uSharpLobeSamples", sharpLobes ? std::max(scene.sampling.sharpLobeSamples, 0) : 0);
+    if (hasFeature(key.features, SurfaceFeature::SplitSumSharpLobes))
+        program.setInt("uSharpLobeSamples", std::max(scene.sampling.sharpLobeSamples, 1));
     if (fis || hasFeature(key.features, SurfaceFeature::IblReference)) {
         const std::pair<int, unsigned> sources[] = {{kSourceRadianceUnit, env.source.radiance},
             {kSourceConditionalUnit, env.source.conditionalCdf}, {kSourceMarginalUnit, env.source.marginalCdf},

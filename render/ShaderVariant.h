@@ -61,8 +61,13 @@ enum class SurfaceFeature : uint32_t {
     // IBL_FIS: the environment by filtered importance sampling of the pixel's own lobe
     // (IblMethod::Fis, ibl_fis.glsl) from the environment cube's mip chain and the source equirect.
     IblFis = 1u << 22,
+    // SPLIT_SUM_SHARP_LOBES: the split sum integrates lobes sharper than the prefiltered level 1
+    // by a few fis samples (IblSampling::sharpLobeSamples). Only for materials whose roughness
+    // (factor times its map's smallest value) reaches below level 1: the loop's mere presence cost
+    // llvmpipe a third of a textured frame where no pixel took it.
+    SplitSumSharpLobes = 1u << 23,
 };
-inline constexpr int kSurfaceFeatureBits = 23;
+inline constexpr int kSurfaceFeatureBits = 24;
 
 using SurfaceFeatures = uint32_t;
 inline constexpr SurfaceFeatures operator|(SurfaceFeature a, SurfaceFeature b) { return uint32_t(a) | uint32_t(b); }

@@ -198,6 +198,26 @@ void MapImageTest::loadsInOwnDepthAndChannels()
                                    .arg(texel[c])
                                    .arg(expected[c])));
         }
+
+    // Each texel component's range (what the renderer reads a roughness map's smallest value
+    // from) is the smallest and largest of texel() over the map, kept by a stand-in, and unknown
+    // once a sample is written otherwise.
+    for (int c = 0; c < 4; ++c) {
+        glm::vec2 expected(std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest());
+        for (int y = 0; y < kHeight; ++y)
+            for (int x = 0; x < kWidth; ++x) {
+                expected.x = std::min(expected.x, map->texel(x, y)[c]);
+                expected.y = std::max(expected.y, map->texel(x, y)[c]);
+            }
+        const std::optional<glm::vec2> range = map->texelRange(c);
+        QVERIFY(range);
+        QCOMPARE(range->x, expected.x);
+        QCOMPARE(range->y, expected.y);
+        QCOMPARE(MapImage::withoutPixels(*map).texelRange(c), range);
+    }
+    MapImage written = *map;
+    written.setSample(0, 0, 0, 0.5f);
+    QVERIFY(!written.texelRange(0));
 }
 
 void MapImageTest::floatSamplesAreSanitised()

@@ -9,7 +9,10 @@
 // - a white furnace at 1 within 0.5% (issue 10's bound for every method).
 
 #include "core/ImageMetrics.h"
+#include "core/MapImage.h"
 #include "core/Project.h"
+#include "render/Renderer.h"
+#include "render/ShaderVariant.h"
 
 #include "IblMethodCase.h"
 #include "ReferenceViewRenderer.h"
@@ -19,6 +22,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -170,6 +174,70 @@ private Q_SLOTS:
         const double rmse = relativeRmse(*image, white);
         std::printf("  furnace r %.2f: %.3f%%\n", roughness, 100.0 * rmse);
         QVERIFY2(rmse <= 0.005, qPrintable(QString::number(rmse)));
+    }
+
+    // The variant (SPLIT_SUM_SHARP_LOBES) is compiled only for materials whose roughness reaches
+    // below level 1 (0.106 at six levels): the factor alone, or the factor times the roughness
+    // map's smallest value (its channel, colour space and inversion); a map whose range is unknown
+    // counts as reaching 0. Not for the sampled methods, a one-level map or no environment cube.
+    void variantOnlyWhereALobeIsSharp_data()
+    {
+        QTest::addColumn<double>("factor");
+        QTest::addColumn<int>("map"); // 0: none; 1: values 0.2-0.9 in G; 2: 0.02-0.9 in G; 3: unknown range
+        QTest::addColumn<bool>("invert");
+        QTest::addColumn<int>("levels");
+        QTest::addColumn<int>("method");
+        QTest::addColumn<bool>("sharp");
+        const int split = int(IblMethod::SplitSum);
+        QTest::newRow("factor 0.05") << 0.05 << 0 << false << 6 << split << true;
+        QTest::newRow("factor 0.1") << 0.1 << 0 << false << 6 << split << true;
+        QTest::newRow("factor 0.11") << 0.11 << 0 << false << 6 << split << false;
+        QTest::newRow("factor 0.35") << 0.35 << 0 << false << 6 << split << false;
+        QTest::newRow("factor 0 (clamped to the minimum)") << 0.0 << 0 << false << 6 << split << true;
+        QTest::newRow("map 0.2-0.9") << 1.0 << 1 << false << 6 << split << false;
+        QTest::newRow("map 0.02-0.9") << 1.0 << 2 << false << 6 << split << true;
+        QTest::newRow("map 0.2-0.9, factor 0.6 (0.12)") << 0.6 << 1 << false << 6 << split << false;
+        QTest::newRow("map 0.2-0.9, factor 0.5 (0.1)") << 0.5 << 1 << false << 6 << split << true;
+        QTest::newRow("map 0.2-0.9 inverted (0.1-0.8)") << 1.0 << 1 << true << 6 << split << true;
+        QTest::newRow("map 0.02-0.9 inverted (0.1-0.98), factor 0.9")
+            << 0.9 << 2 << true << 6 << split << true;
+        QTest::newRow("map of unknown range") << 1.0 << 3 << false << 6 << split << true;
+        QTest::newRow("one level") << 0.05 << 0 << false << 1 << split << false;
+        QTest::newRow("fis") << 0.05 << 0 << false << 6 << int(IblMethod::Fis) << false;
+        QTest::newRow("reference") << 0.05 << 0 << false << 6 << int(IblMethod::Reference) << false;
+    }
+
+    void variantOnlyWhereALobeIsSharp()
+    {
+        QFETCH(double, factor);
+        QFETCH(int, map);
+        QFETCH(bool, invert);
+        QFETCH(int, levels);
+        QFETCH(int, method);
+        QFETCH(bool, sharp);
+        RenderScene scene;
+        scene.sampling.method = IblMethod(method);
+        scene.environment.environmentCubemap = 1; // a name: no GL is touched
+        scene.environment.prefilteredLevels = levels;
+        RenderMaterial& material = scene.materials[0];
+        material.material.setFactor(MapSlot::Roughness, factor);
+        MaterialMap& roughness = material.material.map(MapSlot::Roughness);
+        roughness.channel = MapChannel::G;
+        roughness.colorSpace = ColorEncoding::Linear;
+        roughness.invert = invert;
+        if (map > 0) {
+            Image pixels(4, 4, glm::vec4(0.5f, 0.2f, 0.5f, 1.0f));
+            pixels.at(1, 1).g = 0.9f;
+            pixels.at(2, 2).g = map == 2 ? 0.02f : 0.2f;
+            auto image = std::make_shared<MapImage>(
+                MapImage::fromImage(pixels, MapLayout::Rgb, MapSampleType::UInt16));
+            if (map == 3)
+                image->setSample(0, 0, 1, 0.5f); // written after: the range is no longer known
+            material.maps[std::size_t(MapSlot::Roughness)].image = image;
+            material.maps[std::size_t(MapSlot::Roughness)].path = "roughness.png";
+        }
+        const SurfaceVariantKey key = Renderer::variantKeyFor(scene, 0);
+        QCOMPARE(hasFeature(key.features, SurfaceFeature::SplitSumSharpLobes), sharp);
     }
 
 private:

@@ -108,7 +108,7 @@ uniform samplerCube uEnvironmentMap; // the environment cube with its full box-f
 uniform float uEnvironmentSize;      // its level-0 face size
 uniform float uEnvironmentMaxLod;    // its last level
 uniform int uEnvironmentSourceBound; // 0: no source equirect bound (fis reads the cube's levels only)
-uniform int uSharpLobeSamples;       // the split sum's sharp lobes: fis samples (0: none)
+uniform int uSharpLobeSamples;       // SPLIT_SUM_SHARP_LOBES: the split sum's sharp lobes' fis samples
 #include "ibl_fis.glsl"
 
 // The split-sum lobes for the view direction v (unit, towards the viewer) at normal n:
@@ -138,12 +138,15 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     // a small cube, and a mirror-like lobe read there is blurred and shifted by that resampling
     // (20% at roughness 0.05 on forest). Those pixels integrate their own lobe instead, by a few
     // filtered importance samples of the environment cube (the fis estimator), faded in over lod
-    // 1 to 0.5 so that a roughness map shows no seam. render/RenderScene.h kSplitSumSharpLobeSamples.
-    float sharp = uSharpLobeSamples > 0 ? 1.0 - smoothstep(0.5, 1.0, lodFromRoughness(roughness, uPrefilteredLevels)) : 0.0;
+    // 1 to 0.5 so that a roughness map shows no seam. render/RenderScene.h kSplitSumSharpLobeSamples;
+    // the variant only for materials whose roughness reaches below level 1 (render/Renderer.cpp).
+#ifdef SPLIT_SUM_SHARP_LOBES
+    float sharp = 1.0 - smoothstep(0.5, 1.0, lodFromRoughness(roughness, uPrefilteredLevels));
     if (sharp > 0.0) {
         vec3 integrated = fisSpecular(m, facingNormal(n, v), v, 0, uSharpLobeSamples, uint(uSharpLobeSamples));
         lobes.specular = mix(lobes.specular, integrated, sharp);
     }
+#endif
     lobes.diffuse = irradiance(n) * INV_PI * environmentDiffuseAlbedo(m, NoV, roughness);
     return lobes;
 }
