@@ -3,8 +3,11 @@
 #include <cstdio>
 
 #include <QFileInfo>
+#include <QRegularExpression>
 
+#include "core/AssetLibrary.h"
 #include "core/AssetProject.h"
+#include "core/Environment.h"
 
 namespace facet {
 
@@ -93,6 +96,25 @@ bool parseImageSize(const QString& flag, const QString& text, int minimum, int m
     *width = w;
     *height = h;
     return true;
+}
+
+// The items of an environment list that are bare names of installed CC0 samples ("night") as
+// their library references (library:installed/hdri/night.exr); everything else as it is. A
+// built-in name (studio, sky) stays built-in, as Environment::fromSpec resolves it.
+QString expandInstalledNames(const QString& list)
+{
+    static const QRegularExpression bare(QStringLiteral("^[A-Za-z][A-Za-z0-9_-]*$"));
+    QStringList parts = list.split(QLatin1Char(','));
+    for (QString& part : parts) {
+        const QString item = part.trimmed();
+        if (!bare.match(item).hasMatch() || Environment::builtinFromName(item.toStdString()))
+            continue;
+        const QString file
+            = QString::fromStdString(AssetLibrary::installed().folder) + QStringLiteral("/hdri/") + item + QStringLiteral(".exr");
+        if (QFileInfo(file).isFile())
+            part = QStringLiteral("library:installed/hdri/") + item + QStringLiteral(".exr");
+    }
+    return parts.join(QLatin1Char(','));
 }
 
 } // namespace facet

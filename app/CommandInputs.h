@@ -33,4 +33,9 @@ bool applyIblOptions(const QString* method, const QString* samples, EnvironmentS
 bool parseImageSize(const QString& flag, const QString& text, int minimum, int maximum, int* width, int* height,
     QString* error);
 
+// The items of an environment list that are bare names of installed CC0 samples ("night") as
+// their library references (library:installed/hdri/night.exr); everything else as it is. A
+// built-in name (studio, sky) stays built-in, as Environment::fromSpec resolves it.
+QString expandInstalledNames(const QString& list);
+
 } // namespace facet

@@ -11,7 +11,6 @@
 #include <QGuiApplication>
 #include <QImage>
 #include <QPainter>
-#include <QRegularExpression>
 
 #include <algorithm>
 #include <chrono>
@@ -20,7 +19,6 @@
 #include <memory>
 
 #include "core/AssetCache.h"
-#include "core/AssetLibrary.h"
 #include "core/AssetProject.h"
 #include "core/Image.h"
 #include "core/MaterialLibrary.h"
@@ -103,25 +101,6 @@ bool splitList(const QString& flag, const QString& text, QStringList* items, QSt
         items->append(item);
     }
     return true;
-}
-
-// The items of an environment list that are bare names of installed CC0 samples ("night") as
-// their library references (library:installed/hdri/night.exr); everything else as it is. A
-// built-in name (studio, sky) stays built-in, as Environment::fromSpec resolves it.
-QString expandInstalledNames(const QString& list)
-{
-    static const QRegularExpression bare(QStringLiteral("^[A-Za-z][A-Za-z0-9_-]*$"));
-    QStringList parts = list.split(QLatin1Char(','));
-    for (QString& part : parts) {
-        const QString item = part.trimmed();
-        if (!bare.match(item).hasMatch() || Environment::builtinFromName(item.toStdString()))
-            continue;
-        const QString file
-            = QString::fromStdString(AssetLibrary::installed().folder) + QStringLiteral("/hdri/") + item + QStringLiteral(".exr");
-        if (QFileInfo(file).isFile())
-            part = QStringLiteral("library:installed/hdri/") + item + QStringLiteral(".exr");
-    }
-    return parts.join(QLatin1Char(','));
 }
 
 // A material named on the command line (see --materials). The message names the item.

@@ -1,7 +1,8 @@
-// facet: the GUI by default; headless commands: render, sheet and bench (bake and export are not
-// in this version). The command line is parsed before any Q*Application exists, so --help, --version
+// facet: the GUI by default; headless commands: render, sheet, bench and bake (export is not in
+// this version). The command line is parsed before any Q*Application exists, so --help, --version
 // and errors need no display server; QApplication is made only for the GUI.
 
+#include "BakeCommand.h"
 #include "BenchCommand.h"
 #include "CommandLine.h"
 #include "RenderCommand.h"
@@ -117,6 +118,8 @@ int main(int argc, char* argv[])
             return runCommand<facet::BenchCommand>("bench", commandLine.commandArguments);
         if (commandLine.command == QStringLiteral("sheet"))
             return runCommand<facet::SheetCommand>("sheet", commandLine.commandArguments);
+        if (commandLine.command == QStringLiteral("bake"))
+            return runCommand<facet::BakeCommand>("bake", commandLine.commandArguments);
         return runCommand<facet::RenderCommand>("render", commandLine.commandArguments);
     case facet::CommandLine::Action::Unavailable:
         std::fprintf(
