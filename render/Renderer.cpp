@@ -14,9 +14,9 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "core/MaterialInputs.h"
 #include "render/Framebuffer.h"
 #include "render/GpuMesh.h"
-#include "core/MaterialInputs.h"
 #include "render/ShaderProgram.h"
 #include "render/TextureCache.h"
 #include "render/ToneMapping.h"
@@ -397,13 +397,16 @@ void Renderer::setFrameUniforms(const ShaderProgram& program, const SurfaceVaria
     // The environment cube with its mips: fis reads it, and so do the split sum's sharp lobes
     // (IblSampling::sharpLobeSamples), which read it only (no source equirect: as accurate on the
     // CC0 maps, and a split-sum scene never needs the source's memory).
-    glActiveTexture(GL_TEXTURE0 + kEnvironmentUnit);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, env.environmentCubemap);
-    program.setInt("uEnvironmentMap", kEnvironmentUnit);
-    program.setFloat("uEnvironmentSize", float(std::max(env.environmentSize, 1)));
-    program.setFloat("uEnvironmentMaxLod", float(std::max(env.environmentMipLevels - 1, 0)));
-    program.setInt("uEnvironmentSourceBound", env.source.radiance != 0 ? 1 : 0);
-    if (hasFeature(key.features, SurfaceFeature::SplitSumSharpLobes))
+    const bool sharpLobes = hasFeature(key.features, SurfaceFeature::SplitSumSharpLobes);
+    if (fis || sharpLobes) {
+        glActiveTexture(GL_TEXTURE0 + kEnvironmentUnit);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, env.environmentCubemap);
+        program.setInt("uEnvironmentMap", kEnvironmentUnit);
+        program.setFloat("uEnvironmentSize", float(std::max(env.environmentSize, 1)));
+        program.setFloat("uEnvironmentMaxLod", float(std::max(env.environmentMipLevels - 1, 0)));
+        program.setInt("uEnvironmentSourceBound", fis && env.source.radiance != 0 ? 1 : 0);
+    }
+    if (sharpLobes)
         program.setInt("uSharpLobeSamples", std::max(scene.sampling.sharpLobeSamples, 1));
     if (fis || hasFeature(key.features, SurfaceFeature::IblReference)) {
         const std::pair<int, unsigned> sources[] = {{kSourceRadianceUnit, env.source.radiance},
