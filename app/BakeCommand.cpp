@@ -19,6 +19,7 @@
 
 #include "core/AtomicFile.h"
 #include "core/Environment.h"
+#include "core/FileSet.h"
 #include "core/Image.h"
 #include "render/DfgLut.h"
 #include "render/GLTexture.h"
@@ -103,34 +104,6 @@ QJsonArray vec3Array(const glm::vec3& v)
 {
     return QJsonArray {double(v.x), double(v.y), double(v.z)};
 }
-
-// The files written so far that did not exist before: removed when the bake fails.
-class Written {
-public:
-    explicit Written(QString folder)
-        : m_folder(std::move(folder))
-    {
-    }
-    QString path(const std::string& name) const
-    {
-        return m_folder + QLatin1Char('/') + QString::fromStdString(name);
-    }
-    void add(const QString& path, bool existedBefore)
-    {
-        if (!existedBefore)
-            m_new.append(path);
-    }
-    void removeNew()
-    {
-        for (const QString& path : m_new)
-            QFile::remove(path);
-        m_new.clear();
-    }
-
-private:
-    QString m_folder;
-    QStringList m_new;
-};
 
 } // namespace
 
@@ -259,20 +232,18 @@ int BakeCommand::run(const BakeRequest& request)
             return fail(error);
 
     // Nothing is written over an earlier bake without --force; the check comes before any write.
-    Written written(folder);
+    FileSet written(request.outputDirectory);
     const int levels = ibl->prefilteredMipLevels;
     const std::vector<std::string> names = bakeFileNames(levels);
     if (!request.force)
-        for (const std::string& name : names)
-            if (QFileInfo::exists(written.path(name)))
-                return fail(written.path(name).toStdString() + ": exists (use --force to replace the bake)");
+        if (const std::vector<std::string> existing = written.existing(names); !existing.empty())
+            return fail(existing.front() + ": exists (use --force to replace the bake)");
 
     const auto save = [&](const Image& image, const std::string& name, bool alpha) {
-        const QString path = written.path(name);
-        const bool existed = QFileInfo::exists(path);
-        if (!image.save(path.toStdString(), &error, alpha))
+        written.aboutToWrite(name);
+        if (!image.save(written.path(name), &error, alpha))
             return false;
-        written.add(path, existed);
+        written.written(name);
         return true;
     };
     const std::vector<std::string>& faces = bakeFaceNames();
@@ -402,15 +373,15 @@ int BakeCommand::run(const BakeRequest& request)
                 {QStringLiteral("dfgSamples"), s.dfgSamples},
             }},
     };
-    const QString indexPath = written.path(kIndexName);
-    const bool indexExisted = QFileInfo::exists(indexPath);
+    const std::string indexPath = written.path(kIndexName);
+    written.aboutToWrite(kIndexName);
     std::string reason;
-    if (!writeFileAtomically(indexPath.toStdString(),
-            QJsonDocument(index).toJson(QJsonDocument::Indented).toStdString(), &reason)) {
+    if (!writeFileAtomically(
+            indexPath, QJsonDocument(index).toJson(QJsonDocument::Indented).toStdString(), &reason)) {
         written.removeNew();
-        return fail(indexPath.toStdString() + ": cannot write it: " + reason);
+        return fail(indexPath + ": cannot write it: " + reason);
     }
-    written.add(indexPath, indexExisted);
+    written.written(kIndexName);
 
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf(

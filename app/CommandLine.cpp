@@ -32,7 +32,8 @@ struct Parser {
                            "  render   render a project to an EXR or PNG without a display\n"
                            "  sheet    a labelled grid of materials x environments, or a parameter wedge\n"
                            "  bench    time against error of the IBL quality settings (table and CSV)\n"
-                           "  bake     an environment's IBL (prefiltered, irradiance, SH9, DFG) as EXR files"));
+                           "  bake     an environment's IBL (prefiltered, irradiance, SH9, DFG) as EXR files\n"
+                           "  export   materials as engine texture sets (Unreal, Unity, Godot, glTF, templates)"));
         // Our own -h/-v instead of addHelpOption(): its --help-all lists Qt options that this
         // parser, running before QApplication, does not accept.
         parser.addOption(help);
@@ -56,7 +57,8 @@ const QStringList& CommandLine::commandNames()
 const QStringList& CommandLine::availableCommandNames()
 {
     static const QStringList names
-        = {QStringLiteral("render"), QStringLiteral("sheet"), QStringLiteral("bench"), QStringLiteral("bake")};
+        = {QStringLiteral("render"), QStringLiteral("sheet"), QStringLiteral("bench"), QStringLiteral("bake"),
+            QStringLiteral("export")};
     return names;
 }
 

@@ -1,9 +1,10 @@
-// facet: the GUI by default; headless commands: render, sheet, bench and bake (export is not in
-// this version). The command line is parsed before any Q*Application exists, so --help, --version
-// and errors need no display server; QApplication is made only for the GUI.
+// facet: the GUI by default; headless commands: render, sheet, bench, bake and export. The command
+// line is parsed before any Q*Application exists, so --help, --version and errors need no display
+// server; QApplication is made only for the GUI.
 
 #include "BakeCommand.h"
 #include "BenchCommand.h"
+#include "ExportCommand.h"
 #include "CommandLine.h"
 #include "RenderCommand.h"
 #include "SheetCommand.h"
@@ -120,6 +121,8 @@ int main(int argc, char* argv[])
             return runCommand<facet::SheetCommand>("sheet", commandLine.commandArguments);
         if (commandLine.command == QStringLiteral("bake"))
             return runCommand<facet::BakeCommand>("bake", commandLine.commandArguments);
+        if (commandLine.command == QStringLiteral("export"))
+            return runCommand<facet::ExportCommand>("export", commandLine.commandArguments);
         return runCommand<facet::RenderCommand>("render", commandLine.commandArguments);
     case facet::CommandLine::Action::Unavailable:
         std::fprintf(

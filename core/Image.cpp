@@ -12,6 +12,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "core/ImageReader.h"
+#include "core/ImageWriter.h"
 
 namespace facet {
 
@@ -218,7 +219,8 @@ std::optional<Image> Image::loadBoxFiltered(const std::string& path, bool linear
         std::vector<glm::dvec4> sums(columns.begin.size() * rows.begin.size(), glm::dvec4(0.0));
 
         // Bands of about a million texels (16 MiB as float RGBA), whatever the image's size.
-        const int bandRows = std::clamp(int((std::size_t(1) << 20) / std::size_t(spec.width)), 1, spec.height);
+        const int bandRows
+            = std::clamp(int((std::size_t(1) << 20) / std::size_t(spec.width)), 1, spec.height);
         Image band(spec.width, bandRows, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         band.m_encoding = reader->encoding();
         const int readChannels = std::min(spec.nchannels, 4);
@@ -324,99 +326,35 @@ bool Image::save(const std::string& path, std::string* error, bool alpha,
         return false;
     }
     try {
-        // How a failed write is noticed: OpenImageIO encodes into memory (an IOVecOutput proxy,
-        // "oiio:ioproxy"), and the bytes go to disk through writeFileAtomically, which checks
-        // every write, fsyncs, compares the size on disk and only then renames over `path`.
-        // Letting OIIO write the file itself cannot be trusted: its PNG writer reports success
-        // on a full disk and leaves a 0-byte file (issue 12, "A rendered PNG can be lost"; its
-        // file writers do not check what fwrite/fclose return). The alternative, re-reading the
-        // written temporary to validate it, costs a full decode and still trusts each decoder to
-        // notice a truncation. Encoding in memory cannot fail silently, and costs one copy of the
-        // encoded file (smaller than the float buffer below). With OIIO 2.4.7 the bytes are
-        // identical to what the writer puts in a file (compared for exr, png, hdr, jpg, tif, tga,
-        // bmp, webp, ppm). The writer is chosen by the extension of `path`.
-        std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
-        if (!output) {
+        // The format decides the samples: EXR half floats, HDR/PFM floats, the rest 8 bits.
+        std::unique_ptr<OIIO::ImageOutput> probe = OIIO::ImageOutput::create(path);
+        if (!probe) {
             setImageError(error, kFunction, path, OIIO::geterror());
             return false;
         }
-        const std::string formatName = output->format_name();
-        // A few writers (sgi, ico, rla, fits, heif in OIIO 2.4) only write to a file by name;
-        // they are refused rather than written unchecked.
-        if (!output->supports("ioproxy")) {
-            setImageError(error, kFunction, path,
-                "cannot write " + formatName
-                    + " files safely (OpenImageIO cannot encode them in memory to check the write); "
-                      "use .exr, .png, .hdr, .tif, .jpg or .tga");
-            return false;
-        }
+        const std::string formatName = probe->format_name();
         const bool isExr = formatName == "openexr";
         // Formats that store floats and nothing else; everything else gets 8 bits.
         const bool isFloatOnly = formatName == "hdr" || formatName == "pfm";
-        const bool writeAlpha = alpha && output->supports("alpha");
-        const int channels = writeAlpha ? 4 : 3;
-        const OIIO::TypeDesc fileFormat = isExr ? OIIO::TypeDesc::HALF
-            : isFloatOnly                       ? OIIO::TypeDesc::FLOAT
-                                                : OIIO::TypeDesc::UINT8;
+        const bool writeAlpha = alpha && probe->supports("alpha");
+        probe.reset();
 
-        OIIO::ImageSpec spec(m_width, m_height, channels, fileFormat);
-        if (isExr || isFloatOnly) {
-            spec.attribute("oiio:ColorSpace", "Linear");
-        } else {
-            // The caller encoded the values; only an sRGB claim is written (an untagged PNG
-            // or JPEG is read as sRGB anyway, and a gAMA 1.0 chunk confuses viewers).
-            if (m_encoding == ColorEncoding::SRGB)
-                spec.attribute("oiio:ColorSpace", "sRGB");
-            // The colour values are not premultiplied: keep OIIO from dividing them by alpha.
-            spec.attribute("oiio:UnassociatedAlpha", 1);
-        }
-        if (isExr)
-            spec.attribute("compression", "zip");
-        for (const auto& [name, value] : attributes)
-            spec.attribute(name, value);
+        ImageFileSpec spec;
+        spec.width = m_width;
+        spec.height = m_height;
+        spec.channels = writeAlpha ? 4 : 3;
+        spec.sampleFormat = isExr ? FileSampleFormat::Half
+            : isFloatOnly         ? FileSampleFormat::Float
+                                  : FileSampleFormat::UInt8;
+        spec.encoding = isExr || isFloatOnly ? ColorEncoding::Linear : m_encoding;
+        spec.attributes = attributes;
 
-        // Convert to what the file can hold ourselves, so nothing depends on OIIO's choices:
-        // finite values beyond the half range would become Inf in an EXR, and 8-bit files
-        // hold [0,1] (NaN stored as 0).
+        const int channels = spec.channels;
         std::vector<float> buffer(pixelCount() * std::size_t(channels));
-        for (std::size_t i = 0; i < pixelCount(); ++i) {
-            for (int c = 0; c < channels; ++c) {
-                float value = m_pixels[i][c];
-                if (isExr)
-                    value = std::isnan(value) ? value : std::clamp(value, -kLargestHalf, kLargestHalf);
-                else if (!isFloatOnly)
-                    value = std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, 1.0f);
-                buffer[i * std::size_t(channels) + std::size_t(c)] = value;
-            }
-        }
-
-        std::vector<unsigned char> encoded;
-        OIIO::Filesystem::IOVecOutput memory(encoded);
-        OIIO::Filesystem::IOProxy* proxy = &memory;
-        spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-        if (!output->open(path, spec)) {
-            setImageError(error, kFunction, path, "cannot encode: " + output->geterror());
-            return false;
-        }
-        const bool written = output->write_image(OIIO::TypeDesc::FLOAT, buffer.data());
-        std::string reason = written ? std::string() : output->geterror();
-        const bool closed = output->close();
-        if (reason.empty() && !closed)
-            reason = output->geterror();
-        if (!written || !closed) {
-            setImageError(error, kFunction, path, "encoding failed: " + reason);
-            return false;
-        }
-        output.reset();
-        buffer = {};
-
-        std::string problem;
-        if (!writeFileAtomically(path,
-                std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()), &problem)) {
-            setImageError(error, kFunction, path, "cannot write: " + problem);
-            return false;
-        }
-        return true;
+        for (std::size_t i = 0; i < pixelCount(); ++i)
+            for (int c = 0; c < channels; ++c)
+                buffer[i * std::size_t(channels) + std::size_t(c)] = m_pixels[i][c];
+        return writeImageFile(path, spec, buffer.data(), kFunction, error);
     } catch (...) {
         setImageErrorFromException(error, kFunction, path, "writing");
     }

@@ -1,6 +1,7 @@
 #include "core/MaterialInputs.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 
@@ -47,8 +48,30 @@ std::optional<double> smallestScalarMapValue(const MaterialMap& map, const MapIm
     return map.invert ? 1.0 - linear(range->y) : linear(range->x);
 }
 
+namespace {
+
+// The decoded, scaled tangent-space normal before normalisation (GLSL shadingNormal's tn).
+glm::dvec3 scaledTangentNormal(const glm::dvec4& normalTexel, double strength, bool flipGreen)
+{
+    glm::dvec3 tn = glm::dvec3(normalTexel) * 2.0 - 1.0;
+    if (flipGreen)
+        tn.y = -tn.y;
+    tn.x *= strength;
+    tn.y *= strength;
+    return tn;
+}
+
+} // namespace
+
+glm::dvec3 tangentSpaceNormal(const glm::dvec4& normalTexel, double strength, bool flipGreen)
+{
+    const glm::dvec3 tn = scaledTangentNormal(normalTexel, strength, flipGreen);
+    const double length = glm::length(tn);
+    return length > 1e-8 ? tn / length : glm::dvec3(0.0, 0.0, 1.0);
+}
+
 glm::dvec3 shadingNormal(const glm::dvec3& ng, const glm::dvec4& tangent, const glm::dvec4& normalTexel,
-                         double strength, bool flipGreen)
+    double strength, bool flipGreen)
 {
     // Gram-Schmidt: the interpolated tangent is neither unit nor perpendicular to ng.
     glm::dvec3 t = glm::dvec3(tangent) - ng * glm::dot(ng, glm::dvec3(tangent));
@@ -57,11 +80,7 @@ glm::dvec3 shadingNormal(const glm::dvec3& ng, const glm::dvec4& tangent, const 
         return ng;
     t /= tLength;
     const glm::dvec3 b = glm::cross(ng, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
-    glm::dvec3 tn = glm::dvec3(normalTexel) * 2.0 - 1.0;
-    if (flipGreen)
-        tn.y = -tn.y;
-    tn.x *= strength;
-    tn.y *= strength;
+    const glm::dvec3 tn = scaledTangentNormal(normalTexel, strength, flipGreen);
     const glm::dvec3 n = t * tn.x + b * tn.y + ng * tn.z;
     const double nLength = glm::length(n);
     return nLength > 1e-8 ? n / nLength : ng;
@@ -74,9 +93,17 @@ glm::dvec4 texelValue(const MapImage& image, int x, int rowFromBottom, ColorEnco
         return stored;
     glm::dvec4 linear = stored;
     if (image.sampleType() == MapSampleType::UInt8) {
-        // GL_SRGB8(_ALPHA8): the 8-bit value decoded by the sampler (alpha is linear).
+        // GL_SRGB8(_ALPHA8): the 8-bit value decoded by the sampler (alpha is linear). The 256
+        // decoded values are tabulated (tonemap::srgbToLinear, the same numbers): a texture-set
+        // export reads millions of texels.
+        static const std::array<double, 256> kDecoded = [] {
+            std::array<double, 256> table {};
+            for (int i = 0; i < 256; ++i)
+                table[std::size_t(i)] = tonemap::srgbToLinear(double(float(i) / 255.0f));
+            return table;
+        }();
         for (int c = 0; c < 3; ++c)
-            linear[c] = tonemap::srgbToLinear(stored[c]);
+            linear[c] = kDecoded[std::size_t(std::lround(stored[c] * 255.0))];
         return linear;
     }
     // 16-bit and half maps are decoded on upload into half floats, alpha included as a half.
@@ -114,6 +141,10 @@ glm::dvec4 sampleTexture(const MapImage& image, ColorEncoding colorSpace, const 
         const int row = wrap(int(std::fmod(ty, double(height))), height);
         return texelValue(image, column, row, colorSpace);
     };
+    // At a texel centre the bilinear weights are (1, 0, 0, 0): the texel itself, exactly (a
+    // texture-set export of a map at its own size reads only centres).
+    if (fx == 0.0 && fy == 0.0)
+        return at(x0, y0);
     const glm::dvec4 bottom = glm::mix(at(x0, y0), at(x0 + 1.0, y0), fx);
     const glm::dvec4 top = glm::mix(at(x0, y0 + 1.0), at(x0 + 1.0, y0 + 1.0), fx);
     return glm::mix(bottom, top, fy);
@@ -134,7 +165,8 @@ MaterialInfo materialInputs(const Material& material, const MaterialMapImages& i
     m.alpha = material.baseColorFactor().a;
     if (const auto base = read(MapSlot::BaseColor)) {
         const MapChannel channel = material.map(MapSlot::BaseColor).channel;
-        m.baseColor *= channel == MapChannel::Rgb ? glm::dvec3(*base) : glm::dvec3(pickChannel(*base, channel));
+        m.baseColor
+            *= channel == MapChannel::Rgb ? glm::dvec3(*base) : glm::dvec3(pickChannel(*base, channel));
         // A single-channel pick is a greyscale colour without coverage of its own.
         if (channel == MapChannel::Rgb)
             m.alpha *= base->a;

@@ -40,6 +40,12 @@ double scalarMapValue(const MaterialMap& map, const glm::dvec4& texel);
 // space decoded; nullopt when the image's range is not known (MapImage::texelRange).
 std::optional<double> smallestScalarMapValue(const MaterialMap& map, const MapImage& image);
 
+// The normal map's tangent-space normal: the texel (values in [0, 1], OpenGL convention +Y green;
+// `flipGreen` for DirectX maps) decoded to [-1, 1], X and Y scaled by `strength` (glTF
+// normalTexture.scale), unit length; (0, 0, 1) where it degenerates. What shadingNormal() maps
+// into the surface's frame, and what an exported normal map stores (core/TextureSetExport).
+glm::dvec3 tangentSpaceNormal(const glm::dvec4& normalTexel, double strength, bool flipGreen);
+
 // The shading normal from the unit geometric normal `ng` (facing the viewer), the vertex tangent
 // (xyz along dP/du, any length; w = handedness, glTF 2.0) and the normal map's texel (values in
 // [0, 1], OpenGL convention +Y green; `flipGreen` for DirectX maps), X and Y scaled by `strength`

@@ -222,6 +222,20 @@ bool FullVolume::drain()
     return QFile::remove(filePath(kFiller));
 }
 
+bool FullVolume::makeReadOnly()
+{
+    if (!m_mounted)
+        return false;
+    if (::mount(nullptr, QFile::encodeName(m_path).constData(), nullptr,
+            MS_REMOUNT | MS_RDONLY | MS_NOSUID | MS_NODEV, nullptr)
+        != 0) {
+        m_problem = QStringLiteral("cannot remount %1 read-only: %2")
+                        .arg(m_path, QString::fromLocal8Bit(std::strerror(errno)));
+        return false;
+    }
+    return true;
+}
+
 qint64 FullVolume::freeBytes() const
 {
     struct statvfs info { };

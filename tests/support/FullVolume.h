@@ -49,6 +49,9 @@ public:
     bool fill();
     // Removes the filler: the volume has room again.
     bool drain();
+    // Remounts the volume read-only: even root cannot write there (an unwritable folder that
+    // holds for the root user CI runs as, where a chmod would not).
+    bool makeReadOnly();
     qint64 freeBytes() const;
 
     // Every entry of the folder `relative` (default: the volume's root), hidden ones included,

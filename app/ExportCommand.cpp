@@ -1,0 +1,280 @@
+#include "ExportCommand.h"
+
+#include "CommandInputs.h"
+#include "CommandOptions.h"
+
+#include <QCommandLineOption>
+#include <QCommandLineParser>
+#include <QDir>
+#include <QFileInfo>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include "core/ExportTemplate.h"
+#include "core/FileSet.h"
+#include "core/MapImageCache.h"
+
+namespace facet {
+
+namespace {
+
+QString builtinList()
+{
+    QStringList names;
+    for (const std::string& id : ExportTemplate::builtinIds())
+        names.append(QString::fromStdString(id));
+    return names.join(QStringLiteral(", "));
+}
+
+struct Options {
+    QCommandLineParser parser;
+    QCommandLineOption help {
+        {QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Displays this help.")};
+    QCommandLineOption format {QStringLiteral("format"),
+        QStringLiteral("What to write: a built-in texture-set template (%1) or a template file "
+                       "(TEMPLATE.json, docs/export.md). gltf and glb (a glTF 2.0 asset) are not in this "
+                       "version.")
+            .arg(builtinList()),
+        QStringLiteral("format")};
+    QCommandLineOption material {QStringLiteral("material"),
+        QStringLiteral("Export only this material: its name, or its index from 0 (default: every material)."),
+        QStringLiteral("NAME|INDEX")};
+    QCommandLineOption size {QStringLiteral("size"),
+        QStringLiteral("The files' larger side in pixels, 1 to %1 (default: the material's largest map's; a "
+                       "material without maps: 1x1).")
+            .arg(TextureSetOptions::kMaxSize),
+        QStringLiteral("N")};
+    QCommandLineOption bitDepth {QStringLiteral("bit-depth"),
+        QStringLiteral("8, 16 or 32 bits per channel for every file (default: the template's); the files' "
+                       "format must hold it."),
+        QStringLiteral("8|16|32")};
+    QCommandLineOption mesh {QStringLiteral("mesh"),
+        QStringLiteral("The mesh a glTF export carries (gltf and glb only)."), QStringLiteral("NAME|PATH")};
+    QCommandLineOption dryRun {QStringLiteral("dry-run"),
+        QStringLiteral("List the files and the source of each channel; write nothing.")};
+    QCommandLineOption force {QStringLiteral("force"), QStringLiteral("Replace files already in OUT_DIR.")};
+    QCommandLineOption output {{QStringLiteral("o"), QStringLiteral("output")},
+        QStringLiteral("The folder to write into (made if missing)."), QStringLiteral("dir")};
+
+    Options()
+    {
+        parser.setApplicationDescription(QStringLiteral(
+            "Exports a project's materials as engine texture sets: each material's factors and maps baked "
+            "into the files of an export template (channel packing, normal convention, colour space, bit "
+            "depth, size), named by the template's pattern."));
+        for (const QCommandLineOption* option :
+            {&help, &format, &material, &size, &bitDepth, &mesh, &dryRun, &force, &output})
+            parser.addOption(*option);
+        parser.addPositionalArgument(QStringLiteral("input"),
+            QStringLiteral(
+                "A project file (.json) or a glTF asset (.gltf, .glb); none: the default project."),
+            QStringLiteral("[PROJECT.json|ASSET.glb]"));
+    }
+};
+
+bool parseWholeNumber(
+    const QString& flag, const QString& text, int minimum, int maximum, int* out, QString* error)
+{
+    bool ok = false;
+    const int value = text.toInt(&ok);
+    if (!ok || value < minimum || value > maximum) {
+        *error = QStringLiteral("%1: '%2' is not a whole number from %3 to %4")
+                     .arg(flag, text)
+                     .arg(minimum)
+                     .arg(maximum);
+        return false;
+    }
+    *out = value;
+    return true;
+}
+
+// The materials --material selects: its name (exact), else an index; all without it.
+std::optional<std::vector<int>> selectMaterials(
+    const Project& project, const std::optional<std::string>& selector, std::string* error)
+{
+    std::vector<int> indices;
+    if (!selector) {
+        for (int i = 0; i < int(project.materials.size()); ++i)
+            indices.push_back(i);
+        return indices;
+    }
+    for (int i = 0; i < int(project.materials.size()); ++i)
+        if (project.materials[std::size_t(i)].name == *selector)
+            return std::vector<int> {i};
+    bool isIndex = false;
+    const int index = QString::fromStdString(*selector).toInt(&isIndex);
+    if (isIndex && index >= 0 && index < int(project.materials.size()))
+        return std::vector<int> {index};
+    std::string names;
+    for (const Material& material : project.materials)
+        names += (names.empty() ? "" : ", ") + material.name;
+    *error = "--material: '" + *selector + "' is not a material of the input (its materials: " + names
+        + "; or an index from 0 to " + std::to_string(project.materials.size() - 1) + ")";
+    return std::nullopt;
+}
+
+} // namespace
+
+QString ExportCommand::helpText()
+{
+    Options options;
+    return commandHelpText(options.parser, QStringLiteral("facet export"));
+}
+
+std::optional<ExportRequest> ExportCommand::parse(const QStringList& arguments, QString* error, int* exitCode)
+{
+    Options o;
+    if (!parseCommandOptions(o, arguments, QStringLiteral("facet export"), kExitUsage, error, exitCode))
+        return std::nullopt;
+    ExportRequest request;
+    request.input = o.parser.positionalArguments();
+    if (!checkOneInput(request.input, error))
+        return std::nullopt;
+    if (!o.parser.isSet(o.format) || o.parser.value(o.format).isEmpty()) {
+        *error = QStringLiteral("--format is required: %1, or a template file (TEMPLATE.json)")
+                     .arg(builtinList());
+        return std::nullopt;
+    }
+    const QString format = o.parser.value(o.format);
+    if (format == QStringLiteral("gltf") || format == QStringLiteral("glb")) {
+        *error = QStringLiteral(
+            "--format %1: writing a glTF asset is not in this version; --format gltf-textures writes a "
+            "material's textures in glTF's conventions")
+                     .arg(format);
+        return std::nullopt;
+    }
+    const bool isBuiltin = ExportTemplate::builtin(format.toStdString()).has_value();
+    if (!isBuiltin && !format.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
+        *error = QStringLiteral("--format: '%1' is not %2, or a template file (.json)")
+                     .arg(format, builtinList());
+        return std::nullopt;
+    }
+    request.format = format.toStdString();
+    if (o.parser.isSet(o.mesh)) {
+        *error = QStringLiteral("--mesh: only a glTF export carries a mesh; a texture set has none");
+        return std::nullopt;
+    }
+    if (o.parser.isSet(o.material))
+        request.material = o.parser.value(o.material).toStdString();
+    if (o.parser.isSet(o.size)
+        && !parseWholeNumber(QStringLiteral("--size"), o.parser.value(o.size), 1, TextureSetOptions::kMaxSize,
+            &request.options.size, error))
+        return std::nullopt;
+    if (o.parser.isSet(o.bitDepth)) {
+        const QString text = o.parser.value(o.bitDepth);
+        if (text != QStringLiteral("8") && text != QStringLiteral("16") && text != QStringLiteral("32")) {
+            *error = QStringLiteral("--bit-depth: '%1' is not 8, 16 or 32").arg(text);
+            return std::nullopt;
+        }
+        request.options.bitDepth = text.toInt();
+    }
+    request.dryRun = o.parser.isSet(o.dryRun);
+    request.force = o.parser.isSet(o.force);
+    if (!request.dryRun && (!o.parser.isSet(o.output) || o.parser.value(o.output).isEmpty())) {
+        *error = QStringLiteral("-o OUT_DIR is required (or --dry-run)");
+        return std::nullopt;
+    }
+    request.outputDirectory = o.parser.value(o.output).toStdString();
+    return request;
+}
+
+int ExportCommand::run(const ExportRequest& request)
+{
+    const auto fail = [](const std::string& message) {
+        std::fprintf(stderr, "facet export: %s\n", message.c_str());
+        return kExitFailure;
+    };
+    const auto start = std::chrono::steady_clock::now();
+    std::string error;
+    std::optional<ExportTemplate> exportTemplate = ExportTemplate::builtin(request.format);
+    if (!exportTemplate)
+        exportTemplate = ExportTemplate::load(request.format, &error);
+    if (!exportTemplate)
+        return fail(error);
+
+    QString inputError;
+    const std::optional<Project> project
+        = commandInputProject(request.input, QStringLiteral("export"), &inputError);
+    if (!project)
+        return fail(inputError.toStdString());
+    const std::optional<std::vector<int>> selected = selectMaterials(*project, request.material, &error);
+    if (!selected)
+        return fail(error);
+
+    // Every map, decoded once however many slots and materials share it; then every set planned,
+    // so that a bad size or name stops the export before a file is written.
+    struct Set {
+        const Material* material = nullptr;
+        std::vector<std::shared_ptr<const MapImage>> keep;
+        MaterialMapImages images {};
+        TextureSetPlan plan;
+    };
+    std::vector<Set> sets;
+    std::vector<std::string> names;
+    for (const int index : *selected) {
+        Set set;
+        set.material = &project->materials[std::size_t(index)];
+        for (const MapSlot slot : kAllMapSlots) {
+            const MaterialMap& map = set.material->map(slot);
+            if (!map.hasTexture())
+                continue;
+            std::shared_ptr<const MapImage> image = MapImageCache::shared().load(map.path, &error);
+            if (!image)
+                return fail("material '" + set.material->name + "', " + toString(slot) + ": " + error);
+            set.images[std::size_t(slot)] = image.get();
+            set.keep.push_back(std::move(image));
+        }
+        std::optional<TextureSetPlan> plan
+            = planTextureSet(*exportTemplate, *set.material, set.images, request.options, &error);
+        if (!plan)
+            return fail("material '" + set.material->name + "': " + error);
+        for (const PlannedTexture& texture : plan->files) {
+            for (const std::string& name : names)
+                if (name == texture.fileName)
+                    return fail(texture.fileName
+                        + " would hold two materials (two materials of one name? "
+                          "export them one at a time with --material INDEX)");
+            names.push_back(texture.fileName);
+        }
+        set.plan = std::move(*plan);
+        sets.push_back(std::move(set));
+    }
+
+    if (request.dryRun) {
+        for (const Set& set : sets) {
+            std::printf("%s (%s): %zu files\n", set.material->name.c_str(), exportTemplate->name.c_str(),
+                set.plan.files.size());
+            for (const PlannedTexture& texture : set.plan.files)
+                std::printf("  %s\n", describe(texture).c_str());
+            for (const std::string& skipped : set.plan.skipped)
+                std::printf("  (no %s: the material does not use it)\n", skipped.c_str());
+        }
+        return 0;
+    }
+
+    const QString folder = QString::fromStdString(request.outputDirectory);
+    const QFileInfo folderInfo(folder);
+    if (folderInfo.exists() && !folderInfo.isDir())
+        return fail(request.outputDirectory + ": is not a folder");
+    if (!QDir().mkpath(folder))
+        return fail(request.outputDirectory + ": cannot make the folder");
+    FileSet files(request.outputDirectory);
+    if (!request.force)
+        if (const std::vector<std::string> existing = files.existing(names); !existing.empty())
+            return fail(existing.front() + ": exists (use --force to replace it)");
+    for (const Set& set : sets) {
+        if (!writeTextureSet(set.plan, *set.material, set.images, files, &error)) {
+            files.removeNew();
+            return fail(error);
+        }
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("facet export: wrote %zu files for %zu material%s to %s (%s, %.2f s)\n", names.size(),
+        sets.size(), sets.size() == 1 ? "" : "s", request.outputDirectory.c_str(),
+        exportTemplate->name.c_str(), seconds);
+    return 0;
+}
+
+} // namespace facet

@@ -1,0 +1,362 @@
+#include "core/TextureSetExport.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <future>
+#include <set>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include "core/ImageWriter.h"
+#include "core/Parallel.h"
+#include "core/ToneMap.h"
+
+namespace facet {
+
+namespace {
+
+MapSlot slotOf(ExportSource source)
+{
+    switch (source) {
+    case ExportSource::NormalX:
+    case ExportSource::NormalY:
+    case ExportSource::NormalZ:
+        return MapSlot::Normal;
+    case ExportSource::Metallic:
+        return MapSlot::Metallic;
+    case ExportSource::Roughness:
+        return MapSlot::Roughness;
+    case ExportSource::Occlusion:
+        return MapSlot::Occlusion;
+    case ExportSource::EmissiveR:
+    case ExportSource::EmissiveG:
+    case ExportSource::EmissiveB:
+        return MapSlot::Emissive;
+    default:
+        break;
+    }
+    return MapSlot::BaseColor;
+}
+
+const MapImage* imageOf(const Material& material, const MaterialMapImages& images, MapSlot slot)
+{
+    const MapImage* image = images[std::size_t(slot)];
+    return material.map(slot).hasTexture() && image && !image->isEmpty() ? image : nullptr;
+}
+
+std::string sizeText(int width, int height)
+{
+    return width == height ? std::to_string(width) : std::to_string(width) + "x" + std::to_string(height);
+}
+
+FileSampleFormat sampleFormatOf(const ExportOutput& output)
+{
+    if (output.bitDepth == 32)
+        return FileSampleFormat::Float;
+    if (output.bitDepth == 16)
+        return output.fileFormat == TextureFileFormat::Exr ? FileSampleFormat::Half
+                                                           : FileSampleFormat::UInt16;
+    return FileSampleFormat::UInt8;
+}
+
+// Whether channel `index` of a file of `count` channels is alpha: the last of 2 or 4.
+bool isAlphaChannel(int index, int count)
+{
+    return (count == 2 || count == 4) && index == count - 1;
+}
+
+const char* channelLetter(int index, int count)
+{
+    if (count <= 2)
+        return index == 0 ? "Y" : "A";
+    static const char* const kLetters[] = {"R", "G", "B", "A"};
+    return kLetters[index];
+}
+
+} // namespace
+
+ExportTexel exportTexel(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv)
+{
+    // materialInputs is the shader's CPU twin: the same factors, picks and decoding.
+    const MaterialInfo inputs = materialInputs(material, images, uv);
+    ExportTexel texel;
+    texel.baseColor = glm::dvec4(inputs.baseColor, inputs.alpha);
+    texel.metallic = inputs.metallic;
+    texel.roughness = inputs.perceptualRoughness;
+    texel.occlusion = inputs.occlusion;
+    // The emissive strength stays a parameter of the material, not a texel value.
+    if (material.emissiveStrength > 0.0) {
+        texel.emissive = inputs.emissive / material.emissiveStrength;
+    } else {
+        texel.emissive = glm::dvec3(material.map(MapSlot::Emissive).factor);
+        const MaterialMap& emissiveMap = material.map(MapSlot::Emissive);
+        if (const MapImage* image = imageOf(material, images, MapSlot::Emissive))
+            texel.emissive
+                *= glm::dvec3(sampleTexture(*image, emissiveMap.colorSpace, emissiveMap.uv.apply(uv)));
+        texel.emissive = glm::max(texel.emissive, glm::dvec3(0.0));
+    }
+    const MaterialMap& normalMap = material.map(MapSlot::Normal);
+    if (const MapImage* image = imageOf(material, images, MapSlot::Normal))
+        texel.normal = tangentSpaceNormal(sampleTexture(*image, normalMap.colorSpace, normalMap.uv.apply(uv)),
+            material.normalStrength(), normalMap.flipGreen);
+    return texel;
+}
+
+double channelValue(const ExportChannel& channel, const ExportTexel& texel)
+{
+    double value = channel.constant;
+    switch (channel.source) {
+    case ExportSource::Constant:
+        break;
+    case ExportSource::BaseColorR:
+        value = texel.baseColor.r;
+        break;
+    case ExportSource::BaseColorG:
+        value = texel.baseColor.g;
+        break;
+    case ExportSource::BaseColorB:
+        value = texel.baseColor.b;
+        break;
+    case ExportSource::BaseColorA:
+        value = texel.baseColor.a;
+        break;
+    case ExportSource::NormalX:
+        value = texel.normal.x * 0.5 + 0.5;
+        break;
+    case ExportSource::NormalY:
+        value = texel.normal.y * 0.5 + 0.5;
+        break;
+    case ExportSource::NormalZ:
+        value = texel.normal.z * 0.5 + 0.5;
+        break;
+    case ExportSource::Metallic:
+        value = texel.metallic;
+        break;
+    case ExportSource::Roughness:
+        value = texel.roughness;
+        break;
+    case ExportSource::Occlusion:
+        value = texel.occlusion;
+        break;
+    case ExportSource::EmissiveR:
+        value = texel.emissive.r;
+        break;
+    case ExportSource::EmissiveG:
+        value = texel.emissive.g;
+        break;
+    case ExportSource::EmissiveB:
+        value = texel.emissive.b;
+        break;
+    }
+    return channel.invert ? 1.0 - value : value;
+}
+
+bool usesSlot(const Material& material, MapSlot slot)
+{
+    switch (slot) {
+    case MapSlot::BaseColor:
+    case MapSlot::Metallic:
+    case MapSlot::Roughness:
+        return true;
+    case MapSlot::Emissive:
+        return material.map(slot).hasTexture() || glm::dvec3(material.map(slot).factor) != glm::dvec3(0.0);
+    case MapSlot::Normal:
+    case MapSlot::Occlusion:
+        break;
+    }
+    return material.map(slot).hasTexture();
+}
+
+std::optional<TextureSetPlan> planTextureSet(const ExportTemplate& exportTemplate, const Material& material,
+    const MaterialMapImages& images, const TextureSetOptions& options, std::string* error)
+{
+    const auto fail = [error](const std::string& problem) {
+        if (error)
+            *error = problem;
+        return std::nullopt;
+    };
+    if (options.size < 0 || options.size > TextureSetOptions::kMaxSize)
+        return fail("the size " + std::to_string(options.size) + " is outside 1 to "
+            + std::to_string(TextureSetOptions::kMaxSize));
+    TextureSetPlan plan;
+    plan.templateId = exportTemplate.id;
+    plan.materialName = material.name;
+    for (const MapSlot slot : kAllMapSlots) {
+        if (const MapImage* image = imageOf(material, images, slot)) {
+            plan.sourceWidth = std::max(plan.sourceWidth, image->width());
+            plan.sourceHeight = std::max(plan.sourceHeight, image->height());
+        }
+    }
+    int width = plan.sourceWidth;
+    int height = plan.sourceHeight;
+    if (options.size > 0) {
+        const double scale = double(options.size) / double(std::max(width, height));
+        width = std::max(1, int(std::lround(width * scale)));
+        height = std::max(1, int(std::lround(height * scale)));
+    }
+
+    std::set<std::string> names;
+    for (const ExportOutput& output : exportTemplate.outputs) {
+        if (output.optional) {
+            bool used = false;
+            for (const ExportChannel& channel : output.channels)
+                used = used
+                    || (channel.source != ExportSource::Constant
+                        && usesSlot(material, slotOf(channel.source)));
+            if (!used) {
+                plan.skipped.push_back(output.map);
+                continue;
+            }
+        }
+        PlannedTexture texture;
+        texture.output = output;
+        if (options.bitDepth != 0) {
+            if (!holdsBitDepth(output.fileFormat, options.bitDepth))
+                return fail(exportTemplate.id + "'s " + output.map + " is " + toString(output.fileFormat)
+                    + ", which cannot hold " + std::to_string(options.bitDepth)
+                    + "-bit channels (png: 8, 16; tga: 8; tiff: 8, 16, 32; exr: 16, 32)");
+            texture.output.bitDepth = options.bitDepth;
+        }
+        texture.width = width;
+        texture.height = height;
+        std::string stem;
+        std::string problem;
+        if (!expandFileName(output.fileName.empty() ? exportTemplate.fileName : output.fileName,
+                fileNameSafe(material.name), output.map, sizeText(width, height), exportTemplate.id, &stem,
+                &problem))
+            return fail(exportTemplate.id + "'s " + output.map + ": " + problem);
+        texture.fileName = stem + "." + extension(output.fileFormat);
+        if (!names.insert(texture.fileName).second)
+            return fail(exportTemplate.id + " names two files " + texture.fileName
+                + " (give each output its own {map} or fileName)");
+        plan.files.push_back(std::move(texture));
+    }
+    return plan;
+}
+
+std::string describe(const PlannedTexture& texture)
+{
+    const ExportOutput& output = texture.output;
+    const int count = int(output.channels.size());
+    static const char* const kLayouts[] = {"grey", "grey+alpha", "RGB", "RGBA"};
+    std::string text = texture.fileName + "  " + std::to_string(texture.width) + "x"
+        + std::to_string(texture.height) + "  " + kLayouts[count - 1] + " " + toString(sampleFormatOf(output))
+        + " " + (output.colorSpace == ColorEncoding::SRGB ? "sRGB" : "linear") + ":";
+    for (int i = 0; i < count; ++i) {
+        const ExportChannel& channel = output.channels[std::size_t(i)];
+        std::string source = channel.source == ExportSource::Constant
+            ? "constant " + std::to_string(channel.constant).substr(0, 5)
+            : std::string(toString(channel.source));
+        if (channel.invert)
+            source = "1 - " + source;
+        text += std::string(i == 0 ? " " : ", ") + channelLetter(i, count) + " " + source;
+    }
+    return text;
+}
+
+std::vector<float> renderTexture(const PlannedTexture& texture, const TextureSetPlan& plan,
+    const Material& material, const MaterialMapImages& images)
+{
+    const std::vector<ExportChannel>& channels = texture.output.channels;
+    const int count = int(channels.size());
+    // Only the maps this file reads are sampled: the others' textures are left out of the copy
+    // the texels are evaluated from (an ORM file reads no base colour, normal or emissive).
+    std::array<bool, kMapSlotCount> read {};
+    for (const ExportChannel& channel : channels)
+        if (channel.source != ExportSource::Constant)
+            read[std::size_t(slotOf(channel.source))] = true;
+    Material needed = material;
+    for (const MapSlot slot : kAllMapSlots)
+        if (!read[std::size_t(slot)])
+            needed.map(slot).path.clear();
+    const int width = plan.sourceWidth;
+    const int height = plan.sourceHeight;
+    std::vector<float> values(std::size_t(width) * std::size_t(height) * std::size_t(count));
+    parallelFor(std::size_t(height), [&](std::size_t row) {
+        // Row 0 is the file's top row: texture coordinate v = 1 (core/MapImage.h).
+        const double v = 1.0 - (double(row) + 0.5) / double(height);
+        float* out = values.data() + row * std::size_t(width) * std::size_t(count);
+        for (int x = 0; x < width; ++x) {
+            const ExportTexel texel
+                = exportTexel(needed, images, glm::dvec2((double(x) + 0.5) / double(width), v));
+            for (int c = 0; c < count; ++c)
+                *out++ = float(channelValue(channels[std::size_t(c)], texel));
+        }
+    });
+    if (texture.width == width && texture.height == height)
+        return values;
+
+    // Resized as linear values, before any sRGB encoding: OIIO's default filters (a wide
+    // Blackman-Harris going down, Lanczos going up).
+    const OIIO::ImageSpec sourceSpec(width, height, count, OIIO::TypeDesc::FLOAT);
+    const OIIO::ImageBuf source(sourceSpec, values.data());
+    OIIO::ImageBuf resized(OIIO::ImageSpec(texture.width, texture.height, count, OIIO::TypeDesc::FLOAT));
+    OIIO::ImageBufAlgo::resize(resized, source);
+    std::vector<float> result(std::size_t(texture.width) * std::size_t(texture.height) * std::size_t(count));
+    resized.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, result.data());
+    return result;
+}
+
+void encodeTexture(const PlannedTexture& texture, std::vector<float>& values)
+{
+    const ExportOutput& output = texture.output;
+    if (output.colorSpace != ColorEncoding::SRGB)
+        return;
+    const int count = int(output.channels.size());
+    for (int c = 0; c < count; ++c) {
+        if (isAlphaChannel(c, count) || output.channels[std::size_t(c)].source == ExportSource::Constant)
+            continue;
+        for (std::size_t i = std::size_t(c); i < values.size(); i += std::size_t(count))
+            values[i] = float(tonemap::linearToSrgb(std::clamp(double(values[i]), 0.0, 1.0)));
+    }
+}
+
+bool writeTextureSet(const TextureSetPlan& plan, const Material& material, const MaterialMapImages& images,
+    FileSet& files, std::string* error)
+{
+    // One file is encoded and written (OpenImageIO's PNG encoder is single-threaded: as long as
+    // the render of a 2K file) while the next one renders on every core.
+    std::string problem;
+    const auto write = [&](const PlannedTexture& texture, std::vector<float> values) {
+        ImageFileSpec spec;
+        spec.width = texture.width;
+        spec.height = texture.height;
+        spec.channels = int(texture.output.channels.size());
+        spec.sampleFormat = sampleFormatOf(texture.output);
+        spec.encoding = texture.output.colorSpace;
+        spec.tagLinear = true;
+        // Alpha only where the last channel is the base colour's coverage; a packed mask's fourth
+        // channel (Unity's smoothness) is data.
+        spec.alpha = (spec.channels == 2 || spec.channels == 4)
+            && texture.output.channels.back().source == ExportSource::BaseColorA;
+        files.aboutToWrite(texture.fileName);
+        if (!writeImageFile(files.path(texture.fileName), spec, values.data(), "export", &problem))
+            return false;
+        files.written(texture.fileName);
+        return true;
+    };
+    std::future<bool> pending;
+    for (const PlannedTexture& texture : plan.files) {
+        std::vector<float> values = renderTexture(texture, plan, material, images);
+        encodeTexture(texture, values);
+        if (pending.valid() && !pending.get())
+            break;
+        pending = std::async(std::launch::async, write, std::cref(texture), std::move(values));
+    }
+    if (pending.valid() && !pending.get()) {
+        // "export: <path>: <reason>" -> "<path>: <reason>".
+        if (error)
+            *error = problem.starts_with("export: ") ? problem.substr(8) : problem;
+        return false;
+    }
+    if (!problem.empty()) {
+        if (error)
+            *error = problem.starts_with("export: ") ? problem.substr(8) : problem;
+        return false;
+    }
+    return true;
+}
+
+} // namespace facet

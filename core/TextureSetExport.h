@@ -1,0 +1,93 @@
+#pragma once
+// A material written as an engine's texture set (issue 11, "Engine texture sets"): the files of an
+// export template (core/ExportTemplate.h), each channel filled from what the material shades with
+// at each texel (its factors and maps combined as core/MaterialInputs materialInputs does: channel
+// picks, inversion, colour decoding, occlusion strength, the normal's strength and DirectX flip,
+// each map's UV transform), then resized to the file's size (OpenImageIO's filtered resize) and
+// encoded for the file's colour space (sRGB: the exact piecewise curve) and bit depth.
+//
+// Size: every file of a set has the size of the material's largest map (the largest width and
+// height over its textures), or 1x1 for a material of constants alone; TextureSetOptions::size
+// scales that so the larger side is `size`, the aspect kept. A map smaller than the set is
+// sampled bilinearly at the set's texel centres (as the GPU magnifies it); a map of the set's
+// size with no UV transform is copied texel for texel.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/ExportTemplate.h"
+#include "core/FileSet.h"
+#include "core/Material.h"
+#include "core/MaterialInputs.h"
+
+namespace facet {
+
+struct TextureSetOptions {
+    static constexpr int kMaxSize = 8192;
+    int size = 0; // the files' larger side; 0: the material's largest map's
+    int bitDepth = 0; // 8, 16 or 32 for every file; 0: each output's own
+};
+
+struct PlannedTexture {
+    std::string fileName; // with its extension
+    ExportOutput output; // the bit depth override applied
+    int width = 0;
+    int height = 0;
+};
+
+struct TextureSetPlan {
+    std::string templateId;
+    std::string materialName;
+    int sourceWidth = 1; // the size the material is evaluated at: its largest map's, or 1x1
+    int sourceHeight = 1;
+    std::vector<PlannedTexture> files;
+    std::vector<std::string> skipped; // optional outputs the material does not need ({map} values)
+};
+
+// What a template's sources read at one texel of the material.
+struct ExportTexel {
+    glm::dvec4 baseColor {1.0}; // linear RGB and coverage
+    glm::dvec3 normal {0.0, 0.0, 1.0}; // tangent space, unit, OpenGL convention
+    double metallic = 0.0;
+    double roughness = 0.5; // perceptual
+    double occlusion = 1.0; // strength applied
+    glm::dvec3 emissive {0.0}; // factor x texture (without the strength)
+};
+ExportTexel exportTexel(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv);
+// A source's value in a texel ([0, 1] for every source but emissive: the normal is stored as
+// n * 0.5 + 0.5). Constant: channel.constant; then inverted when channel.invert.
+double channelValue(const ExportChannel& channel, const ExportTexel& texel);
+
+// Whether the material uses `slot` beyond a neutral constant: a texture, and for emissive also a
+// colour other than black (ExportOutput::optional). Base colour, metallic and roughness always.
+bool usesSlot(const Material& material, MapSlot slot);
+
+// The files `exportTemplate` writes for `material` (file names expanded, sizes from the maps'):
+// nullopt with *error for a bit depth the format cannot hold ("unreal's BC is png, which holds 8
+// or 16 bits, not 32"), a size out of range, or two files of one name.
+std::optional<TextureSetPlan> planTextureSet(const ExportTemplate& exportTemplate, const Material& material,
+    const MaterialMapImages& images, const TextureSetOptions& options, std::string* error);
+
+// One line of a dry run: "T_Brass_ORM.png  2048x2048  RGB 8-bit linear: R occlusion, G roughness,
+// B metallic".
+std::string describe(const PlannedTexture& texture);
+
+// A file's values before encoding: width x height x channels floats, rows top first (texture
+// coordinate v = 1 at the top row, MapImage's convention), linear, inversion applied, resized.
+std::vector<float> renderTexture(const PlannedTexture& texture, const TextureSetPlan& plan,
+    const Material& material, const MaterialMapImages& images);
+// The file's stored values from renderTexture's: sRGB-encoded where the output says so (the
+// colour channels: the first of 1 or 2, the first three of 3 or 4; never alpha or constants).
+void encodeTexture(const PlannedTexture& texture, std::vector<float>& values);
+
+// Renders, encodes and writes each file of `plan` into `files` (atomically, each registered with
+// the set so that a caller can remove the set's new files when a later write fails). False with
+// *error naming the file ("<path>: cannot write: No space left on device").
+bool writeTextureSet(const TextureSetPlan& plan, const Material& material, const MaterialMapImages& images,
+    FileSet& files, std::string* error);
+
+} // namespace facet
