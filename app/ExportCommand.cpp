@@ -5,16 +5,11 @@
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
-#include <QDir>
-#include <QFileInfo>
 
 #include <chrono>
 #include <cstdio>
-#include <memory>
 
 #include "core/ExportTemplate.h"
-#include "core/FileSet.h"
-#include "core/MapImageCache.h"
 
 namespace facet {
 
@@ -203,77 +198,26 @@ int ExportCommand::run(const ExportRequest& request)
     if (!selected)
         return fail(error);
 
-    // Every map, decoded once however many slots and materials share it; then every set planned,
-    // so that a bad size or name stops the export before a file is written.
-    struct Set {
-        const Material* material = nullptr;
-        std::vector<std::shared_ptr<const MapImage>> keep;
-        MaterialMapImages images {};
-        TextureSetPlan plan;
-    };
-    std::vector<Set> sets;
-    std::vector<std::string> names;
-    for (const int index : *selected) {
-        Set set;
-        set.material = &project->materials[std::size_t(index)];
-        for (const MapSlot slot : kAllMapSlots) {
-            const MaterialMap& map = set.material->map(slot);
-            if (!map.hasTexture())
-                continue;
-            std::shared_ptr<const MapImage> image = MapImageCache::shared().load(map.path, &error);
-            if (!image)
-                return fail("material '" + set.material->name + "', " + toString(slot) + ": " + error);
-            set.images[std::size_t(slot)] = image.get();
-            set.keep.push_back(std::move(image));
-        }
-        std::optional<TextureSetPlan> plan
-            = planTextureSet(*exportTemplate, *set.material, set.images, request.options, &error);
-        if (!plan)
-            return fail("material '" + set.material->name + "': " + error);
-        for (const PlannedTexture& texture : plan->files) {
-            for (const std::string& name : names)
-                if (name == texture.fileName)
-                    return fail(texture.fileName
-                        + " would hold two materials (two materials of one name? "
-                          "export them one at a time with --material INDEX)");
-            names.push_back(texture.fileName);
-        }
-        set.plan = std::move(*plan);
-        sets.push_back(std::move(set));
-    }
-
+    std::vector<Material> materials;
+    for (const int index : *selected)
+        materials.push_back(project->materials[std::size_t(index)]);
+    const std::optional<TextureSetExport> job
+        = TextureSetExport::prepare(*exportTemplate, materials, request.options, &error);
+    if (!job)
+        return fail(error);
     if (request.dryRun) {
-        for (const Set& set : sets) {
-            std::printf("%s (%s): %zu files\n", set.material->name.c_str(), exportTemplate->name.c_str(),
-                set.plan.files.size());
-            for (const PlannedTexture& texture : set.plan.files)
-                std::printf("  %s\n", describe(texture).c_str());
-            for (const std::string& skipped : set.plan.skipped)
-                std::printf("  (no %s: the material does not use it)\n", skipped.c_str());
-        }
+        std::fputs(job->describeAll().c_str(), stdout);
         return 0;
     }
-
-    const QString folder = QString::fromStdString(request.outputDirectory);
-    const QFileInfo folderInfo(folder);
-    if (folderInfo.exists() && !folderInfo.isDir())
-        return fail(request.outputDirectory + ": is not a folder");
-    if (!QDir().mkpath(folder))
-        return fail(request.outputDirectory + ": cannot make the folder");
-    FileSet files(request.outputDirectory);
-    if (!request.force)
-        if (const std::vector<std::string> existing = files.existing(names); !existing.empty())
-            return fail(existing.front() + ": exists (use --force to replace it)");
-    for (const Set& set : sets) {
-        if (!writeTextureSet(set.plan, *set.material, set.images, files, &error)) {
-            files.removeNew();
-            return fail(error);
-        }
+    if (!job->write(request.outputDirectory, request.force, &error)) {
+        if (error.ends_with(": exists"))
+            error += " (use --force to replace it)";
+        return fail(error);
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("facet export: wrote %zu files for %zu material%s to %s (%s, %.2f s)\n", names.size(),
-        sets.size(), sets.size() == 1 ? "" : "s", request.outputDirectory.c_str(),
-        exportTemplate->name.c_str(), seconds);
+    std::printf("facet export: wrote %zu files for %zu material%s to %s (%s, %.2f s)\n",
+        job->fileNames().size(), materials.size(), materials.size() == 1 ? "" : "s",
+        request.outputDirectory.c_str(), exportTemplate->name.c_str(), seconds);
     return 0;
 }
 

@@ -3,13 +3,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <future>
 #include <set>
+#include <system_error>
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
 #include "core/ImageWriter.h"
+#include "core/MapImageCache.h"
 #include "core/Parallel.h"
 #include "core/ToneMap.h"
 
@@ -356,6 +359,99 @@ bool writeTextureSet(const TextureSetPlan& plan, const Material& material, const
             *error = problem.starts_with("export: ") ? problem.substr(8) : problem;
         return false;
     }
+    return true;
+}
+
+std::optional<TextureSetExport> TextureSetExport::prepare(const ExportTemplate& exportTemplate,
+    const std::vector<Material>& materials, const TextureSetOptions& options, std::string* error)
+{
+    const auto fail = [error](const std::string& problem) {
+        if (error)
+            *error = problem;
+        return std::nullopt;
+    };
+    TextureSetExport job;
+    job.m_template = exportTemplate;
+    std::set<std::string> names;
+    for (const Material& material : materials) {
+        auto source = std::make_shared<Source>();
+        source->material = material;
+        for (const MapSlot slot : kAllMapSlots) {
+            const MaterialMap& map = material.map(slot);
+            if (!map.hasTexture())
+                continue;
+            std::string problem;
+            std::shared_ptr<const MapImage> image = MapImageCache::shared().load(map.path, &problem);
+            if (!image)
+                return fail("material '" + material.name + "', " + toString(slot) + ": " + problem);
+            source->images[std::size_t(slot)] = image.get();
+            source->keep.push_back(std::move(image));
+        }
+        std::string problem;
+        std::optional<TextureSetPlan> plan
+            = planTextureSet(exportTemplate, source->material, source->images, options, &problem);
+        if (!plan)
+            return fail("material '" + material.name + "': " + problem);
+        for (const PlannedTexture& texture : plan->files)
+            if (!names.insert(texture.fileName).second)
+                return fail(texture.fileName
+                    + " would hold two materials (two materials of one name? export them one at a time)");
+        job.m_sources.push_back(std::move(source));
+        job.m_plans.push_back(std::move(*plan));
+    }
+    return job;
+}
+
+std::vector<std::string> TextureSetExport::fileNames() const
+{
+    std::vector<std::string> names;
+    for (const TextureSetPlan& plan : m_plans)
+        for (const PlannedTexture& texture : plan.files)
+            names.push_back(texture.fileName);
+    return names;
+}
+
+std::string TextureSetExport::describeAll() const
+{
+    std::string text;
+    for (const TextureSetPlan& plan : m_plans) {
+        text += plan.materialName + " (" + m_template.name + "): " + std::to_string(plan.files.size())
+            + " files\n";
+        for (const PlannedTexture& texture : plan.files)
+            text += "  " + describe(texture) + "\n";
+        for (const std::string& skipped : plan.skipped)
+            text += "  (no " + skipped + ": the material does not use it)\n";
+    }
+    return text;
+}
+
+bool TextureSetExport::write(
+    const std::string& folder, bool replace, std::string* error, std::vector<std::string>* written) const
+{
+    const auto fail = [error](const std::string& problem) {
+        if (error)
+            *error = problem;
+        return false;
+    };
+    std::error_code code;
+    const std::filesystem::path path(folder);
+    if (std::filesystem::exists(path, code) && !std::filesystem::is_directory(path, code))
+        return fail(folder + ": is not a folder");
+    std::filesystem::create_directories(path, code);
+    if (code || !std::filesystem::is_directory(path, code))
+        return fail(folder + ": cannot make the folder" + (code ? ": " + code.message() : std::string()));
+    FileSet files(folder);
+    if (!replace)
+        if (const std::vector<std::string> existing = files.existing(fileNames()); !existing.empty())
+            return fail(existing.front() + ": exists");
+    for (std::size_t i = 0; i < m_plans.size(); ++i) {
+        if (!writeTextureSet(m_plans[i], m_sources[i]->material, m_sources[i]->images, files, error)) {
+            files.removeNew();
+            return false;
+        }
+    }
+    if (written)
+        *written = files.writtenPaths();
     return true;
 }
 

@@ -12,6 +12,7 @@
 // sampled bilinearly at the set's texel centres (as the GPU magnifies it); a map of the set's
 // size with no UV transform is copied texel for texel.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -89,5 +90,43 @@ void encodeTexture(const PlannedTexture& texture, std::vector<float>& values);
 // *error naming the file ("<path>: cannot write: No space left on device").
 bool writeTextureSet(const TextureSetPlan& plan, const Material& material, const MaterialMapImages& images,
     FileSet& files, std::string* error);
+
+// A whole export: the sets of several materials of one template, planned together (every map
+// read, once however many slots and materials share it; every file named) before anything is
+// written, then written as one set of files: what `facet export` and the window's File > Export
+// Texture Set run.
+class TextureSetExport {
+public:
+    // Reads the materials' maps (core/MapImageCache) and plans each set. nullopt with *error: a
+    // map that cannot be read ("material 'Steel', roughness: MapImage::load: ...: no such file"),
+    // a plan refused (planTextureSet, prefixed "material 'Steel': "), or two materials naming one
+    // file.
+    static std::optional<TextureSetExport> prepare(const ExportTemplate& exportTemplate,
+        const std::vector<Material>& materials, const TextureSetOptions& options, std::string* error);
+
+    const ExportTemplate& exportTemplate() const { return m_template; }
+    const std::vector<TextureSetPlan>& plans() const { return m_plans; }
+    // Every file name, in writing order.
+    std::vector<std::string> fileNames() const;
+    // What --dry-run prints: per material a heading, a line per file (describe()), the optional
+    // outputs left out.
+    std::string describeAll() const;
+
+    // Writes every file into `folder` (made when missing). Files already there are refused
+    // unless `replace` (checked before the first write: "<path>: exists"). On a failed write the
+    // files this export made are removed and *error names the file. *written gets the paths.
+    bool write(const std::string& folder, bool replace, std::string* error,
+        std::vector<std::string>* written = nullptr) const;
+
+private:
+    struct Source {
+        Material material;
+        std::vector<std::shared_ptr<const MapImage>> keep;
+        MaterialMapImages images {};
+    };
+    ExportTemplate m_template;
+    std::vector<std::shared_ptr<Source>> m_sources; // shared: the images point into `keep`
+    std::vector<TextureSetPlan> m_plans;
+};
 
 } // namespace facet

@@ -13,6 +13,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "FullVolume.h"
+#include "TestAssets.h"
 #include "TestSupport.h"
 #include "core/Project.h"
 
@@ -24,60 +25,6 @@ facet::test::ProcessResult runExport(const QStringList& arguments)
 {
     return facet::test::runWithoutDisplay(
         QStringLiteral(FACET_EXECUTABLE), QStringList {QStringLiteral("export")} + arguments);
-}
-
-// A width x height 8-bit RGB PNG of one colour, written with OpenImageIO directly.
-bool writeMap(const QString& path, int width, int height, const float rgb[3])
-{
-    std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path.toStdString());
-    if (!output
-        || !output->open(path.toStdString(), OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8)))
-        return false;
-    std::vector<float> pixels;
-    for (int i = 0; i < width * height; ++i)
-        pixels.insert(pixels.end(), rgb, rgb + 3);
-    return output->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && output->close();
-}
-
-// The project: "Brick Wall" (base colour 32x16, normal, ORM, sharing one packed file), "Steel"
-// (base colour and roughness), "Gold" (constants).
-QString writeProject(const QString& folder)
-{
-    const float base[3] = {0.6f, 0.3f, 0.2f};
-    const float normal[3] = {0.5f, 0.5f, 1.0f};
-    const float orm[3] = {0.9f, 0.6f, 0.0f};
-    const float grey[3] = {0.4f, 0.4f, 0.4f};
-    if (!writeMap(folder + QStringLiteral("/brick_base.png"), 32, 16, base)
-        || !writeMap(folder + QStringLiteral("/brick_normal.png"), 16, 16, normal)
-        || !writeMap(folder + QStringLiteral("/brick_orm.png"), 16, 16, orm)
-        || !writeMap(folder + QStringLiteral("/steel_base.png"), 8, 8, grey)
-        || !writeMap(folder + QStringLiteral("/steel_rough.png"), 8, 8, grey))
-        return {};
-    facet::Project project;
-    facet::Material brick;
-    brick.name = "Brick Wall";
-    brick.map(facet::MapSlot::BaseColor).path = (folder + QStringLiteral("/brick_base.png")).toStdString();
-    brick.map(facet::MapSlot::Normal).path = (folder + QStringLiteral("/brick_normal.png")).toStdString();
-    for (const auto& [slot, channel] : {std::pair {facet::MapSlot::Occlusion, facet::MapChannel::R},
-             {facet::MapSlot::Roughness, facet::MapChannel::G},
-             {facet::MapSlot::Metallic, facet::MapChannel::B}}) {
-        brick.map(slot).path = (folder + QStringLiteral("/brick_orm.png")).toStdString();
-        brick.map(slot).channel = channel;
-        brick.setFactor(slot, 1.0);
-    }
-    facet::Material steel;
-    steel.name = "Steel";
-    steel.map(facet::MapSlot::BaseColor).path = (folder + QStringLiteral("/steel_base.png")).toStdString();
-    steel.map(facet::MapSlot::Roughness).path = (folder + QStringLiteral("/steel_rough.png")).toStdString();
-    steel.setFactor(facet::MapSlot::Metallic, 1.0);
-    facet::Material gold;
-    gold.name = "Gold";
-    gold.setBaseColor(glm::dvec3(1.0, 0.766, 0.336));
-    gold.setFactor(facet::MapSlot::Metallic, 1.0);
-    project.materials = {brick, steel, gold};
-    const QString path = folder + QStringLiteral("/walls.json");
-    std::string error;
-    return project.save(path.toStdString(), &error) ? path : QString();
 }
 
 QStringList unrealFiles(const char* material)
@@ -120,7 +67,7 @@ private Q_SLOTS:
     void initTestCase()
     {
         QVERIFY(m_dir.isValid());
-        m_project = writeProject(m_dir.path());
+        m_project = facet::test::writeTexturedProject(m_dir.path());
         QVERIFY(!m_project.isEmpty());
     }
 
@@ -258,7 +205,7 @@ private Q_SLOTS:
     void missingMapIsNamed()
     {
         QTemporaryDir copy;
-        const QString project = writeProject(copy.path());
+        const QString project = facet::test::writeTexturedProject(copy.path());
         QVERIFY(QFile::remove(copy.filePath(QStringLiteral("steel_rough.png"))));
         const QString out = copy.filePath(QStringLiteral("out"));
         const facet::test::ProcessResult r = runExport(

@@ -10,6 +10,7 @@
 #include "ui/Document.h"
 #include "ui/DocumentAssets.h"
 #include "ui/EnvironmentDock.h"
+#include "ui/ExportDialog.h"
 #include "ui/LightsDock.h"
 #include "ui/MapLoadStatus.h"
 #include "ui/MaterialDock.h"
@@ -98,7 +99,8 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     m_compareActions = new CompareActions(m_document, m_compareController, central, this);
     menuBar()->insertMenu(m_helpMenuAction, m_compareActions->menu());
     addToolBar(Qt::TopToolBarArea, m_compareActions->toolBar());
-    m_compareView->setEnvironmentChoices([this] { return CompareActions::choicesOf(m_environmentDock->library()); });
+    m_compareView->setEnvironmentChoices(
+        [this] { return CompareActions::choicesOf(m_environmentDock->library()); });
 
     connect(m_viewport, &ViewportWidget::glInitialized, this, &MainWindow::onViewportGLInitialized);
     // Lighting progress and frame statistics of whichever view the central area shows.
@@ -161,6 +163,10 @@ void MainWindow::createFileMenu()
     menu->addSeparator();
     add(tr("&Save"), "saveAction", QKeySequence::Save, &ProjectFileController::save);
     add(tr("Save &As…"), "saveAsAction", QKeySequence::SaveAs, &ProjectFileController::saveAs);
+    menu->addSeparator();
+    QAction* exportAction = menu->addAction(tr("&Export Texture Set…"), this, &MainWindow::exportTextureSet);
+    exportAction->setObjectName(QStringLiteral("exportTextureSetAction"));
+    exportAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
     menu->addSeparator();
     m_relinkAction = add(tr("Re&link Missing Files…"), "relinkAction", QKeySequence(),
         &ProjectFileController::showMissingFilesDialog);
@@ -407,6 +413,13 @@ void MainWindow::updateTitle()
 {
     setWindowTitle(QStringLiteral("%1[*] — Facet").arg(m_document->displayName()));
     setWindowModified(m_document->isModified());
+}
+
+void MainWindow::exportTextureSet()
+{
+    ExportDialog dialog(m_document->project(), this);
+    connect(&dialog, &ExportDialog::exported, this, &MainWindow::showStatusMessage);
+    dialog.exec();
 }
 
 void MainWindow::showStatusMessage(const QString& message)

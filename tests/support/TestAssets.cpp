@@ -2,6 +2,10 @@
 
 #include "GltfWriter.h"
 
+#include "core/Project.h"
+
+#include <OpenImageIO/imageio.h>
+
 #include <QJsonArray>
 #include <QJsonObject>
 
@@ -12,6 +16,19 @@
 namespace facet::test {
 
 namespace {
+
+// A width x height 8-bit RGB PNG of one colour, written with OpenImageIO directly.
+bool writeUniformMap(const QString& path, int width, int height, const float rgb[3])
+{
+    std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path.toStdString());
+    if (!output
+        || !output->open(path.toStdString(), OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8)))
+        return false;
+    std::vector<float> pixels;
+    for (int i = 0; i < width * height; ++i)
+        pixels.insert(pixels.end(), rgb, rgb + 3);
+    return output->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && output->close();
+}
 
 QJsonObject material(
     const QString& name, std::initializer_list<double> baseColor, double metallic, double roughness)
@@ -153,6 +170,47 @@ bool writeShowcaseAsset(const QString& path, QString* error)
     w.addNode(sphere(glassMaterial, QStringLiteral("Glass")), placed({0.7, -0.3, 0.35}, {0.5, 0.5, 0.5}));
     w.addNode(sphere(lampMaterial, QStringLiteral("Lamp")), placed({0.45, 0.55, -0.35}, {0.25, 0.25, 0.25}));
     return w.write(path, GltfWriter::BufferStorage::Glb, error);
+}
+
+// The project: "Brick Wall" (base colour 32x16, normal, ORM, sharing one packed file), "Steel"
+// (base colour and roughness), "Gold" (constants).
+QString writeTexturedProject(const QString& folder)
+{
+    const float base[3] = {0.6f, 0.3f, 0.2f};
+    const float normal[3] = {0.5f, 0.5f, 1.0f};
+    const float orm[3] = {0.9f, 0.6f, 0.0f};
+    const float grey[3] = {0.4f, 0.4f, 0.4f};
+    if (!writeUniformMap(folder + QStringLiteral("/brick_base.png"), 32, 16, base)
+        || !writeUniformMap(folder + QStringLiteral("/brick_normal.png"), 16, 16, normal)
+        || !writeUniformMap(folder + QStringLiteral("/brick_orm.png"), 16, 16, orm)
+        || !writeUniformMap(folder + QStringLiteral("/steel_base.png"), 8, 8, grey)
+        || !writeUniformMap(folder + QStringLiteral("/steel_rough.png"), 8, 8, grey))
+        return {};
+    facet::Project project;
+    facet::Material brick;
+    brick.name = "Brick Wall";
+    brick.map(facet::MapSlot::BaseColor).path = (folder + QStringLiteral("/brick_base.png")).toStdString();
+    brick.map(facet::MapSlot::Normal).path = (folder + QStringLiteral("/brick_normal.png")).toStdString();
+    for (const auto& [slot, channel] : {std::pair {facet::MapSlot::Occlusion, facet::MapChannel::R},
+             {facet::MapSlot::Roughness, facet::MapChannel::G},
+             {facet::MapSlot::Metallic, facet::MapChannel::B}}) {
+        brick.map(slot).path = (folder + QStringLiteral("/brick_orm.png")).toStdString();
+        brick.map(slot).channel = channel;
+        brick.setFactor(slot, 1.0);
+    }
+    facet::Material steel;
+    steel.name = "Steel";
+    steel.map(facet::MapSlot::BaseColor).path = (folder + QStringLiteral("/steel_base.png")).toStdString();
+    steel.map(facet::MapSlot::Roughness).path = (folder + QStringLiteral("/steel_rough.png")).toStdString();
+    steel.setFactor(facet::MapSlot::Metallic, 1.0);
+    facet::Material gold;
+    gold.name = "Gold";
+    gold.setBaseColor(glm::dvec3(1.0, 0.766, 0.336));
+    gold.setFactor(facet::MapSlot::Metallic, 1.0);
+    project.materials = {brick, steel, gold};
+    const QString path = folder + QStringLiteral("/walls.json");
+    std::string error;
+    return project.save(path.toStdString(), &error) ? path : QString();
 }
 
 } // namespace facet::test

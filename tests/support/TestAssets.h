@@ -24,4 +24,10 @@ struct TwoMaterialAsset {
 // "Base Top" with its own material "Rubber"), five materials, textures embedded in the .glb.
 bool writeShowcaseAsset(const QString& path, QString* error);
 
+// A project for export tests, written into `folder` with its map files (uniform 8-bit PNGs):
+// "Brick Wall" (base colour 32x16, normal 16x16, one ORM file read by occlusion R, roughness G and
+// metallic B), "Steel" (base colour and roughness maps, 8x8) and "Gold" (constants). Returns the
+// project's path, empty on failure.
+QString writeTexturedProject(const QString& folder);
+
 } // namespace facet::test
