@@ -81,7 +81,7 @@ ExportDialog::ExportDialog(const Project& project, QWidget* parent)
     m_preview->setObjectName(QStringLiteral("exportPreview"));
     m_preview->setReadOnly(true);
     m_preview->setLineWrapMode(QPlainTextEdit::NoWrap);
-    m_preview->setMinimumSize(620, 180);
+    m_preview->setMinimumSize(760, 180); // a dry-run line of a 2K set fits
     m_status = new QLabel(this);
     m_status->setWordWrap(true);
 
