@@ -5,11 +5,15 @@
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
+#include <QDir>
+#include <QFileInfo>
 
 #include <chrono>
 #include <cstdio>
 
 #include "core/ExportTemplate.h"
+#include "core/GltfExport.h"
+#include "core/ProjectAssets.h"
 
 namespace facet {
 
@@ -28,9 +32,8 @@ struct Options {
     QCommandLineOption help {
         {QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Displays this help.")};
     QCommandLineOption format {QStringLiteral("format"),
-        QStringLiteral("What to write: a built-in texture-set template (%1) or a template file "
-                       "(TEMPLATE.json, docs/export.md). gltf and glb (a glTF 2.0 asset) are not in this "
-                       "version.")
+        QStringLiteral("What to write: gltf or glb (a glTF 2.0 asset: the materials on the mesh), a built-in "
+                       "texture-set template (%1) or a template file (TEMPLATE.json, docs/export.md).")
             .arg(builtinList()),
         QStringLiteral("format")};
     QCommandLineOption material {QStringLiteral("material"),
@@ -46,12 +49,17 @@ struct Options {
                        "format must hold it."),
         QStringLiteral("8|16|32")};
     QCommandLineOption mesh {QStringLiteral("mesh"),
-        QStringLiteral("The mesh a glTF export carries (gltf and glb only)."), QStringLiteral("NAME|PATH")};
+        QStringLiteral(
+            "The mesh a glTF asset carries (gltf and glb only): a built-in mesh (sphere, shaderball, "
+            "...) or a mesh file (default: the project's)."),
+        QStringLiteral("NAME|PATH")};
     QCommandLineOption dryRun {QStringLiteral("dry-run"),
         QStringLiteral("List the files and the source of each channel; write nothing.")};
     QCommandLineOption force {QStringLiteral("force"), QStringLiteral("Replace files already in OUT_DIR.")};
     QCommandLineOption output {{QStringLiteral("o"), QStringLiteral("output")},
-        QStringLiteral("The folder to write into (made if missing)."), QStringLiteral("dir")};
+        QStringLiteral("The folder to write into (made if missing); for gltf and glb also the asset's path "
+                       "(.gltf, .glb)."),
+        QStringLiteral("path")};
 
     Options()
     {
@@ -112,6 +120,78 @@ std::optional<std::vector<int>> selectMaterials(
 
 } // namespace
 
+int ExportCommand::runGltf(const ExportRequest& request)
+{
+    const auto fail = [](const std::string& message) {
+        std::fprintf(stderr, "facet export: %s\n", message.c_str());
+        return kExitFailure;
+    };
+    const auto start = std::chrono::steady_clock::now();
+    QString inputError;
+    const std::optional<Project> project
+        = commandInputProject(request.input, QStringLiteral("export"), &inputError);
+    if (!project)
+        return fail(inputError.toStdString());
+    std::string error;
+    const std::optional<std::vector<int>> selected = selectMaterials(*project, request.material, &error);
+    if (!selected)
+        return fail(error);
+    std::string warning;
+    const std::optional<Mesh> mesh
+        = loadViewMesh(request.mesh.empty() ? project->view.mesh : request.mesh, &error, &warning);
+    if (!warning.empty())
+        std::fprintf(stderr, "facet export: %s\n", warning.c_str());
+    if (!mesh)
+        return fail(error);
+    std::vector<Material> materials;
+    std::vector<int> partMaterials;
+    if (request.material) {
+        // One material, on every part.
+        materials.push_back(project->materials[std::size_t(selected->front())]);
+    } else {
+        materials = project->materials;
+        for (std::size_t part = 0; part < mesh->subMeshes.size(); ++part)
+            partMaterials.push_back(project->materialOfPart(part));
+    }
+
+    // -o: the asset's path, or a folder to hold "<input's name>.gltf".
+    const bool binary = request.format == "glb";
+    std::string path = request.outputDirectory;
+    const QString out = QString::fromStdString(path);
+    if (!out.endsWith(QStringLiteral(".gltf"), Qt::CaseInsensitive)
+        && !out.endsWith(QStringLiteral(".glb"), Qt::CaseInsensitive)) {
+        const QString stem = request.input.isEmpty() ? QStringLiteral("facet-material")
+                                                     : QFileInfo(request.input.first()).completeBaseName();
+        path = (QDir(out).filePath(stem + (binary ? QStringLiteral(".glb") : QStringLiteral(".gltf"))))
+                   .toStdString();
+    }
+    GltfExportOptions options;
+    options.binary = binary;
+    options.textures = request.options;
+    options.generator = "Facet " FACET_VERSION;
+    if (request.dryRun) {
+        const std::vector<std::string> files = gltfAssetFiles(path, materials, options, &error);
+        if (files.empty())
+            return fail(error);
+        std::printf("%s (glTF 2.0%s): %zu material%s on '%s', %zu files\n", path.c_str(),
+            binary ? ", binary" : "", materials.size(), materials.size() == 1 ? "" : "s", mesh->name.c_str(),
+            files.size());
+        for (const std::string& file : files)
+            std::printf("  %s\n", file.c_str());
+        return 0;
+    }
+    std::vector<std::string> written;
+    if (!writeGltfAsset(path, *mesh, partMaterials, materials, options, request.force, &written, &error)) {
+        if (error.ends_with(": exists"))
+            error += " (use --force to replace it)";
+        return fail(error);
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf("facet export: wrote %s (%zu file%s, %zu material%s, %.2f s)\n", path.c_str(), written.size(),
+        written.size() == 1 ? "" : "s", materials.size(), materials.size() == 1 ? "" : "s", seconds);
+    return 0;
+}
+
 QString ExportCommand::helpText()
 {
     Options options;
@@ -133,23 +213,30 @@ std::optional<ExportRequest> ExportCommand::parse(const QStringList& arguments, 
         return std::nullopt;
     }
     const QString format = o.parser.value(o.format);
-    if (format == QStringLiteral("gltf") || format == QStringLiteral("glb")) {
-        *error = QStringLiteral(
-            "--format %1: writing a glTF asset is not in this version; --format gltf-textures writes a "
-            "material's textures in glTF's conventions")
-                     .arg(format);
-        return std::nullopt;
-    }
+    const bool gltf = format == QStringLiteral("gltf") || format == QStringLiteral("glb");
     const bool isBuiltin = ExportTemplate::builtin(format.toStdString()).has_value();
-    if (!isBuiltin && !format.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
-        *error = QStringLiteral("--format: '%1' is not %2, or a template file (.json)")
+    if (!gltf && !isBuiltin && !format.endsWith(QStringLiteral(".json"), Qt::CaseInsensitive)) {
+        *error = QStringLiteral("--format: '%1' is not gltf, glb, %2, or a template file (.json)")
                      .arg(format, builtinList());
         return std::nullopt;
     }
     request.format = format.toStdString();
     if (o.parser.isSet(o.mesh)) {
-        *error = QStringLiteral("--mesh: only a glTF export carries a mesh; a texture set has none");
-        return std::nullopt;
+        if (!gltf) {
+            *error = QStringLiteral(
+                "--mesh: only a glTF asset (gltf, glb) carries a mesh; a texture set has none");
+            return std::nullopt;
+        }
+        request.mesh = o.parser.value(o.mesh).toStdString();
+    }
+    if (gltf && o.parser.isSet(o.output)) {
+        const QString out = o.parser.value(o.output);
+        const bool gltfFile = out.endsWith(QStringLiteral(".gltf"), Qt::CaseInsensitive);
+        const bool glbFile = out.endsWith(QStringLiteral(".glb"), Qt::CaseInsensitive);
+        if ((gltfFile && format == QStringLiteral("glb")) || (glbFile && format == QStringLiteral("gltf"))) {
+            *error = QStringLiteral("-o '%1': --format %2 writes a .%2 file").arg(out, format);
+            return std::nullopt;
+        }
     }
     if (o.parser.isSet(o.material))
         request.material = o.parser.value(o.material).toStdString();
@@ -183,6 +270,8 @@ int ExportCommand::run(const ExportRequest& request)
     };
     const auto start = std::chrono::steady_clock::now();
     std::string error;
+    if (request.format == "gltf" || request.format == "glb")
+        return runGltf(request);
     std::optional<ExportTemplate> exportTemplate = ExportTemplate::builtin(request.format);
     if (!exportTemplate)
         exportTemplate = ExportTemplate::load(request.format, &error);

@@ -10,7 +10,7 @@
 // core/TextureSetExport. Every file is written atomically; nothing in OUT_DIR is replaced without
 // --force (checked before anything is written), and a failed export removes the files it had
 // made. --dry-run lists the files and where each channel comes from, and writes nothing.
-// `--format gltf|glb` (a glTF 2.0 asset) is named but not in this version. docs/export.md.
+// docs/export.md.
 
 #include <optional>
 #include <string>
@@ -24,12 +24,13 @@ namespace facet {
 
 struct ExportRequest {
     QStringList input; // the positional argument (none: the default project)
-    std::string format; // a built-in template's id or a template file's path
+    std::string format; // "gltf", "glb", a built-in template's id or a template file's path
+    std::string mesh; // --mesh (gltf and glb): a built-in mesh name or a mesh file; empty: the project's
     std::optional<std::string> material; // a name or an index; all when missing
     TextureSetOptions options;
     bool dryRun = false;
     bool force = false;
-    std::string outputDirectory;
+    std::string outputDirectory; // a folder, or for gltf and glb also the asset's path
 };
 
 class ExportCommand {
@@ -45,6 +46,9 @@ public:
     // 1 when the input, a map or the template cannot be read, a material is not there, a file
     // exists (without --force) or cannot be written (named).
     static int run(const ExportRequest& request);
+
+private:
+    static int runGltf(const ExportRequest& request);
 };
 
 } // namespace facet

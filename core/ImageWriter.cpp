@@ -56,6 +56,21 @@ const char* toString(FileSampleFormat format)
 bool writeImageFile(const std::string& path, const ImageFileSpec& spec, const float* pixels,
     const char* function, std::string* error)
 {
+    std::vector<unsigned char> encoded;
+    if (!encodeImageFile(path, spec, pixels, function, &encoded, error))
+        return false;
+    std::string problem;
+    if (!writeFileAtomically(path,
+            std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()), &problem)) {
+        setImageError(error, function, path, "cannot write: " + problem);
+        return false;
+    }
+    return true;
+}
+
+bool encodeImageFile(const std::string& path, const ImageFileSpec& spec, const float* pixels,
+    const char* function, std::vector<unsigned char>* result, std::string* error)
+{
     if (spec.width <= 0 || spec.height <= 0 || spec.channels < 1 || spec.channels > 4 || !pixels) {
         setImageError(error, function, path, "the image is empty");
         return false;
@@ -145,14 +160,7 @@ bool writeImageFile(const std::string& path, const ImageFileSpec& spec, const fl
             return false;
         }
         output.reset();
-        buffer = {};
-
-        std::string problem;
-        if (!writeFileAtomically(path,
-                std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()), &problem)) {
-            setImageError(error, function, path, "cannot write: " + problem);
-            return false;
-        }
+        *result = std::move(encoded);
         return true;
     } catch (...) {
         setImageErrorFromException(error, function, path, "writing");

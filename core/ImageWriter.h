@@ -45,5 +45,9 @@ struct ImageFileSpec {
 // message), or the write (e.g. "cannot write: No space left on device").
 bool writeImageFile(const std::string& path, const ImageFileSpec& spec, const float* pixels,
     const char* function, std::string* error);
+// The same encoding into memory (the format still chosen by `path`'s extension, nothing
+// written): an image embedded in a .glb (core/GltfExport).
+bool encodeImageFile(const std::string& path, const ImageFileSpec& spec, const float* pixels,
+    const char* function, std::vector<unsigned char>* encoded, std::string* error);
 
 } // namespace facet

@@ -316,6 +316,22 @@ void encodeTexture(const PlannedTexture& texture, std::vector<float>& values)
     }
 }
 
+ImageFileSpec textureFileSpec(const PlannedTexture& texture)
+{
+    ImageFileSpec spec;
+    spec.width = texture.width;
+    spec.height = texture.height;
+    spec.channels = int(texture.output.channels.size());
+    spec.sampleFormat = sampleFormatOf(texture.output);
+    spec.encoding = texture.output.colorSpace;
+    spec.tagLinear = true;
+    // Alpha only where the last channel is the base colour's coverage; a packed mask's fourth
+    // channel (Unity's smoothness) is data.
+    spec.alpha = (spec.channels == 2 || spec.channels == 4)
+        && texture.output.channels.back().source == ExportSource::BaseColorA;
+    return spec;
+}
+
 bool writeTextureSet(const TextureSetPlan& plan, const Material& material, const MaterialMapImages& images,
     FileSet& files, std::string* error)
 {
@@ -323,17 +339,7 @@ bool writeTextureSet(const TextureSetPlan& plan, const Material& material, const
     // the render of a 2K file) while the next one renders on every core.
     std::string problem;
     const auto write = [&](const PlannedTexture& texture, std::vector<float> values) {
-        ImageFileSpec spec;
-        spec.width = texture.width;
-        spec.height = texture.height;
-        spec.channels = int(texture.output.channels.size());
-        spec.sampleFormat = sampleFormatOf(texture.output);
-        spec.encoding = texture.output.colorSpace;
-        spec.tagLinear = true;
-        // Alpha only where the last channel is the base colour's coverage; a packed mask's fourth
-        // channel (Unity's smoothness) is data.
-        spec.alpha = (spec.channels == 2 || spec.channels == 4)
-            && texture.output.channels.back().source == ExportSource::BaseColorA;
+        const ImageFileSpec spec = textureFileSpec(texture);
         files.aboutToWrite(texture.fileName);
         if (!writeImageFile(files.path(texture.fileName), spec, values.data(), "export", &problem))
             return false;
@@ -400,6 +406,15 @@ std::optional<TextureSetExport> TextureSetExport::prepare(const ExportTemplate& 
         job.m_plans.push_back(std::move(*plan));
     }
     return job;
+}
+
+std::vector<float> TextureSetExport::fileValues(std::size_t plan, std::size_t index) const
+{
+    const PlannedTexture& texture = m_plans[plan].files[index];
+    std::vector<float> values
+        = renderTexture(texture, m_plans[plan], m_sources[plan]->material, m_sources[plan]->images);
+    encodeTexture(texture, values);
+    return values;
 }
 
 std::vector<std::string> TextureSetExport::fileNames() const

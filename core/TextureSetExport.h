@@ -22,6 +22,7 @@
 
 #include "core/ExportTemplate.h"
 #include "core/FileSet.h"
+#include "core/ImageWriter.h"
 #include "core/Material.h"
 #include "core/MaterialInputs.h"
 
@@ -85,6 +86,9 @@ std::vector<float> renderTexture(const PlannedTexture& texture, const TextureSet
 // colour channels: the first of 1 or 2, the first three of 3 or 4; never alpha or constants).
 void encodeTexture(const PlannedTexture& texture, std::vector<float>& values);
 
+// How a planned texture is stored (channels, sample format, colour tag, alpha).
+ImageFileSpec textureFileSpec(const PlannedTexture& texture);
+
 // Renders, encodes and writes each file of `plan` into `files` (atomically, each registered with
 // the set so that a caller can remove the set's new files when a later write fails). False with
 // *error naming the file ("<path>: cannot write: No space left on device").
@@ -106,6 +110,8 @@ public:
 
     const ExportTemplate& exportTemplate() const { return m_template; }
     const std::vector<TextureSetPlan>& plans() const { return m_plans; }
+    // The stored values of file `index` of plan `plan` (renderTexture, then encodeTexture).
+    std::vector<float> fileValues(std::size_t plan, std::size_t index) const;
     // Every file name, in writing order.
     std::vector<std::string> fileNames() const;
     // What --dry-run prints: per material a heading, a line per file (describe()), the optional

@@ -30,12 +30,26 @@ done
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "install-deps: all ${#packages[@]} packages present"
-  exit 0
+else
+  sudo=""
+  if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+  echo "install-deps: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  $sudo apt-get update -qq
+  $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" </dev/null
 fi
 
-sudo=""
-if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
-echo "install-deps: installing ${missing[*]}"
-export DEBIAN_FRONTEND=noninteractive
-$sudo apt-get update -qq
-$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" </dev/null
+# The Khronos glTF-Validator (npm), which the tests run on every glTF asset facet export writes
+# (tests/tools/validate-gltf.cjs). Into the user's data folder, no root needed; $FACET_TOOLS_DIR
+# overrides (CMake's FACET_TOOLS_DIR must then say the same).
+validator_version=2.0.0-dev.3.10
+tools=${FACET_TOOLS_DIR:-${XDG_DATA_HOME:-$HOME/.local/share}/facet/tools}
+if grep -q "\"version\": \"$validator_version\"" "$tools/node_modules/gltf-validator/package.json" 2>/dev/null; then
+  echo "install-deps: gltf-validator $validator_version present in $tools"
+else
+  echo "install-deps: installing gltf-validator $validator_version into $tools"
+  mkdir -p "$tools"
+  npm install --silent --no-audit --no-fund --prefix "$tools" "gltf-validator@$validator_version" >/dev/null \
+    || echo "install-deps: warning: 'npm install gltf-validator@$validator_version' failed (no network?);" \
+      "Facet builds and runs without it, the glTF export tests need it" >&2
+fi

@@ -17,24 +17,41 @@ namespace facet::test {
 QString assetsDir()
 {
     const QByteArray fromEnvironment = qgetenv("FACET_ASSETS_DIR");
-    return fromEnvironment.isEmpty() ? QStringLiteral(FACET_ASSETS_DIR) : QString::fromLocal8Bit(fromEnvironment);
+    return fromEnvironment.isEmpty() ? QStringLiteral(FACET_ASSETS_DIR)
+                                     : QString::fromLocal8Bit(fromEnvironment);
 }
 
-static QString existing(const QString& path) { return QFileInfo::exists(path) ? path : QString(); }
+static QString existing(const QString& path)
+{
+    return QFileInfo::exists(path) ? path : QString();
+}
 
-QString hdriPath(const QString& name) { return existing(assetsDir() + QStringLiteral("/hdri/") + name + QStringLiteral(".exr")); }
-QString modelPath(const QString& name) { return existing(assetsDir() + QStringLiteral("/models/") + name + QStringLiteral(".glb")); }
-QString sourceDir() { return QStringLiteral(FACET_SOURCE_DIR); }
+QString hdriPath(const QString& name)
+{
+    return existing(assetsDir() + QStringLiteral("/hdri/") + name + QStringLiteral(".exr"));
+}
+QString modelPath(const QString& name)
+{
+    return existing(assetsDir() + QStringLiteral("/models/") + name + QStringLiteral(".glb"));
+}
+QString sourceDir()
+{
+    return QStringLiteral(FACET_SOURCE_DIR);
+}
 
 QString outputDir()
 {
     const QByteArray fromEnvironment = qgetenv("FACET_TEST_OUTPUT_DIR");
-    const QString dir = fromEnvironment.isEmpty() ? QStringLiteral(FACET_TEST_OUTPUT_DIR) : QString::fromLocal8Bit(fromEnvironment);
+    const QString dir = fromEnvironment.isEmpty() ? QStringLiteral(FACET_TEST_OUTPUT_DIR)
+                                                  : QString::fromLocal8Bit(fromEnvironment);
     QDir().mkpath(dir);
     return dir;
 }
 
-bool runningInCi() { return qgetenv("CI") == "true"; }
+bool runningInCi()
+{
+    return qgetenv("CI") == "true";
+}
 
 void forgetDisplayServer()
 {
@@ -109,8 +126,8 @@ std::string describe(const glm::dvec3& v, int digits)
     return text;
 }
 
-ProcessResult runWithoutDisplay(const QString& executable, const QStringList& arguments,
-                                const QProcessEnvironment& extra)
+ProcessResult runWithoutDisplay(
+    const QString& executable, const QStringList& arguments, const QProcessEnvironment& extra)
 {
     QProcess process;
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
@@ -143,6 +160,32 @@ QStringList strings(std::initializer_list<const char*> items)
     for (const char* item : items)
         list.append(QString::fromUtf8(item));
     return list;
+}
+
+GltfValidation validateGltf(const QString& path)
+{
+    GltfValidation result;
+    const QString validator = QStringLiteral(FACET_GLTF_VALIDATOR);
+    if (!QFileInfo::exists(validator + QStringLiteral("/package.json"))) {
+        result.report = QStringLiteral(
+            "the glTF validator is not installed in %1 (packaging/install-deps.sh installs it)")
+                            .arg(validator);
+        return result;
+    }
+    QProcess node;
+    node.start(QStringLiteral("node"),
+        {sourceDir() + QStringLiteral("/tests/tools/validate-gltf.cjs"), validator, path});
+    if (!node.waitForFinished(120000) || node.exitStatus() != QProcess::NormalExit) {
+        result.report = QStringLiteral("node did not run or finish: ") + node.errorString();
+        return result;
+    }
+    result.report
+        = QString::fromUtf8(node.readAllStandardOutput()) + QString::fromUtf8(node.readAllStandardError());
+    if (node.exitCode() == 2)
+        return result;
+    result.ran = true;
+    result.clean = node.exitCode() == 0;
+    return result;
 }
 
 } // namespace facet::test

@@ -27,6 +27,17 @@ QString outputDir();
 // True when running under CI (CI=true): missing sample data is then a failure, not a skip.
 bool runningInCi();
 
+// The Khronos glTF-Validator's verdict on a .gltf or .glb (tests/tools/validate-gltf.cjs, run by
+// node with the validator packaging/install-deps.sh installs): `ran` false when node or the
+// validator is missing (`report` says what); `clean` when it found no error and no warning;
+// `report` is its JSON report, for the failure message.
+struct GltfValidation {
+    bool ran = false;
+    bool clean = false;
+    QString report;
+};
+GltfValidation validateGltf(const QString& path);
+
 // GL tests call this from initMain(), before any Q*Application: they must get their surfaceless
 // EGL context with no display server at all, as the headless commands do.
 void forgetDisplayServer();
@@ -41,7 +52,7 @@ struct ProcessResult {
 // WAYLAND_DISPLAY removed from the environment), plus the variables in `extra`. Waits up to five
 // minutes.
 ProcessResult runWithoutDisplay(const QString& executable, const QStringList& arguments,
-                                const QProcessEnvironment& extra = QProcessEnvironment());
+    const QProcessEnvironment& extra = QProcessEnvironment());
 
 // Writes a width x width/2 float EXR of constant `radiance` (R = G = B) through OpenImageIO (not
 // core's Image::save, so that a bug there cannot hide one in loading), making its folder. For
@@ -63,14 +74,31 @@ std::string describe(const glm::dvec3& v, int digits = 6);
 } // namespace facet::test
 
 // Skips the test (locally) or fails it (CI) when a sample-data file is missing.
-#define FACET_REQUIRE_ASSET(path, what)                                                              \
-    do {                                                                                             \
-        if ((path).isEmpty()) {                                                                      \
-            const QByteArray message = QByteArray("sample data missing: ") + (what)                  \
-                + " (run packaging/fetch-assets.sh)";                                                \
-            if (facet::test::runningInCi())                                                          \
-                QFAIL(message.constData());                                                          \
-            else                                                                                     \
-                QSKIP(message.constData());                                                          \
-        }                                                                                            \
+#define FACET_REQUIRE_ASSET(path, what)                                                                      \
+    do {                                                                                                     \
+        if ((path).isEmpty()) {                                                                              \
+            const QByteArray message                                                                         \
+                = QByteArray("sample data missing: ") + (what) + " (run packaging/fetch-assets.sh)";         \
+            if (facet::test::runningInCi())                                                                  \
+                QFAIL(message.constData());                                                                  \
+            else                                                                                             \
+                QSKIP(message.constData());                                                                  \
+        }                                                                                                    \
+    } while (false)
+
+// Fails the test when the glTF at `path` has validator errors or warnings (the report attached);
+// when the validator cannot run: skips locally, fails under CI=true (where install-deps.sh ran).
+#define FACET_REQUIRE_VALID_GLTF(path)                                                                       \
+    do {                                                                                                     \
+        const facet::test::GltfValidation validation = facet::test::validateGltf(path);                      \
+        if (!validation.ran) {                                                                               \
+            const QByteArray why = "cannot run the glTF validator: " + validation.report.toLocal8Bit();      \
+            if (facet::test::runningInCi())                                                                  \
+                QFAIL(why.constData());                                                                      \
+            else                                                                                             \
+                QSKIP(why.constData());                                                                      \
+        }                                                                                                    \
+        if (!validation.clean)                                                                               \
+            QFAIL(qPrintable(QStringLiteral("%1: the glTF validator reports errors or warnings:\n%2")        \
+                                 .arg(path, validation.report)));                                            \
     } while (false)

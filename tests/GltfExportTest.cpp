@@ -1,0 +1,333 @@
+// core/GltfExport: materials on a mesh written as a glTF 2.0 asset (.gltf with its .bin and
+// textures, and .glb), one row per feature: constants only; every map (packed ORM, DirectX normal
+// at strength 2, emissive with strength, alpha); a UV transform the maps share (kept as
+// KHR_texture_transform) and transforms that differ (baked); IOR; MASK and BLEND; single-sided;
+// two materials of one name. Each file passes the Khronos glTF-Validator with no error and no
+// warning, and imports back (core/AssetProject projectFromAsset) with the same parameters and the
+// same material inputs at every texel (0.5/255 for data and sRGB colour, 2/255 for the normal).
+
+#include <cmath>
+#include <memory>
+
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+#include <QtTest/QTest>
+
+#include <glm/geometric.hpp>
+
+#include "TestSupport.h"
+#include "core/AssetProject.h"
+#include "core/GltfExport.h"
+#include "core/GltfImport.h"
+#include "core/MapImage.h"
+#include "core/MaterialInputs.h"
+#include "core/MeshPrimitives.h"
+#include "core/ProjectAssets.h"
+#include "core/ToneMap.h"
+
+using namespace facet;
+
+namespace {
+
+// A 16x8 8-bit map, every texel and channel different.
+void writeVariedPng(const QString& path, int seed, int channels)
+{
+    Image image(16, 8);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 16; ++x)
+            for (int c = 0; c < 4; ++c)
+                image.at(x, y)[c] = c < channels
+                    ? float(((x * 13 + y * 29 + c * 71 + seed * 37) % 200) + 30) / 255.0f
+                    : 1.0f;
+    image.setEncoding(ColorEncoding::Linear);
+    std::string error;
+    if (!image.save(path.toStdString(), &error, channels == 4))
+        qFatal("%s", error.c_str());
+}
+
+// A 16x8 normal map of unit normals tilted up to about 30 degrees, each texel its own, encoded
+// n * 0.5 + 0.5 (as normal maps are: the shader renormalises, so only unit normals are
+// meaningful to compare between texels).
+void writeUnitNormalPng(const QString& path)
+{
+    Image image(16, 8);
+    for (int y = 0; y < 8; ++y) {
+        for (int x = 0; x < 16; ++x) {
+            const glm::vec3 n = glm::normalize(glm::vec3(float((x * 7 + y * 3) % 11) / 10.0f - 0.5f,
+                float((x * 5 + y * 9) % 13) / 12.0f - 0.5f, 1.0f));
+            image.at(x, y) = glm::vec4(n * 0.5f + 0.5f, 1.0f);
+        }
+    }
+    image.setEncoding(ColorEncoding::Linear);
+    std::string error;
+    if (!image.save(path.toStdString(), &error, false))
+        qFatal("%s", error.c_str());
+}
+
+Material texturedMaterial(const QString& folder)
+{
+    writeVariedPng(folder + QStringLiteral("/base.png"), 1, 4);
+    writeUnitNormalPng(folder + QStringLiteral("/normal.png"));
+    writeVariedPng(folder + QStringLiteral("/orm.png"), 3, 3);
+    writeVariedPng(folder + QStringLiteral("/emissive.png"), 4, 3);
+    Material m;
+    m.name = "Painted Metal";
+    m.map(MapSlot::BaseColor).path = (folder + QStringLiteral("/base.png")).toStdString();
+    m.setBaseColor(glm::dvec3(0.9, 0.8, 1.0), 0.9);
+    m.map(MapSlot::Normal).path = (folder + QStringLiteral("/normal.png")).toStdString();
+    m.map(MapSlot::Normal).flipGreen = true;
+    m.setFactor(MapSlot::Normal, 2.0);
+    for (const auto& [slot, channel] : {std::pair {MapSlot::Occlusion, MapChannel::R},
+             {MapSlot::Roughness, MapChannel::G}, {MapSlot::Metallic, MapChannel::B}}) {
+        m.map(slot).path = (folder + QStringLiteral("/orm.png")).toStdString();
+        m.map(slot).channel = channel;
+    }
+    m.setFactor(MapSlot::Occlusion, 0.7);
+    m.setFactor(MapSlot::Roughness, 0.8);
+    m.setFactor(MapSlot::Metallic, 1.0);
+    m.map(MapSlot::Emissive).path = (folder + QStringLiteral("/emissive.png")).toStdString();
+    m.map(MapSlot::Emissive).colorSpace = ColorEncoding::SRGB;
+    m.map(MapSlot::Emissive).factor = glm::dvec4(1.0, 0.5, 0.25, 1.0);
+    m.emissiveStrength = 4.0;
+    return m;
+}
+
+std::unique_ptr<MapImage> loadMap(const std::string& path)
+{
+    std::string error;
+    std::optional<MapImage> image = MapImage::load(path, &error);
+    if (!image)
+        qFatal("%s", error.c_str());
+    return std::make_unique<MapImage>(std::move(*image));
+}
+
+struct Loaded {
+    std::vector<std::unique_ptr<MapImage>> keep;
+    MaterialMapImages images {};
+};
+Loaded loadMaps(const Material& material)
+{
+    Loaded loaded;
+    for (const MapSlot slot : kAllMapSlots) {
+        if (!material.map(slot).hasTexture())
+            continue;
+        loaded.keep.push_back(loadMap(material.map(slot).path));
+        loaded.images[std::size_t(slot)] = loaded.keep.back().get();
+    }
+    return loaded;
+}
+
+} // namespace
+
+class GltfExportTest : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void textureTransformRoundTrip()
+    {
+        // toGltfTextureTransform inverts the importer's conversion.
+        for (const UvTransform& uv : {UvTransform {{2.0, 3.0}, {0.25, -0.5}, 30.0},
+                 UvTransform {{1.0, 1.0}, {0.1, 0.2}, 0.0}, UvTransform {{0.5, 4.0}, {0.0, 0.0}, -90.0}}) {
+            const GltfTextureTransform t = toGltfTextureTransform(uv);
+            const UvTransform back = gltfTextureTransform(t.offset, t.rotation, t.scale);
+            QVERIFY(glm::length(back.scale - uv.scale) < 1e-12);
+            QVERIFY(glm::length(back.offset - uv.offset) < 1e-12);
+            QVERIFY(std::abs(back.rotationDegrees - uv.rotationDegrees) < 1e-9);
+        }
+    }
+
+    void roundTrip_data()
+    {
+        QTest::addColumn<QString>("feature");
+        QTest::addColumn<bool>("binary");
+        for (const char* feature : {"constants", "every map", "shared transform", "different transforms",
+                 "ior", "mask", "blend", "single-sided", "two of one name"}) {
+            QTest::newRow(qPrintable(QStringLiteral("%1, .gltf").arg(QLatin1String(feature))))
+                << QString::fromLatin1(feature) << false;
+            QTest::newRow(qPrintable(QStringLiteral("%1, .glb").arg(QLatin1String(feature))))
+                << QString::fromLatin1(feature) << true;
+        }
+    }
+
+    void roundTrip()
+    {
+        QFETCH(QString, feature);
+        QFETCH(bool, binary);
+        QTemporaryDir dir;
+        std::vector<Material> materials;
+        if (feature == QStringLiteral("constants")) {
+            Material gold;
+            gold.name = "Gold";
+            gold.setBaseColor(glm::dvec3(1.0, 0.766, 0.336));
+            gold.setFactor(MapSlot::Metallic, 1.0);
+            gold.setFactor(MapSlot::Roughness, 0.3);
+            gold.map(MapSlot::Emissive).factor = glm::dvec4(0.1, 0.0, 0.0, 1.0);
+            gold.emissiveStrength = 2.0;
+            materials.push_back(gold);
+        } else {
+            Material m = texturedMaterial(dir.path());
+            if (feature == QStringLiteral("shared transform"))
+                for (const MapSlot slot : kAllMapSlots)
+                    m.map(slot).uv = UvTransform {{2.0, 1.5}, {0.25, 0.1}, 30.0};
+            if (feature == QStringLiteral("different transforms"))
+                m.map(MapSlot::BaseColor).uv = UvTransform {{2.0, 1.0}, {0.0, 0.0}, 0.0};
+            if (feature == QStringLiteral("ior"))
+                m.ior = 1.45;
+            if (feature == QStringLiteral("mask")) {
+                m.alphaMode = AlphaMode::Mask;
+                m.alphaCutoff = 0.3;
+            }
+            if (feature == QStringLiteral("blend"))
+                m.alphaMode = AlphaMode::Blend;
+            if (feature == QStringLiteral("single-sided"))
+                m.doubleSided = false;
+            materials.push_back(m);
+            if (feature == QStringLiteral("two of one name")) {
+                Material other = m;
+                other.map(MapSlot::Normal).path.clear();
+                other.setBaseColor(glm::dvec3(0.2, 0.4, 0.6), 1.0);
+                materials.push_back(other);
+            }
+        }
+        Mesh mesh = makeSphere(16, 8);
+        mesh.name = "Ball";
+        std::vector<int> parts;
+        if (materials.size() == 2) {
+            // Two parts: the upper and lower halves of the index buffer.
+            const std::uint32_t half = std::uint32_t(mesh.indices.size() / 6) * 3;
+            mesh.subMeshes = {SubMesh {"top", 0, half, 0, true},
+                SubMesh {"bottom", half, std::uint32_t(mesh.indices.size()) - half, 1, true}};
+            parts = {0, 1};
+        }
+        const QString path
+            = dir.filePath(binary ? QStringLiteral("out/asset.glb") : QStringLiteral("out/asset.gltf"));
+        GltfExportOptions options;
+        options.binary = binary;
+        std::string error;
+        std::vector<std::string> written;
+        QVERIFY2(writeGltfAsset(path.toStdString(), mesh, parts, materials, options, false, &written, &error),
+            error.c_str());
+        QCOMPARE(QString::fromStdString(written.back()), path);
+        if (binary)
+            QCOMPARE(QDir(dir.filePath(QStringLiteral("out"))).entryList(QDir::Files),
+                QStringList {QStringLiteral("asset.glb")});
+        FACET_REQUIRE_VALID_GLTF(path);
+
+        // The asset's JSON says what glTF readers need.
+        if (!binary) {
+            QFile file(path);
+            QVERIFY(file.open(QIODevice::ReadOnly));
+            const QJsonObject json = QJsonDocument::fromJson(file.readAll()).object();
+            const QJsonArray used = json.value(QStringLiteral("extensionsUsed")).toArray();
+            QCOMPARE(used.contains(QStringLiteral("KHR_texture_transform")),
+                feature == QStringLiteral("shared transform"));
+            QCOMPARE(used.contains(QStringLiteral("KHR_materials_ior")), feature == QStringLiteral("ior"));
+            QCOMPARE(used.contains(QStringLiteral("KHR_materials_emissive_strength")), true);
+        }
+
+        const std::optional<Project> back = projectFromAsset(path.toStdString(), &error);
+        QVERIFY2(back, error.c_str());
+        QCOMPARE(back->materials.size(), materials.size());
+        for (std::size_t i = 0; i < materials.size(); ++i) {
+            const Material& a = materials[i];
+            const Material& b = back->materials[i];
+            QCOMPARE(b.name, a.name);
+            QCOMPARE(b.alphaMode, a.alphaMode);
+            if (a.alphaMode == AlphaMode::Mask)
+                QCOMPARE(b.alphaCutoff, a.alphaCutoff);
+            QCOMPARE(b.doubleSided, a.doubleSided);
+            QVERIFY(std::abs(b.ior - a.ior) < 1e-9);
+            QVERIFY(std::abs(b.emissiveStrength - a.emissiveStrength) < 1e-9);
+            for (const MapSlot slot : kAllMapSlots)
+                QCOMPARE(b.map(slot).hasTexture(), a.map(slot).hasTexture());
+
+            // The inputs at every texel centre of the 16x8 maps.
+            const Loaded mapsA = loadMaps(a);
+            const Loaded mapsB = loadMaps(b);
+            double worstScalar = 0.0, worstColor = 0.0, worstNormal = 0.0;
+            for (int y = 0; y < 8; ++y) {
+                for (int x = 0; x < 16; ++x) {
+                    const glm::dvec2 uv((x + 0.5) / 16.0, (y + 0.5) / 8.0);
+                    const MaterialInfo ia = materialInputs(a, mapsA.images, uv);
+                    const MaterialInfo ib = materialInputs(b, mapsB.images, uv);
+                    worstScalar = std::max({worstScalar, std::abs(ia.metallic - ib.metallic),
+                        std::abs(ia.perceptualRoughness - ib.perceptualRoughness),
+                        std::abs(ia.occlusion - ib.occlusion), std::abs(ia.alpha - ib.alpha)});
+                    for (int c = 0; c < 3; ++c)
+                        worstColor = std::max({worstColor,
+                            std::abs(tonemap::linearToSrgb(ia.baseColor[c])
+                                - tonemap::linearToSrgb(ib.baseColor[c])),
+                            std::abs(tonemap::linearToSrgb(ia.emissive[c] / a.emissiveStrength)
+                                - tonemap::linearToSrgb(ib.emissive[c] / b.emissiveStrength))});
+                    if (a.map(MapSlot::Normal).hasTexture()) {
+                        const glm::dvec3 ng(0.0, 0.0, 1.0);
+                        const glm::dvec4 tangent(1.0, 0.0, 0.0, 1.0);
+                        const auto normal = [&](const Material& m, const Loaded& maps) {
+                            const MaterialMap& map = m.map(MapSlot::Normal);
+                            return shadingNormal(ng, tangent,
+                                sampleTexture(*maps.images[std::size_t(MapSlot::Normal)], map.colorSpace,
+                                    map.uv.apply(uv)),
+                                m.normalStrength(), map.flipGreen);
+                        };
+                        worstNormal = std::max(worstNormal, glm::length(normal(a, mapsA) - normal(b, mapsB)));
+                    }
+                }
+            }
+            const bool resampled = feature == QStringLiteral("shared transform");
+            // A shared transform keeps the maps as they are: the bilinear reads between texels of
+            // two 8-bit quantised copies differ by up to a step.
+            const double step = resampled ? 1.0 / 255.0 : 0.5 / 255.0;
+            QVERIFY2(worstScalar <= step + 1e-6,
+                qPrintable(QStringLiteral("scalar %1/255").arg(worstScalar * 255.0)));
+            QVERIFY2(worstColor <= step + 1e-6,
+                qPrintable(QStringLiteral("colour %1/255").arg(worstColor * 255.0)));
+            QVERIFY2(worstNormal <= 2.0 / 255.0,
+                qPrintable(QStringLiteral("normal %1/255").arg(worstNormal * 255.0)));
+        }
+        // The mesh: every triangle, each part with its material.
+        std::optional<Mesh> meshBack = loadViewMesh(path.toStdString(), &error);
+        QVERIFY2(meshBack, error.c_str());
+        QCOMPARE(meshBack->triangleCount(), mesh.triangleCount());
+        QCOMPARE(back->materialOfPart(0), 0);
+        if (materials.size() == 2)
+            QCOMPARE(back->materialOfPart(1), 1);
+    }
+
+    void refusals()
+    {
+        QTemporaryDir dir;
+        const Mesh mesh = makeSphere(8, 4);
+        Material plain;
+        std::string error;
+        const QString path = dir.filePath(QStringLiteral("a.gltf"));
+        QVERIFY(writeGltfAsset(path.toStdString(), mesh, {}, {plain}, {}, false, nullptr, &error));
+        QVERIFY(!writeGltfAsset(path.toStdString(), mesh, {}, {plain}, {}, false, nullptr, &error));
+        QCOMPARE(QString::fromStdString(error),
+            dir.filePath(QStringLiteral("a.bin")) + QStringLiteral(": exists"));
+        QVERIFY2(
+            writeGltfAsset(path.toStdString(), mesh, {}, {plain}, {}, true, nullptr, &error), error.c_str());
+        GltfExportOptions deep;
+        deep.textures.bitDepth = 32;
+        QVERIFY(!writeGltfAsset(dir.filePath(QStringLiteral("b.glb")).toStdString(), mesh, {}, {plain}, deep,
+            false, nullptr, &error));
+        QCOMPARE(error, std::string("glTF textures are PNG: 8 or 16 bits, not 32"));
+        QVERIFY(!writeGltfAsset(dir.filePath(QStringLiteral("c.glb")).toStdString(), Mesh {}, {}, {plain}, {},
+            false, nullptr, &error));
+        Material missing;
+        missing.name = "Lost";
+        missing.map(MapSlot::Roughness).path = dir.filePath(QStringLiteral("gone.png")).toStdString();
+        QVERIFY(!writeGltfAsset(dir.filePath(QStringLiteral("d.gltf")).toStdString(), mesh, {}, {missing}, {},
+            false, nullptr, &error));
+        QVERIFY2(QString::fromStdString(error).startsWith(QStringLiteral("material 'Lost', roughness: "))
+                && QString::fromStdString(error).contains(QStringLiteral("gone.png")),
+            error.c_str());
+        QVERIFY(!QFileInfo::exists(dir.filePath(QStringLiteral("d.gltf"))));
+    }
+};
+
+QTEST_GUILESS_MAIN(GltfExportTest)
+#include "GltfExportTest.moc"
