@@ -1,4 +1,4 @@
-// File > Export Texture Set… (ui/ExportDialog) as an artist uses it: the file list follows the
+// File > Export… (ui/ExportDialog) as an artist uses it: the file list follows the
 // template, material, size and bit-depth choices (a depth the format cannot hold disables Export
 // and says why); Export writes the set and reports it; files already in the folder are replaced
 // only when the artist agrees; a user template file is offered, a broken one named; the window's
@@ -132,6 +132,40 @@ private Q_SLOTS:
         QCOMPARE(exported.count(), 2);
     }
 
+    // glTF from the dialog: the list names the asset and its files; Export writes a valid asset
+    // with every material on the view's mesh.
+    void exportsGltf_data()
+    {
+        QTest::addColumn<QString>("format");
+        QTest::addColumn<QStringList>("files");
+        QTest::newRow("gltf") << QStringLiteral("gltf")
+                              << test::strings({"walls.bin", "walls.gltf", "walls_Brick_Wall_baseColor.png",
+                                     "walls_Brick_Wall_normal.png",
+                                     "walls_Brick_Wall_occlusionRoughnessMetallic.png",
+                                     "walls_Steel_baseColor.png",
+                                     "walls_Steel_occlusionRoughnessMetallic.png"});
+        QTest::newRow("glb") << QStringLiteral("glb") << test::strings({"walls.glb"});
+    }
+
+    void exportsGltf()
+    {
+        QFETCH(QString, format);
+        QFETCH(QStringList, files);
+        QTemporaryDir out;
+        ExportDialog dialog(loadProject(m_projectPath), QStringLiteral("walls"));
+        dialog.setFolder(out.path());
+        choose(dialog.findChild<QComboBox*>(QStringLiteral("exportSize")), 0);
+        choose(dialog.findChild<QComboBox*>(QStringLiteral("exportBitDepth")), 0);
+        choose(dialog.findChild<QComboBox*>(QStringLiteral("exportMaterials")), -1);
+        choose(dialog.findChild<QComboBox*>(QStringLiteral("exportTemplate")), format);
+        QVERIFY2(dialog.preview().startsWith(QStringLiteral("walls.%1 on the view's mesh:\n").arg(format)),
+            qPrintable(dialog.preview()));
+        QCOMPARE(dialog.preview().count(QStringLiteral("\n  ")), files.size());
+        QVERIFY2(dialog.exportNow(), qPrintable(dialog.message()));
+        QCOMPARE(entries(out.path()), files);
+        FACET_REQUIRE_VALID_GLTF(out.filePath(QStringLiteral("walls.") + format));
+    }
+
     void userTemplates()
     {
         ExportDialog dialog(loadProject(m_projectPath));
@@ -155,7 +189,7 @@ private Q_SLOTS:
     void fileMenuHasIt()
     {
         MainWindow window(nullptr, m_dir.filePath(QStringLiteral("recovery")));
-        auto* action = window.findChild<QAction*>(QStringLiteral("exportTextureSetAction"));
+        auto* action = window.findChild<QAction*>(QStringLiteral("exportAction"));
         QVERIFY(action);
         QCOMPARE(action->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_E));
         auto* fileMenu = window.findChild<QMenu*>(QStringLiteral("fileMenu"));

@@ -18,6 +18,9 @@
 
 #include <filesystem>
 
+#include "core/GltfExport.h"
+#include "core/ProjectAssets.h"
+
 namespace facet {
 
 namespace {
@@ -28,15 +31,19 @@ const char* const kSettingsSize = "export/size";
 
 } // namespace
 
-ExportDialog::ExportDialog(const Project& project, QWidget* parent)
+ExportDialog::ExportDialog(const Project& project, const QString& baseName, QWidget* parent)
     : QDialog(parent)
     , m_project(project)
+    , m_baseName(QString::fromStdString(fileNameSafe(baseName.toStdString())))
 {
-    setWindowTitle(tr("Export Texture Set"));
+    setWindowTitle(tr("Export"));
     setObjectName(QStringLiteral("exportDialog"));
 
     m_template = new QComboBox(this);
     m_template->setObjectName(QStringLiteral("exportTemplate"));
+    m_template->addItem(tr("glTF 2.0 asset (.gltf, .bin and textures)"), QStringLiteral("gltf"));
+    m_template->addItem(tr("glTF 2.0 binary (.glb)"), QStringLiteral("glb"));
+    m_template->insertSeparator(2);
     for (const std::string& id : ExportTemplate::builtinIds()) {
         const std::optional<ExportTemplate> t = ExportTemplate::builtin(id);
         m_template->addItem(QString::fromStdString(t ? t->name : id), QString::fromStdString(id));
@@ -95,7 +102,7 @@ ExportDialog::ExportDialog(const Project& project, QWidget* parent)
     });
 
     auto* form = new QFormLayout;
-    form->addRow(tr("Template:"), templateRow);
+    form->addRow(tr("Format:"), templateRow);
     form->addRow(tr("Materials:"), m_materials);
     form->addRow(tr("Size:"), m_size);
     form->addRow(tr("Bit depth:"), m_bitDepth);
@@ -120,6 +127,10 @@ ExportDialog::ExportDialog(const Project& project, QWidget* parent)
 
     for (QComboBox* box : {m_template, m_materials, m_size, m_bitDepth})
         connect(box, &QComboBox::currentIndexChanged, this, &ExportDialog::updatePreview);
+    connect(m_folder, &QLineEdit::editingFinished, this, [this] {
+        if (isGltf())
+            updatePreview();
+    });
     updatePreview();
 }
 
@@ -177,27 +188,52 @@ void ExportDialog::updatePreview()
 {
     QApplication::setOverrideCursor(Qt::WaitCursor); // the maps are read to plan
     m_job.reset();
+    m_gltfFiles.clear();
     m_problem.clear();
     std::string error;
-    const std::optional<ExportTemplate> t = chosenTemplate(&error);
-    if (t)
+    if (isGltf()) {
+        GltfExportOptions options;
+        options.binary = m_template->currentData().toString() == QStringLiteral("glb");
+        options.textures = chosenOptions();
+        m_gltfFiles = gltfAssetFiles(gltfPath().toStdString(), chosenMaterials(), options, &error);
+    } else if (const std::optional<ExportTemplate> t = chosenTemplate(&error)) {
         m_job = TextureSetExport::prepare(*t, chosenMaterials(), chosenOptions(), &error);
+    }
     QApplication::restoreOverrideCursor();
-    if (!m_job)
+    const bool ready = m_job.has_value() || !m_gltfFiles.empty();
+    if (!ready)
         m_problem = QString::fromStdString(error);
     m_preview->setPlainText(preview());
     m_status->setText(m_problem);
-    m_export->setEnabled(m_job.has_value());
+    m_export->setEnabled(ready);
 }
 
 QString ExportDialog::preview() const
 {
+    if (!m_gltfFiles.empty()) {
+        QString text = tr("%1 on the view's mesh:\n").arg(QFileInfo(gltfPath()).fileName());
+        for (const std::string& file : m_gltfFiles)
+            text += QStringLiteral("  %1\n").arg(QFileInfo(QString::fromStdString(file)).fileName());
+        return text;
+    }
     return m_job ? QString::fromStdString(m_job->describeAll()) : m_problem;
+}
+
+bool ExportDialog::isGltf() const
+{
+    const QString id = m_template->currentData().toString();
+    return id == QStringLiteral("gltf") || id == QStringLiteral("glb");
+}
+
+QString ExportDialog::gltfPath() const
+{
+    return QDir(m_folder->text().trimmed())
+        .filePath(m_baseName + QLatin1Char('.') + m_template->currentData().toString());
 }
 
 bool ExportDialog::exportNow()
 {
-    if (!m_job) {
+    if (!m_job && m_gltfFiles.empty()) {
         m_message = m_problem;
         return false;
     }
@@ -207,10 +243,18 @@ bool ExportDialog::exportNow()
         m_status->setText(m_message);
         return false;
     }
+    if (isGltf())
+        updatePreview(); // the folder may have changed: the asset's path with it
     FileSet probe(folder.toStdString());
     QStringList existing;
-    for (const std::string& path : probe.existing(m_job->fileNames()))
-        existing.append(QString::fromStdString(path));
+    if (isGltf()) {
+        for (const std::string& path : m_gltfFiles)
+            if (QFileInfo::exists(QString::fromStdString(path)))
+                existing.append(QString::fromStdString(path));
+    } else {
+        for (const std::string& path : probe.existing(m_job->fileNames()))
+            existing.append(QString::fromStdString(path));
+    }
     bool replace = false;
     if (!existing.isEmpty()) {
         const auto ask = m_confirmReplace ? m_confirmReplace : [this](const QStringList& files) {
@@ -236,7 +280,27 @@ bool ExportDialog::exportNow()
     QApplication::setOverrideCursor(Qt::WaitCursor);
     std::string error;
     std::vector<std::string> written;
-    const bool ok = m_job->write(folder.toStdString(), replace, &error, &written);
+    bool ok = false;
+    QString what;
+    if (isGltf()) {
+        GltfExportOptions options;
+        options.binary = m_template->currentData().toString() == QStringLiteral("glb");
+        options.textures = chosenOptions();
+        options.generator = "Facet " FACET_VERSION;
+        std::string warning;
+        const std::optional<Mesh> mesh = loadViewMesh(m_project.view.mesh, &error, &warning);
+        std::vector<int> parts;
+        if (m_materials->currentData().toInt() < 0)
+            for (std::size_t part = 0; mesh && part < mesh->subMeshes.size(); ++part)
+                parts.push_back(m_project.materialOfPart(part));
+        ok = mesh
+            && writeGltfAsset(gltfPath().toStdString(), *mesh, parts, chosenMaterials(), options, replace,
+                &written, &error);
+        what = m_template->currentText();
+    } else {
+        ok = m_job->write(folder.toStdString(), replace, &error, &written);
+        what = QString::fromStdString(m_job->exportTemplate().name);
+    }
     QApplication::restoreOverrideCursor();
     if (!ok) {
         m_message = tr("Export failed: %1").arg(QString::fromStdString(error));
@@ -244,10 +308,9 @@ bool ExportDialog::exportNow()
         return false;
     }
     remember();
-    m_message
-        = tr("Exported %1 to %2 (%3)")
-              .arg(written.size() == 1 ? tr("1 file") : tr("%1 files").arg(written.size()),
-                  QDir::toNativeSeparators(folder), QString::fromStdString(m_job->exportTemplate().name));
+    m_message = tr("Exported %1 to %2 (%3)")
+                    .arg(written.size() == 1 ? tr("1 file") : tr("%1 files").arg(written.size()),
+                        QDir::toNativeSeparators(folder), what);
     Q_EMIT exported(m_message);
     return true;
 }

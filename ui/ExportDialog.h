@@ -1,8 +1,9 @@
 #pragma once
-// File > Export Texture Set…: the window's face of `facet export` (core/TextureSetExport): a
-// template (the built-ins, or a template file), the current material or all of them, a size and
-// bit depth, and a folder; a live list of the files it will write and where each channel comes
-// from (the dry run), updated as the choices change. Export asks before replacing files already
+// File > Export…: the window's face of `facet export`: a glTF 2.0 asset (.gltf or .glb: the
+// materials on the view's mesh, core/GltfExport) or a texture set (core/TextureSetExport: the
+// built-in templates, or a template file); the current material or all of them, a size and bit
+// depth, and a folder; a live list of the files it will write (and for a texture set where each
+// channel comes from: the dry run), updated as the choices change. Export asks before replacing files already
 // in the folder, writes the whole set or nothing (a failed write removes what it made) and says
 // what it wrote, or what failed with the file named. The choices are remembered (QSettings).
 
@@ -28,7 +29,9 @@ namespace facet {
 class ExportDialog : public QDialog {
     Q_OBJECT
 public:
-    ExportDialog(const Project& project, QWidget* parent = nullptr);
+    // `baseName`: the glTF asset's file name without extension (the project's name).
+    ExportDialog(const Project& project, const QString& baseName = QStringLiteral("material"),
+        QWidget* parent = nullptr);
 
     // Asked with the files an export would replace; true replaces them. Default: a message box.
     void setConfirmReplace(std::function<bool(const QStringList& existing)> confirm);
@@ -66,7 +69,12 @@ private:
     QLabel* m_status = nullptr;
     QPushButton* m_export = nullptr;
     QStringList m_templateFiles; // user templates added, after the built-ins
-    std::optional<TextureSetExport> m_job; // the plan the preview shows
+    bool isGltf() const;
+    QString gltfPath() const;
+
+    QString m_baseName;
+    std::optional<TextureSetExport> m_job; // the plan the preview shows (texture sets)
+    std::vector<std::string> m_gltfFiles; // the files a glTF export writes
     QString m_problem;
     QString m_message;
     std::function<bool(const QStringList&)> m_confirmReplace;

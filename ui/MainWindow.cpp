@@ -164,8 +164,8 @@ void MainWindow::createFileMenu()
     add(tr("&Save"), "saveAction", QKeySequence::Save, &ProjectFileController::save);
     add(tr("Save &As…"), "saveAsAction", QKeySequence::SaveAs, &ProjectFileController::saveAs);
     menu->addSeparator();
-    QAction* exportAction = menu->addAction(tr("&Export Texture Set…"), this, &MainWindow::exportTextureSet);
-    exportAction->setObjectName(QStringLiteral("exportTextureSetAction"));
+    QAction* exportAction = menu->addAction(tr("&Export…"), this, &MainWindow::exportMaterials);
+    exportAction->setObjectName(QStringLiteral("exportAction"));
     exportAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
     menu->addSeparator();
     m_relinkAction = add(tr("Re&link Missing Files…"), "relinkAction", QKeySequence(),
@@ -415,9 +415,9 @@ void MainWindow::updateTitle()
     setWindowModified(m_document->isModified());
 }
 
-void MainWindow::exportTextureSet()
+void MainWindow::exportMaterials()
 {
-    ExportDialog dialog(m_document->project(), this);
+    ExportDialog dialog(m_document->project(), m_document->displayName(), this);
     connect(&dialog, &ExportDialog::exported, this, &MainWindow::showStatusMessage);
     dialog.exec();
 }

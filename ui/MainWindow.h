@@ -79,9 +79,9 @@ public:
     // Asks whether to recover the work of a session that crashed (one question per recovery
     // file, newest first); main() calls it once the window is shown.
     void offerRecovery();
-    // File > Export Texture Set…: the document's materials as an engine's texture set
+    // File > Export…: the document's materials as a glTF asset or an engine's texture set
     // (ui/ExportDialog); what it wrote goes to the status bar.
-    void exportTextureSet();
+    void exportMaterials();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
