@@ -1,5 +1,6 @@
 #include "ui/MainWindow.h"
 
+#include "core/AtomicFile.h"
 #include "core/MaterialPresets.h"
 #include "ui/AutosaveController.h"
 #include "ui/CameraController.h"
@@ -28,10 +29,12 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QBuffer>
 #include <QCloseEvent>
 #include <QDebug>
 #include <QDir>
 #include <QDockWidget>
+#include <QFileDialog>
 #include <QFileInfo>
 #include <QKeySequence>
 #include <QLabel>
@@ -167,6 +170,9 @@ void MainWindow::createFileMenu()
     QAction* exportAction = menu->addAction(tr("&Export…"), this, &MainWindow::exportMaterials);
     exportAction->setObjectName(QStringLiteral("exportAction"));
     exportAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    QAction* saveImageAction = menu->addAction(tr("Save &Image…"), this, &MainWindow::saveImage);
+    saveImageAction->setObjectName(QStringLiteral("saveImageAction"));
+    saveImageAction->setShortcut(QKeySequence(Qt::Key_F12));
     menu->addSeparator();
     m_relinkAction = add(tr("Re&link Missing Files…"), "relinkAction", QKeySequence(),
         &ProjectFileController::showMissingFilesDialog);
@@ -420,6 +426,73 @@ void MainWindow::exportMaterials()
     ExportDialog dialog(m_document->project(), m_document->displayName(), this);
     connect(&dialog, &ExportDialog::exported, this, &MainWindow::showStatusMessage);
     dialog.exec();
+}
+
+void MainWindow::saveImage()
+{
+    const bool grid = centralWidget() != nullptr
+        && static_cast<QStackedWidget*>(centralWidget())->currentWidget() == m_compareView;
+    QString filters = tr("PNG image, as shown (*.png)");
+    if (!grid)
+        filters += tr(";;OpenEXR, linear scene radiance (*.exr)");
+    QString chosen;
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save Image"),
+        QDir(QSettings().value(QStringLiteral("saveImage/folder"), QDir::homePath()).toString())
+            .filePath(m_document->displayName() + QStringLiteral(".png")),
+        filters, &chosen);
+    if (path.isEmpty())
+        return;
+    QSettings().setValue(QStringLiteral("saveImage/folder"), QFileInfo(path).absolutePath());
+    QString why;
+    if (!saveImageTo(path, &why))
+        QMessageBox::warning(this, tr("Save Image"), why);
+}
+
+bool MainWindow::saveImageTo(const QString& path, QString* error)
+{
+    const auto fail = [&](const QString& why) {
+        *error = why;
+        showStatusMessage(why);
+        return false;
+    };
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix != QStringLiteral("png") && suffix != QStringLiteral("exr"))
+        return fail(tr("%1: Save Image writes .png (as shown) or .exr (linear radiance)").arg(path));
+    const bool grid = static_cast<QStackedWidget*>(centralWidget())->currentWidget() == m_compareView;
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    std::string problem;
+    bool saved = false;
+    if (grid) {
+        if (suffix == QStringLiteral("exr")) {
+            QApplication::restoreOverrideCursor();
+            return fail(
+                tr("%1: the compare grid saves as PNG (its cells and labels as shown); a linear EXR is "
+                   "of the single view")
+                    .arg(path));
+        }
+        // The grid as shown: cells, labels, the error view's legend.
+        QByteArray bytes;
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        saved = m_compareView->grab().toImage().save(&buffer, "PNG");
+        if (!saved)
+            problem = "cannot encode the grid as PNG";
+        else if (!(saved = writeFileAtomically(path.toStdString(),
+                       std::string_view(bytes.constData(), std::size_t(bytes.size())), &problem)))
+            problem = "cannot write: " + problem;
+    } else {
+        // The single view drawn again at its full size: what it shows (PNG: the display
+        // transform) or the scene radiance under it (EXR), converged to the project's samples.
+        const FrameOutput output
+            = suffix == QStringLiteral("exr") ? FrameOutput::LinearRadiance : FrameOutput::DisplayReferred;
+        const std::optional<Image> image = m_viewport->renderStill(output, &problem);
+        saved = image && image->save(path.toStdString(), &problem, /*alpha=*/false);
+    }
+    QApplication::restoreOverrideCursor();
+    if (!saved)
+        return fail(tr("Could not save the image: %1").arg(QString::fromStdString(problem)));
+    showStatusMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
+    return true;
 }
 
 void MainWindow::showStatusMessage(const QString& message)

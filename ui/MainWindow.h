@@ -82,6 +82,12 @@ public:
     // File > Export…: the document's materials as a glTF asset or an engine's texture set
     // (ui/ExportDialog); what it wrote goes to the status bar.
     void exportMaterials();
+    // File > Save Image… (F12): the single view as a PNG (what it shows: its display transform)
+    // or a linear EXR (scene radiance), rendered again at its full size and converged to the
+    // project's IBL samples; in a Compare mode the grid as shown, PNG only. saveImageTo() is the
+    // part after the file dialog: false with *error (also in the status bar).
+    void saveImage();
+    bool saveImageTo(const QString& path, QString* error);
 
 protected:
     void closeEvent(QCloseEvent* event) override;

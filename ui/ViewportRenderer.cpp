@@ -89,6 +89,35 @@ bool ViewportRenderer::needsIbl(const SceneController& scene) const
     return m_iblKey != scene.iblKey();
 }
 
+std::optional<Image> ViewportRenderer::renderStill(
+    const SceneController& scene, int width, int height, FrameOutput output, std::string* error)
+{
+    if (m_iblKey != scene.iblKey() || !m_ibl) {
+        std::string problem;
+        std::shared_ptr<const IblTextures> ibl
+            = m_frames->lighting(scene.assets().environment, scene.iblSettings(), nullptr, &problem);
+        if (!ibl) {
+            *error = problem;
+            return std::nullopt;
+        }
+        m_iblKey = scene.iblKey();
+        m_iblError.clear();
+        m_ibl = std::move(ibl);
+    }
+    const IblMethod method = scene.refinementMethod();
+    RenderScene frame = scene.scene(m_ibl, method);
+    std::string ignored;
+    holdBackUnreadyMaps(frame, &ignored);
+    if (!m_frames->addDfgTables(scene.iblSettings(), frame, nullptr, error)
+        || !m_frames->addEnvironmentSource(scene.assets().environment, frame, nullptr, error))
+        return std::nullopt;
+    const EnvironmentSettings& environment = scene.document()->project().environment;
+    const int samples = environment.samples > 0 ? environment.samples : defaultIblSamples(method);
+    std::optional<Image> image = m_frames->renderConverged(frame, width, height, output, samples, error);
+    m_frames->finishFrame();
+    return image;
+}
+
 bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFramebuffer, int width, int height,
     double scale, std::string* error)
 {

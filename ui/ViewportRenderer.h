@@ -78,6 +78,14 @@ public:
     ViewportRenderer(const ViewportRenderer&) = delete;
     ViewportRenderer& operator=(const ViewportRenderer&) = delete;
 
+    // A still of `scene` at width x height, read back (File > Save Image): the project's IBL
+    // method converged to its samples (renderConverged: the split sum in one draw, fis and the
+    // reference in draws of up to 64 samples), as `output` (linear radiance for an EXR, the
+    // display transform for a PNG). Call with the context current, after the view has drawn the
+    // scene (its maps are on the GPU). nullopt with *error.
+    std::optional<Image> renderStill(
+        const SceneController& scene, int width, int height, FrameOutput output, std::string* error);
+
     // Whether the next paint() runs the IBL precompute (the caller may say so first).
     bool needsIbl(const SceneController& scene) const;
 

@@ -40,6 +40,20 @@ void ViewportWidget::releaseRenderer()
     doneCurrent();
 }
 
+std::optional<Image> ViewportWidget::renderStill(FrameOutput output, std::string* error)
+{
+    if (!m_renderer || !m_scene || m_stats.frameNumber == 0) {
+        *error = "the view has not drawn yet";
+        return std::nullopt;
+    }
+    makeCurrent();
+    const qreal ratio = devicePixelRatioF();
+    std::optional<Image> image = m_renderer->renderStill(
+        *m_scene, std::max(1, int(width() * ratio)), std::max(1, int(height() * ratio)), output, error);
+    doneCurrent();
+    return image;
+}
+
 QSize ViewportWidget::sizeHint() const
 {
     return {960, 640};

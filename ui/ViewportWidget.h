@@ -67,6 +67,10 @@ public:
     // What puts material maps on the GPU between frames.
     const MapUploadScheduler* mapUploads() const { return m_uploads; }
 
+    // What the view shows, rendered again as a still at its full device size (File > Save
+    // Image; ViewportRenderer::renderStill). nullopt with *error before the first frame.
+    std::optional<Image> renderStill(FrameOutput output, std::string* error);
+
     QSize sizeHint() const override;
 
 Q_SIGNALS:
