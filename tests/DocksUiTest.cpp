@@ -26,6 +26,7 @@
 #include "ui/ViewDock.h"
 #include "ui/ViewportWidget.h"
 
+#include "TestAssets.h"
 #include "TestSupport.h"
 
 #include <QAbstractItemView>
@@ -166,6 +167,7 @@ private Q_SLOTS:
     void debugViewsHaveDescriptiveNames();
     void meshWarningInWindowWording();
     void presetsSaveApplyDelete();
+    void presetPackages();
 
 private:
     QTemporaryDir m_dir;
@@ -380,11 +382,18 @@ void DocksUiTest::environmentLibraryTellsStudiosApart_data()
     QTest::addColumn<QString>("source"); // {installed}: the installed samples' hdri folder
     QTest::addColumn<QString>("label");
     QTest::addColumn<QString>("toolTip");
-    QTest::newRow("built-in studio") << "studio" << "Studio (built-in)" << "built into Facet";
-    QTest::newRow("installed studio") << "{installed}/studio.exr" << "Studio (CC0 sample)"
+    QTest::newRow("built-in studio") << "studio"
+                                     << "Studio (built-in)"
+                                     << "built into Facet";
+    QTest::newRow("installed studio") << "{installed}/studio.exr"
+                                      << "Studio (CC0 sample)"
                                       << "library:installed/hdri/studio.exr";
-    QTest::newRow("built-in sky") << "sky" << "Sky (built-in)" << "built into Facet";
-    QTest::newRow("installed sky") << "{installed}/sky.exr" << "Sky (CC0 sample)" << "library:installed/hdri/sky.exr";
+    QTest::newRow("built-in sky") << "sky"
+                                  << "Sky (built-in)"
+                                  << "built into Facet";
+    QTest::newRow("installed sky") << "{installed}/sky.exr"
+                                   << "Sky (CC0 sample)"
+                                   << "library:installed/hdri/sky.exr";
 }
 
 // The built-in procedural "studio"/"sky" and the installed CC0 HDRIs of the same names are
@@ -415,7 +424,8 @@ void DocksUiTest::environmentLibraryTellsStudiosApart()
     QCOMPARE(labels.size(), QSet<QString>(labels.begin(), labels.end()).size());
 
     library->scrollToItem(item);
-    QTest::mouseClick(library->viewport(), Qt::LeftButton, Qt::NoModifier, library->visualItemRect(item).center());
+    QTest::mouseClick(
+        library->viewport(), Qt::LeftButton, Qt::NoModifier, library->visualItemRect(item).center());
     QCOMPARE(QString::fromStdString(m_document->project().environment.source), source);
     QCOMPARE(library->currentItem(), item);
 
@@ -558,13 +568,27 @@ void DocksUiTest::debugViewsHaveDescriptiveNames_data()
     QTest::addColumn<QString>("label"); // what the View dock shows
     QTest::addColumn<QString>("name"); // what the project stores
     QTest::addColumn<QString>("alias"); // an older name that selects it too ("" for none)
-    QTest::newRow("distribution") << "Distribution D" << "distribution" << "d";
-    QTest::newRow("visibility") << "Visibility V" << "visibility" << "v";
-    QTest::newRow("fresnel") << "Fresnel F" << "fresnel" << "f";
-    QTest::newRow("none") << "Off (shaded image)" << "none" << "";
-    QTest::newRow("base colour") << "Base colour" << "base-color" << "";
-    QTest::newRow("occlusion") << "Ambient occlusion" << "occlusion" << "";
-    QTest::newRow("brdf table") << "BRDF lookup table (DFG)" << "brdf-lut" << "";
+    QTest::newRow("distribution") << "Distribution D"
+                                  << "distribution"
+                                  << "d";
+    QTest::newRow("visibility") << "Visibility V"
+                                << "visibility"
+                                << "v";
+    QTest::newRow("fresnel") << "Fresnel F"
+                             << "fresnel"
+                             << "f";
+    QTest::newRow("none") << "Off (shaded image)"
+                          << "none"
+                          << "";
+    QTest::newRow("base colour") << "Base colour"
+                                 << "base-color"
+                                 << "";
+    QTest::newRow("occlusion") << "Ambient occlusion"
+                               << "occlusion"
+                               << "";
+    QTest::newRow("brdf table") << "BRDF lookup table (DFG)"
+                                << "brdf-lut"
+                                << "";
 }
 
 void DocksUiTest::debugViewsHaveDescriptiveNames()
@@ -612,10 +636,11 @@ void DocksUiTest::meshWarningInWindowWording()
     // The mesh loads off the GUI thread (ui/DocumentAssets); its notes come when it arrives.
     QTRY_COMPARE_WITH_TIMEOUT(m_window->sceneController()->pendingAssetLoads(), 0, 30000);
     const QString message = m_window->statusMessage();
-    QVERIFY2(message.startsWith(
-                 QStringLiteral("triangle.obj has no texture coordinates; Facet generated them by box projection")),
+    QVERIFY2(message.startsWith(QStringLiteral(
+                 "triangle.obj has no texture coordinates; Facet generated them by box projection")),
         qPrintable(message));
-    QVERIFY2(!message.contains(QStringLiteral("importMesh")) && !message.contains(m_dir.path()), qPrintable(message));
+    QVERIFY2(!message.contains(QStringLiteral("importMesh")) && !message.contains(m_dir.path()),
+        qPrintable(message));
     m_document->newProject();
 }
 
@@ -646,6 +671,51 @@ void DocksUiTest::presetsSaveApplyDelete()
     QVERIFY(list->findItems(QStringLiteral("My Plastic (user)"), Qt::MatchExactly).isEmpty());
     m_document->undoStack()->undo();
     m_document->undoStack()->undo();
+}
+
+// Export Package… and Import Package…: a textured material leaves as a package and comes back as
+// a user preset "with textures"; applying it to a plain material brings the texture set (each
+// map's file inside the installed package, its channel and options); deleting it removes the
+// package's folder.
+void DocksUiTest::presetPackages()
+{
+    QTemporaryDir sources;
+    const QString projectPath = test::writeTexturedProject(sources.path());
+    QVERIFY(!projectPath.isEmpty());
+    std::string error;
+    const std::optional<Project> textured = Project::load(projectPath.toStdString(), &error);
+    QVERIFY2(textured, error.c_str());
+    m_document->setProject(*textured, QStringLiteral("Open"));
+    MaterialDock* dock = m_window->materialDock();
+    QTemporaryDir outbox;
+    const QString package = dock->exportCurrentAsPackage(QStringLiteral("Brick Pack"), outbox.path());
+    QVERIFY2(!package.isEmpty(), qPrintable(m_window->statusMessage()));
+    QCOMPARE(package, outbox.filePath(QStringLiteral("brick-pack.facetpreset")));
+
+    QVERIFY(dock->importPackage(package));
+    QListWidget* list = dock->presetList();
+    QVERIFY(list->currentItem()
+        && list->currentItem()->text() == QStringLiteral("Brick Pack (user, with textures)"));
+    const QString installed
+        = QDir(UserPresets::directory()).filePath(QStringLiteral("brick-pack.facetpreset"));
+    QVERIFY(QFileInfo(installed).isDir());
+
+    m_document->newProject(); // the default material: no textures
+    QVERIFY(!m_document->project().material().map(MapSlot::BaseColor).hasTexture());
+    QVERIFY(dock->applySelectedPreset());
+    const Material& applied = m_document->project().material();
+    QCOMPARE(applied.name, std::string("Brick Pack"));
+    for (const MapSlot slot :
+        {MapSlot::BaseColor, MapSlot::Normal, MapSlot::Occlusion, MapSlot::Roughness, MapSlot::Metallic}) {
+        QVERIFY2(QString::fromStdString(applied.map(slot).path).startsWith(installed), toString(slot));
+        QVERIFY(QFileInfo::exists(QString::fromStdString(applied.map(slot).path)));
+    }
+    QCOMPARE(applied.map(MapSlot::Roughness).channel, MapChannel::G);
+    QVERIFY(!applied.map(MapSlot::Emissive).hasTexture());
+
+    QVERIFY(dock->deleteSelectedPreset());
+    QVERIFY(!QFileInfo::exists(installed));
+    m_document->newProject();
 }
 
 QTEST_MAIN(DocksUiTest)

@@ -1,5 +1,7 @@
 #include "ui/Document.h"
 
+#include "core/PresetPackage.h"
+
 #include "core/AssetProject.h"
 #include "core/GltfImport.h"
 #include "render/ShaderVariant.h"
@@ -102,6 +104,15 @@ void Document::applyPreset(const MaterialPreset& preset)
     material.shading = look.shading;
     for (MapSlot slot : kAllMapSlots)
         material.map(slot).factor = look.map(slot).factor;
+    if (hasTextures(look)) {
+        // A preset package brings its texture set: every map as the preset has it (an empty
+        // slot clears the map it replaces), and how the base colour's alpha is used.
+        material.maps = look.maps;
+        material.alphaMode = look.alphaMode;
+        material.alphaCutoff = look.alphaCutoff;
+        material.doubleSided = look.doubleSided;
+        material.emissiveStrength = look.emissiveStrength;
+    }
     setMaterial(material, tr("Apply Preset %1").arg(fromStd(preset.displayName)));
 }
 
@@ -344,7 +355,8 @@ bool Document::relinkFile(const QString& oldPath, const QString& newPath)
             if (map.path == from) {
                 map.path = to;
                 found = true;
-            } else if (const auto embedded = parseGltfImageReference(map.path); embedded && embedded->assetPath == from) {
+            } else if (const auto embedded = parseGltfImageReference(map.path);
+                       embedded && embedded->assetPath == from) {
                 map.path = gltfImageReference(to, embedded->imageIndex); // the relinked asset's image
                 found = true;
             }

@@ -54,7 +54,9 @@ public:
     void setView(const ViewSettings& view, const QString& undoText, int mergeId = 0);
     // The preset's look (name, IOR, shading, factors) on the current material; the texture paths
     // and per-map options (channel, colour space, invert, flip green, UV) stay, so a preset can be
-    // tried on a texture set. Undo text "Apply Preset <name>".
+    // tried on a texture set. A preset with textures (a package, core/PresetPackage.h) brings its
+    // texture set instead: every map as the preset has it, with alpha, sides and emissive
+    // strength. Undo text "Apply Preset <name>".
     void applyPreset(const MaterialPreset& preset);
     // Any combination of the above as one step (e.g. assigning a folder of maps and the mesh).
     // The camera part of `project` is ignored (see setCamera).

@@ -7,6 +7,9 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -128,6 +131,20 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     buttons->addWidget(saveAs);
     buttons->addWidget(m_delete);
     presetLayout->addLayout(buttons);
+    // Packages: a preset with its textures, to move between machines and libraries.
+    auto* exportPackage = new QPushButton(tr("Export Package…"), presetGroup);
+    exportPackage->setObjectName(QStringLiteral("exportPackageButton"));
+    exportPackage->setToolTip(tr("Write the current material with its textures as a preset package (a "
+                                 ".facetpreset folder) that another Facet imports"));
+    auto* importPackage = new QPushButton(tr("Import Package…"), presetGroup);
+    importPackage->setObjectName(QStringLiteral("importPackageButton"));
+    importPackage->setToolTip(tr("Add a preset package (.facetpreset folder) to your presets"));
+    auto* packageButtons = new QHBoxLayout;
+    packageButtons->addWidget(importPackage);
+    packageButtons->addWidget(exportPackage);
+    presetLayout->addLayout(packageButtons);
+    connect(exportPackage, &QPushButton::clicked, this, &MaterialDock::askExportPackage);
+    connect(importPackage, &QPushButton::clicked, this, &MaterialDock::askImportPackage);
     layout->addWidget(presetGroup, 1);
     setWidget(content);
 
@@ -252,8 +269,9 @@ void MaterialDock::reloadPresets()
     m_userPresets = UserPresets::load(&problems);
     index = 0;
     for (const UserPreset& preset : m_userPresets) {
-        auto* item = new QListWidgetItem(
-            tr("%1 (user)").arg(QString::fromStdString(preset.preset.displayName)), m_presets);
+        auto* item = new QListWidgetItem((preset.package ? tr("%1 (user, with textures)") : tr("%1 (user)"))
+                                             .arg(QString::fromStdString(preset.preset.displayName)),
+            m_presets);
         item->setData(kPresetRole, kUserOffset + index++);
         item->setToolTip(preset.path);
     }
@@ -308,6 +326,55 @@ bool MaterialDock::saveCurrentAsPreset(const QString& name)
         if (m_presets->item(row)->toolTip() == path)
             m_presets->setCurrentRow(row);
     Q_EMIT message(tr("Saved the preset “%1” to %2").arg(name.trimmed(), path));
+    return true;
+}
+
+void MaterialDock::askExportPackage()
+{
+    bool ok = false;
+    const QString name = QInputDialog::getText(this, tr("Export Preset Package"), tr("Preset name:"),
+        QLineEdit::Normal, QString::fromStdString(m_document->project().material().name), &ok);
+    if (!ok)
+        return;
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Export Preset Package Into"));
+    if (!folder.isEmpty())
+        exportCurrentAsPackage(name, folder);
+}
+
+void MaterialDock::askImportPackage()
+{
+    const QString path
+        = QFileDialog::getExistingDirectory(this, tr("Import Preset Package (a .facetpreset folder)"));
+    if (!path.isEmpty())
+        importPackage(path);
+}
+
+QString MaterialDock::exportCurrentAsPackage(const QString& name, const QString& folder)
+{
+    QString error;
+    const QString path = UserPresets::exportPackage(name, m_document->project().material(), folder, &error);
+    if (path.isEmpty()) {
+        Q_EMIT message(tr("Could not export the preset package: %1").arg(error));
+        return {};
+    }
+    Q_EMIT message(
+        tr("Exported the preset package “%1” to %2").arg(name.trimmed(), QDir::toNativeSeparators(path)));
+    return path;
+}
+
+bool MaterialDock::importPackage(const QString& path)
+{
+    QString error;
+    const QString installed = UserPresets::importPackage(path, &error);
+    if (installed.isEmpty()) {
+        Q_EMIT message(tr("Could not import the preset package: %1").arg(error));
+        return false;
+    }
+    reloadPresets();
+    for (int row = 0; row < m_presets->count(); ++row)
+        if (m_presets->item(row)->toolTip() == installed)
+            m_presets->setCurrentRow(row);
+    Q_EMIT message(tr("Imported the preset package %1").arg(QFileInfo(path).fileName()));
     return true;
 }
 

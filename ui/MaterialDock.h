@@ -48,6 +48,11 @@ public:
     bool deleteSelectedPreset();
     // Re-reads the user presets folder.
     void reloadPresets();
+    // Export Package…: the current material with its textures as a preset package named `name`
+    // in `folder` (core/PresetPackage). Returns its path; empty with a message on failure.
+    QString exportCurrentAsPackage(const QString& name, const QString& folder);
+    // Import Package…: installs the package at `path` into the user presets and selects it.
+    bool importPackage(const QString& path);
 
 Q_SIGNALS:
     void message(const QString& text);
@@ -56,6 +61,8 @@ private:
     void onDocumentChanged(DocumentChanges changes);
     void editShading(const QString& undoText, const std::function<void(ShadingModel&)>& change);
     void askPresetName();
+    void askExportPackage();
+    void askImportPackage();
     void updatePresetButtons();
 
     Document* m_document;

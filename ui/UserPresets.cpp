@@ -1,5 +1,7 @@
 #include "ui/UserPresets.h"
 
+#include "core/PresetPackage.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -8,6 +10,29 @@
 #include <algorithm>
 
 namespace facet {
+
+namespace {
+
+// A preset id from a display name, not yet unique: "My Brass!" -> "my-brass"; "preset" when
+// nothing usable is left.
+std::string baseId(const QString& name)
+{
+    std::string id;
+    for (const QChar c : name.toLower()) {
+        const char ascii = c.toLatin1();
+        if ((ascii >= 'a' && ascii <= 'z') || (ascii >= '0' && ascii <= '9'))
+            id += ascii;
+        else if (!id.empty() && id.back() != '-')
+            id += '-';
+    }
+    while (!id.empty() && id.back() == '-')
+        id.pop_back();
+    const auto start = std::find_if(id.begin(), id.end(), [](char c) { return c >= 'a' && c <= 'z'; });
+    id.erase(id.begin(), start);
+    return id.empty() ? std::string("preset") : id;
+}
+
+} // namespace
 
 QString UserPresets::directory()
 {
@@ -27,7 +52,19 @@ std::vector<UserPreset> UserPresets::load(QStringList* problems)
                 problems->append(QString::fromStdString(error));
             continue;
         }
-        presets.push_back({std::move(*preset), path});
+        presets.push_back({std::move(*preset), path, false});
+    }
+    for (const QString& entry : dir.entryList({QStringLiteral("*") + QLatin1String(kPresetPackageSuffix)},
+             QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name)) {
+        const QString path = dir.filePath(entry);
+        std::string error;
+        std::optional<MaterialPreset> preset = loadPresetPackage(path.toStdString(), &error);
+        if (!preset) {
+            if (problems)
+                problems->append(QString::fromStdString(error));
+            continue;
+        }
+        presets.push_back({std::move(*preset), path, true});
     }
     std::sort(presets.begin(), presets.end(), [](const UserPreset& a, const UserPreset& b) {
         return QString::fromStdString(a.preset.displayName)
@@ -39,24 +76,15 @@ std::vector<UserPreset> UserPresets::load(QStringList* problems)
 
 std::string UserPresets::idFromName(const QString& name)
 {
-    std::string id;
-    for (const QChar c : name.toLower()) {
-        const char ascii = c.toLatin1();
-        if ((ascii >= 'a' && ascii <= 'z') || (ascii >= '0' && ascii <= '9'))
-            id += ascii;
-        else if (!id.empty() && id.back() != '-')
-            id += '-';
-    }
-    while (!id.empty() && id.back() == '-')
-        id.pop_back();
-    const auto start = std::find_if(id.begin(), id.end(), [](char c) { return c >= 'a' && c <= 'z'; });
-    id.erase(id.begin(), start);
-    if (id.empty())
-        id = "preset";
+    const std::string id = baseId(name);
     const QDir dir(directory());
     std::string unique = id;
-    for (int n = 2; QFileInfo::exists(dir.filePath(QString::fromStdString(unique) + QStringLiteral(".json")));
-         ++n)
+    const auto taken = [&dir](const std::string& candidate) {
+        const QString stem = dir.filePath(QString::fromStdString(candidate));
+        return QFileInfo::exists(stem + QStringLiteral(".json"))
+            || QFileInfo::exists(stem + QLatin1String(kPresetPackageSuffix));
+    };
+    for (int n = 2; taken(unique); ++n)
         unique = id + '-' + std::to_string(n);
     Q_ASSERT(isValidPresetId(unique));
     return unique;
@@ -90,12 +118,59 @@ QString UserPresets::save(const QString& name, const Material& material, QString
 
 bool UserPresets::remove(const QString& path, QString* error)
 {
+    if (QFileInfo(path).isDir()) {
+        // A package: only a folder in the presets folder that holds a preset index.
+        if (QFileInfo(path).absolutePath() != QFileInfo(directory()).absoluteFilePath()
+            || !QFileInfo::exists(path + QLatin1Char('/') + QLatin1String(kPresetPackageIndex))
+            || !QDir(path).removeRecursively()) {
+            *error = QObject::tr("UserPresets::remove: %1: cannot remove the package").arg(path);
+            return false;
+        }
+        return true;
+    }
     QFile file(path);
     if (!file.remove()) {
         *error = QObject::tr("UserPresets::remove: %1: %2").arg(path, file.errorString());
         return false;
     }
     return true;
+}
+
+QString UserPresets::exportPackage(
+    const QString& name, const Material& material, const QString& folder, QString* error)
+{
+    const QString trimmed = name.trimmed();
+    if (trimmed.isEmpty()) {
+        *error = QObject::tr("UserPresets::exportPackage: the preset needs a name");
+        return {};
+    }
+    MaterialPreset preset;
+    // The id from the name; the package's folder is checked by exportPresetPackage.
+    const std::string id = baseId(trimmed);
+    preset.id = id;
+    preset.displayName = trimmed.toStdString();
+    preset.material = material;
+    preset.material.name = preset.displayName;
+    std::string problem;
+    const std::optional<std::string> path
+        = exportPresetPackage(preset, folder.toStdString(), false, &problem);
+    if (!path) {
+        *error = QString::fromStdString(problem);
+        return {};
+    }
+    return QString::fromStdString(*path);
+}
+
+QString UserPresets::importPackage(const QString& path, QString* error)
+{
+    std::string problem;
+    const std::optional<std::string> installed
+        = installPresetPackage(path.toStdString(), directory().toStdString(), &problem);
+    if (!installed) {
+        *error = QString::fromStdString(problem);
+        return {};
+    }
+    return QString::fromStdString(*installed);
 }
 
 } // namespace facet

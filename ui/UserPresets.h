@@ -15,14 +15,16 @@ namespace facet {
 
 struct UserPreset {
     MaterialPreset preset;
-    QString path;
+    QString path; // the preset's file, or a package's folder (core/PresetPackage.h)
+    bool package = false; // with its textures: applying it brings them
 };
 
 class UserPresets {
 public:
     // <AppDataLocation>/presets (created on the first save).
     static QString directory();
-    // Every preset file in directory(), by display name. Unreadable files go to *problems, one
+    // Every preset file and preset package (<id>.facetpreset folders) in directory(), by display
+    // name. Unreadable files go to *problems, one
     // message each ("loadPreset: <path>: <reason>").
     static std::vector<UserPreset> load(QStringList* problems);
     // A preset id made from a display name: "My Brass!" -> "my-brass"; "preset" when nothing
@@ -31,8 +33,16 @@ public:
     // Saves `material` as a preset named `name` (its look: texture paths are left out). Returns
     // the file's path, or an empty string with *error set.
     static QString save(const QString& name, const Material& material, QString* error);
-    // Deletes a user preset's file. False with *error when it could not be removed.
+    // Deletes a user preset's file, or a package's folder. False with *error when it could not
+    // be removed.
     static bool remove(const QString& path, QString* error);
+    // Writes `material` (with its textures) as a preset package named `name` into `folder`, for
+    // another Facet to import. Returns the package's path, or empty with *error.
+    static QString exportPackage(
+        const QString& name, const Material& material, const QString& folder, QString* error);
+    // Copies the package at `path` into directory() (its id made unique). Returns the installed
+    // package's path, or empty with *error naming the problem.
+    static QString importPackage(const QString& path, QString* error);
 };
 
 } // namespace facet

@@ -1,0 +1,198 @@
+#include "core/PresetPackage.h"
+
+#include <filesystem>
+#include <map>
+#include <set>
+#include <system_error>
+
+#include <QFile>
+
+#include "core/AtomicFile.h"
+#include "core/FileSet.h"
+#include "core/GltfImport.h"
+
+namespace facet {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::optional<std::string> readBytes(const std::string& path, std::string* problem)
+{
+    QFile file(QString::fromStdString(path));
+    if (!file.open(QIODevice::ReadOnly)) {
+        *problem = "cannot read it: " + file.errorString().toStdString();
+        return std::nullopt;
+    }
+    const QByteArray bytes = file.readAll();
+    if (file.error() != QFileDevice::NoError) {
+        *problem = "cannot read it: " + file.errorString().toStdString();
+        return std::nullopt;
+    }
+    return bytes.toStdString();
+}
+
+std::string extensionForMime(const std::string& mime)
+{
+    if (mime == "image/jpeg")
+        return ".jpg";
+    if (mime == "image/webp")
+        return ".webp";
+    if (mime == "image/ktx2")
+        return ".ktx2";
+    return ".png";
+}
+
+// A texture's bytes and the name its copy gets: a file's own name, an embedded image's
+// "<asset>-image<i>.<ext>".
+std::optional<std::pair<std::string, std::string>> textureSource(
+    const std::string& path, std::string* problem)
+{
+    if (const std::optional<GltfImageReference> reference = parseGltfImageReference(path)) {
+        std::string mime;
+        const std::optional<std::vector<unsigned char>> bytes = readGltfImage(*reference, &mime, problem);
+        if (!bytes)
+            return std::nullopt;
+        const std::string name = fs::path(reference->assetPath).stem().string() + "-image"
+            + std::to_string(reference->imageIndex) + extensionForMime(mime);
+        return std::pair {name, std::string(bytes->begin(), bytes->end())};
+    }
+    std::optional<std::string> bytes = readBytes(path, problem);
+    if (!bytes)
+        return std::nullopt;
+    return std::pair {fs::path(path).filename().string(), std::move(*bytes)};
+}
+
+bool inside(const fs::path& folder, const fs::path& file)
+{
+    const fs::path relative = file.lexically_normal().lexically_relative(folder.lexically_normal());
+    return !relative.empty() && *relative.begin() != "..";
+}
+
+} // namespace
+
+bool hasTextures(const Material& material)
+{
+    for (const MapSlot slot : kAllMapSlots)
+        if (material.map(slot).hasTexture())
+            return true;
+    return false;
+}
+
+std::optional<std::string> exportPresetPackage(
+    const MaterialPreset& preset, const std::string& folder, bool replace, std::string* error)
+{
+    const fs::path package = fs::path(folder) / (preset.id + kPresetPackageSuffix);
+    const auto fail = [&](const std::string& problem) {
+        *error = "exportPresetPackage: " + package.string() + ": " + problem;
+        return std::nullopt;
+    };
+    if (!isValidPresetId(preset.id))
+        return fail("'" + preset.id + "' is not a preset id (lower-case letters, digits and '-')");
+    std::error_code code;
+    if (fs::exists(package, code) && !replace)
+        return fail("exists");
+    // Read every texture first: nothing is written for a preset that cannot travel whole.
+    MaterialPreset copy = preset;
+    std::map<std::string, std::string> nameOfSource; // source path -> file name in the package
+    std::map<std::string, std::string> bytesOfName;
+    std::set<std::string> names = {kPresetPackageIndex};
+    for (const MapSlot slot : kAllMapSlots) {
+        MaterialMap& map = copy.material.map(slot);
+        if (!map.hasTexture())
+            continue;
+        auto known = nameOfSource.find(map.path);
+        if (known == nameOfSource.end()) {
+            std::string problem;
+            std::optional<std::pair<std::string, std::string>> source = textureSource(map.path, &problem);
+            if (!source)
+                return fail(std::string(toString(slot)) + ": " + map.path + ": " + problem);
+            std::string name = std::string(toString(slot)) + "-" + source->first;
+            for (int n = 2; names.count(name); ++n)
+                name = std::string(toString(slot)) + "-" + std::to_string(n) + "-" + source->first;
+            names.insert(name);
+            bytesOfName[name] = std::move(source->second);
+            known = nameOfSource.emplace(map.path, name).first;
+        }
+        map.path = (package / known->second).string();
+    }
+    fs::create_directories(package, code);
+    if (!fs::is_directory(package, code))
+        return fail("cannot make the folder");
+    FileSet files(package.string());
+    for (const auto& [name, bytes] : bytesOfName) {
+        std::string problem;
+        files.aboutToWrite(name);
+        if (!writeFileAtomically(files.path(name), bytes, &problem)) {
+            files.removeNew();
+            fs::remove(package, code); // only when empty: an earlier package's files stay
+            return fail(name + ": cannot write it: " + problem);
+        }
+        files.written(name);
+    }
+    std::string problem;
+    files.aboutToWrite(kPresetPackageIndex);
+    if (!savePreset(copy, files.path(kPresetPackageIndex), &problem, /*includeTexturePaths=*/true)) {
+        files.removeNew();
+        fs::remove(package, code);
+        *error = "exportPresetPackage: " + problem;
+        return std::nullopt;
+    }
+    files.written(kPresetPackageIndex);
+    return package.string();
+}
+
+std::optional<MaterialPreset> loadPresetPackage(const std::string& package, std::string* error)
+{
+    const auto fail = [&](const std::string& problem) {
+        *error = "loadPresetPackage: " + package + ": " + problem;
+        return std::nullopt;
+    };
+    std::error_code code;
+    if (!fs::is_directory(package, code))
+        return fail("is not a preset package (a folder holding " + std::string(kPresetPackageIndex) + ")");
+    const fs::path index = fs::path(package) / kPresetPackageIndex;
+    if (!fs::exists(index, code))
+        return fail(std::string("has no ") + kPresetPackageIndex);
+    std::string problem;
+    std::optional<MaterialPreset> preset = loadPreset(index.string(), &problem);
+    if (!preset) {
+        *error = "loadPresetPackage: " + problem;
+        return std::nullopt;
+    }
+    for (const MapSlot slot : kAllMapSlots) {
+        const MaterialMap& map = preset->material.map(slot);
+        if (!map.hasTexture())
+            continue;
+        if (!inside(fs::path(package), fs::path(map.path)))
+            return fail(std::string(toString(slot)) + ": " + map.path + " is outside the package");
+        if (!fs::is_regular_file(map.path, code))
+            return fail(std::string(toString(slot)) + ": " + map.path + " is missing");
+    }
+    return preset;
+}
+
+std::optional<std::string> installPresetPackage(
+    const std::string& package, const std::string& library, std::string* error)
+{
+    std::optional<MaterialPreset> preset = loadPresetPackage(package, error);
+    if (!preset)
+        return std::nullopt;
+    std::error_code code;
+    fs::create_directories(library, code);
+    std::string id = preset->id;
+    for (int n = 2; fs::exists(fs::path(library) / (id + kPresetPackageSuffix), code)
+         || fs::exists(fs::path(library) / (id + ".json"), code);
+         ++n)
+        id = preset->id + "-" + std::to_string(n);
+    preset->id = id;
+    std::string problem;
+    std::optional<std::string> installed = exportPresetPackage(*preset, library, false, &problem);
+    if (!installed) {
+        *error = "installPresetPackage: " + problem;
+        return std::nullopt;
+    }
+    return installed;
+}
+
+} // namespace facet
