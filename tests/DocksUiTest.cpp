@@ -10,6 +10,7 @@
 // applied, deleted.
 
 #include "core/MaterialPresets.h"
+#include "core/PresetPackage.h"
 #include "render/ShaderVariant.h"
 #include "ui/Document.h"
 #include "ui/EnvironmentDock.h"
@@ -168,6 +169,7 @@ private Q_SLOTS:
     void meshWarningInWindowWording();
     void presetsSaveApplyDelete();
     void presetPackages();
+    void presetFolders();
 
 private:
     QTemporaryDir m_dir;
@@ -715,6 +717,52 @@ void DocksUiTest::presetPackages()
 
     QVERIFY(dock->deleteSelectedPreset());
     QVERIFY(!QFileInfo::exists(installed));
+    m_document->newProject();
+}
+
+// Add Folder…: a shared folder's presets and packages are listed with the user's, named after the
+// folder; applying a package from there brings its textures; they cannot be deleted from Facet;
+// a folder without presets is refused and names why.
+void DocksUiTest::presetFolders()
+{
+    QTemporaryDir shared;
+    QVERIFY(QDir().mkpath(shared.filePath(QStringLiteral("sources"))));
+    const QString projectPath = test::writeTexturedProject(shared.filePath(QStringLiteral("sources")));
+    QVERIFY(!projectPath.isEmpty());
+    std::string error;
+    const std::optional<Project> textured = Project::load(projectPath.toStdString(), &error);
+    QVERIFY2(textured, error.c_str());
+    const QString library = shared.filePath(QStringLiteral("team-presets"));
+    QVERIFY(QDir().mkpath(library));
+    MaterialPreset look;
+    look.id = "team-red";
+    look.displayName = "Team Red";
+    look.material.setBaseColor(glm::dvec3(0.8, 0.05, 0.05));
+    QVERIFY(savePreset(look, (library + QStringLiteral("/team-red.json")).toStdString(), &error));
+    MaterialPreset brick {"team-brick", "Team Brick", textured->materials[0]};
+    QVERIFY2(exportPresetPackage(brick, library.toStdString(), false, &error), error.c_str());
+
+    MaterialDock* dock = m_window->materialDock();
+    QVERIFY(!dock->addPresetFolder(shared.filePath(QStringLiteral("sources"))));
+    QVERIFY2(m_window->statusMessage().contains(QStringLiteral("holds no preset")),
+        qPrintable(m_window->statusMessage()));
+    QVERIFY(dock->addPresetFolder(library));
+    QListWidget* list = dock->presetList();
+    QCOMPARE(list->findItems(QStringLiteral("Team Red (team-presets)"), Qt::MatchExactly).size(), 1);
+    const auto packaged
+        = list->findItems(QStringLiteral("Team Brick (team-presets, with textures)"), Qt::MatchExactly);
+    QCOMPARE(packaged.size(), 1);
+    list->setCurrentItem(packaged.first());
+    QVERIFY(!dock->findChild<QPushButton*>(QStringLiteral("deletePresetButton"))->isEnabled());
+    QVERIFY(!dock->deleteSelectedPreset());
+    QVERIFY(QFileInfo::exists(library + QStringLiteral("/team-brick.facetpreset/preset.json")));
+    QVERIFY(dock->applySelectedPreset());
+    QVERIFY(QString::fromStdString(m_document->project().material().map(MapSlot::Normal).path)
+                .startsWith(library + QStringLiteral("/team-brick.facetpreset/")));
+    QVERIFY(UserPresets::folders().contains(QFileInfo(library).absoluteFilePath()));
+    UserPresets::removeFolder(library);
+    dock->reloadPresets();
+    QVERIFY(list->findItems(QStringLiteral("Team Red (team-presets)"), Qt::MatchExactly).isEmpty());
     m_document->newProject();
 }
 

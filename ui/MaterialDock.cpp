@@ -139,9 +139,18 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     auto* importPackage = new QPushButton(tr("Import Package…"), presetGroup);
     importPackage->setObjectName(QStringLiteral("importPackageButton"));
     importPackage->setToolTip(tr("Add a preset package (.facetpreset folder) to your presets"));
+    auto* addFolder = new QPushButton(tr("Add Folder…"), presetGroup);
+    addFolder->setObjectName(QStringLiteral("addPresetFolderButton"));
+    addFolder->setToolTip(tr("List the presets and packages of a folder (a shared library) with yours"));
     auto* packageButtons = new QHBoxLayout;
     packageButtons->addWidget(importPackage);
     packageButtons->addWidget(exportPackage);
+    packageButtons->addWidget(addFolder);
+    connect(addFolder, &QPushButton::clicked, this, [this] {
+        const QString folder = QFileDialog::getExistingDirectory(this, tr("Add Preset Folder"));
+        if (!folder.isEmpty())
+            addPresetFolder(folder);
+    });
     presetLayout->addLayout(packageButtons);
     connect(exportPackage, &QPushButton::clicked, this, &MaterialDock::askExportPackage);
     connect(importPackage, &QPushButton::clicked, this, &MaterialDock::askImportPackage);
@@ -269,8 +278,10 @@ void MaterialDock::reloadPresets()
     m_userPresets = UserPresets::load(&problems);
     index = 0;
     for (const UserPreset& preset : m_userPresets) {
-        auto* item = new QListWidgetItem((preset.package ? tr("%1 (user, with textures)") : tr("%1 (user)"))
-                                             .arg(QString::fromStdString(preset.preset.displayName)),
+        const QString name = QString::fromStdString(preset.preset.displayName);
+        const QString where = preset.folder.isEmpty() ? tr("user") : preset.folder;
+        auto* item = new QListWidgetItem(
+            preset.package ? tr("%1 (%2, with textures)").arg(name, where) : tr("%1 (%2)").arg(name, where),
             m_presets);
         item->setData(kPresetRole, kUserOffset + index++);
         item->setToolTip(preset.path);
@@ -288,7 +299,10 @@ void MaterialDock::updatePresetButtons()
 {
     const QListWidgetItem* item = m_presets->currentItem();
     m_apply->setEnabled(item != nullptr);
-    m_delete->setEnabled(item && item->data(kPresetRole).toInt() >= kUserOffset);
+    // Only the user's own presets can be deleted; an added folder's are read.
+    const int index = item ? item->data(kPresetRole).toInt() : -1;
+    m_delete->setEnabled(
+        index >= kUserOffset && m_userPresets.at(std::size_t(index - kUserOffset)).folder.isEmpty());
 }
 
 bool MaterialDock::applySelectedPreset()
@@ -362,6 +376,18 @@ QString MaterialDock::exportCurrentAsPackage(const QString& name, const QString&
     return path;
 }
 
+bool MaterialDock::addPresetFolder(const QString& folder)
+{
+    QString error;
+    if (!UserPresets::addFolder(folder, &error)) {
+        Q_EMIT message(error);
+        return false;
+    }
+    reloadPresets();
+    Q_EMIT message(tr("Added the presets of %1").arg(QDir::toNativeSeparators(folder)));
+    return true;
+}
+
 bool MaterialDock::importPackage(const QString& path)
 {
     QString error;
@@ -386,6 +412,11 @@ bool MaterialDock::deleteSelectedPreset()
         return false;
     }
     const UserPreset& preset = m_userPresets.at(std::size_t(item->data(kPresetRole).toInt() - kUserOffset));
+    if (!preset.folder.isEmpty()) {
+        Q_EMIT message(tr("“%1” is in the added folder %2: Facet lists it, it does not delete it")
+                           .arg(QString::fromStdString(preset.preset.displayName), preset.folder));
+        return false;
+    }
     QString error;
     if (!UserPresets::remove(preset.path, &error)) {
         Q_EMIT message(tr("Could not delete the preset: %1").arg(error));

@@ -53,6 +53,8 @@ public:
     QString exportCurrentAsPackage(const QString& name, const QString& folder);
     // Import Package…: installs the package at `path` into the user presets and selects it.
     bool importPackage(const QString& path);
+    // Add Folder…: lists the presets of `folder` with the user's (UserPresets::addFolder).
+    bool addPresetFolder(const QString& folder);
 
 Q_SIGNALS:
     void message(const QString& text);

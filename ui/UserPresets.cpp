@@ -5,6 +5,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QSettings>
 #include <QStandardPaths>
 
 #include <algorithm>
@@ -39,10 +40,15 @@ QString UserPresets::directory()
     return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/presets");
 }
 
-std::vector<UserPreset> UserPresets::load(QStringList* problems)
+namespace {
+
+const char* const kFoldersKey = "presets/folders";
+
+// The presets of one folder: preset files (*.json) and packages (*.facetpreset folders).
+void loadFolder(
+    const QString& folder, const QString& label, std::vector<UserPreset>& presets, QStringList* problems)
 {
-    std::vector<UserPreset> presets;
-    const QDir dir(directory());
+    const QDir dir(folder);
     for (const QString& entry : dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
         const QString path = dir.filePath(entry);
         std::string error;
@@ -52,7 +58,7 @@ std::vector<UserPreset> UserPresets::load(QStringList* problems)
                 problems->append(QString::fromStdString(error));
             continue;
         }
-        presets.push_back({std::move(*preset), path, false});
+        presets.push_back({std::move(*preset), path, false, label});
     }
     for (const QString& entry : dir.entryList({QStringLiteral("*") + QLatin1String(kPresetPackageSuffix)},
              QDir::Dirs | QDir::NoDotAndDotDot, QDir::Name)) {
@@ -64,8 +70,18 @@ std::vector<UserPreset> UserPresets::load(QStringList* problems)
                 problems->append(QString::fromStdString(error));
             continue;
         }
-        presets.push_back({std::move(*preset), path, true});
+        presets.push_back({std::move(*preset), path, true, label});
     }
+}
+
+} // namespace
+
+std::vector<UserPreset> UserPresets::load(QStringList* problems)
+{
+    std::vector<UserPreset> presets;
+    loadFolder(directory(), QString(), presets, problems);
+    for (const QString& folder : folders())
+        loadFolder(folder, QDir(folder).dirName(), presets, problems);
     std::sort(presets.begin(), presets.end(), [](const UserPreset& a, const UserPreset& b) {
         return QString::fromStdString(a.preset.displayName)
                    .compare(QString::fromStdString(b.preset.displayName), Qt::CaseInsensitive)
@@ -134,6 +150,38 @@ bool UserPresets::remove(const QString& path, QString* error)
         return false;
     }
     return true;
+}
+
+QStringList UserPresets::folders()
+{
+    return QSettings().value(QLatin1String(kFoldersKey)).toStringList();
+}
+
+bool UserPresets::addFolder(const QString& folder, QString* error)
+{
+    const QString absolute = QFileInfo(folder).absoluteFilePath();
+    std::vector<UserPreset> found;
+    QStringList problems;
+    loadFolder(absolute, QString(), found, &problems);
+    if (found.empty()) {
+        *error = QObject::tr("%1 holds no preset (.json) or preset package (.facetpreset)%2")
+                     .arg(QDir::toNativeSeparators(absolute),
+                         problems.isEmpty() ? QString()
+                                            : QStringLiteral(": ") + problems.join(QStringLiteral("; ")));
+        return false;
+    }
+    QStringList list = folders();
+    if (!list.contains(absolute) && absolute != QFileInfo(directory()).absoluteFilePath())
+        list.append(absolute);
+    QSettings().setValue(QLatin1String(kFoldersKey), list);
+    return true;
+}
+
+void UserPresets::removeFolder(const QString& folder)
+{
+    QStringList list = folders();
+    list.removeAll(QFileInfo(folder).absoluteFilePath());
+    QSettings().setValue(QLatin1String(kFoldersKey), list);
 }
 
 QString UserPresets::exportPackage(

@@ -17,14 +17,15 @@ struct UserPreset {
     MaterialPreset preset;
     QString path; // the preset's file, or a package's folder (core/PresetPackage.h)
     bool package = false; // with its textures: applying it brings them
+    QString folder; // empty: the user's own presets folder; else an added preset folder
 };
 
 class UserPresets {
 public:
     // <AppDataLocation>/presets (created on the first save).
     static QString directory();
-    // Every preset file and preset package (<id>.facetpreset folders) in directory(), by display
-    // name. Unreadable files go to *problems, one
+    // Every preset file and preset package (<id>.facetpreset folders) in directory() and in the
+    // added folders (folders()), by display name. Unreadable files go to *problems, one
     // message each ("loadPreset: <path>: <reason>").
     static std::vector<UserPreset> load(QStringList* problems);
     // A preset id made from a display name: "My Brass!" -> "my-brass"; "preset" when nothing
@@ -33,6 +34,12 @@ public:
     // Saves `material` as a preset named `name` (its look: texture paths are left out). Returns
     // the file's path, or an empty string with *error set.
     static QString save(const QString& name, const Material& material, QString* error);
+    // Preset folders added like environment folders (a team's shared library, a download):
+    // listed with the user's own presets, never written to. Kept in QSettings ("presets/folders").
+    static QStringList folders();
+    // Adds `folder` when it holds at least one preset or package. False with *error otherwise.
+    static bool addFolder(const QString& folder, QString* error);
+    static void removeFolder(const QString& folder);
     // Deletes a user preset's file, or a package's folder. False with *error when it could not
     // be removed.
     static bool remove(const QString& path, QString* error);
