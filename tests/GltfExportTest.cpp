@@ -19,6 +19,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "TestAssets.h"
 #include "TestSupport.h"
 #include "core/AssetProject.h"
 #include "core/GltfExport.h"
@@ -36,16 +37,8 @@ namespace {
 // A 16x8 8-bit map, every texel and channel different.
 void writeVariedPng(const QString& path, int seed, int channels)
 {
-    Image image(16, 8);
-    for (int y = 0; y < 8; ++y)
-        for (int x = 0; x < 16; ++x)
-            for (int c = 0; c < 4; ++c)
-                image.at(x, y)[c] = c < channels
-                    ? float(((x * 13 + y * 29 + c * 71 + seed * 37) % 200) + 30) / 255.0f
-                    : 1.0f;
-    image.setEncoding(ColorEncoding::Linear);
     std::string error;
-    if (!image.save(path.toStdString(), &error, channels == 4))
+    if (!test::variedImage(seed, channels).save(path.toStdString(), &error, channels == 4))
         qFatal("%s", error.c_str());
 }
 

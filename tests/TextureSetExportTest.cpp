@@ -4,9 +4,9 @@
 // resources/export/*.json), on a test material whose maps hold a distinct value per channel, once
 // with unit factors and once with factors, strengths and the DirectX flip to bake in. Then user
 // templates: bit depths and formats as declared (PNG 16, TIFF 16/32, EXR half/float, TGA 8),
-// colour-space tags, the name pattern's tokens; sizes (the largest map's, --size with its
-// aspect, a filtered downsample, a material of constants as 1x1); texel placement (no row flip,
-// UV transforms baked); and bad templates, each refused with the field named.
+// colour-space tags; sizes (the largest map's, --size with its aspect, a filtered downsample, a
+// material of constants as 1x1); texel placement (no row flip, UV transforms baked); a round trip
+// per engine; plan-time refusals. Reading templates: tests/ExportTemplateTest.cpp.
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +22,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "TestAssets.h"
 #include "TestSupport.h"
 #include "core/ExportTemplate.h"
 #include "core/FileSet.h"
@@ -191,12 +192,6 @@ std::optional<ExportTemplate> templateFrom(const QByteArray& json, std::string* 
     return ExportTemplate::fromJson(document.object(), error);
 }
 
-QByteArray oneOutput(const QByteArray& output, const QByteArray& fileName = "{material}_{map}")
-{
-    return "{\"format\": \"facet-export-template\", \"version\": 1, \"name\": \"T\", \"fileName\": \""
-        + fileName + "\", \"outputs\": [" + output + "]}";
-}
-
 } // namespace
 
 class TextureSetExportTest : public QObject {
@@ -333,15 +328,8 @@ private Q_SLOTS:
         QFETCH(QString, templateId);
         // Every texel different: a gradient per channel, rows and columns in opposite senses.
         const auto varied = [](int seed, int channels) {
-            Image image(16, 8);
-            for (int y = 0; y < 8; ++y)
-                for (int x = 0; x < 16; ++x)
-                    for (int c = 0; c < 4; ++c)
-                        image.at(x, y)[c] = c < channels
-                            ? float(((x * 13 + y * 29 + c * 71 + seed * 37) % 200) + 30) / 255.0f
-                            : 1.0f;
-            return MapImage::fromImage(
-                image, channels == 4 ? MapLayout::Rgba : MapLayout::Rgb, MapSampleType::UInt8);
+            return MapImage::fromImage(test::variedImage(seed, channels),
+                channels == 4 ? MapLayout::Rgba : MapLayout::Rgb, MapSampleType::UInt8);
         };
         TestMaterial test(true);
         test.base = varied(1, 4);
@@ -532,8 +520,8 @@ private Q_SLOTS:
         for (const MapSlot slot :
             {MapSlot::Normal, MapSlot::Occlusion, MapSlot::Roughness, MapSlot::Metallic})
             test.material.map(slot).path.clear();
-        const QByteArray json
-            = oneOutput(R"({"map": "R", "channels": ["baseColor.r"], "colorSpace": "linear"})");
+        const QByteArray json = test::exportTemplateJson(
+            R"({"map": "R", "channels": ["baseColor.r"], "colorSpace": "linear"})");
         std::string error;
         const std::optional<ExportTemplate> t = templateFrom(json, &error);
         QVERIFY2(t, error.c_str());
@@ -652,7 +640,7 @@ private Q_SLOTS:
         QFETCH(QString, colorSpace);
         QFETCH(int, channels);
         std::string error;
-        const std::optional<ExportTemplate> t = templateFrom(oneOutput(output), &error);
+        const std::optional<ExportTemplate> t = templateFrom(test::exportTemplateJson(output), &error);
         QVERIFY2(t, error.c_str());
         const TestMaterial test(true);
         const std::optional<TextureSetPlan> plan
@@ -684,123 +672,6 @@ private Q_SLOTS:
             qPrintable(QStringLiteral("%1, expected %2").arg(file->values[0]).arg(expected)));
     }
 
-    void fileNameTokens()
-    {
-        std::string out;
-        std::string error;
-        QVERIFY(expandFileName(
-            "{template}/{material}-{map}@{size}", "Brass", "ORM", "1024", "unreal", &out, &error));
-        QCOMPARE(out, std::string("unreal/Brass-ORM@1024"));
-        QVERIFY(!expandFileName("{material}_{colour}", "a", "b", "1", "t", &out, &error));
-        QCOMPARE(error,
-            std::string("\"{material}_{colour}\": unknown token {colour} (known: {material}, {map}, "
-                        "{size}, {template})"));
-        QVERIFY(!expandFileName("{material", "a", "b", "1", "t", &out, &error));
-        QVERIFY(!expandFileName("material}", "a", "b", "1", "t", &out, &error));
-        QCOMPARE(fileNameSafe("Brass / worn: 2"), std::string("Brass_worn_2"));
-        QCOMPARE(fileNameSafe("..hidden"), std::string("hidden"));
-        QCOMPARE(fileNameSafe("///"), std::string("_"));
-        QCOMPARE(fileNameSafe(""), std::string("Material"));
-        // {size}: the width, or WxH.
-        const TestMaterial test(false);
-        const std::optional<ExportTemplate> t = templateFrom(
-            oneOutput(R"({"map": "R", "channels": ["roughness"]})", "{template}{material}_{size}"), &error);
-        QVERIFY2(t, error.c_str());
-        TextureSetOptions options;
-        options.size = 32;
-        std::optional<TextureSetPlan> plan
-            = planTextureSet(*t, test.material, test.images(), options, &error);
-        QCOMPARE(QString::fromStdString(plan->files[0].fileName), QStringLiteral("Test_Mat_32.png"));
-    }
-
-    // Bad templates, each refused with the field named.
-    void badTemplates_data()
-    {
-        QTest::addColumn<QByteArray>("json");
-        QTest::addColumn<QString>("message");
-        QTest::newRow("unknown token")
-            << oneOutput(R"({"map": "R", "channels": ["roughness"]})", "{material}_{colour}")
-            << QStringLiteral(
-                   "outputs[0] (the template's fileName): \"{material}_{colour}\": unknown token {colour}");
-        QTest::newRow("unknown source")
-            << oneOutput(R"({"map": "R", "channels": ["metallic", "rough"]})")
-            << QStringLiteral("outputs[0].channels[1]: \"rough\" is not a source (baseColor.r");
-        QTest::newRow("the word constant")
-            << oneOutput(R"({"map": "R", "channels": ["constant"]})")
-            << QStringLiteral("outputs[0].channels[0]: \"constant\" is not a source");
-        QTest::newRow("constant out of range")
-            << oneOutput(R"({"map": "R", "channels": [1.5]})")
-            << QStringLiteral("outputs[0].channels[0]: the constant 1.5 is outside [0, 1]");
-        QTest::newRow("five channels") << oneOutput(
-            R"({"map": "R", "channels": ["metallic", "metallic", "metallic", "metallic", "metallic"]})")
-                                       << QStringLiteral("outputs[0].channels: has 5 entries; a file has 1 "
-                                                         "to 4 channels");
-        QTest::newRow("no channels") << oneOutput(R"({"map": "R"})")
-                                     << QStringLiteral("outputs[0].channels: is missing");
-        QTest::newRow("no map") << oneOutput(R"({"channels": ["metallic"]})")
-                                << QStringLiteral("outputs[0].map: is missing");
-        QTest::newRow("misspelt key")
-            << oneOutput(R"({"map": "R", "channels": ["metallic"], "colourSpace": "srgb"})")
-            << QStringLiteral("outputs[0].colourSpace: unknown key");
-        QTest::newRow("bad colour space")
-            << oneOutput(R"({"map": "R", "channels": ["metallic"], "colorSpace": "acescg"})")
-            << QStringLiteral("outputs[0].colorSpace: unknown name \"acescg\"");
-        QTest::newRow("tga 16") << oneOutput(
-            R"({"map": "R", "channels": ["metallic"], "bitDepth": 16, "fileFormat": "tga"})")
-                                << QStringLiteral(
-                                       "outputs[0].bitDepth: tga files cannot hold 16-bit channels");
-        QTest::newRow("exr 8") << oneOutput(R"({"map": "R", "channels": ["metallic"], "fileFormat": "exr"})")
-                               << QStringLiteral("outputs[0].bitDepth: exr files cannot hold 8-bit channels");
-        QTest::newRow("bit depth 12")
-            << oneOutput(R"({"map": "R", "channels": ["metallic"], "bitDepth": 12})")
-            << QStringLiteral("outputs[0].bitDepth: 12 is not 8, 16 or 32");
-        QTest::newRow("jpeg") << oneOutput(R"({"map": "R", "channels": ["metallic"], "fileFormat": "jpg"})")
-                              << QStringLiteral("outputs[0].fileFormat: unknown name \"jpg\"");
-        QTest::newRow("a path") << oneOutput(
-            R"({"map": "R", "channels": ["metallic"], "fileName": "../{map}"})")
-                                << QStringLiteral(
-                                       "outputs[0].fileName: \"../{map}\" holds a folder separator");
-        QTest::newRow("no outputs") << QByteArray(
-            R"({"format": "facet-export-template", "version": 1, "outputs": []})")
-                                    << QStringLiteral("outputs: is missing or empty");
-        QTest::newRow("not a template")
-            << QByteArray(R"({"format": "facet-project", "version": 1})")
-            << QStringLiteral("format: \"facet-project\" is not \"facet-export-template\"");
-        QTest::newRow("newer") << QByteArray(
-            R"({"format": "facet-export-template", "version": 9, "outputs": []})")
-                               << QStringLiteral("written by a newer Facet (version 9)");
-    }
-
-    void badTemplates()
-    {
-        QFETCH(QByteArray, json);
-        QFETCH(QString, message);
-        std::string error;
-        QVERIFY(!templateFrom(json, &error));
-        QVERIFY2(QString::fromStdString(error).startsWith(message)
-                || QString::fromStdString(error).contains(message),
-            error.c_str());
-    }
-
-    void badTemplateFiles()
-    {
-        QTemporaryDir dir;
-        std::string error;
-        QVERIFY(!ExportTemplate::load(dir.filePath(QStringLiteral("missing.json")).toStdString(), &error));
-        QCOMPARE(QString::fromStdString(error),
-            dir.filePath(QStringLiteral("missing.json")) + QStringLiteral(": no such file"));
-        const QString broken = dir.filePath(QStringLiteral("broken.json"));
-        QVERIFY(test::writeText(broken, "{\"format\": \"facet-export-template\", "));
-        QVERIFY(!ExportTemplate::load(broken.toStdString(), &error));
-        QVERIFY2(QString::fromStdString(error).startsWith(broken + QStringLiteral(": ")), error.c_str());
-        const QString good = dir.filePath(QStringLiteral("my-engine.json"));
-        QVERIFY(test::writeText(
-            good, oneOutput(R"({"map": "R", "channels": ["roughness"]})", "{template}_{map}")));
-        const std::optional<ExportTemplate> t = ExportTemplate::load(good.toStdString(), &error);
-        QVERIFY2(t, error.c_str());
-        QCOMPARE(t->id, std::string("my-engine"));
-    }
-
     // Plan-time refusals: a bit depth the format cannot hold, two files of one name.
     void badPlans()
     {
@@ -819,7 +690,8 @@ private Q_SLOTS:
         QVERIFY2(plan, error.c_str());
         QCOMPARE(plan->files[0].output.bitDepth, 16);
         const std::optional<ExportTemplate> twice = templateFrom(
-            oneOutput(R"({"map": "R", "channels": ["roughness"]}, {"map": "R", "channels": ["metallic"]})"),
+            test::exportTemplateJson(
+                R"({"map": "R", "channels": ["roughness"]}, {"map": "R", "channels": ["metallic"]})"),
             &error);
         QVERIFY2(twice, error.c_str());
         QVERIFY(!planTextureSet(*twice, test.material, test.images(), {}, &error));

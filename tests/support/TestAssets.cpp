@@ -213,4 +213,23 @@ QString writeTexturedProject(const QString& folder)
     return project.save(path.toStdString(), &error) ? path : QString();
 }
 
+facet::Image variedImage(int seed, int channels)
+{
+    facet::Image image(16, 8);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 16; ++x)
+            for (int c = 0; c < 4; ++c)
+                image.at(x, y)[c] = c < channels
+                    ? float(((x * 13 + y * 29 + c * 71 + seed * 37) % 200) + 30) / 255.0f
+                    : 1.0f;
+    image.setEncoding(facet::ColorEncoding::Linear);
+    return image;
+}
+
+QByteArray exportTemplateJson(const QByteArray& outputs, const QByteArray& fileName)
+{
+    return "{\"format\": \"facet-export-template\", \"version\": 1, \"name\": \"T\", \"fileName\": \""
+        + fileName + "\", \"outputs\": [" + outputs + "]}";
+}
+
 } // namespace facet::test

@@ -3,7 +3,10 @@
 // so every test and the `facet PATH.glb` CLI test see the same files; tests/tools/WriteTestAsset
 // writes them from CTest).
 
+#include <QByteArray>
 #include <QString>
+
+#include "core/Image.h"
 
 namespace facet::test {
 
@@ -29,5 +32,14 @@ bool writeShowcaseAsset(const QString& path, QString* error);
 // metallic B), "Steel" (base colour and roughness maps, 8x8) and "Gold" (constants). Returns the
 // project's path, empty on failure.
 QString writeTexturedProject(const QString& folder);
+
+// A 16x8 map whose every texel and channel differs (a gradient per channel, rows and columns in
+// opposite senses; 8-bit steps from 30 to 229), `channels` of them (the rest 1); `seed` shifts
+// the values so that two maps differ. For tests that follow texels through an export.
+facet::Image variedImage(int seed, int channels);
+
+// An export template (core/ExportTemplate.h) of the given outputs (a JSON array's inside) and
+// name pattern, as the bytes of its file.
+QByteArray exportTemplateJson(const QByteArray& outputs, const QByteArray& fileName = "{material}_{map}");
 
 } // namespace facet::test
