@@ -170,6 +170,7 @@ private Q_SLOTS:
     void presetsSaveApplyDelete();
     void presetPackages();
     void presetFolders();
+    void presetSwatches();
 
 private:
     QTemporaryDir m_dir;
@@ -764,6 +765,40 @@ void DocksUiTest::presetFolders()
     dock->reloadPresets();
     QVERIFY(list->findItems(QStringLiteral("Team Red (team-presets)"), Qt::MatchExactly).isEmpty());
     m_document->newProject();
+}
+
+// The preset list shows a rendered swatch per preset (ui/ThumbnailLoader requestSwatch on its
+// worker, core/MaterialSwatch): every item gets its icon, and the icons show the materials
+// (gold's redder than silver's).
+void DocksUiTest::presetSwatches()
+{
+    MaterialDock* dock = m_window->materialDock();
+    dock->reloadPresets();
+    QTRY_COMPARE_WITH_TIMEOUT(dock->pendingSwatches(), 0, 60000);
+    QListWidget* list = dock->presetList();
+    QCOMPARE(list->iconSize(), QSize(MaterialDock::kSwatchSize, MaterialDock::kSwatchSize));
+    for (int row = 0; row < list->count(); ++row)
+        QVERIFY2(!list->item(row)->icon().isNull(), qPrintable(list->item(row)->text()));
+    const auto centre = [list](const QString& name) {
+        const QImage image = list->findItems(name, Qt::MatchExactly)
+                                 .first()
+                                 ->icon()
+                                 .pixmap(MaterialDock::kSwatchSize)
+                                 .toImage();
+        return image.pixelColor(image.width() / 2, image.height() * 2 / 3);
+    };
+    const QColor gold = centre(QStringLiteral("Gold"));
+    const QColor silver = centre(QStringLiteral("Silver"));
+    QVERIFY2(gold.redF() - gold.blueF() > silver.redF() - silver.blueF() + 0.1,
+        qPrintable(QStringLiteral("gold %1 silver %2").arg(gold.name(), silver.name())));
+    // For a person to look at: the list as the dock shows it.
+    list->scrollToTop();
+    dock->raise();
+    const QSize shown = dock->size();
+    dock->resize(shown.width(), 900); // the whole dock, its list taller than in the default layout
+    QCoreApplication::processEvents();
+    dock->grab().save(test::outputDir() + QStringLiteral("/preset-swatches.png"));
+    dock->resize(shown);
 }
 
 QTEST_MAIN(DocksUiTest)

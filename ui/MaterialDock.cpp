@@ -1,4 +1,5 @@
 #include "ui/MaterialDock.h"
+#include "ui/ThumbnailLoader.h"
 
 #include "core/MaterialPresets.h"
 #include "ui/Document.h"
@@ -13,13 +14,17 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
+#include <QIcon>
 #include <QInputDialog>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMenu>
 #include <QMessageBox>
+#include <QPixmap>
 #include <QPushButton>
 #include <QSignalBlocker>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 namespace facet {
@@ -28,6 +33,7 @@ namespace {
 
 // List item data: the built-in preset's index, or the user preset's index + kUserOffset.
 constexpr int kPresetRole = Qt::UserRole;
+constexpr int kSwatchKeyRole = Qt::UserRole + 1; // "builtin|<id>" or "user|<path>"
 constexpr int kUserOffset = 100000;
 
 template <typename Enum>
@@ -121,6 +127,16 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     auto* presetGroup = new QGroupBox(tr("Presets"), content);
     auto* presetLayout = new QVBoxLayout(presetGroup);
     m_presets->setObjectName(QStringLiteral("presetList"));
+    m_presets->setIconSize(QSize(kSwatchSize, kSwatchSize));
+    m_swatches = new ThumbnailLoader(this);
+    connect(m_swatches, &ThumbnailLoader::ready, this,
+        [this](const QString& key, const QImage& image, QSize, const QString&, double) {
+            if (image.isNull())
+                return;
+            for (int row = 0; row < m_presets->count(); ++row)
+                if (m_presets->item(row)->data(kSwatchKeyRole).toString() == key)
+                    m_presets->item(row)->setIcon(QIcon(QPixmap::fromImage(image)));
+        });
     presetLayout->addWidget(m_presets);
     auto* saveAs = new QPushButton(tr("Save As…"), presetGroup);
     m_apply->setObjectName(QStringLiteral("applyPresetButton"));
@@ -131,29 +147,36 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     buttons->addWidget(saveAs);
     buttons->addWidget(m_delete);
     presetLayout->addLayout(buttons);
-    // Packages: a preset with its textures, to move between machines and libraries.
-    auto* exportPackage = new QPushButton(tr("Export Package…"), presetGroup);
-    exportPackage->setObjectName(QStringLiteral("exportPackageButton"));
+    // Packages (a preset with its textures, to move between machines) and shared folders: one menu,
+    // so the dock keeps the width of its default layout.
+    auto* library = new QToolButton(presetGroup);
+    library->setObjectName(QStringLiteral("presetLibraryButton"));
+    library->setText(tr("Packages and Folders"));
+    library->setPopupMode(QToolButton::InstantPopup);
+    library->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    library->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    auto* libraryMenu = new QMenu(library);
+    QAction* importPackage = libraryMenu->addAction(tr("Import Package…"));
+    importPackage->setObjectName(QStringLiteral("importPackageAction"));
+    importPackage->setToolTip(tr("Add a preset package (.facetpreset folder) to your presets"));
+    QAction* exportPackage = libraryMenu->addAction(tr("Export Package…"));
+    exportPackage->setObjectName(QStringLiteral("exportPackageAction"));
     exportPackage->setToolTip(tr("Write the current material with its textures as a preset package (a "
                                  ".facetpreset folder) that another Facet imports"));
-    auto* importPackage = new QPushButton(tr("Import Package…"), presetGroup);
-    importPackage->setObjectName(QStringLiteral("importPackageButton"));
-    importPackage->setToolTip(tr("Add a preset package (.facetpreset folder) to your presets"));
-    auto* addFolder = new QPushButton(tr("Add Folder…"), presetGroup);
-    addFolder->setObjectName(QStringLiteral("addPresetFolderButton"));
+    libraryMenu->addSeparator();
+    QAction* addFolder = libraryMenu->addAction(tr("Add Folder…"));
+    addFolder->setObjectName(QStringLiteral("addPresetFolderAction"));
     addFolder->setToolTip(tr("List the presets and packages of a folder (a shared library) with yours"));
-    auto* packageButtons = new QHBoxLayout;
-    packageButtons->addWidget(importPackage);
-    packageButtons->addWidget(exportPackage);
-    packageButtons->addWidget(addFolder);
-    connect(addFolder, &QPushButton::clicked, this, [this] {
+    libraryMenu->setToolTipsVisible(true);
+    library->setMenu(libraryMenu);
+    connect(addFolder, &QAction::triggered, this, [this] {
         const QString folder = QFileDialog::getExistingDirectory(this, tr("Add Preset Folder"));
         if (!folder.isEmpty())
             addPresetFolder(folder);
     });
-    presetLayout->addLayout(packageButtons);
-    connect(exportPackage, &QPushButton::clicked, this, &MaterialDock::askExportPackage);
-    connect(importPackage, &QPushButton::clicked, this, &MaterialDock::askImportPackage);
+    presetLayout->addWidget(library);
+    connect(exportPackage, &QAction::triggered, this, &MaterialDock::askExportPackage);
+    connect(importPackage, &QAction::triggered, this, &MaterialDock::askImportPackage);
     layout->addWidget(presetGroup, 1);
     setWidget(content);
 
@@ -267,6 +290,8 @@ void MaterialDock::reloadPresets()
     int index = 0;
     for (const MaterialPreset& preset : builtinPresets()) {
         auto* item = new QListWidgetItem(QString::fromStdString(preset.displayName), m_presets);
+        item->setData(kSwatchKeyRole, QStringLiteral("builtin|") + QString::fromStdString(preset.id));
+        m_swatches->requestSwatch(item->data(kSwatchKeyRole).toString(), preset.material, kSwatchSize);
         item->setData(kPresetRole, index++);
         item->setToolTip(
             tr("Built-in: F0 %1, roughness %2")
@@ -285,6 +310,8 @@ void MaterialDock::reloadPresets()
             m_presets);
         item->setData(kPresetRole, kUserOffset + index++);
         item->setToolTip(preset.path);
+        item->setData(kSwatchKeyRole, QStringLiteral("user|") + preset.path);
+        m_swatches->requestSwatch(item->data(kSwatchKeyRole).toString(), preset.preset.material, kSwatchSize);
     }
     if (!problems.isEmpty())
         Q_EMIT message(
@@ -374,6 +401,11 @@ QString MaterialDock::exportCurrentAsPackage(const QString& name, const QString&
     Q_EMIT message(
         tr("Exported the preset package “%1” to %2").arg(name.trimmed(), QDir::toNativeSeparators(path)));
     return path;
+}
+
+int MaterialDock::pendingSwatches() const
+{
+    return m_swatches->pending();
 }
 
 bool MaterialDock::addPresetFolder(const QString& folder)

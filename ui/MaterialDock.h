@@ -25,6 +25,8 @@ class QPushButton;
 
 namespace facet {
 
+class ThumbnailLoader;
+
 class Document;
 class ValueSlider;
 
@@ -55,6 +57,9 @@ public:
     bool importPackage(const QString& path);
     // Add Folder…: lists the presets of `folder` with the user's (UserPresets::addFolder).
     bool addPresetFolder(const QString& folder);
+    // Swatches still being rendered for the list (each preset's icon, ui/ThumbnailLoader).
+    int pendingSwatches() const;
+    static constexpr int kSwatchSize = 40;
 
 Q_SIGNALS:
     void message(const QString& text);
@@ -84,6 +89,7 @@ private:
     QPushButton* m_apply;
     QPushButton* m_delete;
     std::vector<UserPreset> m_userPresets;
+    ThumbnailLoader* m_swatches = nullptr;
 };
 
 } // namespace facet

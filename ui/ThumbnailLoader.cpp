@@ -1,5 +1,7 @@
 #include "ui/ThumbnailLoader.h"
 
+#include "core/MaterialSwatch.h"
+
 #include "core/AssetLibrary.h"
 #include "core/Environment.h"
 #include "core/GltfImport.h"
@@ -9,6 +11,7 @@
 
 #include <QElapsedTimer>
 #include <QFileInfo>
+#include <QJsonDocument>
 
 #include <algorithm>
 #include <cmath>
@@ -93,7 +96,8 @@ void ThumbnailLoader::request(const QString& key, const QString& source, Kind ki
                     const std::optional<std::string> file
                         = AssetLibrary::fileForSpec(spec, "Environment::fromSpec", &error);
                     if (file)
-                        if (const auto filtered = Image::loadBoxFiltered(*file, true, sizeFor, &error, &width, &height)) {
+                        if (const auto filtered
+                            = Image::loadBoxFiltered(*file, true, sizeFor, &error, &width, &height)) {
                             sourceSize = QSize(width, height);
                             thumbnail = displayThumbnail(*filtered);
                         }
@@ -116,6 +120,71 @@ void ThumbnailLoader::request(const QString& key, const QString& source, Kind ki
                     m_made.insert(memo, Made {thumbnail, sourceSize});
                 }
                 Q_EMIT ready(key, thumbnail, sourceSize, message, ms);
+            },
+            Qt::QueuedConnection);
+    });
+}
+
+void ThumbnailLoader::requestSwatch(const QString& key, const Material& material, int size)
+{
+    ++m_pending;
+    const QString memo = QStringLiteral("swatch|%1|").arg(size)
+        + QString::fromUtf8(
+            QJsonDocument(materialToJson(material, std::string())).toJson(QJsonDocument::Compact));
+    if (const auto found = m_made.constFind(memo); found != m_made.constEnd()) {
+        const Made made = *found;
+        QMetaObject::invokeMethod(
+            this,
+            [this, key, made] {
+                --m_pending;
+                Q_EMIT ready(key, made.image, made.sourceSize, QString(), 0.0);
+            },
+            Qt::QueuedConnection);
+        return;
+    }
+    m_pool.start([this, key, material, size, memo] {
+        QElapsedTimer clock;
+        clock.start();
+        QImage swatch;
+        std::string error;
+        if (!m_stopping) {
+            std::call_once(
+                m_swatchRendererMade, [this] { m_swatchRenderer = std::make_shared<SwatchRenderer>(); });
+            // The material's maps, decoded once for the whole process (a packaged preset's files).
+            std::vector<std::shared_ptr<const MapImage>> keep;
+            MaterialMapImages images {};
+            for (const MapSlot slot : kAllMapSlots) {
+                if (!material.map(slot).hasTexture())
+                    continue;
+                std::string problem;
+                if (std::shared_ptr<const MapImage> image
+                    = MapImageCache::shared().load(material.map(slot).path, &problem)) {
+                    images[std::size_t(slot)] = image.get();
+                    keep.push_back(std::move(image));
+                } else if (error.empty()) {
+                    error = problem; // the swatch is drawn without that map
+                }
+            }
+            const Image rendered = m_swatchRenderer->render(material, images, size);
+            swatch = QImage(size, size, QImage::Format_RGBA8888);
+            for (int y = 0; y < size; ++y)
+                for (int x = 0; x < size; ++x) {
+                    const glm::vec4& p = rendered.at(x, y);
+                    swatch.setPixel(x, y, qRgba(toByte(p.r), toByte(p.g), toByte(p.b), toByte(p.a)));
+                }
+        }
+        const double ms = double(clock.nsecsElapsed()) / 1e6;
+        const QString message = QString::fromStdString(error);
+        QMetaObject::invokeMethod(
+            this,
+            [this, key, swatch, message, ms, memo, size] {
+                --m_pending;
+                if (!swatch.isNull()) {
+                    if (m_made.size() >= kRemembered)
+                        m_made.clear();
+                    m_made.insert(memo, Made {swatch, QSize(size, size)});
+                }
+                Q_EMIT ready(key, swatch, QSize(size, size), message, ms);
             },
             Qt::QueuedConnection);
     });

@@ -1,6 +1,7 @@
 #pragma once
-// Small previews of images, made off the GUI thread: texture maps (the stored numbers, clamped;
-// decoded through core/MapImageCache, so a map the viewport has loaded or is loading is not
+// Small previews made off the GUI thread: material swatches (core/MaterialSwatch: a sphere in the
+// studio, the preset library's icons; remembered by the material's content), texture maps (the stored
+// numbers, clamped; decoded through core/MapImageCache, so a map the viewport has loaded or is loading is not
 // decoded again, and a map beyond the size budget gets its message) and equirectangular
 // environments (box-filtered down, tone-mapped with Khronos PBR Neutral and
 // sRGB-encoded, so an HDR shows as the viewport would show it at exposure 0). One worker thread:
@@ -14,6 +15,7 @@
 
 #include "core/Image.h"
 #include "core/MapImage.h"
+#include "core/Material.h"
 
 #include <QHash>
 #include <QImage>
@@ -23,6 +25,8 @@
 #include <QThreadPool>
 
 #include <atomic>
+#include <memory>
+#include <mutex>
 
 namespace facet {
 
@@ -37,6 +41,9 @@ public:
     // `source`: a file path, or for environments anything Environment::fromSpec() accepts
     // ("studio", "sky", "uniform:1"). `size`: the thumbnail's bounding box.
     void request(const QString& key, const QString& source, Kind kind, QSize size);
+    // A swatch of `material` (its maps read through core/MapImageCache), `size` pixels square;
+    // ready() gets it under `key`. The same material at the same size is answered from memory.
+    void requestSwatch(const QString& key, const Material& material, int size);
     // Jobs queued or running.
     int pending() const { return m_pending.load(); }
 
@@ -59,8 +66,10 @@ private:
     };
     QHash<QString, Made> m_made; // texture thumbnails by file|time|size (GUI thread only)
     QThreadPool m_pool;
+    std::shared_ptr<const class SwatchRenderer> m_swatchRenderer; // made by the first swatch job
     std::atomic<bool> m_stopping {false};
     std::atomic<int> m_pending {0};
+    std::once_flag m_swatchRendererMade;
 };
 
 } // namespace facet
