@@ -1,13 +1,17 @@
 #include "core/IblDiskCache.h"
 
 #include "core/AtomicFile.h"
+#include "core/FileCheck.h"
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QStandardPaths>
 
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <system_error>
 
 namespace facet {
 
@@ -15,6 +19,9 @@ namespace {
 
 constexpr char kMagic[8] = {'F', 'A', 'C', 'E', 'T', 'I', 'B', 'L'};
 constexpr std::size_t kHeaderSize = 8 + 4 + 8 + 4 + 4 + 8 + 8;
+// The largest entry Facet writes (a 4096 prefiltered cube with its mips in half floats, the
+// irradiance and the DFG table) is about 1.1 GiB.
+constexpr qint64 kMaxEntryBytes = qint64(4) << 30;
 constexpr std::uint64_t kFnvOffset = 0xcbf29ce484222325ULL;
 constexpr std::uint64_t kFnvPrime = 0x100000001b3ULL;
 
@@ -29,16 +36,14 @@ std::uint64_t fnv1a(std::uint64_t hash, const char* data, std::size_t size)
 
 // Little-endian writers/readers (x86 and ARM hosts are little-endian; the byte order is still
 // spelled out so the format does not depend on the host).
-template <typename T>
-void put(QByteArray& out, T value)
+template <typename T> void put(QByteArray& out, T value)
 {
     static_assert(std::is_integral_v<T>);
     for (std::size_t i = 0; i < sizeof(T); ++i)
         out.append(char((std::uint64_t(value) >> (8 * i)) & 0xffu));
 }
 
-template <typename T>
-bool get(const QByteArray& in, std::size_t& at, T* value)
+template <typename T> bool get(const QByteArray& in, std::size_t& at, T* value)
 {
     if (at + sizeof(T) > std::size_t(in.size()))
         return false;
@@ -138,6 +143,14 @@ bool IblDiskCache::store(std::uint64_t key, const IblCacheEntry& entry, std::str
     // One buffer, one checked atomic write: a full disk leaves the old entry (or none), never a
     // 0-byte or truncated one (core/AtomicFile.h).
     const QByteArray bytes = header + payload;
+    // The cache owns its entries' paths: a symbolic link or a FIFO found there is removed, not
+    // written through (a link to /dev/zero or elsewhere would otherwise take the entry).
+    std::error_code ignored;
+    const std::filesystem::file_status existing
+        = std::filesystem::symlink_status(path.toStdString(), ignored);
+    if (std::filesystem::is_symlink(existing) || std::filesystem::is_fifo(existing)
+        || std::filesystem::is_socket(existing))
+        std::filesystem::remove(path.toStdString(), ignored);
     std::string reason;
     if (!writeFileAtomically(
             path.toStdString(), std::string_view(bytes.constData(), std::size_t(bytes.size())), &reason))
@@ -149,13 +162,19 @@ std::optional<IblCacheEntry> IblDiskCache::load(std::uint64_t key, std::string* 
 {
     const QString path = pathFor(key);
     QFile file(path);
-    if (!file.exists())
+    if (!file.exists() && !QFileInfo(path).isSymLink())
         return std::nullopt;
     auto bad = [&](const std::string& reason) -> std::optional<IblCacheEntry> {
         if (warning)
             *warning = "IblDiskCache::load: " + path.toStdString() + ": " + reason + "; ignoring it";
         return std::nullopt;
     };
+    // An entry that is a device (a link to /dev/zero), a FIFO or a link loop would be read
+    // without end or block; one larger than any entry Facet writes is not one of its entries.
+    if (const FileCheck check = checkRegularFile(path.toStdString()); !check.ok())
+        return bad(check.problem);
+    if (file.size() > kMaxEntryBytes)
+        return bad("larger than " + std::to_string(kMaxEntryBytes >> 20) + " MiB, more than any entry holds");
     if (!file.open(QIODevice::ReadOnly))
         return bad(file.errorString().toStdString());
     const QByteArray data = file.readAll();
@@ -176,7 +195,7 @@ std::optional<IblCacheEntry> IblDiskCache::load(std::uint64_t key, std::string* 
         return bad("holds key " + keyHex(storedKey));
     if (payloadSize != std::uint64_t(data.size()) - kHeaderSize)
         return bad("truncated or padded (payload " + std::to_string(std::uint64_t(data.size()) - kHeaderSize)
-                   + " bytes, header says " + std::to_string(payloadSize) + ")");
+            + " bytes, header says " + std::to_string(payloadSize) + ")");
     if (fnv1a(kFnvOffset, data.constData() + kHeaderSize, std::size_t(payloadSize)) != checksum)
         return bad("checksum mismatch (corrupt)");
 

@@ -209,6 +209,8 @@ std::optional<Image> Image::loadBoxFiltered(const std::string& path, bool linear
                     + " exceeds the limit of " + std::to_string(kMaxDimension) + " pixels per side");
             return std::nullopt;
         }
+        if (!reader->checkSizeAgainstFile(kFunction, error))
+            return std::nullopt;
         if (sourceWidth)
             *sourceWidth = spec.width;
         if (sourceHeight)
@@ -285,6 +287,8 @@ std::optional<Image> Image::load(const std::string& path, std::string* error, Im
                     + " exceeds the limit of " + std::to_string(kMaxPixels) + " pixels");
             return std::nullopt;
         }
+        if (!reader->checkSizeAgainstFile(kFunction, error))
+            return std::nullopt;
 
         Image image(spec.width, spec.height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         image.m_sourceChannels = spec.nchannels;

@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <exception>
-#include <filesystem>
 #include <new>
-#include <system_error>
 
+#include <sys/stat.h>
+
+#include "core/FileCheck.h"
 #include "core/GltfImport.h"
 
 namespace facet {
@@ -86,6 +87,18 @@ void setImageErrorFromException(
 
 ImageReader::~ImageReader() = default;
 
+namespace {
+
+constexpr double kMaxPixelsPerByte = 16384.0;
+
+long long fileSizeOf(const std::string& path)
+{
+    struct stat info { };
+    return ::stat(path.c_str(), &info) == 0 ? static_cast<long long>(info.st_size) : -1;
+}
+
+} // namespace
+
 std::optional<ImageReader> ImageReader::open(
     const std::string& path, const char* function, std::string* error)
 {
@@ -95,12 +108,11 @@ std::optional<ImageReader> ImageReader::open(
     // from memory: OpenImageIO picks the reader by the name's extension, which comes from the
     // bytes' signature.
     std::string openName = path;
-    std::error_code ec;
-    const std::filesystem::file_status status = std::filesystem::status(path, ec);
-    if (status.type() == std::filesystem::file_type::not_found) {
+    const FileCheck check = checkRegularFile(path);
+    if (check.kind == FileKind::Missing) {
         const std::optional<GltfImageReference> reference = parseGltfImageReference(path);
         if (!reference) {
-            setImageError(error, function, path, "no such file");
+            setImageError(error, function, path, check.problem);
             return std::nullopt;
         }
         std::string mimeType;
@@ -115,12 +127,13 @@ std::optional<ImageReader> ImageReader::open(
         reader.m_memory = std::make_unique<OIIO::Filesystem::IOMemReader>(
             reader.m_embedded->data(), reader.m_embedded->size());
         openName = "embedded" + extensionForEncodedImage(*reader.m_embedded, mimeType);
-    } else if (std::filesystem::is_directory(status)) {
+    } else if (check.kind == FileKind::Folder) {
         setImageError(error, function, path, "is a directory, not an image");
         return std::nullopt;
-    } else if (!std::filesystem::is_regular_file(status)) {
-        // A device (/dev/zero), a FIFO or a socket would be read forever or block.
-        setImageError(error, function, path, "is not a regular file");
+    } else if (!check.ok()) {
+        // A device (/dev/zero), a FIFO or a socket would be read forever or block; a symbolic
+        // link loop or a path with a NUL byte is named as such.
+        setImageError(error, function, path, check.problem);
         return std::nullopt;
     }
 
@@ -157,6 +170,25 @@ bool ImageReader::checkHeader(const char* function, std::string* error) const
     }
     if (header.nchannels <= 0) {
         setImageError(error, function, m_path, "image has no channels");
+        return false;
+    }
+    return true;
+}
+
+bool ImageReader::checkSizeAgainstFile(const char* function, std::string* error) const
+{
+    const OIIO::ImageSpec& header = spec();
+    // No codec packs more than a few thousand pixels into a byte (deflate's best is about 1032:1
+    // on bytes, 8 one-bit pixels each): a header claiming more than kMaxPixelsPerByte times the
+    // file's size belongs to a cut-short or crafted file, and reading it would allocate for the
+    // claim first (a 95-byte PNG claiming 32768x8192 took 4 GiB and half a minute to fail).
+    const double pixels = double(header.width) * double(header.height);
+    const double bytes = m_embedded ? double(m_embedded->size()) : double(fileSizeOf(m_path));
+    if (bytes > 0 && pixels > bytes * kMaxPixelsPerByte) {
+        setImageError(error, function, m_path,
+            "its header claims " + std::to_string(header.width) + "x" + std::to_string(header.height)
+                + " pixels, too large for a file of " + std::to_string(static_cast<long long>(bytes))
+                + " bytes (cut short or damaged)");
         return false;
     }
     return true;

@@ -43,6 +43,10 @@ public:
     // Checks the header's size before anything is allocated: positive, flat (depth 1), with
     // channels. False with *error as open() words it.
     bool checkHeader(const char* function, std::string* error) const;
+    // Whether the file is large enough to hold the pixels its header claims (no codec packs more
+    // than kMaxPixelsPerByte into a byte): a cut-short or crafted file is refused before its
+    // claim is allocated. Called after the caller's own size limits, whose messages say more.
+    bool checkSizeAgainstFile(const char* function, std::string* error) const;
 
 private:
     ImageReader() = default;

@@ -11,6 +11,7 @@
 
 #include "core/AssetLibrary.h"
 #include "core/AtomicFile.h"
+#include "core/FileCheck.h"
 #include "core/JsonSupport.h"
 #include "core/Project.h"
 
@@ -53,7 +54,6 @@ std::optional<std::string> rescuedInstalledPath(const std::string& path)
 }
 
 } // namespace
-
 
 namespace json {
 
@@ -157,14 +157,10 @@ bool checkFormat(const QJsonObject& object, const char* formatName, int newestVe
 
 std::optional<QJsonObject> readObjectFile(const std::string& path, qint64 maxBytes, std::string* problem)
 {
-    if (path.empty())
-        return failed("no file name given", problem);
+    // A FIFO would block the open, a device would be read to the size limit for nothing.
+    if (const FileCheck check = checkRegularFile(path); !check.ok())
+        return failed(check.problem, problem);
     const QString fileName = qs(path);
-    const QFileInfo info(fileName);
-    if (!info.exists())
-        return failed("no such file", problem);
-    if (info.isDir())
-        return failed("is a folder, not a file", problem);
     QFile file(fileName);
     if (!file.open(QIODevice::ReadOnly))
         return failed("cannot read it: " + ss(file.errorString()), problem);

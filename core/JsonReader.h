@@ -5,6 +5,7 @@
 // projects and compare layouts both hold. Private to core: not part of any public header.
 
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -45,6 +46,18 @@ struct Messages {
     }
 };
 
+// Every number of a Facet file reaches the GPU (or the CPU twins) as a 32-bit float: a finite
+// double beyond that range (a light of 1e308) would become infinity there and a wrong image.
+inline bool fitsFloat(double value)
+{
+    return std::abs(value) <= double(std::numeric_limits<float>::max());
+}
+inline std::string outOfFloatRange(double value)
+{
+    return jsonsupport::number(value)
+        + " is beyond the range of the 32-bit floats Facet shades with (about 3.4e38)";
+}
+
 // Reads the fields of one JSON object. Missing keys leave the output (its default) alone; a key
 // of the wrong type or an unknown name records an error naming the key's JSON path. Reading
 // continues after an error, but only the first one is reported.
@@ -77,6 +90,8 @@ public:
             return;
         if (!v.isDouble())
             return wrongType(key, "a number", v);
+        if (!fitsFloat(v.toDouble()))
+            return m_messages.fail(pathOf(key), outOfFloatRange(v.toDouble()));
         out = v.toDouble();
     }
     void integer(const char* key, int& out)
@@ -107,6 +122,9 @@ public:
             return;
         if (!v.isString())
             return wrongType(key, "a string", v);
+        // A NUL would cut the text short where a C API reads it (a path would name another file).
+        if (v.toString().contains(QChar(0)))
+            return m_messages.fail(pathOf(key), "holds a NUL character");
         out = ss(v.toString());
     }
     // An array of `minCount` to `maxCount` numbers into out[0..]; returns how many were read (0
@@ -132,6 +150,11 @@ public:
             if (!array[i].isDouble()) {
                 m_messages.fail(pathOf(key) + "[" + std::to_string(i) + "]",
                     std::string("expected a number, got ") + typeName(array[i]));
+                return 0;
+            }
+            if (!fitsFloat(array[i].toDouble())) {
+                m_messages.fail(
+                    pathOf(key) + "[" + std::to_string(i) + "]", outOfFloatRange(array[i].toDouble()));
                 return 0;
             }
         }

@@ -307,6 +307,8 @@ std::optional<MapImage> MapImage::load(
                     + std::to_string(Image::kMaxDimension) + " pixels per side");
             return std::nullopt;
         }
+        if (!reader->checkSizeAgainstFile(kFunction, error))
+            return std::nullopt;
 
         MapSampleType type = MapSampleType::UInt16;
         switch (spec.format.basetype) {

@@ -1,5 +1,6 @@
 #include "core/MeshImport.h"
 
+#include "core/FileCheck.h"
 #include "core/GltfImport.h"
 #include "core/MeshFinish.h"
 
@@ -12,6 +13,7 @@
 #include <QFile>
 #include <QFileInfo>
 
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
@@ -46,7 +48,6 @@ glm::vec3 toGlm(const aiVector3D& v)
 {
     return {v.x, v.y, v.z};
 }
-
 
 struct Instance {
     const aiMesh* mesh;
@@ -147,6 +148,55 @@ PartInfo appendInstance(Mesh& out, const Instance& instance, std::size_t index)
 // file cut short, or a damaged keyword; found by fuzzing with mutated files, docs/meshes.md). A PLY
 // file (by extension or by its "ply" magic, which Assimp also goes by) must show that line
 // within its first MiB before Assimp sees it. Empty when the file is fine or not a PLY.
+// The fewest bytes the elements a PLY header declares can take: in ASCII each value is at least
+// one digit and one separator, in binary each scalar its size and each list its count. A header
+// claiming more than the file holds (210 bytes declaring 10 million vertices) is refused here,
+// before Assimp reserves memory for it and reads on for minutes.
+std::string plyBodyProblem(const QList<QByteArray>& header, qint64 bodyBytes)
+{
+    const auto scalarBytes = [](const QByteArray& type) -> double {
+        static const std::pair<const char*, int> kSizes[] = {{"char", 1}, {"uchar", 1}, {"int8", 1},
+            {"uint8", 1}, {"short", 2}, {"ushort", 2}, {"int16", 2}, {"uint16", 2}, {"int", 4}, {"uint", 4},
+            {"int32", 4}, {"uint32", 4}, {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
+        for (const auto& [name, bytes] : kSizes)
+            if (type == name)
+                return bytes;
+        return 1;
+    };
+    bool ascii = false;
+    double needed = 0; // bytes; a double, as counts up to 2^32 times properties overflow nothing
+    double elementCount = 0;
+    double elementBytes = 0;
+    std::string claimed;
+    const auto closeElement = [&] { needed += elementCount * elementBytes; };
+    for (const QByteArray& rawLine : header) {
+        const QList<QByteArray> words = rawLine.simplified().split(' ');
+        if (words.size() >= 2 && words[0] == "format") {
+            ascii = words[1] == "ascii";
+        } else if (words.size() >= 3 && words[0] == "element") {
+            closeElement();
+            bool ok = false;
+            elementCount = words[2].toDouble(&ok);
+            if (!ok || elementCount < 0)
+                return "broken PLY header: element \"" + words[1].toStdString() + "\" has the count \""
+                    + words[2].toStdString() + "\"";
+            elementBytes = 0;
+            claimed += (claimed.empty() ? "" : ", ") + words[2].toStdString() + " " + words[1].toStdString();
+        } else if (words.size() >= 3 && words[0] == "property") {
+            const bool list = words[1] == "list" && words.size() >= 5;
+            elementBytes += ascii ? 2.0 : scalarBytes(list ? words[2] : words[1]);
+        }
+    }
+    closeElement();
+    if (ascii && needed > 0)
+        needed -= 1; // the last value needs no separator
+    if (needed > double(bodyBytes))
+        return "broken PLY file: its header declares " + claimed + " elements, at least "
+            + std::to_string(static_cast<long long>(std::min(needed, 9e18))) + " bytes of data, but "
+            + std::to_string(std::max<qint64>(bodyBytes, 0)) + " bytes follow the header";
+    return {};
+}
+
 std::string plyHeaderProblem(const QString& path)
 {
     QFile file(path);
@@ -160,11 +210,28 @@ std::string plyHeaderProblem(const QString& path)
         return "not a PLY file: it does not start with the line \"ply\"";
     // Only whole lines count: a file cut right after "end_header", before its newline, hangs too.
     const QList<QByteArray> lines = head.split('\n');
-    for (qsizetype i = 0; i + 1 < lines.size(); ++i)
+    qsizetype headerBytes = 0;
+    for (qsizetype i = 0; i + 1 < lines.size(); ++i) {
+        headerBytes += lines[i].size() + 1;
         if (lines[i].trimmed() == "end_header")
-            return {};
+            return plyBodyProblem(lines.mid(0, i), file.size() - headerBytes);
+    }
     return "broken PLY header: no \"end_header\" line in the first MiB (the file may be cut short)";
 }
+
+// Assimp opens the files a model names (an OBJ's mtllib, ...) with fopen: a FIFO there blocks
+// the import for ever, a device reads without end. Only regular files are opened; the format's
+// reader then treats the file as missing (an OBJ's material library: a warning).
+class RegularFilesOnly : public Assimp::DefaultIOSystem {
+public:
+    bool Exists(const char* file) const override { return file && checkRegularFile(file).ok(); }
+    Assimp::IOStream* Open(const char* file, const char* mode) override
+    {
+        if (!file || !checkRegularFile(file).ok())
+            return nullptr;
+        return DefaultIOSystem::Open(file, mode);
+    }
+};
 
 std::string joined(const std::vector<std::string>& parts)
 {
@@ -184,6 +251,7 @@ std::optional<Mesh> importChecked(const std::string& path, const MeshImportOptio
     };
 
     Assimp::Importer importer;
+    importer.SetIOHandler(new RegularFilesOnly); // the importer owns it
     importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, options.smoothingAngleDegrees);
     // Remove degenerate triangles outright (instead of turning them into lines), and only those
     // with coincident corners: the area test's fixed 1e-6 threshold would delete every triangle
@@ -301,15 +369,17 @@ std::optional<Mesh> importMesh(
             *error = "importMesh: " + path + ": " + problem;
         return std::nullopt;
     };
-    if (path.empty())
-        return failed("no file name given");
-    const QFileInfo info(QString::fromStdString(path));
-    if (!info.exists())
+    switch (const FileCheck check = checkRegularFile(path); check.kind) {
+    case FileKind::Regular:
+        break;
+    case FileKind::Missing:
         return failed("file does not exist");
-    if (info.isDir())
+    case FileKind::Folder:
         return failed("is a directory, not a mesh file");
-    if (!info.isFile())
-        return failed("is not a regular file");
+    default:
+        return failed(check.problem);
+    }
+    const QFileInfo info(QString::fromStdString(path));
     if (!info.isReadable())
         return failed("cannot be read (permission denied)");
     if (info.size() == 0)

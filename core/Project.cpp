@@ -134,6 +134,11 @@ void readMap(Messages& messages, MapSlot slot, const QJsonObject& object, const 
     ObjectReader r(messages, object, path);
     std::string texture;
     r.string("texture", texture);
+    // Facet writes no "texture" key for a slot without one; an empty name is most likely a
+    // path that a script or an editor lost.
+    if (r.value("texture").isString() && texture.empty())
+        messages.warnings.push_back(
+            r.pathOf("texture") + ": empty, so the slot has no texture (leave the key out for none)");
     map.path = json::resolvedPath(texture, baseDir);
     if (isColorSlot(slot)) {
         // [r, g, b] or (base colour) [r, g, b, a]; alpha defaults to 1.
@@ -365,7 +370,12 @@ std::optional<Project> readProject(const QJsonObject& object, const std::string&
     if (const std::optional<QJsonObject> environment = r.object("environment"))
         readEnvironment(messages, *environment, "environment", baseDir, project.environment);
     if (const std::optional<QJsonArray> lights = r.array("lights")) {
-        for (int i = 0; i < int(lights->size()); ++i) {
+        // Counted before any is read: a file of millions of empty lights is refused at once.
+        if (lights->size() > kMaxLights)
+            messages.fail("lights",
+                std::to_string(lights->size()) + " lights; Facet draws at most "
+                    + std::to_string(kMaxLights));
+        for (int i = 0; i < int(lights->size()) && !messages.failed(); ++i) {
             const std::string path = "lights[" + std::to_string(i) + "]";
             const QJsonValue value = lights->at(i);
             if (!value.isObject()) {

@@ -10,6 +10,8 @@
 
 #include <set>
 
+#include <sys/stat.h>
+
 using namespace facet;
 
 namespace {
@@ -63,6 +65,8 @@ private Q_SLOTS:
     void keysAreUnique();
     void directoryFromEnvironment();
     void rejectsInconsistentEntry();
+    void entryThatIsNotAFileIsIgnored_data();
+    void entryThatIsNotAFileIsIgnored();
 };
 
 void IblDiskCacheTest::roundTrip()
@@ -73,7 +77,8 @@ void IblDiskCacheTest::roundTrip()
     std::string error;
     QVERIFY2(cache.store(key, sampleEntry(), &error), error.c_str());
     QVERIFY(QFile::exists(cache.pathFor(key)));
-    QVERIFY(cache.pathFor(key).endsWith(QString::fromStdString(IblDiskCache::keyHex(key)) + QStringLiteral(".fibl")));
+    QVERIFY(cache.pathFor(key).endsWith(
+        QString::fromStdString(IblDiskCache::keyHex(key)) + QStringLiteral(".fibl")));
     std::string warning;
     const std::optional<IblCacheEntry> loaded = cache.load(key, &warning);
     QVERIFY2(loaded, warning.c_str());
@@ -105,7 +110,8 @@ void IblDiskCacheTest::truncatedFileIsIgnored()
         QVERIFY(QFile::resize(cache.pathFor(7), cut));
         std::string warning;
         QVERIFY(!cache.load(7, &warning));
-        QVERIFY2(warning.rfind("IblDiskCache::load: ", 0) == 0 && warning.find("ignoring it") != std::string::npos,
+        QVERIFY2(
+            warning.rfind("IblDiskCache::load: ", 0) == 0 && warning.find("ignoring it") != std::string::npos,
             warning.c_str());
     }
 }
@@ -190,6 +196,49 @@ void IblDiskCacheTest::rejectsInconsistentEntry()
     QVERIFY(!cache.store(3, entry, &error));
     QVERIFY2(error.rfind("IblDiskCache::store: ", 0) == 0, error.c_str());
     QVERIFY(!QFile::exists(cache.pathFor(3)));
+}
+
+void IblDiskCacheTest::entryThatIsNotAFileIsIgnored_data()
+{
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<QString>("reason");
+    // A link to /dev/zero was read without end before; a FIFO blocked the open.
+    QTest::newRow("a link to /dev/zero") << QStringLiteral("zero") << QStringLiteral("not a regular file");
+    QTest::newRow("a FIFO") << QStringLiteral("fifo") << QStringLiteral("not a regular file");
+    QTest::newRow("a link loop") << QStringLiteral("loop") << QStringLiteral("loop of symbolic links");
+    QTest::newRow("a folder") << QStringLiteral("folder") << QStringLiteral("is a folder");
+    QTest::newRow("a dangling link") << QStringLiteral("dangling") << QStringLiteral("does not exist");
+}
+
+void IblDiskCacheTest::entryThatIsNotAFileIsIgnored()
+{
+    QFETCH(QString, kind);
+    QFETCH(QString, reason);
+    QTemporaryDir dir;
+    const IblDiskCache cache(dir.path());
+    std::string error;
+    QVERIFY2(cache.store(11, sampleEntry(), &error), error.c_str()); // makes the cache's folders
+    const QString path = cache.pathFor(11);
+    QVERIFY(QFile::remove(path));
+    if (kind == QLatin1String("zero"))
+        QVERIFY(QFile::link(QStringLiteral("/dev/zero"), path));
+    else if (kind == QLatin1String("fifo"))
+        QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+    else if (kind == QLatin1String("loop"))
+        QVERIFY(QFile::link(path, path));
+    else if (kind == QLatin1String("folder"))
+        QVERIFY(QDir().mkpath(path));
+    else
+        QVERIFY(QFile::link(path + QStringLiteral(".gone"), path));
+    std::string warning;
+    QVERIFY(!cache.load(11, &warning));
+    QVERIFY2(warning.find(reason.toStdString()) != std::string::npos, warning.c_str());
+    QVERIFY2(warning.find(path.toStdString()) != std::string::npos, warning.c_str());
+    // Storing again replaces what is there (a link is replaced, not followed into /dev/zero).
+    if (kind != QLatin1String("folder")) {
+        QVERIFY2(cache.store(11, sampleEntry(), &error), error.c_str());
+        QVERIFY(cache.load(11, &warning));
+    }
 }
 
 QTEST_GUILESS_MAIN(IblDiskCacheTest)

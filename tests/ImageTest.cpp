@@ -8,7 +8,10 @@
 #include <limits>
 #include <vector>
 
+#include <sys/stat.h>
+
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QImage>
 #include <QTemporaryDir>
@@ -159,6 +162,9 @@ private Q_SLOTS:
     void truncatedFilesAreErrors();
     void directoryIsAnError();
     void absurdHeaderSizeIsRefusedBeforeReading();
+    void headerClaimingMoreThanTheFileHoldsIsRefused();
+    void notAFileIsRefused_data();
+    void notAFileIsRefused();
     void exrRoundTrip();
     void exrWithoutAlphaRoundTrip();
     void pngSaveWritesValuesAsGiven();
@@ -502,6 +508,66 @@ void ImageTest::absurdHeaderSizeIsRefusedBeforeReading()
     }
 }
 
+// A 68-byte PNG (valid chunks and CRCs) whose header claims 32768 x 8192: exactly the pixel
+// limit, so only the file's size tells it cannot be real. It cost 4 GiB and 18-55 s to fail.
+void ImageTest::headerClaimingMoreThanTheFileHoldsIsRefused()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("claims-32768x8192.png"));
+    QVERIFY(writeBytes(path,
+        QByteArray::fromHex(
+            "89504e470d0a1a0a0000000d49484452000080000000200008020000000cb5e7460000000b4944415478"
+            "9c6360c00700001e0001f6fde9960000000049454e44ae426082")));
+    static_assert(std::size_t(32768) * 8192 <= Image::kMaxPixels);
+    QElapsedTimer clock;
+    clock.start();
+    std::string error;
+    const std::optional<Image> image = Image::load(path.toStdString(), &error);
+    checkLoadError(image, error, path);
+    QVERIFY2(error.find("claims 32768x8192 pixels, too large for a file of 68 bytes") != std::string::npos,
+        error.c_str());
+    QVERIFY2(clock.elapsed() < 2000, qPrintable(QStringLiteral("%1 ms").arg(clock.elapsed())));
+    // The same refusal for a material map and a box-filtered (thumbnail) read.
+    const std::optional<Image> thumbnail = Image::loadBoxFiltered(
+        path.toStdString(), true,
+        [](int, int) {
+            return std::pair {64, 32};
+        },
+        &error);
+    QVERIFY(!thumbnail);
+    QVERIFY2(error.find("too large for a file of 68 bytes") != std::string::npos, error.c_str());
+}
+
+void ImageTest::notAFileIsRefused_data()
+{
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<QString>("reason");
+    QTest::newRow("a FIFO") << QStringLiteral("fifo") << QStringLiteral("is not a regular file");
+    QTest::newRow("/dev/zero") << QStringLiteral("zero") << QStringLiteral("is not a regular file");
+    QTest::newRow("/dev/urandom") << QStringLiteral("urandom") << QStringLiteral("is not a regular file");
+    QTest::newRow("a link loop") << QStringLiteral("loop") << QStringLiteral("is a loop of symbolic links");
+    QTest::newRow("a NUL in the path") << QStringLiteral("nul") << QStringLiteral("holds a NUL character");
+}
+
+void ImageTest::notAFileIsRefused()
+{
+    QFETCH(QString, kind);
+    QFETCH(QString, reason);
+    QTemporaryDir dir;
+    std::string path = dir.filePath(QStringLiteral("image.exr")).toStdString();
+    if (kind == QLatin1String("fifo"))
+        QCOMPARE(::mkfifo(path.c_str(), 0600), 0);
+    else if (kind == QLatin1String("zero") || kind == QLatin1String("urandom"))
+        path = "/dev/" + kind.toStdString();
+    else if (kind == QLatin1String("loop"))
+        QVERIFY(QFile::link(QString::fromStdString(path), QString::fromStdString(path)));
+    else
+        path = dir.filePath(QStringLiteral("a.png")).toStdString() + std::string(1, '\0') + ".exr";
+    std::string error;
+    QVERIFY(!Image::load(path, &error));
+    QVERIFY2(error.find(reason.toStdString()) != std::string::npos, error.c_str());
+}
+
 void ImageTest::exrRoundTrip()
 {
     Image image(3, 2);
@@ -679,7 +745,8 @@ void ImageTest::boxFilteredReadMatchesTheWholeImage()
     if (!png) {
         values[3 * 5] = std::numeric_limits<float>::quiet_NaN(); // sanitised to 0
         values[3 * 7 + 1] = -2.0f;
-        values[3 * (std::size_t(width) * std::size_t(height / 2) + std::size_t(width / 3))] = 5000.0f; // a sun
+        values[3 * (std::size_t(width) * std::size_t(height / 2) + std::size_t(width / 3))]
+            = 5000.0f; // a sun
     }
     QVERIFY(writeFixture(path, width, height, 3, png ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::HALF, values));
 
@@ -705,10 +772,16 @@ void ImageTest::boxFilteredReadMatchesTheWholeImage()
                 const float a = filtered->at(x, y)[c];
                 const float b = expected.at(x, y)[c];
                 QVERIFY2(std::isfinite(a) && std::abs(a - b) <= 1e-5f * std::max(1.0f, std::abs(b)),
-                    qPrintable(QStringLiteral("(%1, %2)[%3]: %4, whole image %5").arg(x).arg(y).arg(c).arg(a).arg(b)));
+                    qPrintable(QStringLiteral("(%1, %2)[%3]: %4, whole image %5")
+                                   .arg(x)
+                                   .arg(y)
+                                   .arg(c)
+                                   .arg(a)
+                                   .arg(b)));
             }
     // A missing file is named.
-    const auto missing = Image::loadBoxFiltered(dir.filePath(QStringLiteral("none.exr")).toStdString(), true,
+    const auto missing = Image::loadBoxFiltered(
+        dir.filePath(QStringLiteral("none.exr")).toStdString(), true,
         [](int w, int h) { return std::pair<int, int>(w, h); }, &error);
     QVERIFY(!missing);
     QVERIFY2(error.find("none.exr") != std::string::npos, error.c_str());

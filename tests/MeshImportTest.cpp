@@ -3,6 +3,8 @@
 
 #include "MeshTestHelpers.h"
 
+#include <sys/stat.h>
+
 using namespace facet;
 using namespace facet::test::mesh;
 
@@ -321,8 +323,8 @@ private Q_SLOTS:
         std::string error;
         QVERIFY(!importMesh(path.toStdString(), &error, nullptr, options));
         // The message names the file, the part (Draco-compressed in the sample), the count and the limit.
-        QVERIFY2(contains(error, "importMesh: " + path.toStdString() + ": ") && contains(error, "7503 vertices")
-                && contains(error, "1000"),
+        QVERIFY2(contains(error, "importMesh: " + path.toStdString() + ": ")
+                && contains(error, "7503 vertices") && contains(error, "1000"),
             error.c_str());
         options = {};
         options.maxTriangles = 100;
@@ -417,6 +419,69 @@ private Q_SLOTS:
         QFile probe(locked);
         if (!probe.open(QIODevice::ReadOnly))
             checkImportFails(locked, "cannot be read");
+    }
+
+    // Inputs that hung or read without end before they were refused (issue 12's hostile inputs):
+    // each must fail fast, naming the file and the reason. A hang shows as the test's timeout.
+    void refusedBeforeReading_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("ASCII PLY of 210 bytes claiming 10M vertices") << QStringLiteral(
+            "huge-ascii-ply") << QStringLiteral("declares 10000000 vertex, 1 face elements");
+        QTest::newRow("binary PLY claiming 1M faces")
+            << QStringLiteral("huge-binary-ply") << QStringLiteral("bytes follow the header");
+        QTest::newRow("a FIFO") << QStringLiteral("fifo") << QStringLiteral("is not a regular file");
+        QTest::newRow("a link to /dev/zero")
+            << QStringLiteral("zero") << QStringLiteral("is not a regular file");
+        QTest::newRow("a link loop") << QStringLiteral("loop") << QStringLiteral("loop of symbolic links");
+    }
+
+    void refusedBeforeReading()
+    {
+        QFETCH(QString, kind);
+        QFETCH(QString, reason);
+        QTemporaryDir dir;
+        const QString path = dir.filePath(
+            kind + (kind.endsWith(QLatin1String("ply")) ? QStringLiteral(".ply") : QStringLiteral(".obj")));
+        const QByteArray vertexProperties = "property float x\nproperty float y\nproperty float z\n";
+        if (kind == QLatin1String("huge-ascii-ply")) {
+            const QByteArray text = "ply\nformat ascii 1.0\nelement vertex 10000000\n" + vertexProperties
+                + "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 "
+                  "0\n3 0 1 2\n";
+            QVERIFY(text.size() < 256);
+            QVERIFY(writeFile(path, text));
+        } else if (kind == QLatin1String("huge-binary-ply")) {
+            QVERIFY(writeFile(path,
+                "ply\nformat binary_little_endian 1.0\nelement vertex 3\n" + vertexProperties
+                    + "element face 1000000\nproperty list uchar int vertex_indices\nend_header\n"
+                    + QByteArray(36 + 13, '\0')));
+        } else if (kind == QLatin1String("fifo")) {
+            QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+        } else if (kind == QLatin1String("zero")) {
+            QVERIFY(QFile::link(QStringLiteral("/dev/zero"), path));
+        } else {
+            QVERIFY(QFile::link(path, path));
+        }
+        QElapsedTimer clock;
+        clock.start();
+        checkImportFails(path, qPrintable(reason));
+        QVERIFY2(clock.elapsed() < 5000, qPrintable(QStringLiteral("%1 ms").arg(clock.elapsed())));
+    }
+
+    // An OBJ whose material library is a FIFO: fopen would block the import for ever. The
+    // library is treated as missing (Assimp's warning) and the mesh loads.
+    void objMaterialLibraryThatIsAFifo()
+    {
+        QTemporaryDir dir;
+        QCOMPARE(::mkfifo(QFile::encodeName(dir.filePath(QStringLiteral("pipe.mtl"))).constData(), 0600), 0);
+        const QString obj = dir.filePath(QStringLiteral("model.obj"));
+        QVERIFY(writeFile(
+            obj, "mtllib pipe.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n"));
+        std::string error, warning;
+        const std::optional<Mesh> mesh = importMesh(obj.toStdString(), &error, &warning);
+        QVERIFY2(mesh, error.c_str());
+        QCOMPARE(mesh->vertices.size(), std::size_t(3));
     }
 
     void importableMeshPatternsListsCommonFormats()

@@ -19,6 +19,8 @@
 #include "TestSupport.h"
 #include "core/Project.h"
 
+#include <sys/stat.h>
+
 using namespace facet;
 
 namespace {
@@ -462,7 +464,8 @@ private Q_SLOTS:
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath(QStringLiteral("limits.json"));
-        QVERIFY(writeAll(path, minimalWith(R"("lights": [{}, {}, {}, {}, {}, {}, {}, {}], "view": {"debugView": "d"})")));
+        QVERIFY(writeAll(
+            path, minimalWith(R"("lights": [{}, {}, {}, {}, {}, {}, {}, {}], "view": {"debugView": "d"})")));
         std::string error;
         const auto loaded = Project::load(path.toStdString(), &error);
         QVERIFY2(loaded, error.c_str());
@@ -474,14 +477,17 @@ private Q_SLOTS:
     {
         QTest::addColumn<QByteArray>("content");
         QTest::addColumn<QString>("expected");
-        QTest::newRow("no materials") << QByteArray(R"({"format": "facet-project", "version": 2, "materials": []})")
-                                      << QStringLiteral("materials: needs at least one material");
+        QTest::newRow("no materials")
+            << QByteArray(R"({"format": "facet-project", "version": 2, "materials": []})")
+            << QStringLiteral("materials: needs at least one material");
         QTest::newRow("current material out of range")
-            << QByteArray(R"({"format": "facet-project", "version": 2, "materials": [{}], "currentMaterial": 3})")
+            << QByteArray(
+                   R"({"format": "facet-project", "version": 2, "materials": [{}], "currentMaterial": 3})")
             << QStringLiteral("currentMaterial: 3 is not a material (there are 1)");
-        QTest::newRow("part's material out of range")
-            << QByteArray(R"({"format": "facet-project", "version": 2, "materials": [{}], "parts": [{"material": 1}]})")
-            << QStringLiteral("parts[0].material: 1 is not a material (there are 1)");
+        QTest::newRow("part's material out of range") << QByteArray(
+            R"({"format": "facet-project", "version": 2, "materials": [{}], "parts": [{"material": 1}]})")
+                                                      << QStringLiteral("parts[0].material: 1 is not a "
+                                                                        "material (there are 1)");
         QTest::newRow("second material invalid")
             << QByteArray(R"({"format": "facet-project", "version": 2, "materials": [{}, {"ior": 0.5}]})")
             << QStringLiteral("materials[1].ior: 0.5 is outside [1, 5]");
@@ -550,12 +556,12 @@ private Q_SLOTS:
                                      << QStringLiteral("lights[0].innerConeAngle");
         QTest::newRow("unknown tone mapper") << minimalWith(R"("view": {"toneMapper": "filmic"})")
                                              << QStringLiteral("view.toneMapper: unknown name \"filmic\"");
-        QTest::newRow("unknown debug view") << minimalWith(R"("view": {"debugView": "normals"})")
-                                            << QStringLiteral("view.debugView: unknown debug view \"normals\" "
-                                                              "(expected one of: none, base-color, shading-normal");
-        QTest::newRow("nine lights")
-            << minimalWith(R"("lights": [{}, {}, {}, {}, {}, {}, {}, {}, {}])")
-            << QStringLiteral("lights: 9 lights; Facet draws at most 8");
+        QTest::newRow("unknown debug view")
+            << minimalWith(R"("view": {"debugView": "normals"})")
+            << QStringLiteral("view.debugView: unknown debug view \"normals\" "
+                              "(expected one of: none, base-color, shading-normal");
+        QTest::newRow("nine lights") << minimalWith(R"("lights": [{}, {}, {}, {}, {}, {}, {}, {}, {}])")
+                                     << QStringLiteral("lights: 9 lights; Facet draws at most 8");
         QTest::newRow("unknown light type") << minimalWith(R"("lights": [{"type": "area"}])")
                                             << QStringLiteral("lights[0].type: unknown name \"area\"");
         QTest::newRow("unknown visibility")
@@ -605,16 +611,37 @@ private Q_SLOTS:
             << minimalWith(R"("environment": {"intensity": -1})") << QStringLiteral("environment.intensity");
         QTest::newRow("unknown quality") << minimalWith(R"("environment": {"quality": "ultra"})")
                                          << QStringLiteral("environment.quality: unknown name \"ultra\"");
-        QTest::newRow("unknown method") << minimalWith(R"("environment": {"method": "path-tracing"})")
-                                        << QStringLiteral("environment.method: unknown name \"path-tracing\"");
-        QTest::newRow("negative samples") << minimalWith(R"("environment": {"method": "reference", "samples": -4})")
-                                          << QStringLiteral("environment.samples: -4 must be 0");
+        QTest::newRow("unknown method")
+            << minimalWith(R"("environment": {"method": "path-tracing"})")
+            << QStringLiteral("environment.method: unknown name \"path-tracing\"");
+        QTest::newRow("negative samples")
+            << minimalWith(R"("environment": {"method": "reference", "samples": -4})")
+            << QStringLiteral("environment.samples: -4 must be 0");
         QTest::newRow("too many samples")
             << minimalWith(R"("environment": {"method": "reference", "samples": 65537})")
             << QStringLiteral("environment.samples: 65537 must be 0 (the method's default) to 65536");
         QTest::newRow("samples with the split sum")
             << minimalWith(R"("environment": {"samples": 64})")
             << QStringLiteral("environment.samples: 64 given with the split-sum method");
+        // Finite doubles that a 32-bit float cannot hold became infinity on the GPU (a black or
+        // white image, exit 0): refused, naming the field, in objects and in arrays.
+        QTest::newRow("light intensity 1e308")
+            << minimalWith(R"("lights": [{"type": "point", "intensity": 1e308}])")
+            << QStringLiteral("lights[0].intensity: 1e+308 is beyond the range of the 32-bit floats");
+        QTest::newRow("rotation 1e308") << minimalWith(R"("environment": {"rotationDegrees": 1e308})")
+                                        << QStringLiteral("environment.rotationDegrees: 1e+308 is beyond");
+        QTest::newRow("far plane 1e308") << minimalWith(R"("camera": {"farPlane": 1e308})")
+                                         << QStringLiteral("camera.farPlane: 1e+308 is beyond");
+        QTest::newRow("camera position element -1e39")
+            << minimalWith(R"("camera": {"position": [0, 0, -1e39]})")
+            << QStringLiteral("camera.position[2]: -1e+39 is beyond");
+        QTest::newRow("a NUL in a texture path")
+            << minimalWith(R"("material": {"baseColor": {"texture": "wood.png\u0000.exr"}})")
+            << QStringLiteral("material.baseColor.texture: holds a NUL character");
+        // Counted before a light is read: three million of them no longer take a second and a GiB.
+        QTest::newRow("a million lights")
+            << minimalWith(("\"lights\": [" + QByteArray("{},").repeated(1000000) + "{}]").constData())
+            << QStringLiteral("lights: 1000001 lights; Facet draws at most 8");
         // Qt's parser refuses numbers beyond double range, so no infinity reaches the model.
         QTest::newRow("huge number") << minimalWith(R"("environment": {"rotationDegrees": 1e999})")
                                      << QStringLiteral("line 1, column 83: illegal number");
@@ -632,6 +659,56 @@ private Q_SLOTS:
         QVERIFY2(!loaded, "a broken file loaded");
         QVERIFY2(contains(error, "Project::load: " + path.toStdString() + ": "), error.c_str());
         QVERIFY2(contains(error, expected.toStdString()), error.c_str());
+    }
+
+    // What is not a regular file is refused before it is opened: a FIFO blocked the open, a
+    // device was read up to the size limit, a link loop said "no such file".
+    void notAFileIsRefused_data()
+    {
+        QTest::addColumn<QString>("kind");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("a FIFO") << QStringLiteral("fifo") << QStringLiteral("is not a regular file");
+        QTest::newRow("/dev/zero") << QStringLiteral("zero") << QStringLiteral("is not a regular file");
+        QTest::newRow("/dev/urandom") << QStringLiteral("urandom") << QStringLiteral("is not a regular file");
+        QTest::newRow("a link loop") << QStringLiteral("loop")
+                                     << QStringLiteral("is a loop of symbolic links");
+        QTest::newRow("a dangling link") << QStringLiteral(
+            "dangling") << QStringLiteral("is a symbolic link to a file that does not exist");
+        QTest::newRow("a folder") << QStringLiteral("folder") << QStringLiteral("is a folder, not a file");
+        QTest::newRow("nothing") << QStringLiteral("missing") << QStringLiteral("no such file");
+    }
+    void notAFileIsRefused()
+    {
+        QFETCH(QString, kind);
+        QFETCH(QString, reason);
+        QTemporaryDir dir;
+        QString path = dir.filePath(QStringLiteral("project.json"));
+        if (kind == QLatin1String("fifo"))
+            QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+        else if (kind == QLatin1String("zero") || kind == QLatin1String("urandom"))
+            path = QStringLiteral("/dev/") + kind;
+        else if (kind == QLatin1String("loop"))
+            QVERIFY(QFile::link(path, path));
+        else if (kind == QLatin1String("dangling"))
+            QVERIFY(QFile::link(dir.filePath(QStringLiteral("gone.json")), path));
+        else if (kind == QLatin1String("folder"))
+            QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("project.json")));
+        std::string error;
+        QVERIFY(!Project::load(path.toStdString(), &error));
+        QVERIFY2(contains(error, "Project::load: " + path.toStdString() + ": " + reason.toStdString()),
+            error.c_str());
+    }
+
+    void emptyTextureIsWarnedAbout()
+    {
+        std::string error, warning;
+        const std::optional<Project> p = Project::fromJson(
+            QJsonDocument::fromJson(minimalWith(R"("material": {"normal": {"texture": ""}})")).object(), {},
+            &error, &warning);
+        QVERIFY2(p, error.c_str());
+        QVERIFY(p->material().map(MapSlot::Normal).path.empty());
+        QVERIFY2(
+            contains(warning, "material.normal.texture: empty, so the slot has no texture"), warning.c_str());
     }
 
     void missingFieldsTakeDefaults()
