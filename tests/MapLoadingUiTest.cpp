@@ -14,6 +14,7 @@
 #include "ui/MainWindow.h"
 #include "ui/MapSlotWidget.h"
 #include "ui/MapUploadScheduler.h"
+#include "ui/ProblemBar.h"
 #include "ui/ProjectFileController.h"
 #include "ui/SceneController.h"
 #include "ui/SurfaceFormat.h"
@@ -24,16 +25,16 @@
 
 #include <QElapsedTimer>
 #include <QImage>
-#include <QProcess>
-#include <QUndoStack>
 #include <QLabel>
 #include <QMessageBox>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
+#include <QProcess>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTimer>
+#include <QUndoStack>
 #include <QtTest/QTest>
 
 #include <OpenImageIO/imageio.h>
@@ -248,16 +249,19 @@ void MapLoadingUiTest::setLoadsOffTheGuiThreadAndShowsWhole()
     int factorFrames = 0;
     for (std::size_t i = 0; i < frames.size(); ++i) {
         const FrameSample& frame = frames[i];
-        const bool allFactor = std::all_of(frame.points.begin(), frame.points.end(), [&](QRgb p) { return close(p, factor); });
-        const bool allMap = std::all_of(frame.points.begin(), frame.points.end(), [&](QRgb p) { return close(p, map); });
+        const bool allFactor
+            = std::all_of(frame.points.begin(), frame.points.end(), [&](QRgb p) { return close(p, factor); });
+        const bool allMap
+            = std::all_of(frame.points.begin(), frame.points.end(), [&](QRgb p) { return close(p, map); });
         QString points;
         for (QRgb p : frame.points)
             points += describe(p) + QLatin1Char(' ');
         QVERIFY2(allFactor || allMap,
-            qPrintable(QStringLiteral("frame %1 of %2 shows neither the factor %3 nor the map %4 throughout: %5")
-                           .arg(i)
-                           .arg(frames.size())
-                           .arg(describe(factor), describe(map), points)));
+            qPrintable(
+                QStringLiteral("frame %1 of %2 shows neither the factor %3 nor the map %4 throughout: %5")
+                    .arg(i)
+                    .arg(frames.size())
+                    .arg(describe(factor), describe(map), points)));
         // Uploads happen between frames: none inside one.
         QCOMPARE(frame.texturesUploaded, 0);
         if (allFactor)
@@ -268,7 +272,8 @@ void MapLoadingUiTest::setLoadsOffTheGuiThreadAndShowsWhole()
     QVERIFY(factorFrames > 0);
     qInfo("%zu frames while loading, %d of them before the base colour map was up; %d upload slices, the "
           "longest %.1f ms",
-        frames.size(), factorFrames, m_viewport->mapUploads()->slices(), m_viewport->mapUploads()->longestSliceMs());
+        frames.size(), factorFrames, m_viewport->mapUploads()->slices(),
+        m_viewport->mapUploads()->longestSliceMs());
 }
 
 void MapLoadingUiTest::mapBeyondTheBudgetIsRefused()
@@ -300,12 +305,36 @@ void MapLoadingUiTest::mapBeyondTheBudgetIsRefused()
             && label->toolTip().contains(QStringLiteral("map size limit")))
             slotSaysSo = true;
     QVERIFY(slotSaysSo);
+    // The problem stays in view when the next note replaces the status bar's message ("Lighting
+    // of studio ready" hid it before), until the slot no longer names the file.
+    ProblemBar* problems = m_window->problemBar();
+    const auto shows = [&] {
+        return problems->isVisibleTo(m_window.get())
+            && problems->problems()
+                   .join(QLatin1Char('\n'))
+                   .contains(QStringLiteral("huge_basecolor.png is 16384×16384 pixels"));
+    };
+    QVERIFY2(shows(), qPrintable(problems->problems().join(QLatin1Char('\n'))));
+    m_window->showStatusMessage(QStringLiteral("Lighting of studio ready (0 ms)"));
+    QVERIFY(!m_window->statusMessage().contains(QStringLiteral("huge_basecolor.png")));
+    QVERIFY(shows());
     // And the frame is drawn, with the factor.
     QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
     m_viewport->update();
     QVERIFY(rendered.wait(30000));
     QVERIFY2(m_viewport->lastError().isEmpty(), qPrintable(m_viewport->lastError()));
     QCOMPARE(m_viewport->lastFrameStats().mapsHeldBack, 0);
+    // Clearing the slot clears its problem, and the row hides; Dismiss clears the rest.
+    QVERIFY(shows());
+    Material cleared = m_document->project().material();
+    cleared.map(MapSlot::BaseColor).path.clear();
+    m_document->setMaterial(cleared, QStringLiteral("Clear Base Colour Map"));
+    QVERIFY(waitFor([&] { return !problems->hasProblems(); }));
+    QVERIFY(!problems->isVisibleTo(m_window.get()));
+    problems->setProblem(QStringLiteral("file"), QStringLiteral("Could not save p.json: disk full"));
+    QVERIFY(problems->isVisibleTo(m_window.get()));
+    problems->dismiss();
+    QVERIFY(!problems->isVisibleTo(m_window.get()));
 }
 
 void MapLoadingUiTest::packedFileAndThumbnailsDecodeOnce()
@@ -316,7 +345,8 @@ void MapLoadingUiTest::packedFileAndThumbnailsDecodeOnce()
     const struct {
         MapSlot slot;
         MapChannel channel;
-    } uses[] = {{MapSlot::Occlusion, MapChannel::R}, {MapSlot::Roughness, MapChannel::G}, {MapSlot::Metallic, MapChannel::B}};
+    } uses[] = {{MapSlot::Occlusion, MapChannel::R}, {MapSlot::Roughness, MapChannel::G},
+        {MapSlot::Metallic, MapChannel::B}};
     for (const auto& use : uses) {
         material.map(use.slot).path = orm.toStdString();
         material.map(use.slot).channel = use.channel;
@@ -325,7 +355,8 @@ void MapLoadingUiTest::packedFileAndThumbnailsDecodeOnce()
     m_document->setMaterial(material, QStringLiteral("Assign Maps"));
     QVERIFY(waitFor([&] { return m_scene->pendingMapLoads() == 0; }));
     QVERIFY(waitFor([&] { return m_window->textureMapsDock()->pendingThumbnails() == 0; }));
-    QVERIFY(waitFor([&] { return !m_viewport->lastFrameStats().loadingMaps && !m_viewport->lastFrameStats().reduced; }));
+    QVERIFY(waitFor(
+        [&] { return !m_viewport->lastFrameStats().loadingMaps && !m_viewport->lastFrameStats().reduced; }));
     // Three slots, three thumbnails, one texture on the GPU, one decode.
     for (const auto& use : uses)
         QVERIFY(m_scene->assets().maps[0][std::size_t(use.slot)].image.get()
@@ -420,7 +451,8 @@ void MapLoadingUiTest::decodedMapsAreReleasedOnceOnTheGpu()
     };
     QRgb shown = 0;
     QVERIFY(settledShowing(&shown));
-    QVERIFY2(qGreen(shown) > 2 * qRed(shown) && qGreen(shown) > 2 * qBlue(shown), qPrintable(describe(shown)));
+    QVERIFY2(
+        qGreen(shown) > 2 * qRed(shown) && qGreen(shown) > 2 * qBlue(shown), qPrintable(describe(shown)));
     QVERIFY(waitFor([&] { return m_window->textureMapsDock()->pendingThumbnails() == 0; }));
     // Released: stand-ins of the right size, one per file, and nobody holds the pixels.
     for (MapSlot slot : {MapSlot::BaseColor, MapSlot::Roughness, MapSlot::Metallic}) {
@@ -470,7 +502,8 @@ void MapLoadingUiTest::screenshotWaitsForEveryMap()
     QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
     environment.insert(QStringLiteral("FACET_CACHE_DIR"), m_dir.filePath(QStringLiteral("cache")));
     facetProcess.setProcessEnvironment(environment);
-    facetProcess.start(QStringLiteral(FACET_EXECUTABLE), {projectPath, QStringLiteral("--screenshot"), picture});
+    facetProcess.start(
+        QStringLiteral(FACET_EXECUTABLE), {projectPath, QStringLiteral("--screenshot"), picture});
     QVERIFY(facetProcess.waitForFinished(180000));
     QVERIFY2(facetProcess.exitCode() == 0, facetProcess.readAllStandardError().constData());
 
@@ -485,10 +518,11 @@ void MapLoadingUiTest::screenshotWaitsForEveryMap()
             if (qGreen(p) > 60 && qGreen(p) > 2 * qRed(p) && qGreen(p) > 2 * qBlue(p))
                 ++greenPixels;
         }
-    QVERIFY2(greenPixels > 20000, qPrintable(QStringLiteral("%1 green pixels in %2x%3")
-                                                 .arg(greenPixels)
-                                                 .arg(shot.width())
-                                                 .arg(shot.height())));
+    QVERIFY2(greenPixels > 20000,
+        qPrintable(QStringLiteral("%1 green pixels in %2x%3")
+                       .arg(greenPixels)
+                       .arg(shot.width())
+                       .arg(shot.height())));
 }
 
 QTEST_MAIN(MapLoadingUiTest)

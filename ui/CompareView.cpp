@@ -82,6 +82,10 @@ CompareView::~CompareView()
     if (!m_assetsAlive.isNull())
         m_assets->forgetUser(this);
     releaseRenderer();
+    // QOpenGLWidget's destructor destroys the context after this object's part is gone: the
+    // context's aboutToBeDestroyed must no longer reach a slot of this class by then.
+    if (QOpenGLContext* glContext = context())
+        disconnect(glContext, nullptr, this, nullptr);
 }
 
 void CompareView::releaseRenderer()
@@ -502,7 +506,8 @@ QString CompareView::errorLabel(const CompareCell& cell) const
 void CompareView::updateRefiningLabels()
 {
     const bool wedge = m_document->project().compare.mode == CompareMode::Wedge; // values on the axes
-    for (std::size_t i = 0; !wedge && i < m_cells.size() && int(i) < m_cellLabelCount && i < m_labels.size(); ++i) {
+    for (std::size_t i = 0; !wedge && i < m_cells.size() && int(i) < m_cellLabelCount && i < m_labels.size();
+         ++i) {
         const CompareCell& cell = m_cells[i];
         const std::string& source = cell.project.environment.source;
         if (m_assets->isLoading(DocumentAssets::Kind::Environment, source)

@@ -17,6 +17,7 @@
 #include "ui/MaterialDock.h"
 #include "ui/MaterialsDock.h"
 #include "ui/PartPicker.h"
+#include "ui/ProblemBar.h"
 #include "ui/ProjectFileController.h"
 #include "ui/SceneController.h"
 #include "ui/TextureMapsDock.h"
@@ -25,6 +26,7 @@
 #include "ui/ViewStatus.h"
 #include "ui/ViewportDropHandler.h"
 #include "ui/ViewportWidget.h"
+#include "ui/WindowMessages.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -43,6 +45,7 @@
 #include <QSettings>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QToolBar>
 #include <QUndoStack>
 
 #include <initializer_list>
@@ -116,6 +119,7 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     connect(m_files, &ProjectFileController::statusMessage, this, &MainWindow::showStatusMessage);
     connect(m_files, &ProjectFileController::errorReported, this, &MainWindow::showStatusMessage);
     connect(m_autosave, &AutosaveController::failed, this, &MainWindow::showStatusMessage);
+    createProblemBar();
     connect(m_document, &Document::modifiedChanged, this, &QWidget::setWindowModified);
     connect(m_document, &Document::filePathChanged, this, &MainWindow::updateTitle);
     // An asset opened as an untitled project keeps an empty path but is named in the title.
@@ -339,6 +343,39 @@ void MainWindow::addDock(QDockWidget* dock, Qt::DockWidgetArea area)
     m_panelsMenu->addAction(dock->toggleViewAction());
 }
 
+void MainWindow::createProblemBar()
+{
+    // A row above the view, shown only while there are problems (ui/ProblemBar.h). A toolbar row
+    // so that the central area (the views' stack) stays as it is; it cannot be moved or hidden
+    // from the context menu, and a saved layout does not decide whether it shows.
+    m_problemBar = new ProblemBar(this);
+    m_problemRow = new QToolBar(tr("Problems"), this);
+    m_problemRow->setObjectName(QStringLiteral("problemRow"));
+    m_problemRow->setMovable(false);
+    m_problemRow->setFloatable(false);
+    m_problemRow->toggleViewAction()->setVisible(false);
+    m_problemRow->addWidget(m_problemBar);
+    m_problemRow->setVisible(false);
+    addToolBarBreak(Qt::TopToolBarArea); // a row of its own, the width of the window
+    addToolBar(Qt::TopToolBarArea, m_problemRow);
+    connect(m_problemBar, &ProblemBar::problemsChanged, m_problemRow, &QWidget::setVisible);
+
+    const auto setProblem
+        = [this](const QString& subject, const QString& text) { m_problemBar->setProblem(subject, text); };
+    connect(m_scene, &SceneController::problemChanged, this, setProblem);
+    connect(m_scene, &SceneController::environmentProblemChanged, this, [this](const QString& problem) {
+        m_problemBar->setProblem(QStringLiteral("environment"),
+            problem.isEmpty() ? QString()
+                              : WindowMessages::environmentNotUsed(problem, m_scene->environmentName()));
+    });
+    connect(m_files, &ProjectFileController::errorReported, this,
+        [this](const QString& text) { m_problemBar->setProblem(QStringLiteral("file"), text); });
+    connect(m_autosave, &AutosaveController::failed, this,
+        [this](const QString& text) { m_problemBar->setProblem(QStringLiteral("autosave"), text); });
+    // Another project: the previous one's problems are not this one's (its own arrive as it loads).
+    connect(m_document, &Document::projectReplaced, m_problemBar, &ProblemBar::dismiss);
+}
+
 void MainWindow::resetLayout()
 {
     for (QDockWidget* dock : findChildren<QDockWidget*>()) {
@@ -347,6 +384,7 @@ void MainWindow::resetLayout()
     }
     if (!m_defaultLayout.isEmpty())
         restoreState(m_defaultLayout, kLayoutVersion);
+    m_problemRow->setVisible(m_problemBar->hasProblems());
     applyDefaultDockSizes(); // for the window's present width, not the one it first had
     QSettings().remove(kLayoutKey);
 }
@@ -373,6 +411,7 @@ void MainWindow::showEvent(QShowEvent* event)
     applyDefaultDockSizes();
     m_defaultLayout = saveState(kLayoutVersion);
     restoreState(settings.value(kLayoutKey).toByteArray(), kLayoutVersion);
+    m_problemRow->setVisible(m_problemBar->hasProblems()); // not the saved layout's choice
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -13,6 +13,7 @@
 class QAction;
 class QDockWidget;
 class QLabel;
+class QToolBar;
 class QMenu;
 
 namespace facet {
@@ -21,6 +22,7 @@ class AutosaveController;
 class CameraController;
 class CompareActions;
 class CompareController;
+class ProblemBar;
 class CompareView;
 class Document;
 class EnvironmentDock;
@@ -60,6 +62,8 @@ public:
     CompareView* compareView() const { return m_compareView; }
     CompareController* compareController() const { return m_compareController; }
     CompareActions* compareActions() const { return m_compareActions; }
+    // Problems that stay in view until dismissed (ui/ProblemBar.h).
+    ProblemBar* problemBar() const { return m_problemBar; }
 
     // Adds a panel: docked in `area`, movable, floatable, closable, tabbable; its toggle goes
     // into View > Panels. Its content goes into a DockScrollArea (unless it is a scroll area), so
@@ -100,6 +104,7 @@ private:
     void createViewMenu();
     void createDocks();
     void applyDefaultDockSizes();
+    void createProblemBar();
     void updateRecentFilesMenu();
     void updateTitle();
     void showAbout();
@@ -126,6 +131,8 @@ private:
     ViewDock* m_viewDock = nullptr;
     QLabel* m_glStatusLabel = nullptr;
     QLabel* m_frameStatsLabel = nullptr;
+    ProblemBar* m_problemBar = nullptr;
+    QToolBar* m_problemRow = nullptr;
     QMenu* m_recentMenu = nullptr;
     QMenu* m_panelsMenu = nullptr;
     QAction* m_relinkAction = nullptr;

@@ -220,7 +220,9 @@ bool SceneController::takeMesh()
     }
     m_meshPending = loading; // as for the environment: a previous version now, the new one later
     if (!loaded) {
-        report("Mesh: " + m_documentAssets->problem(Kind::Mesh, source));
+        const std::string problem = "Mesh: " + m_documentAssets->problem(Kind::Mesh, source);
+        report(problem);
+        Q_EMIT problemChanged(QStringLiteral("mesh"), WindowMessages::fromCore(problem));
         if (m_assets.mesh)
             return false;
         const auto sphere = m_documentAssets->mesh("sphere");
@@ -232,6 +234,7 @@ bool SceneController::takeMesh()
     if (loaded == m_meshHeld)
         return false;
     m_meshHeld = loaded;
+    Q_EMIT problemChanged(QStringLiteral("mesh"), {});
     report(m_documentAssets->warning(Kind::Mesh, source));
     m_assets.mesh = loaded->mesh;
     m_assets.meshKey = loaded->key;
@@ -314,6 +317,10 @@ void SceneController::loadMaps(const DocumentChanges& changes)
         else
             ++it;
     }
+    // A file that failed and that no slot names any more is no longer a problem.
+    for (const auto& [path, entry] : m_images)
+        if (!entry.problem.empty() && !images.count(path))
+            Q_EMIT problemChanged(QStringLiteral("map:") + QString::fromStdString(path), {});
     m_images = std::move(images);
     publishMaps();
     if (m_pendingMaps.empty() && m_batchTotal > 0) {
@@ -369,7 +376,12 @@ void SceneController::onMapLoaded(const std::string& path, std::uint64_t ticket,
                     slotName = toString(slot);
         m_batchFailed = true;
         report(slotName + " map: " + error);
-    } else if (stats.total() > 0) {
+        Q_EMIT problemChanged(QStringLiteral("map:") + QString::fromStdString(path),
+            WindowMessages::fromCore(slotName + " map: " + error));
+    } else {
+        Q_EMIT problemChanged(QStringLiteral("map:") + QString::fromStdString(path), {});
+    }
+    if (entry.image && stats.total() > 0) {
         report(path + ": replaced " + std::to_string(stats.total()) + " NaN, Inf or negative samples");
     }
     ++m_batchLoaded;
@@ -402,7 +414,8 @@ void SceneController::publishMaps()
 }
 
 int SceneController::releaseMapPixels(
-    const std::function<bool(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace)>& onGpu)
+    const std::function<bool(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace)>&
+        onGpu)
 {
     int released = 0;
     for (auto& [path, entry] : m_images) {

@@ -41,8 +41,8 @@
 #include <cstdint>
 #include <functional>
 #include <map>
-#include <string>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace facet {
@@ -87,7 +87,8 @@ public:
     // that showed every map; 2K maps are 4-16 MiB each, 4K ones 16-64 MiB. Returns how many
     // maps it released. Draws nothing.
     int releaseMapPixels(
-        const std::function<bool(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace)>& onGpu);
+        const std::function<bool(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace)>&
+            onGpu);
     // Decodes again (off the GUI thread, as any load) the released maps among `paths` whose
     // textures the viewport no longer has (a new GL context, another colour space).
     void reloadMaps(const std::vector<std::string>& paths);
@@ -107,7 +108,8 @@ public:
     // The frame to draw, with the environment's IBL textures (null: background-only lighting), by
     // the split sum (the interactive preview) or by `method` at the project's samples for it
     // (the still frame's refinement, ViewportRenderer::refine).
-    RenderScene scene(const std::shared_ptr<const IblTextures>& ibl, IblMethod method = IblMethod::SplitSum) const;
+    RenderScene scene(
+        const std::shared_ptr<const IblTextures>& ibl, IblMethod method = IblMethod::SplitSum) const;
     // The method the still frame refines to: the project's environment.method (split-sum: none).
     IblMethod refinementMethod() const;
 
@@ -133,6 +135,9 @@ Q_SIGNALS:
     void message(const QString& text);
     // environmentProblem() changed.
     void environmentProblemChanged(const QString& problem);
+    // A file the scene needs did not load (a problem that stays in view, ui/ProblemBar.h), or
+    // loaded after all (`text` empty). `subject`: "mesh", or "map:" and the map's path.
+    void problemChanged(const QString& subject, const QString& text);
     // Decoded maps arrived in assets(): the viewport puts them on the GPU (between frames) and
     // draws them when they are there (ui/MapUploadScheduler.h). A map that failed is a
     // sceneChanged instead (its slot goes back to its factor).

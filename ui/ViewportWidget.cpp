@@ -29,6 +29,10 @@ ViewportWidget::ViewportWidget(QWidget* parent)
 ViewportWidget::~ViewportWidget()
 {
     releaseRenderer();
+    // QOpenGLWidget's destructor destroys the context after this object's part is gone: the
+    // context's aboutToBeDestroyed must no longer reach a slot of this class by then.
+    if (QOpenGLContext* glContext = context())
+        disconnect(glContext, nullptr, this, nullptr);
 }
 
 void ViewportWidget::releaseRenderer()
