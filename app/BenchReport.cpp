@@ -94,6 +94,8 @@ Columns rowColumns(const BenchRow& row, const ConfigSummary& summary)
     const Columns measured = {
         {"ibl_ms", number(row.ibl.msTotal, "%.2f")},
         {"ibl_needed_ms", number(row.iblNeededMs, "%.2f")},
+        {"ibl_median_ms", number(row.iblMedianMs, "%.2f")},
+        {"ibl_repeats", std::to_string(row.iblRepeats)},
         {"ibl_equirect_to_cube_ms", number(row.ibl.msEquirectToCube, "%.2f")},
         {"ibl_prefilter_ms", number(row.ibl.msPrefilter, "%.2f")},
         {"ibl_irradiance_ms", number(row.ibl.msIrradiance, "%.2f")},
@@ -233,7 +235,8 @@ void printBenchTables(std::FILE* out, const std::vector<BenchRow>& rows)
         "slowed): ibl = a fresh IBL precompute (no cache), needed = without the passes the configuration\n"
         "does not use (reference: its source textures and DFG table; fis: those, the environment\n"
         "cube and irradiance), then its prefilter and irradiance passes; render = one %dx%d frame,\n"
-        "the mean over the cases (fis, reference: every draw of its samples, the method's cost); noise = reference's own noise estimate, in %%.\n"
+        "the mean over the cases (fis, reference: every draw of its samples, the method's cost); noise = "
+        "reference's own noise estimate, in %%.\n"
         "Errors: relative RMSE over the sphere against the ground truth (%d spp), in %%: the mean per\n"
         "material, the mean, median and max over all. The CSV has every row and the per-pixel errors.\n\n",
         rows.front().size, rows.front().size, rows.front().truthSamplesPerPixel);

@@ -31,6 +31,10 @@ struct BenchRow {
     // The fastest of the precompute runs of this configuration under this environment (cache
     // bypassed), with its per-pass times; the same for every row of the pair.
     IblStats ibl;
+    // The median of the repeats' precompute totals (ibl.msTotal is their minimum), and how many
+    // there were: on a shared machine the spread says how far to trust one row against another.
+    double iblMedianMs = 0.0;
+    int iblRepeats = 0;
     // ibl.msTotal less the passes the configuration does not use (the irradiance cubemap when
     // irradiance comes from SH: IblPrecompute computes both today); for Reference, the source
     // textures and its DFG table only (the cubes draw the background, not the sphere).

@@ -78,12 +78,12 @@ private Q_SLOTS:
             first.out.contains(QStringLiteral("ground truth: 4 images computed")), qPrintable(first.out));
 
         const Csv csv = readCsv(csvPath);
-        for (const char* name :
-            {"group", "config", "environment", "material", "roughness", "size", "truth_spp", "cube_size",
-                "prefilter_size", "prefilter_mip_levels", "prefilter_samples", "irradiance",
-                "irradiance_size", "irradiance_samples", "dfg_size", "dfg_samples", "ibl_ms", "ibl_needed_ms",
-                "ibl_prefilter_ms", "render_ms", "rel_rmse", "max_rel_error", "mean_rel_error", "pixels",
-                "method", "ibl_samples", "draws", "noise", "config_median_rel_rmse", "truth_noise"})
+        for (const char* name : {"group", "config", "environment", "material", "roughness", "size",
+                 "truth_spp", "cube_size", "prefilter_size", "prefilter_mip_levels", "prefilter_samples",
+                 "irradiance", "irradiance_size", "irradiance_samples", "dfg_size", "dfg_samples", "ibl_ms",
+                 "ibl_needed_ms", "ibl_median_ms", "ibl_repeats", "ibl_prefilter_ms", "render_ms", "rel_rmse",
+                 "max_rel_error", "mean_rel_error", "pixels", "method", "ibl_samples", "draws", "noise",
+                 "config_median_rel_rmse", "truth_noise"})
             QVERIFY2(csv.column(name) >= 0, name);
         QCOMPARE(csv.rows.size(), 8); // 2 configurations x 1 map x 2 materials x 2 roughness values
         const int rmse = csv.column("rel_rmse");
@@ -97,6 +97,9 @@ private Q_SLOTS:
             QVERIFY2(ok && std::isfinite(error) && error >= 0.0 && error < 0.5,
                 qPrintable(row.join(QLatin1Char(','))));
             QVERIFY(row[csv.column("ibl_ms")].toDouble() > 0.0);
+            // The minimum and the median of the repeats.
+            QVERIFY(row[csv.column("ibl_median_ms")].toDouble() >= row[csv.column("ibl_ms")].toDouble());
+            QVERIFY(row[csv.column("ibl_repeats")].toInt() >= 1);
             QVERIFY(row[csv.column("pixels")].toInt() > 100);
             // Split-sum rows: one draw, no noise estimate; no --truth-noise: none measured.
             QCOMPARE(row[csv.column("method")], QStringLiteral("split-sum"));
@@ -218,11 +221,12 @@ private Q_SLOTS:
     {
         FACET_REQUIRE_ASSET(facet::test::hdriPath(QStringLiteral("city")), "hdri/city.exr");
         const QString csvPath = path(QStringLiteral("fis.csv"));
-        const Result r = runFacet({QStringLiteral("bench"), QStringLiteral("--quick"), QStringLiteral("--sweep"),
-                                      QStringLiteral("fis"), QStringLiteral("--ibl-samples"), QStringLiteral("4,128"),
-                                      QStringLiteral("--size"), QStringLiteral("16"), QStringLiteral("--roughness"),
-                                      QStringLiteral("0.25,0.75"), QStringLiteral("--csv"), csvPath},
-            path(QStringLiteral("cache")));
+        const Result r
+            = runFacet({QStringLiteral("bench"), QStringLiteral("--quick"), QStringLiteral("--sweep"),
+                           QStringLiteral("fis"), QStringLiteral("--ibl-samples"), QStringLiteral("4,128"),
+                           QStringLiteral("--size"), QStringLiteral("16"), QStringLiteral("--roughness"),
+                           QStringLiteral("0.25,0.75"), QStringLiteral("--csv"), csvPath},
+                path(QStringLiteral("cache")));
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("fis=4")) && r.out.contains(QStringLiteral("fis 128 spp")),
             qPrintable(r.out));
@@ -235,7 +239,8 @@ private Q_SLOTS:
             const int samples = row[csv.column("ibl_samples")].toInt();
             QCOMPARE(row[csv.column("draws")].toInt(), (samples + 63) / 64);
             const double error = row[csv.column("rel_rmse")].toDouble();
-            QVERIFY2(std::isfinite(error) && error > 0.0 && error < 0.5, qPrintable(row.join(QLatin1Char(','))));
+            QVERIFY2(
+                std::isfinite(error) && error > 0.0 && error < 0.5, qPrintable(row.join(QLatin1Char(','))));
             meanError[samples] += error / 4.0;
         }
         QCOMPARE(meanError.keys(), (QList<int> {4, 128}));
@@ -292,8 +297,8 @@ private Q_SLOTS:
         QTest::newRow("ibl-samples without reference")
             << QStringList {QStringLiteral("--sweep"), QStringLiteral("presets"),
                    QStringLiteral("--ibl-samples"), QStringLiteral("16")}
-            << QStringLiteral(
-                   "--ibl-samples: the sample counts of the fis and reference groups, which --sweep leaves out");
+            << QStringLiteral("--ibl-samples: the sample counts of the fis and reference groups, which "
+                              "--sweep leaves out");
         QTest::newRow("ibl-samples with quick")
             << QStringList {QStringLiteral("--quick"), QStringLiteral("--ibl-samples"), QStringLiteral("16")}
             << QStringLiteral("--ibl-samples: the sample counts of the fis and reference groups");
