@@ -197,6 +197,65 @@ std::string plyBodyProblem(const QList<QByteArray>& header, qint64 bodyBytes)
     return {};
 }
 
+// An ASCII PLY list's count is read from the data (a face's "3 0 1 2"): Assimp reads as many
+// values as it says, past the end of the file, so a count of 99999999999 in a 258-byte file ran
+// for minutes. Elements are taken a line each (as writers write them); a list count larger than
+// every value left in the file is refused.
+std::string plyAsciiListProblem(const QList<QByteArray>& header, const QByteArray& body)
+{
+    struct Element {
+        QByteArray name;
+        double count = 0;
+        std::vector<bool> lists; // per property: a list?
+    };
+    std::vector<Element> elements;
+    for (const QByteArray& rawLine : header) {
+        const QList<QByteArray> words = rawLine.simplified().split(' ');
+        if (words.size() >= 3 && words[0] == "element")
+            elements.push_back({words[1], words[2].toDouble(), {}});
+        else if (words.size() >= 3 && words[0] == "property" && !elements.empty())
+            elements.back().lists.push_back(words[1] == "list");
+    }
+    const bool anyList = std::any_of(elements.begin(), elements.end(),
+        [](const Element& e) { return std::find(e.lists.begin(), e.lists.end(), true) != e.lists.end(); });
+    if (!anyList)
+        return {};
+    const QList<QByteArray> lines = body.split('\n');
+    double remaining = 0; // values left in the file from the current line on
+    for (const QByteArray& line : lines)
+        remaining += double(line.simplified().count(' ') + (line.simplified().isEmpty() ? 0 : 1));
+    std::size_t element = 0;
+    double instance = 0;
+    for (const QByteArray& rawLine : lines) {
+        const QByteArray simple = rawLine.simplified();
+        const QList<QByteArray> values = simple.isEmpty() ? QList<QByteArray>() : simple.split(' ');
+        if (values.isEmpty())
+            continue;
+        while (element < elements.size() && instance >= elements[element].count) {
+            ++element;
+            instance = 0;
+        }
+        if (element >= elements.size())
+            break;
+        qsizetype at = 0;
+        for (std::size_t p = 0; p < elements[element].lists.size() && at < values.size(); ++p) {
+            if (!elements[element].lists[p]) {
+                ++at;
+                continue;
+            }
+            const double count = values[at].toDouble();
+            if (!(count <= remaining - double(at) - 1.0))
+                return "broken PLY file: " + elements[element].name.toStdString() + " "
+                    + std::to_string(static_cast<long long>(instance)) + " has a list of "
+                    + values[at].left(24).toStdString() + " values, more than the file holds";
+            at += 1 + qsizetype(count);
+        }
+        remaining -= double(values.size());
+        instance += 1;
+    }
+    return {};
+}
+
 std::string plyHeaderProblem(const QString& path)
 {
     QFile file(path);
@@ -213,8 +272,15 @@ std::string plyHeaderProblem(const QString& path)
     qsizetype headerBytes = 0;
     for (qsizetype i = 0; i + 1 < lines.size(); ++i) {
         headerBytes += lines[i].size() + 1;
-        if (lines[i].trimmed() == "end_header")
-            return plyBodyProblem(lines.mid(0, i), file.size() - headerBytes);
+        if (lines[i].trimmed() == "end_header") {
+            if (std::string problem = plyBodyProblem(lines.mid(0, i), file.size() - headerBytes);
+                !problem.empty())
+                return problem;
+            if (!lines.mid(0, i).join('\n').contains("format ascii"))
+                return {};
+            file.seek(headerBytes);
+            return plyAsciiListProblem(lines.mid(0, i), file.readAll());
+        }
     }
     return "broken PLY header: no \"end_header\" line in the first MiB (the file may be cut short)";
 }
