@@ -26,7 +26,10 @@ double msSince(Clock::time_point start)
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-int mipChainLength(int size) { return std::bit_width(unsigned(std::max(size, 1))); }
+int mipChainLength(int size)
+{
+    return std::bit_width(unsigned(std::max(size, 1)));
+}
 
 // The GL state the passes change, restored on scope exit so that a caller's renderer is not
 // disturbed (framebuffer, viewport, program, vertex array, unit 0's bindings, capabilities).
@@ -72,8 +75,8 @@ public:
     GLStateGuard& operator=(const GLStateGuard&) = delete;
 
 private:
-    static constexpr std::array<GLenum, 5> kCapabilities = {GL_DEPTH_TEST, GL_BLEND, GL_SCISSOR_TEST, GL_CULL_FACE,
-                                                            GL_STENCIL_TEST};
+    static constexpr std::array<GLenum, 5> kCapabilities
+        = {GL_DEPTH_TEST, GL_BLEND, GL_SCISSOR_TEST, GL_CULL_FACE, GL_STENCIL_TEST};
     GLint m_drawFramebuffer = 0, m_readFramebuffer = 0, m_viewport[4] = {}, m_program = 0, m_vertexArray = 0;
     GLint m_activeTexture = GL_TEXTURE0, m_texture2D = 0, m_textureCube = 0, m_unpackAlignment = 4,
           m_unpackBuffer = 0;
@@ -110,7 +113,8 @@ private:
 
 // An RGBA16F cubemap of `levels` levels, level 0 `size` wide; `data` (optional) gives each
 // level's 6 faces of half floats, faces in GL order.
-std::shared_ptr<GLTexture> makeCubemap(int size, int levels, const std::vector<const IblCacheLayer*>& data = {})
+std::shared_ptr<GLTexture> makeCubemap(
+    int size, int levels, const std::vector<const IblCacheLayer*>& data = {})
 {
     auto texture = std::make_shared<GLTexture>(GLTexture::create(GL_TEXTURE_CUBE_MAP));
     glBindTexture(GL_TEXTURE_CUBE_MAP, texture->id());
@@ -118,15 +122,17 @@ std::shared_ptr<GLTexture> makeCubemap(int size, int levels, const std::vector<c
         const int s = std::max(size >> level, 1);
         const IblCacheLayer* layer = std::size_t(level) < data.size() ? data[std::size_t(level)] : nullptr;
         for (int face = 0; face < 6; ++face) {
-            const void* pixels = layer ? layer->half.data() + std::size_t(face) * std::size_t(s) * std::size_t(s) * 4
-                                       : nullptr;
+            const void* pixels = layer
+                ? layer->half.data() + std::size_t(face) * std::size_t(s) * std::size_t(s) * 4
+                : nullptr;
             glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face), level, GL_RGBA16F, s, s, 0, GL_RGBA,
                 GL_HALF_FLOAT, pixels);
         }
     }
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BASE_LEVEL, 0);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, levels - 1);
-    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glTexParameteri(
+        GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
         glTexParameteri(GL_TEXTURE_CUBE_MAP, wrap, GL_CLAMP_TO_EDGE);
@@ -172,7 +178,8 @@ struct IblPrecompute::Programs {
 };
 
 IblPrecompute::IblPrecompute(QString cacheDirectory, bool useDiskCache)
-    : m_cacheDirectory(cacheDirectory.isEmpty() ? IblDiskCache::defaultDirectory() : std::move(cacheDirectory))
+    : m_cacheDirectory(
+        cacheDirectory.isEmpty() ? IblDiskCache::defaultDirectory() : std::move(cacheDirectory))
     , m_useDiskCache(useDiskCache)
 {
 }
@@ -206,14 +213,15 @@ bool IblPrecompute::ensurePrograms(std::string* error)
         return true;
     auto programs = std::make_unique<Programs>();
     const ShaderStageSource vertex {ShaderStageSource::Stage::Vertex, "ibl_fullscreen.vert"};
-    auto make = [&](ShaderProgram& out, const char* name, const char* fragment, std::vector<std::string> defines) {
-        std::optional<ShaderProgram> program = ShaderProgram::create(
-            name, {vertex, {ShaderStageSource::Stage::Fragment, fragment}}, defines, error);
-        if (!program)
-            return false;
-        out = std::move(*program);
-        return true;
-    };
+    auto make
+        = [&](ShaderProgram& out, const char* name, const char* fragment, std::vector<std::string> defines) {
+              std::optional<ShaderProgram> program = ShaderProgram::create(
+                  name, {vertex, {ShaderStageSource::Stage::Fragment, fragment}}, defines, error);
+              if (!program)
+                  return false;
+              out = std::move(*program);
+              return true;
+          };
     if (!make(programs->equirectToCube, "iblEquirectToCube", "ibl_equirect_to_cube.frag", {})
         || !make(programs->prefilterCopy, "iblPrefilterCopy", "ibl_prefilter.frag", {"PREFILTER_COPY"})
         || !make(programs->prefilter, "iblPrefilter", "ibl_prefilter.frag", {})
@@ -222,8 +230,8 @@ bool IblPrecompute::ensurePrograms(std::string* error)
             *error = "IblPrecompute::prepare: " + *error;
         return false;
     }
-    for (ShaderProgram* p : {&programs->equirectToCube, &programs->prefilterCopy, &programs->prefilter,
-                             &programs->irradiance})
+    for (ShaderProgram* p :
+        {&programs->equirectToCube, &programs->prefilterCopy, &programs->prefilter, &programs->irradiance})
         p->setInt("uEnvironment", 0), p->setInt("uEquirect", 0);
     m_programs = std::move(programs);
     return true;
@@ -235,9 +243,15 @@ const ShaderProgram* IblPrecompute::dfgProgram(Visibility visibility, std::strin
     // silently select another term.
     const char* define = "DFG_VISIBILITY 0";
     switch (visibility) {
-    case Visibility::SmithGGXCorrelated: define = "DFG_VISIBILITY 0"; break;
-    case Visibility::SmithGGXUncorrelated: define = "DFG_VISIBILITY 1"; break;
-    case Visibility::SchlickGGX: define = "DFG_VISIBILITY 2"; break;
+    case Visibility::SmithGGXCorrelated:
+        define = "DFG_VISIBILITY 0";
+        break;
+    case Visibility::SmithGGXUncorrelated:
+        define = "DFG_VISIBILITY 1";
+        break;
+    case Visibility::SchlickGGX:
+        define = "DFG_VISIBILITY 2";
+        break;
     }
     std::unique_ptr<ShaderProgram>& slot = m_dfgPrograms[std::size_t(visibility)];
     if (!slot) {
@@ -262,7 +276,7 @@ namespace {
 // Renders one full-viewport triangle into `level` of `face` (-1: a 2D texture) of `texture`.
 // `caller` prefixes the error ("IblPrecompute::prepare").
 bool drawInto(const GLTexture& texture, int face, int level, int size, std::string* error,
-              const char* caller = "IblPrecompute::prepare")
+    const char* caller = "IblPrecompute::prepare")
 {
     const GLenum target = face < 0 ? GLenum(GL_TEXTURE_2D) : GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, target, texture.id(), level);
@@ -325,8 +339,7 @@ std::shared_ptr<const DfgLut> IblPrecompute::dfgTable(
     if (!program)
         return nullptr;
     const PassObjects objects;
-    while (glGetError() != GL_NO_ERROR) {
-    }
+    while (glGetError() != GL_NO_ERROR) { }
     const Clock::time_point passStart = Clock::now();
     auto texture = makeDfgTexture(settings.dfgSize);
     program->use();
@@ -417,8 +430,8 @@ std::shared_ptr<const EnvironmentSourceTextures> IblPrecompute::source(
     return made;
 }
 
-std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& environment, const IblSettings& requested,
-                                                          IblStats* statsOut, std::string* error)
+std::shared_ptr<const IblTextures> IblPrecompute::prepare(
+    const Environment& environment, const IblSettings& requested, IblStats* statsOut, std::string* error)
 {
     const Clock::time_point start = Clock::now();
     IblStats localStats;
@@ -447,15 +460,12 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
     }
 
     GLStateGuard guard;
-    if (!ensurePrograms(error))
-        return nullptr;
     const PassObjects objects;
     glActiveTexture(GL_TEXTURE0);
     // Filtering across cube faces (the prefilter reads blurred levels, where the seams would show);
     // global state, which the surface renderer wants too.
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    while (glGetError() != GL_NO_ERROR) {
-    }
+    while (glGetError() != GL_NO_ERROR) { }
 
     auto result = std::make_shared<IblTextures>();
     result->environmentSize = settings.cubeSize;
@@ -480,10 +490,12 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
                 return false;
             for (int i = 0; i < e + p + 1; ++i) {
                 const IblCacheLayer& l = c.layers[std::size_t(i)];
-                const int base = i < e ? settings.cubeSize : i < e + p ? settings.prefilterSize : settings.irradianceSize;
+                const int base = i < e ? settings.cubeSize
+                    : i < e + p        ? settings.prefilterSize
+                                       : settings.irradianceSize;
                 const int level = i < e ? i : i < e + p ? i - e : 0;
-                if (l.faces != 6 || l.level != level || l.width != std::max(base >> level, 1) || l.width != l.height
-                    || l.format != IblCacheLayer::Format::Half)
+                if (l.faces != 6 || l.level != level || l.width != std::max(base >> level, 1)
+                    || l.width != l.height || l.format != IblCacheLayer::Format::Half)
                     return false;
             }
             return true;
@@ -500,22 +512,41 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
             result->prefiltered = makeCubemap(settings.prefilterSize, p, preLayers);
             result->irradiance = makeCubemap(settings.irradianceSize, 1, {&entry->layers.back()});
             for (std::size_t i = 0; i < 9; ++i)
-                result->irradianceSH[i] = glm::vec3(
-                    float(entry->extra[3 * i]), float(entry->extra[3 * i + 1]), float(entry->extra[3 * i + 2]));
+                result->irradianceSH[i] = glm::vec3(float(entry->extra[3 * i]),
+                    float(entry->extra[3 * i + 1]), float(entry->extra[3 * i + 2]));
             ++stats->cacheHitsDisk;
             fromDisk = true;
         }
     }
 
     if (!fromDisk) {
+        // The passes' shaders are compiled only when a pass runs: a cache hit compiles nothing.
+        if (!ensurePrograms(error))
+            return nullptr;
         // 3a. Equirect -> cubemap, then the mip chain (box filter) for the background and as the
         // filtered source of the convolutions.
         Clock::time_point passStart = Clock::now();
         const Image& image = environment.image();
+        // A map wider than the cube needs (about 4 texels of the equirect per cube texel across:
+        // the same angle at the equator) is first area-filtered to that width, once: bilinear
+        // reads of an 8K map into a 256 cube skip most of its texels (aliasing: a small bright
+        // light is caught or missed by where it falls), and a 16K map as RGBA32F is 2 GiB of GL
+        // memory (GL_OUT_OF_MEMORY on llvmpipe).
+        const int neededWidth = 4 * settings.cubeSize;
+        const bool reduce = image.width() > neededWidth;
+        std::optional<Image> reduced;
+        if (reduce) {
+            const int height
+                = std::max(1, int(std::lround(double(neededWidth) * image.height() / image.width())));
+            reduced = image.boxFiltered(neededWidth, height);
+            ++stats->sourceReductions;
+        }
+        const Image& source = reduce ? *reduced : image;
         // The source radiance of source(), when it is in memory at full resolution, is this very
         // texture (RGB32F instead of RGBA32F: the pass reads .rgb, with the same filtering and
         // wrapping), so it is not uploaded twice. Otherwise upload the image for this pass only.
-        const std::shared_ptr<const EnvironmentSourceTextures> held = heldSource(environment.contentHash());
+        const std::shared_ptr<const EnvironmentSourceTextures> held
+            = reduce ? nullptr : heldSource(environment.contentHash());
         GLTexture equirect;
         GLuint equirectId = 0;
         if (held && !held->downsampled()) {
@@ -526,8 +557,8 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
             equirectId = equirect.id();
             glBindTexture(GL_TEXTURE_2D, equirectId);
             // Rows top first, as Image stores them: t = 0 is the image's top row (common_equirect.glsl).
-            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, image.width(), image.height(), 0, GL_RGBA, GL_FLOAT,
-                image.data());
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, source.width(), source.height(), 0, GL_RGBA, GL_FLOAT,
+                source.data());
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -584,7 +615,8 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
         // 1x1), never finer than the cube's level 0.
         int sourceLevel = 0;
         while (sourceLevel + 1 < result->environmentMipLevels
-               && 6LL * (settings.cubeSize >> sourceLevel) * (settings.cubeSize >> sourceLevel) > settings.irradianceSamples)
+            && 6LL * (settings.cubeSize >> sourceLevel) * (settings.cubeSize >> sourceLevel)
+                > settings.irradianceSamples)
             ++sourceLevel;
         m_programs->irradiance.use();
         m_programs->irradiance.setInt("uSourceSize", std::max(settings.cubeSize >> sourceLevel, 1));
@@ -602,7 +634,9 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
         // 3d. SH9 on the CPU, in the image frame at intensity 1 (rotation and intensity are
         // applied at shading time, like every other IBL texture).
         passStart = Clock::now();
-        Environment imageFrame = environment;
+        // From the area-filtered map when there is one: SH9 keeps only the lowest frequencies,
+        // which the filter keeps (an 8K map's projection took 5.6 s, its 1K copy's 0.1 s).
+        Environment imageFrame = reduce ? Environment(std::move(*reduced), environment.name()) : environment;
         imageFrame.setRotationDegrees(0.0);
         imageFrame.setIntensity(1.0);
         const IrradianceSH9 sh = irradianceSHCoefficients(projectEquirect(imageFrame));
@@ -612,7 +646,8 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
 
         if (const GLenum glError = glGetError(); glError != GL_NO_ERROR) {
             if (error)
-                *error = "IblPrecompute::prepare: " + glErrorName(glError) + " during the passes";
+                *error = "IblPrecompute::prepare: " + environment.name() + ": " + glErrorName(glError)
+                    + " during the passes";
             return nullptr;
         }
         if (m_useDiskCache) {

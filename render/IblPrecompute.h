@@ -50,11 +50,14 @@ struct IblStats {
     int passesRun = 0; // equirect->cube, prefilter, irradiance (0..3), + 1 per DFG LUT made
     int cacheHitsMemory = 0; // 1 when the environment's textures came from the memory cache
     int cacheHitsDisk = 0; // environment entry (0..1) + DFG LUTs loaded from disk
-    double msEquirectToCube = 0.0; // upload + resample + mip generation
+    double msEquirectToCube = 0.0; // (area filter +) upload + resample + mip generation
+    // 1 when the equirect was area-filtered to 4x the cube's width before the cube pass (a map
+    // wider than the cube needs).
+    int sourceReductions = 0;
     double msPrefilter = 0.0;
     double msIrradiance = 0.0;
     double msDfg = 0.0; // every DFG LUT made
-    double msSh = 0.0;             // SH9 projection on the CPU
+    double msSh = 0.0; // SH9 projection on the CPU
     double msTotal = 0.0; // the whole calls, including cache look-ups and disk I/O
     // source(), which adds to these like dfgTable(): its memory-cache hits, and the time spent
     // making source textures (tables on the CPU + uploads; 0 on a hit).
@@ -82,8 +85,8 @@ public:
     // failure returns null and sets `error` to "IblPrecompute::prepare: <problem>" (an empty
     // environment, a shader that does not compile, an incomplete framebuffer, a GL error).
     // `stats` (optional) is reset and filled.
-    std::shared_ptr<const IblTextures> prepare(const Environment& environment, const IblSettings& settings,
-                                               IblStats* stats, std::string* error);
+    std::shared_ptr<const IblTextures> prepare(
+        const Environment& environment, const IblSettings& settings, IblStats* stats, std::string* error);
 
     // The split-sum DFG LUT of `settings` (dfgSize, dfgSamples) integrated with `visibility`
     // (ibl_dfg.frag with DFG_VISIBILITY; CPU twin DfgTable::compute(size, samples, visibility)).
@@ -106,6 +109,9 @@ public:
     // sourceCacheHitsMemory, msTotal).
     std::shared_ptr<const EnvironmentSourceTextures> source(
         const Environment& environment, IblStats* stats, std::string* error);
+    // Whether the passes' shaders have been compiled: only when a pass runs (a cache hit compiles
+    // nothing).
+    bool compiledPasses() const { return m_programs != nullptr; }
     // Whether source(environment) would be a memory hit.
     bool holdsSource(const Environment& environment) const;
 

@@ -119,6 +119,7 @@ private Q_SLOTS:
     void memoryCacheAndRotationIntensity();
     void diskCacheReproducesTexels();
     void corruptDiskCacheIsRecomputed();
+    void wideMapIsAreaFilteredForTheCube();
     void presetTimings();
 
 private:
@@ -749,6 +750,7 @@ void IblGLTest::diskCacheReproducesTexels()
     QVERIFY2(loadedLut, error.c_str());
     QCOMPARE(stats.passesRun, 0);
     QCOMPARE(stats.cacheHitsDisk, 2);
+    QVERIFY(!reader.compiledPasses()); // a disk-cache hit compiles no shader
     std::size_t i = 0;
     for (int face = 0; face < 6; ++face) {
         QVERIFY(readLevel(loaded->environment, face, 0).rgba == before[i++]);
@@ -759,6 +761,41 @@ void IblGLTest::diskCacheReproducesTexels()
     QVERIFY(readLevel(loadedLut->texture, 0, 0).rgba == before[i++]);
     QVERIFY(loaded->irradianceSH == computed->irradianceSH);
     qputenv("FACET_CACHE_DIR", m_cacheDir.path().toUtf8());
+}
+
+// A map far wider than the cube needs: vertical stripes of 0 and 2, one texel each, 1024 wide
+// for a 32 cube (4 x 32 = 128 needed). Bilinear reads straight from the map land anywhere between
+// 0 and 2 (aliasing: what a cube texel shows depends on where its centre falls); the area filter
+// to 128 wide first gives every cube texel the stripes' mean, 1.
+void IblGLTest::wideMapIsAreaFilteredForTheCube()
+{
+    Image stripes(1024, 512);
+    for (int y = 0; y < stripes.height(); ++y)
+        for (int x = 0; x < stripes.width(); ++x)
+            stripes.at(x, y) = glm::vec4(glm::vec3(x % 2 ? 2.0f : 0.0f), 1.0f);
+    const Environment env(std::move(stripes), "stripes");
+    IblPrecompute precompute(QString(), false);
+    IblStats stats;
+    std::string error;
+    const auto ibl = precompute.prepare(env, smallSettings(), &stats, &error);
+    QVERIFY2(ibl, error.c_str());
+    QCOMPARE(stats.sourceReductions, 1);
+    double lowest = 1e30, highest = -1e30;
+    for (int face = 0; face < 6; ++face) {
+        const Level level = readLevel(ibl->environment, face, 0);
+        for (int y = 0; y < level.height; ++y)
+            for (int x = 0; x < level.width; ++x) {
+                lowest = std::min(lowest, level.at(x, y).x);
+                highest = std::max(highest, level.at(x, y).x);
+            }
+    }
+    qInfo("cube texels of 0/2 stripes: %.4f to %.4f", lowest, highest);
+    QVERIFY2(
+        lowest > 0.99 && highest < 1.01, qPrintable(QStringLiteral("%1 to %2").arg(lowest).arg(highest)));
+    // A map no wider than needed is read as it is.
+    const Environment narrow = Environment::builtin(Environment::Builtin::Sky, 128);
+    QVERIFY2(precompute.prepare(narrow, smallSettings(), &stats, &error), error.c_str());
+    QCOMPARE(stats.sourceReductions, 0);
 }
 
 void IblGLTest::corruptDiskCacheIsRecomputed()
