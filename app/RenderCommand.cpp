@@ -18,16 +18,16 @@
 #include "core/DfgTable.h"
 #include "core/GroundTruth.h"
 #include "core/Image.h"
+#include "core/ImageMetrics.h"
 #include "core/MaterialBrdf.h"
 #include "core/MaterialPresets.h"
 #include "core/ProjectAssets.h"
-#include "core/ImageMetrics.h"
 #include "core/ToneMap.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblSettings.h"
 #include "render/RenderScene.h"
-#include "render/SceneFromProject.h"
 #include "render/Renderer.h"
+#include "render/SceneFromProject.h"
 #include "render/ShaderVariant.h"
 
 namespace facet {
@@ -39,51 +39,53 @@ constexpr int kMaxSamplesPerPixel = 1 << 20;
 
 struct Options {
     QCommandLineParser parser;
-    QCommandLineOption help{{QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Displays this help.")};
-    QCommandLineOption env{QStringLiteral("env"),
-                           QStringLiteral("Environment: an image path, a built-in name (studio, sky) or "
-                                          "uniform:VALUE / uniform:R,G,B."),
-                           QStringLiteral("spec")};
-    QCommandLineOption material{QStringLiteral("material"), QStringLiteral("A built-in material preset (e.g. gold)."),
-                                QStringLiteral("preset")};
-    QCommandLineOption baseColor{QStringLiteral("base-color"), QStringLiteral("Linear base colour r,g,b in [0, 1]."),
-                                 QStringLiteral("r,g,b")};
-    QCommandLineOption metallic{QStringLiteral("metallic"), QStringLiteral("Metallic in [0, 1]."), QStringLiteral("m")};
-    QCommandLineOption roughness{QStringLiteral("roughness"), QStringLiteral("Perceptual roughness in [0, 1]."),
-                                 QStringLiteral("r")};
-    QCommandLineOption brdf{QStringLiteral("brdf"), QStringLiteral("BRDF composition: gltf or learnopengl."),
-                            QStringLiteral("name")};
-    QCommandLineOption multiScatter{QStringLiteral("multiscatter"),
-                                    QStringLiteral("Multiple-scattering energy compensation: on or off."),
-                                    QStringLiteral("on|off")};
-    QCommandLineOption mesh{QStringLiteral("mesh"), QStringLiteral("A built-in mesh name or a mesh file."),
-                            QStringLiteral("name|path")};
+    QCommandLineOption help {
+        {QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Displays this help.")};
+    QCommandLineOption env {QStringLiteral("env"),
+        QStringLiteral("Environment: an image path, a built-in name (studio, sky) or "
+                       "uniform:VALUE / uniform:R,G,B."),
+        QStringLiteral("spec")};
+    QCommandLineOption material {QStringLiteral("material"),
+        QStringLiteral("A built-in material preset (e.g. gold)."), QStringLiteral("preset")};
+    QCommandLineOption baseColor {QStringLiteral("base-color"),
+        QStringLiteral("Linear base colour r,g,b in [0, 1]."), QStringLiteral("r,g,b")};
+    QCommandLineOption metallic {
+        QStringLiteral("metallic"), QStringLiteral("Metallic in [0, 1]."), QStringLiteral("m")};
+    QCommandLineOption roughness {
+        QStringLiteral("roughness"), QStringLiteral("Perceptual roughness in [0, 1]."), QStringLiteral("r")};
+    QCommandLineOption brdf {QStringLiteral("brdf"), QStringLiteral("BRDF composition: gltf or learnopengl."),
+        QStringLiteral("name")};
+    QCommandLineOption multiScatter {QStringLiteral("multiscatter"),
+        QStringLiteral("Multiple-scattering energy compensation: on or off."), QStringLiteral("on|off")};
+    QCommandLineOption mesh {QStringLiteral("mesh"), QStringLiteral("A built-in mesh name or a mesh file."),
+        QStringLiteral("name|path")};
     QCommandLineOption view {QStringLiteral("view"),
         QStringLiteral("Debug view: %1.").arg(QString::fromStdString(debugViewNameList())),
         QStringLiteral("name")};
-    QCommandLineOption size{QStringLiteral("size"), QStringLiteral("Image size, e.g. 512x512."), QStringLiteral("WxH")};
-    QCommandLineOption referenceView{QStringLiteral("reference-view"),
-                                     QStringLiteral("Use DESIGN.md's reference camera (unit sphere, camera at "
-                                                    "(0,0,3), 45 degree FOV).")};
-    QCommandLineOption spp{QStringLiteral("spp"),
-                           QStringLiteral("Render with the CPU ground-truth integrator at N samples per pixel."),
-                           QStringLiteral("N")};
-    QCommandLineOption quality{QStringLiteral("quality"), QStringLiteral("IBL quality preset: draft, default, high."),
-                               QStringLiteral("preset")};
-    QCommandLineOption ibl{QStringLiteral("ibl"),
-                           QStringLiteral("How the surface integrates the environment: split-sum (real time), fis "
-                                          "(filtered importance sampling of each pixel's lobe) or reference (Monte "
-                                          "Carlo on the GPU, converging; see --ibl-samples)."),
-                           QStringLiteral("method")};
-    QCommandLineOption iblSamples{QStringLiteral("ibl-samples"),
-                                  QStringLiteral("Samples per pixel for --ibl fis (default %1) or reference (default %2).")
-                                      .arg(kDefaultFisSamples)
-                                      .arg(defaultIblSamples(IblMethod::Reference)),
-                                  QStringLiteral("N")};
-    QCommandLineOption stats{QStringLiteral("stats"), QStringLiteral("Print timings and work counters.")};
-    QCommandLineOption output{{QStringLiteral("o"), QStringLiteral("output")},
-                              QStringLiteral("Output image: .exr (linear radiance) or .png (display-referred)."),
-                              QStringLiteral("file")};
+    QCommandLineOption size {
+        QStringLiteral("size"), QStringLiteral("Image size, e.g. 512x512."), QStringLiteral("WxH")};
+    QCommandLineOption referenceView {QStringLiteral("reference-view"),
+        QStringLiteral("Use DESIGN.md's reference camera (unit sphere, camera at "
+                       "(0,0,3), 45 degree FOV).")};
+    QCommandLineOption spp {QStringLiteral("spp"),
+        QStringLiteral("Render with the CPU ground-truth integrator at N samples per pixel."),
+        QStringLiteral("N")};
+    QCommandLineOption quality {QStringLiteral("quality"),
+        QStringLiteral("IBL quality preset: draft, default, high."), QStringLiteral("preset")};
+    QCommandLineOption ibl {QStringLiteral("ibl"),
+        QStringLiteral("How the surface integrates the environment: split-sum (real time), fis "
+                       "(filtered importance sampling of each pixel's lobe) or reference (Monte "
+                       "Carlo on the GPU, converging; see --ibl-samples)."),
+        QStringLiteral("method")};
+    QCommandLineOption iblSamples {QStringLiteral("ibl-samples"),
+        QStringLiteral("Samples per pixel for --ibl fis (default %1) or reference (default %2).")
+            .arg(kDefaultFisSamples)
+            .arg(defaultIblSamples(IblMethod::Reference)),
+        QStringLiteral("N")};
+    QCommandLineOption stats {QStringLiteral("stats"), QStringLiteral("Print timings and work counters.")};
+    QCommandLineOption output {{QStringLiteral("o"), QStringLiteral("output")},
+        QStringLiteral("Output image: .exr (linear radiance) or .png (display-referred)."),
+        QStringLiteral("file")};
 
     Options()
     {
@@ -91,18 +93,19 @@ struct Options {
             "Renders a project (or the built-in default) without a window or display server.\n"
             "EXR output is linear scene radiance with no tone mapping; PNG goes through the project's "
             "view transform. With --spp the CPU ground truth renders the reference view instead."));
-        for (const QCommandLineOption* option : {&help, &env, &material, &baseColor, &metallic, &roughness, &brdf,
-                                                 &multiScatter, &mesh, &view, &size, &referenceView, &spp, &quality,
-                                                 &ibl, &iblSamples, &stats, &output})
+        for (const QCommandLineOption* option :
+            {&help, &env, &material, &baseColor, &metallic, &roughness, &brdf, &multiScatter, &mesh, &view,
+                &size, &referenceView, &spp, &quality, &ibl, &iblSamples, &stats, &output})
             parser.addOption(*option);
         parser.addPositionalArgument(QStringLiteral("input"),
-                                     QStringLiteral("A project file (JSON) or a glTF asset (.gltf, .glb) with its materials."),
-                                     QStringLiteral("[PROJECT.json|ASSET.glb|ASSET.gltf]"));
+            QStringLiteral("A project file (JSON) or a glTF asset (.gltf, .glb) with its materials."),
+            QStringLiteral("[PROJECT.json|ASSET.glb|ASSET.gltf]"));
     }
 };
 
 // Parses a finite number in [low, high]; the message names the flag and the value.
-bool parseNumber(const QString& flag, const QString& text, double low, double high, double* out, QString* error)
+bool parseNumber(
+    const QString& flag, const QString& text, double low, double high, double* out, QString* error)
 {
     bool ok = false;
     const double value = text.trimmed().toDouble(&ok);
@@ -166,7 +169,8 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
             QStringList ids;
             for (const MaterialPreset& p : builtinPresets())
                 ids.append(QString::fromStdString(p.id));
-            *error = QStringLiteral("--material: no preset '%1' (built-in: %2)").arg(id, ids.join(QStringLiteral(", ")));
+            *error = QStringLiteral("--material: no preset '%1' (built-in: %2)")
+                         .arg(id, ids.join(QStringLiteral(", ")));
             return std::nullopt;
         }
         everyMaterial([preset](Material& material) {
@@ -185,7 +189,8 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
         for (int i = 0; i < 3; ++i)
             if (!parseNumber(QStringLiteral("base-color"), parts[i], 0.0, 1.0, &rgb[i], error))
                 return std::nullopt;
-        everyMaterial([rgb](Material& material) { material.setBaseColor(rgb, material.baseColorFactor().a); });
+        everyMaterial(
+            [rgb](Material& material) { material.setBaseColor(rgb, material.baseColorFactor().a); });
     }
     double value = 0.0;
     if (o.parser.isSet(o.metallic)) {
@@ -204,7 +209,8 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
             *error = QStringLiteral("--brdf: '%1' is not gltf or learnopengl").arg(name);
             return std::nullopt;
         }
-        const ShadingModel model = name == QStringLiteral("gltf") ? ShadingModel {} : ShadingModel::learnOpenGL();
+        const ShadingModel model
+            = name == QStringLiteral("gltf") ? ShadingModel {} : ShadingModel::learnOpenGL();
         everyMaterial([&model](Material& material) {
             const bool multiScatter = material.shading.multiScatter;
             material.shading = model;
@@ -235,15 +241,17 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
     if (o.parser.isSet(o.quality)) {
         const auto quality = iblQualityFromString(o.parser.value(o.quality).toStdString());
         if (!quality) {
-            *error = QStringLiteral("--quality: '%1' is not draft, default or high").arg(o.parser.value(o.quality));
+            *error = QStringLiteral("--quality: '%1' is not draft, default or high")
+                         .arg(o.parser.value(o.quality));
             return std::nullopt;
         }
         project.environment.quality = *quality;
     }
     if (o.parser.isSet(o.ibl) || o.parser.isSet(o.iblSamples)) {
         if (o.parser.isSet(o.spp)) {
-            *error = QStringLiteral("--spp renders with the CPU ground truth; --ibl and --ibl-samples choose the GPU's "
-                                    "method: give one or the other");
+            *error = QStringLiteral(
+                "--spp renders with the CPU ground truth; --ibl and --ibl-samples choose the GPU's "
+                "method: give one or the other");
             return std::nullopt;
         }
         const QString method = o.parser.value(o.ibl);
@@ -284,13 +292,15 @@ namespace {
 // Writes linear radiance as EXR, or the display transform of it as PNG.
 bool writeOutput(const Image& radiance, const RenderRequest& request, std::string* error)
 {
-    const bool png = QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower() == QStringLiteral("png");
+    const bool png
+        = QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower() == QStringLiteral("png");
     if (!png)
         return radiance.save(request.outputPath, error, /*alpha=*/false);
     Image display(radiance.width(), radiance.height());
     for (int y = 0; y < radiance.height(); ++y)
         for (int x = 0; x < radiance.width(); ++x) {
-            const glm::dvec3 c = tonemap::displayTransform(glm::dvec3(glm::vec3(radiance.at(x, y))), request.project.view);
+            const glm::dvec3 c
+                = tonemap::displayTransform(glm::dvec3(glm::vec3(radiance.at(x, y))), request.project.view);
             display.at(x, y) = glm::vec4(glm::vec3(c), 1.0f);
         }
     display.setEncoding(ColorEncoding::SRGB);
@@ -302,12 +312,12 @@ int runGroundTruth(const RenderRequest& request)
     const Project& project = request.project;
     if (project.view.mesh != "sphere") {
         std::fprintf(stderr, "facet render: --spp renders the reference sphere only, not mesh '%s'\n",
-                     project.view.mesh.c_str());
+            project.view.mesh.c_str());
         return RenderCommand::kExitUsage;
     }
     if (project.view.debugView != "none") {
         std::fprintf(stderr, "facet render: --spp renders the shaded image only, not debug view '%s'\n",
-                     project.view.debugView.c_str());
+            project.view.debugView.c_str());
         return RenderCommand::kExitUsage;
     }
     std::string error;
@@ -330,9 +340,9 @@ int runGroundTruth(const RenderRequest& request)
         return RenderCommand::kExitFailure;
     }
     if (request.printStats)
-        std::printf("renderer: ground truth (CPU)\nsize: %dx%d\nspp: %d\nsamples: %llu\ntime_ms: %.1f\n", request.width,
-                    request.height, request.samplesPerPixel, static_cast<unsigned long long>(stats.samples),
-                    stats.seconds * 1000.0);
+        std::printf("renderer: ground truth (CPU)\nsize: %dx%d\nspp: %d\nsamples: %llu\ntime_ms: %.1f\n",
+            request.width, request.height, request.samplesPerPixel,
+            static_cast<unsigned long long>(stats.samples), stats.seconds * 1000.0);
     return 0;
 }
 
@@ -358,27 +368,31 @@ int runGpu(const RenderRequest& request)
         std::fprintf(stderr, "facet render: %s\n", error.c_str());
         return RenderCommand::kExitFailure;
     }
+    const auto contextMade = Clock::now();
     const auto settings = IblSettings::preset(toString(project.environment.quality));
     Q_ASSERT(settings); // the project validated its quality name
     int exitCode = 0;
     {
         FrameRenderer frames;
         IblStats iblStats;
-        const std::optional<RenderScene> scene = frames.prepare(
-            project, *assets, *settings, sceneOptionsFor(*settings, request.referenceView), &iblStats, &error);
+        const std::optional<RenderScene> scene = frames.prepare(project, *assets, *settings,
+            sceneOptionsFor(*settings, request.referenceView), &iblStats, &error);
         if (!scene) {
             std::fprintf(stderr, "facet render: %s\n", error.c_str());
             return RenderCommand::kExitFailure;
         }
         if (!frames.precompute().lastWarning().empty())
             std::fprintf(stderr, "facet render: %s\n", frames.precompute().lastWarning().c_str());
+        const auto prepared = Clock::now();
 
         Renderer& renderer = frames.renderer();
         renderer.setTimingEnabled(request.printStats);
-        const bool png = QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower() == QStringLiteral("png");
+        const bool png = QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower()
+            == QStringLiteral("png");
         // The noise estimate of a reference render covers the interior sphere pixels in the
         // reference view (the pixels the accuracy metric reads), else every pixel.
-        const PixelMask noiseMask = request.referenceView ? sphereMask(request.width, request.height) : PixelMask {};
+        const PixelMask noiseMask
+            = request.referenceView ? sphereMask(request.width, request.height) : PixelMask {};
         FrameRenderer::ConvergedStats converged;
         const std::optional<Image> image = frames.renderConverged(*scene, request.width, request.height,
             png ? FrameOutput::DisplayReferred : FrameOutput::LinearRadiance, scene->sampling.samples, &error,
@@ -387,34 +401,47 @@ int runGpu(const RenderRequest& request)
             std::fprintf(stderr, "facet render: %s\n", error.c_str());
             return RenderCommand::kExitFailure;
         }
+        const auto rendered = Clock::now();
         if (!image->save(request.outputPath, &error, /*alpha=*/false)) {
             std::fprintf(stderr, "facet render: %s\n", error.c_str());
             exitCode = RenderCommand::kExitFailure;
         }
+        const auto written = Clock::now();
         if (request.printStats) {
             const RenderStats& frame = renderer.lastFrameStats();
             const GLInfo& gl = context->info();
-            std::printf("renderer: gpu\ngl: %s\ngl_renderer: %s\nsize: %dx%d\nquality: %s\n", gl.version.c_str(),
-                        gl.renderer.c_str(), request.width, request.height, toString(project.environment.quality));
+            std::printf("renderer: gpu\ngl: %s\ngl_renderer: %s\nsize: %dx%d\nquality: %s\n",
+                gl.version.c_str(), gl.renderer.c_str(), request.width, request.height,
+                toString(project.environment.quality));
             std::printf("ibl_method: %s\n", toString(project.environment.method));
             if (project.environment.method != IblMethod::SplitSum) {
-                std::printf("ibl_samples: %d\ndraws: %d\nconverge_ms: %.1f\n", converged.samples, converged.draws,
-                            converged.seconds * 1000.0);
+                std::printf("ibl_samples: %d\ndraws: %d\nconverge_ms: %.1f\n", converged.samples,
+                    converged.draws, converged.seconds * 1000.0);
                 if (converged.noise)
                     std::printf("noise: %.5f\n", *converged.noise);
             }
-            std::printf("load_ms: %.1f\n",
-                        std::chrono::duration<double, std::milli>(loaded - start).count());
-            std::printf("ibl_passes_run: %d\nibl_cache_hits_memory: %d\nibl_cache_hits_disk: %d\n", iblStats.passesRun,
-                        iblStats.cacheHitsMemory, iblStats.cacheHitsDisk);
-            std::printf("ibl_ms: %.1f (equirect_to_cube %.1f, prefilter %.1f, irradiance %.1f, dfg %.1f, sh %.1f)\n",
-                        iblStats.msTotal, iblStats.msEquirectToCube, iblStats.msPrefilter, iblStats.msIrradiance,
-                        iblStats.msDfg, iblStats.msSh);
+            std::printf("load_ms: %.1f\n", std::chrono::duration<double, std::milli>(loaded - start).count());
+            std::printf("ibl_passes_run: %d\nibl_cache_hits_memory: %d\nibl_cache_hits_disk: %d\n",
+                iblStats.passesRun, iblStats.cacheHitsMemory, iblStats.cacheHitsDisk);
+            std::printf(
+                "ibl_ms: %.1f (equirect_to_cube %.1f, prefilter %.1f, irradiance %.1f, dfg %.1f, sh %.1f)\n",
+                iblStats.msTotal, iblStats.msEquirectToCube, iblStats.msPrefilter, iblStats.msIrradiance,
+                iblStats.msDfg, iblStats.msSh);
             std::printf("programs_compiled: %d\ntextures_uploaded: %d\nmeshes_uploaded: %d\ndraw_calls: %d\n",
-                        frame.programsCompiled, frame.texturesUploaded, frame.meshesUploaded, frame.drawCalls);
+                frame.programsCompiled, frame.texturesUploaded, frame.meshesUploaded, frame.drawCalls);
             std::printf("frame_ms: upload %.1f, surface %.1f, background %.1f, resolve %.1f, tone_map %.1f\n",
-                        frame.uploadMs, frame.surfaceMs, frame.backgroundMs, frame.resolveMs, frame.toneMapMs);
-            std::printf("total_ms: %.1f\n", std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+                frame.uploadMs, frame.surfaceMs, frame.backgroundMs, frame.resolveMs, frame.toneMapMs);
+            // Where the command's time went, in order: reading the project and its files, making the
+            // GL context, preparing the scene (IBL, shaders, uploads), drawing with the read-back and
+            // the display transform, encoding and writing the file.
+            const auto ms = [](Clock::time_point from, Clock::time_point to) {
+                return std::chrono::duration<double, std::milli>(to - from).count();
+            };
+            std::printf("stages_ms: load %.1f, context %.1f, prepare %.1f, render %.1f, write %.1f\n",
+                ms(start, loaded), ms(loaded, contextMade), ms(contextMade, prepared), ms(prepared, rendered),
+                ms(rendered, written));
+            std::printf(
+                "total_ms: %.1f\n", std::chrono::duration<double, std::milli>(Clock::now() - start).count());
         }
     }
     return exitCode;

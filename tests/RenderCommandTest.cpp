@@ -2,11 +2,12 @@
 // images read back, its errors and exit codes.
 
 #include <QDir>
-#include <QJsonArray>
-#include <QJsonObject>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
+#include <QJsonObject>
 #include <QProcessEnvironment>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QtTest/QTest>
@@ -43,13 +44,13 @@ Result runFacet(const QStringList& arguments, const QProcessEnvironment& extra =
 
 // A QStringList from literals (QT_NO_CAST_FROM_ASCII forbids the implicit conversion).
 
-
 // A project file holding only an environment source, a mesh and a debug view.
 QByteArray projectJson(const QString& source, const QString& mesh = QStringLiteral("sphere"),
     const QString& debugView = QStringLiteral("none"))
 {
-    return QStringLiteral("{\"format\": \"facet-project\", \"version\": 1, \"environment\": {\"source\": \"%1\"}, "
-                          "\"view\": {\"mesh\": \"%2\", \"debugView\": \"%3\"}}")
+    return QStringLiteral(
+        "{\"format\": \"facet-project\", \"version\": 1, \"environment\": {\"source\": \"%1\"}, "
+        "\"view\": {\"mesh\": \"%2\", \"debugView\": \"%3\"}}")
         .arg(source, mesh, debugView)
         .toUtf8();
 }
@@ -112,7 +113,8 @@ private Q_SLOTS:
         QVERIFY(writeText(path(QStringLiteral("projects/old-view.json")),
             projectJson(QStringLiteral("uniform:1"), QStringLiteral("sphere"), QStringLiteral("d"))));
         QVERIFY(writeText(path(QStringLiteral("projects/new-view.json")),
-            projectJson(QStringLiteral("uniform:1"), QStringLiteral("sphere"), QStringLiteral("distribution"))));
+            projectJson(
+                QStringLiteral("uniform:1"), QStringLiteral("sphere"), QStringLiteral("distribution"))));
     }
 
     // Every way of naming an environment renders that environment: the background of the ground
@@ -122,10 +124,12 @@ private Q_SLOTS:
         QTest::addColumn<QStringList>("arguments");
         QTest::addColumn<double>("radiance"); // < 0: the built-in studio (not a constant)
         const QString loft = path(QStringLiteral("My HDRIs/loft.exr"));
-        QTest::newRow("installed reference") << strings({"--env", "library:installed/hdri/night.exr"}) << 0.25;
+        QTest::newRow("installed reference")
+            << strings({"--env", "library:installed/hdri/night.exr"}) << 0.25;
         QTest::newRow("user library reference") << strings({"--env", "library:my-hdris/loft.exr"}) << 2.0;
         QTest::newRow("absolute path") << QStringList {QStringLiteral("--env"), loft} << 2.0;
-        QTest::newRow("relative path") << QStringList {QStringLiteral("--env"), QDir::current().relativeFilePath(loft)} << 2.0;
+        QTest::newRow("relative path")
+            << QStringList {QStringLiteral("--env"), QDir::current().relativeFilePath(loft)} << 2.0;
         QTest::newRow("uniform") << strings({"--env", "uniform:0.5"}) << 0.5;
         QTest::newRow("studio is built-in") << strings({"--env", "studio"}) << -1.0;
         QTest::newRow("project, installed") << strings({"{dir}/projects/installed.json"}) << 0.25;
@@ -148,7 +152,8 @@ private Q_SLOTS:
         QVERIFY(!referenceview::intersectSphere(referenceview::rayDirection(0, 0, 8, 8)));
         const float corner = image->at(0, 0).g;
         if (radiance < 0.0)
-            QVERIFY2(std::abs(corner - 5.0f) > 0.5f && image->at(0, 0) != image->at(0, 7), qPrintable(QString::number(corner)));
+            QVERIFY2(std::abs(corner - 5.0f) > 0.5f && image->at(0, 0) != image->at(0, 7),
+                qPrintable(QString::number(corner)));
         else
             QVERIFY2(std::abs(corner - float(radiance)) < 1e-3f, qPrintable(QString::number(corner)));
     }
@@ -160,16 +165,17 @@ private Q_SLOTS:
         QTest::addColumn<QStringList>("mentions");
         QTest::newRow("project, installed sample") << strings({"{dir}/projects/gone.json", "--spp", "1"})
                                                    << strings({"gone.exr", "packaging/fetch-assets.sh"});
-        QTest::newRow("project, gpu path") << strings({"{dir}/projects/gone.json"})
-                                           << strings({"gone.exr", "packaging/fetch-assets.sh"});
+        QTest::newRow("project, gpu path")
+            << strings({"{dir}/projects/gone.json"}) << strings({"gone.exr", "packaging/fetch-assets.sh"});
         QTest::newRow("project, unknown library") << strings({"{dir}/projects/unknown-library.json"})
                                                   << strings({"x.exr", "\"nobody\"", "Add Folder"});
         QTest::newRow("project, installed mesh") << strings({"{dir}/projects/gone-mesh.json"})
                                                  << strings({"gone.glb", "packaging/fetch-assets.sh"});
-        QTest::newRow("--env reference") << strings({"--env", "library:installed/hdri/gone.exr", "--spp", "1"})
-                                         << strings({"gone.exr", "packaging/fetch-assets.sh"});
-        QTest::newRow("--env bare sample name") << strings({"--env", "night", "--spp", "1"})
-                                                << strings({"library:installed/hdri/night.exr"});
+        QTest::newRow("--env reference")
+            << strings({"--env", "library:installed/hdri/gone.exr", "--spp", "1"})
+            << strings({"gone.exr", "packaging/fetch-assets.sh"});
+        QTest::newRow("--env bare sample name")
+            << strings({"--env", "night", "--spp", "1"}) << strings({"library:installed/hdri/night.exr"});
     }
     void missingLibraryFilesAreNamed()
     {
@@ -195,18 +201,20 @@ private Q_SLOTS:
         QTest::newRow("distribution") << strings({"--view", "distribution"}) << strings({"--view", "d"});
         QTest::newRow("visibility") << strings({"--view", "visibility"}) << strings({"--view", "v"});
         QTest::newRow("fresnel") << strings({"--view", "fresnel"}) << strings({"--view", "f"});
-        QTest::newRow("project's old name") << strings({"{dir}/projects/new-view.json"})
-                                            << strings({"{dir}/projects/old-view.json"});
+        QTest::newRow("project's old name")
+            << strings({"{dir}/projects/new-view.json"}) << strings({"{dir}/projects/old-view.json"});
     }
     void debugViewNamesAndAliases()
     {
         QFETCH(QStringList, name);
         QFETCH(QStringList, alias);
-        const QStringList common {QStringLiteral("--env"), QStringLiteral("uniform:1"), QStringLiteral("--quality"),
-            QStringLiteral("draft"), QStringLiteral("--size"), QStringLiteral("16x16"), QStringLiteral("--reference-view")};
+        const QStringList common {QStringLiteral("--env"), QStringLiteral("uniform:1"),
+            QStringLiteral("--quality"), QStringLiteral("draft"), QStringLiteral("--size"),
+            QStringLiteral("16x16"), QStringLiteral("--reference-view")};
         std::optional<Image> images[3];
         // The same request with the shaded image (the last --view wins).
-        const QStringList variants[3] = {name, alias, name + QStringList {QStringLiteral("--view"), QStringLiteral("none")}};
+        const QStringList variants[3]
+            = {name, alias, name + QStringList {QStringLiteral("--view"), QStringLiteral("none")}};
         for (int i = 0; i < 3; ++i) {
             const QString out = path(QStringLiteral("view-%1.exr").arg(i));
             const Result r = runFacet(QStringList {QStringLiteral("render")} + expand(variants[i]) + common
@@ -220,7 +228,8 @@ private Q_SLOTS:
         int differsFromShaded = 0;
         for (int y = 0; y < 16; ++y)
             for (int x = 0; x < 16; ++x) {
-                QVERIFY2(images[1]->at(x, y) == images[0]->at(x, y), qPrintable(QStringLiteral("(%1,%2)").arg(x).arg(y)));
+                QVERIFY2(images[1]->at(x, y) == images[0]->at(x, y),
+                    qPrintable(QStringLiteral("(%1,%2)").arg(x).arg(y)));
                 differsFromShaded += images[0]->at(x, y) != images[2]->at(x, y);
             }
         QVERIFY2(differsFromShaded > 20, qPrintable(QString::number(differsFromShaded)));
@@ -230,12 +239,13 @@ private Q_SLOTS:
     void groundTruthWhiteFurnace()
     {
         const QString out = path(QStringLiteral("furnace.exr"));
-        const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--env"), QStringLiteral("uniform:1"),
-                                   QStringLiteral("--base-color"), QStringLiteral("1,1,1"), QStringLiteral("--metallic"),
-                                   QStringLiteral("1"), QStringLiteral("--roughness"), QStringLiteral("0.7"),
-                                   QStringLiteral("--multiscatter"), QStringLiteral("on"), QStringLiteral("--reference-view"),
-                                   QStringLiteral("--spp"), QStringLiteral("256"), QStringLiteral("--size"),
-                                   QStringLiteral("32x32"), QStringLiteral("--stats"), QStringLiteral("-o"), out});
+        const Result r
+            = runFacet({QStringLiteral("render"), QStringLiteral("--env"), QStringLiteral("uniform:1"),
+                QStringLiteral("--base-color"), QStringLiteral("1,1,1"), QStringLiteral("--metallic"),
+                QStringLiteral("1"), QStringLiteral("--roughness"), QStringLiteral("0.7"),
+                QStringLiteral("--multiscatter"), QStringLiteral("on"), QStringLiteral("--reference-view"),
+                QStringLiteral("--spp"), QStringLiteral("256"), QStringLiteral("--size"),
+                QStringLiteral("32x32"), QStringLiteral("--stats"), QStringLiteral("-o"), out});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY(r.out.contains(QStringLiteral("renderer: ground truth")));
         QVERIFY(r.out.contains(QStringLiteral("time_ms:")));
@@ -262,16 +272,21 @@ private Q_SLOTS:
         const QString cache = path(QStringLiteral("ibl-cache"));
         qputenv("FACET_CACHE_DIR", cache.toLocal8Bit());
         const QString out = path(QStringLiteral("gpu-furnace.exr"));
-        const QStringList arguments{QStringLiteral("render"), QStringLiteral("--env"), QStringLiteral("uniform:1"),
-                                    QStringLiteral("--base-color"), QStringLiteral("1,1,1"), QStringLiteral("--metallic"),
-                                    QStringLiteral("1"), QStringLiteral("--roughness"), QStringLiteral("0.6"),
-                                    QStringLiteral("--reference-view"), QStringLiteral("--quality"), QStringLiteral("draft"),
-                                    QStringLiteral("--size"), QStringLiteral("48x48"), QStringLiteral("--stats"),
-                                    QStringLiteral("-o"), out};
+        const QStringList arguments {QStringLiteral("render"), QStringLiteral("--env"),
+            QStringLiteral("uniform:1"), QStringLiteral("--base-color"), QStringLiteral("1,1,1"),
+            QStringLiteral("--metallic"), QStringLiteral("1"), QStringLiteral("--roughness"),
+            QStringLiteral("0.6"), QStringLiteral("--reference-view"), QStringLiteral("--quality"),
+            QStringLiteral("draft"), QStringLiteral("--size"), QStringLiteral("48x48"),
+            QStringLiteral("--stats"), QStringLiteral("-o"), out};
         Result r = runFacet(arguments);
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("renderer: gpu")), qPrintable(r.out));
         QVERIFY2(r.out.contains(QStringLiteral("ibl_passes_run: 4")), qPrintable(r.out));
+        // Where the command's time went, stage by stage.
+        QVERIFY2(r.out.contains(
+                     QRegularExpression(QStringLiteral("stages_ms: load [0-9.]+, context [0-9.]+, prepare "
+                                                       "[0-9.]+, render [0-9.]+, write [0-9.]+\n"))),
+            qPrintable(r.out));
         std::string error;
         const auto image = Image::load(out.toStdString(), &error);
         QVERIFY2(image, error.c_str());
@@ -283,7 +298,7 @@ private Q_SLOTS:
                     continue;
                 // 1%: fp16 targets and the 32-texel DFG table's interpolation.
                 QVERIFY2(std::abs(image->at(x, y).g - 1.0f) < 0.01f,
-                         qPrintable(QStringLiteral("(%1,%2): %3").arg(x).arg(y).arg(image->at(x, y).g)));
+                    qPrintable(QStringLiteral("(%1,%2): %3").arg(x).arg(y).arg(image->at(x, y).g)));
                 ++checked;
             }
         QVERIFY(checked > 500);
@@ -353,9 +368,9 @@ private Q_SLOTS:
     {
         const QString out = path(QStringLiteral("gold.exr"));
         const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--env"), QStringLiteral("sky"),
-                                   QStringLiteral("--material"), QStringLiteral("gold"), QStringLiteral("--roughness"),
-                                   QStringLiteral("0.3"), QStringLiteral("--spp"), QStringLiteral("16"),
-                                   QStringLiteral("--size"), QStringLiteral("24x24"), QStringLiteral("-o"), out});
+            QStringLiteral("--material"), QStringLiteral("gold"), QStringLiteral("--roughness"),
+            QStringLiteral("0.3"), QStringLiteral("--spp"), QStringLiteral("16"), QStringLiteral("--size"),
+            QStringLiteral("24x24"), QStringLiteral("-o"), out});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         std::string error;
         const auto image = Image::load(out.toStdString(), &error);
@@ -380,7 +395,11 @@ private Q_SLOTS:
                 for (int c = 0; c < 3; ++c) {
                     const float e = expected.at(x, y)[c];
                     QVERIFY2(std::abs(image->at(x, y)[c] - e) <= 1e-3f * (1.0f + e), // half precision
-                             qPrintable(QStringLiteral("(%1,%2): %3 vs %4").arg(x).arg(y).arg(image->at(x, y)[c]).arg(e)));
+                        qPrintable(QStringLiteral("(%1,%2): %3 vs %4")
+                                       .arg(x)
+                                       .arg(y)
+                                       .arg(image->at(x, y)[c])
+                                       .arg(e)));
                 }
     }
 
@@ -388,7 +407,7 @@ private Q_SLOTS:
     {
         const QString out = path(QStringLiteral("shot.png"));
         const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--spp"), QStringLiteral("4"),
-                                   QStringLiteral("--size"), QStringLiteral("16x16"), QStringLiteral("-o"), out});
+            QStringLiteral("--size"), QStringLiteral("16x16"), QStringLiteral("-o"), out});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         std::string error;
         const auto image = Image::load(out.toStdString(), &error);
@@ -409,8 +428,9 @@ private Q_SLOTS:
         std::string error;
         QVERIFY2(project.save(projectPath.toStdString(), &error), error.c_str());
         const QString out = path(QStringLiteral("p.exr"));
-        const Result r = runFacet({QStringLiteral("render"), projectPath, QStringLiteral("--spp"), QStringLiteral("64"),
-                                   QStringLiteral("--size"), QStringLiteral("16x16"), QStringLiteral("-o"), out});
+        const Result r
+            = runFacet({QStringLiteral("render"), projectPath, QStringLiteral("--spp"), QStringLiteral("64"),
+                QStringLiteral("--size"), QStringLiteral("16x16"), QStringLiteral("-o"), out});
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         const auto image = Image::load(out.toStdString(), &error);
         QVERIFY2(image, error.c_str());
@@ -423,73 +443,75 @@ private Q_SLOTS:
         QTest::addColumn<int>("exitCode");
         QTest::addColumn<QString>("message");
         const QString out = QStringLiteral("never-written.exr");
-        QTest::newRow("no output") << QStringList{QStringLiteral("render")} << 2 << QStringLiteral("-o OUT.exr");
-        QTest::newRow("bad extension") << QStringList{QStringLiteral("render"), QStringLiteral("-o"), QStringLiteral("x.jpg")}
-                                       << 2 << QStringLiteral("must be .exr");
-        QTest::newRow("roughness range") << QStringList{QStringLiteral("render"), QStringLiteral("--roughness"),
-                                                        QStringLiteral("1.5"), QStringLiteral("-o"), out}
+        QTest::newRow("no output") << QStringList {QStringLiteral("render")} << 2
+                                   << QStringLiteral("-o OUT.exr");
+        QTest::newRow("bad extension")
+            << QStringList {QStringLiteral("render"), QStringLiteral("-o"), QStringLiteral("x.jpg")} << 2
+            << QStringLiteral("must be .exr");
+        QTest::newRow("roughness range") << QStringList {QStringLiteral("render"),
+            QStringLiteral("--roughness"), QStringLiteral("1.5"), QStringLiteral("-o"), out}
                                          << 2 << QStringLiteral("--roughness: 1.5 is outside [0, 1]");
-        QTest::newRow("metallic nan") << QStringList{QStringLiteral("render"), QStringLiteral("--metallic"),
-                                                     QStringLiteral("nan"), QStringLiteral("-o"), out}
+        QTest::newRow("metallic nan") << QStringList {QStringLiteral("render"), QStringLiteral("--metallic"),
+            QStringLiteral("nan"), QStringLiteral("-o"), out}
                                       << 2 << QStringLiteral("--metallic: 'nan' is not a number");
-        QTest::newRow("base colour") << QStringList{QStringLiteral("render"), QStringLiteral("--base-color"),
-                                                    QStringLiteral("1,1"), QStringLiteral("-o"), out}
+        QTest::newRow("base colour") << QStringList {QStringLiteral("render"), QStringLiteral("--base-color"),
+            QStringLiteral("1,1"), QStringLiteral("-o"), out}
                                      << 2 << QStringLiteral("--base-color: '1,1' is not r,g,b");
-        QTest::newRow("size") << QStringList{QStringLiteral("render"), QStringLiteral("--size"), QStringLiteral("0x10"),
-                                             QStringLiteral("-o"), out}
+        QTest::newRow("size") << QStringList {QStringLiteral("render"), QStringLiteral("--size"),
+            QStringLiteral("0x10"), QStringLiteral("-o"), out}
                               << 2 << QStringLiteral("--size: '0x10'");
-        QTest::newRow("spp") << QStringList{QStringLiteral("render"), QStringLiteral("--spp"), QStringLiteral("-3"),
-                                            QStringLiteral("-o"), out}
+        QTest::newRow("spp") << QStringList {QStringLiteral("render"), QStringLiteral("--spp"),
+            QStringLiteral("-3"), QStringLiteral("-o"), out}
                              << 2 << QStringLiteral("--spp: '-3'");
-        QTest::newRow("brdf") << QStringList{QStringLiteral("render"), QStringLiteral("--brdf"), QStringLiteral("phong"),
-                                             QStringLiteral("-o"), out}
+        QTest::newRow("brdf") << QStringList {QStringLiteral("render"), QStringLiteral("--brdf"),
+            QStringLiteral("phong"), QStringLiteral("-o"), out}
                               << 2 << QStringLiteral("--brdf: 'phong' is not gltf or learnopengl");
-        QTest::newRow("multiscatter") << QStringList{QStringLiteral("render"), QStringLiteral("--multiscatter"),
-                                                     QStringLiteral("maybe"), QStringLiteral("-o"), out}
+        QTest::newRow("multiscatter") << QStringList {QStringLiteral("render"),
+            QStringLiteral("--multiscatter"), QStringLiteral("maybe"), QStringLiteral("-o"), out}
                                       << 2 << QStringLiteral("--multiscatter: 'maybe' is not on or off");
-        QTest::newRow("preset") << QStringList{QStringLiteral("render"), QStringLiteral("--material"),
-                                               QStringLiteral("unobtainium"), QStringLiteral("-o"), out}
+        QTest::newRow("preset") << QStringList {QStringLiteral("render"), QStringLiteral("--material"),
+            QStringLiteral("unobtainium"), QStringLiteral("-o"), out}
                                 << 2 << QStringLiteral("no preset 'unobtainium'");
-        QTest::newRow("quality") << QStringList{QStringLiteral("render"), QStringLiteral("--quality"),
-                                                QStringLiteral("ultra"), QStringLiteral("-o"), out}
+        QTest::newRow("quality") << QStringList {QStringLiteral("render"), QStringLiteral("--quality"),
+            QStringLiteral("ultra"), QStringLiteral("-o"), out}
                                  << 2 << QStringLiteral("--quality: 'ultra'");
-        QTest::newRow("missing project") << QStringList{QStringLiteral("render"), QStringLiteral("no-such.json"),
-                                                        QStringLiteral("-o"), out}
+        QTest::newRow("missing project") << QStringList {QStringLiteral("render"),
+            QStringLiteral("no-such.json"), QStringLiteral("-o"), out}
                                          << 1 << QStringLiteral("no-such.json");
-        QTest::newRow("missing environment") << QStringList{QStringLiteral("render"), QStringLiteral("--env"),
-                                                            QStringLiteral("/no/such/env.exr"), QStringLiteral("--spp"),
-                                                            QStringLiteral("4"), QStringLiteral("-o"), out}
+        QTest::newRow("missing environment") << QStringList {QStringLiteral("render"),
+            QStringLiteral("--env"), QStringLiteral("/no/such/env.exr"), QStringLiteral("--spp"),
+            QStringLiteral("4"), QStringLiteral("-o"), out}
                                              << 1 << QStringLiteral("/no/such/env.exr");
-        QTest::newRow("uniform garbage") << QStringList{QStringLiteral("render"), QStringLiteral("--env"),
-                                                        QStringLiteral("uniform:-1"), QStringLiteral("--spp"),
-                                                        QStringLiteral("4"), QStringLiteral("-o"), out}
-                                         << 1 << QStringLiteral("uniform:-1");
-        QTest::newRow("unknown debug view") << QStringList{QStringLiteral("render"), QStringLiteral("--view"),
-                                                           QStringLiteral("bogus"), QStringLiteral("-o"), out}
-                                            << 2
-                                            << QStringLiteral("--view: unknown debug view 'bogus' (expected one of: "
-                                                              "none, base-color, ");
+        QTest::newRow("uniform garbage") << QStringList {QStringLiteral("render"), QStringLiteral("--env"),
+            QStringLiteral("uniform:-1"), QStringLiteral("--spp"), QStringLiteral("4"), QStringLiteral("-o"),
+            out} << 1 << QStringLiteral("uniform:-1");
+        QTest::newRow("unknown debug view")
+            << QStringList {QStringLiteral("render"), QStringLiteral("--view"), QStringLiteral("bogus"),
+                   QStringLiteral("-o"), out}
+            << 2
+            << QStringLiteral("--view: unknown debug view 'bogus' (expected one of: "
+                              "none, base-color, ");
         QTest::newRow("project's unknown debug view")
-            << QStringList{QStringLiteral("render"), path(QStringLiteral("projects/bad-view.json")), QStringLiteral("-o"), out}
-            << 1 << QStringLiteral("bad-view.json: view.debugView: unknown debug view \"bogus\" (expected one of: none, ");
-        QTest::newRow("ibl method") << QStringList{QStringLiteral("render"), QStringLiteral("--ibl"),
-                                                   QStringLiteral("path-tracing"), QStringLiteral("-o"), out}
-                                    << 2 << QStringLiteral("--ibl: 'path-tracing' is not split-sum, fis or reference");
-        QTest::newRow("ibl samples zero") << QStringList{QStringLiteral("render"), QStringLiteral("--ibl"),
-                                                         QStringLiteral("reference"), QStringLiteral("--ibl-samples"),
-                                                         QStringLiteral("0"), QStringLiteral("-o"), out}
-                                          << 2 << QStringLiteral("--ibl-samples: '0' is not a whole number from 1 to 65536");
-        QTest::newRow("ibl samples with the split sum")
-            << QStringList{QStringLiteral("render"), QStringLiteral("--ibl-samples"), QStringLiteral("64"),
-                           QStringLiteral("-o"), out}
-            << 2 << QStringLiteral("--ibl-samples: 64 given with --ibl split-sum");
-        QTest::newRow("ibl with spp") << QStringList{QStringLiteral("render"), QStringLiteral("--ibl"),
-                                                     QStringLiteral("reference"), QStringLiteral("--spp"),
-                                                     QStringLiteral("16"), QStringLiteral("-o"), out}
-                                      << 2 << QStringLiteral("give one or the other");
-        QTest::newRow("ground truth mesh") << QStringList{QStringLiteral("render"), QStringLiteral("--mesh"),
-                                                          QStringLiteral("cube"), QStringLiteral("--spp"),
-                                                          QStringLiteral("4"), QStringLiteral("-o"), out}
+            << QStringList {QStringLiteral("render"), path(QStringLiteral("projects/bad-view.json")),
+                   QStringLiteral("-o"), out}
+            << 1
+            << QStringLiteral(
+                   "bad-view.json: view.debugView: unknown debug view \"bogus\" (expected one of: none, ");
+        QTest::newRow("ibl method") << QStringList {QStringLiteral("render"), QStringLiteral("--ibl"),
+            QStringLiteral("path-tracing"), QStringLiteral("-o"),
+            out} << 2 << QStringLiteral("--ibl: 'path-tracing' is not split-sum, fis or reference");
+        QTest::newRow("ibl samples zero")
+            << QStringList {QStringLiteral("render"), QStringLiteral("--ibl"), QStringLiteral("reference"),
+                   QStringLiteral("--ibl-samples"), QStringLiteral("0"), QStringLiteral("-o"), out}
+            << 2 << QStringLiteral("--ibl-samples: '0' is not a whole number from 1 to 65536");
+        QTest::newRow("ibl samples with the split sum") << QStringList {QStringLiteral("render"),
+            QStringLiteral("--ibl-samples"), QStringLiteral("64"), QStringLiteral("-o"),
+            out} << 2 << QStringLiteral("--ibl-samples: 64 given with --ibl split-sum");
+        QTest::newRow("ibl with spp") << QStringList {QStringLiteral("render"), QStringLiteral("--ibl"),
+            QStringLiteral("reference"), QStringLiteral("--spp"), QStringLiteral("16"), QStringLiteral("-o"),
+            out} << 2 << QStringLiteral("give one or the other");
+        QTest::newRow("ground truth mesh") << QStringList {QStringLiteral("render"), QStringLiteral("--mesh"),
+            QStringLiteral("cube"), QStringLiteral("--spp"), QStringLiteral("4"), QStringLiteral("-o"), out}
                                            << 2 << QStringLiteral("reference sphere only");
     }
     void badInputGivesClearErrors()
@@ -512,9 +534,9 @@ private Q_SLOTS:
 
     void unwritableOutputFails()
     {
-        const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--spp"), QStringLiteral("1"),
-                                   QStringLiteral("--size"), QStringLiteral("8x8"), QStringLiteral("-o"),
-                                   QStringLiteral("/no/such/dir/out.exr")});
+        const Result r = runFacet(
+            {QStringLiteral("render"), QStringLiteral("--spp"), QStringLiteral("1"), QStringLiteral("--size"),
+                QStringLiteral("8x8"), QStringLiteral("-o"), QStringLiteral("/no/such/dir/out.exr")});
         QCOMPARE(r.exitCode, 1);
         QVERIFY2(r.err.contains(QStringLiteral("/no/such/dir/out.exr")), qPrintable(r.err));
     }
@@ -532,13 +554,15 @@ private Q_SLOTS:
         const double g = tonemap::srgbToLinear(51.0 / 255.0);
         const double b = tonemap::srgbToLinear(26.0 / 255.0);
         const double e = 2.0 * tonemap::srgbToLinear(128.0 / 255.0);
-        QTest::newRow("base-color") << QStringLiteral("base-color") << QVector<double>{r, g, b};
+        QTest::newRow("base-color") << QStringLiteral("base-color") << QVector<double> {r, g, b};
         // Empty: the sphere's own normal at the pixel (the flat map's 128/255 tilts it by 0.4%).
-        QTest::newRow("shading-normal") << QStringLiteral("shading-normal") << QVector<double>{};
-        QTest::newRow("occlusion") << QStringLiteral("occlusion") << QVector<double>{64 / 255.0, 64 / 255.0, 64 / 255.0};
-        QTest::newRow("roughness") << QStringLiteral("roughness") << QVector<double>{191 / 255.0, 191 / 255.0, 191 / 255.0};
-        QTest::newRow("metallic") << QStringLiteral("metallic") << QVector<double>{1.0, 1.0, 1.0};
-        QTest::newRow("emissive") << QStringLiteral("emissive") << QVector<double>{e, e, e};
+        QTest::newRow("shading-normal") << QStringLiteral("shading-normal") << QVector<double> {};
+        QTest::newRow("occlusion") << QStringLiteral("occlusion")
+                                   << QVector<double> {64 / 255.0, 64 / 255.0, 64 / 255.0};
+        QTest::newRow("roughness") << QStringLiteral("roughness")
+                                   << QVector<double> {191 / 255.0, 191 / 255.0, 191 / 255.0};
+        QTest::newRow("metallic") << QStringLiteral("metallic") << QVector<double> {1.0, 1.0, 1.0};
+        QTest::newRow("emissive") << QStringLiteral("emissive") << QVector<double> {e, e, e};
     }
     void multiMapProjectShowsEveryMap()
     {
@@ -577,9 +601,8 @@ private Q_SLOTS:
 
         const QString out = path(QStringLiteral("view-%1.exr").arg(view));
         const Result result = runFacet({QStringLiteral("render"), projectPath, QStringLiteral("--view"), view,
-                                        QStringLiteral("--reference-view"), QStringLiteral("--quality"),
-                                        QStringLiteral("draft"), QStringLiteral("--size"), QStringLiteral("32x32"),
-                                        QStringLiteral("-o"), out});
+            QStringLiteral("--reference-view"), QStringLiteral("--quality"), QStringLiteral("draft"),
+            QStringLiteral("--size"), QStringLiteral("32x32"), QStringLiteral("-o"), out});
         QVERIFY2(result.exitCode == 0, qPrintable(result.err));
         const auto image = Image::load(out.toStdString(), &error);
         QVERIFY2(image, error.c_str());
@@ -589,18 +612,19 @@ private Q_SLOTS:
             for (int x = 15; x <= 16; ++x) {
                 const double tolerance = expected.isEmpty() ? 5e-3 : 2e-3;
                 if (expected.isEmpty()) {
-                    const glm::dvec3 n = *referenceview::intersectSphere(referenceview::rayDirection(x, y, 32, 32));
+                    const glm::dvec3 n
+                        = *referenceview::intersectSphere(referenceview::rayDirection(x, y, 32, 32));
                     expected = {0.5 * n.x + 0.5, 0.5 * n.y + 0.5, 0.5 * n.z + 0.5};
                 }
                 for (int c = 0; c < 3; ++c)
                     QVERIFY2(std::abs(image->at(x, y)[c] - expected[c]) < tolerance,
-                             qPrintable(QStringLiteral("%1 view, pixel (%2, %3) channel %4: %5, expected %6")
-                                            .arg(view)
-                                            .arg(x)
-                                            .arg(y)
-                                            .arg(c)
-                                            .arg(image->at(x, y)[c])
-                                            .arg(expected[c])));
+                        qPrintable(QStringLiteral("%1 view, pixel (%2, %3) channel %4: %5, expected %6")
+                                       .arg(view)
+                                       .arg(x)
+                                       .arg(y)
+                                       .arg(c)
+                                       .arg(image->at(x, y)[c])
+                                       .arg(expected[c])));
                 if (view == QStringLiteral("shading-normal"))
                     expected.clear();
             }
@@ -623,7 +647,7 @@ private Q_SLOTS:
         const auto quad = [&w](float x0, float x1, int m) {
             const glm::vec3 n(0, 0, 1);
             return w.addMesh({{x0, -1, 0}, {x1, -1, 0}, {x1, 1, 0}, {x0, 1, 0}}, {n, n, n, n},
-                             {{0, 1}, {1, 1}, {1, 0}, {0, 0}}, {0, 1, 2, 0, 2, 3}, m);
+                {{0, 1}, {1, 1}, {1, 0}, {0, 0}}, {0, 1, 2, 0, 2, 3}, m);
         };
         const int red = material(1, 0, 0, 0.9);
         const int blue = material(0, 0, 1, 0.4);
@@ -634,9 +658,9 @@ private Q_SLOTS:
         const auto renderView = [&](const QString& view, const QStringList& extra) -> std::optional<Image> {
             const QString out = path(QStringLiteral("asset-%1.exr").arg(view));
             QStringList args {QStringLiteral("render"), asset, QStringLiteral("--view"), view,
-                              QStringLiteral("--reference-view"), QStringLiteral("--quality"), QStringLiteral("draft"),
-                              QStringLiteral("--env"), QStringLiteral("uniform:0.5"), QStringLiteral("--size"),
-                              QStringLiteral("32x32"), QStringLiteral("-o"), out};
+                QStringLiteral("--reference-view"), QStringLiteral("--quality"), QStringLiteral("draft"),
+                QStringLiteral("--env"), QStringLiteral("uniform:0.5"), QStringLiteral("--size"),
+                QStringLiteral("32x32"), QStringLiteral("-o"), out};
             args += extra;
             const Result r = runFacet(args);
             if (r.exitCode != 0) {
@@ -653,9 +677,11 @@ private Q_SLOTS:
         const auto own = renderView(QStringLiteral("roughness"), {});
         QVERIFY(own);
         QVERIFY(std::abs(own->at(11, 16).r - 0.9f) < 1e-3f && std::abs(own->at(21, 16).r - 0.4f) < 1e-3f);
-        const auto overridden = renderView(QStringLiteral("roughness"), {QStringLiteral("--roughness"), QStringLiteral("0.2")});
+        const auto overridden
+            = renderView(QStringLiteral("roughness"), {QStringLiteral("--roughness"), QStringLiteral("0.2")});
         QVERIFY(overridden);
-        QVERIFY(std::abs(overridden->at(11, 16).r - 0.2f) < 1e-3f && std::abs(overridden->at(21, 16).r - 0.2f) < 1e-3f);
+        QVERIFY(std::abs(overridden->at(11, 16).r - 0.2f) < 1e-3f
+            && std::abs(overridden->at(21, 16).r - 0.2f) < 1e-3f);
     }
 
     // Broken assets: a message naming the file and the problem, the right exit code, no crash.
@@ -664,14 +690,17 @@ private Q_SLOTS:
         QTest::addColumn<QString>("defect");
         QTest::addColumn<int>("exitCode");
         QTest::addColumn<QString>("message");
-        QTest::newRow("missing image") << QStringLiteral("missing-image") << 1 << QStringLiteral("nope.png: no such file");
+        QTest::newRow("missing image")
+            << QStringLiteral("missing-image") << 1 << QStringLiteral("nope.png: no such file");
         QTest::newRow("image that is not an image")
             << QStringLiteral("not-an-image") << 1 << QStringLiteral("fake.png");
-        QTest::newRow("wrong accessor") << QStringLiteral("accessor") << 1 << QStringLiteral("reach past the end");
-        QTest::newRow("texture index out of range")
-            << QStringLiteral("texture-index") << 0 << QStringLiteral("names texture 9, which does not exist");
+        QTest::newRow("wrong accessor")
+            << QStringLiteral("accessor") << 1 << QStringLiteral("reach past the end");
+        QTest::newRow("texture index out of range") << QStringLiteral(
+            "texture-index") << 0 << QStringLiteral("names texture 9, which does not exist");
         QTest::newRow(".glb cut in half") << QStringLiteral("cut") << 1 << QStringLiteral("cut short");
-        QTest::newRow("not glTF at all") << QStringLiteral("garbage") << 1 << QStringLiteral("not a readable glTF file");
+        QTest::newRow("not glTF at all")
+            << QStringLiteral("garbage") << 1 << QStringLiteral("not a readable glTF file");
     }
     void badGltfAssetsGiveClearErrors()
     {
@@ -684,11 +713,13 @@ private Q_SLOTS:
         GltfWriter w;
         QJsonObject values;
         if (defect == QLatin1String("missing-image"))
-            values[QLatin1String("baseColorTexture")] = QJsonObject {{QStringLiteral("index"), w.addTexture(w.addImageUri(QStringLiteral("nope.png")))}};
+            values[QLatin1String("baseColorTexture")] = QJsonObject {
+                {QStringLiteral("index"), w.addTexture(w.addImageUri(QStringLiteral("nope.png")))}};
         else if (defect == QLatin1String("not-an-image")) {
             QFile fake(folder + QStringLiteral("/fake.png"));
             QVERIFY(fake.open(QIODevice::WriteOnly) && fake.write("this is text, not a PNG\n") > 0);
-            values[QLatin1String("baseColorTexture")] = QJsonObject {{QStringLiteral("index"), w.addTexture(w.addImageUri(QStringLiteral("fake.png")))}};
+            values[QLatin1String("baseColorTexture")] = QJsonObject {
+                {QStringLiteral("index"), w.addTexture(w.addImageUri(QStringLiteral("fake.png")))}};
         } else if (defect == QLatin1String("texture-index"))
             values[QLatin1String("baseColorTexture")] = QJsonObject {{QStringLiteral("index"), 9}};
         QJsonObject material;
@@ -712,10 +743,11 @@ private Q_SLOTS:
                 QVERIFY(file.resize(0) && file.write("this is not a model") > 0);
         }
         const QString out = folder + QStringLiteral("/out.exr");
-        const Result r = runFacet({QStringLiteral("render"), asset, QStringLiteral("--reference-view"), QStringLiteral("--quality"),
-                                   QStringLiteral("draft"), QStringLiteral("--size"), QStringLiteral("16x16"),
-                                   QStringLiteral("-o"), out});
-        QVERIFY2(r.exitCode == exitCode, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
+        const Result r = runFacet({QStringLiteral("render"), asset, QStringLiteral("--reference-view"),
+            QStringLiteral("--quality"), QStringLiteral("draft"), QStringLiteral("--size"),
+            QStringLiteral("16x16"), QStringLiteral("-o"), out});
+        QVERIFY2(
+            r.exitCode == exitCode, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
         QVERIFY2(r.err.contains(message), qPrintable(r.err));
         QVERIFY2(r.err.contains(asset) || r.err.contains(folder), qPrintable(r.err)); // names the file
         QCOMPARE(QFile::exists(out), exitCode == 0);
