@@ -47,6 +47,23 @@ ThumbnailLoader::~ThumbnailLoader()
     m_pool.waitForDone();
 }
 
+bool ThumbnailLoader::deliverMade(const QString& key, const QString& memo)
+{
+    const auto found = m_made.constFind(memo);
+    if (found == m_made.constEnd())
+        return false;
+    // Queued like a worker's result: the caller sees ready() after request() returns, either way.
+    const Made made = *found;
+    QMetaObject::invokeMethod(
+        this,
+        [this, key, made] {
+            --m_pending;
+            Q_EMIT ready(key, made.image, made.sourceSize, QString(), 0.0);
+        },
+        Qt::QueuedConnection);
+    return true;
+}
+
 void ThumbnailLoader::request(const QString& key, const QString& source, Kind kind, QSize size)
 {
     ++m_pending;
@@ -55,17 +72,8 @@ void ThumbnailLoader::request(const QString& key, const QString& source, Kind ki
         const QFileInfo file(QString::fromStdString(fileOfImagePath(source.toStdString())));
         memo = source + u'|' + QString::number(file.lastModified().toMSecsSinceEpoch()) + u'|'
             + QString::number(size.width()) + u'x' + QString::number(size.height());
-        if (const auto found = m_made.constFind(memo); found != m_made.constEnd()) {
-            const Made made = *found;
-            QMetaObject::invokeMethod(
-                this,
-                [this, key, made] {
-                    --m_pending;
-                    Q_EMIT ready(key, made.image, made.sourceSize, QString(), 0.0);
-                },
-                Qt::QueuedConnection);
+        if (deliverMade(key, memo))
             return;
-        }
     }
     m_pool.start([this, key, source, kind, size, memo] {
         QElapsedTimer clock;
@@ -131,17 +139,8 @@ void ThumbnailLoader::requestSwatch(const QString& key, const Material& material
     const QString memo = QStringLiteral("swatch|%1|").arg(size)
         + QString::fromUtf8(
             QJsonDocument(materialToJson(material, std::string())).toJson(QJsonDocument::Compact));
-    if (const auto found = m_made.constFind(memo); found != m_made.constEnd()) {
-        const Made made = *found;
-        QMetaObject::invokeMethod(
-            this,
-            [this, key, made] {
-                --m_pending;
-                Q_EMIT ready(key, made.image, made.sourceSize, QString(), 0.0);
-            },
-            Qt::QueuedConnection);
+    if (deliverMade(key, memo))
         return;
-    }
     m_pool.start([this, key, material, size, memo] {
         QElapsedTimer clock;
         clock.start();

@@ -64,6 +64,8 @@ private:
         QImage image;
         QSize sourceSize;
     };
+    // Delivers what was made for `memo` before, if anything was: true then, and ready() follows.
+    bool deliverMade(const QString& key, const QString& memo);
     QHash<QString, Made> m_made; // texture thumbnails by file|time|size (GUI thread only)
     QThreadPool m_pool;
     std::shared_ptr<const class SwatchRenderer> m_swatchRenderer; // made by the first swatch job
