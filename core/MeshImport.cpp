@@ -168,7 +168,9 @@ std::string plyBodyProblem(const QList<QByteArray>& header, qint64 bodyBytes)
     double elementCount = 0;
     double elementBytes = 0;
     std::string claimed;
-    const auto closeElement = [&] { needed += elementCount * elementBytes; };
+    // An element without (known) properties still costs its reader a loop per instance: count it
+    // as a byte each (a line in ASCII), so 1e11 of them in a 246-byte file are refused too.
+    const auto closeElement = [&] { needed += elementCount * std::max(elementBytes, 1.0); };
     for (const QByteArray& rawLine : header) {
         const QList<QByteArray> words = rawLine.simplified().split(' ');
         if (words.size() >= 2 && words[0] == "format") {
