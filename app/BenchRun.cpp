@@ -239,7 +239,7 @@ bool BenchRun::measure(const BenchConfig& config, const BenchEnvironment& enviro
     base.config = config.name;
     // What ran: the requested settings as the precompute fits them to this map (a 512 cube on a
     // 512-wide map runs at 256; IblPrecompute uses forImage too).
-    base.settings = config.settings.forImage(assets.environment.image().width());
+    base.settings = config.settings.forImage(assets.environment.width());
     base.method = config.method;
     base.iblSamples = sampled ? config.samples : 0;
     base.environment = environment.label;

@@ -1,17 +1,22 @@
 #include "core/Environment.h"
 
 #include "core/AssetLibrary.h"
+#include "core/EnvironmentIndex.h"
+#include "core/FileCheck.h"
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <numbers>
 #include <string_view>
 #include <vector>
 
 #include <QFileInfo>
+#include <QtDebug>
 #include <QtGlobal>
 
 #include <glm/geometric.hpp>
@@ -79,6 +84,97 @@ std::uint64_t hashPixels(const Image& image)
             hash.addUint32(floatBits(pixels[i][c]));
     return hash.value();
 }
+
+// The size an environment keeps of a width x height file: its own, or the largest of the same
+// aspect within Environment::kMaxWidth x kMaxHeight (each side rounded down, at least 1).
+std::pair<int, int> keptSize(int width, int height)
+{
+    if (width <= Environment::kMaxWidth && height <= Environment::kMaxHeight)
+        return {width, height};
+    const double scale = std::min(double(Environment::kMaxWidth) / width, double(Environment::kMaxHeight) / height);
+    return {std::max(1, int(std::floor(width * scale))), std::max(1, int(std::floor(height * scale)))};
+}
+
+// Reads an environment file as load() keeps it: linear, sanitised, area-filtered to keptSize
+// a band at a time. Errors without a function prefix ("<path>: <reason>").
+std::optional<Image> decodeEnvironmentFile(const std::string& path, std::string* error, ImageLoadStats* stats)
+{
+    std::string imageError;
+    std::optional<Image> image
+        = Image::loadBoxFiltered(path, /*linear=*/true, &keptSize, &imageError, nullptr, nullptr, stats);
+    if (!image && error) {
+        static const std::string kImagePrefix = "Image::loadBoxFiltered: ";
+        if (imageError.rfind(kImagePrefix, 0) == 0)
+            imageError.erase(0, kImagePrefix.size());
+        *error = imageError;
+    }
+    return image;
+}
+
+} // namespace
+
+// The pixels of an environment: in memory from the start, or decoded from `path` at the first
+// get() (an environment found in core/EnvironmentIndex).
+class Environment::Pixels {
+public:
+    explicit Pixels(Image image)
+        : m_image(std::move(image))
+        , m_decoded(true)
+    {
+    }
+    Pixels(std::string path, std::uint64_t contentHash, int width, int height)
+        : m_path(std::move(path))
+        , m_contentHash(contentHash)
+        , m_width(width)
+        , m_height(height)
+    {
+    }
+
+    const Image& get()
+    {
+        std::call_once(m_once, [this] {
+            if (!m_decoded.load())
+                decode();
+        });
+        return m_image;
+    }
+    bool decoded() const { return m_decoded.load(); }
+
+private:
+    void decode()
+    {
+        std::string error;
+        std::optional<Image> image = decodeEnvironmentFile(m_path, &error, nullptr);
+        if (image)
+            image->sanitize();
+        if (!image) {
+            qWarning("Environment: %s; it decoded when first loaded: lighting with black until it "
+                     "is loaded again",
+                qPrintable(QString::fromStdString(error)));
+            m_image = Image(m_width, m_height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+            EnvironmentIndex().forget(m_path);
+        } else {
+            if (image->width() != m_width || image->height() != m_height || hashPixels(*image) != m_contentHash) {
+                qWarning("Environment: %s: changed on disk without changing its size or times; "
+                         "load it again to light with the new pixels",
+                    m_path.c_str());
+                EnvironmentIndex().forget(m_path);
+            }
+            m_image = std::move(*image);
+        }
+        m_decoded.store(true);
+    }
+
+    std::once_flag m_once;
+    Image m_image;
+    std::atomic<bool> m_decoded {false};
+    std::string m_path;
+    std::uint64_t m_contentHash = 0;
+    int m_width = 0;
+    int m_height = 0;
+};
+
+namespace {
 
 // Shortest text that reads back as the same double (std::to_chars round-trip guarantee).
 std::string formatNumber(double value)
@@ -279,7 +375,29 @@ Environment::Environment(Image equirect, std::string name)
     // (load() has sanitised already and reported it; this pass then changes nothing.)
     equirect.sanitize();
     m_contentHash = hashPixels(equirect);
-    m_image = std::make_shared<const Image>(std::move(equirect));
+    m_width = equirect.width();
+    m_height = equirect.height();
+    m_pixels = std::make_shared<Pixels>(std::move(equirect));
+}
+
+Environment::Environment(std::string path, std::uint64_t contentHash, int width, int height)
+    : m_width(width)
+    , m_height(height)
+    , m_name(path)
+    , m_contentHash(contentHash)
+{
+    m_pixels = std::make_shared<Pixels>(std::move(path), contentHash, width, height);
+}
+
+const Image& Environment::image() const
+{
+    static const Image kEmpty;
+    return m_pixels ? m_pixels->get() : kEmpty;
+}
+
+bool Environment::decoded() const
+{
+    return m_pixels && m_pixels->decoded();
 }
 
 Environment Environment::uniform(const glm::dvec3& radiance)
@@ -313,39 +431,48 @@ std::optional<Environment> Environment::load(
 {
     if (warning)
         warning->clear();
+    // A file loaded before and unchanged since: its record says all but the pixels.
+    const EnvironmentIndex index;
+    FileIdentity before;
+    const bool identified = fileIdentity(path, &before);
+    if (identified) {
+        if (const std::optional<EnvironmentRecord> record = index.find(path, before)) {
+            if (warning)
+                *warning = record->warning;
+            return Environment(path, record->contentHash, record->width, record->height);
+        }
+    }
+
     std::string imageError;
     ImageLoadStats stats;
-    std::optional<Image> image = Image::load(path, &imageError, &stats);
+    std::optional<Image> image = decodeEnvironmentFile(path, &imageError, &stats);
     if (!image) {
-        // Same message, under this function's name.
-        static const std::string kImagePrefix = "Image::load: ";
-        if (imageError.rfind(kImagePrefix, 0) == 0)
-            imageError.erase(0, kImagePrefix.size());
         if (error)
             *error = "Environment::load: " + imageError;
         return std::nullopt;
     }
 
-    std::vector<std::string> warnings;
+    std::string lines;
+    auto addLine = [&lines](const std::string& line) {
+        if (!lines.empty())
+            lines += '\n';
+        lines += line;
+    };
     if (stats.total() > 0)
-        warnings.push_back(path + ": replaced " + std::to_string(stats.nanCount) + " NaN, "
-            + std::to_string(stats.infCount) + " Inf, " + std::to_string(stats.negativeCount)
-            + " negative samples");
+        addLine(path + ": replaced " + std::to_string(stats.nanCount) + " NaN, " + std::to_string(stats.infCount)
+            + " Inf, " + std::to_string(stats.negativeCount) + " negative samples");
     if (image->width() != 2 * image->height())
-        warnings.push_back(path + ": " + std::to_string(image->width()) + "x"
-            + std::to_string(image->height())
+        addLine(path + ": " + std::to_string(image->width()) + "x" + std::to_string(image->height())
             + " is not 2:1; an equirectangular image is stretched to cover the sphere");
-    // An LDR panorama (PNG/JPEG) stores sRGB-encoded values; radiance is linear.
-    if (image->encoding() == ColorEncoding::SRGB)
-        image->toLinear();
-    if (warning) {
-        for (const std::string& line : warnings) {
-            if (!warning->empty())
-                *warning += '\n';
-            *warning += line;
-        }
-    }
-    return Environment(std::move(*image), path);
+    if (warning)
+        *warning = lines;
+    Environment environment(std::move(*image), path);
+    // Remembered only when the file did not change while it was read (the index also refuses a
+    // file too recent to trust); a failure to remember costs the next load its decoding, no more.
+    FileIdentity after;
+    if (identified && fileIdentity(path, &after) && after == before)
+        index.store(path, before, {environment.contentHash(), environment.width(), environment.height(), lines});
+    return environment;
 }
 
 namespace {
@@ -470,7 +597,7 @@ glm::dvec3 Environment::radiance(const glm::dvec3& direction) const
 {
     if (isEmpty())
         return glm::dvec3(0.0);
-    const Image& image = *m_image;
+    const Image& image = this->image();
     const int width = image.width();
     const int height = image.height();
     const glm::dvec2 uv = equirectUvFromDirection(toImageFrame(direction));
@@ -499,7 +626,7 @@ glm::dvec3 Environment::radianceNearest(const glm::dvec3& direction) const
 {
     if (isEmpty())
         return glm::dvec3(0.0);
-    const Image& image = *m_image;
+    const Image& image = this->image();
     const int width = image.width();
     const int height = image.height();
     const glm::dvec2 uv = equirectUvFromDirection(toImageFrame(direction));

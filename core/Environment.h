@@ -40,8 +40,19 @@ public:
     // Procedural, deterministic and anti-aliased (each texel averages 4x4 directions), width x
     // width/2 (width at least 8, made even). Named "studio" / "sky".
     static Environment builtin(Builtin which, int width = 512);
+    // The largest image an environment keeps: a larger file is area-filtered down while it is
+    // read, a band of rows at a time (same aspect), so an 8192x4096 EXR costs 128 MiB, not 512.
+    // Nothing Facet computes from an environment reads more (the cube's source is 4x its width,
+    // EnvironmentSourceTextures the same limit).
+    static constexpr int kMaxWidth = 4096;
+    static constexpr int kMaxHeight = 2048;
+
     // Loads an equirect image (EXR, HDR, ...), sanitising NaN/Inf/negative pixels; an sRGB-encoded
-    // (LDR) image is decoded to linear. Named by its path.
+    // (LDR) image is decoded to linear; larger than kMaxWidth x kMaxHeight, area-filtered to fit.
+    // Named by its path.
+    // A file loaded before, unchanged since (core/EnvironmentIndex.h), is not decoded here: the
+    // environment has its content hash, size and warnings at once and decodes the pixels at the
+    // first image() (lighting found in the IBL disk cache never asks for them).
     // Errors name the file and the problem: "Environment::load: <path>: <reason>". `warning` gets
     // one line per remark: "<path>: replaced N NaN, N Inf, N negative samples", and a note when
     // the image is not 2:1 (allowed, stretched over the sphere).
@@ -66,8 +77,18 @@ public:
     // Takes any equirect image; its pixels are sanitize()d (radiance is finite and non-negative).
     explicit Environment(Image equirect, std::string name = {});
 
-    bool isEmpty() const { return !m_image || m_image->isEmpty(); }
-    const Image& image() const { return *m_image; }
+    bool isEmpty() const { return !m_pixels || m_width <= 0 || m_height <= 0; }
+    // The pixels. For an environment load() found in its index, the first call decodes the file
+    // (thread-safe: copies share the pixels, one decodes, the others wait). Should the file no
+    // longer decode, or decode to other pixels than the index said, the record is forgotten and a
+    // warning names the file; the pixels are then black, or the new ones under the old hash, for
+    // this one environment: the next load() reads the file afresh.
+    const Image& image() const;
+    // The image's size, known without decoding it.
+    int width() const { return m_width; }
+    int height() const { return m_height; }
+    // Whether the pixels are in memory (false until a deferred environment's first image()).
+    bool decoded() const;
     const std::string& name() const { return m_name; }
     // True for uniform(): every direction has the same radiance.
     bool isUniform() const { return m_uniform; }
@@ -94,7 +115,12 @@ public:
     glm::dvec3 radianceNearest(const glm::dvec3& direction) const;
 
 private:
-    std::shared_ptr<const Image> m_image; // shared: copies of an Environment share the pixels
+    class Pixels;
+    Environment(std::string path, std::uint64_t contentHash, int width, int height);
+
+    std::shared_ptr<Pixels> m_pixels; // shared: copies of an Environment share the pixels
+    int m_width = 0;
+    int m_height = 0;
     std::string m_name;
     double m_rotationDegrees = 0.0;
     double m_intensity = 1.0;

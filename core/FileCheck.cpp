@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <system_error>
 
+#include <sys/stat.h>
+
 namespace facet {
 
 FileCheck checkRegularFile(const std::string& path)
@@ -30,6 +32,23 @@ FileCheck checkRegularFile(const std::string& path)
     if (!std::filesystem::is_regular_file(status))
         return {FileKind::Special, "is not a regular file (a device, pipe or socket)"};
     return {};
+}
+
+bool fileIdentity(const std::string& path, FileIdentity* identity)
+{
+    struct stat status {};
+    if (path.empty() || path.find('\0') != std::string::npos || ::stat(path.c_str(), &status) != 0
+        || !S_ISREG(status.st_mode))
+        return false;
+    auto nanoseconds = [](const timespec& time) {
+        return std::int64_t(time.tv_sec) * 1000000000 + std::int64_t(time.tv_nsec);
+    };
+    identity->size = std::int64_t(status.st_size);
+    identity->modifiedNs = nanoseconds(status.st_mtim);
+    identity->changedNs = nanoseconds(status.st_ctim);
+    identity->device = std::uint64_t(status.st_dev);
+    identity->inode = std::uint64_t(status.st_ino);
+    return true;
 }
 
 } // namespace facet

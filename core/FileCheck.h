@@ -30,4 +30,22 @@ struct FileCheck {
 // Does not open the file; follows symbolic links.
 FileCheck checkRegularFile(const std::string& path);
 
+// What tells one version of a file from another without reading it: its size, modification and
+// status-change times (nanoseconds) and where it lives (device, inode), as git's index keeps
+// them. A rewrite changes the times; a file renamed or copied over the path (even with its old
+// modification time kept, `cp -p`) changes the inode and the status-change time, which no
+// program can set back. Symbolic links are followed: the identity is the target's.
+struct FileIdentity {
+    std::int64_t size = 0;
+    std::int64_t modifiedNs = 0;
+    std::int64_t changedNs = 0;
+    std::uint64_t device = 0;
+    std::uint64_t inode = 0;
+
+    bool operator==(const FileIdentity&) const = default;
+};
+
+// The identity of a regular file; false when `path` is not one (checkRegularFile says why).
+bool fileIdentity(const std::string& path, FileIdentity* identity);
+
 } // namespace facet

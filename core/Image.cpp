@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <limits>
 
 #include <QtGlobal>
@@ -143,37 +144,66 @@ struct Bins {
     }
 };
 
-// Adds source row `y` (width texels) into the sums of every output row whose bin holds it.
-// `firstRow`: the first output row whose bin may still hold it (advanced here).
-void accumulateRow(const glm::vec4* row, int y, const Bins& columns, const Bins& rows, int* firstRow,
-    std::vector<glm::dvec4>& sums)
-{
-    const int outputWidth = int(columns.begin.size());
-    const int outputHeight = int(rows.begin.size());
-    while (*firstRow < outputHeight && rows.end[std::size_t(*firstRow)] <= y)
-        ++*firstRow;
-    for (int j = *firstRow; j < outputHeight && rows.begin[std::size_t(j)] <= y; ++j)
-        for (int x = 0; x < outputWidth; ++x) {
-            glm::dvec4 sum(0.0);
-            for (int sx = columns.begin[std::size_t(x)]; sx < columns.end[std::size_t(x)]; ++sx)
-                sum += glm::dvec4(row[sx]);
-            sums[std::size_t(j) * std::size_t(outputWidth) + std::size_t(x)] += sum;
-        }
-}
+// The box filter fed a source row at a time, top to bottom: only the output rows whose bins hold
+// the current source row are being summed (one when shrinking), so filtering an 8K image into a
+// 4K one holds one row of sums (64 KiB), not the whole output's (256 MiB of doubles).
+class BoxFilter {
+public:
+    BoxFilter(int inputWidth, int inputHeight, int outputWidth, int outputHeight)
+        : m_columns(inputWidth, outputWidth)
+        , m_rows(inputHeight, outputHeight)
+        , m_out(outputWidth, outputHeight, glm::vec4(0.0f))
+    {
+    }
 
-Image averagesOf(const std::vector<glm::dvec4>& sums, const Bins& columns, const Bins& rows)
-{
-    const int width = int(columns.begin.size());
-    const int height = int(rows.begin.size());
-    Image out(width, height, glm::vec4(0.0f));
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const double count = double(columns.end[std::size_t(x)] - columns.begin[std::size_t(x)])
-                * double(rows.end[std::size_t(y)] - rows.begin[std::size_t(y)]);
-            out.at(x, y) = glm::vec4(sums[std::size_t(y) * std::size_t(width) + std::size_t(x)] / count);
+    // Source row `y` (the input's width of texels); rows come in order.
+    void addRow(const glm::vec4* row, int y)
+    {
+        flushRowsEndingBy(y);
+        const int outputWidth = m_out.width();
+        for (int j = m_next; j < m_out.height() && m_rows.begin[std::size_t(j)] <= y; ++j) {
+            while (int(m_pending.size()) <= j - m_next)
+                m_pending.emplace_back(std::size_t(outputWidth), glm::dvec4(0.0));
+            std::vector<glm::dvec4>& sums = m_pending[std::size_t(j - m_next)];
+            for (int x = 0; x < outputWidth; ++x) {
+                glm::dvec4 sum(0.0);
+                for (int sx = m_columns.begin[std::size_t(x)]; sx < m_columns.end[std::size_t(x)]; ++sx)
+                    sum += glm::dvec4(row[sx]);
+                sums[std::size_t(x)] += sum;
+            }
         }
-    return out;
-}
+    }
+
+    Image finish()
+    {
+        flushRowsEndingBy(std::numeric_limits<int>::max());
+        return std::move(m_out);
+    }
+
+private:
+    void flushRowsEndingBy(int y)
+    {
+        while (m_next < m_out.height() && m_rows.end[std::size_t(m_next)] <= y) {
+            if (!m_pending.empty()) {
+                const double rowCount = double(m_rows.end[std::size_t(m_next)] - m_rows.begin[std::size_t(m_next)]);
+                const std::vector<glm::dvec4>& sums = m_pending.front();
+                for (int x = 0; x < m_out.width(); ++x) {
+                    const double count
+                        = double(m_columns.end[std::size_t(x)] - m_columns.begin[std::size_t(x)]) * rowCount;
+                    m_out.at(x, m_next) = glm::vec4(sums[std::size_t(x)] / count);
+                }
+                m_pending.pop_front();
+            }
+            ++m_next;
+        }
+    }
+
+    Bins m_columns;
+    Bins m_rows;
+    Image m_out;
+    int m_next = 0; // the first output row not finished
+    std::deque<std::vector<glm::dvec4>> m_pending; // sums of output rows m_next, m_next + 1, ...
+};
 
 } // namespace
 
@@ -181,22 +211,21 @@ Image Image::boxFiltered(int width, int height) const
 {
     width = std::max(width, 1);
     height = std::max(height, 1);
-    const Bins columns(m_width, width);
-    const Bins rows(m_height, height);
-    std::vector<glm::dvec4> sums(std::size_t(width) * std::size_t(height), glm::dvec4(0.0));
-    int firstRow = 0;
+    BoxFilter filter(m_width, m_height, width, height);
     for (int y = 0; y < m_height; ++y)
-        accumulateRow(&at(0, y), y, columns, rows, &firstRow, sums);
-    Image out = averagesOf(sums, columns, rows);
+        filter.addRow(&at(0, y), y);
+    Image out = filter.finish();
     out.m_encoding = m_encoding;
     return out;
 }
 
 std::optional<Image> Image::loadBoxFiltered(const std::string& path, bool linear,
     const std::function<std::pair<int, int>(int width, int height)>& sizeFor, std::string* error,
-    int* sourceWidth, int* sourceHeight)
+    int* sourceWidth, int* sourceHeight, ImageLoadStats* stats)
 {
     constexpr const char* kFunction = "Image::loadBoxFiltered";
+    if (stats)
+        *stats = {};
     try {
         std::optional<ImageReader> reader = ImageReader::open(path, kFunction, error);
         if (!reader || !reader->checkHeader(kFunction, error))
@@ -216,9 +245,7 @@ std::optional<Image> Image::loadBoxFiltered(const std::string& path, bool linear
         if (sourceHeight)
             *sourceHeight = spec.height;
         const auto [width, height] = sizeFor(spec.width, spec.height);
-        const Bins columns(spec.width, std::max(width, 1));
-        const Bins rows(spec.height, std::max(height, 1));
-        std::vector<glm::dvec4> sums(columns.begin.size() * rows.begin.size(), glm::dvec4(0.0));
+        BoxFilter filter(spec.width, spec.height, std::max(width, 1), std::max(height, 1));
 
         // Bands of about a million texels (16 MiB as float RGBA), whatever the image's size.
         const int bandRows
@@ -228,7 +255,6 @@ std::optional<Image> Image::loadBoxFiltered(const std::string& path, bool linear
         const int readChannels = std::min(spec.nchannels, 4);
         const OIIO::stride_t xstride = sizeof(glm::vec4);
         const OIIO::stride_t ystride = xstride * OIIO::stride_t(spec.width);
-        int firstRow = 0;
         for (int start = 0; start < spec.height; start += bandRows) {
             const int count = std::min(bandRows, spec.height - start);
             if (!input->read_scanlines(0, 0, start, start + count, 0, 0, readChannels, OIIO::TypeDesc::FLOAT,
@@ -239,15 +265,20 @@ std::optional<Image> Image::loadBoxFiltered(const std::string& path, bool linear
                 return std::nullopt;
             }
             fillMissingChannels(band.m_pixels, spec.nchannels, reader->twoColourChannels());
-            band.sanitize();
+            const ImageLoadStats replaced = band.sanitize();
+            if (stats) {
+                stats->nanCount += replaced.nanCount;
+                stats->infCount += replaced.infCount;
+                stats->negativeCount += replaced.negativeCount;
+            }
             if (linear && band.m_encoding == ColorEncoding::SRGB)
                 band.toLinear(); // (sets the band's encoding: the next bands are read as linear)
             for (int r = 0; r < count; ++r)
-                accumulateRow(&band.at(0, r), start + r, columns, rows, &firstRow, sums);
+                filter.addRow(&band.at(0, r), start + r);
             band.m_encoding = reader->encoding();
         }
         input->close();
-        Image out = averagesOf(sums, columns, rows);
+        Image out = filter.finish();
         out.m_encoding = linear ? ColorEncoding::Linear : reader->encoding();
         out.m_sourceChannels = spec.nchannels;
         out.m_colorSpaceName = reader->colorSpaceName();

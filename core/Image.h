@@ -83,10 +83,12 @@ public:
     // image: a thumbnail of an 8K HDRI costs a band, not 512 MiB of floats. `sizeFor(width,
     // height)` gives the output size from the file's; the samples are load()'s (sanitised), and
     // sRGB-encoded files are decoded to linear first when `linear` (as Environment::load does).
-    // *sourceWidth / *sourceHeight get the file's size. Errors as load()'s.
+    // *sourceWidth / *sourceHeight get the file's size, `stats` what sanitisation replaced.
+    // Memory: the output, one band of about a million source texels and a row of sums. Errors as
+    // load()'s.
     static std::optional<Image> loadBoxFiltered(const std::string& path, bool linear,
         const std::function<std::pair<int, int>(int width, int height)>& sizeFor, std::string* error,
-        int* sourceWidth = nullptr, int* sourceHeight = nullptr);
+        int* sourceWidth = nullptr, int* sourceHeight = nullptr, ImageLoadStats* stats = nullptr);
     // The same filter over an image in memory.
     Image boxFiltered(int width, int height) const;
 

@@ -374,7 +374,7 @@ bool IblPrecompute::holds(const Environment& environment, const IblSettings& req
 {
     if (environment.isEmpty())
         return false;
-    const IblSettings settings = requested.forImage(environment.image().width());
+    const IblSettings settings = requested.forImage(environment.width());
     const std::uint64_t key = IblDiskCache::key(environment.contentHash(), settings.hash());
     return std::any_of(
         m_memory.begin(), m_memory.end(), [key](const auto& entry) { return entry.key == key; });
@@ -446,7 +446,7 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(
             *error = "IblPrecompute::prepare: the environment has no image";
         return nullptr;
     }
-    const IblSettings settings = requested.forImage(environment.image().width());
+    const IblSettings settings = requested.forImage(environment.width());
     const std::uint64_t key = IblDiskCache::key(environment.contentHash(), settings.hash());
 
     // 1. Memory.

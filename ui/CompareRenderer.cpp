@@ -88,7 +88,7 @@ CompareRenderer::CellKey CompareRenderer::keyOf(const CompareCellDraw& cell, dou
     CellKey key;
     key.project = cell.project;
     if (!cell.assets.environment.isEmpty())
-        key.environmentPixels = &cell.assets.environment.image();
+        key.environmentHash = cell.assets.environment.contentHash();
     key.environmentRotation = cell.assets.environment.rotationDegrees();
     key.environmentIntensity = cell.assets.environment.intensity();
     for (const auto& material : cell.assets.maps)

@@ -151,7 +151,7 @@ private:
     // What a cell was drawn from: equal keys, equal pixels.
     struct CellKey {
         Project project;
-        const void* environmentPixels = nullptr;
+        std::uint64_t environmentHash = 0; // Environment::contentHash(), 0 for none
         double environmentRotation = 0.0;
         double environmentIntensity = 1.0;
         std::vector<const void*> maps;

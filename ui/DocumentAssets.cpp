@@ -49,8 +49,12 @@ std::shared_ptr<const Environment> DocumentAssets::environment(const std::string
     const Entry* entry = lookup(Kind::Environment, spec, !Environment::namesFile(spec), [spec] {
         Entry loaded;
         if (std::optional<Environment> environment
-            = Environment::fromSpec(spec, &loaded.problem, &loaded.warning))
+            = Environment::fromSpec(spec, &loaded.problem, &loaded.warning)) {
+            // Decoded here, on the worker: an environment found in its index decodes at its first
+            // image(), and the view's precompute (GUI thread) asks for it on a disk-cache miss.
+            environment->image();
             loaded.environment = std::make_shared<const Environment>(std::move(*environment));
+        }
         else if (loaded.problem.empty())
             loaded.problem = "Environment::fromSpec: " + spec + ": could not be loaded";
         return loaded;
