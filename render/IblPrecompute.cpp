@@ -3,6 +3,7 @@
 #include "render/IblPrecompute.h"
 
 #include "core/IblDiskCache.h"
+#include "core/Prefilter.h"
 #include "core/SphericalHarmonics.h"
 #include "render/GLDebug.h"
 #include "render/ShaderProgram.h"
@@ -136,6 +137,57 @@ std::shared_ptr<GLTexture> makeCubemap(
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
         glTexParameteri(GL_TEXTURE_CUBE_MAP, wrap, GL_CLAMP_TO_EDGE);
+    return texture;
+}
+
+// Solid angle of the part of a cube face (at distance 1) from (0, 0) to (x, y) [Driscoll,
+// "Cubemap texel solid angle"]; a texel's is the inclusion-exclusion of its four corners.
+double cornerArea(double x, double y)
+{
+    return std::atan2(x * y, std::sqrt(x * x + y * y + 1.0));
+}
+
+double cubeTexelSolidAngle(int x, int y, int size)
+{
+    const double step = 2.0 / double(size);
+    const double x0 = x * step - 1.0;
+    const double y0 = y * step - 1.0;
+    return cornerArea(x0, y0) - cornerArea(x0, y0 + step) - cornerArea(x0 + step, y0)
+        + cornerArea(x0 + step, y0 + step);
+}
+
+// The irradiance pass's table (ibl_irradiance.frag): for every texel t of `level` (size x size a
+// face) of `cube`, its centre's direction w_t and L_t Omega_t, as
+// RGBA32F rows of 1024 entries (direction row, then radiance row). Made once per environment:
+// 6 s^2 directions, solid angles and a read-back of a few KiB instead of that many per output texel.
+GLTexture irradianceTexelTable(const GLTexture& cube, int size, int level)
+{
+    constexpr int kTableWidth = 1024; // as ibl_irradiance.frag
+    const int count = 6 * size * size;
+    const int rows = 2 * ((count + kTableWidth - 1) / kTableWidth);
+    std::vector<glm::vec4> table(std::size_t(kTableWidth) * std::size_t(rows), glm::vec4(0.0f));
+    for (int f = 0; f < 6; ++f) {
+        const std::vector<float> face = readTextureLevel(cube, f, level, nullptr, nullptr);
+        if (face.size() != std::size_t(size) * std::size_t(size) * 4)
+            return GLTexture {};
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const int i = (f * size + y) * size + x;
+                const std::size_t at
+                    = std::size_t(2 * (i / kTableWidth)) * kTableWidth + std::size_t(i % kTableWidth);
+                const glm::dvec3 w = cubemapDirection(f, (x + 0.5) / size, (y + 0.5) / size);
+                table[at] = glm::vec4(glm::vec3(w), 0.0f);
+                const float* texel = &face[std::size_t(y * size + x) * 4];
+                table[at + kTableWidth] = glm::vec4(
+                    glm::vec3(texel[0], texel[1], texel[2]) * float(cubeTexelSolidAngle(x, y, size)), 0.0f);
+            }
+    }
+    GLTexture texture = GLTexture::create(GL_TEXTURE_2D);
+    glBindTexture(GL_TEXTURE_2D, texture.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kTableWidth, rows, 0, GL_RGBA, GL_FLOAT, table.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     return texture;
 }
 
@@ -618,15 +670,30 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(
             && 6LL * (settings.cubeSize >> sourceLevel) * (settings.cubeSize >> sourceLevel)
                 > settings.irradianceSamples)
             ++sourceLevel;
+        const GLTexture texels
+            = irradianceTexelTable(*cube, std::max(settings.cubeSize >> sourceLevel, 1), sourceLevel);
+        if (!texels.id()) {
+            if (error)
+                *error = "IblPrecompute::prepare: " + environment.name()
+                    + ": the environment cube could not be read back for the irradiance";
+            return nullptr;
+        }
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, texels.id());
+        glActiveTexture(GL_TEXTURE0);
         m_programs->irradiance.use();
-        m_programs->irradiance.setInt("uSourceSize", std::max(settings.cubeSize >> sourceLevel, 1));
-        m_programs->irradiance.setFloat("uSourceLevel", float(sourceLevel));
+        m_programs->irradiance.setInt("uTexels", 1);
+        m_programs->irradiance.setInt(
+            "uCount", 6 * (settings.cubeSize >> sourceLevel) * (settings.cubeSize >> sourceLevel));
         for (int face = 0; face < 6; ++face) {
             m_programs->irradiance.setInt("uFace", face);
             if (!drawInto(*irradiance, face, 0, settings.irradianceSize, error))
                 return nullptr;
         }
         glFinish();
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glActiveTexture(GL_TEXTURE0);
         stats->msIrradiance = msSince(passStart);
         ++stats->passesRun;
         result->irradiance = irradiance;

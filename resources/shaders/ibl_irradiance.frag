@@ -2,50 +2,36 @@
 //   E(n) = integral over the sphere of L(w) max(0, n.w) dw   (radiance x sr; NOT divided by pi)
 // as a quadrature over EVERY texel t of one small level of the environment cubemap:
 //   E(n) ~= sum_t L_t max(0, n.w_t) Omega_t
-// with w_t the texel centre's direction and Omega_t its exact solid angle (cubeTexelSolidAngle).
-// The level (uSourceLevel, uSourceSize texels a side) is a box-filtered average of the
-// environment, so every bit of light is counted once and nothing from behind the surface leaks
-// in except through texels that straddle the horizon. (Filtered importance sampling of the
-// cosine lobe was tried first: its wide footprints near the horizon read light from behind,
-// +360% on the dark side of studio.exr; docs/ibl.md.)
+// with w_t the texel centre's direction and Omega_t its exact solid angle. The level is a
+// box-filtered average of the environment, so every bit of light is counted once and nothing from
+// behind the surface leaks in except through texels that straddle the horizon. (Filtered
+// importance sampling of the cosine lobe was tried first: its wide footprints near the horizon
+// read light from behind, +360% on the dark side of studio.exr; docs/ibl.md.)
+//
+// The texels come as a table made once per environment on the CPU (IblPrecompute, from the level
+// read back): entry i's direction w_t in row 2 (i / kTableWidth), column i % kTableWidth, and its
+// L_t Omega_t in the row below. Computing w_t, Omega_t (four atan) and a cube lookup for every
+// texel of every output texel cost llvmpipe 6144 x 384 of each at the default preset.
 #include "common_math.glsl"
 #include "common_cubemap.glsl"
 
-uniform samplerCube uEnvironment;
+const int kTableWidth = 1024;
+
+uniform sampler2D uTexels;
+uniform int uCount;
 uniform int uFace;
-uniform int uSourceSize;
-uniform float uSourceLevel;
 in vec2 vUv;
 out vec4 fragColor;
-
-// Solid angle subtended by the part of a face (at distance 1) from (0, 0) to (x, y):
-// atan(x y / sqrt(x^2 + y^2 + 1)) [e.g. Driscoll, "Cubemap texel solid angle"]; a texel's is the
-// inclusion-exclusion of its four corners.
-float cornerArea(float x, float y) { return atan(x * y, sqrt(x * x + y * y + 1.0)); }
-float cubeTexelSolidAngle(int x, int y, int size)
-{
-    float inv = 2.0 / float(size);
-    float x0 = float(x) * inv - 1.0;
-    float y0 = float(y) * inv - 1.0;
-    float x1 = x0 + inv;
-    float y1 = y0 + inv;
-    return cornerArea(x0, y0) - cornerArea(x0, y1) - cornerArea(x1, y0) + cornerArea(x1, y1);
-}
 
 void main()
 {
     vec3 n = cubemapDirection(uFace, vUv);
     vec3 sum = vec3(0.0);
-    for (int face = 0; face < 6; ++face) {
-        for (int y = 0; y < uSourceSize; ++y) {
-            for (int x = 0; x < uSourceSize; ++x) {
-                vec3 w = cubemapDirection(face, (vec2(x, y) + 0.5) / float(uSourceSize));
-                float cosine = dot(n, w);
-                if (cosine <= 0.0)
-                    continue;
-                sum += textureLod(uEnvironment, w, uSourceLevel).rgb * (cosine * cubeTexelSolidAngle(x, y, uSourceSize));
-            }
-        }
+    for (int i = 0; i < uCount; ++i) {
+        ivec2 at = ivec2(i % kTableWidth, 2 * (i / kTableWidth));
+        float cosine = dot(n, texelFetch(uTexels, at, 0).xyz);
+        if (cosine > 0.0)
+            sum += texelFetch(uTexels, at + ivec2(0, 1), 0).rgb * cosine;
     }
     fragColor = vec4(sum, 1.0);
 }
