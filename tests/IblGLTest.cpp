@@ -120,7 +120,6 @@ private Q_SLOTS:
     void diskCacheReproducesTexels();
     void corruptDiskCacheIsRecomputed();
     void wideMapIsAreaFilteredForTheCube();
-    void presetTimings();
 
 private:
     std::optional<HeadlessGLContext> m_context;
@@ -825,29 +824,6 @@ void IblGLTest::corruptDiskCacheIsRecomputed()
     IblPrecompute again(dir.path());
     QVERIFY(again.prepare(env, smallSettings(), &stats, &error));
     QCOMPARE(stats.passesRun, 0);
-}
-
-void IblGLTest::presetTimings()
-{
-    // Not a benchmark (tests/bench is): one run per preset on the built-in studio at 512x256, so
-    // docs/ibl.md's numbers can be reproduced; "high" only with FACET_IBL_TIME_HIGH=1 (slow here).
-    const Environment env = Environment::builtin(Environment::Builtin::Studio, 512);
-    std::vector<std::string> names = {"draft", "default"};
-    if (qEnvironmentVariableIntValue("FACET_IBL_TIME_HIGH"))
-        names.push_back("high");
-    for (const std::string& name : names) {
-        IblPrecompute ibl(QString(), false);
-        const std::optional<IblSettings> settings = IblSettings::preset(name);
-        QVERIFY(settings);
-        IblStats stats;
-        std::string error;
-        QVERIFY2(ibl.prepare(env, *settings, &stats, &error), error.c_str());
-        QVERIFY2(ibl.dfgTable(*settings, Visibility::SmithGGXCorrelated, &stats, &error), error.c_str());
-        qInfo("preset %-7s: equirect->cube %.1f ms, prefilter %.1f ms, irradiance %.1f ms, DFG %.1f ms, "
-              "SH9 %.1f ms, total %.1f ms",
-            name.c_str(), stats.msEquirectToCube, stats.msPrefilter, stats.msIrradiance, stats.msDfg,
-            stats.msSh, stats.msTotal);
-    }
 }
 
 QTEST_GUILESS_MAIN(IblGLTest)

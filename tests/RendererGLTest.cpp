@@ -191,7 +191,6 @@ private Q_SLOTS:
     void skippedWorkIsCounted();
     void baseColorDebugView();
     void everyFeatureAndDebugViewCompiles();
-    void timings();
 
 private:
     Image renderScene(
@@ -696,32 +695,6 @@ void RendererGLTest::everyFeatureAndDebugViewCompiles()
     const Image image = renderScene(scene);
     for (const SpherePixel& p : interiorPixels(kSize))
         QVERIFY(std::abs(image.at(p.x, p.y).x - 1.0f) < 1e-4f);
-}
-
-void RendererGLTest::timings()
-{
-    // Not a benchmark: prints what one frame costs here, for docs/rendering.md.
-    TinyIbl ibl {glm::vec3(1.0f)};
-    RenderScene scene = referenceScene(ibl);
-    scene.lights = {Light::defaultDirectional(), Light::defaultDirectional()};
-    std::string error;
-    for (const auto& [w, h, samples] : {std::tuple {640, 360, 1}, std::tuple {640, 360, 4},
-             std::tuple {1280, 720, 1}, std::tuple {1280, 720, 4}}) {
-        scene.view.msaaSamples = samples;
-        std::optional<Framebuffer> hdr = Framebuffer::create(w, h, FramebufferFormat::RGBA16F, &error);
-        std::optional<Framebuffer> display = Framebuffer::create(w, h, FramebufferFormat::RGBA16F, &error);
-        QVERIFY2(hdr && display, error.c_str());
-        m_renderer->setTimingEnabled(true);
-        for (int i = 0; i < 2; ++i) { // the first frame compiles; report the second
-            QVERIFY2(m_renderer->render(scene, *hdr, &error), error.c_str());
-            QVERIFY2(m_renderer->toneMap(*hdr, *display, scene.view, &error), error.c_str());
-        }
-        const RenderStats& s = m_renderer->lastFrameStats();
-        qInfo("%dx%d MSAA %dx, 2 lights: background %.1f ms, surface %.1f ms, resolve %.1f ms, tone map %.1f "
-              "ms",
-            w, h, samples, s.backgroundMs, s.surfaceMs, s.resolveMs, s.toneMapMs);
-        m_renderer->setTimingEnabled(false);
-    }
 }
 
 QTEST_GUILESS_MAIN(RendererGLTest)
