@@ -106,18 +106,10 @@ long long fileSizeOf(const std::string& path)
 // The header is a list of (name, type, 32-bit size, value) ending with an empty name (one list
 // per part in a multi-part file); a size beyond what the file holds is refused here, before
 // OpenImageIO sees the file. "" when the file is not an EXR or its headers are sound.
-std::string exrHeaderProblem(const std::string& path, long long fileSize)
+// `head`: the file's first bytes (containerProblem's), which begin with the EXR magic number.
+std::string exrHeaderProblem(const std::vector<unsigned char>& head, long long fileSize)
 {
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (!file)
-        return {};
-    // Headers are small (attributes of bytes to kilobytes); 1 MiB covers any real one.
-    std::vector<unsigned char> head(
-        std::size_t(std::min<long long>(std::max<long long>(fileSize, 0), 1 << 20)));
-    const std::size_t got = std::fread(head.data(), 1, head.size(), file);
-    std::fclose(file);
-    head.resize(got);
-    if (got < 8 || head[0] != 0x76 || head[1] != 0x2f || head[2] != 0x31 || head[3] != 0x01)
+    if (head.size() < 8)
         return {};
     const bool multipart = (head[5] & 0x10) != 0; // version flags, bit 12
     std::size_t at = 8;
@@ -163,15 +155,12 @@ std::string exrHeaderProblem(const std::string& path, long long fileSize)
 // chunk claims 4 GiB took 5-11 s to fail. The chunks (32-bit big-endian length, type, data, CRC)
 // are walked by their headers alone (a few reads for a real file), and one longer than the rest
 // of the file is refused. "" when the file is not a PNG or its chunks fit.
-std::string pngChunkProblem(const std::string& path, long long fileSize)
+// `file`: open on a file that begins with the PNG signature (chunks beyond containerProblem's head
+// are reached by seeking).
+std::string pngChunkProblem(std::FILE* file, long long fileSize)
 {
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (!file)
-        return {};
-    unsigned char header[8];
-    static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     std::string problem;
-    if (std::fread(header, 1, 8, file) == 8 && std::memcmp(header, kSignature, 8) == 0) {
+    {
         long long at = 8;
         for (int chunk = 0; chunk < (1 << 20) && at + 12 <= fileSize; ++chunk) {
             unsigned char head[8];
@@ -190,7 +179,6 @@ std::string pngChunkProblem(const std::string& path, long long fileSize)
             at += 12 + length;
         }
     }
-    std::fclose(file);
     return problem;
 }
 
@@ -199,16 +187,10 @@ std::string pngChunkProblem(const std::string& path, long long fileSize)
 // buffer (AddressSanitizer: heap-buffer-overflow in decode_iptc_iim, found by FuzzTest). The APP13
 // segments are walked here, resource by resource and record by record, and one that claims more
 // than its segment holds is refused. "" when the file is not a JPEG or its IPTC data is sound.
-std::string jpegIptcProblem(const std::string& path, long long fileSize)
+// `bytes`: the file's first bytes (containerProblem's), which begin with a JPEG's SOI marker.
+std::string jpegIptcProblem(const std::vector<unsigned char>& bytes)
 {
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (!file)
-        return {};
-    std::vector<unsigned char> bytes(
-        std::size_t(std::min<long long>(std::max<long long>(fileSize, 0), 1 << 20)));
-    bytes.resize(std::fread(bytes.data(), 1, bytes.size(), file));
-    std::fclose(file);
-    if (bytes.size() < 4 || bytes[0] != 0xff || bytes[1] != 0xd8)
+    if (bytes.size() < 4)
         return {};
     const auto u16 = [&bytes](std::size_t at) { return std::size_t(bytes[at]) << 8 | bytes[at + 1]; };
     const auto u32 = [&bytes](std::size_t at) {
@@ -256,6 +238,32 @@ std::string jpegIptcProblem(const std::string& path, long long fileSize)
     return {};
 }
 
+// Container headers whose sizes OpenImageIO's readers believe before the file's (above): the
+// file's first MiB is read once and the check of its format, told by its signature, runs on it.
+// "" for a sound file, a file of another format, or one that cannot be opened (OpenImageIO's
+// own message then says why).
+std::string containerProblem(const std::string& path, long long fileSize)
+{
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file)
+        return {};
+    // EXR headers and JPEG metadata segments are small: 1 MiB covers any real one.
+    std::vector<unsigned char> head(
+        std::size_t(std::min<long long>(std::max<long long>(fileSize, 0), 1 << 20)));
+    head.resize(std::fread(head.data(), 1, head.size(), file));
+    static const unsigned char kExr[4] = {0x76, 0x2f, 0x31, 0x01};
+    static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    std::string problem;
+    if (head.size() >= 4 && std::memcmp(head.data(), kExr, 4) == 0)
+        problem = exrHeaderProblem(head, fileSize);
+    else if (head.size() >= 8 && std::memcmp(head.data(), kPng, 8) == 0)
+        problem = pngChunkProblem(file, fileSize);
+    else if (head.size() >= 2 && head[0] == 0xff && head[1] == 0xd8)
+        problem = jpegIptcProblem(head);
+    std::fclose(file);
+    return problem;
+}
+
 } // namespace
 
 std::optional<ImageReader> ImageReader::open(
@@ -297,13 +305,8 @@ std::optional<ImageReader> ImageReader::open(
     }
     if (!reader.m_embedded) {
         // Container headers whose sizes OpenImageIO's readers believe before the file's.
-        const long long size = fileSizeOf(path);
-        std::string problem = exrHeaderProblem(path, size);
-        if (problem.empty())
-            problem = pngChunkProblem(path, size);
-        if (problem.empty())
-            problem = jpegIptcProblem(path, size);
-        if (!problem.empty()) {
+        reader.m_fileSize = fileSizeOf(path);
+        if (const std::string problem = containerProblem(path, reader.m_fileSize); !problem.empty()) {
             setImageError(error, function, path, problem);
             return std::nullopt;
         }
@@ -355,7 +358,7 @@ bool ImageReader::checkSizeAgainstFile(const char* function, std::string* error)
     // file's size belongs to a cut-short or crafted file, and reading it would allocate for the
     // claim first (a 95-byte PNG claiming 32768x8192 took 4 GiB and half a minute to fail).
     const double pixels = double(header.width) * double(header.height);
-    const double bytes = m_embedded ? double(m_embedded->size()) : double(fileSizeOf(m_path));
+    const double bytes = m_embedded ? double(m_embedded->size()) : double(m_fileSize);
     if (bytes > 0 && pixels > bytes * kMaxPixelsPerByte) {
         setImageError(error, function, m_path,
             "its header claims " + std::to_string(header.width) + "x" + std::to_string(header.height)

@@ -52,6 +52,7 @@ private:
     ImageReader() = default;
 
     std::string m_path;
+    long long m_fileSize = -1; // of the file at m_path (-1: embedded, or unknown)
     // The memory an embedded image is decoded from; must outlive m_input.
     std::unique_ptr<std::vector<unsigned char>> m_embedded;
     std::unique_ptr<OIIO::Filesystem::IOMemReader> m_memory;
