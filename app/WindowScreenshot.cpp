@@ -27,15 +27,17 @@ WindowScreenshot::WindowScreenshot(
 {
     // The grab goes after the first complete frame has reached the window, from the event loop,
     // so that the layout has settled and the viewport holds a finished picture. Previews drawn
-    // while maps decode and upload (ViewportFrameStats::loadingMaps) are not it, nor, for a
-    // project lit by fis or reference, the frames before its refinement is done.
+    // while maps decode and upload (ViewportFrameStats::loadingMaps) are not it, nor frames
+    // drawn while the lighting worker makes the environment's lighting (lightingPending), nor,
+    // for a project lit by fis or reference, the frames before its refinement is done.
     connect(viewport, &QOpenGLWidget::frameSwapped, this, [this, viewport] {
         const ViewportFrameStats& frame = viewport->lastFrameStats();
         const bool refined = frame.refineMethod == IblMethod::SplitSum || frame.refinement.done();
         if (!refined)
             m_timeout.start(kFirstFrameTimeoutMs); // progress: a refinement may take minutes
         if (!m_done && !frame.reduced && !frame.loadingMaps && frame.mapsHeldBack == 0 && refined
-            && viewport->sceneController() && viewport->sceneController()->pendingAssetLoads() == 0)
+            && !frame.lightingPending && viewport->sceneController()
+            && viewport->sceneController()->pendingAssetLoads() == 0)
             QTimer::singleShot(0, this, &WindowScreenshot::save);
     });
     // A project saved in a Compare mode opens in it, and the single viewport, hidden, draws
@@ -46,14 +48,13 @@ WindowScreenshot::WindowScreenshot(
             const CompareFrameStats& frame = compare->lastFrameStats();
             if (compare->isRefining())
                 m_timeout.start(kFirstFrameTimeoutMs); // progress, as the single view's refinement
-            if (!m_done && compare->isVisible() && frame.frameNumber > 0 && !frame.reduced && !compare->isLoading()
-                && !compare->isRefining())
+            if (!m_done && compare->isVisible() && frame.frameNumber > 0 && !frame.reduced
+                && !compare->isLoading() && !compare->isRefining())
                 QTimer::singleShot(0, this, &WindowScreenshot::save);
         });
     m_timeout.setSingleShot(true);
     connect(&m_timeout, &QTimer::timeout, this, [this] {
-        fail(QStringLiteral("the view drew no complete frame within %1 s")
-                 .arg(kFirstFrameTimeoutMs / 1000));
+        fail(QStringLiteral("the view drew no complete frame within %1 s").arg(kFirstFrameTimeoutMs / 1000));
     });
     m_timeout.start(kFirstFrameTimeoutMs);
 }

@@ -482,8 +482,28 @@ std::shared_ptr<const EnvironmentSourceTextures> IblPrecompute::source(
     return made;
 }
 
-std::shared_ptr<const IblTextures> IblPrecompute::prepare(
-    const Environment& environment, const IblSettings& requested, IblStats* statsOut, std::string* error)
+std::uint64_t IblPrecompute::cacheKey(const Environment& environment, const IblSettings& requested)
+{
+    return IblDiskCache::key(environment.contentHash(), requested.forImage(environment.width()).hash());
+}
+
+void IblPrecompute::adopt(std::uint64_t key, std::shared_ptr<const IblTextures> textures)
+{
+    if (!textures)
+        return;
+    for (auto it = m_memory.begin(); it != m_memory.end(); ++it) {
+        if (it->key == key) {
+            m_memory.splice(m_memory.begin(), m_memory, it);
+            m_memory.front().lastUse = ++m_useClock;
+            return;
+        }
+    }
+    m_memory.push_front({key, std::move(textures), ++m_useClock});
+    trimMemoryCache();
+}
+
+std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& environment,
+    const IblSettings& requested, IblStats* statsOut, std::string* error, const IblProgress& progress)
 {
     const Clock::time_point start = Clock::now();
     IblStats localStats;
@@ -499,7 +519,7 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(
         return nullptr;
     }
     const IblSettings settings = requested.forImage(environment.width());
-    const std::uint64_t key = IblDiskCache::key(environment.contentHash(), settings.hash());
+    const std::uint64_t key = cacheKey(environment, requested);
 
     // 1. Memory.
     for (auto it = m_memory.begin(); it != m_memory.end(); ++it) {
@@ -510,6 +530,39 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(
             return finish(m_memory.front().value);
         }
     }
+
+    // Progress: the passes' faces weighted by their texels times the samples each reads (the
+    // cube pass and the prefilter's copy level as one sample, a prefiltered level as its
+    // samples, the irradiance as its table), measured against the default preset's pass times
+    // closely enough for a progress bar. `advance` adds a share and asks whether to go on.
+    double workDone = 0.0;
+    double workTotal = 0.0;
+    const auto faceWork = [&](int size, double samples) { return double(size) * double(size) * samples; };
+    const auto irradianceWork
+        = [&] { return faceWork(settings.irradianceSize, 0.25 * settings.irradianceSamples); };
+    if (progress) {
+        workTotal += 6.0 * faceWork(settings.cubeSize, 4.0);
+        for (int level = 0; level < settings.prefilterMipLevels; ++level)
+            workTotal += 6.0
+                * faceWork(std::max(settings.prefilterSize >> level, 1),
+                    level == 0 ? 1.0 : double(settings.prefilterSamples));
+        workTotal += 6.0 * irradianceWork();
+    }
+    bool cancelled = false;
+    const auto advance = [&](double work, bool finishGpu) {
+        if (!progress || cancelled)
+            return !cancelled;
+        if (finishGpu)
+            glFinish();
+        workDone += work;
+        cancelled = !progress(workTotal > 0.0 ? std::min(workDone / workTotal, 1.0) : 1.0);
+        if (cancelled) {
+            stats->cancelled = true;
+            if (error)
+                *error = "IblPrecompute::prepare: cancelled";
+        }
+        return !cancelled;
+    };
 
     GLStateGuard guard;
     const PassObjects objects;
@@ -572,6 +625,8 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(
     }
 
     if (!fromDisk) {
+        if (!advance(0.0, false))
+            return nullptr;
         // The passes' shaders are compiled only when a pass runs: a cache hit compiles nothing.
         if (!ensurePrograms(error))
             return nullptr;
@@ -622,7 +677,8 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(
         glBindTexture(GL_TEXTURE_2D, equirectId);
         for (int face = 0; face < 6; ++face) {
             m_programs->equirectToCube.setInt("uFace", face);
-            if (!drawInto(*cube, face, 0, settings.cubeSize, error))
+            if (!drawInto(*cube, face, 0, settings.cubeSize, error)
+                || !advance(faceWork(settings.cubeSize, 4.0), true))
                 return nullptr;
         }
         glBindTexture(GL_TEXTURE_CUBE_MAP, cube->id());
@@ -650,7 +706,8 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(
                 float(std::max(0.0, std::log2(double(settings.cubeSize) / double(settings.prefilterSize)))));
             for (int face = 0; face < 6; ++face) {
                 program.setInt("uFace", face);
-                if (!drawInto(*prefiltered, face, level, size, error))
+                if (!drawInto(*prefiltered, face, level, size, error)
+                    || !advance(faceWork(size, level == 0 ? 1.0 : double(settings.prefilterSamples)), true))
                     return nullptr;
             }
         }
@@ -687,7 +744,8 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(
             "uCount", 6 * (settings.cubeSize >> sourceLevel) * (settings.cubeSize >> sourceLevel));
         for (int face = 0; face < 6; ++face) {
             m_programs->irradiance.setInt("uFace", face);
-            if (!drawInto(*irradiance, face, 0, settings.irradianceSize, error))
+            if (!drawInto(*irradiance, face, 0, settings.irradianceSize, error)
+                || !advance(irradianceWork(), true))
                 return nullptr;
         }
         glFinish();

@@ -34,6 +34,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <list>
 #include <map>
 #include <memory>
@@ -63,7 +64,18 @@ struct IblStats {
     // making source textures (tables on the CPU + uploads; 0 on a hit).
     int sourceCacheHitsMemory = 0;
     double msSource = 0.0;
+    // prepare() stopped because its progress callback said so (IblProgress): no result, no error
+    // worth showing.
+    bool cancelled = false;
 };
+
+// Where a prepare() stands, and a way to stop it (the window's lighting worker,
+// ui/LightingWorker.h): called with the fraction done, from 0 to 1, after the disk look-up and
+// as each face of the passes is finished on the GPU (the passes glFinish per level while a
+// callback is set, so the fraction is work done, not work queued). Returning false stops the
+// precompute before its next face: prepare() returns null with IblStats::cancelled and the
+// error "IblPrecompute::prepare: cancelled"; nothing is cached.
+using IblProgress = std::function<bool(double fraction)>;
 
 class ShaderProgram;
 
@@ -85,8 +97,18 @@ public:
     // failure returns null and sets `error` to "IblPrecompute::prepare: <problem>" (an empty
     // environment, a shader that does not compile, an incomplete framebuffer, a GL error).
     // `stats` (optional) is reset and filled.
-    std::shared_ptr<const IblTextures> prepare(
-        const Environment& environment, const IblSettings& settings, IblStats* stats, std::string* error);
+    // `progress` (optional) is told how far it got and may stop it (IblProgress).
+    std::shared_ptr<const IblTextures> prepare(const Environment& environment, const IblSettings& settings,
+        IblStats* stats, std::string* error, const IblProgress& progress = {});
+
+    // The key prepare() caches `environment` at `settings` under (the content hash and the
+    // settings it would run, IblSettings::forImage).
+    static std::uint64_t cacheKey(const Environment& environment, const IblSettings& settings);
+    // Puts a set another IblPrecompute made (in a context of this one's share group: the
+    // window's lighting worker) into the memory cache under `key` (cacheKey()), as if prepare()
+    // had made it; a set already held under the key stays. holds() then says yes and prepare()
+    // returns it.
+    void adopt(std::uint64_t key, std::shared_ptr<const IblTextures> textures);
 
     // The split-sum DFG LUT of `settings` (dfgSize, dfgSamples) integrated with `visibility`
     // (ibl_dfg.frag with DFG_VISIBILITY; CPU twin DfgTable::compute(size, samples, visibility)).

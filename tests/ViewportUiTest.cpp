@@ -110,6 +110,7 @@ private Q_SLOTS:
     void idleWindowDrawsNothing();
     void materialEditRerendersWithoutReloading();
     void brdfSwitchFetchesItsOwnTable();
+    void environmentSwitchDrawsOnWhileTheWorkerPrepares();
     void refinementDrawsFollowTheBudget_data();
     void refinementDrawsFollowTheBudget();
     void sampledMethodRefinesTheStillFrame_data();
@@ -262,6 +263,44 @@ void ViewportUiTest::brdfSwitchFetchesItsOwnTable()
     QVERIFY(waitForFrame(m_viewport));
     QVERIFY2(m_viewport->lastError().isEmpty(), qPrintable(m_viewport->lastError()));
     QCOMPARE(m_viewport->lastFrameStats().iblMs, 0.0); // its table is still in memory
+}
+
+void ViewportUiTest::environmentSwitchDrawsOnWhileTheWorkerPrepares()
+{
+    // A new environment and quality: the lighting worker makes the set (ui/LightingWorker) while
+    // the view draws on with the lighting it had; those frames are not announced as rendered.
+    // The frame that shows the new set is, after "ready". Then back to the set in memory: at once.
+    QVERIFY(waitForFullFrame(m_viewport));
+    Document* document = m_window->document();
+    const Project before = document->project();
+    Project project = before;
+    project.environment.source = "uniform:0.3,0.5,0.7";
+    project.environment.quality = IblQuality::High;
+    QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
+    int renderedWhenReady = -1;
+    QMetaObject::Connection ready = connect(m_viewport, &ViewportWidget::iblPrecomputeFinished, this,
+        [&] { renderedWhenReady = int(rendered.count()); });
+    const std::uint64_t awaitingBefore = m_viewport->framesAwaitingLighting();
+    document->setProject(project, QStringLiteral("environment"));
+    QTRY_VERIFY_WITH_TIMEOUT(renderedWhenReady >= 0, 60000);
+    QVERIFY(rendered.count() > 0 || rendered.wait(20000));
+    disconnect(ready);
+    QCOMPARE(renderedWhenReady, 0); // nothing announced while the worker ran
+    QVERIFY(m_viewport->framesAwaitingLighting() > awaitingBefore);
+    QVERIFY2(m_viewport->lastError().isEmpty(), qPrintable(m_viewport->lastError()));
+    const ViewportFrameStats& switched = m_viewport->lastFrameStats();
+    QVERIFY(!switched.lightingPending);
+    // Made on the worker for this set: computed, or read from a disk cache an earlier run left.
+    QVERIFY(switched.ibl.passesRun == 3 || switched.ibl.cacheHitsDisk == 1);
+    QCOMPARE(switched.ibl.cacheHitsMemory, 0);
+    QVERIFY(switched.iblMs > 0.0);
+
+    const std::uint64_t awaiting = m_viewport->framesAwaitingLighting();
+    rendered.clear();
+    document->setProject(before, QStringLiteral("environment"));
+    QVERIFY(rendered.wait(20000));
+    QCOMPARE(m_viewport->framesAwaitingLighting(), awaiting); // in memory: no frame waited
+    QCOMPARE(m_viewport->lastFrameStats().ibl.cacheHitsMemory, 1);
 }
 
 void ViewportUiTest::refinementDrawsFollowTheBudget_data()

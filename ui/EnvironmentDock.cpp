@@ -25,6 +25,7 @@
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -169,9 +170,10 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
     m_method->addItem(tr("Split sum (real time)"), int(IblMethod::SplitSum));
     m_method->addItem(tr("FIS (importance sampled)"), int(IblMethod::Fis));
     m_method->addItem(tr("Reference (converging)"), int(IblMethod::Reference));
-    m_method->setToolTip(tr("How the still view integrates the environment's light. While you move the camera "
-                            "or drag a slider the view shows the split sum; when you stop, FIS and Reference "
-                            "refine it to their samples (the status bar shows the progress)."));
+    m_method->setToolTip(
+        tr("How the still view integrates the environment's light. While you move the camera "
+           "or drag a slider the view shows the split sum; when you stop, FIS and Reference "
+           "refine it to their samples (the status bar shows the progress)."));
     m_status->setObjectName(QStringLiteral("environmentStatus"));
     m_status->setWordWrap(true);
     // It names the environment: a long file name (one word) is cut at the dock's edge rather than
@@ -450,7 +452,17 @@ void EnvironmentDock::onDocumentChanged(DocumentChanges changes)
 
 void EnvironmentDock::showLightingStatus(const QString& text, bool busy)
 {
+    m_busy->setRange(0, 0); // busy, for how long unknown, until showLightingProgress says
     m_busy->setVisible(busy);
+    m_status->setText(text);
+    m_status->setToolTip(text);
+}
+
+void EnvironmentDock::showLightingProgress(const QString& text, double fraction)
+{
+    m_busy->setRange(0, 1000);
+    m_busy->setValue(int(std::lround(std::clamp(fraction, 0.0, 1.0) * 1000.0)));
+    m_busy->setVisible(true);
     m_status->setText(text);
     m_status->setToolTip(text);
 }

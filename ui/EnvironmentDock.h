@@ -58,6 +58,8 @@ public:
 public Q_SLOTS:
     // The lighting's status (ui/WindowMessages.h wording), with the busy bar while it is computed.
     void showLightingStatus(const QString& text, bool busy);
+    // The lighting being computed, `fraction` (0..1) done: the bar shows how far.
+    void showLightingProgress(const QString& text, double fraction);
 
 Q_SIGNALS:
     void message(const QString& text);

@@ -2,7 +2,9 @@
 
 #include "render/IblPrecompute.h"
 #include "render/TextureCache.h"
+#include "ui/LightingWorker.h"
 
+#include <QDebug>
 #include <QOpenGLContext>
 #include <QOpenGLContextGroup>
 
@@ -21,6 +23,7 @@ ViewShareGroup::Resources ViewShareGroup::acquire()
     if (group && group == m_group) {
         resources.precompute = m_precompute.lock();
         resources.textures = m_textures.lock();
+        resources.lighting = m_lighting.lock();
     }
     resources.shared = resources.precompute && resources.textures;
     if (resources.shared)
@@ -28,9 +31,15 @@ ViewShareGroup::Resources ViewShareGroup::acquire()
     // The first view, or the others have gone (their GL objects with them): make new ones.
     resources.precompute = std::make_shared<IblPrecompute>(QString(), m_useDiskCache);
     resources.textures = std::make_shared<TextureCache>();
+    auto lighting = std::make_shared<LightingWorker>(QString(), m_useDiskCache);
+    if (lighting->isValid())
+        resources.lighting = std::move(lighting);
+    else
+        qInfo().noquote() << "Facet: the lighting is precomputed on the GUI thread:" << lighting->problem();
     m_group = group;
     m_precompute = resources.precompute;
     m_textures = resources.textures;
+    m_lighting = resources.lighting;
     ++m_made;
     return resources;
 }

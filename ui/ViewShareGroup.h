@@ -6,6 +6,9 @@
 // environment shown by the single view and by four grid cells is precomputed once, and a 2K
 // texture set is uploaded once, whichever view shows it first.
 //
+// The group also has the window's lighting worker (ui/LightingWorker): the IBL precompute of a
+// new environment runs on its thread, in a context of the group, while the views draw on.
+//
 // A view asks for the resources when it makes its renderer (initializeGL, its context current).
 // The group keeps them weakly: they live while a view's renderer holds them and go with the last
 // one, in that view's context, which is one of the group's. A view whose context does not share
@@ -20,6 +23,7 @@ class QOpenGLContextGroup;
 namespace facet {
 
 class IblPrecompute;
+class LightingWorker;
 class TextureCache;
 
 class ViewShareGroup {
@@ -32,6 +36,9 @@ public:
     struct Resources {
         std::shared_ptr<IblPrecompute> precompute;
         std::shared_ptr<TextureCache> textures;
+        // Null where the platform cannot run GL on a second thread: the view then precomputes
+        // on the GUI thread.
+        std::shared_ptr<LightingWorker> lighting;
         bool shared = false; // another view's: its contexts share with the current one
     };
     // With a view's context current: the resources of the views that asked before, when they are
@@ -47,6 +54,7 @@ private:
     QPointer<QOpenGLContextGroup> m_group;
     std::weak_ptr<IblPrecompute> m_precompute;
     std::weak_ptr<TextureCache> m_textures;
+    std::weak_ptr<LightingWorker> m_lighting;
     int m_made = 0;
 };
 

@@ -32,6 +32,16 @@ ViewStatus::ViewStatus(QStatusBar* bar, QLabel* frameStats, QStackedWidget* cent
         if (!compareShown())
             showLighting(m_singlePending, true);
     });
+    connect(
+        m_single, &ViewportWidget::iblPrecomputeProgress, this, [this](const QString& name, double fraction) {
+            if (m_singlePending.isEmpty())
+                return; // finished meanwhile
+            m_singlePending = WindowMessages::lightingPreparing(name, fraction);
+            if (!compareShown()) {
+                m_bar->showMessage(m_singlePending);
+                m_dock->showLightingProgress(m_singlePending, fraction);
+            }
+        });
     connect(m_single, &ViewportWidget::iblPrecomputeFinished, this, [this](const QString& name, double ms) {
         m_singlePending.clear();
         const QString& problem = m_scene->environmentProblem();

@@ -9,6 +9,7 @@
 #include "render/TextureCache.h"
 #include "render/TextureFiltering.h"
 #include "ui/Document.h"
+#include "ui/LightingWorker.h"
 #include "ui/SceneController.h"
 
 #include <QCoreApplication>
@@ -80,8 +81,55 @@ ViewportRenderer::ViewportRenderer(
 ViewportRenderer::~ViewportRenderer()
 {
     // GL objects go while the caller holds the context current: textures first, then their makers.
+    if (m_lighting && m_pending)
+        m_lighting->cancel();
+    m_lighting.reset();
     m_ibl.reset();
     m_frames.reset();
+}
+
+void ViewportRenderer::setLightingWorker(std::shared_ptr<LightingWorker> worker)
+{
+    if (m_lighting && m_pending)
+        m_lighting->cancel();
+    m_pending.reset();
+    m_lighting = std::move(worker);
+}
+
+std::optional<std::uint64_t> ViewportRenderer::pendingLighting() const
+{
+    if (m_pending && !m_pending->finished)
+        return m_pending->cacheKey;
+    return std::nullopt;
+}
+
+bool ViewportRenderer::lightingFinished(std::uint64_t key)
+{
+    if (!m_lighting)
+        return false;
+    std::optional<LightingWorker::Result> result = m_lighting->take(key);
+    if (result && result->textures)
+        m_frames->precompute().adopt(key, result->textures);
+    if (!m_pending || m_pending->cacheKey != key || m_pending->finished)
+        return false;
+    if (!result) {
+        // Another view took it first: it is in the shared precompute's memory.
+        m_pending->finished = true;
+        return true;
+    }
+    if (result->stats.cancelled) {
+        // Superseded by another request. When the set is not asked for again behind it, this
+        // view asks anew at its next frame.
+        if (m_lighting->busyWith() == key)
+            return false;
+        m_pending.reset();
+        return true;
+    }
+    m_pending->finished = true;
+    m_pending->stats = result->stats;
+    if (!result->textures)
+        m_pending->error = result->error;
+    return true;
 }
 
 bool ViewportRenderer::needsIbl(const SceneController& scene) const
@@ -103,6 +151,9 @@ std::optional<Image> ViewportRenderer::renderStill(
         m_iblKey = scene.iblKey();
         m_iblError.clear();
         m_ibl = std::move(ibl);
+        if (m_pending && m_lighting)
+            m_lighting->cancel(); // made here: the worker's is not wanted
+        m_pending.reset();
     }
     const IblMethod method = scene.refinementMethod();
     RenderScene frame = scene.scene(m_ibl, method);
@@ -190,24 +241,67 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
     };
 
     bool iblPrepared = false;
+    double iblMsHere = 0.0; // of this frame's own time (not the worker's)
+    m_stats.lightingPending = false;
     if (m_iblKey != scene.iblKey()) {
-        // A new environment or quality: fetch its IBL textures (memory, disk) or compute them.
-        m_iblKey = scene.iblKey();
-        m_iblError.clear();
-        std::string problem;
-        IblStats iblStats;
-        std::shared_ptr<const IblTextures> ibl
-            = m_frames->lighting(scene.assets().environment, scene.iblSettings(), &iblStats, &problem);
-        m_stats.ibl = iblStats;
-        m_stats.iblMs = iblStats.msTotal;
-        iblPrepared = true;
-        if (ibl)
-            m_ibl = std::move(ibl);
-        else
-            m_iblError = problem;
+        // A new environment or quality: its IBL set from memory at once; otherwise from the
+        // worker (disk or passes, on its thread) while this view draws what it has, or, without
+        // a worker, fetched or computed here.
+        const Environment& environment = scene.assets().environment;
+        const IblSettings settings = scene.iblSettings();
+        const bool inMemory = !environment.isEmpty() && m_frames->precompute().holds(environment, settings);
+        const std::uint64_t cacheKey
+            = environment.isEmpty() ? 0 : IblPrecompute::cacheKey(environment, settings);
+        const bool failed = m_pending && m_pending->cacheKey == cacheKey && m_pending->finished
+            && !m_pending->error.empty();
+        if (m_lighting && !environment.isEmpty() && !inMemory && !failed) {
+            if (!m_pending || m_pending->cacheKey != cacheKey || m_pending->finished) {
+                m_pending = PendingLighting {};
+                m_pending->cacheKey = m_lighting->request(environment, settings);
+            }
+            m_stats.lightingPending = true;
+        } else {
+            // A set of the worker's (adopted) or failed there, a memory hit, or no worker.
+            std::optional<PendingLighting> arrived;
+            if (m_pending && m_pending->cacheKey == cacheKey && m_pending->finished)
+                arrived = std::move(m_pending);
+            else if (m_pending && m_lighting)
+                m_lighting->cancel(); // back to a set in memory: the one asked for is not wanted
+            m_pending.reset();
+            m_iblKey = scene.iblKey();
+            m_iblError.clear();
+            std::string problem;
+            IblStats iblStats;
+            std::shared_ptr<const IblTextures> ibl;
+            if (failed)
+                problem = arrived->error;
+            else
+                ibl = m_frames->lighting(environment, settings, &iblStats, &problem);
+            iblMsHere = iblStats.msTotal;
+            if (arrived)
+                iblStats = arrived->stats; // what the worker did for it
+            m_stats.ibl = iblStats;
+            m_stats.iblMs = iblStats.msTotal;
+            iblPrepared = true;
+            if (ibl)
+                m_ibl = std::move(ibl);
+            else
+                m_iblError = problem;
+        }
     }
     if (!m_iblError.empty() && !m_ibl)
         return fail(m_iblError);
+    if (!m_ibl && m_stats.lightingPending) {
+        // Nothing to light with yet: the empty grey until the worker's set arrives.
+        glBindFramebuffer(GL_FRAMEBUFFER, targetFramebuffer);
+        glViewport(0, 0, width, height);
+        glClearColor(kFailureGrey, kFailureGrey, kFailureGrey, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        m_stats.width = width;
+        m_stats.height = height;
+        m_stats.frameMs = double(clock.nsecsElapsed()) / 1e6;
+        return true;
+    }
 
     RenderScene frame = scene.scene(m_ibl);
     // Maps: complete textures only (uploads happen between frames), filtered for this GL and
@@ -232,6 +326,7 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
         return fail(problem);
     if (dfgStats.passesRun > 0 || dfgStats.cacheHitsDisk > 0) {
         m_stats.iblMs += dfgStats.msTotal;
+        iblMsHere += dfgStats.msTotal;
         if (!iblPrepared)
             m_stats.ibl = IblStats {};
         m_stats.ibl.passesRun += dfgStats.passesRun;
@@ -276,7 +371,7 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
     m_stats.width = renderWidth;
     m_stats.height = renderHeight;
     m_stats.reduced = reduced;
-    m_stats.frameMs = double(clock.nsecsElapsed()) / 1e6 - m_stats.iblMs;
+    m_stats.frameMs = double(clock.nsecsElapsed()) / 1e6 - iblMsHere;
     m_stats.render = m_frames->renderer().lastFrameStats();
     return true;
 }

@@ -16,6 +16,12 @@
 // rasteriser at reduced resolution). While maps load, frames are reduced-resolution previews
 // (kLoadingScale); the frame after the last map is complete is a full one.
 //
+// With a lighting worker (setLightingWorker, ui/LightingWorker.h), an environment whose IBL set
+// is not in memory is precomputed (or read from the disk cache) on the worker's thread: frames
+// meanwhile show the lighting the view had (lastFrame().lightingPending), or the empty grey when
+// it had none, and the frame after lightingFinished() adopted the set shows it. A request for
+// another environment cancels the one running; going back to a set in memory cancels it too.
+//
 // Every call needs the viewport's context current; destroy it with the context current.
 
 #include "core/Image.h"
@@ -36,6 +42,7 @@
 namespace facet {
 
 class FrameRenderer;
+class LightingWorker;
 class TextureCache;
 class SceneController;
 struct RenderScene;
@@ -52,6 +59,9 @@ struct ViewportFrameStats {
     bool loadingMaps = false; // map files were decoding or textures uploading: a preview
     float anisotropy = 1.0f; // the maps' maximum anisotropy in this frame
     std::string textureProblem; // a map that cannot be a texture on this GL (named), else empty
+    // The environment's IBL set is being made on the lighting worker: the frame shows the view's
+    // previous lighting (or the empty grey, before any).
+    bool lightingPending = false;
     IblStats ibl; // of the last precompute (kept until the next one)
     RenderStats render; // Renderer::lastFrameStats()
     // A refinement frame (ViewportRenderer::refine): the method and where it stands; SplitSum
@@ -86,8 +96,19 @@ public:
     std::optional<Image> renderStill(
         const SceneController& scene, int width, int height, FrameOutput output, std::string* error);
 
-    // Whether the next paint() runs the IBL precompute (the caller may say so first).
+    // Whether the view does not show the lighting of the scene's environment and quality yet
+    // (the next paint() precomputes it, or asks the worker; the caller may say so first).
     bool needsIbl(const SceneController& scene) const;
+
+    // Precompute new lighting on `worker`'s thread from now on (null: on this thread, in paint()).
+    void setLightingWorker(std::shared_ptr<LightingWorker> worker);
+    const std::shared_ptr<LightingWorker>& lightingWorker() const { return m_lighting; }
+    // The worker finished the set `key` (LightingWorker::finished): taken and put into the
+    // shared precompute's memory (IblPrecompute::adopt) if no view took it before. True when it
+    // is the set this view waits for (succeeded or failed): draw again. Context current.
+    bool lightingFinished(std::uint64_t key);
+    // The cache key of the set this view waits for from the worker, if any.
+    std::optional<std::uint64_t> pendingLighting() const;
 
     // Draws `scene` into `targetFramebuffer` (width x height device pixels) at `scale` in (0, 1]
     // of the resolution. False with *error ("ViewportRenderer::paint: ...") when the frame could
@@ -153,6 +174,15 @@ private:
     std::shared_ptr<const IblTextures> m_ibl;
     std::optional<std::uint64_t> m_iblKey; // SceneController::iblKey() of m_ibl
     std::string m_iblError; // the precompute failed for this key: do not retry every frame
+    std::shared_ptr<LightingWorker> m_lighting;
+    // What the view asked of the worker and, once it finished, how that went.
+    struct PendingLighting {
+        std::uint64_t cacheKey = 0;
+        bool finished = false;
+        IblStats stats;
+        std::string error; // failed (not cancelled)
+    };
+    std::optional<PendingLighting> m_pending;
     ViewportFrameStats m_stats;
     GLInfo m_glInfo;
     std::vector<std::string> m_releasedMapsNeeded;

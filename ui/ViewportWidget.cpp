@@ -1,5 +1,6 @@
 #include "ui/ViewportWidget.h"
 
+#include "ui/LightingWorker.h"
 #include "ui/MapUploadScheduler.h"
 #include "ui/SceneController.h"
 #include "ui/ViewShareGroup.h"
@@ -42,6 +43,28 @@ void ViewportWidget::releaseRenderer()
     makeCurrent();
     m_renderer.reset();
     doneCurrent();
+}
+
+void ViewportWidget::connectLightingWorker()
+{
+    LightingWorker* worker = m_renderer ? m_renderer->lightingWorker().get() : nullptr;
+    if (!worker)
+        return;
+    // The renderer holds the worker: a signal queued before the renderer went finds none.
+    connect(worker, &LightingWorker::finished, this, [this, worker](quint64 key) {
+        if (!m_renderer || m_renderer->lightingWorker().get() != worker)
+            return;
+        makeCurrent(); // a set already held is dropped here: its textures go in the group
+        const bool mine = m_renderer->lightingFinished(key);
+        doneCurrent();
+        if (mine)
+            update();
+    });
+    connect(worker, &LightingWorker::progress, this, [this, worker](quint64 key, double fraction) {
+        if (m_renderer && m_renderer->lightingWorker().get() == worker && m_scene
+            && m_renderer->pendingLighting() == key)
+            Q_EMIT iblPrecomputeProgress(m_scene->environmentName(), fraction);
+    });
 }
 
 std::optional<Image> ViewportWidget::renderStill(FrameOutput output, std::string* error)
@@ -128,12 +151,15 @@ void ViewportWidget::initializeGL()
                                            : tr("Facet needs OpenGL 4.1 core, not a compatibility profile");
     // A context can be replaced (re-parenting, a dock torn off): drop the renderer with the old one.
     m_renderer.reset();
-    if (m_glProblem.isEmpty() && m_shareGroup) {
+    if (m_glProblem.isEmpty()) {
+        // A view made without a window's group (a test's lone widget) has one of its own.
+        if (!m_shareGroup)
+            m_shareGroup = std::make_shared<ViewShareGroup>();
         ViewShareGroup::Resources shared = m_shareGroup->acquire();
         m_renderer
             = std::make_unique<ViewportRenderer>(std::move(shared.precompute), std::move(shared.textures));
-    } else if (m_glProblem.isEmpty()) {
-        m_renderer = std::make_unique<ViewportRenderer>();
+        m_renderer->setLightingWorker(std::move(shared.lighting));
+        connectLightingWorker();
     }
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseRenderer,
         Qt::UniqueConnection);
@@ -155,14 +181,17 @@ void ViewportWidget::paintGL()
         gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         return;
     }
-    const bool precompute = m_renderer->needsIbl(*m_scene);
     const qreal ratio = devicePixelRatioF();
     std::string error;
     // The still frame refines by the project's method (docs/rendering.md "Refinement"): not while
     // an interaction previews, nor while a texture set is still arriving (those frames are
     // previews too); any change of the scene starts it again.
-    const bool refining = !m_previewing && m_scene->refinementMethod() != IblMethod::SplitSum
+    // Nor before the view has the environment's lighting: a frame takes it up first (from
+    // memory, or asking the lighting worker), and the refinement starts after it.
+    const bool wantsRefinement = !m_previewing && m_scene->refinementMethod() != IblMethod::SplitSum
         && m_scene->pendingMapLoads() == 0 && !m_renderer->hasPendingUploads();
+    const bool neededIbl = m_renderer->needsIbl(*m_scene);
+    const bool refining = wantsRefinement && !neededIbl;
     bool ok = false;
     if (refining) {
         ok = m_renderer->refine(*m_scene, defaultFramebufferObject(), int(width() * ratio),
@@ -175,7 +204,9 @@ void ViewportWidget::paintGL()
     m_stats = m_renderer->lastFrame();
     // The next draw of the refinement, after the events queued meanwhile (input stops it); once
     // done, nothing more is drawn until the scene changes.
-    if (refining && ok && !m_stats.refinement.done())
+    if (ok
+        && ((refining && !m_stats.refinement.done())
+            || (wantsRefinement && !refining && !m_stats.lightingPending)))
         QTimer::singleShot(0, this, [this] { update(); });
     m_lastError = ok ? QString() : QString::fromStdString(error);
     m_uploads->frameDrawn(); // maps the frame could not show yet go up between frames
@@ -190,7 +221,17 @@ void ViewportWidget::paintGL()
                 return renderer->textureReady(path, timestamp, space);
             });
     }
-    if (precompute) {
+    if (m_stats.lightingPending) {
+        ++m_framesAwaitingLighting;
+        // The lighting is made on the worker: this frame shows the previous one, and the frame
+        // that shows the new one is announced (the tests wait for frames of the scene as it is).
+        if (!m_announcedIbl) {
+            m_announcedIbl = true;
+            Q_EMIT iblPrecomputeStarting(m_scene->environmentName());
+        }
+        return;
+    }
+    if ((m_announcedIbl || neededIbl) && !m_renderer->needsIbl(*m_scene)) {
         m_announcedIbl = false;
         Q_EMIT iblPrecomputeFinished(m_scene->environmentName(), m_stats.iblMs);
     }

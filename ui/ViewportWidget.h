@@ -57,6 +57,9 @@ public:
     // Frames drawn with the renderer since the context was made (the idle test counts them).
     std::uint64_t frameCount() const { return m_stats.frameNumber; }
     const ViewportFrameStats& lastFrameStats() const { return m_stats; }
+    // Frames drawn with the previous lighting (or none) while the lighting worker made the new
+    // one; frameRendered() is not emitted for them.
+    std::uint64_t framesAwaitingLighting() const { return m_framesAwaitingLighting; }
     // Why the last frame failed; empty after a good frame.
     const QString& lastError() const { return m_lastError; }
 
@@ -81,7 +84,9 @@ Q_SIGNALS:
     // The next frame runs the IBL precompute for `environmentName` (a few hundred ms on llvmpipe
     // the first time; the disk cache makes the next start fast).
     void iblPrecomputeStarting(const QString& environmentName);
-    // The precompute finished in `milliseconds` (0: it came from the cache).
+    // The precompute, on the lighting worker's thread, is `fraction` (0..1) done.
+    void iblPrecomputeProgress(const QString& environmentName, double fraction);
+    // The precompute finished in `milliseconds` (0: it came from the cache), and a frame shows it.
     void iblPrecomputeFinished(const QString& environmentName, double milliseconds);
 
 protected:
@@ -92,6 +97,8 @@ private:
     void onSceneChanged(bool interactive);
     void requestFrame();
     void releaseRenderer();
+    // The lighting worker's signals (ui/LightingWorker.h) for this view's renderer.
+    void connectLightingWorker();
 
     SceneController* m_scene = nullptr;
     std::unique_ptr<ViewportRenderer> m_renderer;
@@ -105,6 +112,7 @@ private:
     bool m_previewing = false;
     bool m_restartRefinement = true; // the scene changed since the refinement began
     bool m_announcedIbl = false;
+    std::uint64_t m_framesAwaitingLighting = 0;
 };
 
 } // namespace facet

@@ -4,6 +4,7 @@
 #include <QRegularExpression>
 #include <QStringList>
 
+#include <algorithm>
 #include <vector>
 
 namespace facet {
@@ -229,6 +230,13 @@ QString WindowMessages::loading(const QString& fileName)
 QString WindowMessages::lightingPreparing(const QString& environmentName)
 {
     return tr("Preparing the lighting of %1…").arg(environmentName);
+}
+
+QString WindowMessages::lightingPreparing(const QString& environmentName, double fraction)
+{
+    return tr("Preparing the lighting of %1… %2%")
+        .arg(environmentName)
+        .arg(int(std::clamp(fraction, 0.0, 1.0) * 100.0));
 }
 
 QString WindowMessages::lightingReady(const QString& environmentName, double milliseconds)

@@ -31,6 +31,8 @@ public:
 
     // The status of an environment's lighting (status bar and Environment dock).
     static QString lightingPreparing(const QString& environmentName);
+    // "Preparing the lighting of forest… 40%".
+    static QString lightingPreparing(const QString& environmentName, double fraction);
     // "Loading forest.exr…": an environment or mesh file decoding off the GUI thread.
     static QString loading(const QString& fileName);
     // "Lighting of forest.exr ready (340 ms)", "(from the cache)" when it took no work.

@@ -2,9 +2,9 @@
 // stalls in the window"): the real MainWindow, the environment set through the Document as the
 // Environment dock does, and a 1 ms timer whose longest gap is the longest stall, from the edit
 // until the status bar says the lighting is ready, plus 300 ms. Each case: the file's first use
-// (decode on the worker, precompute on the GUI thread with an empty IBL disk cache), back to an
-// environment the view holds in memory, and the same file in a fresh window with the disk cache
-// warm. Checks nothing (the UI tests do): it measures.
+// (decode on the DocumentAssets worker, precompute on the lighting worker with an empty IBL disk
+// cache), back to an environment the view holds in memory, and the same file in a fresh window
+// with the disk cache warm. Checks nothing (the UI tests do): it measures.
 // Usage (needs a display): tests/with-display.sh build/ci/bench/environment_switch [--large]
 //   --large: also a 4096x2048 EXR (written once into the temporary folder).
 
