@@ -7,6 +7,8 @@
 // with the disk cache warm. Checks nothing (the UI tests do): it measures.
 // Usage (needs a display): tests/with-display.sh build/ci/bench/environment_switch [--large]
 //   --large: also a 4096x2048 EXR (written once into the temporary folder).
+//   --screenshots DIR: the window grabbed into DIR as each case's progress is first shown
+//     (NN-progress.png) and once its lighting is ready (NN-ready.png), to look at.
 
 #include "core/AssetLibrary.h"
 #include "core/Image.h"
@@ -41,8 +43,21 @@ struct Stalls {
 
 // Runs the event loop until the status bar says "Lighting of ... ready" (or `limitMs`), then
 // 300 ms more, and returns the 1 ms timer's longest gap over that time, counted from `edit`.
+QString g_screenshots; // --screenshots DIR, else empty
+int g_case = 0;
+
+QString screenshotPath(const char* what)
+{
+    return QStringLiteral("%1/%2-%3.png")
+        .arg(g_screenshots)
+        .arg(g_case, 2, 10, QLatin1Char('0'))
+        .arg(QLatin1String(what));
+}
+
 template <typename Edit> Stalls measure(MainWindow& window, Edit edit, int limitMs = 60000)
 {
+    ++g_case;
+    bool progressShot = false;
     Stalls stalls;
     QElapsedTimer clock;
     QElapsedTimer tick;
@@ -55,12 +70,17 @@ template <typename Edit> Stalls measure(MainWindow& window, Edit edit, int limit
         stalls.longestMs = std::max(stalls.longestMs, gap);
         stalls.over100 += gap > 100.0 ? 1 : 0;
     });
-    const QMetaObject::Connection ready
-        = QObject::connect(window.statusBar(), &QStatusBar::messageChanged, [&](const QString& text) {
-              if (stalls.readyMs < 0.0 && text.startsWith(QStringLiteral("Lighting of"))
-                  && text.contains(QStringLiteral("ready")))
-                  stalls.readyMs = double(clock.nsecsElapsed()) / 1e6;
-          });
+    const QMetaObject::Connection ready = QObject::connect(
+        window.statusBar(), &QStatusBar::messageChanged, [&](const QString& text) {
+            if (stalls.readyMs < 0.0 && text.startsWith(QStringLiteral("Lighting of"))
+                && text.contains(QStringLiteral("ready")))
+                stalls.readyMs = double(clock.nsecsElapsed()) / 1e6;
+            // (grabbing draws the window: the stall figures of a run with --screenshots count it)
+            if (!g_screenshots.isEmpty() && !progressShot && text.endsWith(QLatin1Char('%'))) {
+                progressShot = true;
+                QTimer::singleShot(0, &window, [&window] { window.grab().save(screenshotPath("progress")); });
+            }
+        });
     clock.start();
     tick.start();
     monitor.start();
@@ -72,6 +92,8 @@ template <typename Edit> Stalls measure(MainWindow& window, Edit edit, int limit
         QApplication::processEvents(QEventLoop::AllEvents, 5);
     monitor.stop();
     QObject::disconnect(ready);
+    if (!g_screenshots.isEmpty())
+        window.grab().save(screenshotPath("ready"));
     return stalls;
 }
 
@@ -96,6 +118,9 @@ int main(int argc, char** argv)
     installViewportSurfaceFormat();
     QApplication app(argc, argv);
     const bool large = app.arguments().contains(QStringLiteral("--large"));
+    if (const qsizetype at = app.arguments().indexOf(QStringLiteral("--screenshots"));
+        at >= 0 && at + 1 < app.arguments().size())
+        g_screenshots = app.arguments().at(at + 1);
     QTemporaryDir temporary;
     qputenv("FACET_CACHE_DIR", temporary.filePath(QStringLiteral("cache")).toUtf8());
 
@@ -124,7 +149,8 @@ int main(int argc, char** argv)
         MainWindow window(nullptr, temporary.filePath(QStringLiteral("recovery")));
         window.resize(1280, 800);
         window.show();
-        const Stalls start = measure(window, [] {}, 5000); // (the first frame's note may differ)
+        const Stalls start = measure(
+            window, [] {}, 5000); // (the first frame's note may differ)
         print(pass == 0 ? "window opens (studio, built in)" : "window opens again", "studio", start);
         for (const std::string& spec : specs) {
             print(pass == 0 ? "first use, empty disk cache" : "disk cache warm", spec,
