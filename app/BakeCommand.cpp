@@ -46,6 +46,17 @@ struct Options {
             .arg(BakeCommand::kMinIblSize)
             .arg(BakeCommand::kMaxIblSize),
         QStringLiteral("N")};
+    QCommandLineOption cubeSize {QStringLiteral("cube-size"),
+        QStringLiteral(
+            "The environment cube's level-0 face size, %1 to %2, at least --ibl-size (default: the "
+            "preset's, grown to --ibl-size). Like --ibl-size, at most twice the image's width / 4.")
+            .arg(BakeCommand::kMinIblSize)
+            .arg(BakeCommand::kMaxIblSize),
+        QStringLiteral("N")};
+    QCommandLineOption samples {QStringLiteral("samples"),
+        QStringLiteral(
+            "GGX samples per texel of the prefiltered levels, 1 to 65536 (default: the preset's)."),
+        QStringLiteral("N")};
     QCommandLineOption force {
         QStringLiteral("force"), QStringLiteral("Replace files of an earlier bake in OUT_DIR.")};
     QCommandLineOption output {{QStringLiteral("o"), QStringLiteral("output")},
@@ -59,7 +70,8 @@ struct Options {
             "split-sum "
             "DFG table of each visibility term, as linear EXR files (one a cube face), with ibl.json, the "
             "index and its conventions."));
-        for (const QCommandLineOption* option : {&help, &quality, &iblSize, &force, &output})
+        for (const QCommandLineOption* option :
+            {&help, &quality, &iblSize, &cubeSize, &samples, &force, &output})
             parser.addOption(*option);
         parser.addPositionalArgument(QStringLiteral("environment"),
             QStringLiteral(
@@ -175,18 +187,44 @@ std::optional<BakeRequest> BakeCommand::parse(const QStringList& arguments, QStr
         return std::nullopt;
     }
     request.settings = *settings;
-    if (o.parser.isSet(o.iblSize)) {
+    // A whole-number option within [low, high]; nullopt with *error naming it otherwise.
+    const auto wholeNumber = [&](const QCommandLineOption& option, int low, int high) -> std::optional<int> {
         bool ok = false;
-        const int size = o.parser.value(o.iblSize).toInt(&ok);
-        if (!ok || size < kMinIblSize || size > kMaxIblSize) {
-            *error = QStringLiteral("--ibl-size: '%1' is not a whole number from %2 to %3")
-                         .arg(o.parser.value(o.iblSize))
-                         .arg(kMinIblSize)
-                         .arg(kMaxIblSize);
+        const QString text = o.parser.value(option);
+        const int value = text.toInt(&ok);
+        if (ok && value >= low && value <= high)
+            return value;
+        *error = QStringLiteral("--%1: '%2' is not a whole number from %3 to %4")
+                     .arg(option.names().constFirst(), text)
+                     .arg(low)
+                     .arg(high);
+        return std::nullopt;
+    };
+    if (o.parser.isSet(o.iblSize)) {
+        const std::optional<int> size = wholeNumber(o.iblSize, kMinIblSize, kMaxIblSize);
+        if (!size)
+            return std::nullopt;
+        request.settings.prefilterSize = *size;
+        request.settings.cubeSize = std::max(request.settings.cubeSize, *size);
+    }
+    if (o.parser.isSet(o.cubeSize)) {
+        const std::optional<int> size = wholeNumber(o.cubeSize, kMinIblSize, kMaxIblSize);
+        if (!size)
+            return std::nullopt;
+        if (*size < request.settings.prefilterSize) {
+            *error = QStringLiteral("--cube-size: %1 is smaller than the prefiltered cube (%2): the "
+                                    "prefiltered levels are read from the environment cube")
+                         .arg(*size)
+                         .arg(request.settings.prefilterSize);
             return std::nullopt;
         }
-        request.settings.prefilterSize = size;
-        request.settings.cubeSize = std::max(request.settings.cubeSize, size);
+        request.settings.cubeSize = *size;
+    }
+    if (o.parser.isSet(o.samples)) {
+        const std::optional<int> count = wholeNumber(o.samples, 1, 65536);
+        if (!count)
+            return std::nullopt;
+        request.settings.prefilterSamples = *count;
     }
     request.force = o.parser.isSet(o.force);
     return request;

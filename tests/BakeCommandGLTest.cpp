@@ -125,10 +125,50 @@ private Q_SLOTS:
         QTest::addColumn<QString>("environment");
         QTest::addColumn<QString>("quality");
         QTest::addColumn<int>("iblSize"); // 0: the preset's
-        QTest::newRow("studio, draft") << QStringLiteral("studio") << QStringLiteral("draft") << 0;
-        QTest::newRow("sky, default") << QStringLiteral("sky") << QStringLiteral("default") << 0;
+        QTest::addColumn<int>("cubeSize"); // 0: the preset's (grown to iblSize)
+        QTest::addColumn<int>("samples"); // 0: the preset's
+        QTest::newRow("studio, draft") << QStringLiteral("studio") << QStringLiteral("draft") << 0 << 0 << 0;
+        QTest::newRow("sky, default") << QStringLiteral("sky") << QStringLiteral("default") << 0 << 0 << 0;
         QTest::newRow("studio, draft, --ibl-size 32")
-            << QStringLiteral("studio") << QStringLiteral("draft") << 32;
+            << QStringLiteral("studio") << QStringLiteral("draft") << 32 << 0 << 0;
+        QTest::newRow("studio, draft, --cube-size 64")
+            << QStringLiteral("studio") << QStringLiteral("draft") << 0 << 64 << 0;
+        QTest::newRow("studio, draft, --samples 16")
+            << QStringLiteral("studio") << QStringLiteral("draft") << 0 << 0 << 16;
+        QTest::newRow("studio, --ibl-size 64 --cube-size 64 --samples 32 (cmgen's work)")
+            << QStringLiteral("studio") << QStringLiteral("default") << 64 << 64 << 32;
+    }
+
+    // Each option alone and bad values: exit 2 (a usage error), the option and the value named.
+    void refusesBadSettings_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("--ibl-size 8") << QStringList {QStringLiteral("--ibl-size"),
+            QStringLiteral("8")} << QStringLiteral("--ibl-size: '8' is not a whole number from 16 to 2048");
+        QTest::newRow("--cube-size x") << QStringList {QStringLiteral("--cube-size"),
+            QStringLiteral("x")} << QStringLiteral("--cube-size: 'x' is not a whole number from 16 to 2048");
+        QTest::newRow("--cube-size below --ibl-size")
+            << QStringList {QStringLiteral("--ibl-size"), QStringLiteral("128"),
+                   QStringLiteral("--cube-size"), QStringLiteral("64")}
+            << QStringLiteral("--cube-size: 64 is smaller than the prefiltered cube (128)");
+        QTest::newRow("--samples 0") << QStringList {QStringLiteral("--samples"),
+            QStringLiteral("0")} << QStringLiteral("--samples: '0' is not a whole number from 1 to 65536");
+        QTest::newRow("--samples 1e9")
+            << QStringList {QStringLiteral("--samples"), QStringLiteral("1000000000")}
+            << QStringLiteral("--samples: '1000000000' is not a whole number");
+    }
+
+    void refusesBadSettings()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QString, message);
+        QTemporaryDir out;
+        const facet::test::ProcessResult r
+            = bake(QStringList {QStringLiteral("studio"), QStringLiteral("-o"), out.path()} + arguments);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.contains(message), qPrintable(r.err));
+        QCOMPARE(QDir(out.path()).entryList(QDir::Files), QStringList {});
     }
 
     void writesWhatTheRendererShadesWith()
@@ -136,11 +176,17 @@ private Q_SLOTS:
         QFETCH(QString, environment);
         QFETCH(QString, quality);
         QFETCH(int, iblSize);
+        QFETCH(int, cubeSize);
+        QFETCH(int, samples);
         QTemporaryDir out;
         QStringList arguments {
             environment, QStringLiteral("--quality"), quality, QStringLiteral("-o"), out.path()};
         if (iblSize > 0)
             arguments << QStringLiteral("--ibl-size") << QString::number(iblSize);
+        if (cubeSize > 0)
+            arguments << QStringLiteral("--cube-size") << QString::number(cubeSize);
+        if (samples > 0)
+            arguments << QStringLiteral("--samples") << QString::number(samples);
         const facet::test::ProcessResult r = bake(arguments);
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.out.startsWith(QStringLiteral("facet bake: wrote ")), qPrintable(r.out));
@@ -162,6 +208,10 @@ private Q_SLOTS:
             settings.prefilterSize = iblSize;
             settings.cubeSize = std::max(settings.cubeSize, iblSize);
         }
+        if (cubeSize > 0)
+            settings.cubeSize = cubeSize;
+        if (samples > 0)
+            settings.prefilterSamples = samples;
         IblPrecompute precompute(QString(), /*useDiskCache=*/false);
         const std::optional<Environment> env = Environment::fromSpec(environment.toStdString(), &error);
         QVERIFY2(env, error.c_str());
@@ -169,6 +219,15 @@ private Q_SLOTS:
         QVERIFY2(ibl, error.c_str());
         if (iblSize > 0)
             QCOMPARE(ibl->prefilteredSize, iblSize);
+        if (cubeSize > 0)
+            QCOMPARE(ibl->environmentSize, cubeSize);
+        // What ran, as ibl.json says (a bake with another cube or samples differs texel for texel).
+        QCOMPARE(index->value(QStringLiteral("settings"))
+                     .toObject()
+                     .value(QStringLiteral("environmentCubeSize"))
+                     .toInt(),
+            ibl->environmentSize);
+        QCOMPARE(prefiltered.value(QStringLiteral("samples")).toInt(), settings.prefilterSamples);
 
         const int levels = ibl->prefilteredMipLevels;
         QCOMPARE(prefiltered.value(QStringLiteral("levels")).toInt(), levels);
