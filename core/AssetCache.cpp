@@ -1,4 +1,5 @@
 #include "core/AssetCache.h"
+#include "core/Fnv1a.h"
 
 #include "core/ProjectAssets.h"
 
@@ -8,15 +9,6 @@
 namespace facet {
 
 namespace {
-
-std::uint64_t fnv1a(const std::string& text, std::uint64_t hash)
-{
-    for (unsigned char c : text) {
-        hash ^= c;
-        hash *= 0x100000001b3ULL;
-    }
-    return hash;
-}
 
 } // namespace
 
@@ -28,14 +20,16 @@ std::int64_t AssetCache::modifiedTime(const std::string& path)
 
 std::uint64_t AssetCache::meshKey(const std::string& nameOrPath, std::int64_t modified)
 {
-    return fnv1a(nameOrPath, modified ? std::uint64_t(modified) : 1u);
+    return Fnv1a64(modified ? std::uint64_t(modified) : 1u).addString(nameOrPath).value();
 }
 
-std::optional<Environment> AssetCache::environment(const std::string& spec, std::string* error, std::string* warning)
+std::optional<Environment> AssetCache::environment(
+    const std::string& spec, std::string* error, std::string* warning)
 {
     const std::int64_t modified = modifiedTime(spec);
     std::lock_guard lock(m_mutex);
-    if (const auto found = m_environments.find(spec); found != m_environments.end() && found->second.modified == modified)
+    if (const auto found = m_environments.find(spec);
+        found != m_environments.end() && found->second.modified == modified)
         return found->second.environment;
     ++m_environmentLoads;
     auto environment = Environment::fromSpec(spec, error, warning);
@@ -50,7 +44,8 @@ std::optional<AssetCache::LoadedMesh> AssetCache::mesh(
 {
     const std::int64_t modified = modifiedTime(nameOrPath);
     std::lock_guard lock(m_mutex);
-    if (const auto found = m_meshes.find(nameOrPath); found != m_meshes.end() && found->second.modified == modified)
+    if (const auto found = m_meshes.find(nameOrPath);
+        found != m_meshes.end() && found->second.modified == modified)
         return found->second.mesh;
     ++m_meshLoads;
     auto mesh = loadViewMesh(nameOrPath, error, warning);

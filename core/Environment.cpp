@@ -1,4 +1,5 @@
 #include "core/Environment.h"
+#include "core/Fnv1a.h"
 
 #include "core/AssetLibrary.h"
 #include "core/EnvironmentIndex.h"
@@ -42,26 +43,6 @@ glm::dvec3 rotateAboutY(const glm::dvec3& d, double radians)
     return {c * d.x + s * d.z, d.y, -s * d.x + c * d.z};
 }
 
-// 64-bit FNV-1a (Fowler, Noll, Vo; http://www.isthe.com/chongo/tech/comp/fnv/), fed byte by
-// byte in little-endian order so the value does not depend on the machine's byte order.
-class Fnv1a64 {
-public:
-    void addByte(std::uint8_t byte)
-    {
-        m_state ^= byte;
-        m_state *= 1099511628211ull;
-    }
-    void addUint32(std::uint32_t value)
-    {
-        for (int i = 0; i < 4; ++i)
-            addByte(std::uint8_t(value >> (8 * i)));
-    }
-    std::uint64_t value() const { return m_state; }
-
-private:
-    std::uint64_t m_state = 14695981039346656037ull;
-};
-
 std::uint32_t floatBits(float value)
 {
     // -0 and +0 are the same radiance: hash them alike.
@@ -91,7 +72,8 @@ std::pair<int, int> keptSize(int width, int height)
 {
     if (width <= Environment::kMaxWidth && height <= Environment::kMaxHeight)
         return {width, height};
-    const double scale = std::min(double(Environment::kMaxWidth) / width, double(Environment::kMaxHeight) / height);
+    const double scale
+        = std::min(double(Environment::kMaxWidth) / width, double(Environment::kMaxHeight) / height);
     return {std::max(1, int(std::floor(width * scale))), std::max(1, int(std::floor(height * scale)))};
 }
 
@@ -154,7 +136,8 @@ private:
             m_image = Image(m_width, m_height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
             EnvironmentIndex().forget(m_path);
         } else {
-            if (image->width() != m_width || image->height() != m_height || hashPixels(*image) != m_contentHash) {
+            if (image->width() != m_width || image->height() != m_height
+                || hashPixels(*image) != m_contentHash) {
                 qWarning("Environment: %s: changed on disk without changing its size or times; "
                          "load it again to light with the new pixels",
                     m_path.c_str());
@@ -459,8 +442,9 @@ std::optional<Environment> Environment::load(
         lines += line;
     };
     if (stats.total() > 0)
-        addLine(path + ": replaced " + std::to_string(stats.nanCount) + " NaN, " + std::to_string(stats.infCount)
-            + " Inf, " + std::to_string(stats.negativeCount) + " negative samples");
+        addLine(path + ": replaced " + std::to_string(stats.nanCount) + " NaN, "
+            + std::to_string(stats.infCount) + " Inf, " + std::to_string(stats.negativeCount)
+            + " negative samples");
     if (image->width() != 2 * image->height())
         addLine(path + ": " + std::to_string(image->width()) + "x" + std::to_string(image->height())
             + " is not 2:1; an equirectangular image is stretched to cover the sphere");
@@ -471,7 +455,8 @@ std::optional<Environment> Environment::load(
     // file too recent to trust); a failure to remember costs the next load its decoding, no more.
     FileIdentity after;
     if (identified && fileIdentity(path, &after) && after == before)
-        index.store(path, before, {environment.contentHash(), environment.width(), environment.height(), lines});
+        index.store(
+            path, before, {environment.contentHash(), environment.width(), environment.height(), lines});
     return environment;
 }
 

@@ -1,4 +1,5 @@
 #include "core/EnvironmentIndex.h"
+#include "core/Fnv1a.h"
 
 #include "core/AtomicFile.h"
 #include "core/IblDiskCache.h"
@@ -25,16 +26,6 @@ std::string absolutePath(const std::string& path)
     std::error_code error;
     const std::filesystem::path absolute = std::filesystem::absolute(path, error);
     return error ? path : absolute.lexically_normal().string();
-}
-
-std::uint64_t fnv1a(const std::string& text)
-{
-    std::uint64_t hash = 14695981039346656037ull;
-    for (unsigned char c : text) {
-        hash ^= c;
-        hash *= 1099511628211ull;
-    }
-    return hash;
 }
 
 // 64-bit numbers travel as decimal strings: a JSON number is a double (53 bits), and a time in
@@ -78,7 +69,8 @@ QString EnvironmentIndex::defaultDirectory()
 QString EnvironmentIndex::recordPath(const std::string& path) const
 {
     char name[17];
-    std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(fnv1a(absolutePath(path))));
+    std::snprintf(name, sizeof name, "%016llx",
+        static_cast<unsigned long long>(Fnv1a64().addString(absolutePath(path)).value()));
     return m_directory + QLatin1Char('/') + QLatin1String(name) + QStringLiteral(".json");
 }
 

@@ -1,4 +1,5 @@
 #include "core/IblDiskCache.h"
+#include "core/Fnv1a.h"
 
 #include "core/AtomicFile.h"
 #include "core/FileCheck.h"
@@ -22,17 +23,6 @@ constexpr std::size_t kHeaderSize = 8 + 4 + 8 + 4 + 4 + 8 + 8;
 // The largest entry Facet writes (a 4096 prefiltered cube with its mips in half floats, the
 // irradiance and the DFG table) is about 1.1 GiB.
 constexpr qint64 kMaxEntryBytes = qint64(4) << 30;
-constexpr std::uint64_t kFnvOffset = 0xcbf29ce484222325ULL;
-constexpr std::uint64_t kFnvPrime = 0x100000001b3ULL;
-
-std::uint64_t fnv1a(std::uint64_t hash, const char* data, std::size_t size)
-{
-    for (std::size_t i = 0; i < size; ++i) {
-        hash ^= std::uint8_t(data[i]);
-        hash *= kFnvPrime;
-    }
-    return hash;
-}
 
 // Little-endian writers/readers (x86 and ARM hosts are little-endian; the byte order is still
 // spelled out so the format does not depend on the host).
@@ -77,7 +67,7 @@ std::uint64_t IblDiskCache::key(std::uint64_t contentHash, std::uint64_t setting
         bytes[i] = char((contentHash >> (8 * i)) & 0xffu);
         bytes[8 + i] = char((settingsHash >> (8 * i)) & 0xffu);
     }
-    return fnv1a(kFnvOffset, bytes, sizeof bytes);
+    return Fnv1a64().addBytes(bytes, sizeof bytes).value();
 }
 
 std::string IblDiskCache::keyHex(std::uint64_t key)
@@ -136,7 +126,7 @@ bool IblDiskCache::store(std::uint64_t key, const IblCacheEntry& entry, std::str
     put<std::uint32_t>(header, std::uint32_t(entry.layers.size()));
     put<std::uint32_t>(header, std::uint32_t(entry.extra.size()));
     put<std::uint64_t>(header, std::uint64_t(payload.size()));
-    put<std::uint64_t>(header, fnv1a(kFnvOffset, payload.constData(), std::size_t(payload.size())));
+    put<std::uint64_t>(header, Fnv1a64().addBytes(payload.constData(), std::size_t(payload.size())).value());
 
     if (!QDir().mkpath(m_directory))
         return fail("cannot create the directory");
@@ -196,7 +186,7 @@ std::optional<IblCacheEntry> IblDiskCache::load(std::uint64_t key, std::string* 
     if (payloadSize != std::uint64_t(data.size()) - kHeaderSize)
         return bad("truncated or padded (payload " + std::to_string(std::uint64_t(data.size()) - kHeaderSize)
             + " bytes, header says " + std::to_string(payloadSize) + ")");
-    if (fnv1a(kFnvOffset, data.constData() + kHeaderSize, std::size_t(payloadSize)) != checksum)
+    if (Fnv1a64().addBytes(data.constData() + kHeaderSize, std::size_t(payloadSize)).value() != checksum)
         return bad("checksum mismatch (corrupt)");
 
     IblCacheEntry entry;

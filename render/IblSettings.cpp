@@ -1,4 +1,5 @@
 #include "render/IblSettings.h"
+#include "core/Fnv1a.h"
 
 #include <algorithm>
 #include <bit>
@@ -7,17 +8,6 @@ namespace facet {
 
 namespace {
 
-std::uint64_t fnv1a(std::uint64_t hash, std::int32_t value)
-{
-    const auto bits = std::uint32_t(value);
-    for (int i = 0; i < 4; ++i) {
-        hash ^= (bits >> (8 * i)) & 0xffu;
-        hash *= 0x100000001b3ULL;
-    }
-    return hash;
-}
-
-constexpr std::uint64_t kFnvOffset = 0xcbf29ce484222325ULL;
 // Bumped whenever a pass's algorithm changes, so that old disk-cache files stop matching.
 // 2: roughness-to-level map r (2 - r); 3: the DFG key holds the visibility term (version 2's DFG
 // entries were all height-correlated Smith whatever the material's V); 4: a map wider than 4x
@@ -27,30 +17,35 @@ constexpr std::int32_t kAlgorithmVersion = 4;
 // weight W(n.v) (version 3's tables hold 1 there). Environment sets keep kAlgorithmVersion.
 constexpr std::int32_t kDfgAlgorithmVersion = 4;
 
-int mipChainLength(int size) { return std::bit_width(unsigned(std::max(size, 1))); }
+int mipChainLength(int size)
+{
+    return std::bit_width(unsigned(std::max(size, 1)));
+}
 
 } // namespace
 
 std::uint64_t IblSettings::hash() const
 {
-    std::uint64_t h = fnv1a(kFnvOffset, kAlgorithmVersion);
-    for (int v : {cubeSize, prefilterSize, prefilterMipLevels, prefilterSamples, irradianceSize, irradianceSamples,
-                  dfgSize, dfgSamples, int(irradiance)})
-        h = fnv1a(h, v);
-    return h;
+    Fnv1a64 h;
+    h.addUint32(std::uint32_t(kAlgorithmVersion));
+    for (int v : {cubeSize, prefilterSize, prefilterMipLevels, prefilterSamples, irradianceSize,
+             irradianceSamples, dfgSize, dfgSamples, int(irradiance)})
+        h.addUint32(std::uint32_t(v));
+    return h.value();
 }
 
 std::uint64_t IblSettings::dfgHash(Visibility visibility) const
 {
     // The visibility by its name's bytes, not int(visibility): reordering the enum must not
     // make one variant's disk entries answer for another's.
-    std::uint64_t h = fnv1a(kFnvOffset, kDfgAlgorithmVersion);
-    h = fnv1a(h, 0x44464700); // "DFG": a different key space from hash()
-    h = fnv1a(h, dfgSize);
-    h = fnv1a(h, dfgSamples);
+    Fnv1a64 h;
+    h.addUint32(std::uint32_t(kDfgAlgorithmVersion));
+    h.addUint32(0x44464700); // "DFG": a different key space from hash()
+    h.addUint32(std::uint32_t(dfgSize));
+    h.addUint32(std::uint32_t(dfgSamples));
     for (const char* c = toString(visibility); *c; ++c)
-        h = fnv1a(h, std::int32_t(static_cast<unsigned char>(*c)));
-    return h;
+        h.addUint32(static_cast<unsigned char>(*c));
+    return h.value();
 }
 
 IblSettings IblSettings::sanitized() const
@@ -112,6 +107,9 @@ std::optional<IblSettings> IblSettings::preset(const std::string& name)
     return std::nullopt;
 }
 
-std::vector<std::string> IblSettings::presetNames() { return {"draft", "default", "high"}; }
+std::vector<std::string> IblSettings::presetNames()
+{
+    return {"draft", "default", "high"};
+}
 
 } // namespace facet
