@@ -2,7 +2,9 @@
 // uniform:V, a primitive mesh) is made at once; files load on a worker and arrive through
 // assetArrived, once however many ask; a failure is named and not tried again until retry() or
 // the file changes; a file changed on disk loads again, the previous version standing in
-// meanwhile; entries no user names are dropped. Needs no display, but links ui/ (a UiTest).
+// meanwhile; entries no user names are dropped; an environment file read before (the environment
+// index) arrives before its pixels are decoded, and environmentDecoded follows. Needs no display, but links
+// ui/ (a UiTest).
 
 #include "ui/DocumentAssets.h"
 
@@ -47,7 +49,12 @@ bool touch(const QString& path, int seconds)
 class DocumentAssetsUiTest : public QObject {
     Q_OBJECT
 private Q_SLOTS:
-    void initTestCase() { QVERIFY(m_dir.isValid()); }
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        // The environment index and the IBL cache in the test's folder, not the user's.
+        qputenv("FACET_CACHE_DIR", m_dir.filePath(QStringLiteral("cache")).toUtf8());
+    }
     void madeAtOnceWithoutAFile_data();
     void madeAtOnceWithoutAFile();
     void filesLoadOnAWorkerOnce_data();
@@ -56,6 +63,7 @@ private Q_SLOTS:
     void retryTriesAnUnchangedFileAgain();
     void changedFileLoadsAgainPreviousStandsIn();
     void entriesNoUserNamesAreDropped();
+    void indexedEnvironmentArrivesBeforeItsPixels();
 
 private:
     QString path(const QString& name) const { return m_dir.filePath(name); }
@@ -230,6 +238,38 @@ void DocumentAssetsUiTest::entriesNoUserNamesAreDropped()
     QCOMPARE(assets.loads(Kind::Environment), 4);
     QVERIFY(assets.environment("uniform:0.2"));
     QCOMPARE(assets.loads(Kind::Environment), 5);
+}
+
+void DocumentAssetsUiTest::indexedEnvironmentArrivesBeforeItsPixels()
+{
+    const QString file = path(QStringLiteral("indexed.exr"));
+    QVERIFY(test::writeConstantExr(file, 0.5f));
+    QVERIFY(touch(file, -10)); // older than the index's 2 s "racy" window
+    const std::string name = file.toStdString();
+    {
+        // The first load decodes it (and remembers its hash and size by the file's identity).
+        DocumentAssets first;
+        QSignalSpy decoded(&first, &DocumentAssets::environmentDecoded);
+        QVERIFY(!first.environment(name));
+        first.waitForLoads();
+        QVERIFY(first.environment(name));
+        QVERIFY(first.environment(name)->decoded());
+        QCOMPARE(decoded.count(), 0); // arrived decoded: nothing follows
+    }
+    // A second document: the entry arrives with its hash and size, undecoded; the decode follows
+    // on the pool and says so.
+    DocumentAssets second;
+    QSignalSpy arrived(&second, &DocumentAssets::assetArrived);
+    QSignalSpy decoded(&second, &DocumentAssets::environmentDecoded);
+    QVERIFY(!second.environment(name));
+    QVERIFY(arrived.wait(20000));
+    const std::shared_ptr<const Environment> environment = second.environment(name);
+    QVERIFY(environment);
+    QCOMPARE(environment->width(), 16);
+    QVERIFY(decoded.count() == 1 || decoded.wait(20000));
+    QCOMPARE(decoded.first().first().toULongLong(), quint64(environment->contentHash()));
+    QVERIFY(environment->decoded());
+    QCOMPARE(environment->image().at(3, 3).g, 0.5f);
 }
 
 QTEST_GUILESS_MAIN(DocumentAssetsUiTest)

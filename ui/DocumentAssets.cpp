@@ -50,12 +50,11 @@ std::shared_ptr<const Environment> DocumentAssets::environment(const std::string
         Entry loaded;
         if (std::optional<Environment> environment
             = Environment::fromSpec(spec, &loaded.problem, &loaded.warning)) {
-            // Decoded here, on the worker: an environment found in its index decodes at its first
-            // image(), and the view's precompute (GUI thread) asks for it on a disk-cache miss.
-            environment->image();
+            // An environment found in its index (core/EnvironmentIndex) is not decoded here: it is
+            // delivered at once, so that the view's lighting worker can read its IBL set from
+            // the disk cache, and decoded next on this pool (deliver()).
             loaded.environment = std::make_shared<const Environment>(std::move(*environment));
-        }
-        else if (loaded.problem.empty())
+        } else if (loaded.problem.empty())
             loaded.problem = "Environment::fromSpec: " + spec + ": could not be loaded";
         return loaded;
     });
@@ -129,8 +128,25 @@ const DocumentAssets::Entry* DocumentAssets::lookup(
 void DocumentAssets::deliver(const std::string& key, Entry entry)
 {
     m_loading.erase(key);
+    const std::shared_ptr<const Environment> undecoded
+        = entry.environment && !entry.environment->decoded() ? entry.environment : nullptr;
     m_entries[key] = std::move(entry);
     Q_EMIT assetArrived();
+    if (undecoded) {
+        // Its pixels, off the GUI thread (shared by every copy): what reads them (a disk-cache
+        // miss, fis and reference, thumbnails) finds them decoded, or waits for this.
+        QPointer<DocumentAssets> self(this);
+        m_pool.start([self, undecoded] {
+            undecoded->image();
+            QMetaObject::invokeMethod(
+                self.data(),
+                [self, undecoded] {
+                    if (self)
+                        Q_EMIT self->environmentDecoded(undecoded->contentHash());
+                },
+                Qt::QueuedConnection);
+        });
+    }
 }
 
 bool DocumentAssets::isLoading(Kind kind, const std::string& name) const

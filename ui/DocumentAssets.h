@@ -73,6 +73,9 @@ public:
 Q_SIGNALS:
     // An asset finished loading (or failed): whoever waits for it asks again.
     void assetArrived();
+    // An environment delivered before its pixels were decoded (found in the environment index)
+    // now has them (Environment::decoded()); `contentHash` is its Environment::contentHash().
+    void environmentDecoded(quint64 contentHash);
 
 private:
     struct Entry {

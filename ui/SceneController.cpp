@@ -41,6 +41,12 @@ SceneController::SceneController(Document* document, DocumentAssets* assets, QOb
     m_mapPool.setMaxThreadCount(std::clamp(QThread::idealThreadCount() - 1, 1, 4));
     connect(m_document, &Document::changed, this, &SceneController::onDocumentChanged);
     connect(m_documentAssets, &DocumentAssets::assetArrived, this, &SceneController::onAssetArrived);
+    // The environment shown got its pixels (it came from the environment index undecoded): what
+    // waits for them (a refinement by fis or reference) can start.
+    connect(m_documentAssets, &DocumentAssets::environmentDecoded, this, [this](quint64 contentHash) {
+        if (m_environmentHeld && m_environmentHeld->contentHash() == contentHash)
+            Q_EMIT sceneChanged(false);
+    });
     loadEnvironment();
     loadMesh();
     loadMaps(DocumentChange::WholeProject);

@@ -188,8 +188,11 @@ void ViewportWidget::paintGL()
     // previews too); any change of the scene starts it again.
     // Nor before the view has the environment's lighting: a frame takes it up first (from
     // memory, or asking the lighting worker), and the refinement starts after it.
+    // Nor before the environment's pixels are decoded (it came from the environment index): the
+    // sampled methods read them, and they arrive with a scene change.
     const bool wantsRefinement = !m_previewing && m_scene->refinementMethod() != IblMethod::SplitSum
-        && m_scene->pendingMapLoads() == 0 && !m_renderer->hasPendingUploads();
+        && m_scene->pendingMapLoads() == 0 && !m_renderer->hasPendingUploads()
+        && m_scene->assets().environment.decoded();
     const bool neededIbl = m_renderer->needsIbl(*m_scene);
     const bool refining = wantsRefinement && !neededIbl;
     bool ok = false;
