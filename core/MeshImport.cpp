@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -144,15 +145,54 @@ PartInfo appendInstance(Mesh& out, const Instance& instance, std::size_t index)
     return {hasUvs, hasTangents};
 }
 
-// Assimp 5.2's PLY reader can loop forever on a header without a complete "end_header" line (a
-// file cut short, or a damaged keyword; found by fuzzing with mutated files, docs/meshes.md). A PLY
-// file (by extension or by its "ply" magic, which Assimp also goes by) must show that line
-// within its first MiB before Assimp sees it. Empty when the file is fine or not a PLY.
+// A PLY header as the checks below read it: the format and each element with its count and
+// properties. Parsed once from the lines before "end_header".
+struct PlyHeader {
+    struct Property {
+        bool list = false; // "property list ..."
+        QByteArray type; // a scalar's type, or a whole list line's count type
+    };
+    struct Element {
+        QByteArray name;
+        double count = 0; // a double: counts up to 2^32 times properties overflow nothing
+        QByteArray countText; // as written
+        std::vector<Property> properties;
+    };
+    bool ascii = false;
+    std::vector<Element> elements;
+};
+
+// nullopt with *problem for an element count that is not a number (or negative).
+std::optional<PlyHeader> parsePlyHeader(const QList<QByteArray>& lines, std::string* problem)
+{
+    PlyHeader header;
+    for (const QByteArray& rawLine : lines) {
+        const QList<QByteArray> words = rawLine.simplified().split(' ');
+        if (words.size() >= 2 && words[0] == "format") {
+            header.ascii = words[1] == "ascii";
+        } else if (words.size() >= 3 && words[0] == "element") {
+            bool ok = false;
+            const double count = words[2].toDouble(&ok);
+            if (!ok || count < 0) {
+                *problem = "broken PLY header: element \"" + words[1].toStdString() + "\" has the count \""
+                    + words[2].toStdString() + "\"";
+                return std::nullopt;
+            }
+            header.elements.push_back({words[1], count, words[2], {}});
+        } else if (words.size() >= 3 && words[0] == "property" && !header.elements.empty()) {
+            const bool list = words[1] == "list";
+            header.elements.back().properties.push_back(
+                {list, list && words.size() >= 5 ? words[2] : words[1]});
+        }
+    }
+    return header;
+}
+
 // The fewest bytes the elements a PLY header declares can take: in ASCII each value is at least
 // one digit and one separator, in binary each scalar its size and each list its count. A header
 // claiming more than the file holds (210 bytes declaring 10 million vertices) is refused here,
 // before Assimp reserves memory for it and reads on for minutes.
-std::string plyBodyProblem(const QList<QByteArray>& header, qint64 bodyBytes)
+std::string plyBodyProblem(const PlyHeader& header, qint64 bodyBytes)
 {
     const auto scalarBytes = [](const QByteArray& type) -> double {
         static const std::pair<const char*, int> kSizes[] = {{"char", 1}, {"uchar", 1}, {"int8", 1},
@@ -163,34 +203,20 @@ std::string plyBodyProblem(const QList<QByteArray>& header, qint64 bodyBytes)
                 return bytes;
         return 1;
     };
-    bool ascii = false;
-    double needed = 0; // bytes; a double, as counts up to 2^32 times properties overflow nothing
-    double elementCount = 0;
-    double elementBytes = 0;
+    double needed = 0; // bytes
     std::string claimed;
-    // An element without (known) properties still costs its reader a loop per instance: count it
-    // as a byte each (a line in ASCII), so 1e11 of them in a 246-byte file are refused too.
-    const auto closeElement = [&] { needed += elementCount * std::max(elementBytes, 1.0); };
-    for (const QByteArray& rawLine : header) {
-        const QList<QByteArray> words = rawLine.simplified().split(' ');
-        if (words.size() >= 2 && words[0] == "format") {
-            ascii = words[1] == "ascii";
-        } else if (words.size() >= 3 && words[0] == "element") {
-            closeElement();
-            bool ok = false;
-            elementCount = words[2].toDouble(&ok);
-            if (!ok || elementCount < 0)
-                return "broken PLY header: element \"" + words[1].toStdString() + "\" has the count \""
-                    + words[2].toStdString() + "\"";
-            elementBytes = 0;
-            claimed += (claimed.empty() ? "" : ", ") + words[2].toStdString() + " " + words[1].toStdString();
-        } else if (words.size() >= 3 && words[0] == "property") {
-            const bool list = words[1] == "list" && words.size() >= 5;
-            elementBytes += ascii ? 2.0 : scalarBytes(list ? words[2] : words[1]);
-        }
+    for (const PlyHeader::Element& element : header.elements) {
+        double elementBytes = 0;
+        for (const PlyHeader::Property& property : element.properties)
+            elementBytes += header.ascii ? 2.0 : scalarBytes(property.type);
+        // An element without (known) properties still costs its reader a loop per instance:
+        // count it as a byte each (a line in ASCII), so 1e11 of them in a 246-byte file are
+        // refused too.
+        needed += element.count * std::max(elementBytes, 1.0);
+        claimed += (claimed.empty() ? "" : ", ") + element.countText.toStdString() + " "
+            + element.name.toStdString();
     }
-    closeElement();
-    if (ascii && needed > 0)
+    if (header.ascii && needed > 0)
         needed -= 1; // the last value needs no separator
     if (needed > double(bodyBytes))
         return "broken PLY file: its header declares " + claimed + " elements, at least "
@@ -203,36 +229,27 @@ std::string plyBodyProblem(const QList<QByteArray>& header, qint64 bodyBytes)
 // values as it says, past the end of the file, so a count of 99999999999 in a 258-byte file ran
 // for minutes. Elements are taken a line each (as writers write them); a list count larger than
 // every value left in the file is refused.
-std::string plyAsciiListProblem(const QList<QByteArray>& header, const QByteArray& body)
+std::string plyAsciiListProblem(const PlyHeader& header, const QByteArray& body)
 {
-    struct Element {
-        QByteArray name;
-        double count = 0;
-        std::vector<bool> lists; // per property: a list?
+    const auto hasList = [](const PlyHeader::Element& e) {
+        return std::any_of(e.properties.begin(), e.properties.end(), [](const auto& p) { return p.list; });
     };
-    std::vector<Element> elements;
-    for (const QByteArray& rawLine : header) {
-        const QList<QByteArray> words = rawLine.simplified().split(' ');
-        if (words.size() >= 3 && words[0] == "element")
-            elements.push_back({words[1], words[2].toDouble(), {}});
-        else if (words.size() >= 3 && words[0] == "property" && !elements.empty())
-            elements.back().lists.push_back(words[1] == "list");
-    }
-    const bool anyList = std::any_of(elements.begin(), elements.end(),
-        [](const Element& e) { return std::find(e.lists.begin(), e.lists.end(), true) != e.lists.end(); });
-    if (!anyList)
+    if (std::none_of(header.elements.begin(), header.elements.end(), hasList))
         return {};
-    const QList<QByteArray> lines = body.split('\n');
+    // Each line's values, split once.
+    std::vector<QList<QByteArray>> lines;
     double remaining = 0; // values left in the file from the current line on
-    for (const QByteArray& line : lines)
-        remaining += double(line.simplified().count(' ') + (line.simplified().isEmpty() ? 0 : 1));
+    for (const QByteArray& rawLine : body.split('\n')) {
+        const QByteArray simple = rawLine.simplified();
+        if (simple.isEmpty())
+            continue;
+        lines.push_back(simple.split(' '));
+        remaining += double(lines.back().size());
+    }
+    const std::vector<PlyHeader::Element>& elements = header.elements;
     std::size_t element = 0;
     double instance = 0;
-    for (const QByteArray& rawLine : lines) {
-        const QByteArray simple = rawLine.simplified();
-        const QList<QByteArray> values = simple.isEmpty() ? QList<QByteArray>() : simple.split(' ');
-        if (values.isEmpty())
-            continue;
+    for (const QList<QByteArray>& values : lines) {
         while (element < elements.size() && instance >= elements[element].count) {
             ++element;
             instance = 0;
@@ -240,8 +257,8 @@ std::string plyAsciiListProblem(const QList<QByteArray>& header, const QByteArra
         if (element >= elements.size())
             break;
         qsizetype at = 0;
-        for (std::size_t p = 0; p < elements[element].lists.size() && at < values.size(); ++p) {
-            if (!elements[element].lists[p]) {
+        for (std::size_t p = 0; p < elements[element].properties.size() && at < values.size(); ++p) {
+            if (!elements[element].properties[p].list) {
                 ++at;
                 continue;
             }
@@ -258,6 +275,12 @@ std::string plyAsciiListProblem(const QList<QByteArray>& header, const QByteArra
     return {};
 }
 
+// Assimp 5.2's PLY reader can loop forever on a header without a complete "end_header" line (a
+// file cut short, or a damaged keyword; found by fuzzing with mutated files, docs/meshes.md). A PLY
+// file (by extension or by its "ply" magic, which Assimp also goes by) must show that line
+// within its first MiB before Assimp sees it; its body must hold what the header declares
+// (plyBodyProblem) and, in ASCII, what its lists count (plyAsciiListProblem). Empty when the file
+// is fine or not a PLY.
 std::string plyHeaderProblem(const QString& path)
 {
     QFile file(path);
@@ -274,15 +297,18 @@ std::string plyHeaderProblem(const QString& path)
     qsizetype headerBytes = 0;
     for (qsizetype i = 0; i + 1 < lines.size(); ++i) {
         headerBytes += lines[i].size() + 1;
-        if (lines[i].trimmed() == "end_header") {
-            if (std::string problem = plyBodyProblem(lines.mid(0, i), file.size() - headerBytes);
-                !problem.empty())
-                return problem;
-            if (!lines.mid(0, i).join('\n').contains("format ascii"))
-                return {};
-            file.seek(headerBytes);
-            return plyAsciiListProblem(lines.mid(0, i), file.readAll());
-        }
+        if (lines[i].trimmed() != "end_header")
+            continue;
+        std::string problem;
+        const std::optional<PlyHeader> header = parsePlyHeader(lines.mid(0, i), &problem);
+        if (!header)
+            return problem;
+        if (problem = plyBodyProblem(*header, file.size() - headerBytes); !problem.empty())
+            return problem;
+        if (!header->ascii)
+            return {};
+        file.seek(headerBytes);
+        return plyAsciiListProblem(*header, file.readAll());
     }
     return "broken PLY header: no \"end_header\" line in the first MiB (the file may be cut short)";
 }
