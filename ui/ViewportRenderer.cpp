@@ -231,12 +231,16 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
     QElapsedTimer clock;
     clock.start();
     m_stats.iblMs = 0.0;
-    const auto fail = [&](const std::string& problem) {
-        *error = "ViewportRenderer::paint: " + problem;
+    // The empty viewport's grey: a frame that failed, or one with no lighting yet.
+    const auto clearToGrey = [&] {
         glBindFramebuffer(GL_FRAMEBUFFER, targetFramebuffer);
         glViewport(0, 0, width, height);
         glClearColor(kFailureGrey, kFailureGrey, kFailureGrey, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    };
+    const auto fail = [&](const std::string& problem) {
+        *error = "ViewportRenderer::paint: " + problem;
+        clearToGrey();
         return false;
     };
 
@@ -293,10 +297,7 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
         return fail(m_iblError);
     if (!m_ibl && m_stats.lightingPending) {
         // Nothing to light with yet: the empty grey until the worker's set arrives.
-        glBindFramebuffer(GL_FRAMEBUFFER, targetFramebuffer);
-        glViewport(0, 0, width, height);
-        glClearColor(kFailureGrey, kFailureGrey, kFailureGrey, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        clearToGrey();
         m_stats.width = width;
         m_stats.height = height;
         m_stats.frameMs = double(clock.nsecsElapsed()) / 1e6;
