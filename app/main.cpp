@@ -4,8 +4,8 @@
 
 #include "BakeCommand.h"
 #include "BenchCommand.h"
-#include "ExportCommand.h"
 #include "CommandLine.h"
+#include "ExportCommand.h"
 #include "RenderCommand.h"
 #include "SheetCommand.h"
 #include "WindowScreenshot.h"

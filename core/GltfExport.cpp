@@ -264,7 +264,9 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
         const TextureSetPlan& set = plan.job->plans().front();
         for (std::size_t f = 0; f < set.files.size(); ++f) {
             const PlannedTexture& texture = set.files[f];
-            const std::vector<float> values = plan.job->fileValues(0, f);
+            const std::vector<float> values = plan.job->fileValues(0, f, &problem);
+            if (values.empty())
+                return fail(problem);
             std::vector<unsigned char> encoded;
             const std::string filePath = files.path(texture.fileName);
             if (!encodeImageFile(

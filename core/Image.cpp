@@ -9,9 +9,6 @@
 
 #include <QtGlobal>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include "core/ImageReader.h"
 #include "core/ImageWriter.h"
 
@@ -185,7 +182,8 @@ private:
     {
         while (m_next < m_out.height() && m_rows.end[std::size_t(m_next)] <= y) {
             if (!m_pending.empty()) {
-                const double rowCount = double(m_rows.end[std::size_t(m_next)] - m_rows.begin[std::size_t(m_next)]);
+                const double rowCount
+                    = double(m_rows.end[std::size_t(m_next)] - m_rows.begin[std::size_t(m_next)]);
                 const std::vector<glm::dvec4>& sums = m_pending.front();
                 for (int x = 0; x < m_out.width(); ++x) {
                     const double count
@@ -230,8 +228,7 @@ std::optional<Image> Image::loadBoxFiltered(const std::string& path, bool linear
         std::optional<ImageReader> reader = ImageReader::open(path, kFunction, error);
         if (!reader || !reader->checkHeader(kFunction, error))
             return std::nullopt;
-        OIIO::ImageInput* input = &reader->input();
-        const OIIO::ImageSpec& spec = reader->spec();
+        const CodecHeader& spec = reader->header();
         if (spec.width > kMaxDimension || spec.height > kMaxDimension) {
             setImageError(error, kFunction, path,
                 "image too large: " + std::to_string(spec.width) + "x" + std::to_string(spec.height)
@@ -252,19 +249,15 @@ std::optional<Image> Image::loadBoxFiltered(const std::string& path, bool linear
             = std::clamp(int((std::size_t(1) << 20) / std::size_t(spec.width)), 1, spec.height);
         Image band(spec.width, bandRows, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         band.m_encoding = reader->encoding();
-        const int readChannels = std::min(spec.nchannels, 4);
-        const OIIO::stride_t xstride = sizeof(glm::vec4);
-        const OIIO::stride_t ystride = xstride * OIIO::stride_t(spec.width);
+        const int readChannels = std::min(spec.channels, 4);
+        const std::ptrdiff_t xstride = sizeof(glm::vec4);
+        const std::ptrdiff_t ystride = xstride * std::ptrdiff_t(spec.width);
         for (int start = 0; start < spec.height; start += bandRows) {
             const int count = std::min(bandRows, spec.height - start);
-            if (!input->read_scanlines(0, 0, start, start + count, 0, 0, readChannels, OIIO::TypeDesc::FLOAT,
-                    band.data(), xstride, ystride)) {
-                const std::string reason = input->geterror();
-                setImageError(error, kFunction, path,
-                    reason.empty() ? std::string("could not read the pixels") : reason);
+            if (!reader->read(start, start + count, readChannels, CodecSample::Float, band.data(), xstride,
+                    ystride, kFunction, error))
                 return std::nullopt;
-            }
-            fillMissingChannels(band.m_pixels, spec.nchannels, reader->twoColourChannels());
+            fillMissingChannels(band.m_pixels, spec.channels, reader->twoColourChannels());
             const ImageLoadStats replaced = band.sanitize();
             if (stats) {
                 stats->nanCount += replaced.nanCount;
@@ -277,10 +270,9 @@ std::optional<Image> Image::loadBoxFiltered(const std::string& path, bool linear
                 filter.addRow(&band.at(0, r), start + r);
             band.m_encoding = reader->encoding();
         }
-        input->close();
         Image out = filter.finish();
         out.m_encoding = linear ? ColorEncoding::Linear : reader->encoding();
-        out.m_sourceChannels = spec.nchannels;
+        out.m_sourceChannels = spec.channels;
         out.m_colorSpaceName = reader->colorSpaceName();
         return out;
     } catch (...) {
@@ -298,8 +290,7 @@ std::optional<Image> Image::load(const std::string& path, std::string* error, Im
         std::optional<ImageReader> reader = ImageReader::open(path, kFunction, error);
         if (!reader)
             return std::nullopt;
-        OIIO::ImageInput* input = &reader->input();
-        const OIIO::ImageSpec& spec = reader->spec();
+        const CodecHeader& spec = reader->header();
 
         // Only the header has been read so far: check what it claims before allocating a
         // single pixel, so a crafted or corrupt header cannot make us ask for terabytes.
@@ -322,25 +313,19 @@ std::optional<Image> Image::load(const std::string& path, std::string* error, Im
             return std::nullopt;
 
         Image image(spec.width, spec.height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-        image.m_sourceChannels = spec.nchannels;
+        image.m_sourceChannels = spec.channels;
         image.m_colorSpaceName = reader->colorSpaceName();
         image.m_encoding = reader->encoding();
 
         // Read at most four channels straight into the RGBA pixels (the stride skips the rest),
         // so a file with dozens of AOV channels costs no more memory than an RGBA one.
-        const int readChannels = std::min(spec.nchannels, 4);
-        const OIIO::stride_t xstride = sizeof(glm::vec4);
-        const OIIO::stride_t ystride = xstride * OIIO::stride_t(spec.width);
-        if (!input->read_image(
-                0, 0, 0, readChannels, OIIO::TypeDesc::FLOAT, image.data(), xstride, ystride)) {
-            std::string reason = input->geterror();
-            setImageError(
-                error, kFunction, path, reason.empty() ? std::string("could not read the pixels") : reason);
+        const int readChannels = std::min(spec.channels, 4);
+        const std::ptrdiff_t xstride = sizeof(glm::vec4);
+        const std::ptrdiff_t ystride = xstride * std::ptrdiff_t(spec.width);
+        if (!reader->readAll(
+                readChannels, CodecSample::Float, image.data(), xstride, ystride, kFunction, error))
             return std::nullopt;
-        }
-        input->close();
-
-        fillMissingChannels(image.m_pixels, spec.nchannels, reader->twoColourChannels());
+        fillMissingChannels(image.m_pixels, spec.channels, reader->twoColourChannels());
 
         const ImageLoadStats replaced = image.sanitize();
         if (stats)
@@ -362,17 +347,13 @@ bool Image::save(const std::string& path, std::string* error, bool alpha,
     }
     try {
         // The format decides the samples: EXR half floats, HDR/PFM floats, the rest 8 bits.
-        std::unique_ptr<OIIO::ImageOutput> probe = OIIO::ImageOutput::create(path);
-        if (!probe) {
-            setImageError(error, kFunction, path, OIIO::geterror());
+        CodecWriterInfo writer;
+        if (!imageWriterFor(path, &writer, kFunction, error))
             return false;
-        }
-        const std::string formatName = probe->format_name();
-        const bool isExr = formatName == "openexr";
+        const bool isExr = writer.formatName == "openexr";
         // Formats that store floats and nothing else; everything else gets 8 bits.
-        const bool isFloatOnly = formatName == "hdr" || formatName == "pfm";
-        const bool writeAlpha = alpha && probe->supports("alpha");
-        probe.reset();
+        const bool isFloatOnly = writer.formatName == "hdr" || writer.formatName == "pfm";
+        const bool writeAlpha = alpha && writer.alpha;
 
         ImageFileSpec spec;
         spec.width = m_width;

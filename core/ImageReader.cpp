@@ -291,8 +291,6 @@ std::optional<ImageReader> ImageReader::open(
             return std::nullopt;
         }
         reader.m_embedded = std::make_unique<std::vector<unsigned char>>(std::move(*bytes));
-        reader.m_memory = std::make_unique<OIIO::Filesystem::IOMemReader>(
-            reader.m_embedded->data(), reader.m_embedded->size());
         openName = "embedded" + extensionForEncodedImage(*reader.m_embedded, mimeType);
     } else if (check.kind == FileKind::Folder) {
         setImageError(error, function, path, "is a directory, not an image");
@@ -312,19 +310,19 @@ std::optional<ImageReader> ImageReader::open(
         }
     }
 
-    // Leave unassociated alpha as the file stores it: OIIO would otherwise premultiply
-    // PNG/TIFF/TGA colour by alpha on read, and a base colour texture with a cut-out mask
-    // must keep its colour where alpha is 0.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    // OIIO 2.4's open(name, config, ioproxy) ignores the proxy when a config is given: the
-    // proxy travels in the config instead (a pointer to the pointer, TypeDesc::PTR).
-    void* proxy = reader.m_memory.get();
-    if (proxy)
-        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-    reader.m_input = OIIO::ImageInput::open(openName, &config);
-    if (!reader.m_input) {
-        setImageError(error, function, path, OIIO::geterror());
+    std::string problem;
+    const ImageCodec* codec = imageCodec(&problem);
+    if (!codec) {
+        setImageError(error, function, path, problem);
+        return std::nullopt;
+    }
+    const unsigned char* memory = reader.m_embedded ? reader.m_embedded->data() : nullptr;
+    reader.m_codec = codec;
+    reader.m_decoder = std::unique_ptr<ImageDecoder, Close>(
+        codec->open(openName, memory, reader.m_embedded ? reader.m_embedded->size() : 0, &problem),
+        Close {codec});
+    if (!reader.m_decoder) {
+        setImageError(error, function, path, problem);
         return std::nullopt;
     }
     return reader;
@@ -332,7 +330,7 @@ std::optional<ImageReader> ImageReader::open(
 
 bool ImageReader::checkHeader(const char* function, std::string* error) const
 {
-    const OIIO::ImageSpec& header = spec();
+    const CodecHeader& header = this->header();
     if (header.width <= 0 || header.height <= 0) {
         setImageError(error, function, m_path,
             "invalid size " + std::to_string(header.width) + "x" + std::to_string(header.height));
@@ -343,7 +341,7 @@ bool ImageReader::checkHeader(const char* function, std::string* error) const
             "volume images (depth " + std::to_string(header.depth) + ") are not supported");
         return false;
     }
-    if (header.nchannels <= 0) {
+    if (header.channels <= 0) {
         setImageError(error, function, m_path, "image has no channels");
         return false;
     }
@@ -352,7 +350,7 @@ bool ImageReader::checkHeader(const char* function, std::string* error) const
 
 bool ImageReader::checkSizeAgainstFile(const char* function, std::string* error) const
 {
-    const OIIO::ImageSpec& header = spec();
+    const CodecHeader& header = this->header();
     // No codec packs more than a few thousand pixels into a byte (deflate's best is about 1032:1
     // on bytes, 8 one-bit pixels each): a header claiming more than kMaxPixelsPerByte times the
     // file's size belongs to a cut-short or crafted file, and reading it would allocate for the
@@ -369,9 +367,15 @@ bool ImageReader::checkSizeAgainstFile(const char* function, std::string* error)
     return true;
 }
 
-std::string ImageReader::colorSpaceName() const
+bool ImageReader::read(int begin, int end, int channels, CodecSample as, void* data, std::ptrdiff_t xstride,
+    std::ptrdiff_t ystride, const char* function, std::string* error)
 {
-    return spec().get_string_attribute("oiio:ColorSpace");
+    if (m_codec->read(m_decoder.get(), begin, end, channels, as, data, xstride, ystride))
+        return true;
+    const std::string reason = m_codec->lastError(m_decoder.get());
+    setImageError(
+        error, function, m_path, reason.empty() ? std::string("could not read the pixels") : reason);
+    return false;
 }
 
 // What the numbers of a file mean. OIIO names the colour space when the format says it
@@ -389,11 +393,11 @@ ColorEncoding ImageReader::encoding() const
     if (name.find("linear") != std::string::npos || name.rfind("lin_", 0) == 0 || name == "acescg"
         || name == "aces2065-1" || name == "raw")
         return ColorEncoding::Linear;
-    switch (spec().format.basetype) {
-    case OIIO::TypeDesc::UINT8:
-    case OIIO::TypeDesc::INT8:
-    case OIIO::TypeDesc::UINT16:
-    case OIIO::TypeDesc::INT16:
+    switch (header().sample) {
+    case CodecSample::UInt8:
+    case CodecSample::Int8:
+    case CodecSample::UInt16:
+    case CodecSample::Int16:
         return ColorEncoding::SRGB;
     default:
         return ColorEncoding::Linear;
@@ -402,9 +406,9 @@ ColorEncoding ImageReader::encoding() const
 
 bool ImageReader::twoColourChannels() const
 {
-    const OIIO::ImageSpec& header = spec();
-    return header.nchannels == 2 && header.channelnames.size() == 2 && header.channelnames[0] == "R"
-        && header.channelnames[1] == "G";
+    const CodecHeader& header = this->header();
+    return header.channels == 2 && header.channelNames.size() == 2 && header.channelNames[0] == "R"
+        && header.channelNames[1] == "G";
 }
 
 } // namespace facet

@@ -1,7 +1,7 @@
 #pragma once
-// An image file opened through OpenImageIO with only its header read: what Image::load (float
-// RGBA, environments) and MapImage::load (material maps in their own bit depth) share. It refuses
-// what must never be read (a folder, a device, a FIFO), reads an image embedded in a glTF asset
+// An image file opened through the image codec (core/ImageCodec.h) with only its header read: what
+// Image::load (float RGBA, environments) and MapImage::load (material maps in their own bit depth) share. It
+// refuses what must never be read (a folder, a device, a FIFO), reads an image embedded in a glTF asset
 // ("asset.glb#images/2", core/GltfImport.h) from memory, and keeps alpha unassociated (as
 // PNG/TIFF store it: a cut-out base colour keeps its colour where alpha is 0).
 //
@@ -12,10 +12,8 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include "core/Image.h"
+#include "core/ImageCodec.h"
 
 namespace facet {
 
@@ -29,10 +27,19 @@ public:
     ImageReader& operator=(ImageReader&&) = default;
     ~ImageReader();
 
-    OIIO::ImageInput& input() { return *m_input; }
-    const OIIO::ImageSpec& spec() const { return m_input->spec(); }
+    const CodecHeader& header() const { return m_codec->header(m_decoder.get()); }
+    // Reads rows [begin, end) as ImageDecoder::read does; false with *error
+    // "<function>: <path>: <the decoder's message>".
+    bool read(int begin, int end, int channels, CodecSample as, void* data, std::ptrdiff_t xstride,
+        std::ptrdiff_t ystride, const char* function, std::string* error);
+    // The whole image.
+    bool readAll(int channels, CodecSample as, void* data, std::ptrdiff_t xstride, std::ptrdiff_t ystride,
+        const char* function, std::string* error)
+    {
+        return read(0, header().height, channels, as, data, xstride, ystride, function, error);
+    }
     // The file's colour-space name as OpenImageIO reported it ("sRGB", "Linear", ...), if any.
-    std::string colorSpaceName() const;
+    const std::string& colorSpaceName() const { return header().colorSpaceName; }
     // What the numbers mean: SRGB when the colour space says sRGB (or a gamma curve), Linear when
     // it says linear; without either, 8/16-bit integer files are SRGB and float files Linear.
     ColorEncoding encoding() const;
@@ -53,10 +60,14 @@ private:
 
     std::string m_path;
     long long m_fileSize = -1; // of the file at m_path (-1: embedded, or unknown)
-    // The memory an embedded image is decoded from; must outlive m_input.
+    // The memory an embedded image is decoded from; must outlive m_decoder.
     std::unique_ptr<std::vector<unsigned char>> m_embedded;
-    std::unique_ptr<OIIO::Filesystem::IOMemReader> m_memory;
-    std::unique_ptr<OIIO::ImageInput> m_input;
+    const ImageCodec* m_codec = nullptr;
+    struct Close {
+        const ImageCodec* codec;
+        void operator()(ImageDecoder* decoder) const { codec->close(decoder); }
+    };
+    std::unique_ptr<ImageDecoder, Close> m_decoder {nullptr, Close {nullptr}};
 };
 
 // "<function>: <path>: <problem>" on one line (OIIO's messages can span several lines).

@@ -4,10 +4,8 @@
 #include <cmath>
 #include <memory>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include "core/AtomicFile.h"
+#include "core/ImageCodec.h"
 #include "core/ImageReader.h"
 
 namespace facet {
@@ -16,19 +14,19 @@ namespace {
 
 constexpr float kLargestHalf = 65504.0f; // the largest finite IEEE 754 binary16 value
 
-OIIO::TypeDesc typeOf(FileSampleFormat format)
+CodecSample sampleOf(FileSampleFormat format)
 {
     switch (format) {
     case FileSampleFormat::UInt16:
-        return OIIO::TypeDesc::UINT16;
+        return CodecSample::UInt16;
     case FileSampleFormat::Half:
-        return OIIO::TypeDesc::HALF;
+        return CodecSample::Half;
     case FileSampleFormat::Float:
-        return OIIO::TypeDesc::FLOAT;
+        return CodecSample::Float;
     case FileSampleFormat::UInt8:
         break;
     }
-    return OIIO::TypeDesc::UINT8;
+    return CodecSample::UInt8;
 }
 
 bool isFloat(FileSampleFormat format)
@@ -51,6 +49,17 @@ const char* toString(FileSampleFormat format)
         break;
     }
     return "8-bit";
+}
+
+bool imageWriterFor(const std::string& path, CodecWriterInfo* info, const char* function, std::string* error)
+{
+    std::string problem;
+    const ImageCodec* codec = imageCodec(&problem);
+    if (!codec || !codec->writer(path, info, &problem)) {
+        setImageError(error, function, path, problem);
+        return false;
+    }
+    return true;
 }
 
 bool writeImageFile(const std::string& path, const ImageFileSpec& spec, const float* pixels,
@@ -87,40 +96,33 @@ bool encodeImageFile(const std::string& path, const ImageFileSpec& spec, const f
         // encoded file (smaller than the float buffer below). With OIIO 2.4.7 the bytes are
         // identical to what the writer puts in a file (compared for exr, png, hdr, jpg, tif, tga,
         // bmp, webp, ppm). The writer is chosen by the extension of `path`.
-        std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
-        if (!output) {
-            setImageError(error, function, path, OIIO::geterror());
+        CodecWriterInfo writer;
+        if (!imageWriterFor(path, &writer, function, error))
             return false;
-        }
-        const std::string formatName = output->format_name();
         // A few writers (sgi, ico, rla, fits, heif in OIIO 2.4) only write to a file by name;
         // they are refused rather than written unchecked.
-        if (!output->supports("ioproxy")) {
+        if (!writer.inMemory) {
             setImageError(error, function, path,
-                "cannot write " + formatName
+                "cannot write " + writer.formatName
                     + " files safely (OpenImageIO cannot encode them in memory to check the write); "
                       "use .exr, .png, .hdr, .tif, .jpg or .tga");
             return false;
         }
 
-        OIIO::ImageSpec fileSpec(spec.width, spec.height, spec.channels, typeOf(spec.sampleFormat));
+        CodecEncodeSpec fileSpec;
+        fileSpec.width = spec.width;
+        fileSpec.height = spec.height;
+        fileSpec.channels = spec.channels;
+        fileSpec.sample = sampleOf(spec.sampleFormat);
         const bool hasAlpha = spec.alpha && (spec.channels == 2 || spec.channels == 4);
-        fileSpec.alpha_channel = hasAlpha ? spec.channels - 1 : -1;
-        if (isFloat(spec.sampleFormat)) {
-            fileSpec.attribute("oiio:ColorSpace", "Linear");
-        } else {
-            // The caller encoded the values; only an sRGB claim is written.
-            if (spec.encoding == ColorEncoding::SRGB)
-                fileSpec.attribute("oiio:ColorSpace", "sRGB");
-            else if (spec.tagLinear)
-                fileSpec.attribute("oiio:ColorSpace", "Linear");
-            // The colour values are not premultiplied: keep OIIO from dividing them by alpha.
-            fileSpec.attribute("oiio:UnassociatedAlpha", 1);
-        }
-        if (formatName == "openexr")
-            fileSpec.attribute("compression", "zip");
-        for (const auto& [name, value] : spec.attributes)
-            fileSpec.attribute(name, value);
+        fileSpec.alphaChannel = hasAlpha ? spec.channels - 1 : -1;
+        if (isFloat(spec.sampleFormat))
+            fileSpec.colorSpaceName = "Linear";
+        else if (spec.encoding == ColorEncoding::SRGB) // the caller encoded the values
+            fileSpec.colorSpaceName = "sRGB";
+        else if (spec.tagLinear)
+            fileSpec.colorSpaceName = "Linear";
+        fileSpec.attributes = spec.attributes;
 
         // Convert to what the file can hold ourselves, so nothing depends on OIIO's choices:
         // finite values beyond the half range would become Inf in an EXR, and integer files
@@ -135,32 +137,18 @@ bool encodeImageFile(const std::string& path, const ImageFileSpec& spec, const f
                 value = std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, 1.0f);
         }
 
-        std::vector<unsigned char> encoded;
-        OIIO::Filesystem::IOVecOutput memory(encoded);
-        OIIO::Filesystem::IOProxy* proxy = &memory;
-        fileSpec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-        if (!output->open(path, fileSpec)) {
-            setImageError(error, function, path, "cannot encode: " + output->geterror());
-            return false;
-        }
-        // A writer that cannot hold the samples asked for changes them (TGA: 8 bits): refuse
-        // instead, the caller promised the user a bit depth.
-        if (output->spec().format != fileSpec.format) {
+        std::string problem;
+        bool sampleRefused = false;
+        // (imageWriterFor loaded the codec.)
+        if (!imageCodec(nullptr)->encode(path, fileSpec, buffer.data(), result, &sampleRefused, &problem)) {
+            // A writer that cannot hold the samples asked for changes them (TGA: 8 bits): refuse
+            // instead, the caller promised the user a bit depth.
             setImageError(error, function, path,
-                formatName + " files cannot hold " + toString(spec.sampleFormat) + " samples");
+                sampleRefused
+                    ? writer.formatName + " files cannot hold " + toString(spec.sampleFormat) + " samples"
+                    : problem);
             return false;
         }
-        const bool written = output->write_image(OIIO::TypeDesc::FLOAT, buffer.data());
-        std::string reason = written ? std::string() : output->geterror();
-        const bool closed = output->close();
-        if (reason.empty() && !closed)
-            reason = output->geterror();
-        if (!written || !closed) {
-            setImageError(error, function, path, "encoding failed: " + reason);
-            return false;
-        }
-        output.reset();
-        *result = std::move(encoded);
         return true;
     } catch (...) {
         setImageErrorFromException(error, function, path, "writing");

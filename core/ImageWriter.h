@@ -1,10 +1,9 @@
 #pragma once
-// Writing pixels to an image file through OpenImageIO, checked: what Image::save (float RGBA:
-// renders, bakes, sheets) and the texture-set export (core/TextureSetExport: 1 to 4 channels,
-// 8 or 16 bits, half or float) share. OpenImageIO encodes into memory and the bytes go to disk
-// through writeFileAtomically (core/AtomicFile.h), so a failed write, a full disk included, never
-// leaves half a file nor harms an existing one (see Image::save for why OIIO may not write the
-// file itself).
+// Writing pixels to an image file through the image codec (OpenImageIO), checked: what Image::save (float
+// RGBA: renders, bakes, sheets) and the texture-set export (core/TextureSetExport: 1 to 4 channels, 8 or 16
+// bits, half or float) share. OpenImageIO encodes into memory and the bytes go to disk through
+// writeFileAtomically (core/AtomicFile.h), so a failed write, a full disk included, never leaves half a file
+// nor harms an existing one (see Image::save for why OIIO may not write the file itself).
 
 #include <string>
 #include <utility>
@@ -13,6 +12,8 @@
 #include "core/Image.h" // ColorEncoding
 
 namespace facet {
+
+struct CodecWriterInfo;
 
 // How each sample is stored in the file.
 enum class FileSampleFormat { UInt8, UInt16, Half, Float };
@@ -36,6 +37,11 @@ struct ImageFileSpec {
     // String metadata for formats that hold it (EXR header attributes, PNG text).
     std::vector<std::pair<std::string, std::string>> attributes;
 };
+
+// The writer `path`'s extension picks (its format's name, whether it stores alpha, whether it can
+// encode into memory). False with *error "<function>: <path>: <reason>" when there is none or
+// the image codec cannot be loaded.
+bool imageWriterFor(const std::string& path, CodecWriterInfo* info, const char* function, std::string* error);
 
 // Writes width x height x channels floats (rows top first, channels interleaved) to `path`, the
 // format chosen by its extension. Integer formats store the values clamped to [0, 1] and rounded

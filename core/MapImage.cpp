@@ -293,7 +293,7 @@ std::optional<MapImage> MapImage::load(
         std::optional<ImageReader> reader = ImageReader::open(path, kFunction, error);
         if (!reader)
             return std::nullopt;
-        const OIIO::ImageSpec& spec = reader->spec();
+        const CodecHeader& spec = reader->header();
         // Only the header has been read: refuse what is too large before allocating anything.
         if (!reader->checkHeader(kFunction, error))
             return std::nullopt;
@@ -311,20 +311,20 @@ std::optional<MapImage> MapImage::load(
             return std::nullopt;
 
         MapSampleType type = MapSampleType::UInt16;
-        switch (spec.format.basetype) {
-        case OIIO::TypeDesc::UINT8:
+        switch (spec.sample) {
+        case CodecSample::UInt8:
             type = MapSampleType::UInt8;
             break;
-        case OIIO::TypeDesc::HALF:
-        case OIIO::TypeDesc::FLOAT:
-        case OIIO::TypeDesc::DOUBLE:
+        case CodecSample::Half:
+        case CodecSample::Float:
+        case CodecSample::Double:
             type = MapSampleType::Half;
             break;
         default:
             break; // 16-bit, and the rare other integers (signed, 32-bit) as 16-bit unsigned
         }
         MapLayout layout = MapLayout::Rgba;
-        switch (std::min(spec.nchannels, 4)) {
+        switch (std::min(spec.channels, 4)) {
         case 1:
             layout = MapLayout::Grey;
             break;
@@ -339,24 +339,17 @@ std::optional<MapImage> MapImage::load(
         }
 
         MapImage map(spec.width, spec.height, layout, type);
-        map.m_sourceChannels = spec.nchannels;
+        map.m_sourceChannels = spec.channels;
         map.m_colorSpaceName = reader->colorSpaceName();
         map.m_encoding = reader->encoding();
         const int channels = map.channels();
-        OIIO::ImageInput& input = reader->input();
-        const auto fail = [&]() -> std::optional<MapImage> {
-            const std::string reason = input.geterror();
-            setImageError(
-                error, kFunction, path, reason.empty() ? std::string("could not read the pixels") : reason);
-            return std::nullopt;
-        };
 
         if (type == MapSampleType::Half) {
             // Float files are read as float, sanitised (as environments are), then halved: a
             // conversion straight to half would turn large finite values into Inf.
             std::vector<float> floats(map.pixelCount() * std::size_t(channels));
-            if (!input.read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, floats.data()))
-                return fail();
+            if (!reader->readAll(channels, CodecSample::Float, floats.data(), 0, 0, kFunction, error))
+                return std::nullopt;
             ImageLoadStats replaced;
             const std::size_t rowSamples = std::size_t(map.width()) * std::size_t(channels);
             std::vector<std::uint16_t> halves(rowSamples);
@@ -373,10 +366,9 @@ std::optional<MapImage> MapImage::load(
         } else {
             // Straight into the texels (OIIO converts other integer types to 16-bit), then
             // flipped in place so that row 0 is the bottom.
-            const OIIO::TypeDesc format
-                = type == MapSampleType::UInt8 ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::UINT16;
-            if (!input.read_image(0, 0, 0, channels, format, map.m_bytes.data()))
-                return fail();
+            const CodecSample as = type == MapSampleType::UInt8 ? CodecSample::UInt8 : CodecSample::UInt16;
+            if (!reader->readAll(channels, as, map.m_bytes.data(), 0, 0, kFunction, error))
+                return std::nullopt;
             std::vector<unsigned char> swap(map.rowBytes());
             for (int y = 0; y < map.height() / 2; ++y) {
                 unsigned char* top = map.m_bytes.data() + map.rowBytes() * std::size_t(y);
@@ -387,7 +379,6 @@ std::optional<MapImage> MapImage::load(
                 std::memcpy(bottom, swap.data(), swap.size());
             }
         }
-        input.close();
         map.measureSampleRanges();
         return map;
     } catch (...) {

@@ -8,9 +8,7 @@
 #include <set>
 #include <system_error>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
+#include "core/ImageCodec.h"
 #include "core/ImageWriter.h"
 #include "core/MapImageCache.h"
 #include "core/Parallel.h"
@@ -259,8 +257,10 @@ std::string describe(const PlannedTexture& texture)
     return text;
 }
 
+// The file's values, linear. Empty with *error when the resize cannot be done (the image codec
+// did not load).
 std::vector<float> renderTexture(const PlannedTexture& texture, const TextureSetPlan& plan,
-    const Material& material, const MaterialMapImages& images)
+    const Material& material, const MaterialMapImages& images, std::string* error)
 {
     const std::vector<ExportChannel>& channels = texture.output.channels;
     const int count = int(channels.size());
@@ -293,12 +293,16 @@ std::vector<float> renderTexture(const PlannedTexture& texture, const TextureSet
 
     // Resized as linear values, before any sRGB encoding: OIIO's default filters (a wide
     // Blackman-Harris going down, Lanczos going up).
-    const OIIO::ImageSpec sourceSpec(width, height, count, OIIO::TypeDesc::FLOAT);
-    const OIIO::ImageBuf source(sourceSpec, values.data());
-    OIIO::ImageBuf resized(OIIO::ImageSpec(texture.width, texture.height, count, OIIO::TypeDesc::FLOAT));
-    OIIO::ImageBufAlgo::resize(resized, source);
     std::vector<float> result(std::size_t(texture.width) * std::size_t(texture.height) * std::size_t(count));
-    resized.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, result.data());
+    std::string problem;
+    const ImageCodec* codec = imageCodec(&problem);
+    if (!codec
+        || !codec->resize(
+            values.data(), width, height, count, result.data(), texture.width, texture.height, &problem)) {
+        *error = texture.fileName + ": resizing to " + std::to_string(texture.width) + "x"
+            + std::to_string(texture.height) + ": " + problem;
+        return {};
+    }
     return result;
 }
 
@@ -348,7 +352,14 @@ bool writeTextureSet(const TextureSetPlan& plan, const Material& material, const
     };
     std::future<bool> pending;
     for (const PlannedTexture& texture : plan.files) {
-        std::vector<float> values = renderTexture(texture, plan, material, images);
+        std::string failure;
+        std::vector<float> values = renderTexture(texture, plan, material, images, &failure);
+        if (values.empty()) {
+            if (pending.valid())
+                pending.get();
+            problem = failure;
+            break;
+        }
         encodeTexture(texture, values);
         if (pending.valid() && !pending.get())
             break;
@@ -408,11 +419,11 @@ std::optional<TextureSetExport> TextureSetExport::prepare(const ExportTemplate& 
     return job;
 }
 
-std::vector<float> TextureSetExport::fileValues(std::size_t plan, std::size_t index) const
+std::vector<float> TextureSetExport::fileValues(std::size_t plan, std::size_t index, std::string* error) const
 {
     const PlannedTexture& texture = m_plans[plan].files[index];
     std::vector<float> values
-        = renderTexture(texture, m_plans[plan], m_sources[plan]->material, m_sources[plan]->images);
+        = renderTexture(texture, m_plans[plan], m_sources[plan]->material, m_sources[plan]->images, error);
     encodeTexture(texture, values);
     return values;
 }

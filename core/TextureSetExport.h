@@ -110,8 +110,9 @@ public:
 
     const ExportTemplate& exportTemplate() const { return m_template; }
     const std::vector<TextureSetPlan>& plans() const { return m_plans; }
-    // The stored values of file `index` of plan `plan` (renderTexture, then encodeTexture).
-    std::vector<float> fileValues(std::size_t plan, std::size_t index) const;
+    // The stored values of file `index` of plan `plan` (renderTexture, then encodeTexture). Empty
+    // with *error ("<file>: resizing to WxH: <why>") when the image codec cannot resize them.
+    std::vector<float> fileValues(std::size_t plan, std::size_t index, std::string* error) const;
     // Every file name, in writing order.
     std::vector<std::string> fileNames() const;
     // What --dry-run prints: per material a heading, a line per file (describe()), the optional

@@ -1,0 +1,267 @@
+// The image codec over OpenImageIO: built as libfacet_imageio.so, the one place OpenImageIO is
+// linked, and loaded by core/ImageCodec.cpp the first time an image is read or written. It
+// translates between core/ImageCodec.h's types and OpenImageIO's and decides nothing else.
+
+#include <exception>
+#include <memory>
+#include <new>
+#include <utility>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
+
+#include "core/ImageCodec.h"
+
+namespace facet {
+namespace {
+
+CodecSample sampleOf(OIIO::TypeDesc type)
+{
+    switch (type.basetype) {
+    case OIIO::TypeDesc::UINT8:
+        return CodecSample::UInt8;
+    case OIIO::TypeDesc::INT8:
+        return CodecSample::Int8;
+    case OIIO::TypeDesc::UINT16:
+        return CodecSample::UInt16;
+    case OIIO::TypeDesc::INT16:
+        return CodecSample::Int16;
+    case OIIO::TypeDesc::UINT32:
+        return CodecSample::UInt32;
+    case OIIO::TypeDesc::INT32:
+        return CodecSample::Int32;
+    case OIIO::TypeDesc::HALF:
+        return CodecSample::Half;
+    case OIIO::TypeDesc::FLOAT:
+        return CodecSample::Float;
+    case OIIO::TypeDesc::DOUBLE:
+        return CodecSample::Double;
+    default:
+        return CodecSample::Other;
+    }
+}
+
+OIIO::TypeDesc typeOf(CodecSample sample)
+{
+    switch (sample) {
+    case CodecSample::UInt8:
+        return OIIO::TypeDesc::UINT8;
+    case CodecSample::Int8:
+        return OIIO::TypeDesc::INT8;
+    case CodecSample::UInt16:
+        return OIIO::TypeDesc::UINT16;
+    case CodecSample::Int16:
+        return OIIO::TypeDesc::INT16;
+    case CodecSample::UInt32:
+        return OIIO::TypeDesc::UINT32;
+    case CodecSample::Int32:
+        return OIIO::TypeDesc::INT32;
+    case CodecSample::Half:
+        return OIIO::TypeDesc::HALF;
+    case CodecSample::Double:
+        return OIIO::TypeDesc::DOUBLE;
+    case CodecSample::Float:
+    case CodecSample::Other:
+        break;
+    }
+    return OIIO::TypeDesc::FLOAT;
+}
+
+// Exceptions do not cross the module's boundary as anything but a message.
+std::string messageOf(std::exception_ptr exception, const char* doing)
+{
+    try {
+        std::rethrow_exception(exception);
+    } catch (const std::bad_alloc&) {
+        return "out of memory";
+    } catch (const std::exception& e) {
+        return e.what();
+    } catch (...) {
+        return std::string("unknown error while ") + doing;
+    }
+}
+
+} // namespace
+
+// The opaque decoder of core/ImageCodec.h.
+struct ImageDecoder {
+    std::unique_ptr<OIIO::Filesystem::IOMemReader> memory; // what `input` reads an embedded image from
+    std::unique_ptr<OIIO::ImageInput> input;
+    CodecHeader header;
+    std::string exception; // an exception's message, when a read threw
+};
+
+namespace {
+
+ImageDecoder* open(const std::string& name, const unsigned char* memory, std::size_t size, std::string* error)
+{
+    try {
+        auto decoder = std::make_unique<ImageDecoder>();
+        if (memory)
+            decoder->memory = std::make_unique<OIIO::Filesystem::IOMemReader>(memory, size);
+        // Leave unassociated alpha as the file stores it: OIIO would otherwise premultiply
+        // PNG/TIFF/TGA colour by alpha on read.
+        OIIO::ImageSpec config;
+        config.attribute("oiio:UnassociatedAlpha", 1);
+        // OIIO 2.4's open(name, config, ioproxy) ignores the proxy when a config is given: the
+        // proxy travels in the config instead (a pointer to the pointer, TypeDesc::PTR).
+        void* proxy = decoder->memory.get();
+        if (proxy)
+            config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        decoder->input = OIIO::ImageInput::open(name, &config);
+        if (!decoder->input) {
+            *error = OIIO::geterror();
+            return nullptr;
+        }
+        const OIIO::ImageSpec& spec = decoder->input->spec();
+        decoder->header.width = spec.width;
+        decoder->header.height = spec.height;
+        decoder->header.depth = spec.depth;
+        decoder->header.channels = spec.nchannels;
+        decoder->header.sample = sampleOf(spec.format);
+        decoder->header.colorSpaceName = spec.get_string_attribute("oiio:ColorSpace");
+        decoder->header.channelNames = spec.channelnames;
+        return decoder.release();
+    } catch (...) {
+        *error = messageOf(std::current_exception(), "reading");
+    }
+    return nullptr;
+}
+
+const CodecHeader& header(const ImageDecoder* decoder)
+{
+    return decoder->header;
+}
+
+bool read(ImageDecoder* decoder, int begin, int end, int channels, CodecSample as, void* data,
+    std::ptrdiff_t xstride, std::ptrdiff_t ystride)
+{
+    try {
+        const OIIO::stride_t xs = xstride ? OIIO::stride_t(xstride) : OIIO::AutoStride;
+        const OIIO::stride_t ys = ystride ? OIIO::stride_t(ystride) : OIIO::AutoStride;
+        if (begin == 0 && end == decoder->header.height)
+            return decoder->input->read_image(0, 0, 0, channels, typeOf(as), data, xs, ys);
+        return decoder->input->read_scanlines(0, 0, begin, end, 0, 0, channels, typeOf(as), data, xs, ys);
+    } catch (...) {
+        decoder->exception = messageOf(std::current_exception(), "reading");
+    }
+    return false;
+}
+
+std::string lastError(ImageDecoder* decoder)
+{
+    std::string message = decoder->input->geterror();
+    if (message.empty())
+        message = std::exchange(decoder->exception, {});
+    return message;
+}
+
+void close(ImageDecoder* decoder)
+{
+    if (!decoder)
+        return;
+    decoder->input->close();
+    decoder->input.reset(); // before the memory it may read from
+    delete decoder;
+}
+
+bool writer(const std::string& path, CodecWriterInfo* info, std::string* error)
+{
+    try {
+        std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
+        if (!output) {
+            *error = OIIO::geterror();
+            return false;
+        }
+        info->formatName = output->format_name();
+        info->alpha = output->supports("alpha") != 0;
+        info->inMemory = output->supports("ioproxy") != 0;
+        return true;
+    } catch (...) {
+        *error = messageOf(std::current_exception(), "writing");
+    }
+    return false;
+}
+
+bool encode(const std::string& path, const CodecEncodeSpec& spec, const float* samples,
+    std::vector<unsigned char>* encoded, bool* sampleRefused, std::string* error)
+{
+    *sampleRefused = false;
+    try {
+        std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
+        if (!output) {
+            *error = OIIO::geterror();
+            return false;
+        }
+        OIIO::ImageSpec fileSpec(spec.width, spec.height, spec.channels, typeOf(spec.sample));
+        fileSpec.alpha_channel = spec.alphaChannel;
+        if (!spec.colorSpaceName.empty())
+            fileSpec.attribute("oiio:ColorSpace", spec.colorSpaceName);
+        // Integer samples are never premultiplied: keep OIIO from dividing them by alpha.
+        if (spec.sample == CodecSample::UInt8 || spec.sample == CodecSample::UInt16)
+            fileSpec.attribute("oiio:UnassociatedAlpha", 1);
+        if (std::string(output->format_name()) == "openexr")
+            fileSpec.attribute("compression", "zip");
+        for (const auto& [name, value] : spec.attributes)
+            fileSpec.attribute(name, value);
+
+        std::vector<unsigned char> bytes;
+        OIIO::Filesystem::IOVecOutput memory(bytes);
+        OIIO::Filesystem::IOProxy* proxy = &memory;
+        fileSpec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        if (!output->open(path, fileSpec)) {
+            *error = "cannot encode: " + output->geterror();
+            return false;
+        }
+        if (output->spec().format != fileSpec.format) {
+            *sampleRefused = true;
+            return false;
+        }
+        const bool written = output->write_image(OIIO::TypeDesc::FLOAT, samples);
+        std::string reason = written ? std::string() : output->geterror();
+        const bool closed = output->close();
+        if (reason.empty() && !closed)
+            reason = output->geterror();
+        if (!written || !closed) {
+            *error = "encoding failed: " + reason;
+            return false;
+        }
+        output.reset();
+        *encoded = std::move(bytes);
+        return true;
+    } catch (...) {
+        *error = messageOf(std::current_exception(), "writing");
+    }
+    return false;
+}
+
+bool resize(const float* samples, int width, int height, int channels, float* out, int outWidth,
+    int outHeight, std::string* error)
+{
+    try {
+        const OIIO::ImageSpec sourceSpec(width, height, channels, OIIO::TypeDesc::FLOAT);
+        const OIIO::ImageBuf source(sourceSpec, const_cast<float*>(samples));
+        OIIO::ImageBuf resized(OIIO::ImageSpec(outWidth, outHeight, channels, OIIO::TypeDesc::FLOAT));
+        if (!OIIO::ImageBufAlgo::resize(resized, source)
+            || !resized.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, out)) {
+            *error = resized.geterror();
+            return false;
+        }
+        return true;
+    } catch (...) {
+        *error = messageOf(std::current_exception(), "resizing");
+    }
+    return false;
+}
+
+} // namespace
+} // namespace facet
+
+extern "C" __attribute__((visibility("default"))) const facet::ImageCodec* facetImageCodec()
+{
+    static const facet::ImageCodec codec {facet::kImageCodecInterfaceVersion, facet::open, facet::header,
+        facet::read, facet::lastError, facet::close, facet::writer, facet::encode, facet::resize};
+    return &codec;
+}
