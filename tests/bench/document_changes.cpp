@@ -9,6 +9,7 @@
 // cache). Checks nothing (SceneControllerUiTest, DocumentAssetsUiTest and DocumentChangesTest do).
 // Usage: document_changes [repeats]   (default 20; the median is printed)
 
+#include "BenchStats.h"
 #include "core/AssetLibrary.h"
 #include "core/MapImageCache.h"
 #include "core/Project.h"
@@ -55,8 +56,7 @@ double medianMicroseconds(int repeats, const std::function<void(int)>& run)
         run(i);
         times.push_back(double(clock.nsecsElapsed()) / 1e3);
     }
-    std::sort(times.begin(), times.end());
-    return times[times.size() / 2];
+    return bench::median(std::move(times));
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 // cache; the programs are compiled once, before the first timed run.
 // Usage: gl_timings [repeats]   (default 5; surfaceless EGL, no display needed)
 
+#include "BenchStats.h"
 #include "core/Environment.h"
 #include "core/Light.h"
 #include "core/Project.h"
@@ -36,15 +37,8 @@ namespace {
 struct Series {
     std::vector<double> values;
     void add(double value) { values.push_back(value); }
-    double fastest() const { return values.empty() ? 0.0 : *std::min_element(values.begin(), values.end()); }
-    double median() const
-    {
-        if (values.empty())
-            return 0.0;
-        std::vector<double> sorted = values;
-        std::sort(sorted.begin(), sorted.end());
-        return sorted[sorted.size() / 2];
-    }
+    double fastest() const { return bench::fastest(values); }
+    double median() const { return bench::median(values); }
 };
 
 } // namespace

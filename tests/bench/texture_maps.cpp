@@ -21,17 +21,18 @@
 // epoxy before any Qt GL header (ui/ViewportWidget.h brings Qt's): the two must not meet otherwise.
 #include <epoxy/gl.h>
 
+#include "BenchStats.h"
 #include "core/Image.h"
 #include "core/MapImage.h"
 #include "core/MapImageCache.h"
 #include "core/Project.h"
 #include "core/ProjectAssets.h"
+#include "render/FrameRenderer.h"
 #include "render/Framebuffer.h"
 #include "render/GLInfo.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblPrecompute.h"
 #include "render/IblSettings.h"
-#include "render/FrameRenderer.h"
 #include "render/Renderer.h"
 #include "render/SceneFromProject.h"
 #include "render/TextureCache.h"
@@ -70,6 +71,7 @@
 #include <vector>
 
 using namespace facet;
+using facet::bench::median;
 
 namespace {
 
@@ -216,12 +218,6 @@ double msSince(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-double median(std::vector<double> values)
-{
-    std::sort(values.begin(), values.end());
-    return values.empty() ? 0.0 : values[values.size() / 2];
-}
-
 // CPU time of the whole process (every thread: llvmpipe rasterises on its own), in ms. Less
 // disturbed than the wall clock by other work on a shared machine.
 double cpuMilliseconds()
@@ -363,8 +359,8 @@ int runHeadless(const QString& folder, int frames)
             return false;
         Config config {name, anisotropy, std::make_unique<FrameRenderer>(precompute), true, {}, {}, {}};
         config.trilinear = TextureFiltering::trilinear(info);
-        auto scene = config.frames->prepare(project, *projectAssets, *settings, sceneOptionsFor(*settings, false),
-            nullptr, &error);
+        auto scene = config.frames->prepare(
+            project, *projectAssets, *settings, sceneOptionsFor(*settings, false), nullptr, &error);
         if (!scene)
             return false;
         config.scene = std::move(*scene);
@@ -405,7 +401,8 @@ int runHeadless(const QString& folder, int frames)
     if (ok)
         configs.back().trilinear = !configs.back().trilinear;
     // What packing occlusion into the metallic-roughness texture would give: four fetches.
-    ok = ok && addConfig("five 2K maps, occlusion read from the metallic-roughness file", textured, defaultLevel);
+    ok = ok
+        && addConfig("five 2K maps, occlusion read from the metallic-roughness file", textured, defaultLevel);
     if (ok) {
         RenderMaterial& material = configs.back().scene.materials[0];
         const auto metallic = std::size_t(MapSlot::Metallic);
@@ -428,8 +425,8 @@ int runHeadless(const QString& folder, int frames)
             const auto start = std::chrono::steady_clock::now();
             const double cpuStart = cpuMilliseconds();
             ok = ok
-                && config.frames->present(config.scene, display->framebufferId(), FrameRect {0, 0, kWidth, kHeight},
-                    1.0, &error);
+                && config.frames->present(
+                    config.scene, display->framebufferId(), FrameRect {0, 0, kWidth, kHeight}, 1.0, &error);
             glFinish();
             if (round >= 2) { // the first frames compile and upload
                 config.times.push_back(msSince(start));
@@ -450,11 +447,12 @@ int runHeadless(const QString& folder, int frames)
     const bool defaultTrilinear = TextureFiltering::trilinear(info);
     for (const Config& config : configs) {
         const bool isDefault = config.anisotropy == defaultLevel && config.trilinear == defaultTrilinear;
-        const std::string filtering = config.name == "untextured sphere" ? std::string("-")
-                                                                        : std::to_string(int(config.anisotropy)) + "x, "
+        const std::string filtering = config.name == "untextured sphere"
+            ? std::string("-")
+            : std::to_string(int(config.anisotropy)) + "x, "
                 + (config.trilinear ? "trilinear" : "nearest mip") + (isDefault ? " (default here)" : "");
-        std::printf("| %s | %s | %.1f | %.1f | %.2f | %.1f | %.2f |\n", config.name.c_str(), filtering.c_str(),
-            *std::min_element(config.times.begin(), config.times.end()), median(config.times),
+        std::printf("| %s | %s | %.1f | %.1f | %.2f | %.1f | %.2f |\n", config.name.c_str(),
+            filtering.c_str(), bench::fastest(config.times), median(config.times),
             median(config.times) / untextured, median(config.cpu), median(config.cpu) / untexturedCpu);
     }
     return 0;
