@@ -30,8 +30,11 @@ LoadedCodec load()
     // the libraries installed fails here, with the loader's message, not at a later call.
     void* handle = ::dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
     if (!handle) {
-        const char* why = ::dlerror();
-        return fail(why ? why : "cannot be loaded");
+        const char* loader = ::dlerror();
+        std::string why = loader ? loader : "cannot be loaded";
+        if (why.starts_with(path + ": ")) // the loader names the file too
+            why.erase(0, path.size() + 2);
+        return fail(why);
     }
     // Never closed: the decoders and the codec it returns live as long as the process.
     using EntryPoint = const ImageCodec* (*)();

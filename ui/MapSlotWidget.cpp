@@ -8,6 +8,7 @@
 #include "ui/DroppedFiles.h"
 #include "ui/ElidedLabel.h"
 #include "ui/ValueSlider.h"
+#include "ui/WindowMessages.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -62,7 +63,6 @@ QString factorName(MapSlot slot)
         return MapSlotWidget::title(slot);
     }
 }
-
 
 } // namespace
 
@@ -262,8 +262,7 @@ void MapSlotWidget::refresh()
         // is there when the asset is (core/GltfImport.h).
         const std::optional<GltfImageReference> embedded = parseGltfImageReference(map.path);
         const QFileInfo info(QString::fromStdString(embedded ? embedded->assetPath : map.path));
-        QString text
-            = embedded ? tr("%1, image %2").arg(info.fileName()).arg(embedded->imageIndex) : info.fileName();
+        QString text = WindowMessages::fileDisplayName(QString::fromStdString(map.path));
         if (m_sourceSize.isValid())
             text += QStringLiteral("\n%1×%2").arg(m_sourceSize.width()).arg(m_sourceSize.height());
         if (!info.exists())

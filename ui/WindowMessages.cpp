@@ -1,10 +1,13 @@
 #include "ui/WindowMessages.h"
 
+#include "core/GltfImport.h"
+
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <QStringList>
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 namespace facet {
@@ -185,7 +188,7 @@ QString wordLine(const QString& line)
     QStringList rest;
     if (pathIndex >= 0) {
         // What comes before the file is who reported it ("loadProjectAssets", "Environment").
-        file = QFileInfo(tokens[pathIndex]).fileName();
+        file = WindowMessages::fileDisplayName(tokens[pathIndex]);
         rest = tokens.mid(pathIndex + 1);
     } else {
         qsizetype first = 0;
@@ -215,6 +218,16 @@ QString WindowMessages::fromCore(const QString& message)
     for (const QString& line : message.split(QLatin1Char('\n'), Qt::SkipEmptyParts))
         lines.append(wordLine(line.trimmed()));
     return lines.join(QStringLiteral("; "));
+}
+
+QString WindowMessages::fileDisplayName(const QString& path)
+{
+    const std::optional<GltfImageReference> embedded = parseGltfImageReference(path.toStdString());
+    if (!embedded)
+        return QFileInfo(path).fileName();
+    return tr("%1, image %2")
+        .arg(QFileInfo(QString::fromStdString(embedded->assetPath)).fileName())
+        .arg(embedded->imageIndex);
 }
 
 QString WindowMessages::fromCore(const std::string& message)

@@ -28,6 +28,9 @@ public:
     // their function prefixes ("ViewportRenderer::paint: out of memory" -> "out of memory").
     static QString fromCore(const QString& message);
     static QString fromCore(const std::string& message);
+    // How a file is named to the user: its file name, or "asset.glb, image 2" for an image
+    // embedded in a glTF asset ("…/asset.glb#images/2", core/GltfImport.h).
+    static QString fileDisplayName(const QString& path);
 
     // The status of an environment's lighting (status bar and Environment dock).
     static QString lightingPreparing(const QString& environmentName);
