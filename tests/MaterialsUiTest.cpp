@@ -336,9 +336,10 @@ QPoint MaterialsUiTest::pixelOf(const glm::dvec3& objectPoint, bool turned) cons
 
 QColor MaterialsUiTest::framePixel(const QPoint& point)
 {
-    // Let the change reach the renderer and the refined frame follow any preview.
+    // Let the change reach the renderer and the refined frame follow any preview, drawn with its
+    // environment's lighting (prepared on the lighting worker, the old one or grey shown meanwhile).
     QTest::qWait(50);
-    waitFor([this] { return !m_viewport->isPreviewing(); });
+    waitFor([this] { return !m_viewport->isPreviewing() && !m_viewport->lastFrameStats().lightingPending; });
     const QImage frame = m_viewport->grabFramebuffer();
     const qreal ratio = frame.devicePixelRatio();
     return frame.pixelColor(QPoint(int(point.x() * ratio), int(point.y() * ratio)));
