@@ -17,55 +17,33 @@
 namespace facet {
 namespace {
 
+// Each sample type and OpenImageIO's base type for it.
+constexpr std::pair<CodecSample, OIIO::TypeDesc::BASETYPE> kSampleTypes[] = {
+    {CodecSample::UInt8, OIIO::TypeDesc::UINT8},
+    {CodecSample::Int8, OIIO::TypeDesc::INT8},
+    {CodecSample::UInt16, OIIO::TypeDesc::UINT16},
+    {CodecSample::Int16, OIIO::TypeDesc::INT16},
+    {CodecSample::UInt32, OIIO::TypeDesc::UINT32},
+    {CodecSample::Int32, OIIO::TypeDesc::INT32},
+    {CodecSample::Half, OIIO::TypeDesc::HALF},
+    {CodecSample::Float, OIIO::TypeDesc::FLOAT},
+    {CodecSample::Double, OIIO::TypeDesc::DOUBLE},
+};
+
 CodecSample sampleOf(OIIO::TypeDesc type)
 {
-    switch (type.basetype) {
-    case OIIO::TypeDesc::UINT8:
-        return CodecSample::UInt8;
-    case OIIO::TypeDesc::INT8:
-        return CodecSample::Int8;
-    case OIIO::TypeDesc::UINT16:
-        return CodecSample::UInt16;
-    case OIIO::TypeDesc::INT16:
-        return CodecSample::Int16;
-    case OIIO::TypeDesc::UINT32:
-        return CodecSample::UInt32;
-    case OIIO::TypeDesc::INT32:
-        return CodecSample::Int32;
-    case OIIO::TypeDesc::HALF:
-        return CodecSample::Half;
-    case OIIO::TypeDesc::FLOAT:
-        return CodecSample::Float;
-    case OIIO::TypeDesc::DOUBLE:
-        return CodecSample::Double;
-    default:
-        return CodecSample::Other;
-    }
+    for (const auto& [sample, base] : kSampleTypes)
+        if (type.basetype == base)
+            return sample;
+    return CodecSample::Other;
 }
 
+// (Other, which no caller asks for, reads as float.)
 OIIO::TypeDesc typeOf(CodecSample sample)
 {
-    switch (sample) {
-    case CodecSample::UInt8:
-        return OIIO::TypeDesc::UINT8;
-    case CodecSample::Int8:
-        return OIIO::TypeDesc::INT8;
-    case CodecSample::UInt16:
-        return OIIO::TypeDesc::UINT16;
-    case CodecSample::Int16:
-        return OIIO::TypeDesc::INT16;
-    case CodecSample::UInt32:
-        return OIIO::TypeDesc::UINT32;
-    case CodecSample::Int32:
-        return OIIO::TypeDesc::INT32;
-    case CodecSample::Half:
-        return OIIO::TypeDesc::HALF;
-    case CodecSample::Double:
-        return OIIO::TypeDesc::DOUBLE;
-    case CodecSample::Float:
-    case CodecSample::Other:
-        break;
-    }
+    for (const auto& [known, base] : kSampleTypes)
+        if (known == sample)
+            return base;
     return OIIO::TypeDesc::FLOAT;
 }
 
