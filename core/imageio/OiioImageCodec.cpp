@@ -168,6 +168,11 @@ bool encode(const std::string& path, const CodecEncodeSpec& spec, const float* s
 {
     *sampleRefused = false;
     try {
+        // The bytes and the proxy before the writer: a writer left open by an early return closes
+        // as it is destroyed, and closing writes (TGA's footer): into a proxy still alive. (With
+        // the proxy declared after, a refused TGA wrote through a dead one: found by ASan.)
+        std::vector<unsigned char> bytes;
+        OIIO::Filesystem::IOVecOutput memory(bytes);
         std::unique_ptr<OIIO::ImageOutput> output = OIIO::ImageOutput::create(path);
         if (!output) {
             *error = OIIO::geterror();
@@ -185,8 +190,6 @@ bool encode(const std::string& path, const CodecEncodeSpec& spec, const float* s
         for (const auto& [name, value] : spec.attributes)
             fileSpec.attribute(name, value);
 
-        std::vector<unsigned char> bytes;
-        OIIO::Filesystem::IOVecOutput memory(bytes);
         OIIO::Filesystem::IOProxy* proxy = &memory;
         fileSpec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
         if (!output->open(path, fileSpec)) {
