@@ -26,8 +26,10 @@ LoadedCodec load()
         result.error = "image input/output module " + path + ": " + why;
         return result;
     };
-    // RTLD_LOCAL: OpenImageIO's symbols stay the module's. RTLD_NOW: a module that does not fit
-    // the libraries installed fails here, with the loader's message, not at a later call.
+    // RTLD_LOCAL: OpenImageIO's symbols stay the module's. RTLD_LAZY: the functions of the ~260
+    // libraries behind it are bound as they are first called, not all at load (RTLD_NOW measured
+    // the same load time). A library that is missing still fails here, with the loader's message;
+    // the version check below refuses a module of another build.
     void* handle = ::dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
     if (!handle) {
         const char* loader = ::dlerror();

@@ -2,9 +2,9 @@
 // Decoding and encoding image files, behind an interface whose one implementation (over
 // OpenImageIO, core/imageio/OiioImageCodec.cpp) is a module of its own, libfacet_imageio.so,
 // loaded the first time an image is read, written or resized. OpenImageIO and what it links are
-// 260 of the 282 shared libraries facet would otherwise load at start (about 130 MB resident and
-// most of a process's start-up): `facet --version`, `--help`, a command that reads and writes no
-// image and the window until its first image do not pay for them (docs/benchmarks.md,
+// 260 of the 282 shared libraries facet would otherwise load at start (121 MB of a 146 MB peak
+// resident, and most of a process's start-up): `facet --version`, `--help`, a command that reads
+// and writes no image and the window until its first image do not pay for them (docs/benchmarks.md,
 // "Start-up"). It is not loaded ahead on another thread: the dynamic loader's lock would make
 // the GL driver's loading and every new thread wait for it (measured: slower, not faster).
 //
@@ -15,7 +15,6 @@
 // writeImageFile.
 
 #include <cstddef>
-#include <memory>
 #include <string>
 #include <utility>
 #include <vector>

@@ -317,7 +317,6 @@ std::optional<ImageReader> ImageReader::open(
         return std::nullopt;
     }
     const unsigned char* memory = reader.m_embedded ? reader.m_embedded->data() : nullptr;
-    reader.m_codec = codec;
     reader.m_decoder = std::unique_ptr<ImageDecoder, Close>(
         codec->open(openName, memory, reader.m_embedded ? reader.m_embedded->size() : 0, &problem),
         Close {codec});
@@ -370,9 +369,9 @@ bool ImageReader::checkSizeAgainstFile(const char* function, std::string* error)
 bool ImageReader::read(int begin, int end, int channels, CodecSample as, void* data, std::ptrdiff_t xstride,
     std::ptrdiff_t ystride, const char* function, std::string* error)
 {
-    if (m_codec->read(m_decoder.get(), begin, end, channels, as, data, xstride, ystride))
+    if (codec()->read(m_decoder.get(), begin, end, channels, as, data, xstride, ystride))
         return true;
-    const std::string reason = m_codec->lastError(m_decoder.get());
+    const std::string reason = codec()->lastError(m_decoder.get());
     setImageError(
         error, function, m_path, reason.empty() ? std::string("could not read the pixels") : reason);
     return false;

@@ -27,8 +27,8 @@ public:
     ImageReader& operator=(ImageReader&&) = default;
     ~ImageReader();
 
-    const CodecHeader& header() const { return m_codec->header(m_decoder.get()); }
-    // Reads rows [begin, end) as ImageDecoder::read does; false with *error
+    const CodecHeader& header() const { return codec()->header(m_decoder.get()); }
+    // Reads rows [begin, end) as ImageCodec::read does; false with *error
     // "<function>: <path>: <the decoder's message>".
     bool read(int begin, int end, int channels, CodecSample as, void* data, std::ptrdiff_t xstride,
         std::ptrdiff_t ystride, const char* function, std::string* error);
@@ -62,12 +62,12 @@ private:
     long long m_fileSize = -1; // of the file at m_path (-1: embedded, or unknown)
     // The memory an embedded image is decoded from; must outlive m_decoder.
     std::unique_ptr<std::vector<unsigned char>> m_embedded;
-    const ImageCodec* m_codec = nullptr;
     struct Close {
         const ImageCodec* codec;
         void operator()(ImageDecoder* decoder) const { codec->close(decoder); }
     };
     std::unique_ptr<ImageDecoder, Close> m_decoder {nullptr, Close {nullptr}};
+    const ImageCodec* codec() const { return m_decoder.get_deleter().codec; }
 };
 
 // "<function>: <path>: <problem>" on one line (OIIO's messages can span several lines).
