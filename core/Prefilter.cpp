@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <glm/geometric.hpp>
 
@@ -57,27 +58,36 @@ int cubemapFace(const glm::dvec3& d, double* u, double* v)
     return face;
 }
 
+std::vector<PrefilterLobeSample> prefilterLobeSamples(double roughness, int samples)
+{
+    const double alpha = shading::alphaFromRoughness(roughness);
+    const auto count = std::uint32_t(std::max(samples, 1));
+    const glm::dvec3 n(0.0, 0.0, 1.0);
+    std::vector<PrefilterLobeSample> result;
+    result.reserve(count);
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const glm::dvec3 h = sampling::importanceSampleGGX(sampling::hammersley(i, count), alpha);
+        // v = n: l = reflect(n, h); the weight n.l (Karis 2013) sharpens the lobe to match the
+        // n = v = r assumption's loss of the stretched reflection lobe.
+        const glm::dvec3 l = sampling::reflectAbout(n, h);
+        if (l.z <= 0.0)
+            continue;
+        result.push_back({l, shading::D_GGX(h.z, alpha) * 0.25});
+    }
+    return result;
+}
+
 glm::dvec3 prefilteredRadiance(const Environment& environment, const glm::dvec3& R, double roughness, int samples)
 {
     const glm::dvec3 n = glm::normalize(R);
     glm::dvec3 t;
     glm::dvec3 b;
     sampling::buildOrthonormalBasis(n, t, b);
-    const double alpha = shading::alphaFromRoughness(roughness);
-    const auto count = std::uint32_t(std::max(samples, 1));
     glm::dvec3 sum(0.0);
     double weight = 0.0;
-    for (std::uint32_t i = 0; i < count; ++i) {
-        const glm::dvec3 h = sampling::tangentToWorld(
-            sampling::importanceSampleGGX(sampling::hammersley(i, count), alpha), t, b, n);
-        // v = n: l = reflect(n, h); the weight n.l (Karis 2013) sharpens the lobe to match the
-        // n = v = r assumption's loss of the stretched reflection lobe.
-        const glm::dvec3 l = sampling::reflectAbout(n, h);
-        const double NoL = glm::dot(n, l);
-        if (NoL <= 0.0)
-            continue;
-        sum += environment.radiance(l) * NoL;
-        weight += NoL;
+    for (const PrefilterLobeSample& sample : prefilterLobeSamples(roughness, samples)) {
+        sum += environment.radiance(sampling::tangentToWorld(sample.l, t, b, n)) * sample.l.z;
+        weight += sample.l.z;
     }
     return weight > 0.0 ? sum / weight : glm::dvec3(0.0);
 }

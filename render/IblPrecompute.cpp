@@ -77,6 +77,19 @@ double cubeTexelSolidAngle(int x, int y, int size)
         + cornerArea(x0 + step, y0 + step);
 }
 
+// A table of RGBA32F entries, `width` to a row, for texelFetch (no filtering, no mipmaps).
+GLTexture tableTexture(const std::vector<glm::vec4>& entries, int width)
+{
+    GLTexture texture = GLTexture::create(GL_TEXTURE_2D);
+    glBindTexture(GL_TEXTURE_2D, texture.id());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, int(entries.size()) / width, 0, GL_RGBA, GL_FLOAT,
+        entries.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    return texture;
+}
+
 // The irradiance pass's table (ibl_irradiance.frag): for every texel t of `level` (size x size a
 // face) of `cube`, its centre's direction w_t and L_t Omega_t, as
 // RGBA32F rows of 1024 entries (direction row, then radiance row). Made once per environment:
@@ -103,13 +116,29 @@ GLTexture irradianceTexelTable(const GLTexture& cube, int size, int level)
                     glm::vec3(texel[0], texel[1], texel[2]) * float(cubeTexelSolidAngle(x, y, size)), 0.0f);
             }
     }
-    GLTexture texture = GLTexture::create(GL_TEXTURE_2D);
-    glBindTexture(GL_TEXTURE_2D, texture.id());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kTableWidth, rows, 0, GL_RGBA, GL_FLOAT, table.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return texture;
+    return tableTexture(table, kTableWidth);
+}
+
+// The samples of prefiltered level of perceptual `roughness` (core/Prefilter.h
+// prefilterLobeSamples) as ibl_prefilter.frag reads them: RGBA32F rows of 1024 entries, each
+// l in the frame of n and the source lod filtered importance sampling reads it at. *count: the
+// entries; *inverseWeight: 1 / sum (n.l), 0 when no sample is above the horizon.
+GLTexture prefilterSampleTable(
+    double roughness, int samples, double sourceSize, double sourceMaxLod, int* count, double* inverseWeight)
+{
+    constexpr int kTableWidth = 1024; // as ibl_prefilter.frag
+    const std::vector<PrefilterLobeSample> lobe = prefilterLobeSamples(roughness, samples);
+    const int rows = std::max(1, int((lobe.size() + kTableWidth - 1) / kTableWidth));
+    std::vector<glm::vec4> table(std::size_t(kTableWidth) * std::size_t(rows), glm::vec4(0.0f));
+    double weight = 0.0;
+    for (std::size_t i = 0; i < lobe.size(); ++i) {
+        const double lod = filteredLod(lobe[i].pdf, double(samples), sourceSize, sourceMaxLod);
+        table[i] = glm::vec4(glm::vec3(lobe[i].l), float(lod));
+        weight += lobe[i].l.z;
+    }
+    *count = int(lobe.size());
+    *inverseWeight = weight > 0.0 ? 1.0 / weight : 0.0;
+    return tableTexture(table, kTableWidth);
 }
 
 std::shared_ptr<GLTexture> makeDfgTexture(int size, const std::uint16_t* data = nullptr)
@@ -614,22 +643,39 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
         passStart = Clock::now();
         auto prefiltered = makeCubemap(settings.prefilterSize, settings.prefilterMipLevels);
         glBindTexture(GL_TEXTURE_CUBE_MAP, cube->id());
-        const float sourceMaxLod = float(result->environmentMipLevels - 1);
+        const double sourceMaxLod = double(result->environmentMipLevels - 1);
         for (int level = 0; level < settings.prefilterMipLevels; ++level) {
             const int size = std::max(settings.prefilterSize >> level, 1);
             const ShaderProgram& program = level == 0 ? m_programs->prefilterCopy : m_programs->prefilter;
             program.use();
-            program.setFloat("uRoughness", float(roughnessFromLod(level, settings.prefilterMipLevels)));
-            program.setInt("uSampleCount", settings.prefilterSamples);
-            program.setFloat("uSourceSize", float(settings.cubeSize));
-            program.setFloat("uSourceMaxLod", sourceMaxLod);
-            program.setFloat("uCopyLod",
-                float(std::max(0.0, std::log2(double(settings.cubeSize) / double(settings.prefilterSize)))));
+            GLTexture samples;
+            if (level == 0) {
+                program.setFloat("uCopyLod",
+                    float(std::max(
+                        0.0, std::log2(double(settings.cubeSize) / double(settings.prefilterSize)))));
+            } else {
+                int count = 0;
+                double inverseWeight = 0.0;
+                samples = prefilterSampleTable(roughnessFromLod(level, settings.prefilterMipLevels),
+                    settings.prefilterSamples, double(settings.cubeSize), sourceMaxLod, &count,
+                    &inverseWeight);
+                glActiveTexture(GL_TEXTURE1);
+                glBindTexture(GL_TEXTURE_2D, samples.id());
+                glActiveTexture(GL_TEXTURE0);
+                program.setInt("uSamples", 1);
+                program.setInt("uCount", count);
+                program.setFloat("uInverseWeight", float(inverseWeight));
+            }
             for (int face = 0; face < 6; ++face) {
                 program.setInt("uFace", face);
                 if (!drawInto(*prefiltered, face, level, size, error)
                     || !advance(faceWork(size, level == 0 ? 1.0 : double(settings.prefilterSamples)), true))
                     return nullptr;
+            }
+            if (samples.id()) {
+                glActiveTexture(GL_TEXTURE1);
+                glBindTexture(GL_TEXTURE_2D, 0);
+                glActiveTexture(GL_TEXTURE0);
             }
         }
         glFinish();

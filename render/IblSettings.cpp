@@ -12,7 +12,7 @@ namespace {
 // 2: roughness-to-level map r (2 - r); 3: the DFG key holds the visibility term (version 2's DFG
 // entries were all height-correlated Smith whatever the material's V); 4: a map wider than 4x
 // the cube is area-filtered to that width before the cube pass and SH9.
-constexpr std::int32_t kAlgorithmVersion = 4;
+constexpr std::int32_t kAlgorithmVersion = 5;
 // The DFG table's own version (its passes changed alone): 4: alpha holds fresnel_mix's diffuse
 // weight W(n.v) (version 3's tables hold 1 there). Environment sets keep kAlgorithmVersion.
 constexpr std::int32_t kDfgAlgorithmVersion = 4;
