@@ -82,6 +82,8 @@ private Q_SLOTS:
     void deliversWhatTheGuiThreadMakes();
     void anotherRequestCancelsTheRunningOne();
     void theSameRequestRunsOnce();
+    void queuedSetsRunInOrderAndCancelNothing();
+    void aRequestEmptiesTheQueue();
     void failureIsNamed();
     void destroyedWhileRunningReturnsPromptly();
 
@@ -228,6 +230,63 @@ void LightingWorkerUiTest::theSameRequestRunsOnce()
     const auto result = worker.take(key);
     QVERIFY(result && result->textures);
     QCOMPARE(result->stats.passesRun, 3);
+}
+
+void LightingWorkerUiTest::queuedSetsRunInOrderAndCancelNothing()
+{
+    // The Compare view's way: every set of a grid is wanted. Queued while the first runs, they
+    // run after it in order, none is cancelled, and one asked for again is not repeated.
+    QVERIFY(m_view->makeCurrent(&m_surface));
+    const IblSettings settings = *IblSettings::preset("draft");
+    const std::vector<Environment> environments
+        = {gradientEnvironment(5.0f), gradientEnvironment(6.0f), gradientEnvironment(7.0f)};
+    LightingWorker worker({}, /*useDiskCache=*/false);
+    QVERIFY2(worker.isValid(), qPrintable(worker.problem()));
+    QSignalSpy finished(&worker, &LightingWorker::finished);
+    std::vector<std::uint64_t> keys;
+    for (const Environment& environment : environments)
+        keys.push_back(worker.enqueue(environment, settings));
+    QCOMPARE(worker.enqueue(environments[1], settings), keys[1]); // queued: not again
+    QCOMPARE(worker.enqueue(environments[0], settings), keys[0]); // running or queued: not again
+    QCOMPARE(worker.busyWith(), std::optional<std::uint64_t>(keys[2])); // the last queued
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 3, 60000);
+    QTest::qWait(200);
+    QCOMPARE(finished.count(), 3);
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        QCOMPARE(finished.at(int(i)).first().toULongLong(), quint64(keys[i]));
+        const auto result = worker.take(keys[i]);
+        QVERIFY(result && result->textures);
+        QVERIFY(!result->stats.cancelled);
+        QCOMPARE(result->stats.passesRun, 3);
+    }
+    QVERIFY(!worker.busyWith());
+}
+
+void LightingWorkerUiTest::aRequestEmptiesTheQueue()
+{
+    // The single view's way after a grid's: newest wins, the sets queued before are dropped and
+    // the one running is cancelled.
+    QVERIFY(m_view->makeCurrent(&m_surface));
+    LightingWorker worker({}, /*useDiskCache=*/false);
+    QVERIFY2(worker.isValid(), qPrintable(worker.problem()));
+    QSignalSpy finished(&worker, &LightingWorker::finished);
+    QSignalSpy progress(&worker, &LightingWorker::progress);
+    const IblSettings draft = *IblSettings::preset("draft");
+    const std::uint64_t slowKey = worker.enqueue(gradientEnvironment(8.0f), slowSettings());
+    const std::uint64_t queuedKey = worker.enqueue(gradientEnvironment(9.0f), draft);
+    QVERIFY(progress.wait(60000)); // the first runs
+    const std::uint64_t wantedKey = worker.request(gradientEnvironment(10.0f), draft);
+    QCOMPARE(worker.busyWith(), std::optional<std::uint64_t>(wantedKey));
+    QTRY_COMPARE_WITH_TIMEOUT(finished.count(), 2, 60000);
+    QTest::qWait(200);
+    QCOMPARE(finished.count(), 2);
+    QCOMPARE(finished.at(0).first().toULongLong(), quint64(slowKey));
+    QCOMPARE(finished.at(1).first().toULongLong(), quint64(wantedKey));
+    const auto cancelled = worker.take(slowKey);
+    QVERIFY(cancelled && cancelled->stats.cancelled && !cancelled->textures);
+    QVERIFY(!worker.take(queuedKey)); // never ran
+    const auto done = worker.take(wantedKey);
+    QVERIFY(done && done->textures);
 }
 
 void LightingWorkerUiTest::failureIsNamed()

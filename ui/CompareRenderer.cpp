@@ -161,14 +161,32 @@ std::shared_ptr<const IblTextures> CompareRenderer::lightingFor(
     IblStats stats;
     auto ibl = m_frames->lighting(cell.assets.environment, settings, &stats, error);
     ++m_stats.iblRequests;
-    if (stats.passesRun > 0)
-        ++m_stats.iblComputed;
-    else if (stats.cacheHitsDisk > 0)
-        ++m_stats.iblFromDisk;
+    countLighting(stats);
     m_stats.iblMs += stats.msTotal;
     if (ibl)
         m_lighting.emplace(key, ibl);
     return ibl;
+}
+
+void CompareRenderer::countLighting(const IblStats& stats)
+{
+    if (stats.passesRun > 0)
+        ++m_stats.iblComputed;
+    else if (stats.cacheHitsDisk > 0)
+        ++m_stats.iblFromDisk;
+}
+
+IblSettings CompareRenderer::lightingSettingsOf(const CompareCellDraw& cell)
+{
+    return iblSettingsOf(cell.project);
+}
+
+void CompareRenderer::adoptLighting(
+    std::uint64_t key, std::shared_ptr<const IblTextures> textures, const IblStats& stats)
+{
+    m_frames->precompute().adopt(key, std::move(textures));
+    countLighting(stats);
+    ++m_stats.iblFromWorker;
 }
 
 std::optional<RenderScene> CompareRenderer::sceneOf(
@@ -245,8 +263,8 @@ void CompareRenderer::copyClip(const CompareCellDraw& cell)
         clip.y + clip.height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
-bool CompareRenderer::refineCell(const CompareCellDraw& cell, std::size_t index, bool restart, double drawBudgetMs,
-    std::string* error)
+bool CompareRenderer::refineCell(
+    const CompareCellDraw& cell, std::size_t index, bool restart, double drawBudgetMs, std::string* error)
 {
     const std::optional<RenderScene> preview = sceneOf(cell, IblMethod::SplitSum, error);
     const std::optional<RenderScene> sampled
@@ -271,7 +289,8 @@ bool CompareRenderer::refineCell(const CompareCellDraw& cell, std::size_t index,
     m_stats.texturesUploaded += m_frames->renderer().lastFrameStats().texturesUploaded;
     const FrameRenderer::Refinement& state = m_frames->refinement(slot);
     if (!restart && state.draws > 0)
-        drawSamples = ViewportRenderer::nextDrawSamples(state.lastDrawSamples, state.lastDrawMs, drawBudgetMs);
+        drawSamples
+            = ViewportRenderer::nextDrawSamples(state.lastDrawSamples, state.lastDrawMs, drawBudgetMs);
     if (cell.clip)
         copyClip(cell);
     return true;
@@ -443,8 +462,8 @@ bool CompareRenderer::drawErrorView(const CompareCellDraw& reference, const Comp
     }
     // refine() draws in pairs, one to each accumulator half: the noise is known after two draws.
     const int drawSamples = m_error.drawSamples;
-    if (!m_frames->refine(*preview, *sampled, m_composite->framebufferId(), reference.rect, restart, drawSamples,
-            error, kErrorSlot))
+    if (!m_frames->refine(*preview, *sampled, m_composite->framebufferId(), reference.rect, restart,
+            drawSamples, error, kErrorSlot))
         return false;
     const FrameRenderer::Refinement& state = m_frames->refinement(kErrorSlot);
     if (!restart && state.draws > 0)
@@ -546,8 +565,9 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
             shown.insert(lightingKeyOf(*referenceCell));
         CellKey key = keyOf(*referenceCell, scale);
         const ErrorCompare& settings = referenceCell->project.compare.error;
-        const bool kept = m_drawn[r] && *m_drawn[r] == key && m_drawn[h] && m_frames->refinement(kErrorSlot).done()
-            && m_error.heatScale == settings.scale && m_error.heatNoise == settings.showNoise;
+        const bool kept = m_drawn[r] && *m_drawn[r] == key && m_drawn[h]
+            && m_frames->refinement(kErrorSlot).done() && m_error.heatScale == settings.scale
+            && m_error.heatNoise == settings.showNoise;
         std::string cellProblem;
         if (kept) {
             m_stats.cellsKept += 2;
@@ -574,7 +594,8 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
             && cell.project.environment.method != IblMethod::SplitSum;
     };
     const auto sampledCells = std::count_if(cells.begin(), cells.end(), sampledCell);
-    const double cellBudgetMs = ViewportRenderer::kRefineDrawBudgetMs / double(std::max<std::ptrdiff_t>(sampledCells, 1));
+    const double cellBudgetMs
+        = ViewportRenderer::kRefineDrawBudgetMs / double(std::max<std::ptrdiff_t>(sampledCells, 1));
     m_stats.cellsRefining = 0;
     for (std::size_t i = 0; i < cells.size(); ++i) {
         const CompareCellDraw& cell = cells[i];

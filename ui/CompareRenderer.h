@@ -85,6 +85,8 @@ struct CompareFrameStats {
     int texturesResident = 0; // material textures on the GPU after the last frame (the shared cache)
     int iblComputed = 0;
     int iblFromDisk = 0;
+    // Of those, the sets the Compare view's lighting worker made off the GUI thread (adopted).
+    int iblFromWorker = 0;
     // Set while an error view is shown.
     std::optional<ErrorViewStats> error;
     // Shaded cells whose project's IBL method is a sampled one (fis, reference) converge over
@@ -131,6 +133,12 @@ public:
     // environment image and quality, however many cells show it).
     bool needsLighting(const CompareCellDraw& cell) const;
     int lightingToPrepare(const std::vector<CompareCellDraw>& cells) const;
+    // The IBL settings a cell is lit with (its project's quality).
+    static IblSettings lightingSettingsOf(const CompareCellDraw& cell);
+    // A set made off this thread (the Compare view's lighting worker) for IblPrecompute key
+    // `key`: put into the shared precompute's memory, where the cells' next frame finds it, and
+    // counted (iblComputed or iblFromDisk) as `stats` say.
+    void adoptLighting(std::uint64_t key, std::shared_ptr<const IblTextures> textures, const IblStats& stats);
 
     const CompareFrameStats& lastFrame() const { return m_stats; }
     // Whether the error view or a cell shown is converging: paint again to add samples.
@@ -181,6 +189,8 @@ private:
     std::optional<RenderScene> sceneOf(
         const CompareCellDraw& cell, std::optional<IblMethod> method, std::string* error);
     std::shared_ptr<const IblTextures> lightingFor(const CompareCellDraw& cell, std::string* error);
+    // iblComputed / iblFromDisk for one set's preparation.
+    void countLighting(const IblStats& stats);
     void fill(const FrameRect& rect, float grey);
     // Marks the cell's map textures used this frame without drawing it (a kept or waiting cell).
     void touchMaps(const CompareCellDraw& cell);

@@ -4,6 +4,7 @@
 #include "ui/CompareController.h"
 #include "ui/Document.h"
 #include "ui/DocumentAssets.h"
+#include "ui/LightingWorker.h"
 #include "ui/SceneController.h"
 #include "ui/ViewShareGroup.h"
 
@@ -90,9 +91,15 @@ CompareView::~CompareView()
 
 void CompareView::releaseRenderer()
 {
-    if (!m_renderer)
+    if (!m_renderer && !m_lightingWorker)
         return;
     makeCurrent();
+    // The worker first: its thread frees what it made in its own context; the sets asked of it
+    // are forgotten (a new renderer asks again).
+    m_lightingWorker.reset();
+    m_lightingAsked.clear();
+    m_lightingBatch = 0;
+    m_lightingBatchMs = 0.0;
     m_renderer.reset();
     doneCurrent();
 }
@@ -116,6 +123,24 @@ void CompareView::initializeGL()
             = std::make_unique<CompareRenderer>(std::move(shared.precompute), std::move(shared.textures));
     } else {
         m_renderer = std::make_unique<CompareRenderer>(QString(), m_useDiskCache);
+    }
+    m_lightingWorker.reset();
+    m_lightingAsked.clear();
+    m_lightingBatch = 0;
+    m_lightingBatchMs = 0.0;
+    if (m_renderer) {
+        // Its own worker, not the single view's: that one's requests replace each other (newest
+        // wins), a grid's sets are all wanted.
+        auto worker = std::make_shared<LightingWorker>(
+            QString(), m_shareGroup ? m_shareGroup->useDiskCache() : m_useDiskCache);
+        if (worker->isValid()) {
+            // The view holds the worker: a signal queued before it went finds none.
+            connect(worker.get(), &LightingWorker::finished, this, [this, w = worker.get()](quint64 key) {
+                if (m_lightingWorker.get() == w)
+                    lightingArrived(key);
+            });
+            m_lightingWorker = std::move(worker);
+        }
     }
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &CompareView::releaseRenderer,
         Qt::UniqueConnection);
@@ -143,7 +168,7 @@ void CompareView::markInteractive()
 
 bool CompareView::isLoading() const
 {
-    if (m_lightingAnnounced > 0)
+    if (m_lightingAnnounced > 0 || !m_lightingAsked.empty())
         return true;
     for (const CompareCell& cell : m_cells)
         if (m_assets->isLoading(DocumentAssets::Kind::Environment, cell.project.environment.source))
@@ -405,6 +430,46 @@ std::vector<CompareCellDraw> CompareView::cellDraws()
     return draws;
 }
 
+void CompareView::askForLighting(std::vector<CompareCellDraw>& draws)
+{
+    int added = 0;
+    for (CompareCellDraw& draw : draws) {
+        if (!m_renderer->needsLighting(draw))
+            continue;
+        const IblSettings settings = CompareRenderer::lightingSettingsOf(draw);
+        const std::uint64_t key = IblPrecompute::cacheKey(draw.assets.environment, settings);
+        if (m_lightingFailed.count(key))
+            continue; // prepared in this frame, on this thread, which reports its error
+        if (m_lightingAsked.insert(key).second) {
+            m_lightingWorker->enqueue(draw.assets.environment, settings);
+            ++added;
+        }
+        draw.assets.environment = Environment {};
+    }
+    if (added > 0) {
+        m_lightingBatch += added;
+        Q_EMIT lightingPreparing(m_lightingBatch);
+    }
+}
+
+void CompareView::lightingArrived(std::uint64_t key)
+{
+    if (!m_lightingAsked.erase(key))
+        return;
+    std::optional<LightingWorker::Result> result = m_lightingWorker->take(key);
+    if (result) {
+        m_lightingBatchMs += result->stats.msTotal;
+        makeCurrent(); // a set not adopted is released here, in the share group
+        if (result->textures && m_renderer)
+            m_renderer->adoptLighting(key, std::move(result->textures), result->stats);
+        else if (!result->stats.cancelled)
+            m_lightingFailed.insert(key);
+        result.reset();
+        doneCurrent();
+    }
+    update(); // lightingReady follows the frame that draws the batch's last set
+}
+
 void CompareView::paintGL()
 {
     if (!m_renderer || m_cells.empty()) {
@@ -416,10 +481,13 @@ void CompareView::paintGL()
     }
     const qreal ratio = devicePixelRatioF();
     std::vector<CompareCellDraw> draws = cellDraws();
-    // Lighting to prepare is announced, and prepared in a later frame: a precompute blocks this
-    // thread, and the status bar can only show the message once this frame has returned. Until
-    // then its cells wait in the loading grey.
-    const bool announcing = m_lightingAnnounced == 0 && m_renderer->lightingToPrepare(draws) > 0;
+    if (m_lightingWorker)
+        askForLighting(draws);
+    // Without a worker, lighting to prepare is announced, and prepared in a later frame: a
+    // precompute blocks this thread, and the status bar can only show the message once this frame
+    // has returned. Until then its cells wait in the loading grey.
+    const bool announcing
+        = !m_lightingWorker && m_lightingAnnounced == 0 && m_renderer->lightingToPrepare(draws) > 0;
     if (announcing) {
         m_lightingAnnounced = m_renderer->lightingToPrepare(draws);
         for (CompareCellDraw& draw : draws)
@@ -435,6 +503,8 @@ void CompareView::paintGL()
     m_lastError = ok ? QString() : QString::fromStdString(error);
     if (!announcing && m_lightingAnnounced > 0)
         Q_EMIT lightingReady(std::exchange(m_lightingAnnounced, 0), m_stats.iblMs);
+    if (m_lightingBatch > 0 && m_lightingAsked.empty())
+        Q_EMIT lightingReady(std::exchange(m_lightingBatch, 0), std::exchange(m_lightingBatchMs, 0.0));
     updateRefiningLabels();
     // The error view's reference and the cells of a sampled method converge over frames: the
     // next one as soon as the event loop is free (input stays responsive between draws of about

@@ -5,9 +5,14 @@
 // Labels (the environment's name, A and B, the wedge's values on its axes) are child labels over
 // the cells; the A/B divider is a thin line the mouse drags.
 //
-// Lighting no cell had yet (an IBL precompute: a few hundred ms each on llvmpipe) is announced
-// first (lightingPreparing: the status bar says so, the cells wait in the loading grey) and
-// prepared in a frame kAnnounceDelayMs later, once the window has shown the message.
+// Lighting no cell had yet (an IBL precompute: about 100 ms each on llvmpipe, a disk read when
+// cached) is prepared on a lighting worker of the view's own (ui/LightingWorker: a thread with a
+// GL context of the window's share group), every set the grid needs queued in turn, while the
+// window stays responsive: lightingPreparing says how many, the cells wait in the loading grey,
+// each is drawn as its set arrives, and lightingReady follows the last. A set the worker could
+// not make is prepared on the GUI thread at the next frame, where its error is reported as
+// before. Where the platform cannot run GL on a second thread, the lighting is announced first
+// and prepared in a frame kAnnounceDelayMs later, once the window has shown the message.
 //
 // Like the single view (ViewportWidget) it renders on demand only (an idle window draws nothing),
 // draws kPreviewScale frames while something is dragged and one full frame kRefineDelayMs after,
@@ -34,6 +39,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <set>
 #include <vector>
 
 class QLabel;
@@ -43,6 +49,7 @@ namespace facet {
 
 class CompareController;
 class Document;
+class LightingWorker;
 class SceneController;
 class ViewShareGroup;
 
@@ -133,6 +140,11 @@ private:
     std::vector<CompareCellDraw> cellDraws();
     void moveCamera(int cell, const std::function<Camera(const Camera&)>& move);
     void releaseRenderer();
+    // With a lighting worker: queues the sets `draws` need and the view does not hold, and
+    // empties those cells' environments (they draw the loading grey until the set arrives).
+    void askForLighting(std::vector<CompareCellDraw>& draws);
+    // The worker finished set `key`: adopted into the shared precompute, or remembered as failed.
+    void lightingArrived(std::uint64_t key);
     // The error view's labels carry its numbers (CompareFrameStats::error): samples, time and
     // noise on the reference, the relative RMSE on the heat map.
     // Cell `index`'s label: its variant's name, and the samples of a converging cell (or the
@@ -163,6 +175,14 @@ private:
     bool m_previewing = false;
     bool m_useDiskCache = true;
     int m_lightingAnnounced = 0; // environments announced by lightingPreparing, not ready yet
+    // The view's own lighting worker (null where GL cannot run on a second thread), the sets
+    // asked of it and not yet arrived, the batch they belong to (sets asked for since the last
+    // lightingReady, and the worker's milliseconds for them), and the sets it failed to make.
+    std::shared_ptr<LightingWorker> m_lightingWorker;
+    std::set<std::uint64_t> m_lightingAsked;
+    int m_lightingBatch = 0;
+    double m_lightingBatchMs = 0.0;
+    std::set<std::uint64_t> m_lightingFailed;
     enum class Drag { None, Orbit, Divider } m_drag = Drag::None;
     int m_dragCell = -1;
     bool m_dragOpenedEdit = false;

@@ -54,7 +54,7 @@ LightingWorker::~LightingWorker()
             const std::lock_guard lock(m_mutex);
             m_stop = true;
             m_cancelRunning = true;
-            m_queued.reset();
+            m_queue.clear();
         }
         m_wake.notify_all();
         m_thread->wait();
@@ -68,13 +68,26 @@ std::uint64_t LightingWorker::request(const Environment& environment, const IblS
     const std::uint64_t key = IblPrecompute::cacheKey(environment, settings);
     {
         const std::lock_guard lock(m_mutex);
-        if (m_running == key && !m_cancelRunning) {
-            m_queued.reset(); // the set wanted is the one running
-            return key;
-        }
+        m_queue.clear();
+        if (m_running == key && !m_cancelRunning)
+            return key; // the set wanted is the one running
         if (m_running)
             m_cancelRunning = true;
-        m_queued = Job {key, environment, settings};
+        m_queue.push_back(Job {key, environment, settings});
+    }
+    m_wake.notify_all();
+    return key;
+}
+
+std::uint64_t LightingWorker::enqueue(const Environment& environment, const IblSettings& settings)
+{
+    const std::uint64_t key = IblPrecompute::cacheKey(environment, settings);
+    {
+        const std::lock_guard lock(m_mutex);
+        if ((m_running == key && !m_cancelRunning)
+            || std::any_of(m_queue.begin(), m_queue.end(), [key](const Job& job) { return job.key == key; }))
+            return key;
+        m_queue.push_back(Job {key, environment, settings});
     }
     m_wake.notify_all();
     return key;
@@ -84,7 +97,7 @@ void LightingWorker::cancel()
 {
     {
         const std::lock_guard lock(m_mutex);
-        m_queued.reset();
+        m_queue.clear();
         if (m_running)
             m_cancelRunning = true;
     }
@@ -94,8 +107,8 @@ void LightingWorker::cancel()
 std::optional<std::uint64_t> LightingWorker::busyWith() const
 {
     const std::lock_guard lock(m_mutex);
-    if (m_queued)
-        return m_queued->key;
+    if (!m_queue.empty())
+        return m_queue.back().key;
     if (m_running && !m_cancelRunning)
         return m_running;
     return std::nullopt;
@@ -126,11 +139,11 @@ void LightingWorker::run()
             Job job;
             {
                 std::unique_lock lock(m_mutex);
-                m_wake.wait(lock, [this] { return m_stop || m_queued; });
+                m_wake.wait(lock, [this] { return m_stop || !m_queue.empty(); });
                 if (m_stop)
                     break;
-                job = std::move(*m_queued);
-                m_queued.reset();
+                job = std::move(m_queue.front());
+                m_queue.pop_front();
                 m_running = job.key;
                 m_cancelRunning = false;
             }

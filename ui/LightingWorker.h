@@ -7,9 +7,11 @@
 // and puts it into the views' shared IblPrecompute (IblPrecompute::adopt), where every view of
 // the window finds it.
 //
-// One job at a time: a request for another set cancels the one running (IblProgress, checked
-// after each face of each pass) and replaces any queued; a request for the set running or queued
-// is not repeated. Progress is reported as the passes' faces finish on the GPU, at most every
+// One job at a time, two ways to ask. request() is the single view's, newest wins: a request
+// for another set cancels the one running (IblProgress, checked after each face of each pass) and
+// replaces any queued. enqueue() is the Compare view's: every set of a grid is wanted, so it is
+// queued behind the others, in order, and cancels nothing. Either way a set running or queued is
+// not asked for twice. Progress is reported as the passes' faces finish on the GPU, at most every
 // kProgressIntervalMs.
 //
 //   auto worker = std::make_shared<LightingWorker>(cacheDirectory, true); // a view's context current
@@ -34,6 +36,7 @@
 
 #include <condition_variable>
 #include <cstdint>
+#include <deque>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -63,12 +66,14 @@ public:
     const QString& problem() const { return m_problem; }
 
     // Asks for the IBL set of `environment` at `settings` (IblPrecompute::cacheKey, which it
-    // returns). Cancels a job for another key.
+    // returns). Cancels a job for another key and empties the queue.
     std::uint64_t request(const Environment& environment, const IblSettings& settings);
+    // Asks for it after the jobs queued (if it is not running or queued already); cancels nothing.
+    std::uint64_t enqueue(const Environment& environment, const IblSettings& settings);
     // Cancels the job running or queued, if any (finished() follows with a cancelled result for
     // a running one).
     void cancel();
-    // The key of the job running or queued, if any.
+    // The key of the job queued last, or else of the one running, if any.
     std::optional<std::uint64_t> busyWith() const;
 
     struct Result {
@@ -103,7 +108,7 @@ private:
 
     mutable std::mutex m_mutex;
     std::condition_variable m_wake;
-    std::optional<Job> m_queued;
+    std::deque<Job> m_queue; // oldest first
     std::optional<std::uint64_t> m_running;
     bool m_cancelRunning = false;
     bool m_stop = false;

@@ -32,6 +32,7 @@ public:
     explicit ViewShareGroup(bool useDiskCache = true);
     // For the resources made from now on (tests set it before the window is first shown).
     void setUseDiskCache(bool use) { m_useDiskCache = use; }
+    bool useDiskCache() const { return m_useDiskCache; }
 
     struct Resources {
         std::shared_ptr<IblPrecompute> precompute;

@@ -3,15 +3,17 @@
 // nothing (docs/benchmarks.md, "Compare grid", has the measured values and how they were taken).
 // Needs a display: run it under tests/with-display.sh.
 //
-//   compare_grid [--frames N]
+//   compare_grid [--frames N] [--stalls]
 //
 // Printed: the time from showing the grid to its first complete frame (every environment loaded
-// on the worker threads and precomputed, every cell at full resolution), the IBL precomputes that
-// ran (9 environments: 9, each once), the frame time while orbiting (linked cameras, reduced
-// resolution, as a drag draws) and of full frames, for the 3x3 grid, a 2x2 grid and the single
-// view at the same size. Environments: the CC0 HDRIs in the installed sample library
-// (packaging/fetch-assets.sh) when there are nine, else built-in and uniform ones. The IBL disk
-// cache is not used (every precompute is counted), IBL quality is the default preset.
+// on the worker threads and precomputed, every cell at full resolution) and the event loop's
+// longest stall on the way (a 1 ms timer's longest gap; --stalls lists each over 50 ms), the IBL
+// precomputes that ran (9 environments: 9, each once; how many on the view's lighting worker),
+// the frame time while orbiting (linked cameras, reduced resolution, as a drag draws) and of full
+// frames, for the 3x3 grid, a 2x2 grid and the single view at the same size. Environments: the
+// CC0 HDRIs in the installed sample library (packaging/fetch-assets.sh) when there are nine, else
+// built-in and uniform ones. The IBL disk cache is not used (every precompute is counted), IBL
+// quality is the default preset.
 
 #include "core/AssetLibrary.h"
 #include "core/Project.h"
@@ -148,8 +150,8 @@ Times orbitSingle(Document& document, ViewportWidget& view, int frames, bool red
 
 void print(const char* what, const Times& t)
 {
-    std::printf("  %-38s step to frame: mean %6.1f ms, max %6.1f ms; renderer %6.1f ms\n", what, t.meanMs, t.maxMs,
-        t.renderMs);
+    std::printf("  %-38s step to frame: mean %6.1f ms, max %6.1f ms; renderer %6.1f ms\n", what, t.meanMs,
+        t.maxMs, t.renderMs);
 }
 
 } // namespace
@@ -164,6 +166,7 @@ int main(int argc, char** argv)
     if (const int at = int(arguments.indexOf(QStringLiteral("--frames")));
         at >= 0 && at + 1 < arguments.size())
         frames = std::max(1, arguments[at + 1].toInt());
+    const bool listStalls = arguments.contains(QStringLiteral("--stalls"));
 
     const std::vector<std::string> sources = nineEnvironments();
     Project project = Project::defaultProject();
@@ -191,6 +194,21 @@ int main(int argc, char** argv)
     view.resize(kWidth, kHeight);
     QElapsedTimer clock;
     clock.start();
+    // The longest the event loop went without running a 1 ms timer: what a user's input waits.
+    QElapsedTimer sinceTick;
+    double longestStallMs = 0.0;
+    QTimer ticks;
+    ticks.setTimerType(Qt::PreciseTimer);
+    QObject::connect(&ticks, &QTimer::timeout, [&] {
+        longestStallMs = std::max(longestStallMs, double(sinceTick.nsecsElapsed()) / 1e6);
+        if (listStalls && sinceTick.nsecsElapsed() > 50'000'000)
+            std::printf("  stall of %.0f ms ending %lld ms after show, %llu frames drawn\n",
+                double(sinceTick.nsecsElapsed()) / 1e6, static_cast<long long>(clock.elapsed()),
+                static_cast<unsigned long long>(view.frameCount()));
+        sinceTick.restart();
+    });
+    sinceTick.start();
+    ticks.start(1);
     view.show();
     int framesToComplete = 0;
     while (clock.elapsed() < 600000) {
@@ -201,12 +219,18 @@ int main(int argc, char** argv)
             break;
     }
     const double firstCompleteMs = double(clock.nsecsElapsed()) / 1e6;
+    // The frame that completed it ended a gap the timer has not seen yet.
+    longestStallMs = std::max(longestStallMs, double(sinceTick.nsecsElapsed()) / 1e6);
+    ticks.stop();
     const CompareFrameStats first = view.lastFrameStats();
     std::printf(
-        "3x3 grid\n  first complete grid: %.0f ms (%d frames drawn on the way; environments decoded: %d)\n",
-        firstCompleteMs, framesToComplete, view.assets()->loads(DocumentAssets::Kind::Environment));
-    std::printf("  IBL: %d environments asked for, %d precomputed, %d from disk\n", first.iblRequests,
-        first.iblComputed, first.iblFromDisk);
+        "3x3 grid\n  first complete grid: %.0f ms (%d frames drawn on the way; environments decoded: %d); "
+        "longest event-loop stall on the way %.0f ms\n",
+        firstCompleteMs, framesToComplete, view.assets()->loads(DocumentAssets::Kind::Environment),
+        longestStallMs);
+    std::printf("  IBL: %d environments asked for, %d precomputed, %d from disk, %d of them on the lighting "
+                "worker\n",
+        first.iblRequests, first.iblComputed, first.iblFromDisk, first.iblFromWorker);
     if (!view.lastError().isEmpty())
         std::printf("  error: %s\n", qPrintable(view.lastError()));
     print("orbit (reduced, 9 cells)", orbitCompare(document, view, frames));
