@@ -98,6 +98,7 @@ void CompareView::releaseRenderer()
     // are forgotten (a new renderer asks again).
     m_lightingWorker.reset();
     m_lightingAsked.clear();
+    m_lightingFailed.clear();
     m_lightingBatch = 0;
     m_lightingBatchMs = 0.0;
     m_renderer.reset();

@@ -113,8 +113,9 @@ private:
     bool m_cancelRunning = false;
     bool m_stop = false;
     // Finished and not taken, oldest first: at most kResultsKept (an older one is dropped by the
-    // thread, in its context; the rest at its end).
-    static constexpr std::size_t kResultsKept = 4;
+    // thread, in its context; the rest at its end). More than a grid's cells: a queue of draft
+    // sets (25 ms each) can finish several before the GUI thread, drawing, takes the first.
+    static constexpr std::size_t kResultsKept = 12;
     std::vector<Result> m_results;
 };
 
