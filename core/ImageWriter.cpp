@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include "core/AtomicFile.h"
+#include "core/BuiltinImageEncoders.h"
 #include "core/ImageCodec.h"
 #include "core/ImageReader.h"
 
@@ -53,6 +55,10 @@ const char* toString(FileSampleFormat format)
 
 bool imageWriterFor(const std::string& path, CodecWriterInfo* info, const char* function, std::string* error)
 {
+    if (const std::optional<CodecWriterInfo> builtin = builtinImageWriterFor(path)) {
+        *info = *builtin; // EXR and PNG: no module to load
+        return true;
+    }
     std::string problem;
     const ImageCodec* codec = imageCodec(&problem);
     if (!codec || !codec->writer(path, info, &problem)) {
@@ -85,17 +91,17 @@ bool encodeImageFile(const std::string& path, const ImageFileSpec& spec, const f
         return false;
     }
     try {
-        // How a failed write is noticed: OpenImageIO encodes into memory (an IOVecOutput proxy,
-        // "oiio:ioproxy"), and the bytes go to disk through writeFileAtomically, which checks
-        // every write, fsyncs, compares the size on disk and only then renames over `path`.
-        // Letting OIIO write the file itself cannot be trusted: its PNG writer reports success
-        // on a full disk and leaves a 0-byte file (issue 12, "A rendered PNG can be lost"; its
-        // file writers do not check what fwrite/fclose return). The alternative, re-reading the
-        // written temporary to validate it, costs a full decode and still trusts each decoder to
-        // notice a truncation. Encoding in memory cannot fail silently, and costs one copy of the
-        // encoded file (smaller than the float buffer below). With OIIO 2.4.7 the bytes are
-        // identical to what the writer puts in a file (compared for exr, png, hdr, jpg, tif, tga,
-        // bmp, webp, ppm). The writer is chosen by the extension of `path`.
+        // How a failed write is noticed: the encoder writes into memory (core's EXR and PNG
+        // encoders; OpenImageIO through an IOVecOutput proxy, "oiio:ioproxy"), and the bytes go to disk
+        // through writeFileAtomically, which checks every write, fsyncs, compares the size on disk and only
+        // then renames over `path`. Letting OIIO write the file itself cannot be trusted: its PNG writer
+        // reports success on a full disk and leaves a 0-byte file (issue 12, "A rendered PNG can be lost";
+        // its file writers do not check what fwrite/fclose return). The alternative, re-reading the written
+        // temporary to validate it, costs a full decode and still trusts each decoder to notice a truncation.
+        // Encoding in memory cannot fail silently, and costs one copy of the encoded file (smaller than the
+        // float buffer below). With OIIO 2.4.7 the bytes are identical to what the writer puts in a file
+        // (compared for exr, png, hdr, jpg, tif, tga, bmp, webp, ppm). The writer is chosen by the extension
+        // of `path`.
         CodecWriterInfo writer;
         if (!imageWriterFor(path, &writer, function, error))
             return false;
@@ -139,8 +145,12 @@ bool encodeImageFile(const std::string& path, const ImageFileSpec& spec, const f
 
         std::string problem;
         bool sampleRefused = false;
-        // (imageWriterFor loaded the codec.)
-        if (!imageCodec(nullptr)->encode(path, fileSpec, buffer.data(), result, &sampleRefused, &problem)) {
+        // EXR and PNG are encoded here (core/BuiltinImageEncoders.h), the rest by the module
+        // (imageWriterFor loaded it).
+        const bool encoded = builtinImageWriterFor(path)
+            ? encodeBuiltinImage(path, fileSpec, buffer.data(), result, &sampleRefused, &problem)
+            : imageCodec(nullptr)->encode(path, fileSpec, buffer.data(), result, &sampleRefused, &problem);
+        if (!encoded) {
             // A writer that cannot hold the samples asked for changes them (TGA: 8 bits): refuse
             // instead, the caller promised the user a bit depth.
             setImageError(error, function, path,

@@ -1,9 +1,10 @@
 #pragma once
-// Writing pixels to an image file through the image codec (OpenImageIO), checked: what Image::save (float
-// RGBA: renders, bakes, sheets) and the texture-set export (core/TextureSetExport: 1 to 4 channels, 8 or 16
-// bits, half or float) share. OpenImageIO encodes into memory and the bytes go to disk through
+// Writing pixels to an image file, checked: what Image::save (float RGBA: renders, bakes, sheets) and the
+// texture-set export (core/TextureSetExport: 1 to 4 channels, 8 or 16 bits, half or float) share. EXR and
+// PNG are encoded by core itself (core/BuiltinImageEncoders.h: no OpenImageIO to load), other formats by
+// the image codec (OpenImageIO); either encodes into memory and the bytes go to disk through
 // writeFileAtomically (core/AtomicFile.h), so a failed write, a full disk included, never leaves half a file
-// nor harms an existing one (see Image::save for why OIIO may not write the file itself).
+// nor harms an existing one (see encodeImageFile for why OIIO may not write the file itself).
 
 #include <string>
 #include <utility>

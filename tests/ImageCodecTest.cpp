@@ -14,9 +14,12 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cstdint>
+#include <cstring>
+#include <optional>
 #include <vector>
 
 #include "TestSupport.h"
+#include "core/BuiltinImageEncoders.h"
 #include "core/Image.h"
 #include "core/ImageCodec.h"
 #include "core/ImageReader.h"
@@ -56,6 +59,27 @@ bool writeWithOiio(const QString& path, int width, int height, int channels, OII
         && output->write_image(OIIO::TypeDesc::FLOAT, values.data()) && output->close();
 }
 
+// A PNG's gAMA, sRGB, cHRM and tEXt chunks, each as "type:hex of its data", sorted (writers order
+// texts as they like).
+QStringList pngColourChunks(const std::vector<unsigned char>& png)
+{
+    QStringList chunks;
+    for (std::size_t at = 8; at + 12 <= png.size();) {
+        const std::size_t length = (std::size_t(png[at]) << 24) | (std::size_t(png[at + 1]) << 16)
+            | (std::size_t(png[at + 2]) << 8) | std::size_t(png[at + 3]);
+        const QByteArray type(reinterpret_cast<const char*>(&png[at + 4]), 4);
+        if (at + 12 + length > png.size())
+            break;
+        if (type == "gAMA" || type == "sRGB" || type == "cHRM" || type == "tEXt")
+            chunks.append(QString::fromLatin1(type) + QLatin1Char(':')
+                + QString::fromLatin1(
+                    QByteArray(reinterpret_cast<const char*>(&png[at + 8]), qsizetype(length)).toHex()));
+        at += 12 + length;
+    }
+    chunks.sort();
+    return chunks;
+}
+
 facet::test::ProcessResult runFacet(const QStringList& arguments, const QProcessEnvironment& extra)
 {
     return facet::test::runWithoutDisplay(QStringLiteral(FACET_EXECUTABLE), arguments, extra);
@@ -77,7 +101,11 @@ private Q_SLOTS:
         Image probe(4, 2, glm::vec4(0.5f));
         QVERIFY(!imageCodecLoaded()); // making an image in memory needs no codec
         std::string error;
+        // EXR and PNG are encoded by core (core/BuiltinImageEncoders.h): still no module.
         QVERIFY2(probe.save(path(QStringLiteral("probe.exr")).toStdString(), &error), error.c_str());
+        QVERIFY2(probe.save(path(QStringLiteral("probe.png")).toStdString(), &error), error.c_str());
+        QVERIFY(!imageCodecLoaded());
+        QVERIFY2(probe.save(path(QStringLiteral("probe.tif")).toStdString(), &error), error.c_str());
         QVERIFY(imageCodecLoaded());
         QVERIFY(imageCodec(nullptr) != nullptr);
         QCOMPARE(imageCodec(nullptr)->interfaceVersion, kImageCodecInterfaceVersion);
@@ -255,6 +283,119 @@ private Q_SLOTS:
                 qPrintable(QStringLiteral("sample %1: %2, wrote %3").arg(i).arg(back[i]).arg(values[i])));
     }
 
+    // EXR and PNG are encoded by core itself (core/BuiltinImageEncoders.h), without the module:
+    // read back with OpenImageIO directly, each file holds what the module's encoder wrote for the
+    // same samples: size, channel names, sample type, colour-space tag, text attributes, and every
+    // sample bit for bit (the 8- and 16-bit rows include the values halfway between two steps).
+    void builtinEncodersMatchTheModule_data()
+    {
+        QTest::addColumn<QString>("extension");
+        QTest::addColumn<int>("channels");
+        QTest::addColumn<int>("sample"); // CodecSample
+        QTest::addColumn<QString>("colorSpace");
+        QTest::addColumn<bool>("attributes");
+        for (int channels = 1; channels <= 4; ++channels) {
+            for (const char* tag : {"sRGB", "Linear", ""}) {
+                QTest::addRow("png 8-bit, %d channels, tag '%s'", channels, tag)
+                    << "png" << channels << int(CodecSample::UInt8) << tag << false;
+                QTest::addRow("png 16-bit, %d channels, tag '%s'", channels, tag)
+                    << "png" << channels << int(CodecSample::UInt16) << tag << false;
+            }
+            QTest::addRow("exr half, %d channels", channels)
+                << "exr" << channels << int(CodecSample::Half) << "Linear" << false;
+            QTest::addRow("exr float, %d channels", channels)
+                << "exr" << channels << int(CodecSample::Float) << "Linear" << false;
+        }
+        QTest::newRow("png with text attributes") << "png" << 3 << int(CodecSample::UInt8) << "sRGB" << true;
+        QTest::newRow("exr with string attributes")
+            << "exr" << 4 << int(CodecSample::Half) << "Linear" << true;
+    }
+    void builtinEncodersMatchTheModule()
+    {
+        QFETCH(QString, extension);
+        QFETCH(int, channels);
+        QFETCH(int, sample);
+        QFETCH(QString, colorSpace);
+        QFETCH(bool, attributes);
+        constexpr int kWidth = 37;
+        constexpr int kHeight = 9;
+        CodecEncodeSpec spec;
+        spec.width = kWidth;
+        spec.height = kHeight;
+        spec.channels = channels;
+        spec.sample = CodecSample(sample);
+        spec.alphaChannel = channels == 2 || channels == 4 ? channels - 1 : -1;
+        spec.colorSpaceName = colorSpace.toStdString();
+        if (attributes)
+            spec.attributes = {{"facet:rows", "3"}, {"facet:rowLabels", "gold|silver|copper"}};
+        const bool integer = spec.sample == CodecSample::UInt8 || spec.sample == CodecSample::UInt16;
+        const float steps = spec.sample == CodecSample::UInt16 ? 65535.0f : 255.0f;
+        std::vector<float> values(std::size_t(kWidth * kHeight * channels));
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            if (integer) // every step, and halfway between neighbours
+                values[i] = std::min(1.0f, float(i % 512) * 0.5f / steps + (i % 7 == 0 ? 0.5f : 0.0f));
+            else // half's range and its negatives, as core clamps them
+                values[i] = float((int(i) % 91) - 45) * (i % 5 == 0 ? 1456.0f : 0.0371f);
+        }
+        const std::string name = "match." + extension.toStdString();
+        std::vector<unsigned char> builtin;
+        std::vector<unsigned char> module;
+        bool refused = false;
+        std::string error;
+        QVERIFY2(encodeBuiltinImage(name, spec, values.data(), &builtin, &refused, &error), error.c_str());
+        const ImageCodec* codec = imageCodec(&error);
+        QVERIFY2(codec, error.c_str());
+        QVERIFY2(codec->encode(name, spec, values.data(), &module, &refused, &error), error.c_str());
+
+        struct Read {
+            OIIO::ImageSpec spec;
+            std::vector<float> pixels;
+        };
+        const auto read
+            = [&](const std::vector<unsigned char>& bytes, const QString& file) -> std::optional<Read> {
+            QFile out(path(file));
+            if (!out.open(QIODevice::WriteOnly)
+                || out.write(reinterpret_cast<const char*>(bytes.data()), qint64(bytes.size()))
+                    != qint64(bytes.size()))
+                return std::nullopt;
+            out.close();
+            OIIO::ImageSpec config;
+            config.attribute("oiio:UnassociatedAlpha", 1);
+            std::unique_ptr<OIIO::ImageInput> input
+                = OIIO::ImageInput::open(path(file).toStdString(), &config);
+            if (!input)
+                return std::nullopt;
+            Read result {input->spec(), std::vector<float>(values.size())};
+            if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, result.pixels.data()))
+                return std::nullopt;
+            return result;
+        };
+        const std::optional<Read> ours = read(builtin, QStringLiteral("builtin.") + extension);
+        const std::optional<Read> theirs = read(module, QStringLiteral("module.") + extension);
+        QVERIFY(ours && theirs);
+        QCOMPARE(ours->spec.width, theirs->spec.width);
+        QCOMPARE(ours->spec.height, theirs->spec.height);
+        QCOMPARE(ours->spec.nchannels, theirs->spec.nchannels);
+        QCOMPARE(int(ours->spec.format.basetype), int(theirs->spec.format.basetype));
+        QCOMPARE(ours->spec.channelnames, theirs->spec.channelnames);
+        QCOMPARE(ours->spec.alpha_channel, theirs->spec.alpha_channel);
+        QCOMPARE(ours->spec.get_string_attribute("oiio:ColorSpace"),
+            theirs->spec.get_string_attribute("oiio:ColorSpace"));
+        for (const auto& [key, value] : spec.attributes) {
+            QCOMPARE(ours->spec.get_string_attribute(key), value);
+            QCOMPARE(theirs->spec.get_string_attribute(key), value);
+        }
+        if (extension == QLatin1String("png")) // what other readers go by: the colour chunks and texts
+            QCOMPARE(pngColourChunks(builtin), pngColourChunks(module));
+        for (std::size_t i = 0; i < values.size(); ++i)
+            QVERIFY2(std::memcmp(&ours->pixels[i], &theirs->pixels[i], sizeof(float)) == 0,
+                qPrintable(QStringLiteral("sample %1 (wrote %2): ours %3, the module's %4")
+                               .arg(i)
+                               .arg(double(values[i]), 0, 'g', 9)
+                               .arg(double(ours->pixels[i]), 0, 'g', 9)
+                               .arg(double(theirs->pixels[i]), 0, 'g', 9)));
+    }
+
     // What the writers refuse, named.
     void refusedWritesAreNamed_data()
     {
@@ -267,6 +408,10 @@ private Q_SLOTS:
             << "r2.nosuchformat" << int(FileSampleFormat::UInt8) << "r2.nosuchformat: ";
         QTest::newRow("sgi is not encoded in memory")
             << "r3.sgi" << int(FileSampleFormat::UInt8) << "cannot write sgi files safely";
+        QTest::newRow("png cannot hold half floats (core's encoder)")
+            << "r4.png" << int(FileSampleFormat::Half) << "r4.png: png files cannot hold half float samples";
+        QTest::newRow("exr cannot hold 8 bits (core's encoder)")
+            << "r5.exr" << int(FileSampleFormat::UInt8) << "r5.exr: openexr files cannot hold 8-bit samples";
     }
     void refusedWritesAreNamed()
     {
@@ -298,9 +443,16 @@ private Q_SLOTS:
         QTest::newRow("render --help") << facet::test::strings({"render", "--help"}) << 0 << false;
         QTest::newRow("render, a bad value")
             << facet::test::strings({"render", "--size", "0x0", "-o", "x.png"}) << 2 << false;
+        // EXR and PNG are encoded by core: a render that reads no image never loads it.
         QTest::newRow("render to a PNG") << facet::test::strings(
             {"render", "--env", "uniform:1", "--size", "16x16", "-o", "{dir}/out.png"})
-                                         << 0 << true;
+                                         << 0 << false;
+        QTest::newRow("render to an EXR") << facet::test::strings(
+            {"render", "--env", "uniform:1", "--size", "16x16", "-o", "{dir}/out.exr"})
+                                          << 0 << false;
+        QTest::newRow("render lit by an EXR, to a PNG") << facet::test::strings(
+            {"render", "--env", "{dir}/lit.exr", "--size", "16x16", "-o", "{dir}/out-lit.png"})
+                                                        << 0 << true;
     }
     void commandsLoadItOnlyForImages()
     {
@@ -309,6 +461,9 @@ private Q_SLOTS:
         QFETCH(bool, loads);
         for (QString& argument : arguments)
             argument.replace(QLatin1String("{dir}"), m_dir.path());
+        if (arguments.contains(path(QStringLiteral("lit.exr")))
+            && !QFileInfo::exists(path(QStringLiteral("lit.exr"))))
+            QVERIFY(writeWithOiio(path(QStringLiteral("lit.exr")), 16, 8, 3, OIIO::TypeDesc::HALF));
         QProcessEnvironment extra;
         extra.insert(QStringLiteral("LD_DEBUG"), QStringLiteral("libs"));
         extra.insert(QStringLiteral("FACET_CACHE_DIR"), path(QStringLiteral("cache")));
@@ -350,19 +505,22 @@ private Q_SLOTS:
             if (module.isEmpty())
                 QSKIP("no libz.so.1 in the usual places");
         }
+        if (!QFileInfo::exists(path(QStringLiteral("lit.exr"))))
+            QVERIFY(writeWithOiio(path(QStringLiteral("lit.exr")), 16, 8, 3, OIIO::TypeDesc::HALF));
         QProcessEnvironment extra;
         extra.insert(QStringLiteral("FACET_IMAGEIO_MODULE"), module);
         extra.insert(QStringLiteral("FACET_CACHE_DIR"), path(QStringLiteral("cache")));
         const facet::test::ProcessResult result
-            = runFacet(facet::test::strings(
-                           {"render", "--env", "uniform:1", "--size", "16x16", "-o", "out-unusable.png"}),
+            = runFacet(QStringList {QStringLiteral("render"), QStringLiteral("--env"),
+                           path(QStringLiteral("lit.exr")), QStringLiteral("--size"), QStringLiteral("16x16"),
+                           QStringLiteral("-o"), QStringLiteral("out-unusable.png")},
                 extra);
         QCOMPARE(result.exitCode, 1);
         QVERIFY2(
             result.err.contains(QStringLiteral("image input/output module ") + module + QStringLiteral(": ")),
             qPrintable(result.err));
         QVERIFY2(result.err.contains(why), qPrintable(result.err));
-        QVERIFY2(result.err.contains(QLatin1String("out-unusable.png")), qPrintable(result.err));
+        QVERIFY2(result.err.contains(QLatin1String("lit.exr")), qPrintable(result.err));
     }
 };
 
