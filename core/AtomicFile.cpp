@@ -10,6 +10,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "core/Failure.h"
+
 namespace facet {
 
 namespace {
@@ -17,13 +19,6 @@ namespace {
 std::string errnoText(int error)
 {
     return std::generic_category().message(error);
-}
-
-bool fail(const std::string& message, std::string* reason)
-{
-    if (reason)
-        *reason = message;
-    return false;
 }
 
 // The file a save replaces: a symbolic link is followed so that the link survives the save

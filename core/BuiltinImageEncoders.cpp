@@ -1,7 +1,6 @@
 #include "core/BuiltinImageEncoders.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <csetjmp>
 #include <cstdint>
@@ -18,6 +17,8 @@
 #include <half.h>
 #include <png.h>
 
+#include "core/AsciiText.h"
+
 namespace facet {
 
 namespace {
@@ -28,10 +29,7 @@ std::string lowerExtension(const std::string& path)
     const std::size_t slash = path.find_last_of('/');
     if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
         return {};
-    std::string extension = path.substr(dot + 1);
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-        [](unsigned char c) { return char(std::tolower(c)); });
-    return extension;
+    return asciiLowercase(path.substr(dot + 1));
 }
 
 // OpenEXR writes through an Imf::OStream; this one fills a byte vector (it seeks back to write
@@ -217,18 +215,17 @@ std::optional<CodecWriterInfo> builtinImageWriterFor(const std::string& path)
 {
     const std::string extension = lowerExtension(path);
     if (extension == "exr")
-        return CodecWriterInfo {"openexr", true, true};
+        return CodecWriterInfo {"openexr", true, true, true};
     if (extension == "png")
-        return CodecWriterInfo {"png", true, true};
+        return CodecWriterInfo {"png", true, true, true};
     return std::nullopt;
 }
 
-bool encodeBuiltinImage(const std::string& path, const CodecEncodeSpec& spec, const float* samples,
+bool encodeBuiltinImage(const CodecWriterInfo& writer, const CodecEncodeSpec& spec, const float* samples,
     std::vector<unsigned char>* encoded, bool* sampleRefused, std::string* error)
 {
     *sampleRefused = false;
-    const std::optional<CodecWriterInfo> writer = builtinImageWriterFor(path);
-    if (!writer) {
+    if (!writer.builtin) {
         *error = "not a format Facet encodes itself";
         return false;
     }
@@ -236,8 +233,8 @@ bool encodeBuiltinImage(const std::string& path, const CodecEncodeSpec& spec, co
         *error = "cannot encode: the image is empty or has more than 4 channels";
         return false;
     }
-    return writer->formatName == "openexr" ? encodeExr(spec, samples, encoded, sampleRefused, error)
-                                           : encodePng(spec, samples, encoded, sampleRefused, error);
+    return writer.formatName == "openexr" ? encodeExr(spec, samples, encoded, sampleRefused, error)
+                                          : encodePng(spec, samples, encoded, sampleRefused, error);
 }
 
 } // namespace facet

@@ -27,10 +27,10 @@ namespace facet {
 std::optional<CodecWriterInfo> builtinImageWriterFor(const std::string& path);
 
 // Encodes `samples` (spec.width x spec.height x spec.channels floats, rows top first, already
-// clamped to what spec.sample holds) as the file format of `path`'s extension, which
-// builtinImageWriterFor must know. False with *error on failure (*sampleRefused: the format cannot
+// clamped to what spec.sample holds) as `writer`'s format, which builtinImageWriterFor must have
+// given (writer.builtin). False with *error on failure (*sampleRefused: the format cannot
 // hold spec.sample, e.g. half-float PNG).
-bool encodeBuiltinImage(const std::string& path, const CodecEncodeSpec& spec, const float* samples,
+bool encodeBuiltinImage(const CodecWriterInfo& writer, const CodecEncodeSpec& spec, const float* samples,
     std::vector<unsigned char>* encoded, bool* sampleRefused, std::string* error);
 
 } // namespace facet

@@ -9,20 +9,10 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-namespace facet {
+#include "core/Failure.h"
+#include "core/Finite.h"
 
-namespace {
-bool finite(const glm::dvec3& v)
-{
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-bool fail(const char* message, std::string* problem)
-{
-    if (problem)
-        *problem = message;
-    return false;
-}
-} // namespace
+namespace facet {
 
 glm::dmat4 Camera::viewMatrix() const
 {
@@ -48,11 +38,11 @@ double Camera::framingDistance(double radius, double aspect) const
 
 bool Camera::validate(std::string* problem) const
 {
-    if (!finite(position))
+    if (!isFinite(position))
         return fail("position: must be finite", problem);
-    if (!finite(target))
+    if (!isFinite(target))
         return fail("target: must be finite", problem);
-    if (!finite(up))
+    if (!isFinite(up))
         return fail("up: must be finite", problem);
     const glm::dvec3 forward = target - position;
     if (glm::length(forward) <= 1e-9)

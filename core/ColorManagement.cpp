@@ -8,16 +8,11 @@
 #include <exception>
 #include <mutex>
 
+#include "core/Failure.h"
+
 namespace facet {
 
 namespace {
-
-bool fail(const std::string& message, std::string* error)
-{
-    if (error)
-        *error = message;
-    return false;
-}
 
 // "\"a\", \"b\"" for messages; "(none)" for an empty list.
 std::string quotedList(const std::vector<std::string>& names)

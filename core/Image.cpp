@@ -16,10 +16,6 @@ namespace facet {
 
 namespace {
 
-// The largest finite IEEE 754 binary16 value: what +Inf becomes, so that a sanitised image
-// survives a round trip through a half-float EXR or an RGBA16F texture unchanged.
-constexpr float kLargestHalf = 65504.0f;
-
 // The sRGB EOTF, IEC 61966-2-1:1999 section 4.2 (piecewise: linear toe below 0.04045).
 float srgbToLinear(float encoded)
 {

@@ -14,6 +14,11 @@
 
 namespace facet {
 
+// The largest finite IEEE 754 binary16 value: what the half-float copies of images (RGBA16F
+// textures, half EXR files) hold at most. +Inf and finite samples beyond it become this, not the
+// Inf a conversion would make, so a sanitised image survives a round trip through them unchanged.
+inline constexpr float kLargestHalf = 65504.0f;
+
 // How the numbers in an image relate to light. Colour data files are usually sRGB-encoded
 // (8-bit PNG/JPEG); HDR formats and data maps (normal, roughness...) are linear.
 enum class ColorEncoding { Linear, SRGB };

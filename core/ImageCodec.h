@@ -44,6 +44,7 @@ struct CodecWriterInfo {
     std::string formatName; // "openexr", "png", "hdr", ...
     bool alpha = false; // can store an alpha channel
     bool inMemory = false; // can encode into memory (writeImageFile writes the bytes itself)
+    bool builtin = false; // encoded by core itself, no module (core/BuiltinImageEncoders.h)
 };
 
 // What to encode: samples already converted to what the file holds (core/ImageWriter).

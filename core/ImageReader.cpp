@@ -1,7 +1,6 @@
 #include "core/ImageReader.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -11,19 +10,13 @@
 
 #include <sys/stat.h>
 
+#include "core/AsciiText.h"
 #include "core/FileCheck.h"
 #include "core/GltfImport.h"
 
 namespace facet {
 
 namespace {
-
-std::string lowercase(std::string text)
-{
-    std::transform(text.begin(), text.end(), text.begin(),
-        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
 
 // OIIO's messages can span several lines (libpng stacks its own under OIIO's); a message for
 // the user is one line.
@@ -384,7 +377,7 @@ bool ImageReader::read(int begin, int end, int channels, CodecSample as, void* d
 // TGA, 8-bit TIFF as painting tools write them), float files (EXR, HDR, float TIFF) are linear.
 ColorEncoding ImageReader::encoding() const
 {
-    const std::string name = lowercase(colorSpaceName());
+    const std::string name = asciiLowercase(colorSpaceName());
     // A 2.2 power curve is not the sRGB curve but close to it (within 0.4% of full scale),
     // and what a gamma-tagged PNG's author meant.
     if (name.find("srgb") != std::string::npos || name.rfind("gammacorrected", 0) == 0)

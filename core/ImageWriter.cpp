@@ -14,8 +14,6 @@ namespace facet {
 
 namespace {
 
-constexpr float kLargestHalf = 65504.0f; // the largest finite IEEE 754 binary16 value
-
 CodecSample sampleOf(FileSampleFormat format)
 {
     switch (format) {
@@ -147,8 +145,8 @@ bool encodeImageFile(const std::string& path, const ImageFileSpec& spec, const f
         bool sampleRefused = false;
         // EXR and PNG are encoded here (core/BuiltinImageEncoders.h), the rest by the module
         // (imageWriterFor loaded it).
-        const bool encoded = builtinImageWriterFor(path)
-            ? encodeBuiltinImage(path, fileSpec, buffer.data(), result, &sampleRefused, &problem)
+        const bool encoded = writer.builtin
+            ? encodeBuiltinImage(writer, fileSpec, buffer.data(), result, &sampleRefused, &problem)
             : imageCodec(nullptr)->encode(path, fileSpec, buffer.data(), result, &sampleRefused, &problem);
         if (!encoded) {
             // A writer that cannot hold the samples asked for changes them (TGA: 8 bits): refuse

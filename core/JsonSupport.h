@@ -16,6 +16,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/Failure.h"
+
 namespace facet::jsonsupport {
 
 inline QString qs(const std::string& s)
@@ -34,21 +36,11 @@ inline std::string number(double value)
     return buffer;
 }
 
-inline bool fail(const std::string& message, std::string* problem)
-{
-    if (problem)
-        *problem = message;
-    return false;
-}
+using facet::fail;
 inline std::nullopt_t failed(const std::string& message, std::string* problem)
 {
     fail(message, problem);
     return std::nullopt;
-}
-
-inline bool finite(const glm::dvec3& v)
-{
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
 inline const char* typeName(const QJsonValue& value)

@@ -8,6 +8,9 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "core/Failure.h"
+#include "core/Finite.h"
+
 namespace facet {
 
 namespace {
@@ -21,17 +24,6 @@ std::string number(double value)
     return buffer;
 }
 
-bool fail(const std::string& message, std::string* problem)
-{
-    if (problem)
-        *problem = message;
-    return false;
-}
-
-bool finite(const glm::dvec3& v)
-{
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 } // namespace
 
 const char* toString(LightType type)
@@ -112,9 +104,9 @@ bool Light::validate(std::string* problem) const
         return fail("innerConeAngle: " + number(innerConeAngle) + " must be less than outerConeAngle ("
                 + number(outerConeAngle) + ")",
             problem);
-    if (!finite(position))
+    if (!isFinite(position))
         return fail("position: must be finite", problem);
-    if (!finite(direction) || glm::length(direction) <= 1e-12)
+    if (!isFinite(direction) || glm::length(direction) <= 1e-12)
         return fail("direction: must be a finite, non-zero vector", problem);
     return true;
 }

@@ -18,8 +18,6 @@ namespace facet {
 
 namespace {
 
-constexpr float kLargestHalf = 65504.0f;
-
 std::atomic<std::uint64_t> g_loads {0};
 
 // A positive whole number from an environment variable; 0 when unset or not one (*bad says so).

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/EnumNames.h"
+#include "core/Failure.h"
 
 namespace facet {
 
@@ -35,13 +36,6 @@ bool checkRange(double value, double lo, double hi, const std::string& field, st
         return true;
     if (problem)
         *problem = field + ": " + number(value) + " is outside [" + number(lo) + ", " + number(hi) + "]";
-    return false;
-}
-
-bool fail(const std::string& message, std::string* problem)
-{
-    if (problem)
-        *problem = message;
     return false;
 }
 
@@ -179,18 +173,6 @@ bool Material::validate(std::string* problem) const
         if (!validateMap(slot, map(slot), problem))
             return false;
     return true;
-}
-
-double f0FromIor(double ior)
-{
-    const double r = (ior - 1.0) / (ior + 1.0);
-    return r * r;
-}
-
-double iorFromF0(double f0)
-{
-    const double s = std::sqrt(std::clamp(f0, 0.0, 0.999999));
-    return (1.0 + s) / (1.0 - s);
 }
 
 } // namespace facet

@@ -164,10 +164,9 @@ struct Material {
     bool operator==(const Material&) const = default;
 };
 
-// Schlick's F0 for a dielectric of index `ior` against air: ((n - 1) / (n + 1))^2 (Fresnel
-// equations at normal incidence; glTF KHR_materials_ior). f0FromIor(1.5) = 0.04.
-double f0FromIor(double ior);
-// The inverse: n = (1 + sqrt(F0)) / (1 - sqrt(F0)), for 0 <= F0 < 1.
-double iorFromF0(double f0);
+// Schlick's F0 for a dielectric of index `ior` against air, and the inverse (core/Brdf.h):
+// f0FromIor(1.5) = 0.04.
+using shading::f0FromIor;
+using shading::iorFromF0;
 
 } // namespace facet

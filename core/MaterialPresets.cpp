@@ -3,6 +3,7 @@
 #include <QFileInfo>
 #include <QJsonValue>
 
+#include "core/Failure.h"
 #include "core/Project.h" // material JSON and the file helpers shared with project files
 
 namespace facet {
@@ -77,12 +78,6 @@ std::vector<MaterialPreset> makeBuiltinPresets()
     return presets;
 }
 
-bool fail(const std::string& message, std::string* error)
-{
-    if (error)
-        *error = message;
-    return false;
-}
 std::nullopt_t failed(const std::string& message, std::string* error)
 {
     fail(message, error);

@@ -11,6 +11,9 @@
 #include <glm/matrix.hpp>
 #include <glm/vector_relational.hpp>
 
+#include "core/Failure.h"
+#include "core/Finite.h"
+
 namespace facet {
 
 namespace {
@@ -21,31 +24,11 @@ namespace {
 constexpr float kUnitTolerance = 1e-3f;
 constexpr float kOrthogonalTolerance = 1e-3f;
 
-bool fail(const std::string& message, std::string* problem)
-{
-    if (problem)
-        *problem = message;
-    return false;
-}
-
 std::string vec3Text(const glm::vec3& v)
 {
     char buffer[96];
     std::snprintf(buffer, sizeof buffer, "(%.6g, %.6g, %.6g)", double(v.x), double(v.y), double(v.z));
     return buffer;
-}
-
-bool isFinite(const glm::vec3& v)
-{
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-bool isFinite(const glm::vec4& v)
-{
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) && std::isfinite(v.w);
-}
-bool isFinite(const glm::vec2& v)
-{
-    return std::isfinite(v.x) && std::isfinite(v.y);
 }
 
 } // namespace

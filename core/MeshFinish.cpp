@@ -5,14 +5,11 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/Finite.h"
+
 namespace facet {
 
 namespace {
-
-bool isFinite(const glm::vec3& v)
-{
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 
 // File tangents made exactly perpendicular to the (repaired) normals; false when one cannot be.
 bool orthonormalizeTangents(Mesh& mesh)

@@ -10,25 +10,12 @@
 #include <glm/trigonometric.hpp>
 
 #include "core/Camera.h"
+#include "core/Finite.h"
 #include "core/Mesh.h"
 
 namespace facet {
 
 namespace {
-
-bool finite(const glm::dmat4& m)
-{
-    for (int c = 0; c < 4; ++c)
-        for (int r = 0; r < 4; ++r)
-            if (!std::isfinite(m[c][r]))
-                return false;
-    return true;
-}
-
-bool finite(const glm::dvec3& v)
-{
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 
 // Slab test of the ray against the (object-space) box, for t in (0, tMax]; a cheap rejection of
 // clicks beside the object before the triangle loop.
@@ -101,7 +88,7 @@ std::optional<TriangleHit> intersect(const glm::dvec3& origin, const glm::dvec3&
 std::optional<MeshHit> pickMesh(
     const Mesh& mesh, const glm::dmat4& model, const PickRay& ray, const std::vector<PickPart>& parts)
 {
-    if (mesh.indices.size() < 3 || !finite(model) || !finite(ray.origin) || !finite(ray.direction)
+    if (mesh.indices.size() < 3 || !isFinite(model) || !isFinite(ray.origin) || !isFinite(ray.direction)
         || glm::length(ray.direction) == 0.0)
         return std::nullopt;
     const double modelDeterminant = glm::determinant(glm::dmat3(model));
@@ -112,7 +99,7 @@ std::optional<MeshHit> pickMesh(
     const glm::dmat4 toObject = glm::inverse(model);
     const glm::dvec3 origin = glm::dvec3(toObject * glm::dvec4(ray.origin, 1.0));
     const glm::dvec3 direction = glm::dvec3(toObject * glm::dvec4(ray.direction, 0.0));
-    if (!finite(origin) || !finite(direction) || !hitsBox(mesh.bounds, origin, direction))
+    if (!isFinite(origin) || !isFinite(direction) || !hitsBox(mesh.bounds, origin, direction))
         return std::nullopt;
     // A mirroring model reverses the winding on screen (the renderer flips its front face then).
     const bool mirrored = modelDeterminant < 0.0;

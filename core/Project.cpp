@@ -17,6 +17,7 @@
 #include <QSet>
 
 #include "core/EnumNames.h"
+#include "core/Finite.h"
 #include "core/JsonReader.h"
 #include "core/JsonSupport.h"
 
@@ -498,7 +499,7 @@ bool ViewSettings::validate(std::string* problem) const
         return fail("mesh: must not be empty (\"sphere\" is the built-in sphere)", problem);
     if (msaaSamples != 1 && msaaSamples != 2 && msaaSamples != 4 && msaaSamples != 8 && msaaSamples != 16)
         return fail("msaaSamples: " + std::to_string(msaaSamples) + " is not one of 1, 2, 4, 8, 16", problem);
-    if (!finite(backgroundColor) || backgroundColor.x < 0.0 || backgroundColor.y < 0.0
+    if (!isFinite(backgroundColor) || backgroundColor.x < 0.0 || backgroundColor.y < 0.0
         || backgroundColor.z < 0.0)
         return fail("backgroundColor: must be finite and >= 0 (linear)", problem);
     if (!std::isfinite(backgroundBlurRoughness) || backgroundBlurRoughness < 0.0

@@ -8,18 +8,12 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "core/Failure.h"
 #include "core/Mesh.h"
 
 namespace facet {
 
 namespace {
-
-bool fail(const std::string& message, std::string* problem)
-{
-    if (problem)
-        *problem = message;
-    return false;
-}
 
 bool indicesInRange(const Mesh& mesh)
 {

@@ -8,6 +8,7 @@
 #include <QtGlobal>
 
 #include "core/Environment.h"
+#include "core/Failure.h"
 #include "core/Project.h"
 
 namespace facet {
@@ -30,13 +31,6 @@ constexpr std::array<WedgeParameterInfo, 10> kParameters = {{
     {WedgeParameter::Exposure, "exposure", "view.exposureEV", ViewSettings::kMinExposureEV,
         ViewSettings::kMaxExposureEV},
 }};
-
-bool fail(const std::string& message, std::string* problem)
-{
-    if (problem)
-        *problem = message;
-    return false;
-}
 
 // Shortest text that reads back as the same double ("0.25", "1e-05").
 std::string shortest(double value)

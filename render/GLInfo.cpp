@@ -3,7 +3,8 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
-#include <cctype>
+
+#include "core/AsciiText.h"
 
 namespace facet {
 
@@ -19,9 +20,7 @@ std::string GLInfo::summary() const
 
 bool isSoftwareRendererName(const std::string& renderer)
 {
-    std::string name = renderer;
-    std::transform(
-        name.begin(), name.end(), name.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string name = asciiLowercase(renderer);
     for (const char* software :
         {"llvmpipe", "softpipe", "software rasterizer", "swrast", "swiftshader", "gdi generic"})
         if (name.find(software) != std::string::npos)

@@ -77,6 +77,10 @@ double cubeTexelSolidAngle(int x, int y, int size)
         + cornerArea(x0 + step, y0 + step);
 }
 
+// Entries per row of the tables the irradiance and prefilter passes read (ibl_irradiance.frag and
+// ibl_prefilter.frag index them with the same width).
+constexpr int kTableWidth = 1024;
+
 // A table of RGBA32F entries, `width` to a row, for texelFetch (no filtering, no mipmaps).
 GLTexture tableTexture(const std::vector<glm::vec4>& entries, int width)
 {
@@ -90,13 +94,32 @@ GLTexture tableTexture(const std::vector<glm::vec4>& entries, int width)
     return texture;
 }
 
+// A pass's table bound to texture unit 1 while the pass draws (unit 0 holds the source cube),
+// unbound when the pass ends, however it ends.
+class TableBinding {
+public:
+    explicit TableBinding(const GLTexture& table) { bind(table.id()); }
+    ~TableBinding() { bind(0); }
+    TableBinding(const TableBinding&) = delete;
+    TableBinding& operator=(const TableBinding&) = delete;
+
+    static constexpr int kUnit = 1;
+
+private:
+    static void bind(GLuint id)
+    {
+        glActiveTexture(GL_TEXTURE0 + kUnit);
+        glBindTexture(GL_TEXTURE_2D, id);
+        glActiveTexture(GL_TEXTURE0);
+    }
+};
+
 // The irradiance pass's table (ibl_irradiance.frag): for every texel t of `level` (size x size a
 // face) of `cube`, its centre's direction w_t and L_t Omega_t, as
 // RGBA32F rows of 1024 entries (direction row, then radiance row). Made once per environment:
 // 6 s^2 directions, solid angles and a read-back of a few KiB instead of that many per output texel.
 GLTexture irradianceTexelTable(const GLTexture& cube, int size, int level)
 {
-    constexpr int kTableWidth = 1024; // as ibl_irradiance.frag
     const int count = 6 * size * size;
     const int rows = 2 * ((count + kTableWidth - 1) / kTableWidth);
     std::vector<glm::vec4> table(std::size_t(kTableWidth) * std::size_t(rows), glm::vec4(0.0f));
@@ -126,7 +149,6 @@ GLTexture irradianceTexelTable(const GLTexture& cube, int size, int level)
 GLTexture prefilterSampleTable(
     double roughness, int samples, double sourceSize, double sourceMaxLod, int* count, double* inverseWeight)
 {
-    constexpr int kTableWidth = 1024; // as ibl_prefilter.frag
     const std::vector<PrefilterLobeSample> lobe = prefilterLobeSamples(roughness, samples);
     const int rows = std::max(1, int((lobe.size() + kTableWidth - 1) / kTableWidth));
     std::vector<glm::vec4> table(std::size_t(kTableWidth) * std::size_t(rows), glm::vec4(0.0f));
@@ -649,6 +671,7 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
             const ShaderProgram& program = level == 0 ? m_programs->prefilterCopy : m_programs->prefilter;
             program.use();
             GLTexture samples;
+            std::optional<TableBinding> bound;
             if (level == 0) {
                 program.setFloat("uCopyLod",
                     float(std::max(
@@ -659,10 +682,8 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
                 samples = prefilterSampleTable(roughnessFromLod(level, settings.prefilterMipLevels),
                     settings.prefilterSamples, double(settings.cubeSize), sourceMaxLod, &count,
                     &inverseWeight);
-                glActiveTexture(GL_TEXTURE1);
-                glBindTexture(GL_TEXTURE_2D, samples.id());
-                glActiveTexture(GL_TEXTURE0);
-                program.setInt("uSamples", 1);
+                bound.emplace(samples);
+                program.setInt("uSamples", TableBinding::kUnit);
                 program.setInt("uCount", count);
                 program.setFloat("uInverseWeight", float(inverseWeight));
             }
@@ -671,11 +692,6 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
                 if (!drawInto(*prefiltered, face, level, size, error)
                     || !advance(faceWork(size, level == 0 ? 1.0 : double(settings.prefilterSamples)), true))
                     return nullptr;
-            }
-            if (samples.id()) {
-                glActiveTexture(GL_TEXTURE1);
-                glBindTexture(GL_TEXTURE_2D, 0);
-                glActiveTexture(GL_TEXTURE0);
             }
         }
         glFinish();
@@ -702,23 +718,20 @@ std::shared_ptr<const IblTextures> IblPrecompute::prepare(const Environment& env
                     + ": the environment cube could not be read back for the irradiance";
             return nullptr;
         }
-        glActiveTexture(GL_TEXTURE1);
-        glBindTexture(GL_TEXTURE_2D, texels.id());
-        glActiveTexture(GL_TEXTURE0);
-        m_programs->irradiance.use();
-        m_programs->irradiance.setInt("uTexels", 1);
-        m_programs->irradiance.setInt(
-            "uCount", 6 * (settings.cubeSize >> sourceLevel) * (settings.cubeSize >> sourceLevel));
-        for (int face = 0; face < 6; ++face) {
-            m_programs->irradiance.setInt("uFace", face);
-            if (!drawInto(*irradiance, face, 0, settings.irradianceSize, error)
-                || !advance(irradianceWork(), true))
-                return nullptr;
+        {
+            const TableBinding bound(texels);
+            m_programs->irradiance.use();
+            m_programs->irradiance.setInt("uTexels", TableBinding::kUnit);
+            m_programs->irradiance.setInt(
+                "uCount", 6 * (settings.cubeSize >> sourceLevel) * (settings.cubeSize >> sourceLevel));
+            for (int face = 0; face < 6; ++face) {
+                m_programs->irradiance.setInt("uFace", face);
+                if (!drawInto(*irradiance, face, 0, settings.irradianceSize, error)
+                    || !advance(irradianceWork(), true))
+                    return nullptr;
+            }
+            glFinish();
         }
-        glFinish();
-        glActiveTexture(GL_TEXTURE1);
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glActiveTexture(GL_TEXTURE0);
         stats->msIrradiance = msSince(passStart);
         ++stats->passesRun;
         result->irradiance = irradiance;

@@ -342,7 +342,9 @@ private Q_SLOTS:
         std::vector<unsigned char> module;
         bool refused = false;
         std::string error;
-        QVERIFY2(encodeBuiltinImage(name, spec, values.data(), &builtin, &refused, &error), error.c_str());
+        const std::optional<CodecWriterInfo> writer = builtinImageWriterFor(name);
+        QVERIFY(writer && writer->builtin);
+        QVERIFY2(encodeBuiltinImage(*writer, spec, values.data(), &builtin, &refused, &error), error.c_str());
         const ImageCodec* codec = imageCodec(&error);
         QVERIFY2(codec, error.c_str());
         QVERIFY2(codec->encode(name, spec, values.data(), &module, &refused, &error), error.c_str());
