@@ -5,6 +5,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonObject>
 #include <QStorageInfo>
 #include <QTemporaryDir>
 #include <QtTest/QTest>
@@ -131,6 +132,54 @@ private Q_SLOTS:
             QSKIP("running with permission to read any file (root): cannot test an unreadable file");
         QVERIFY(!Project::load(locked.toStdString(), &error));
         QVERIFY2(contains(error, "locked.json: cannot read it"), error.c_str());
+    }
+
+    // A file is read up to its limit and refused one byte over it, whatever its size; the reader
+    // grows its buffer as bytes arrive (it allocated the whole limit for every file before).
+    void sizeLimitIsExact_data()
+    {
+        constexpr qint64 kLimit = qint64(2) << 20;
+        QTest::addColumn<qint64>("limit");
+        QTest::addColumn<qint64>("size");
+        QTest::addColumn<QString>("expected"); // "" when the object reads
+        const QString tooLarge = QStringLiteral("the file is larger than 2 MiB, too large to be a Facet file");
+        QTest::newRow("a few bytes") << kLimit << qint64(16) << QString();
+        QTest::newRow("64 KiB (one read step)") << kLimit << qint64(64 * 1024) << QString();
+        QTest::newRow("64 KiB + 1") << kLimit << qint64(64 * 1024 + 1) << QString();
+        QTest::newRow("at the limit") << kLimit << kLimit << QString();
+        QTest::newRow("one byte over") << kLimit << kLimit + 1 << tooLarge;
+        QTest::newRow("ten times the limit") << kLimit << 10 * kLimit << tooLarge;
+        QTest::newRow("only white space") << kLimit << qint64(1000) << QStringLiteral("the file is empty");
+        QTest::newRow("a project at Project::kMaxFileBytes")
+            << Project::kMaxFileBytes << Project::kMaxFileBytes << QString();
+        QTest::newRow("a project one byte over")
+            << Project::kMaxFileBytes << Project::kMaxFileBytes + 1
+            << QStringLiteral("the file is larger than 16 MiB, too large to be a Facet file");
+    }
+    void sizeLimitIsExact()
+    {
+        QFETCH(qint64, limit);
+        QFETCH(qint64, size);
+        QFETCH(QString, expected);
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = QDir(dir.path()).filePath(QStringLiteral("sized.json"));
+        // An object padded with spaces to `size` bytes (all spaces for the empty row).
+        QByteArray content = expected.endsWith(QStringLiteral("empty")) ? QByteArray() : QByteArray("{\"a\": 1}");
+        QVERIFY(content.size() <= size);
+        content.append(QByteArray(size - content.size(), ' '));
+        QVERIFY(writeAll(path, content));
+        QCOMPARE(QFileInfo(path).size(), size);
+
+        std::string problem;
+        const std::optional<QJsonObject> object = json::readObjectFile(path.toStdString(), limit, &problem);
+        if (expected.isEmpty()) {
+            QVERIFY2(object, problem.c_str());
+            QCOMPARE(object->value(QStringLiteral("a")).toInt(), 1);
+        } else {
+            QVERIFY(!object);
+            QCOMPARE(qs(problem), expected);
+        }
     }
 
     void failedSaveLeavesTheOriginalUntouched()
