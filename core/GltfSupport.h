@@ -4,18 +4,13 @@
 #include <string>
 #include <vector>
 
+#include "core/Failure.h"
 #include "core/Material.h"
-
 #include "core/TinyGltf.h"
 
 namespace facet::gltfsupport {
 
-inline bool fail(const std::string& text, std::string* problem)
-{
-    if (problem)
-        *problem = text;
-    return false;
-}
+using facet::fail;
 
 // What was repaired or ignored, for the import's one warning line. A note repeated for many
 // materials or textures is kept once with a count.

@@ -1,0 +1,45 @@
+#pragma once
+// Reading a glTF asset safely, the step core/GltfImport's mesh import and readGltfImage share:
+// the file into a tinygltf::Model with Facet's file callbacks (no device, FIFO or file over the
+// size limit is ever read through a buffer or image URI; `~` and `$VAR` in URIs are not
+// expanded; Draco primitives' "indices" are left to the Draco decoder), then its accessors as
+// views whose every byte is checked to lie inside its buffer. Internal to core/.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "core/TinyGltf.h"
+
+namespace facet::gltfmodel {
+
+// Parses the asset at `path` (a .gltf or .glb of at most maxBytes, its buffers and images each
+// as large at most). False with *problem (no prefix); *warning: tinygltf's warnings on one line.
+bool loadModel(const std::string& path, std::size_t maxBytes, tinygltf::Model& model, std::string* problem,
+    std::string* warning);
+
+// A checked view of an accessor's elements: every byte it addresses lies inside its buffer.
+struct AccessorView {
+    const unsigned char* data = nullptr;
+    std::size_t count = 0;
+    std::size_t stride = 0;
+    int componentType = 0;
+    int components = 0;
+    bool normalized = false;
+};
+
+// The checked view of accessor `index`, whose elements must have `expectedComponents`
+// components; nullopt with *problem ("<what> (accessor N): why") when the accessor is missing,
+// of another shape or addresses bytes outside its buffer.
+std::optional<AccessorView> accessorView(const tinygltf::Model& model, int index, int expectedComponents,
+    const std::string& what, std::string* problem);
+
+// Component `c` of element `i` as a float (glTF 2.0 section 3.11: normalised integers map to
+// [0, 1] or [-1, 1]).
+float component(const AccessorView& view, std::size_t i, int c);
+
+// Element `i` of an index accessor (unsigned byte, short or int).
+std::uint32_t indexAt(const AccessorView& view, std::size_t i);
+
+} // namespace facet::gltfmodel
