@@ -7,6 +7,7 @@
 #include "core/SphericalHarmonics.h"
 #include "render/GLDebug.h"
 #include "render/GLPassScope.h"
+#include "render/IblTables.h"
 #include "render/ShaderProgram.h"
 
 #include <QtGlobal>
@@ -59,108 +60,6 @@ std::shared_ptr<GLTexture> makeCubemap(
     for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
         glTexParameteri(GL_TEXTURE_CUBE_MAP, wrap, GL_CLAMP_TO_EDGE);
     return texture;
-}
-
-// Solid angle of the part of a cube face (at distance 1) from (0, 0) to (x, y) [Driscoll,
-// "Cubemap texel solid angle"]; a texel's is the inclusion-exclusion of its four corners.
-double cornerArea(double x, double y)
-{
-    return std::atan2(x * y, std::sqrt(x * x + y * y + 1.0));
-}
-
-double cubeTexelSolidAngle(int x, int y, int size)
-{
-    const double step = 2.0 / double(size);
-    const double x0 = x * step - 1.0;
-    const double y0 = y * step - 1.0;
-    return cornerArea(x0, y0) - cornerArea(x0, y0 + step) - cornerArea(x0 + step, y0)
-        + cornerArea(x0 + step, y0 + step);
-}
-
-// Entries per row of the tables the irradiance and prefilter passes read (ibl_irradiance.frag and
-// ibl_prefilter.frag index them with the same width).
-constexpr int kTableWidth = 1024;
-
-// A table of RGBA32F entries, `width` to a row, for texelFetch (no filtering, no mipmaps).
-GLTexture tableTexture(const std::vector<glm::vec4>& entries, int width)
-{
-    GLTexture texture = GLTexture::create(GL_TEXTURE_2D);
-    glBindTexture(GL_TEXTURE_2D, texture.id());
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, width, int(entries.size()) / width, 0, GL_RGBA, GL_FLOAT,
-        entries.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    return texture;
-}
-
-// A pass's table bound to texture unit 1 while the pass draws (unit 0 holds the source cube),
-// unbound when the pass ends, however it ends.
-class TableBinding {
-public:
-    explicit TableBinding(const GLTexture& table) { bind(table.id()); }
-    ~TableBinding() { bind(0); }
-    TableBinding(const TableBinding&) = delete;
-    TableBinding& operator=(const TableBinding&) = delete;
-
-    static constexpr int kUnit = 1;
-
-private:
-    static void bind(GLuint id)
-    {
-        glActiveTexture(GL_TEXTURE0 + kUnit);
-        glBindTexture(GL_TEXTURE_2D, id);
-        glActiveTexture(GL_TEXTURE0);
-    }
-};
-
-// The irradiance pass's table (ibl_irradiance.frag): for every texel t of `level` (size x size a
-// face) of `cube`, its centre's direction w_t and L_t Omega_t, as
-// RGBA32F rows of 1024 entries (direction row, then radiance row). Made once per environment:
-// 6 s^2 directions, solid angles and a read-back of a few KiB instead of that many per output texel.
-GLTexture irradianceTexelTable(const GLTexture& cube, int size, int level)
-{
-    const int count = 6 * size * size;
-    const int rows = 2 * ((count + kTableWidth - 1) / kTableWidth);
-    std::vector<glm::vec4> table(std::size_t(kTableWidth) * std::size_t(rows), glm::vec4(0.0f));
-    for (int f = 0; f < 6; ++f) {
-        const std::vector<float> face = readTextureLevel(cube, f, level, nullptr, nullptr);
-        if (face.size() != std::size_t(size) * std::size_t(size) * 4)
-            return GLTexture {};
-        for (int y = 0; y < size; ++y)
-            for (int x = 0; x < size; ++x) {
-                const int i = (f * size + y) * size + x;
-                const std::size_t at
-                    = std::size_t(2 * (i / kTableWidth)) * kTableWidth + std::size_t(i % kTableWidth);
-                const glm::dvec3 w = cubemapDirection(f, (x + 0.5) / size, (y + 0.5) / size);
-                table[at] = glm::vec4(glm::vec3(w), 0.0f);
-                const float* texel = &face[std::size_t(y * size + x) * 4];
-                table[at + kTableWidth] = glm::vec4(
-                    glm::vec3(texel[0], texel[1], texel[2]) * float(cubeTexelSolidAngle(x, y, size)), 0.0f);
-            }
-    }
-    return tableTexture(table, kTableWidth);
-}
-
-// The samples of prefiltered level of perceptual `roughness` (core/Prefilter.h
-// prefilterLobeSamples) as ibl_prefilter.frag reads them: RGBA32F rows of 1024 entries, each
-// l in the frame of n and the source lod filtered importance sampling reads it at. *count: the
-// entries; *inverseWeight: 1 / sum (n.l), 0 when no sample is above the horizon.
-GLTexture prefilterSampleTable(
-    double roughness, int samples, double sourceSize, double sourceMaxLod, int* count, double* inverseWeight)
-{
-    const std::vector<PrefilterLobeSample> lobe = prefilterLobeSamples(roughness, samples);
-    const int rows = std::max(1, int((lobe.size() + kTableWidth - 1) / kTableWidth));
-    std::vector<glm::vec4> table(std::size_t(kTableWidth) * std::size_t(rows), glm::vec4(0.0f));
-    double weight = 0.0;
-    for (std::size_t i = 0; i < lobe.size(); ++i) {
-        const double lod = filteredLod(lobe[i].pdf, double(samples), sourceSize, sourceMaxLod);
-        table[i] = glm::vec4(glm::vec3(lobe[i].l), float(lod));
-        weight += lobe[i].l.z;
-    }
-    *count = int(lobe.size());
-    *inverseWeight = weight > 0.0 ? 1.0 / weight : 0.0;
-    return tableTexture(table, kTableWidth);
 }
 
 std::shared_ptr<GLTexture> makeDfgTexture(int size, const std::uint16_t* data = nullptr)
