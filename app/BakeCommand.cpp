@@ -164,7 +164,7 @@ std::optional<BakeRequest> BakeCommand::parse(const QStringList& arguments, QStr
         return std::nullopt;
     }
     BakeRequest request;
-    request.environmentSpec = expandInstalledNames(positional.first().trimmed()).toStdString();
+    request.environmentSpec = expandInstalledName(positional.first().trimmed()).toStdString();
     std::string problem;
     if (!Environment::checkSpec(request.environmentSpec, &problem)) {
         *error = QString::fromStdString(problem);

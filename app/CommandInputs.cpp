@@ -98,22 +98,27 @@ bool parseImageSize(const QString& flag, const QString& text, int minimum, int m
     return true;
 }
 
-// The items of an environment list that are bare names of installed CC0 samples ("night") as
-// their library references (library:installed/hdri/night.exr); everything else as it is. A
-// built-in name (studio, sky) stays built-in, as Environment::fromSpec resolves it.
-QString expandInstalledNames(const QString& list)
+// A bare name of an installed CC0 sample ("night") as its library reference
+// (library:installed/hdri/night.exr); anything else as it is. A built-in name (studio, sky) stays
+// built-in, as Environment::fromSpec resolves it, and a file of that name in the working folder
+// stays that file.
+QString expandInstalledName(const QString& spec)
 {
     static const QRegularExpression bare(QStringLiteral("^[A-Za-z][A-Za-z0-9_-]*$"));
+    const QString item = spec.trimmed();
+    if (!bare.match(item).hasMatch() || Environment::builtinFromName(item.toStdString()) || QFileInfo::exists(item))
+        return spec;
+    const QString file
+        = QString::fromStdString(AssetLibrary::installed().folder) + QStringLiteral("/hdri/") + item + QStringLiteral(".exr");
+    return QFileInfo(file).isFile() ? QStringLiteral("library:installed/hdri/") + item + QStringLiteral(".exr") : spec;
+}
+
+// The items of an environment list, each through expandInstalledName.
+QString expandInstalledNames(const QString& list)
+{
     QStringList parts = list.split(QLatin1Char(','));
-    for (QString& part : parts) {
-        const QString item = part.trimmed();
-        if (!bare.match(item).hasMatch() || Environment::builtinFromName(item.toStdString()))
-            continue;
-        const QString file
-            = QString::fromStdString(AssetLibrary::installed().folder) + QStringLiteral("/hdri/") + item + QStringLiteral(".exr");
-        if (QFileInfo(file).isFile())
-            part = QStringLiteral("library:installed/hdri/") + item + QStringLiteral(".exr");
-    }
+    for (QString& part : parts)
+        part = expandInstalledName(part);
     return parts.join(QLatin1Char(','));
 }
 

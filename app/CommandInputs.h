@@ -33,9 +33,11 @@ bool applyIblOptions(const QString* method, const QString* samples, EnvironmentS
 bool parseImageSize(const QString& flag, const QString& text, int minimum, int maximum, int* width, int* height,
     QString* error);
 
-// The items of an environment list that are bare names of installed CC0 samples ("night") as
-// their library references (library:installed/hdri/night.exr); everything else as it is. A
-// built-in name (studio, sky) stays built-in, as Environment::fromSpec resolves it.
+// A bare name of an installed CC0 sample ("night") as its library reference
+// (library:installed/hdri/night.exr); anything else as it is. A built-in name (studio, sky) stays
+// built-in, as Environment::fromSpec resolves it, and a file of that name in the working folder
+// stays that file. expandInstalledNames does it to each item of a comma-separated list.
+QString expandInstalledName(const QString& spec);
 QString expandInstalledNames(const QString& list);
 
 } // namespace facet

@@ -42,8 +42,9 @@ struct Options {
     QCommandLineOption help {
         {QStringLiteral("h"), QStringLiteral("help")}, QStringLiteral("Displays this help.")};
     QCommandLineOption env {QStringLiteral("env"),
-        QStringLiteral("Environment: an image path, a built-in name (studio, sky) or "
-                       "uniform:VALUE / uniform:R,G,B."),
+        QStringLiteral("Environment: an image path, a built-in name (studio, sky), an installed "
+                       "CC0 sample's name (night: library:installed/hdri/night.exr), a library "
+                       "reference or uniform:VALUE / uniform:R,G,B."),
         QStringLiteral("spec")};
     QCommandLineOption material {QStringLiteral("material"),
         QStringLiteral("A built-in material preset (e.g. gold)."), QStringLiteral("preset")};
@@ -161,7 +162,7 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
     };
 
     if (o.parser.isSet(o.env))
-        project.environment.source = o.parser.value(o.env).toStdString();
+        project.environment.source = expandInstalledName(o.parser.value(o.env)).toStdString();
     if (o.parser.isSet(o.material)) {
         const QString id = o.parser.value(o.material);
         const MaterialPreset* preset = findPreset(id.toStdString());

@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include <QDir>
 #include <QFileInfo>
 #include <QtDebug>
 #include <QtGlobal>
@@ -462,6 +463,24 @@ std::optional<Environment> Environment::load(
 
 namespace {
 const std::string kUniformPrefix = "uniform:";
+
+// What a bare name that is no file could have meant: the built-in environments and the installed
+// CC0 samples (which the command line takes by name, a project by library reference).
+std::string bareNameAdvice(const std::string& name)
+{
+    const QString folder = QString::fromStdString(AssetLibrary::installed().folder) + QStringLiteral("/hdri");
+    if (QFileInfo(folder + QLatin1Char('/') + QString::fromStdString(name) + QStringLiteral(".exr")).isFile())
+        return "the built-in environments are studio and sky; the installed sample is library:installed/hdri/" + name
+            + ".exr";
+    QStringList samples = QDir(folder).entryList({QStringLiteral("*.exr")}, QDir::Files, QDir::Name);
+    for (QString& sample : samples)
+        sample.chop(4);
+    if (samples.isEmpty())
+        return "the built-in environments are studio and sky, and no CC0 samples are installed in "
+            + folder.toStdString() + " (packaging/fetch-assets.sh installs them)";
+    return "the built-in environments are studio and sky; the installed samples are "
+        + samples.join(QStringLiteral(", ")).toStdString() + " (library:installed/hdri/NAME.exr)";
+}
 } // namespace
 
 bool Environment::namesFile(const std::string& spec)
@@ -518,12 +537,8 @@ std::optional<Environment> Environment::fromSpec(
         // Say where a missing file was meant to come from, and how to get it.
         if (const std::string advice = AssetLibrary::missingFileAdvice(path); !advice.empty())
             *error += "; " + advice;
-        else if (path.find_first_of("/.") == std::string::npos
-            && QFileInfo(QString::fromStdString(AssetLibrary::installed().folder + "/hdri/" + path + ".exr"))
-                   .isFile())
-            *error += "; the built-in environments are studio and sky; the installed sample is "
-                      "library:installed/hdri/"
-                + path + ".exr";
+        else if (path.find_first_of("/.") == std::string::npos)
+            *error += "; " + bareNameAdvice(path);
     }
     return environment;
 }

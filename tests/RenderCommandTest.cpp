@@ -131,6 +131,7 @@ private Q_SLOTS:
         QTest::newRow("relative path")
             << QStringList {QStringLiteral("--env"), QDir::current().relativeFilePath(loft)} << 2.0;
         QTest::newRow("uniform") << strings({"--env", "uniform:0.5"}) << 0.5;
+        QTest::newRow("installed sample by name") << strings({"--env", "night"}) << 0.25;
         QTest::newRow("studio is built-in") << strings({"--env", "studio"}) << -1.0;
         QTest::newRow("project, installed") << strings({"{dir}/projects/installed.json"}) << 0.25;
         QTest::newRow("project deeper, user library") << strings({"{dir}/projects/a/b/c/user.json"}) << 2.0;
@@ -174,8 +175,9 @@ private Q_SLOTS:
         QTest::newRow("--env reference")
             << strings({"--env", "library:installed/hdri/gone.exr", "--spp", "1"})
             << strings({"gone.exr", "packaging/fetch-assets.sh"});
-        QTest::newRow("--env bare sample name")
-            << strings({"--env", "night", "--spp", "1"}) << strings({"library:installed/hdri/night.exr"});
+        QTest::newRow("--env bare name, no such sample")
+            << strings({"--env", "gone", "--spp", "1"})
+            << strings({"gone: no such file", "studio and sky", "installed samples are night, studio"});
     }
     void missingLibraryFilesAreNamed()
     {
