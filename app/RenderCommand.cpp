@@ -422,8 +422,9 @@ int runGpu(const RenderRequest& request)
                     std::printf("noise: %.5f\n", *converged.noise);
             }
             std::printf("load_ms: %.1f\n", std::chrono::duration<double, std::milli>(loaded - start).count());
-            std::printf("ibl_passes_run: %d\nibl_cache_hits_memory: %d\nibl_cache_hits_disk: %d\n",
-                iblStats.passesRun, iblStats.cacheHitsMemory, iblStats.cacheHitsDisk);
+            std::printf("ibl_passes_run: %d\nibl_cache_hits_memory: %d\nibl_cache_hits_disk: %d\n"
+                        "ibl_dfg_shipped: %d\n",
+                iblStats.passesRun, iblStats.cacheHitsMemory, iblStats.cacheHitsDisk, iblStats.dfgShipped);
             std::printf(
                 "ibl_ms: %.1f (equirect_to_cube %.1f, prefilter %.1f, irradiance %.1f, dfg %.1f, sh %.1f)\n",
                 iblStats.msTotal, iblStats.msEquirectToCube, iblStats.msPrefilter, iblStats.msIrradiance,

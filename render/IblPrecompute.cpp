@@ -8,6 +8,7 @@
 #include "render/GLDebug.h"
 #include "render/GLPassScope.h"
 #include "render/IblTables.h"
+#include "render/ShippedDfgTables.h"
 #include "render/ShaderProgram.h"
 
 #include <QtGlobal>
@@ -240,6 +241,15 @@ std::shared_ptr<const DfgLut> IblPrecompute::dfgTable(
     lut->sampleCount = settings.dfgSamples;
     lut->visibility = visibility;
     GLStateGuard guard;
+    if (const ShippedDfgTable* shipped
+        = m_useShippedDfgTables ? findShippedDfgTable(settings.dfgHash(visibility)) : nullptr;
+        shipped && shipped->size == settings.dfgSize && shipped->samples == settings.dfgSamples
+        && shipped->visibility == visibility) {
+        lut->texture = makeDfgTexture(settings.dfgSize, shipped->texels);
+        ++stats->dfgShipped;
+        m_dfg[key] = lut;
+        return finish(lut);
+    }
     const IblDiskCache disk(m_cacheDirectory);
     if (m_useDiskCache) {
         std::string warning;

@@ -51,6 +51,7 @@ struct IblStats {
     int passesRun = 0; // equirect->cube, prefilter, irradiance (0..3), + 1 per DFG LUT made
     int cacheHitsMemory = 0; // 1 when the environment's textures came from the memory cache
     int cacheHitsDisk = 0; // environment entry (0..1) + DFG LUTs loaded from disk
+    int dfgShipped = 0; // DFG LUTs uploaded from the tables shipped as data (render/ShippedDfgTables.h)
     double msEquirectToCube = 0.0; // (area filter +) upload + resample + mip generation
     // 1 when the equirect was area-filtered to 4x the cube's width before the cube pass (a map
     // wider than the cube needs).
@@ -115,10 +116,15 @@ public:
     // The variant is an argument, not a default, like Filament's CubemapIBL::DFG(js, dst,
     // multiscatter, cloth), and part of the key (IblSettings::dfgHash), so a material is never
     // shaded with another V's table. Needs a current GL 4.1 core context only when the table is
-    // in no cache. Returns the cached table when there is one. On failure returns null and sets
-    // `error` to "IblPrecompute::dfgTable: <problem>". `stats` (optional) is ADDED to, not reset.
+    // in no cache. Returns the cached table when there is one; the `default` preset's tables are
+    // shipped as data (render/ShippedDfgTables.h) and uploaded from it, with no pass and no disk
+    // entry, unless setUseShippedDfgTables(false). On failure returns null and sets `error` to
+    // "IblPrecompute::dfgTable: <problem>". `stats` (optional) is ADDED to, not reset.
     std::shared_ptr<const DfgLut> dfgTable(
         const IblSettings& settings, Visibility visibility, IblStats* stats, std::string* error);
+    // Whether dfgTable() takes a shipped table where one is (true by default): off, it makes every
+    // table as for any other settings (the tests compare the two).
+    void setUseShippedDfgTables(bool use) { m_useShippedDfgTables = use; }
 
     // The environment at source resolution and its luminance sampling tables
     // (render/EnvironmentSource.h), for lighting that samples the image itself. Needs a current GL
@@ -166,6 +172,7 @@ private:
 
     QString m_cacheDirectory;
     bool m_useDiskCache = true;
+    bool m_useShippedDfgTables = true;
     std::unique_ptr<Programs> m_programs;
     std::array<std::unique_ptr<ShaderProgram>, kVisibilityCount> m_dfgPrograms; // by int(Visibility)
     void trimMemoryCache();

@@ -107,6 +107,8 @@ private Q_SLOTS:
     void faceOrientation();
     void dfgMatchesCpuTable_data();
     void dfgMatchesCpuTable();
+    void shippedDfgTablesMatchThePass_data();
+    void shippedDfgTablesMatchThePass();
     void dfgCacheKeyHoldsVisibility();
     void dfgDiskCachePerVisibility();
     void whiteFurnace();
@@ -305,6 +307,52 @@ void IblGLTest::dfgMatchesCpuTable()
     // and half-float storage of values in [0, 1] (2^-11 = 4.9e-4 at 1).
     QVERIFY2(worst < 1e-3, std::to_string(worst).c_str());
     QVERIFY(otherVariants > 0.05); // the variants differ far beyond the bound: the row can fail
+}
+
+void IblGLTest::shippedDfgTablesMatchThePass_data()
+{
+    dfgMatchesCpuTable_data();
+}
+
+void IblGLTest::shippedDfgTablesMatchThePass()
+{
+    // The default preset's tables come from the data shipped with Facet (render/ShippedDfgTables.h):
+    // no pass, nothing on disk; uploaded, they read back as the pass's own table of the same
+    // settings and V, in the same orientation (a transposed or flipped upload would fail).
+    QFETCH(int, visibility);
+    const Visibility variant = Visibility(visibility);
+    const IblSettings settings = *IblSettings::preset("default");
+    QTemporaryDir cache;
+    QVERIFY(cache.isValid());
+    std::string error;
+    IblPrecompute shipping(cache.path(), true);
+    IblStats stats;
+    const auto shipped = shipping.dfgTable(settings, variant, &stats, &error);
+    QVERIFY2(shipped, error.c_str());
+    QCOMPARE(stats.dfgShipped, 1);
+    QCOMPARE(stats.passesRun, 0);
+    QCOMPARE(stats.cacheHitsDisk, 0);
+    QVERIFY(QDir(cache.path()).entryList(QDir::Files | QDir::NoDotAndDotDot).isEmpty());
+    QVERIFY(shipped->visibility == variant);
+    IblPrecompute computing(QString(), false);
+    computing.setUseShippedDfgTables(false);
+    stats = IblStats {};
+    const auto computed = computing.dfgTable(settings, variant, &stats, &error);
+    QVERIFY2(computed, error.c_str());
+    QCOMPARE(stats.passesRun, 1);
+    QCOMPARE(stats.dfgShipped, 0);
+    const Level a = readLevel(shipped->texture, 0, 0);
+    const Level b = readLevel(computed->texture, 0, 0);
+    QCOMPARE(a.width, settings.dfgSize);
+    QCOMPARE(b.width, settings.dfgSize);
+    double worst = 0.0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x) {
+            const glm::dvec3 d = glm::abs(a.at(x, y) - b.at(x, y));
+            worst = std::max({worst, d.x, d.y, d.z});
+        }
+    qInfo("DFG %s shipped vs the pass: max abs difference %.3g", toString(variant), worst);
+    QVERIFY2(worst < 1e-3, std::to_string(worst).c_str()); // float vs double and binary16, as dfgMatchesCpuTable
 }
 
 void IblGLTest::dfgCacheKeyHoldsVisibility()

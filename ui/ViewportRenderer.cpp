@@ -325,13 +325,14 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
     IblStats dfgStats;
     if (!m_frames->addDfgTables(scene.iblSettings(), frame, &dfgStats, &problem))
         return fail(problem);
-    if (dfgStats.passesRun > 0 || dfgStats.cacheHitsDisk > 0) {
+    if (dfgStats.passesRun > 0 || dfgStats.cacheHitsDisk > 0 || dfgStats.dfgShipped > 0) {
         m_stats.iblMs += dfgStats.msTotal;
         iblMsHere += dfgStats.msTotal;
         if (!iblPrepared)
             m_stats.ibl = IblStats {};
         m_stats.ibl.passesRun += dfgStats.passesRun;
         m_stats.ibl.cacheHitsDisk += dfgStats.cacheHitsDisk;
+        m_stats.ibl.dfgShipped += dfgStats.dfgShipped;
         m_stats.ibl.msDfg += dfgStats.msDfg;
         m_stats.ibl.msTotal += dfgStats.msTotal;
     }
