@@ -4,7 +4,8 @@
 // writes one of these; encoding them here means a command that reads no image (a render from the
 // IBL disk cache, a bake of a built-in environment) never loads OpenImageIO and the ~260 libraries
 // behind it (a warm 128x128 reference render spent 365-375 ms of 0.61 s loading it to write its
-// file; OpenEXR's and libpng's load is not measurable). Reading stays the module's.
+// file; OpenEXR's and libpng's load is not measurable). Reading is the module's, but for EXR
+// (core/BuiltinExrDecoder.h).
 //
 // They write what the module's OpenImageIO writers wrote, read back the same through it: EXR
 // channels Y (one channel), R G (two), R G B, R G B A; ZIP compression; half or float; an

@@ -1,8 +1,9 @@
 #pragma once
 // Decoding and encoding image files, behind an interface whose one implementation (over
 // OpenImageIO, core/imageio/OiioImageCodec.cpp) is a module of its own, libfacet_imageio.so,
-// loaded the first time an image is read, resized, or written in a format other than EXR and PNG
-// (those two core encodes itself: core/BuiltinImageEncoders.h). OpenImageIO and what it links are
+// loaded the first time an image is resized, read in a format other than EXR, or written in a
+// format other than EXR and PNG (core decodes EXR and encodes EXR and PNG itself:
+// core/BuiltinExrDecoder.h, core/BuiltinImageEncoders.h). OpenImageIO and what it links are
 // 260 of the 282 shared libraries facet would otherwise load at start (121 MB of a 146 MB peak
 // resident, and most of a process's start-up): `facet --version`, `--help`, a command that reads
 // and writes no image and the window until its first image do not pay for them (docs/benchmarks.md,

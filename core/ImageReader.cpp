@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 
 #include "core/AsciiText.h"
+#include "core/BuiltinExrDecoder.h"
 #include "core/FileCheck.h"
 #include "core/GltfImport.h"
 
@@ -234,8 +235,8 @@ std::string jpegIptcProblem(const std::vector<unsigned char>& bytes)
 // Container headers whose sizes OpenImageIO's readers believe before the file's (above): the
 // file's first MiB is read once and the check of its format, told by its signature, runs on it.
 // "" for a sound file, a file of another format, or one that cannot be opened (OpenImageIO's
-// own message then says why).
-std::string containerProblem(const std::string& path, long long fileSize)
+// own message then says why). *exr: the signature is OpenEXR's.
+std::string containerProblem(const std::string& path, long long fileSize, bool* exr)
 {
     std::FILE* file = std::fopen(path.c_str(), "rb");
     if (!file)
@@ -247,7 +248,8 @@ std::string containerProblem(const std::string& path, long long fileSize)
     static const unsigned char kExr[4] = {0x76, 0x2f, 0x31, 0x01};
     static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
     std::string problem;
-    if (head.size() >= 4 && std::memcmp(head.data(), kExr, 4) == 0)
+    *exr = head.size() >= 4 && std::memcmp(head.data(), kExr, 4) == 0;
+    if (*exr)
         problem = exrHeaderProblem(head, fileSize);
     else if (head.size() >= 8 && std::memcmp(head.data(), kPng, 8) == 0)
         problem = pngChunkProblem(file, fileSize);
@@ -294,16 +296,30 @@ std::optional<ImageReader> ImageReader::open(
         setImageError(error, function, path, check.problem);
         return std::nullopt;
     }
+    std::string problem;
     if (!reader.m_embedded) {
         // Container headers whose sizes OpenImageIO's readers believe before the file's.
         reader.m_fileSize = fileSizeOf(path);
-        if (const std::string problem = containerProblem(path, reader.m_fileSize); !problem.empty()) {
-            setImageError(error, function, path, problem);
+        bool exr = false;
+        if (const std::string container = containerProblem(path, reader.m_fileSize, &exr); !container.empty()) {
+            setImageError(error, function, path, container);
             return std::nullopt;
+        }
+        // OpenEXR files core decodes itself (core/BuiltinExrDecoder.h), unless their layout is
+        // one only the module reads.
+        if (exr) {
+            bool handled = true;
+            if (ImageDecoder* decoder = openBuiltinExr(path, &handled, &problem)) {
+                reader.m_decoder = std::unique_ptr<ImageDecoder, Close>(decoder, Close {&builtinExrCodec()});
+                return reader;
+            }
+            if (handled) {
+                setImageError(error, function, path, problem);
+                return std::nullopt;
+            }
         }
     }
 
-    std::string problem;
     const ImageCodec* codec = imageCodec(&problem);
     if (!codec) {
         setImageError(error, function, path, problem);

@@ -2,10 +2,13 @@
 // linked, and loaded by core/ImageCodec.cpp the first time an image is read or written. It
 // translates between core/ImageCodec.h's types and OpenImageIO's and decides nothing else.
 
+#include <algorithm>
+#include <cstring>
 #include <exception>
 #include <memory>
 #include <new>
 #include <utility>
+#include <vector>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
@@ -121,7 +124,29 @@ bool read(ImageDecoder* decoder, int begin, int end, int channels, CodecSample a
         const OIIO::stride_t ys = ystride ? OIIO::stride_t(ystride) : OIIO::AutoStride;
         if (begin == 0 && end == decoder->header.height)
             return decoder->input->read_image(0, 0, 0, channels, typeOf(as), data, xs, ys);
-        return decoder->input->read_scanlines(0, 0, begin, end, 0, 0, channels, typeOf(as), data, xs, ys);
+        const OIIO::ImageSpec& spec = decoder->input->spec();
+        if (spec.tile_width <= 0)
+            return decoder->input->read_scanlines(
+                0, 0, spec.y + begin, spec.y + end, 0, 0, channels, typeOf(as), data, xs, ys);
+        // A band of a tiled file: OpenImageIO 2.4's read_scanlines divides by a scanline chunk a
+        // tiled file does not have (SIGFPE), so the rows of tiles that hold the band are read
+        // whole and the band copied out of them.
+        const int first = begin / spec.tile_height * spec.tile_height;
+        const int last = std::min((end + spec.tile_height - 1) / spec.tile_height * spec.tile_height, spec.height);
+        const OIIO::TypeDesc type = typeOf(as);
+        const std::size_t pixelBytes = type.size() * std::size_t(channels);
+        const std::size_t rowBytes = pixelBytes * std::size_t(spec.width);
+        std::vector<unsigned char> tiles(rowBytes * std::size_t(last - first));
+        if (!decoder->input->read_tiles(0, 0, spec.x, spec.x + spec.width, spec.y + first, spec.y + last, spec.z,
+                spec.z + 1, 0, channels, type, tiles.data()))
+            return false;
+        const std::ptrdiff_t xout = xs == OIIO::AutoStride ? std::ptrdiff_t(pixelBytes) : std::ptrdiff_t(xs);
+        const std::ptrdiff_t yout = ys == OIIO::AutoStride ? xout * spec.width : std::ptrdiff_t(ys);
+        for (int y = begin; y < end; ++y)
+            for (int x = 0; x < spec.width; ++x)
+                std::memcpy(static_cast<unsigned char*>(data) + std::ptrdiff_t(y - begin) * yout + std::ptrdiff_t(x) * xout,
+                    tiles.data() + std::size_t(y - first) * rowBytes + std::size_t(x) * pixelBytes, pixelBytes);
+        return true;
     } catch (...) {
         decoder->exception = messageOf(std::current_exception(), "reading");
     }
