@@ -392,10 +392,12 @@ private Q_SLOTS:
         module->close(theirs);
     }
 
-    // An EXR channel list is checked within its declared size before OpenEXR reads it (OpenEXR
-    // reads names past the size; a mutant took 8-18 s of allocating to fail): each row breaks
-    // one thing in a sound file's list and the load names it at once.
-    void exrChannelListsAreChecked_data()
+    // An EXR header's channel list, data window and fixed-size attributes are checked before
+    // OpenEXR reads them (OpenEXR reads names past a list's size, sizes its buffers from the data
+    // window and reads a fixed-size type whatever size is declared; FuzzTest's mutants took
+    // seconds of allocating to fail): each row breaks one thing in a sound file and the load
+    // names it at once.
+    void exrHeadersAreChecked_data()
     {
         QTest::addColumn<QString>("change");
         QTest::addColumn<QString>("message"); // "" loads
@@ -404,8 +406,14 @@ private Q_SLOTS:
         QTest::newRow("sampling 0") << "sampling" << "channel \"B\" has sampling 0x1";
         QTest::newRow("list runs past its size") << "shorter" << "a channel list entry runs past the list's";
         QTest::newRow("list ends before its size") << "early" << "the channel list does not end at its";
+        QTest::newRow("data window too wide") << "wide"
+                                              << "image too large: 40000x4 exceeds the limit of 32768 pixels per side";
+        QTest::newRow("data window beyond the file")
+            << "large" << "its header claims 4096x4096 pixels, too large for a file of";
+        QTest::newRow("fixed-size attribute of another size")
+            << "compression" << "broken EXR header: attribute \"compression\" (compression) is 2 bytes, not 1";
     }
-    void exrChannelListsAreChecked()
+    void exrHeadersAreChecked()
     {
         QFETCH(QString, change);
         QFETCH(QString, message);
@@ -431,16 +439,32 @@ private Q_SLOTS:
             setInt32(sizeAt, 40); // mid-way through the third entry
         else if (change == QLatin1String("early"))
             bytes[list] = 0; // an empty name: the list's end, 54 bytes before its size says
+        const qsizetype window = bytes.indexOf(QByteArray("dataWindow\0box2i\0", 17)) + 17 + 4;
+        QVERIFY(window > 21);
+        if (change == QLatin1String("wide"))
+            setInt32(window + 8, 39999);
+        else if (change == QLatin1String("large")) {
+            setInt32(window + 8, 4095);
+            setInt32(window + 12, 4095);
+        } else if (change == QLatin1String("compression")) {
+            const qsizetype compression = bytes.indexOf(QByteArray("compression\0compression\0", 24));
+            QVERIFY(compression > 0);
+            setInt32(compression + 24, 2);
+        }
         QVERIFY(io.seek(0));
         QCOMPARE(io.write(bytes), bytes.size());
         io.close();
+        // Refused as the file opens, before a decoder reads the header (a size checked only after
+        // opening would open here and be refused later by Image::load, with OpenEXR's buffers
+        // already allocated).
         std::string error;
-        const std::optional<Image> image = Image::load(file.toStdString(), &error);
+        const std::optional<ImageReader> reader = ImageReader::open(file.toStdString(), "test", &error);
         if (message.isEmpty()) {
-            QVERIFY2(image, error.c_str());
+            QVERIFY2(reader, error.c_str());
+            QVERIFY2(Image::load(file.toStdString(), &error), error.c_str());
             return;
         }
-        QVERIFY(!image);
+        QVERIFY(!reader);
         QVERIFY2(QString::fromStdString(error).contains(message), error.c_str());
         QVERIFY2(QString::fromStdString(error).contains(file), error.c_str());
     }
