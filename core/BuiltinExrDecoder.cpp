@@ -41,19 +41,6 @@ const ExrDecoder* decoderOf(const ImageDecoder* decoder)
     return reinterpret_cast<const ExrDecoder*>(decoder);
 }
 
-std::string messageOf(std::exception_ptr exception)
-{
-    try {
-        std::rethrow_exception(exception);
-    } catch (const std::bad_alloc&) {
-        return "out of memory";
-    } catch (const std::exception& e) {
-        return e.what();
-    } catch (...) {
-        return "unknown error while reading";
-    }
-}
-
 // OpenEXR's thread pool, as OpenImageIO sizes it for its reads: one thread per core.
 void startThreads()
 {
@@ -152,7 +139,7 @@ bool read(ImageDecoder* handle, int begin, int end, int channels, CodecSample as
         decoder->file->readPixels(rows.min.y, rows.max.y);
         return true;
     } catch (...) {
-        decoder->error = messageOf(std::current_exception());
+        decoder->error = codecExceptionMessage(std::current_exception(), "reading");
     }
     return false;
 }
@@ -190,7 +177,7 @@ ImageDecoder* openBuiltinExr(const std::string& path, bool* handled, std::string
         decoder->dataWindow = decoder->file->header().dataWindow();
         return reinterpret_cast<ImageDecoder*>(decoder.release());
     } catch (...) {
-        *error = messageOf(std::current_exception());
+        *error = codecExceptionMessage(std::current_exception(), "reading");
     }
     return nullptr;
 }

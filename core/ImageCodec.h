@@ -17,6 +17,8 @@
 // writeImageFile.
 
 #include <cstddef>
+#include <exception>
+#include <new>
 #include <string>
 #include <utility>
 #include <vector>
@@ -96,6 +98,21 @@ struct ImageCodec {
     bool (*resize)(const float* samples, int width, int height, int channels, float* out, int outWidth,
         int outHeight, std::string* error);
 };
+
+// An exception's message, for a codec's lastError or *error (exceptions cross no codec boundary):
+// "out of memory" for std::bad_alloc, the exception's text, else "unknown error while <doing>".
+inline std::string codecExceptionMessage(std::exception_ptr exception, const char* doing)
+{
+    try {
+        std::rethrow_exception(exception);
+    } catch (const std::bad_alloc&) {
+        return "out of memory";
+    } catch (const std::exception& e) {
+        return e.what();
+    } catch (...) {
+        return std::string("unknown error while ") + doing;
+    }
+}
 
 // The module's one exported symbol: extern "C" const facet::ImageCodec* facetImageCodec().
 inline constexpr const char* kImageCodecEntryPoint = "facetImageCodec";

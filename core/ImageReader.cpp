@@ -73,15 +73,7 @@ void setImageError(
 void setImageErrorFromException(
     std::string* error, const char* function, const std::string& path, const char* doing)
 {
-    try {
-        throw;
-    } catch (const std::bad_alloc&) {
-        setImageError(error, function, path, "out of memory");
-    } catch (const std::exception& e) {
-        setImageError(error, function, path, e.what());
-    } catch (...) {
-        setImageError(error, function, path, std::string("unknown error while ") + doing);
-    }
+    setImageError(error, function, path, codecExceptionMessage(std::current_exception(), doing));
 }
 
 ImageReader::~ImageReader() = default;

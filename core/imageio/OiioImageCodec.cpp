@@ -50,20 +50,6 @@ OIIO::TypeDesc typeOf(CodecSample sample)
     return OIIO::TypeDesc::FLOAT;
 }
 
-// Exceptions do not cross the module's boundary as anything but a message.
-std::string messageOf(std::exception_ptr exception, const char* doing)
-{
-    try {
-        std::rethrow_exception(exception);
-    } catch (const std::bad_alloc&) {
-        return "out of memory";
-    } catch (const std::exception& e) {
-        return e.what();
-    } catch (...) {
-        return std::string("unknown error while ") + doing;
-    }
-}
-
 } // namespace
 
 // The opaque decoder of core/ImageCodec.h.
@@ -106,7 +92,7 @@ ImageDecoder* open(const std::string& name, const unsigned char* memory, std::si
         decoder->header.channelNames = spec.channelnames;
         return decoder.release();
     } catch (...) {
-        *error = messageOf(std::current_exception(), "reading");
+        *error = codecExceptionMessage(std::current_exception(), "reading");
     }
     return nullptr;
 }
@@ -148,7 +134,7 @@ bool read(ImageDecoder* decoder, int begin, int end, int channels, CodecSample a
                     tiles.data() + std::size_t(y - first) * rowBytes + std::size_t(x) * pixelBytes, pixelBytes);
         return true;
     } catch (...) {
-        decoder->exception = messageOf(std::current_exception(), "reading");
+        decoder->exception = codecExceptionMessage(std::current_exception(), "reading");
     }
     return false;
 }
@@ -183,7 +169,7 @@ bool writer(const std::string& path, CodecWriterInfo* info, std::string* error)
         info->inMemory = output->supports("ioproxy") != 0;
         return true;
     } catch (...) {
-        *error = messageOf(std::current_exception(), "writing");
+        *error = codecExceptionMessage(std::current_exception(), "writing");
     }
     return false;
 }
@@ -238,7 +224,7 @@ bool encode(const std::string& path, const CodecEncodeSpec& spec, const float* s
         *encoded = std::move(bytes);
         return true;
     } catch (...) {
-        *error = messageOf(std::current_exception(), "writing");
+        *error = codecExceptionMessage(std::current_exception(), "writing");
     }
     return false;
 }
@@ -257,7 +243,7 @@ bool resize(const float* samples, int width, int height, int channels, float* ou
         }
         return true;
     } catch (...) {
-        *error = messageOf(std::current_exception(), "resizing");
+        *error = codecExceptionMessage(std::current_exception(), "resizing");
     }
     return false;
 }
