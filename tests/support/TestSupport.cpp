@@ -59,6 +59,18 @@ void forgetDisplayServer()
     qunsetenv("WAYLAND_DISPLAY");
 }
 
+std::vector<float> ramp(int width, int height, int channels)
+{
+    std::vector<float> values(std::size_t(width) * std::size_t(height) * std::size_t(channels));
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < channels; ++c)
+                values[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(channels)
+                    + std::size_t(c)]
+                    = float(x + 3 * y + 7 * c) / 64.0f;
+    return values;
+}
+
 bool writeConstantExr(const QString& path, float radiance, int width)
 {
     if (!QDir().mkpath(QFileInfo(path).absolutePath()))

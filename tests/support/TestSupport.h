@@ -3,6 +3,7 @@
 
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 #include <QProcessEnvironment>
 #include <QString>
@@ -53,6 +54,10 @@ struct ProcessResult {
 // minutes.
 ProcessResult runWithoutDisplay(const QString& executable, const QStringList& arguments,
     const QProcessEnvironment& extra = QProcessEnvironment());
+
+// A width x height image of `channels` channels (rows top first, channels interleaved) whose
+// sample (x, y, c) is (x + 3y + 7c) / 64: every sample different, exact in half floats.
+std::vector<float> ramp(int width, int height, int channels);
 
 // Writes a width x width/2 float EXR of constant `radiance` (R = G = B) through OpenImageIO (not
 // core's Image::save, so that a bug there cannot hide one in loading), making its folder. For
