@@ -3,7 +3,7 @@
 // them (core/BuiltinImageEncoders.h), so that reading an environment or a map from an EXR does
 // not load the image module and OpenImageIO with it (core/ImageCodec.h: about 0.37 s and 100 MB
 // of a process that reads one image). It decodes what OpenImageIO would, value for value:
-// ImageCodecTest::builtinExrDecoderMatchesTheModule reads a table of files both ways.
+// ExrReadingTest::builtinExrDecoderMatchesTheModule reads a table of files both ways.
 //
 // Handled: part 0 of a flat (not deep) scanline or tiled file, any compression, the data window
 // as the image (as OpenImageIO reads it), channels named R, G, B, A or Y without a layer, every
