@@ -82,28 +82,39 @@ namespace {
 
 constexpr double kMaxPixelsPerByte = 16384.0;
 
+// No codec packs more than a few thousand pixels into a byte (deflate's best is about 1032:1 on
+// bytes, 8 one-bit pixels each): a header claiming more than kMaxPixelsPerByte times the file's
+// size belongs to a cut-short or crafted file, and reading it would allocate for the claim first
+// (a 95-byte PNG claiming 32768x8192 took 4 GiB and half a minute to fail). "" when the claim fits
+// or the size is unknown (bytes <= 0).
+std::string pixelClaimProblem(long long width, long long height, long long bytes)
+{
+    if (bytes <= 0 || double(width) * double(height) <= double(bytes) * kMaxPixelsPerByte)
+        return {};
+    return "its header claims " + std::to_string(width) + "x" + std::to_string(height)
+        + " pixels, too large for a file of " + std::to_string(bytes) + " bytes (cut short or damaged)";
+}
+
+// A little-endian 32-bit value (EXR headers).
+std::uint32_t littleEndian32(const unsigned char* bytes)
+{
+    return std::uint32_t(bytes[0]) | std::uint32_t(bytes[1]) << 8 | std::uint32_t(bytes[2]) << 16
+        | std::uint32_t(bytes[3]) << 24;
+}
+
 long long fileSizeOf(const std::string& path)
 {
     struct stat info { };
     return ::stat(path.c_str(), &info) == 0 ? static_cast<long long>(info.st_size) : -1;
 }
 
-// OpenEXR reads a header attribute's declared size before it checks it against the file: a
-// 695-byte file whose string attribute claims 2 GiB took 7-13 s (allocating and reading) to fail.
-// The header is a list of (name, type, 32-bit size, value) ending with an empty name (one list
-// per part in a multi-part file); a size beyond what the file holds is refused here, before
-// OpenImageIO sees the file. OpenEXR also reads a channel list ("chlist") past its declared size
-// when its names run on: a 728-byte mutant whose list ran into the next attribute took 8-18 s of
-// allocating to fail (FuzzTest, seed 22): each channel list must hold whole entries (a name, a
-// pixel type of 0-2, sampling of at least 1) ending with its terminator exactly at its size.
-// "" when the file is not an EXR or its headers are sound.
-// `head`: the file's first bytes (containerProblem's), which begin with the EXR magic number.
+// OpenEXR reads a channel list ("chlist") past its declared size when its names run on: a 728-byte
+// mutant whose list ran into the next attribute took 8-18 s of allocating to fail (FuzzTest, seed
+// 22). Each list must hold whole entries (a name, a pixel type of 0-2, sampling of at least 1)
+// ending with its terminator exactly at its size; "" when it does.
 std::string exrChannelListProblem(const unsigned char* list, std::uint32_t size)
 {
-    const auto int32At = [&](std::uint32_t at) {
-        return std::int32_t(std::uint32_t(list[at]) | std::uint32_t(list[at + 1]) << 8
-            | std::uint32_t(list[at + 2]) << 16 | std::uint32_t(list[at + 3]) << 24);
-    };
+    const auto int32At = [&](std::uint32_t at) { return std::int32_t(littleEndian32(list + at)); };
     std::uint32_t at = 0;
     while (at < size && list[at] != 0) {
         const std::uint32_t name = at;
@@ -143,6 +154,14 @@ std::optional<std::uint32_t> exrFixedAttributeSize(const std::string& type)
     return std::nullopt;
 }
 
+// OpenEXR reads a header attribute's declared size before it checks it against the file: a
+// 695-byte file whose string attribute claims 2 GiB took 7-13 s (allocating and reading) to fail.
+// The header is a list of (name, type, 32-bit size, value) ending with an empty name (one list
+// per part in a multi-part file); a size beyond what the file holds is refused here, before
+// OpenImageIO sees the file. So are the other claims OpenEXR believes as it opens a file (the
+// a channel list, fixed-size attributes, the data window). "" when the file is not an EXR or its
+// headers are sound.
+// `head`: the file's first bytes (containerProblem's), which begin with the EXR magic number.
 std::string exrHeaderProblem(const std::vector<unsigned char>& head, long long fileSize)
 {
     if (head.size() < 8)
@@ -167,8 +186,7 @@ std::string exrHeaderProblem(const std::vector<unsigned char>& head, long long f
         for (;;) {
             if (!readName(&type) || at + 4 > head.size())
                 return {};
-            const std::uint32_t size = std::uint32_t(head[at]) | std::uint32_t(head[at + 1]) << 8
-                | std::uint32_t(head[at + 2]) << 16 | std::uint32_t(head[at + 3]) << 24;
+            const std::uint32_t size = littleEndian32(head.data() + at);
             at += 4;
             if (size
                 > std::uint64_t(std::max<long long>(fileSize, 0)) - std::min<std::uint64_t>(at, fileSize))
@@ -190,8 +208,7 @@ std::string exrHeaderProblem(const std::vector<unsigned char>& head, long long f
             if (name == "dataWindow" && type == "box2i" && size == 16 && at + size <= head.size()) {
                 std::int64_t box[4];
                 for (int i = 0; i < 4; ++i)
-                    box[i] = std::int32_t(std::uint32_t(head[at + 4 * i]) | std::uint32_t(head[at + 4 * i + 1]) << 8
-                        | std::uint32_t(head[at + 4 * i + 2]) << 16 | std::uint32_t(head[at + 4 * i + 3]) << 24);
+                    box[i] = std::int32_t(littleEndian32(head.data() + at + 4 * std::size_t(i)));
                 const std::int64_t width = box[2] - box[0] + 1;
                 const std::int64_t height = box[3] - box[1] + 1;
                 const std::string claim = std::to_string(width) + "x" + std::to_string(height);
@@ -200,9 +217,8 @@ std::string exrHeaderProblem(const std::vector<unsigned char>& head, long long f
                 if (width > Image::kMaxDimension || height > Image::kMaxDimension)
                     return "image too large: " + claim + " exceeds the limit of "
                         + std::to_string(Image::kMaxDimension) + " pixels per side";
-                if (double(width) * double(height) > double(std::max<long long>(fileSize, 0)) * kMaxPixelsPerByte)
-                    return "its header claims " + claim + " pixels, too large for a file of "
-                        + std::to_string(fileSize) + " bytes (cut short or damaged)";
+                if (std::string problem = pixelClaimProblem(width, height, fileSize); !problem.empty())
+                    return problem;
             }
             at += size;
             if (!readName(&name))
@@ -430,17 +446,9 @@ bool ImageReader::checkHeader(const char* function, std::string* error) const
 bool ImageReader::checkSizeAgainstFile(const char* function, std::string* error) const
 {
     const CodecHeader& header = this->header();
-    // No codec packs more than a few thousand pixels into a byte (deflate's best is about 1032:1
-    // on bytes, 8 one-bit pixels each): a header claiming more than kMaxPixelsPerByte times the
-    // file's size belongs to a cut-short or crafted file, and reading it would allocate for the
-    // claim first (a 95-byte PNG claiming 32768x8192 took 4 GiB and half a minute to fail).
-    const double pixels = double(header.width) * double(header.height);
-    const double bytes = m_embedded ? double(m_embedded->size()) : double(m_fileSize);
-    if (bytes > 0 && pixels > bytes * kMaxPixelsPerByte) {
-        setImageError(error, function, m_path,
-            "its header claims " + std::to_string(header.width) + "x" + std::to_string(header.height)
-                + " pixels, too large for a file of " + std::to_string(static_cast<long long>(bytes))
-                + " bytes (cut short or damaged)");
+    const long long bytes = m_embedded ? static_cast<long long>(m_embedded->size()) : m_fileSize;
+    if (const std::string problem = pixelClaimProblem(header.width, header.height, bytes); !problem.empty()) {
+        setImageError(error, function, m_path, problem);
         return false;
     }
     return true;
