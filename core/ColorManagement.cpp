@@ -9,6 +9,7 @@
 #include <mutex>
 
 #include "core/Failure.h"
+#include "core/FileCheck.h"
 
 namespace facet {
 
@@ -157,6 +158,12 @@ ColorManagement ColorManagement::builtIn()
 std::optional<ColorManagement> ColorManagement::fromFile(const std::string& path, std::string* error)
 {
     const std::string prefix = "ColorManagement::fromFile: cannot load OCIO config '" + path + "': ";
+    // The check every input goes through (core/FileCheck.h): $OCIO naming a FIFO blocked `facet
+    // render` and the window's start forever inside OCIO's open (issue 29).
+    if (const FileCheck check = checkRegularFile(path); !check.ok()) {
+        fail(prefix + check.problem, error);
+        return std::nullopt;
+    }
     try {
         OCIO::ConstConfigRcPtr config = OCIO::Config::CreateFromFile(path.c_str());
         config->validate();
@@ -276,6 +283,25 @@ std::optional<std::vector<std::string>> ColorManagement::views(
         return std::nullopt;
     }
     return names;
+}
+
+bool ColorManagement::checkDisplayView(
+    const std::string& display, const std::string& view, std::string* problem) const
+{
+    const std::vector<std::string> all = displays();
+    if (std::find(all.begin(), all.end(), display) == all.end())
+        return fail("ocioDisplay: unknown display \"" + display + "\" in " + m_source
+                + " (available: " + quotedList(all) + ")",
+            problem);
+    std::string message;
+    const std::optional<std::vector<std::string>> names = views(display, &message);
+    if (!names)
+        return fail("ocioView: " + message, problem);
+    if (std::find(names->begin(), names->end(), view) == names->end())
+        return fail("ocioView: display \"" + display + "\" of " + m_source + " has no view \"" + view
+                + "\" (available: " + quotedList(*names) + ")",
+            problem);
+    return true;
 }
 
 std::string ColorManagement::defaultDisplay() const

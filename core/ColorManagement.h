@@ -54,6 +54,9 @@ public:
     // Active views of `display`; nullopt with "ColorManagement::views: ..." (listing the displays)
     // for an unknown display.
     std::optional<std::vector<std::string>> views(const std::string& display, std::string* error) const;
+    // Whether the config has `display` and, under it, `view`. False with *problem naming the field
+    // ("ocioDisplay: unknown display \"X\" in <config> (available: ...)", or "ocioView: ...").
+    bool checkDisplayView(const std::string& display, const std::string& view, std::string* problem) const;
     std::string defaultDisplay() const;
     std::string defaultView(const std::string& display) const;
 

@@ -185,12 +185,12 @@ QJsonObject textureInfo(int index, const std::optional<UvTransform>& shared, QJs
 
 GltfTextureTransform toGltfTextureTransform(const UvTransform& uv)
 {
-    // The inverse of gltfTextureTransform (core/GltfImport.cpp): rotation negated, and
-    // o = (o'.x + s.y sin(theta), 1 - o'.y - s.y cos(theta)).
+    // The inverse of gltfTextureTransform (core/GltfImport.cpp): the same rotation, and
+    // o = (o'.x - s.y sin(theta), 1 - o'.y - s.y cos(theta)).
     GltfTextureTransform t;
     t.scale = uv.scale;
-    t.rotation = -uv.rotationDegrees * std::numbers::pi / 180.0;
-    t.offset = {uv.offset.x + uv.scale.y * std::sin(t.rotation),
+    t.rotation = uv.rotationDegrees * std::numbers::pi / 180.0;
+    t.offset = {uv.offset.x - uv.scale.y * std::sin(t.rotation),
         1.0 - uv.offset.y - uv.scale.y * std::cos(t.rotation)};
     return t;
 }
@@ -252,6 +252,10 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
     if (!replace)
         if (const std::vector<std::string> existing = files.existing(names); !existing.empty())
             return fail(existing.front() + ": exists");
+    // All or nothing (core/FileSet.h): an asset replaced with --force keeps its old textures and
+    // buffer until the new ones are all written.
+    if (!files.begin(&problem))
+        return fail(folderPath.string() + ": " + problem);
 
     QJsonArray bufferViews, accessors, images, textures, jsonMaterials;
     Buffer buffer;
@@ -278,13 +282,10 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
                     buffer.addView(encoded.data(), encoded.size(), 0, bufferViews));
                 image.insert(QStringLiteral("mimeType"), QStringLiteral("image/png"));
             } else {
-                files.aboutToWrite(texture.fileName);
-                if (!writeFileAtomically(filePath,
+                if (!writeFileAtomically(files.stagedPath(texture.fileName),
                         std::string_view(reinterpret_cast<const char*>(encoded.data()), encoded.size()),
-                        &problem)) {
-                    files.removeNew();
+                        &problem))
                     return fail(filePath + ": cannot write: " + problem);
-                }
                 files.written(texture.fileName);
                 image.insert(QStringLiteral("uri"), QString::fromStdString(texture.fileName));
             }
@@ -470,21 +471,17 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
         u32(0x004E4942); // "BIN\0"
         bytes.append(bin.constData(), std::size_t(bin.size()));
     } else {
-        files.aboutToWrite(binName);
-        if (!writeFileAtomically(files.path(binName),
-                std::string_view(buffer.bytes().constData(), std::size_t(buffer.bytes().size())), &problem)) {
-            files.removeNew();
+        if (!writeFileAtomically(files.stagedPath(binName),
+                std::string_view(buffer.bytes().constData(), std::size_t(buffer.bytes().size())), &problem))
             return fail(files.path(binName) + ": cannot write: " + problem);
-        }
         files.written(binName);
         bytes.assign(json.constData(), std::size_t(json.size()));
     }
-    files.aboutToWrite(assetName);
-    if (!writeFileAtomically(files.path(assetName), bytes, &problem)) {
-        files.removeNew();
+    if (!writeFileAtomically(files.stagedPath(assetName), bytes, &problem))
         return fail(files.path(assetName) + ": cannot write: " + problem);
-    }
     files.written(assetName);
+    if (!files.commit(&problem))
+        return fail(problem);
     if (written)
         *written = files.writtenPaths();
     return true;

@@ -169,6 +169,65 @@ struct PrimitiveData {
     std::vector<std::uint32_t> indices;
 };
 
+const char* componentTypeName(int componentType)
+{
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return "UNSIGNED_INT";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return "FLOAT";
+    default:
+        return "an unknown type";
+    }
+}
+
+// The component types glTF 2.0 allows for a vertex attribute (section 3.7.2.1), and those
+// KHR_mesh_quantization adds when the asset uses it. Anything else was read as numbers of another
+// meaning: POSITION as UNSIGNED_BYTE without the extension drew garbage (issue 29); the sample
+// renderer refuses such a primitive too. "" when allowed.
+std::string attributeTypeProblem(
+    const std::string& name, const AccessorView& view, bool quantized, const std::string& where)
+{
+    const int type = view.componentType;
+    const bool isFloat = type == TINYGLTF_COMPONENT_TYPE_FLOAT;
+    const bool small = type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE
+        || type == TINYGLTF_COMPONENT_TYPE_SHORT || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    const bool unsignedNormalized = view.normalized
+        && (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+    const bool signedNormalized
+        = view.normalized && (type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_SHORT);
+    bool core = isFloat;
+    bool withQuantization = isFloat;
+    if (name == "POSITION") {
+        withQuantization = isFloat || small;
+    } else if (name == "NORMAL" || name == "TANGENT") {
+        withQuantization = isFloat || signedNormalized;
+    } else { // TEXCOORD_n, COLOR_n
+        core = isFloat || unsignedNormalized;
+        withQuantization = isFloat || small;
+        if (name.starts_with("COLOR_"))
+            withQuantization = core;
+    }
+    if (core || (quantized && withQuantization))
+        return {};
+    const std::string given = std::string(view.normalized ? "normalized " : "") + componentTypeName(type);
+    const bool geometry = name == "POSITION" || name == "NORMAL" || name == "TANGENT";
+    if (!quantized && withQuantization)
+        return where + " " + name + ": " + given
+            + " components need the KHR_mesh_quantization extension, which the asset does not use (glTF 2.0 "
+              "alone allows "
+            + (geometry ? "FLOAT" : "FLOAT or normalized UNSIGNED_BYTE or UNSIGNED_SHORT") + " here)";
+    return where + " " + name + ": " + given + " components are not allowed for this attribute";
+}
+
 // Reads the accessors a primitive names, each checked (accessorView) and consistent in count.
 std::optional<PrimitiveData> readAccessors(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
     const std::string& where, const GltfImportOptions& options, std::string* problem)
@@ -186,6 +245,14 @@ std::optional<PrimitiveData> readAccessors(const tinygltf::Model& model, const t
     data.position.view = accessorView(model, positionIndex, 3, where + " POSITION", problem);
     if (!data.position.view)
         return std::nullopt;
+    const bool quantized
+        = std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), "KHR_mesh_quantization")
+        != model.extensionsUsed.end();
+    if (std::string typeProblem = attributeTypeProblem("POSITION", *data.position.view, quantized, where);
+        !typeProblem.empty()) {
+        gltfsupport::fail(typeProblem, problem);
+        return std::nullopt;
+    }
     data.position.components = 3;
     data.vertexCount = data.position.view->count;
     if (data.vertexCount > options.mesh.maxVertices) {
@@ -201,6 +268,9 @@ std::optional<PrimitiveData> readAccessors(const tinygltf::Model& model, const t
         out.view = accessorView(model, index, components, where + " " + name, problem);
         if (!out.view)
             return false;
+        if (std::string typeProblem = attributeTypeProblem(name, *out.view, quantized, where);
+            !typeProblem.empty())
+            return gltfsupport::fail(typeProblem, problem);
         out.components = components;
         if (out.view->count != data.vertexCount)
             return gltfsupport::fail(where + " " + name + ": " + std::to_string(out.view->count)
@@ -698,14 +768,21 @@ std::optional<std::vector<unsigned char>> readGltfImage(const GltfImageReference
 
 UvTransform gltfTextureTransform(const glm::dvec2& offset, double rotationRadians, const glm::dvec2& scale)
 {
-    // F M F with F(u, v) = (u, 1 - v), M = T(o) R(theta) S(s) (KHR_texture_transform's GLSL):
-    // D R(theta) D = R(-theta) and D S D = S for D = diag(1, -1), so the linear part is
-    // R(-theta) S; the translation is D R(theta) S (0, 1) + D o + (0, 1)
-    // = (o.x - s.y sin(theta), 1 - o.y - s.y cos(theta)).
+    // The matrix the sample renderers use (the Khronos glTF Sample Viewer's material.js and
+    // three.js's setUvTransform): M = T(o) R(-theta) S(s) with R(a) the counter-clockwise rotation
+    // [[cos a, -sin a], [sin a, cos a]]. The GLSL printed in the extension's README builds R(theta)
+    // instead (its mat3 takes columns); the TextureTransformTest asset's arrows, and every
+    // renderer of the glTF render-fidelity comparison, follow the renderers (issue 29: Facet's
+    // arrows pointed at the "opposite direction" marker). docs/gltf.md, "Texture transforms".
+    //
+    // Facet's UVs start at the bottom-left: F M F with F(u, v) = (u, 1 - v). For D = diag(1, -1),
+    // D R(-theta) D = R(theta) and D S D = S, so the linear part is R(theta) S; the translation is
+    // D R(-theta) S (0, 1) + D o + (0, 1) = (o.x + s.y sin(theta), 1 - o.y - s.y cos(theta)).
     UvTransform uv;
     uv.scale = scale;
-    uv.rotationDegrees = -rotationRadians * 180.0 / std::numbers::pi;
-    uv.offset = {offset.x - scale.y * std::sin(rotationRadians), 1.0 - offset.y - scale.y * std::cos(rotationRadians)};
+    uv.rotationDegrees = rotationRadians * 180.0 / std::numbers::pi;
+    uv.offset = {
+        offset.x + scale.y * std::sin(rotationRadians), 1.0 - offset.y - scale.y * std::cos(rotationRadians)};
     return uv;
 }
 

@@ -4,6 +4,7 @@
 #include "core/GltfModel.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <exception>
 #include <utility>
@@ -15,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/Failure.h"
+#include "core/JsonStructure.h"
 
 namespace facet::gltfmodel {
 
@@ -108,10 +110,37 @@ std::string oneLine(std::string text)
 // tinygltf sees the JSON, and decodeDraco() reads the indices from the bitstream, checked.
 // Returns the JSON unchanged when there is nothing to strip or it does not parse (tinygltf then
 // reports the syntax error).
-std::string withoutDracoIndices(const std::string& text)
+//
+// The same pass checks what tinygltf reads without a word: a negative "byteOffset" (or length,
+// stride, count) became 0 (issue 29), so the accessor read other bytes than the file says; *problem
+// names the field ("accessors[2].byteOffset: -12 is negative").
+std::string prepareJson(const std::string& text, std::string* problem)
 {
     nlohmann::json json = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
-    if (json.is_discarded() || !json.is_object() || !json.contains("meshes") || !json["meshes"].is_array())
+    if (json.is_discarded() || !json.is_object())
+        return text;
+    static const std::pair<const char*, std::array<const char*, 4>> kSizes[] = {
+        {"accessors", {"byteOffset", "count", nullptr, nullptr}},
+        {"bufferViews", {"byteOffset", "byteLength", "byteStride", nullptr}},
+        {"buffers", {"byteLength", nullptr, nullptr, nullptr}},
+    };
+    for (const auto& [array, keys] : kSizes) {
+        if (!json.contains(array) || !json[array].is_array())
+            continue;
+        for (std::size_t i = 0; i < json[array].size(); ++i) {
+            const nlohmann::json& item = json[array][i];
+            if (!item.is_object())
+                continue;
+            for (const char* key : keys)
+                if (key && item.contains(key) && item[key].is_number() && item[key].get<double>() < 0) {
+                    fail(std::string(array) + "[" + std::to_string(i) + "]." + key + ": " + item[key].dump()
+                            + " is negative",
+                        problem);
+                    return text;
+                }
+        }
+    }
+    if (!json.contains("meshes") || !json["meshes"].is_array())
         return text;
     bool changed = false;
     for (auto& mesh : json["meshes"]) {
@@ -127,6 +156,10 @@ std::string withoutDracoIndices(const std::string& text)
     }
     return changed ? json.dump() : text;
 }
+
+// Nesting is bounded before nlohmann-json or tinygltf see the text (both recurse: 20 000 levels
+// overflowed the stack); duplicate keys are left to JSON's "SHOULD" (core/JsonStructure.h).
+constexpr JsonStructureRules kGltfJsonRules {kMaxJsonDepth, /*refuseDuplicateKeys=*/false};
 
 std::uint32_t readUint32(const std::vector<unsigned char>& bytes, std::size_t at)
 {
@@ -181,7 +214,12 @@ bool loadModel(const std::string& path, std::size_t maxBytes, tinygltf::Model& m
                 const std::size_t jsonLength = readUint32(bytes, 12);
                 if (20 + std::uint64_t(jsonLength) <= bytes.size()) {
                     const std::string json(bytes.begin() + 20, bytes.begin() + std::ptrdiff_t(20 + jsonLength));
-                    std::string rewritten = withoutDracoIndices(json);
+                    if (const std::optional<std::string> shape = jsonStructureProblem(json, kGltfJsonRules))
+                        return fail("its JSON chunk, " + *shape, problem);
+                    std::string field;
+                    std::string rewritten = prepareJson(json, &field);
+                    if (!field.empty())
+                        return fail(field, problem);
                     if (rewritten != json) {
                         while (rewritten.size() % 4 != 0)
                             rewritten += ' ';
@@ -202,7 +240,13 @@ bool loadModel(const std::string& path, std::size_t maxBytes, tinygltf::Model& m
             }
             ok = loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir);
         } else {
-            const std::string text = withoutDracoIndices(std::string(bytes.begin(), bytes.end()));
+            const std::string_view json(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+            if (const std::optional<std::string> shape = jsonStructureProblem(json, kGltfJsonRules))
+                return fail(*shape, problem);
+            std::string field;
+            const std::string text = prepareJson(std::string(bytes.begin(), bytes.end()), &field);
+            if (!field.empty())
+                return fail(field, problem);
             ok = loader.LoadASCIIFromString(&model, &err, &warn, text.data(), unsigned(text.size()), baseDir);
         }
     } catch (const std::exception& e) {

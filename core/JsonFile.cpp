@@ -14,6 +14,7 @@
 #include "core/AssetLibrary.h"
 #include "core/AtomicFile.h"
 #include "core/FileCheck.h"
+#include "core/JsonStructure.h"
 #include "core/JsonSupport.h"
 #include "core/Project.h"
 
@@ -199,6 +200,11 @@ std::optional<QJsonObject> readObjectFile(const std::string& path, qint64 maxByt
             problem);
     if (data.trimmed().isEmpty())
         return failed("the file is empty", problem);
+
+    // Before the parser: one key twice meant one value to Qt and another to other readers.
+    if (const std::optional<std::string> shape
+        = jsonStructureProblem(std::string_view(data.constData(), std::size_t(data.size()))))
+        return failed(*shape, problem);
 
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(data, &parseError);

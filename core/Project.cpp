@@ -16,7 +16,9 @@
 #include <QJsonValue>
 #include <QSet>
 
+#include "core/ColorManagement.h"
 #include "core/EnumNames.h"
+#include "core/Environment.h"
 #include "core/Finite.h"
 #include "core/JsonReader.h"
 #include "core/JsonSupport.h"
@@ -513,6 +515,11 @@ bool EnvironmentSettings::validate(std::string* problem) const
 {
     if (source.empty())
         return fail("source: must not be empty (a path, \"studio\", \"sky\" or \"uniform:VALUE\")", problem);
+    // The spec's form here, not only in the compare cells made from it: a bad environment.source
+    // was reported as compare.environments.cells[0].source (issue 29).
+    std::string local;
+    if (!Environment::checkSpec(source, &local))
+        return fail("source: " + local, problem);
     if (!std::isfinite(rotationDegrees))
         return fail("rotationDegrees: must be finite", problem);
     if (!std::isfinite(intensity) || intensity < 0.0)
@@ -680,6 +687,15 @@ std::optional<Project> Project::load(const std::string& path, std::string* error
         = readProject(*object, ss(QFileInfo(qs(path)).absolutePath()), &problem, warnings);
     if (!project)
         return failed(prefix + problem, error);
+    // The OCIO names are checked as the file opens (issue 29: before, only when a PNG was drawn,
+    // long after the window showed the project), against $OCIO's config or the built-in one.
+    if (!project->view.ocioDisplay.empty()) {
+        const std::shared_ptr<const ColorManagement> config = ColorManagement::shared(&problem);
+        if (!config)
+            return failed(prefix + "view.ocioDisplay: " + problem, error);
+        if (!config->checkDisplayView(project->view.ocioDisplay, project->view.ocioView, &problem))
+            return failed(prefix + "view." + problem, error);
+    }
     appendWarnings(warning, warnings, prefix);
     return project;
 }

@@ -5,6 +5,7 @@
 // CPU processors tested here.
 
 #include "core/ColorManagement.h"
+#include "core/Project.h"
 #include "core/ToneMap.h"
 
 #include <QDir>
@@ -19,6 +20,8 @@
 #include <cmath>
 #include <string>
 #include <vector>
+
+#include <sys/stat.h>
 
 using namespace facet;
 using facet::test::writeText;
@@ -108,6 +111,10 @@ private Q_SLOTS:
     void unknownNamesListWhatExists();
     void environmentVariableSelectsTheConfig();
     void brokenConfigNamesTheFile();
+    void specialFilesAreRefused_data();
+    void specialFilesAreRefused();
+    void projectOcioNamesAreCheckedAtLoad_data();
+    void projectOcioNamesAreCheckedAtLoad();
 };
 
 void ColorManagementTest::builtInListsDisplaysAndViews()
@@ -317,6 +324,83 @@ void ColorManagementTest::brokenConfigNamesTheFile()
     QVERIFY(!ColorManagement::fromEnvironment(&error));
     QVERIFY2(
         contains(error, broken.toStdString()) && contains(error, "OCIO environment variable"), error.c_str());
+}
+
+// Issue 29: $OCIO naming a FIFO blocked `facet render` and the window's start forever inside
+// OCIO's open. The config goes through the file check every input does.
+void ColorManagementTest::specialFilesAreRefused_data()
+{
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<QString>("reason");
+    QTest::newRow("a FIFO") << QStringLiteral("fifo") << QStringLiteral("is not a regular file");
+    QTest::newRow("/dev/zero") << QStringLiteral("zero") << QStringLiteral("is not a regular file");
+    QTest::newRow("a folder") << QStringLiteral("folder") << QStringLiteral("folder");
+    QTest::newRow("a link loop") << QStringLiteral("loop") << QStringLiteral("loop of symbolic links");
+}
+
+void ColorManagementTest::specialFilesAreRefused()
+{
+    QFETCH(QString, kind);
+    QFETCH(QString, reason);
+    const OcioVariableGuard guard;
+    QTemporaryDir dir;
+    QString path = QDir(dir.path()).filePath(QStringLiteral("config.ocio"));
+    if (kind == QLatin1String("fifo"))
+        QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
+    else if (kind == QLatin1String("zero"))
+        path = QStringLiteral("/dev/zero");
+    else if (kind == QLatin1String("folder"))
+        QVERIFY(QDir().mkpath(path));
+    else
+        QVERIFY(QFile::link(path, path));
+    qputenv("OCIO", QFile::encodeName(path));
+    std::string error;
+    QVERIFY(!ColorManagement::fromEnvironment(&error));
+    QVERIFY2(contains(error, path.toStdString()) && contains(error, reason.toStdString())
+            && contains(error, "OCIO environment variable"),
+        error.c_str());
+}
+
+void ColorManagementTest::projectOcioNamesAreCheckedAtLoad_data()
+{
+    QTest::addColumn<QString>("display");
+    QTest::addColumn<QString>("view");
+    QTest::addColumn<QString>("message"); // empty: loads
+    QTest::newRow("built-in display and view")
+        << QStringLiteral("sRGB - Display") << QStringLiteral("ACES 1.0 - SDR Video") << QString();
+    QTest::newRow("unknown display") << QStringLiteral("Cinema") << QStringLiteral("Raw")
+                                     << QStringLiteral("view.ocioDisplay: unknown display \"Cinema\"");
+    QTest::newRow("unknown view") << QStringLiteral("sRGB - Display") << QStringLiteral("Filmic")
+                                  << QStringLiteral("view.ocioView: display \"sRGB - Display\" of ");
+}
+
+// Issue 29: a project's OCIO display and view were checked only when a PNG was drawn; they are
+// checked as the project opens, naming the field.
+void ColorManagementTest::projectOcioNamesAreCheckedAtLoad()
+{
+    QFETCH(QString, display);
+    QFETCH(QString, view);
+    QFETCH(QString, message);
+    // ColorManagement::shared() reads $OCIO once per process: the built-in config here.
+    const OcioVariableGuard guard;
+    qunsetenv("OCIO");
+    QTemporaryDir dir;
+    const QString path = QDir(dir.path()).filePath(QStringLiteral("p.json"));
+    QVERIFY(writeText(path,
+        QStringLiteral("{\"format\": \"facet-project\", \"version\": 1, \"view\": {\"ocioDisplay\": \"%1\", "
+                       "\"ocioView\": \"%2\"}}")
+            .arg(display, view)
+            .toUtf8()));
+    std::string error;
+    const std::optional<Project> project = Project::load(path.toStdString(), &error);
+    if (message.isEmpty()) {
+        QVERIFY2(project, error.c_str());
+        return;
+    }
+    QVERIFY(!project);
+    QVERIFY2(contains(error, path.toStdString()) && contains(error, message.toStdString())
+            && contains(error, "available: "),
+        error.c_str());
 }
 
 QTEST_GUILESS_MAIN(ColorManagementTest)

@@ -18,6 +18,7 @@
 #include <glm/mat3x3.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 #include <sys/stat.h>
@@ -45,6 +46,44 @@ bool near(double a, double b, double tolerance = 1e-6)
     return std::abs(a - b) <= tolerance;
 }
 
+// The asset's JSON text with `insert` placed right after its opening brace (a .gltf's whole
+// text, a .glb's JSON chunk, padded and the lengths rewritten).
+bool insertIntoJson(const QString& file, const QByteArray& insert)
+{
+    QFile f(file);
+    if (!f.open(QIODevice::ReadOnly))
+        return false;
+    QByteArray bytes = f.readAll();
+    f.close();
+    if (bytes.startsWith("glTF")) {
+        const auto u32 = [&bytes](int at) {
+            std::uint32_t v = 0;
+            std::memcpy(&v, bytes.constData() + at, 4);
+            return v;
+        };
+        const qsizetype jsonLength = qsizetype(u32(12));
+        QByteArray json = bytes.mid(20, jsonLength);
+        json.insert(json.indexOf('{') + 1, insert);
+        while (json.size() % 4 != 0)
+            json.append(' ');
+        const QByteArray rest = bytes.mid(20 + jsonLength);
+        QByteArray out = bytes.left(12);
+        const auto put = [&out](std::uint32_t v) { out.append(reinterpret_cast<const char*>(&v), 4); };
+        put(std::uint32_t(json.size()));
+        put(0x4E4F534A);
+        out.append(json);
+        out.append(rest);
+        const std::uint32_t total = std::uint32_t(out.size());
+        std::memcpy(out.data() + 8, &total, 4);
+        bytes = out;
+    } else {
+        bytes.insert(bytes.indexOf('{') + 1, insert);
+    }
+    if (!f.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        return false;
+    return f.write(bytes) == bytes.size();
+}
+
 } // namespace
 
 class GltfImportTest : public QObject {
@@ -58,13 +97,15 @@ private Q_SLOTS:
     void materialFactorsAndMaps();
     void embeddedImagesDecode_data();
     void embeddedImagesDecode();
-    void textureTransformMatchesTheSpecification();
+    void textureTransformMatchesTheSampleRenderer();
     void severalMaterialsKeepTheirParts();
     void geometryConventions();
     void nodeTransformsAndModes();
     void brokenFilesGiveClearMessages_data();
     void brokenFilesGiveClearMessages();
     void deepNodeGraphDoesNotOverflow();
+    void deeplyNestedJsonIsRefused_data();
+    void deeplyNestedJsonIsRefused();
     void meshImportReadsGltfThroughThisReader();
     void materialsOnlyListsTheSameParts();
     void corruptedFilesNeverCrash();
@@ -206,12 +247,16 @@ void GltfImportTest::embeddedImagesDecode()
 // gltfTextureTransform reads the same texel as glTF's own rule: glTF samples the image at
 // uv' = T R S uv with (0, 0) the top-left corner; Facet samples at its own uv' = T' R' S' uv_f
 // with uv_f = (u, 1 - v) and (0, 0) the bottom-left corner. Both must name the same image point.
-void GltfImportTest::textureTransformMatchesTheSpecification()
+// KHR_texture_transform as the Khronos glTF Sample Viewer applies it (source/gltf/material.js:
+// rotation [c, -s, 0, s, c, 0, 0, 0, 1] given to gl-matrix, which takes columns), in glTF's UV
+// space, against Facet's transform of the same texels in its own (issue 29: the rotation ran the
+// other way, as the extension README's GLSL reads).
+void GltfImportTest::textureTransformMatchesTheSampleRenderer()
 {
     const auto gltfMatrix = [](glm::dvec2 offset, double rotation, glm::dvec2 scale) {
-        // KHR_texture_transform's GLSL, column-major.
         const glm::dmat3 t(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
-        const glm::dmat3 r(std::cos(rotation), std::sin(rotation), 0, -std::sin(rotation), std::cos(rotation), 0, 0, 0, 1);
+        const glm::dmat3 r(
+            std::cos(rotation), -std::sin(rotation), 0, std::sin(rotation), std::cos(rotation), 0, 0, 0, 1);
         const glm::dmat3 s(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
         return t * r * s;
     };
@@ -382,6 +427,16 @@ void GltfImportTest::brokenFilesGiveClearMessages_data()
     QTest::newRow("required extension") << QStringLiteral("meshopt") << QStringLiteral("EXT_meshopt_compression");
     QTest::newRow("buffer is a device") << QStringLiteral("device") << QStringLiteral("not a regular file");
     QTest::newRow("no triangles") << QStringLiteral("empty") << QStringLiteral("contains no triangles");
+    // Issue 29: read as if valid before.
+    QTest::newRow("POSITION as UNSIGNED_BYTE without KHR_mesh_quantization")
+        << QStringLiteral("position-ubyte")
+        << QStringLiteral("POSITION: UNSIGNED_BYTE components need the KHR_mesh_quantization");
+    QTest::newRow("NORMAL as UNSIGNED_SHORT") << QStringLiteral(
+        "normal-ushort") << QStringLiteral("NORMAL: UNSIGNED_SHORT components are not allowed");
+    QTest::newRow("negative accessor byteOffset")
+        << QStringLiteral("negative-offset") << QStringLiteral("accessors[0].byteOffset: -12 is negative");
+    QTest::newRow("negative bufferView byteLength")
+        << QStringLiteral("negative-length") << QStringLiteral("bufferViews[1].byteLength: -4 is negative");
 }
 
 void GltfImportTest::brokenFilesGiveClearMessages()
@@ -437,6 +492,26 @@ void GltfImportTest::brokenFilesGiveClearMessages()
     } else if (name == QLatin1String("meshopt")) {
         w.json()[QLatin1String("extensionsRequired")] = QJsonArray {QStringLiteral("EXT_meshopt_compression")};
         w.json()[QLatin1String("extensionsUsed")] = QJsonArray {QStringLiteral("EXT_meshopt_compression")};
+    } else if (name == QLatin1String("position-ubyte") || name == QLatin1String("normal-ushort")
+        || name == QLatin1String("negative-offset")) {
+        QJsonArray accessors = w.json()[QLatin1String("accessors")].toArray();
+        const int index = name == QLatin1String("normal-ushort") ? 1 : 0; // addQuad: POSITION, NORMAL, ...
+        QJsonObject a = accessors[index].toObject();
+        if (name == QLatin1String("negative-offset")) {
+            a[QLatin1String("byteOffset")] = -12;
+        } else {
+            a[QLatin1String("componentType")] = name == QLatin1String("normal-ushort") ? 5123 : 5121;
+            a.remove(QLatin1String("min"));
+            a.remove(QLatin1String("max"));
+        }
+        accessors[index] = a;
+        w.json()[QLatin1String("accessors")] = accessors;
+    } else if (name == QLatin1String("negative-length")) {
+        QJsonArray views = w.json()[QLatin1String("bufferViews")].toArray();
+        QJsonObject v = views[1].toObject();
+        v[QLatin1String("byteLength")] = -4;
+        views[1] = v;
+        w.json()[QLatin1String("bufferViews")] = views;
     } else if (name == QLatin1String("device")) {
         storage = Storage::ExternalFile;
     } else if (name == QLatin1String("empty")) {
@@ -494,6 +569,79 @@ void GltfImportTest::deepNodeGraphDoesNotOverflow()
     const auto asset = importGltf(file.toStdString(), &error);
     QVERIFY2(asset, error.c_str());
     QCOMPARE(asset->mesh.triangleCount(), std::size_t(2));
+}
+
+// Issue 29: a 40 KB glTF whose extras (or extensions, or any object) nest 20 000 arrays deep
+// overflowed the stack in tinygltf's recursive copy of the JSON (10 000 did not). The nesting is
+// bounded before any parser sees the text: refused with the position, through every way a glTF is
+// read (importGltf, importMesh for --mesh and a project's mesh, readGltfImage for a texture
+// reference into the asset); 200 levels still load.
+void GltfImportTest::deeplyNestedJsonIsRefused_data()
+{
+    QTest::addColumn<QString>("suffix");
+    QTest::addColumn<QByteArray>("key"); // a key of the top-level object
+    QTest::addColumn<QByteArray>("level"); // repeated `depth` times ...
+    QTest::addColumn<QByteArray>("leaf"); // ... around this ...
+    QTest::addColumn<QByteArray>("close"); // ... and closed as many times
+    QTest::addColumn<int>("depth");
+    QTest::addColumn<bool>("loads");
+    for (const char* suffix : {"gltf", "glb"}) {
+        const QString s = QLatin1String(suffix);
+        QTest::newRow(qPrintable(s + QStringLiteral(": extras, 20 000 arrays")))
+            << s << QByteArray("extras") << QByteArray("[") << QByteArray() << QByteArray("]") << 20000
+            << false;
+        QTest::newRow(qPrintable(s + QStringLiteral(": extensions, 20 000 objects")))
+            << s << QByteArray("extensions") << QByteArray("{\"a\":") << QByteArray("0") << QByteArray("}")
+            << 20000 << false;
+        // The key's value sits at depth 1 (inside the top-level object): 256 more make 257.
+        QTest::newRow(qPrintable(s + QStringLiteral(": extras, one level past the bound")))
+            << s << QByteArray("extras") << QByteArray("[") << QByteArray() << QByteArray("]") << 256
+            << false;
+        QTest::newRow(qPrintable(s + QStringLiteral(": extras, at the bound")))
+            << s << QByteArray("extras") << QByteArray("[") << QByteArray() << QByteArray("]") << 255 << true;
+    }
+}
+
+void GltfImportTest::deeplyNestedJsonIsRefused()
+{
+    QFETCH(QString, suffix);
+    QFETCH(QByteArray, key);
+    QFETCH(QByteArray, level);
+    QFETCH(QByteArray, leaf);
+    QFETCH(QByteArray, close);
+    QFETCH(int, depth);
+    QFETCH(bool, loads);
+    GltfWriter w;
+    QJsonObject values;
+    values[QLatin1String("baseColorTexture")]
+        = textureInfo(w.addTexture(w.addImageEmbedded(packedPng(), QStringLiteral("image/png"))));
+    QJsonObject material;
+    material[QLatin1String("pbrMetallicRoughness")] = values;
+    w.addNode(w.addQuad(w.addMaterial(material)));
+    const QString file = path(QStringLiteral("nested-%1.%2").arg(depth).arg(suffix));
+    QVERIFY(w.write(file, suffix == QLatin1String("glb") ? Storage::Glb : Storage::DataUri));
+    QVERIFY(insertIntoJson(
+        file, "\"" + key + "\":" + level.repeated(depth) + leaf + close.repeated(depth) + ","));
+
+    std::string error;
+    const auto asset = importGltf(file.toStdString(), &error);
+    std::string meshError;
+    const auto mesh = importMesh(file.toStdString(), &meshError);
+    std::string imageError;
+    const auto image = readGltfImage(GltfImageReference {file.toStdString(), 0}, nullptr, &imageError);
+    if (loads) {
+        QVERIFY2(asset, error.c_str());
+        QVERIFY2(mesh, meshError.c_str());
+        QVERIFY2(image, imageError.c_str());
+        return;
+    }
+    QVERIFY2(!asset && !mesh && !image, "a file nested too deep was read");
+    for (const std::string& message : {error, meshError, imageError}) {
+        const QString text = QString::fromStdString(message);
+        QVERIFY2(text.contains(file) && text.contains(QStringLiteral("nest deeper than 256 levels"))
+                && text.contains(QStringLiteral("line 1, column ")),
+            message.c_str());
+    }
 }
 
 // importMesh() hands .gltf/.glb to this reader (the viewer's mesh path), never to Assimp.

@@ -228,25 +228,40 @@ void GltfRenderGLTest::textureTransformPicksTheQuadrant_data()
 {
     QTest::addColumn<QVector<double>>("offset");
     QTest::addColumn<QVector<double>>("scale");
+    QTest::addColumn<double>("rotation"); // radians
     QTest::addColumn<QVector<double>>("expected"); // the colour at the quad's centre
     // The quad's UVs span the image; scale 0.5 and an offset pick one quadrant (glTF's UV origin
     // is the image's top-left: offset (0.5, 0) is the top-right quadrant).
-    QTest::newRow("top-left") << QVector<double> {0.0, 0.0} << QVector<double> {0.5, 0.5} << QVector<double> {1, 0, 0};
-    QTest::newRow("top-right") << QVector<double> {0.5, 0.0} << QVector<double> {0.5, 0.5} << QVector<double> {0, 1, 0};
-    QTest::newRow("bottom-left") << QVector<double> {0.0, 0.5} << QVector<double> {0.5, 0.5} << QVector<double> {0, 0, 1};
-    QTest::newRow("bottom-right") << QVector<double> {0.5, 0.5} << QVector<double> {0.5, 0.5} << QVector<double> {1, 1, 1};
+    QTest::newRow("top-left") << QVector<double> {0.0, 0.0} << QVector<double> {0.5, 0.5} << 0.0
+                              << QVector<double> {1, 0, 0};
+    QTest::newRow("top-right") << QVector<double> {0.5, 0.0} << QVector<double> {0.5, 0.5} << 0.0
+                               << QVector<double> {0, 1, 0};
+    QTest::newRow("bottom-left") << QVector<double> {0.0, 0.5} << QVector<double> {0.5, 0.5} << 0.0
+                                 << QVector<double> {0, 0, 1};
+    QTest::newRow("bottom-right") << QVector<double> {0.5, 0.5} << QVector<double> {0.5, 0.5} << 0.0
+                                  << QVector<double> {1, 1, 1};
+    // Rotation as the sample renderers apply it (T R(-rotation) S): the centre (0.25, 0.25) after
+    // scaling turns to (0.25, -0.25) for +90 degrees, and the offset brings it into a quadrant.
+    // The README's GLSL (the other direction, issue 29) lands in the opposite quadrant.
+    QTest::newRow("rotation +90 degrees: top-right, not bottom-left") << QVector<double> {0.5,
+        0.5} << QVector<double> {0.5, 0.5} << std::numbers::pi / 2 << QVector<double> {0, 1, 0};
+    QTest::newRow("rotation -90 degrees: bottom-left, not top-right") << QVector<double> {0.5,
+        0.5} << QVector<double> {0.5, 0.5} << -std::numbers::pi / 2 << QVector<double> {0, 0, 1};
 }
 
 void GltfRenderGLTest::textureTransformPicksTheQuadrant()
 {
     QFETCH(QVector<double>, offset);
     QFETCH(QVector<double>, scale);
+    QFETCH(double, rotation);
     QFETCH(QVector<double>, expected);
     GltfWriter w;
     const int quadrants = w.addTexture(w.addImageEmbedded(quadrantsPng(), QStringLiteral("image/png")));
     QJsonObject transform;
     transform[QLatin1String("offset")] = jsonNumbers({offset[0], offset[1]});
     transform[QLatin1String("scale")] = jsonNumbers({scale[0], scale[1]});
+    if (rotation != 0.0)
+        transform[QLatin1String("rotation")] = rotation;
     QJsonObject extension;
     extension[QLatin1String("KHR_texture_transform")] = transform;
     QJsonObject values;

@@ -527,6 +527,10 @@ private Q_SLOTS:
             << QByteArray(R"({"format": "facet-project", "version": 3, "compare": {"environments": {"cells":
                             [{}, {"camera": {"nearPlane": -1}}]}}})")
             << QStringLiteral("compare.environments.cells[1].camera.nearPlane");
+        // Issue 29: reported as compare.environments.cells[0].source (the cell made from it).
+        QTest::newRow("bad environment source")
+            << minimalWith(R"("environment": {"source": "uniform:-2"})")
+            << QStringLiteral("environment.source: uniform:-2: expected uniform:VALUE");
         QTest::newRow("compare: snapshot out of range")
             << QByteArray(R"({"format": "facet-project", "version": 3,
                             "compare": {"ab": {"snapshot": {"roughness": {"factor": 2}}}}})")

@@ -29,6 +29,8 @@
 #include <array>
 #include <vector>
 
+#include <sys/stat.h>
+
 using namespace facet;
 using facet::test::strings;
 using facet::test::writeText;
@@ -753,6 +755,97 @@ private Q_SLOTS:
         QVERIFY2(r.err.contains(message), qPrintable(r.err));
         QVERIFY2(r.err.contains(asset) || r.err.contains(folder), qPrintable(r.err)); // names the file
         QCOMPARE(QFile::exists(out), exitCode == 0);
+    }
+
+    // Issue 29's crash and hang through the command line: a glTF nested 20 000 levels deep (as
+    // the asset, as --mesh, as a project's mesh, as a project's texture reference into it), and
+    // $OCIO naming a FIFO, a folder or a device. Each is refused with the file named, exit 1, no
+    // output (before: a stack overflow, and a render that never returned).
+    void hostileInputsAreRefused_data()
+    {
+        QTest::addColumn<QString>("input");
+        QTest::addColumn<QString>("message");
+        const QString deep = QStringLiteral("nest deeper than 256 levels");
+        QTest::newRow("deep glTF as the asset") << QStringLiteral("asset") << deep;
+        QTest::newRow("deep glTF as --mesh") << QStringLiteral("--mesh") << deep;
+        QTest::newRow("deep glTF as a project's mesh") << QStringLiteral("project-mesh") << deep;
+        QTest::newRow("deep glTF as a project's texture") << QStringLiteral("project-map") << deep;
+        QTest::newRow("$OCIO a FIFO") << QStringLiteral("ocio-fifo") << QStringLiteral("not a regular file");
+        QTest::newRow("$OCIO a folder") << QStringLiteral("ocio-folder") << QStringLiteral("folder");
+        QTest::newRow("$OCIO a device")
+            << QStringLiteral("ocio-device") << QStringLiteral("not a regular file");
+    }
+    void hostileInputsAreRefused()
+    {
+        using facet::test::GltfWriter;
+        QFETCH(QString, input);
+        QFETCH(QString, message);
+        const QString folder = path(QStringLiteral("hostile-") + input);
+        QVERIFY(QDir().mkpath(folder));
+        // A textured quad whose "extras" nest 20 000 arrays deep (a 40 KB file).
+        GltfWriter w;
+        QJsonObject values;
+        values[QLatin1String("baseColorTexture")] = QJsonObject {{QStringLiteral("index"),
+            w.addTexture(w.addImageEmbedded(
+                facet::test::encodePng(2, 2, 3, std::vector<glm::vec4>(4, glm::vec4(0.5f))),
+                QStringLiteral("image/png")))}};
+        QJsonObject material;
+        material[QLatin1String("pbrMetallicRoughness")] = values;
+        w.addNode(w.addQuad(w.addMaterial(material)));
+        w.json()[QLatin1String("extras")] = QStringLiteral("DEEP");
+        const QString asset = folder + QStringLiteral("/deep.gltf");
+        QVERIFY(w.write(asset, GltfWriter::BufferStorage::DataUri));
+        QFile file(asset);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QByteArray text = file.readAll();
+        file.close();
+        text.replace("\"DEEP\"", QByteArray(20000, '[') + QByteArray(20000, ']'));
+        QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate) && file.write(text) == text.size());
+        file.close();
+
+        const QString out = folder + QStringLiteral("/out.png");
+        QStringList arguments {QStringLiteral("render")};
+        QProcessEnvironment environment;
+        QString named = asset;
+        if (input == QLatin1String("asset")) {
+            arguments << asset;
+        } else if (input == QLatin1String("--mesh")) {
+            arguments << QStringLiteral("--mesh") << asset;
+        } else if (input.startsWith(QLatin1String("project-"))) {
+            const QString project = folder + QStringLiteral("/p.json");
+            const QByteArray json = input == QLatin1String("project-mesh")
+                ? projectJson(QStringLiteral("uniform:1"), asset)
+                : QStringLiteral("{\"format\": \"facet-project\", \"version\": 1, \"environment\": "
+                                 "{\"source\": \"uniform:1\"}, \"materials\": [{\"name\": \"m\", "
+                                 "\"baseColor\": {\"texture\": \"%1#images/0\"}}]}")
+                      .arg(asset)
+                      .toUtf8();
+            QVERIFY(writeText(project, json));
+            arguments << project;
+        } else {
+            named = folder + QStringLiteral("/config.ocio");
+            if (input == QLatin1String("ocio-fifo"))
+                QVERIFY(::mkfifo(QFile::encodeName(named).constData(), 0600) == 0);
+            else if (input == QLatin1String("ocio-folder"))
+                QVERIFY(QDir().mkpath(named));
+            else
+                named = QStringLiteral("/dev/zero");
+            environment.insert(QStringLiteral("OCIO"), named);
+            // The config is read when a project's view asks for an OCIO display.
+            const QString project = folder + QStringLiteral("/p.json");
+            QVERIFY(writeText(project,
+                "{\"format\": \"facet-project\", \"version\": 1, \"view\": {\"ocioDisplay\": \"sRGB - "
+                "Display\", "
+                "\"ocioView\": \"ACES 1.0 - SDR Video\"}}"));
+            arguments << project;
+        }
+        arguments << QStringLiteral("--env") << QStringLiteral("uniform:1") << QStringLiteral("--size")
+                  << QStringLiteral("16x16") << QStringLiteral("--quality") << QStringLiteral("draft")
+                  << QStringLiteral("-o") << out;
+        const Result r = runFacet(arguments, environment);
+        QVERIFY2(r.exitCode == 1, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
+        QVERIFY2(r.err.contains(message) && r.err.contains(named), qPrintable(r.err));
+        QVERIFY(!QFile::exists(out));
     }
 };
 
