@@ -277,10 +277,15 @@ int BakeCommand::run(const BakeRequest& request)
         if (const std::vector<std::string> existing = written.existing(names); !existing.empty())
             return fail(existing.front() + ": exists (use --force to replace the bake)");
 
+    // All or nothing (core/FileSet.h): a bake replaced with --force is the whole new one or the
+    // old one, never some files of each beside an ibl.json that describes one of them.
+    if (!written.begin(&error))
+        return fail(request.outputDirectory + ": " + error);
     const auto save = [&](const Image& image, const std::string& name, bool alpha) {
-        written.aboutToWrite(name);
-        if (!image.save(written.path(name), &error, alpha))
+        if (!image.save(written.stagedPath(name), &error, alpha)) {
+            error = written.named(error);
             return false;
+        }
         written.written(name);
         return true;
     };
@@ -292,7 +297,6 @@ int BakeCommand::run(const BakeRequest& request)
         for (int face = 0; face < 6; ++face) {
             const std::string name = prefilteredName(level, faces[std::size_t(face)]);
             if (!save(levelImage(*ibl->prefiltered, face, level), name, /*alpha=*/false)) {
-                written.removeNew();
                 return fail(error);
             }
             levelFiles.append(QString::fromStdString(name));
@@ -304,7 +308,6 @@ int BakeCommand::run(const BakeRequest& request)
     for (int face = 0; face < 6; ++face) {
         const std::string name = irradianceName(faces[std::size_t(face)]);
         if (!save(levelImage(*ibl->irradiance, face, 0), name, /*alpha=*/false)) {
-            written.removeNew();
             return fail(error);
         }
         irradianceFiles.append(QString::fromStdString(name));
@@ -314,7 +317,6 @@ int BakeCommand::run(const BakeRequest& request)
         const DfgLut& table = *tables[std::size_t(v)];
         const std::string name = dfgName(Visibility(v));
         if (!save(levelImage(*table.texture, 0, 0), name, /*alpha=*/true)) {
-            written.removeNew();
             return fail(error);
         }
         dfgTables.append(
@@ -412,14 +414,13 @@ int BakeCommand::run(const BakeRequest& request)
             }},
     };
     const std::string indexPath = written.path(kIndexName);
-    written.aboutToWrite(kIndexName);
     std::string reason;
-    if (!writeFileAtomically(
-            indexPath, QJsonDocument(index).toJson(QJsonDocument::Indented).toStdString(), &reason)) {
-        written.removeNew();
+    if (!writeFileAtomically(written.stagedPath(kIndexName),
+            QJsonDocument(index).toJson(QJsonDocument::Indented).toStdString(), &reason))
         return fail(indexPath + ": cannot write it: " + reason);
-    }
     written.written(kIndexName);
+    if (!written.commit(&reason))
+        return fail(reason);
 
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf(

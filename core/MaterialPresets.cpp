@@ -213,8 +213,8 @@ std::optional<MaterialPreset> presetFromJson(
     return preset;
 }
 
-bool savePreset(
-    const MaterialPreset& preset, const std::string& path, std::string* error, bool includeTexturePaths)
+bool savePreset(const MaterialPreset& preset, const std::string& path, std::string* error,
+    bool includeTexturePaths, const std::string& textureBaseDir)
 {
     const std::string prefix = "savePreset: " + path + ": ";
     if (!isValidPresetId(preset.id))
@@ -224,7 +224,9 @@ bool savePreset(
     std::string problem;
     if (!preset.material.validate(&problem))
         return fail(prefix + "not saved, the material is invalid: material." + problem, error);
-    const std::string baseDir = QFileInfo(QString::fromStdString(path)).absolutePath().toStdString();
+    const std::string baseDir = !textureBaseDir.empty()
+        ? textureBaseDir
+        : QFileInfo(QString::fromStdString(path)).absolutePath().toStdString();
     if (!json::writeObjectFile(path, presetToJson(preset, baseDir, includeTexturePaths), &problem))
         return fail(prefix + problem, error);
     return true;

@@ -48,9 +48,11 @@ std::optional<MaterialPreset> presetFromJson(const QJsonObject& object, const st
     std::string* error, std::string* warning = nullptr);
 
 // Writes through writeFileAtomically (the old file stays intact on failure). Texture paths, when included,
-// are stored relative to the preset file's folder. Messages: "savePreset: <path>: <problem>".
+// are stored relative to the preset file's folder, or to `textureBaseDir` when given (a file
+// written in a staging folder before it moves, core/FileSet.h). Messages: "savePreset: <path>:
+// <problem>".
 bool savePreset(const MaterialPreset& preset, const std::string& path, std::string* error,
-    bool includeTexturePaths = false);
+    bool includeTexturePaths = false, const std::string& textureBaseDir = {});
 // Messages: "loadPreset: <path>: <json path>: <problem>".
 std::optional<MaterialPreset> loadPreset(
     const std::string& path, std::string* error, std::string* warning = nullptr);

@@ -119,26 +119,37 @@ std::optional<std::string> exportPresetPackage(
     fs::create_directories(package, code);
     if (!fs::is_directory(package, code))
         return fail("cannot make the folder");
+    // All or nothing (core/FileSet.h): an earlier package in the folder stays whole on failure.
     FileSet files(package.string());
+    const auto abandon = [&] {
+        files.discard();
+        fs::remove(package, code); // only when empty: an earlier package's files stay
+    };
+    std::string problem;
+    if (!files.begin(&problem)) {
+        abandon();
+        return fail(problem);
+    }
     for (const auto& [name, bytes] : bytesOfName) {
-        std::string problem;
-        files.aboutToWrite(name);
-        if (!writeFileAtomically(files.path(name), bytes, &problem)) {
-            files.removeNew();
-            fs::remove(package, code); // only when empty: an earlier package's files stay
+        if (!writeFileAtomically(files.stagedPath(name), bytes, &problem)) {
+            abandon();
             return fail(name + ": cannot write it: " + problem);
         }
         files.written(name);
     }
-    std::string problem;
-    files.aboutToWrite(kPresetPackageIndex);
-    if (!savePreset(copy, files.path(kPresetPackageIndex), &problem, /*includeTexturePaths=*/true)) {
-        files.removeNew();
-        fs::remove(package, code);
-        *error = "exportPresetPackage: " + problem;
+    // The index names its textures relative to the package, where it will be, not the staging
+    // folder it is written in.
+    if (!savePreset(copy, files.stagedPath(kPresetPackageIndex), &problem, /*includeTexturePaths=*/true,
+            package.string())) {
+        abandon();
+        *error = "exportPresetPackage: " + files.named(problem);
         return std::nullopt;
     }
     files.written(kPresetPackageIndex);
+    if (!files.commit(&problem)) {
+        abandon();
+        return fail(problem);
+    }
     return package.string();
 }
 

@@ -344,9 +344,10 @@ bool writeTextureSet(const TextureSetPlan& plan, const Material& material, const
     std::string problem;
     const auto write = [&](const PlannedTexture& texture, std::vector<float> values) {
         const ImageFileSpec spec = textureFileSpec(texture);
-        files.aboutToWrite(texture.fileName);
-        if (!writeImageFile(files.path(texture.fileName), spec, values.data(), "export", &problem))
+        if (!writeImageFile(files.stagedPath(texture.fileName), spec, values.data(), "export", &problem)) {
+            problem = files.named(problem);
             return false;
+        }
         files.written(texture.fileName);
         return true;
     };
@@ -466,16 +467,20 @@ bool TextureSetExport::write(
     std::filesystem::create_directories(path, code);
     if (code || !std::filesystem::is_directory(path, code))
         return fail(folder + ": cannot make the folder" + (code ? ": " + code.message() : std::string()));
+    // All or nothing (core/FileSet.h): a set replaced with --force is either the whole new set or
+    // the old one, also when the disk fills midway.
     FileSet files(folder);
     if (!replace)
         if (const std::vector<std::string> existing = files.existing(fileNames()); !existing.empty())
             return fail(existing.front() + ": exists");
-    for (std::size_t i = 0; i < m_plans.size(); ++i) {
-        if (!writeTextureSet(m_plans[i], m_sources[i]->material, m_sources[i]->images, files, error)) {
-            files.removeNew();
-            return false;
-        }
-    }
+    std::string problem;
+    if (!files.begin(&problem))
+        return fail(folder + ": " + problem);
+    for (std::size_t i = 0; i < m_plans.size(); ++i)
+        if (!writeTextureSet(m_plans[i], m_sources[i]->material, m_sources[i]->images, files, error))
+            return false; // the set's destructor removes what was staged
+    if (!files.commit(&problem))
+        return fail(problem);
     if (written)
         *written = files.writtenPaths();
     return true;

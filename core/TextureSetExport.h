@@ -89,9 +89,9 @@ void encodeTexture(const PlannedTexture& texture, std::vector<float>& values);
 // How a planned texture is stored (channels, sample format, colour tag, alpha).
 ImageFileSpec textureFileSpec(const PlannedTexture& texture);
 
-// Renders, encodes and writes each file of `plan` into `files` (atomically, each registered with
-// the set so that a caller can remove the set's new files when a later write fails). False with
-// *error naming the file ("<path>: cannot write: No space left on device").
+// Renders, encodes and writes each file of `plan` into `files`' staging folder (begin() first;
+// the caller commit()s the set when every file is written, core/FileSet.h). False with *error
+// naming the file where it will go ("<path>: cannot write: No space left on device").
 bool writeTextureSet(const TextureSetPlan& plan, const Material& material, const MaterialMapImages& images,
     FileSet& files, std::string* error);
 

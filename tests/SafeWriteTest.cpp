@@ -12,8 +12,11 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonObject>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest/QTest>
+
+#include <map>
 
 #include <sys/stat.h>
 
@@ -154,6 +157,8 @@ private Q_SLOTS:
     void renderToFullDisk_data();
     void renderToFullDisk();
     void imageFormatsWithoutMemoryEncoding();
+    void replacingASetIsAllOrNothing_data();
+    void replacingASetIsAllOrNothing();
 
     void primitiveWritesExactly_data();
     void primitiveWritesExactly();
@@ -288,6 +293,122 @@ void SafeWriteTest::renderToFullDisk()
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QVERIFY(fileBytes(out) != old);
     QCOMPARE(volume.entries(), QStringList {name});
+}
+
+void SafeWriteTest::replacingASetIsAllOrNothing_data()
+{
+    QTest::addColumn<QStringList>("oldArguments"); // "OUT" stands for the output
+    QTest::addColumn<QStringList>("newArguments");
+    QTest::addColumn<QString>("output"); // under the set's folder; "" for the folder itself
+    const QString out = QStringLiteral("OUT");
+    const QString project = QStringLiteral("PROJECT"); // a material with noise maps
+    QTest::newRow("export --format unreal")
+        << QStringList {QStringLiteral("export"), project, QStringLiteral("--format"),
+               QStringLiteral("unreal"), QStringLiteral("--size"), QStringLiteral("4"), QStringLiteral("-o"),
+               out}
+        << QStringList {QStringLiteral("export"), project, QStringLiteral("--format"),
+               QStringLiteral("unreal"), QStringLiteral("--size"), QStringLiteral("64"),
+               QStringLiteral("--force"), QStringLiteral("-o"), out}
+        << QString();
+    QTest::newRow("export --format gltf")
+        << QStringList {QStringLiteral("export"), project, QStringLiteral("--format"), QStringLiteral("gltf"),
+               QStringLiteral("--size"), QStringLiteral("4"), QStringLiteral("-o"), out}
+        << QStringList {QStringLiteral("export"), project, QStringLiteral("--format"), QStringLiteral("gltf"),
+               QStringLiteral("--size"), QStringLiteral("64"), QStringLiteral("--force"),
+               QStringLiteral("-o"), out}
+        << QStringLiteral("asset.gltf");
+    QTest::newRow("bake") << QStringList {QStringLiteral("bake"), QStringLiteral("uniform:1"),
+        QStringLiteral("--ibl-size"), QStringLiteral("16"), QStringLiteral("--quality"),
+        QStringLiteral("draft"), QStringLiteral("-o"), out}
+                          << QStringList {QStringLiteral("bake"), QStringLiteral("uniform:2"),
+                                 QStringLiteral("--ibl-size"), QStringLiteral("16"),
+                                 QStringLiteral("--quality"), QStringLiteral("draft"),
+                                 QStringLiteral("--force"), QStringLiteral("-o"), out}
+                          << QString();
+}
+
+// Issue 29, "Data lost, mixed set": `export --force` and `bake --force` over an earlier set on a
+// disk that fills midway exited 1 having replaced some files and not others. The new set now goes
+// to a staging folder beside the old one and is swapped in whole (core/FileSet.h): on a disk with
+// room for about half of the new set, every old file keeps its bytes and nothing else is left;
+// with room, the whole new set replaces the old one.
+void SafeWriteTest::replacingASetIsAllOrNothing()
+{
+    QFETCH(QStringList, oldArguments);
+    QFETCH(QStringList, newArguments);
+    QFETCH(QString, output);
+    FullVolume volume(QString(), 16 * 1024 * 1024);
+    FACET_REQUIRE_FULL_VOLUME(volume);
+    QTemporaryDir cache;
+    QProcessEnvironment environment;
+    environment.insert(QStringLiteral("FACET_CACHE_DIR"), cache.path());
+    // A material whose maps hold noise, so that each size gives other files.
+    QTemporaryDir inputs;
+    const QString project = inputs.filePath(QStringLiteral("p.json"));
+    std::string error;
+    QVERIFY2(imageVariant(1).save(inputs.filePath(QStringLiteral("noise.png")).toStdString(), &error),
+        error.c_str());
+    QVERIFY(facet::test::writeText(project,
+        "{\"format\": \"facet-project\", \"version\": 1, \"materials\": [{\"name\": \"Noise\", "
+        "\"baseColor\": {\"texture\": \"noise.png\"}, \"roughness\": {\"texture\": \"noise.png\", "
+        "\"channel\": \"g\"}, \"normal\": {\"texture\": \"noise.png\"}}]}"));
+    const auto run = [&](QStringList arguments, const QString& folder) {
+        const QString target = output.isEmpty() ? folder : folder + u'/' + output;
+        arguments.replaceInStrings(QRegularExpression(QStringLiteral("^OUT$")), target);
+        arguments.replaceInStrings(QRegularExpression(QStringLiteral("^PROJECT$")), project);
+        return facet::test::runWithoutDisplay(QStringLiteral(FACET_EXECUTABLE), arguments, environment);
+    };
+    const auto contents = [](const QString& folder) {
+        std::map<QString, QByteArray> files;
+        for (const QString& name :
+            QDir(folder).entryList(QDir::Files | QDir::Hidden | QDir::Dirs | QDir::NoDotAndDotDot))
+            files[name] = fileBytes(folder + u'/' + name);
+        return files;
+    };
+
+    // The new set on a disk with room: its size in whole pages (tmpfs gives a file whole pages).
+    QTemporaryDir reference;
+    facet::test::ProcessResult r = run(newArguments, reference.path());
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const std::map<QString, QByteArray> newSet = contents(reference.path());
+    QVERIFY(newSet.size() >= 3);
+    qint64 newPages = 0;
+    for (const auto& [name, bytes] : newSet)
+        newPages += (bytes.size() + 4095) / 4096;
+
+    const QString folder = volume.filePath(QStringLiteral("set"));
+    r = run(oldArguments, folder);
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const std::map<QString, QByteArray> oldSet = contents(folder);
+    QCOMPARE(oldSet.size(), newSet.size());
+    int differing = 0;
+    for (const auto& [name, bytes] : newSet)
+        differing += oldSet.count(name) && oldSet.at(name) != bytes ? 1 : 0;
+    QVERIFY2(differing >= 2, "the two sets must differ for the test to mean anything");
+
+    // Room for about half of the new set: the first files fit, a later one does not.
+    QVERIFY2(volume.fill(), qPrintable(volume.problem()));
+    QVERIFY2(volume.release(newPages / 2 * 4096), qPrintable(volume.problem()));
+    r = run(newArguments, folder);
+    QVERIFY2(r.exitCode == 1, qPrintable(QStringLiteral("exit %1: %2").arg(r.exitCode).arg(r.err)));
+    QVERIFY2(r.err.contains(QStringLiteral("No space left on device")) && r.err.contains(folder),
+        qPrintable(r.err));
+    QVERIFY2(!r.err.contains(QStringLiteral(".facet-new-")), qPrintable(r.err)); // names the user's files
+    const std::map<QString, QByteArray> afterFailure = contents(folder);
+    QCOMPARE(afterFailure.size(), oldSet.size()); // no staging folder left behind
+    for (const auto& [name, bytes] : oldSet)
+        QVERIFY2(afterFailure.count(name) && afterFailure.at(name) == bytes,
+            qPrintable(name + QStringLiteral(" changed")));
+
+    // With room again the whole new set replaces the old one.
+    QVERIFY(volume.drain());
+    r = run(newArguments, folder);
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    const std::map<QString, QByteArray> replaced = contents(folder);
+    QCOMPARE(replaced.size(), newSet.size());
+    for (const auto& [name, bytes] : newSet)
+        QVERIFY2(replaced.count(name) && replaced.at(name) == bytes,
+            qPrintable(name + QStringLiteral(" is not the new file")));
 }
 
 // OpenImageIO's writers that cannot encode into memory are refused (not written unchecked), with

@@ -183,7 +183,8 @@ std::optional<ReadBack> readBack(const QString& path)
 bool writeSet(const TextureSetPlan& plan, const TestMaterial& test, const QString& folder, std::string* error)
 {
     FileSet files(folder.toStdString());
-    return writeTextureSet(plan, test.material, test.images(), files, error);
+    return files.begin(error) && writeTextureSet(plan, test.material, test.images(), files, error)
+        && files.commit(error);
 }
 
 std::optional<ExportTemplate> templateFrom(const QByteArray& json, std::string* error)

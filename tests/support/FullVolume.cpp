@@ -2,7 +2,9 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <vector>
@@ -212,6 +214,17 @@ bool FullVolume::fill()
     ::close(fd);
     if (freeBytes() != 0) {
         m_problem = QStringLiteral("the volume still has %1 bytes free after filling").arg(freeBytes());
+        return false;
+    }
+    return true;
+}
+
+bool FullVolume::release(qint64 bytes)
+{
+    const QString filler = filePath(kFiller);
+    const qint64 size = QFileInfo(filler).size();
+    if (!QFile::resize(filler, std::max<qint64>(0, size - bytes))) {
+        m_problem = QStringLiteral("cannot shrink the filler");
         return false;
     }
     return true;

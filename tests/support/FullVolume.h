@@ -47,6 +47,8 @@ public:
     // Writes a filler file until the file system refuses another byte (ENOSPC), and checks that
     // statvfs then reports no free block. False with problem() set otherwise.
     bool fill();
+    // Shrinks the filler by `bytes` (whole pages on tmpfs): room for about that much, no more.
+    bool release(qint64 bytes);
     // Removes the filler: the volume has room again.
     bool drain();
     // Remounts the volume read-only: even root cannot write there (an unwritable folder that
