@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "core/ToneMap.h"
@@ -185,8 +186,11 @@ MaterialInfo materialInputs(const Material& material, const MaterialMapImages& i
         // glTF occlusionTexture.strength: mix(1, ao, strength).
         m.occlusion = 1.0
             + material.occlusionStrength() * (scalarMapValue(material.map(MapSlot::Occlusion), *texel) - 1.0);
-    m.baseColor = glm::max(m.baseColor, glm::dvec3(0.0));
+    // Reflectances and occlusion are fractions: a float map beyond [0, 1] must not make light from
+    // nothing (issue 29). Emission is radiance and stays unbounded above.
+    m.baseColor = glm::clamp(m.baseColor, glm::dvec3(0.0), glm::dvec3(1.0));
     m.emissive = glm::max(m.emissive, glm::dvec3(0.0));
+    m.occlusion = std::clamp(m.occlusion, 0.0, 1.0);
     m.alpha = std::clamp(m.alpha, 0.0, 1.0);
     m.metallic = std::clamp(m.metallic, 0.0, 1.0);
     m.perceptualRoughness = std::clamp(m.perceptualRoughness, 0.0, 1.0);

@@ -350,6 +350,8 @@ private Q_SLOTS:
     void initTestCase();
     void matchesCpuTwin_data();
     void matchesCpuTwin();
+    void outOfRangeMapsMakeNoEnergy_data();
+    void outOfRangeMapsMakeNoEnergy();
 
 private:
     std::optional<Image> render(const Project& project, const std::string& view, std::string* error);
@@ -539,6 +541,83 @@ void MaterialMapsGLTest::matchesCpuTwin()
                                 .arg(worst.y)
                                 .arg(meanError)));
     }
+}
+
+void MaterialMapsGLTest::outOfRangeMapsMakeNoEnergy_data()
+{
+    QTest::addColumn<int>("slot");
+    QTest::addColumn<float>("value"); // every texel of a float EXR
+    QTest::addColumn<float>("clamped"); // the in-range value it must render as
+    QTest::addColumn<double>("metallic");
+    QTest::newRow("occlusion 5") << int(MapSlot::Occlusion) << 5.0f << 1.0f << 0.0;
+    QTest::newRow("occlusion 65504") << int(MapSlot::Occlusion) << 65504.0f << 1.0f << 0.0;
+    QTest::newRow("occlusion +inf") << int(MapSlot::Occlusion) << INFINITY << 1.0f << 0.0;
+    QTest::newRow("occlusion 5, metal") << int(MapSlot::Occlusion) << 5.0f << 1.0f << 1.0;
+    QTest::newRow("occlusion -3") << int(MapSlot::Occlusion) << -3.0f << 0.0f << 0.0;
+    QTest::newRow("base colour 5") << int(MapSlot::BaseColor) << 5.0f << 1.0f << 0.0;
+    QTest::newRow("base colour 5, metal") << int(MapSlot::BaseColor) << 5.0f << 1.0f << 1.0;
+}
+
+// Issue 29, "Energy from nothing": occlusion maps were not clamped to [0, 1] (nor was a float
+// base colour above 1), so a float EXR of 5.0 made a white furnace sphere reflect 5x its light,
+// and 65504 or Inf absurd values. A white (base colour 1) sphere under a uniform environment of
+// radiance 1: a map beyond [0, 1] renders exactly as the same map at its bound (within the
+// RGBA16F target's rounding), on the GPU and in the CPU twin's inputs, and no pixel reflects more
+// than its light but for the glTF fresnel_mix's grazing gain (docs/energy.md: at most 2.5% on
+// the interior pixels compared here, measured 1.0244 for the white dielectric).
+void MaterialMapsGLTest::outOfRangeMapsMakeNoEnergy()
+{
+    QFETCH(int, slot);
+    QFETCH(float, value);
+    QFETCH(float, clamped);
+    QFETCH(double, metallic);
+    const auto renderWith = [&](float texel, std::string* error) -> std::optional<Image> {
+        const QString path
+            = m_folder.filePath(QStringLiteral("range-%1-%2.exr").arg(slot).arg(double(texel)));
+        if (!writeDeep(
+                path, 3, OIIO::TypeDesc::FLOAT, [texel](int, int) { return glm::dvec4(double(texel)); }))
+            return std::nullopt;
+        Project project = Project::defaultProject();
+        project.environment.source = "uniform:1";
+        project.lights.clear();
+        Material& material = project.material();
+        material.setBaseColor(glm::dvec3(1.0));
+        material.setFactor(MapSlot::Metallic, metallic);
+        material.setFactor(MapSlot::Roughness, 0.5);
+        useMap(material, MapSlot(slot), path,
+            MapSlot(slot) == MapSlot::BaseColor ? MapChannel::Rgb : MapChannel::R, ColorEncoding::Linear);
+        const auto assets = loadProjectAssets(project, error);
+        if (!assets)
+            return std::nullopt;
+        MaterialMapImages images {};
+        for (MapSlot each : kAllMapSlots)
+            images[std::size_t(each)] = assets->maps[0][std::size_t(each)].image.get();
+        const MaterialInfo info = materialInputs(material, images, glm::dvec2(0.5));
+        if (!(info.occlusion >= 0.0 && info.occlusion <= 1.0)
+            || !glm::all(glm::lessThanEqual(info.baseColor, glm::dvec3(1.0)))) {
+            *error = "the CPU twin's occlusion or base colour is outside [0, 1]";
+            return std::nullopt;
+        }
+        return render(project, "none", error);
+    };
+    std::string error;
+    const auto gpu = renderWith(value, &error);
+    QVERIFY2(gpu, error.c_str());
+    const auto bound = renderWith(clamped, &error);
+    QVERIFY2(bound, error.c_str());
+    double brightest = 0.0;
+    double largestDifference = 0.0;
+    for (const glm::ivec2& p : m_pixels) {
+        const glm::dvec3 c = rgb(*gpu, p.x, p.y);
+        brightest = std::max({brightest, c.r, c.g, c.b});
+        const glm::dvec3 d = glm::abs(c - rgb(*bound, p.x, p.y));
+        largestDifference = std::max({largestDifference, d.r, d.g, d.b});
+    }
+    std::printf("  %-22s brightest %.4f, largest difference to the map at %g: %.5f\n",
+        QTest::currentDataTag(), brightest, double(clamped), largestDifference);
+    QVERIFY2(largestDifference <= 1e-3,
+        qPrintable(QStringLiteral("differs from the map at its bound by %1").arg(largestDifference)));
+    QVERIFY2(brightest <= 1.025, qPrintable(QStringLiteral("a pixel reflects %1x the light").arg(brightest)));
 }
 
 QTEST_GUILESS_MAIN(MaterialMapsGLTest)

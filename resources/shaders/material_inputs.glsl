@@ -113,8 +113,12 @@ MaterialInfo materialInputs(vec2 uv)
     // glTF occlusionTexture.strength: mix(1, ao, strength).
     m.occlusion = 1.0 + uOcclusionStrength * (scalarMapValue(4, occlusionTexel) - 1.0);
 #endif
-    m.baseColor = max(m.baseColor, vec3(0.0));
+    // Reflectances and occlusion are fractions: a float map beyond [0, 1] (an EXR of 5.0) must not
+    // make light from nothing (issue 29: a white furnace sphere reflected 5x its light). Emission
+    // is radiance and stays unbounded above.
+    m.baseColor = clamp(m.baseColor, vec3(0.0), vec3(1.0));
     m.emissive = max(m.emissive, vec3(0.0));
+    m.occlusion = clamp(m.occlusion, 0.0, 1.0);
     m.alpha = clamp(m.alpha, 0.0, 1.0);
     m.metallic = clamp(m.metallic, 0.0, 1.0);
     m.perceptualRoughness = clamp(m.perceptualRoughness, 0.0, 1.0);
