@@ -319,6 +319,121 @@ std::string jpegIptcProblem(const std::vector<unsigned char>& bytes)
     return {};
 }
 
+// A JPEG cut short: libjpeg warns "Premature end of JPEG file" and fills the rest of the image
+// with grey, and OpenImageIO 2.4 passes that on as a success (issue 29: a truncated JPEG loaded
+// half grey without a word). A whole JPEG ends its image data with the EOI marker (FF D9), which
+// the entropy-coded data cannot hold (an FF there is followed by 00 or a restart marker), so a
+// file without one after its first scan (SOS, FF DA) is cut short. Trailing bytes after EOI (some
+// cameras append data) are allowed. `head`: the file's first bytes (from the SOI marker on).
+std::string jpegTruncationProblem(std::FILE* file, const std::vector<unsigned char>& head, long long fileSize)
+{
+    // Walk the marker segments to the first scan (APP1's EXIF thumbnail, with its own EOI, is
+    // skipped whole).
+    std::size_t at = 2;
+    long long scan = -1;
+    while (at + 4 <= head.size() && head[at] == 0xff) {
+        const unsigned marker = head[at + 1];
+        if (marker == 0xff) { // fill byte
+            ++at;
+            continue;
+        }
+        if (marker == 0xda) {
+            scan = static_cast<long long>(at);
+            break;
+        }
+        if (marker == 0xd9)
+            return {}; // EOI before any scan: OpenImageIO says what is wrong
+        at += 2 + (std::size_t(head[at + 2]) << 8 | head[at + 3]);
+    }
+    if (scan < 0)
+        return {}; // no scan in the first MiB: not for this check to judge
+    // Most files end with EOI: look at the end first, then search the whole scan data.
+    unsigned char tail[2] = {0, 0};
+    if (fileSize >= 2 && std::fseek(file, long(fileSize - 2), SEEK_SET) == 0
+        && std::fread(tail, 1, 2, file) == 2 && tail[0] == 0xff && tail[1] == 0xd9)
+        return {};
+    if (std::fseek(file, long(scan), SEEK_SET) != 0)
+        return {};
+    std::vector<unsigned char> chunk(1 << 16);
+    bool lastWasFf = false;
+    for (std::size_t got; (got = std::fread(chunk.data(), 1, chunk.size(), file)) > 0;)
+        for (std::size_t i = 0; i < got; ++i) {
+            if (lastWasFf && chunk[i] == 0xd9)
+                return {};
+            lastWasFf = chunk[i] == 0xff;
+        }
+    return "broken JPEG: the image data ends without its end marker (the file is cut short; "
+           "its lower part would be grey)";
+}
+
+// A TIFF cut short: OpenImageIO 2.4 reads the strips or tiles that are there and leaves the rest
+// black, reporting success (issue 29). The first image's strip (or tile) offsets and byte counts
+// (tags 273/279, 324/325) are read from its directory, and one that ends past the end of the file
+// is refused. Classic TIFF only (BigTIFF is left to the reader). "" when sound or not judged.
+std::string tiffTruncationProblem(std::FILE* file, const std::vector<unsigned char>& head, long long fileSize)
+{
+    if (head.size() < 8)
+        return {};
+    const bool little = head[0] == 'I';
+    const auto read = [&](long long offset, std::size_t bytes, unsigned char* out) {
+        return offset >= 0 && offset + static_cast<long long>(bytes) <= fileSize
+            && std::fseek(file, long(offset), SEEK_SET) == 0 && std::fread(out, 1, bytes, file) == bytes;
+    };
+    const auto value = [little](const unsigned char* b, int bytes) {
+        std::uint64_t v = 0;
+        for (int i = 0; i < bytes; ++i)
+            v |= std::uint64_t(b[i]) << (8 * (little ? i : bytes - 1 - i));
+        return v;
+    };
+    if (value(&head[2], 2) != 42)
+        return {}; // BigTIFF (43) or not TIFF
+    const long long ifd = static_cast<long long>(value(&head[4], 4));
+    unsigned char countBytes[2];
+    if (!read(ifd, 2, countBytes))
+        return {};
+    const std::uint64_t entries = value(countBytes, 2);
+    // A strip (or tile) array: its values' size, count and where they are.
+    struct Field {
+        int size = 0;
+        std::uint64_t count = 0;
+        long long at = -1;
+    };
+    Field offsets, counts;
+    for (std::uint64_t e = 0; e < entries; ++e) {
+        unsigned char entry[12];
+        if (!read(ifd + 2 + static_cast<long long>(e) * 12, 12, entry))
+            return {};
+        const std::uint64_t tag = value(entry, 2);
+        const std::uint64_t type = value(entry + 2, 2);
+        const int size = type == 3 ? 2 : type == 4 ? 4 : 0; // SHORT or LONG
+        if (size == 0)
+            continue;
+        Field field {size, value(entry + 4, 4), -1};
+        field.at = field.count * std::uint64_t(size) <= 4 ? ifd + 2 + static_cast<long long>(e) * 12 + 8
+                                                          : static_cast<long long>(value(entry + 8, 4));
+        if (tag == 273 || tag == 324)
+            offsets = field;
+        else if (tag == 279 || tag == 325)
+            counts = field;
+    }
+    if (offsets.at < 0 || counts.at < 0 || offsets.count != counts.count || offsets.count == 0
+        || offsets.count > (1u << 24))
+        return {};
+    std::vector<unsigned char> a(offsets.count * std::size_t(offsets.size));
+    std::vector<unsigned char> b(counts.count * std::size_t(counts.size));
+    if (!read(offsets.at, a.size(), a.data()) || !read(counts.at, b.size(), b.data()))
+        return {}; // the reader reports a directory past the end itself
+    for (std::uint64_t i = 0; i < offsets.count; ++i) {
+        const std::uint64_t start = value(&a[i * std::size_t(offsets.size)], offsets.size);
+        const std::uint64_t length = value(&b[i * std::size_t(counts.size)], counts.size);
+        if (start + length > std::uint64_t(fileSize))
+            return "broken TIFF: its image data ends at byte " + std::to_string(start + length)
+                + ", past the end of the " + std::to_string(fileSize)
+                + "-byte file (it is cut short; the missing part would be black)";
+    }
+    return {};
+}
+
 // Container headers whose sizes OpenImageIO's readers believe before the file's (above): the
 // file's first MiB is read once and the check of its format, told by its signature, runs on it.
 // "" for a sound file, a file of another format, or one that cannot be opened (OpenImageIO's
@@ -340,8 +455,12 @@ std::string containerProblem(const std::string& path, long long fileSize, bool* 
         problem = exrHeaderProblem(head, fileSize);
     else if (head.size() >= 8 && std::memcmp(head.data(), kPng, 8) == 0)
         problem = pngChunkProblem(file, fileSize);
-    else if (head.size() >= 2 && head[0] == 0xff && head[1] == 0xd8)
+    else if (head.size() >= 2 && head[0] == 0xff && head[1] == 0xd8) {
         problem = jpegIptcProblem(head);
+        if (problem.empty())
+            problem = jpegTruncationProblem(file, head, fileSize);
+    } else if (head.size() >= 4 && ((head[0] == 'I' && head[1] == 'I') || (head[0] == 'M' && head[1] == 'M')))
+        problem = tiffTruncationProblem(file, head, fileSize);
     std::fclose(file);
     return problem;
 }
@@ -387,7 +506,7 @@ std::optional<ImageReader> ImageReader::open(
     if (!reader.m_embedded) {
         // Container headers whose sizes OpenImageIO's readers believe before the file's.
         reader.m_fileSize = fileSizeOf(path);
-        bool exr = false;
+        bool& exr = reader.m_exr;
         if (const std::string container = containerProblem(path, reader.m_fileSize, &exr); !container.empty()) {
             setImageError(error, function, path, container);
             return std::nullopt;
@@ -438,6 +557,14 @@ bool ImageReader::checkHeader(const char* function, std::string* error) const
     }
     if (header.channels <= 0) {
         setImageError(error, function, m_path, "image has no channels");
+        return false;
+    }
+    // OpenEXR's one integer type holds IDs and masks (object or material IDs), not light or
+    // colour: read as a normalised number (value / 2^32) it was black without a word (issue 29).
+    if (m_exr && header.sample == CodecSample::UInt32) {
+        setImageError(error, function, m_path,
+            "its channels are 32-bit unsigned integers (an ID or mask pass, not an image of colours or "
+            "values); save it with half or float channels");
         return false;
     }
     return true;

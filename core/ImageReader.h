@@ -60,6 +60,7 @@ private:
 
     std::string m_path;
     long long m_fileSize = -1; // of the file at m_path (-1: embedded, or unknown)
+    bool m_exr = false; // the file's signature is OpenEXR's
     // The memory an embedded image is decoded from; must outlive m_decoder.
     std::unique_ptr<std::vector<unsigned char>> m_embedded;
     struct Close {

@@ -151,6 +151,7 @@ struct PlyHeader {
     struct Property {
         bool list = false; // "property list ..."
         QByteArray type; // a scalar's type, or a whole list line's count type
+        QByteArray itemType; // a list's item type
     };
     struct Element {
         QByteArray name;
@@ -159,8 +160,21 @@ struct PlyHeader {
         std::vector<Property> properties;
     };
     bool ascii = false;
+    bool bigEndian = false; // binary_big_endian
     std::vector<Element> elements;
 };
+
+// A PLY scalar type's size in bytes; 0 for a name that is none.
+int plyScalarBytes(const QByteArray& type)
+{
+    static const std::pair<const char*, int> kSizes[] = {{"char", 1}, {"uchar", 1}, {"int8", 1}, {"uint8", 1},
+        {"short", 2}, {"ushort", 2}, {"int16", 2}, {"uint16", 2}, {"int", 4}, {"uint", 4}, {"int32", 4},
+        {"uint32", 4}, {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
+    for (const auto& [name, bytes] : kSizes)
+        if (type == name)
+            return bytes;
+    return 0;
+}
 
 // nullopt with *problem for an element count that is not a number (or negative).
 std::optional<PlyHeader> parsePlyHeader(const QList<QByteArray>& lines, std::string* problem)
@@ -170,6 +184,7 @@ std::optional<PlyHeader> parsePlyHeader(const QList<QByteArray>& lines, std::str
         const QList<QByteArray> words = rawLine.simplified().split(' ');
         if (words.size() >= 2 && words[0] == "format") {
             header.ascii = words[1] == "ascii";
+            header.bigEndian = words[1] == "binary_big_endian";
         } else if (words.size() >= 3 && words[0] == "element") {
             bool ok = false;
             const double count = words[2].toDouble(&ok);
@@ -182,7 +197,8 @@ std::optional<PlyHeader> parsePlyHeader(const QList<QByteArray>& lines, std::str
         } else if (words.size() >= 3 && words[0] == "property" && !header.elements.empty()) {
             const bool list = words[1] == "list";
             header.elements.back().properties.push_back(
-                {list, list && words.size() >= 5 ? words[2] : words[1]});
+                {list, list && words.size() >= 5 ? words[2] : words[1],
+                    list && words.size() >= 5 ? words[3] : QByteArray()});
         }
     }
     return header;
@@ -194,15 +210,8 @@ std::optional<PlyHeader> parsePlyHeader(const QList<QByteArray>& lines, std::str
 // before Assimp reserves memory for it and reads on for minutes.
 std::string plyBodyProblem(const PlyHeader& header, qint64 bodyBytes)
 {
-    const auto scalarBytes = [](const QByteArray& type) -> double {
-        static const std::pair<const char*, int> kSizes[] = {{"char", 1}, {"uchar", 1}, {"int8", 1},
-            {"uint8", 1}, {"short", 2}, {"ushort", 2}, {"int16", 2}, {"uint16", 2}, {"int", 4}, {"uint", 4},
-            {"int32", 4}, {"uint32", 4}, {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
-        for (const auto& [name, bytes] : kSizes)
-            if (type == name)
-                return bytes;
-        return 1;
-    };
+    const auto scalarBytes
+        = [](const QByteArray& type) -> double { return std::max(plyScalarBytes(type), 1); };
     double needed = 0; // bytes
     std::string claimed;
     for (const PlyHeader::Element& element : header.elements) {
@@ -275,6 +284,73 @@ std::string plyAsciiListProblem(const PlyHeader& header, const QByteArray& body)
     return {};
 }
 
+// The same for a binary PLY: a face's list count is a number in the data, and Assimp reserves
+// what it says before reading (a count of 300 million took 2.4 GB and 14 s before Assimp refused
+// the file, issue 29). The body is walked element by element (elements without lists in one
+// step) and a list whose count times its item size is more than the bytes left is refused.
+std::string plyBinaryListProblem(const PlyHeader& header, QFile& file, qint64 bodyStart)
+{
+    const auto hasList = [](const PlyHeader::Element& e) {
+        return std::any_of(e.properties.begin(), e.properties.end(), [](const auto& p) { return p.list; });
+    };
+    if (std::none_of(header.elements.begin(), header.elements.end(), hasList))
+        return {};
+    if (!file.seek(bodyStart))
+        return {};
+    const QByteArray body = file.readAll(); // the whole body: plyBodyProblem bounded what it may claim
+    const qint64 size = body.size();
+    const auto readCount = [&](qint64 at, int bytes, const QByteArray& type) -> double {
+        std::uint64_t raw = 0;
+        for (int i = 0; i < bytes; ++i) {
+            const auto byte = std::uint64_t(static_cast<unsigned char>(body[at + i]));
+            raw |= header.bigEndian ? byte << (8 * (bytes - 1 - i)) : byte << (8 * i);
+        }
+        const bool isSigned = type == "char" || type == "int8" || type == "short" || type == "int16"
+            || type == "int" || type == "int32";
+        if (isSigned && bytes < 8 && (raw >> (8 * bytes - 1)) != 0)
+            return -1.0; // negative
+        if (type == "float" || type == "float32" || type == "double" || type == "float64")
+            return -2.0; // a float count: Assimp's reader takes it as garbage too
+        return double(raw);
+    };
+    qint64 at = 0;
+    for (const PlyHeader::Element& element : header.elements) {
+        if (!hasList(element)) {
+            double bytes = 0;
+            for (const PlyHeader::Property& property : element.properties)
+                bytes += std::max(plyScalarBytes(property.type), 1);
+            at += qint64(std::min(element.count * bytes, 9e18));
+            if (at > size)
+                return {}; // plyBodyProblem reported this already
+            continue;
+        }
+        for (double instance = 0; instance < element.count; instance += 1) {
+            for (const PlyHeader::Property& property : element.properties) {
+                const int countBytes = std::max(plyScalarBytes(property.type), 1);
+                if (!property.list) {
+                    at += countBytes;
+                    continue;
+                }
+                if (at + countBytes > size)
+                    return "broken PLY file: " + element.name.toStdString() + " "
+                        + std::to_string(static_cast<long long>(instance)) + " is cut short";
+                const double count = readCount(at, countBytes, property.type);
+                at += countBytes;
+                const double itemBytes = std::max(plyScalarBytes(property.itemType), 1);
+                if (count < 0 || count * itemBytes > double(size - at))
+                    return "broken PLY file: " + element.name.toStdString() + " "
+                        + std::to_string(static_cast<long long>(instance)) + " has a list of "
+                        + (count < 0 ? std::string("a negative or non-integer number of")
+                                     : std::to_string(static_cast<long long>(count)))
+                        + " values, more than the " + std::to_string(size - at)
+                        + " bytes left in the file hold";
+                at += qint64(count * itemBytes);
+            }
+        }
+    }
+    return {};
+}
+
 // Assimp 5.2's PLY reader can loop forever on a header without a complete "end_header" line (a
 // file cut short, or a damaged keyword; found by fuzzing with mutated files, docs/meshes.md). A PLY
 // file (by extension or by its "ply" magic, which Assimp also goes by) must show that line
@@ -306,7 +382,7 @@ std::string plyHeaderProblem(const QString& path)
         if (problem = plyBodyProblem(*header, file.size() - headerBytes); !problem.empty())
             return problem;
         if (!header->ascii)
-            return {};
+            return plyBinaryListProblem(*header, file, headerBytes);
         file.seek(headerBytes);
         return plyAsciiListProblem(*header, file.readAll());
     }

@@ -21,6 +21,7 @@
 
 #include "TestSupport.h"
 #include "core/Image.h"
+#include "core/MapImage.h"
 
 // QCOMPARE prints values it knows; teach it glm's vectors (found by argument-dependent lookup).
 namespace glm {
@@ -35,6 +36,7 @@ char* toString(const glm::vec4& v)
 using facet::ColorEncoding;
 using facet::Image;
 using facet::ImageLoadStats;
+using facet::MapImage;
 
 namespace {
 
@@ -55,7 +57,9 @@ bool writeFixture(const QString& path, int width, int height, int channels, OIIO
     if (colorSpace)
         spec.attribute("oiio:ColorSpace", colorSpace);
     if (path.endsWith(QLatin1String(".tif")))
-        spec.attribute("compression", "none");
+        spec.attribute("compression", path.contains(QLatin1String("zip")) ? "zip" : "none");
+    if (path.contains(QLatin1String("tiled")))
+        spec.tile_width = spec.tile_height = 16;
     return output->open(path.toStdString(), spec) && output->write_image(OIIO::TypeDesc::FLOAT, values.data())
         && output->close();
 }
@@ -159,7 +163,9 @@ private Q_SLOTS:
     void toLinearMatchesSrgbEotf();
     void missingFileIsAnError();
     void textFileNamedPngIsAnError();
+    void truncatedFilesAreErrors_data();
     void truncatedFilesAreErrors();
+    void integerExrIsRefused();
     void directoryIsAnError();
     void absurdHeaderSizeIsRefusedBeforeReading();
     void headerClaimingMoreThanTheFileHoldsIsRefused();
@@ -441,8 +447,24 @@ void ImageTest::textFileNamedPngIsAnError()
     checkLoadError(image, error, path);
 }
 
+void ImageTest::truncatedFilesAreErrors_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<int>("fileType"); // OIIO::TypeDesc::BASETYPE
+    QTest::newRow("EXR") << QStringLiteral("cut.exr") << int(OIIO::TypeDesc::HALF);
+    QTest::newRow("PNG") << QStringLiteral("cut.png") << int(OIIO::TypeDesc::UINT8);
+    // Issue 29: these loaded half grey or half black without a word.
+    QTest::newRow("JPEG") << QStringLiteral("cut.jpg") << int(OIIO::TypeDesc::UINT8);
+    QTest::newRow("TIFF, strips") << QStringLiteral("cut.tif") << int(OIIO::TypeDesc::UINT8);
+    QTest::newRow("TIFF, strips, 16-bit") << QStringLiteral("cut16.tif") << int(OIIO::TypeDesc::UINT16);
+    QTest::newRow("TIFF, zip") << QStringLiteral("cut-zip.tif") << int(OIIO::TypeDesc::UINT8);
+    QTest::newRow("TIFF, tiles") << QStringLiteral("cut-tiled.tif") << int(OIIO::TypeDesc::UINT8);
+}
+
 void ImageTest::truncatedFilesAreErrors()
 {
+    QFETCH(QString, name);
+    QFETCH(int, fileType);
     QTemporaryDir dir;
     // Noise does not compress: cutting the file in half loses pixel data, not only padding.
     std::vector<float> noise(64 * 64 * 3);
@@ -451,23 +473,41 @@ void ImageTest::truncatedFilesAreErrors()
         state = state * 1664525u + 1013904223u;
         value = float(state >> 8) / float(1u << 24);
     }
-    for (const QString& name : {QStringLiteral("cut.exr"), QStringLiteral("cut.png")}) {
-        const QString whole = dir.filePath(QStringLiteral("whole-") + name);
-        QVERIFY(writeFixture(whole, 64, 64, 3,
-            name.endsWith(QLatin1String(".exr")) ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::UINT8, noise));
-        std::string error;
-        QVERIFY2(Image::load(whole.toStdString(), &error), error.c_str());
+    const QString whole = dir.filePath(QStringLiteral("whole-") + name);
+    QVERIFY(writeFixture(whole, 64, 64, 3, OIIO::TypeDesc(OIIO::TypeDesc::BASETYPE(fileType)), noise));
+    std::string error;
+    QVERIFY2(Image::load(whole.toStdString(), &error), error.c_str());
+    QVERIFY2(MapImage::load(whole.toStdString(), &error), error.c_str());
 
-        const QByteArray bytes = readBytes(whole);
-        const QString path = dir.filePath(name);
-        QVERIFY(writeBytes(path, bytes.left(bytes.size() / 2)));
-        const std::optional<Image> image = Image::load(path.toStdString(), &error);
-        checkLoadError(image, error, path);
+    const QByteArray bytes = readBytes(whole);
+    const QString path = dir.filePath(name);
+    QVERIFY(writeBytes(path, bytes.left(bytes.size() / 2)));
+    checkLoadError(Image::load(path.toStdString(), &error), error, path);
+    // Texture maps go through the same reader.
+    QVERIFY(!MapImage::load(path.toStdString(), &error));
+    QVERIFY2(QString::fromStdString(error).contains(path), error.c_str());
 
-        // Cut inside the header as well.
-        QVERIFY(writeBytes(path, bytes.left(40)));
-        checkLoadError(Image::load(path.toStdString(), &error), error, path);
-    }
+    // Cut inside the header as well.
+    QVERIFY(writeBytes(path, bytes.left(40)));
+    checkLoadError(Image::load(path.toStdString(), &error), error, path);
+
+    // Bytes after the end of a whole file (a camera's appended data) are no reason to refuse it.
+    QVERIFY(writeBytes(path, bytes + QByteArray(300, 'x')));
+    QVERIFY2(Image::load(path.toStdString(), &error), error.c_str());
+}
+
+// Issue 29: an EXR of 32-bit unsigned integer channels (an ID pass) loaded as black (its values
+// normalised by 2^32); it is refused, saying what it is.
+void ImageTest::integerExrIsRefused()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("ids.exr"));
+    QVERIFY(writeFixture(path, 8, 8, 3, OIIO::TypeDesc::UINT32, std::vector<float>(8 * 8 * 3, 7.0f)));
+    std::string error;
+    checkLoadError(Image::load(path.toStdString(), &error), error, path);
+    QVERIFY2(error.find("32-bit unsigned integers") != std::string::npos, error.c_str());
+    QVERIFY(!MapImage::load(path.toStdString(), &error));
+    QVERIFY2(error.find("32-bit unsigned integers") != std::string::npos, error.c_str());
 }
 
 void ImageTest::directoryIsAnError()

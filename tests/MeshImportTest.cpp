@@ -431,6 +431,15 @@ private Q_SLOTS:
             "huge-ascii-ply") << QStringLiteral("declares 10000000 vertex, 1 face elements");
         QTest::newRow("binary PLY claiming 1M faces")
             << QStringLiteral("huge-binary-ply") << QStringLiteral("bytes follow the header");
+        // Issue 29: a face's list count of 300 million took 2.4 GB and 14 s before Assimp refused.
+        QTest::newRow("binary PLY, a list of 300M (uint count, little-endian)")
+            << QStringLiteral("list-uint-le-ply") << QStringLiteral("face 0 has a list of 300000000 values");
+        QTest::newRow("binary PLY, a list of 300M (int count, big-endian)")
+            << QStringLiteral("list-int-be-ply") << QStringLiteral("face 0 has a list of 300000000 values");
+        QTest::newRow("binary PLY, a negative list count")
+            << QStringLiteral("list-negative-ply") << QStringLiteral("a negative or non-integer number of");
+        QTest::newRow("binary PLY, the second face's list past the end")
+            << QStringLiteral("list-second-ply") << QStringLiteral("face 1 has a list of 200 values");
         QTest::newRow("a FIFO") << QStringLiteral("fifo") << QStringLiteral("is not a regular file");
         QTest::newRow("a link to /dev/zero")
             << QStringLiteral("zero") << QStringLiteral("is not a regular file");
@@ -456,6 +465,28 @@ private Q_SLOTS:
                 "ply\nformat binary_little_endian 1.0\nelement vertex 3\n" + vertexProperties
                     + "element face 1000000\nproperty list uchar int vertex_indices\nend_header\n"
                     + QByteArray(36 + 13, '\0')));
+        } else if (kind.startsWith(QLatin1String("list-"))) {
+            // Three vertices (36 bytes), then faces whose list counts are given as bytes.
+            const bool bigEndian = kind == QLatin1String("list-int-be-ply");
+            const QByteArray countType = kind == QLatin1String("list-uint-le-ply") ? "uint" : "int";
+            const auto count = [bigEndian](std::uint32_t v) {
+                QByteArray b(4, '\0');
+                for (int i = 0; i < 4; ++i)
+                    b[bigEndian ? 3 - i : i] = char((v >> (8 * i)) & 0xFF);
+                return b;
+            };
+            QByteArray faces;
+            const QByteArray triangle = count(0) + count(1) + count(2);
+            if (kind == QLatin1String("list-second-ply"))
+                faces = count(3) + triangle + count(200) + triangle;
+            else if (kind == QLatin1String("list-negative-ply"))
+                faces = count(0xFFFFFFF0u) + triangle + count(3) + triangle;
+            else
+                faces = count(300000000u) + triangle + count(3) + triangle;
+            QVERIFY(writeFile(path,
+                "ply\nformat " + QByteArray(bigEndian ? "binary_big_endian" : "binary_little_endian")
+                    + " 1.0\nelement vertex 3\n" + vertexProperties + "element face 2\nproperty list "
+                    + countType + " int vertex_indices\nend_header\n" + QByteArray(36, '\0') + faces));
         } else if (kind == QLatin1String("fifo")) {
             QCOMPARE(::mkfifo(QFile::encodeName(path).constData(), 0600), 0);
         } else if (kind == QLatin1String("zero")) {
