@@ -280,6 +280,17 @@ void DocksUiTest::dropImageOnSlot()
     QVERIFY(waitFor([&] { return slot->fileLabel()->text().contains(QStringLiteral("32×8")); }, 10000));
     QCOMPARE(m_document->undoStack()->index(), stepsBefore + 1); // a reload is not an edit
 
+    // Deleted, then made again (an exporter that clears the old set first): the file's watch
+    // ended with the delete, and the folder's watch brings it back (issue 29: it never reloaded).
+    QVERIFY(QFile::remove(file));
+    QTest::qWait(300);
+    const int loadsBeforeRecreate = m_window->sceneController()->loadCounts().maps;
+    QVERIFY(writePng(file, QColor(30, 30, 200), QSize(48, 8)));
+    QVERIFY(
+        waitFor([&] { return m_window->sceneController()->loadCounts().maps > loadsBeforeRecreate; }, 10000));
+    QVERIFY(waitFor([&] { return slot->fileLabel()->text().contains(QStringLiteral("48×8")); }, 10000));
+    QCOMPARE(m_document->undoStack()->index(), stepsBefore + 1);
+
     m_document->undoStack()->undo();
     QVERIFY(!m_document->project().material().map(MapSlot::BaseColor).hasTexture());
 }

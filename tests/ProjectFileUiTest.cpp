@@ -8,10 +8,11 @@
 
 #include "ui/AutosaveController.h"
 #include "ui/CameraController.h"
-#include "ui/EnvironmentDock.h"
 #include "ui/Document.h"
+#include "ui/EnvironmentDock.h"
 #include "ui/MainWindow.h"
 #include "ui/MissingFilesDialog.h"
+#include "ui/ProblemBar.h"
 #include "ui/ProjectFileController.h"
 #include "ui/SceneController.h"
 #include "ui/SurfaceFormat.h"
@@ -21,6 +22,7 @@
 
 #include <QAbstractButton>
 #include <QApplication>
+#include <QDateTime>
 #include <QDockWidget>
 #include <QFile>
 #include <QFileInfo>
@@ -72,6 +74,9 @@ private Q_SLOTS:
     void missingLibraryFileOpensWithRelinkDialog_data();
     void missingLibraryFileOpensWithRelinkDialog();
     void unsavedChangesQuestion();
+    void projectChangedOnDiskIsNotOverwrittenSilently_data();
+    void projectChangedOnDiskIsNotOverwrittenSilently();
+    void failedSaveProblemClearsOnSuccess();
     void autosaveWritesRecoveryFile();
     void recoveryOfferRestoresWork();
     void resetLayoutRedocksPanels();
@@ -371,6 +376,119 @@ void ProjectFileUiTest::unsavedChangesQuestion()
     files->setUnsavedChangesAnswer(QMessageBox::Discard);
     QVERIFY(files->newProject());
     QVERIFY(!document->isModified());
+}
+
+void ProjectFileUiTest::projectChangedOnDiskIsNotOverwrittenSilently_data()
+{
+    QTest::addColumn<QString>("otherWriter"); // what changes the file after this window opened it
+    QTest::addColumn<int>("answer"); // to "changed on disk": Save = overwrite, Discard = reload
+    QTest::addColumn<double>("roughnessOnDisk"); // afterwards
+    QTest::addColumn<double>("roughnessHere");
+    QTest::addColumn<bool>("modifiedHere");
+    // This window's edit is roughness 0.9; the other writer's 0.4; the file was written with 0.2.
+    QTest::newRow("nobody: saved without a question")
+        << QString() << int(QMessageBox::Cancel) << 0.9 << 0.9 << false;
+    QTest::newRow("another window, cancel")
+        << QStringLiteral("window") << int(QMessageBox::Cancel) << 0.4 << 0.9 << true;
+    QTest::newRow("another window, overwrite")
+        << QStringLiteral("window") << int(QMessageBox::Save) << 0.9 << 0.9 << false;
+    QTest::newRow("another window, reload")
+        << QStringLiteral("window") << int(QMessageBox::Discard) << 0.4 << 0.4 << false;
+    // A copy over the file keeping the old modification time (cp -p): the inode tells.
+    QTest::newRow("cp -p over it, cancel")
+        << QStringLiteral("copy") << int(QMessageBox::Cancel) << 0.4 << 0.9 << true;
+    // Removed meanwhile: saving loses nothing, so no question.
+    QTest::newRow("removed: saved without a question")
+        << QStringLiteral("remove") << int(QMessageBox::Cancel) << 0.9 << 0.9 << false;
+}
+
+// Issue 29, "Data lost, silently": two windows with the same project open, each saving: the
+// second save overwrote the first with no warning. A save over the document's own file that
+// another writer changed since it was opened or saved asks first (ProjectFileController), and the
+// answer is carried out; after an overwrite or a reload, the next save asks nothing.
+void ProjectFileUiTest::projectChangedOnDiskIsNotOverwrittenSilently()
+{
+    QFETCH(QString, otherWriter);
+    QFETCH(int, answer);
+    QFETCH(double, roughnessOnDisk);
+    QFETCH(double, roughnessHere);
+    QFETCH(bool, modifiedHere);
+    const QString path = m_dir.filePath(
+        QStringLiteral("shared-%1.json").arg(QLatin1String(QTest::currentDataTag())).replace(u' ', u'-'));
+    {
+        Document writer;
+        writer.setMaterial(withRoughness(writer, 0.2), QStringLiteral("Roughness"));
+        QString error;
+        QVERIFY2(writer.saveAs(path, &error), qPrintable(error));
+    }
+    ProjectFileController* files = m_window->projectFiles();
+    files->setErrorDialogsEnabled(false);
+    QVERIFY(files->openFile(path));
+    Document* document = m_window->document();
+    QVERIFY(!document->changedOnDisk());
+
+    // The second window: opens the same file, edits, saves.
+    if (otherWriter == QLatin1String("window") || otherWriter == QLatin1String("copy")) {
+        Document other;
+        ProjectFileController otherFiles(&other, nullptr);
+        otherFiles.setErrorDialogsEnabled(false);
+        QVERIFY(otherFiles.openFile(path));
+        other.setMaterial(withRoughness(other, 0.4), QStringLiteral("Roughness"));
+        const QString target = otherWriter == QLatin1String("copy") ? path + QStringLiteral(".copy") : path;
+        QVERIFY(otherFiles.saveToFile(target));
+        if (otherWriter == QLatin1String("copy")) {
+            const QDateTime time = QFileInfo(path).lastModified();
+            QFile::remove(path);
+            QVERIFY(QFile::copy(target, path));
+            QFile copied(path);
+            QVERIFY(copied.open(QIODevice::ReadWrite));
+            QVERIFY(copied.setFileTime(time, QFileDevice::FileModificationTime));
+        }
+        QVERIFY(document->changedOnDisk());
+    } else if (otherWriter == QLatin1String("remove")) {
+        QVERIFY(QFile::remove(path));
+        QVERIFY(!document->changedOnDisk());
+    }
+
+    document->setMaterial(withRoughness(*document, 0.9), QStringLiteral("Roughness"));
+    files->setChangedOnDiskAnswer(QMessageBox::StandardButton(answer));
+    const int questionsBefore = files->changedOnDiskQuestions();
+    const bool saved = files->saveToFile(path);
+    QCOMPARE(files->changedOnDiskQuestions() - questionsBefore,
+        otherWriter == QLatin1String("window") || otherWriter == QLatin1String("copy") ? 1 : 0);
+    QCOMPARE(saved, roughnessOnDisk == 0.9);
+
+    std::string error;
+    const std::optional<Project> onDisk = Project::load(path.toStdString(), &error);
+    QVERIFY2(onDisk, error.c_str());
+    QCOMPARE(onDisk->material().roughness(), roughnessOnDisk);
+    QCOMPARE(document->project().material().roughness(), roughnessHere);
+    QCOMPARE(document->isModified(), modifiedHere);
+    QVERIFY2(!m_window->statusMessage().isEmpty(), "the window says what happened");
+
+    // Overwritten or reloaded: the document and the file agree again, the next save asks nothing.
+    if (!modifiedHere) {
+        document->setMaterial(withRoughness(*document, 0.7), QStringLiteral("Roughness"));
+        QVERIFY(files->saveToFile(path));
+        QCOMPARE(files->changedOnDiskQuestions() - questionsBefore,
+            otherWriter == QLatin1String("window") ? 1 : 0);
+    }
+    files->setChangedOnDiskAnswer(std::nullopt);
+}
+
+// Issue 29: the problem bar kept "Could not save" after the next save succeeded.
+void ProjectFileUiTest::failedSaveProblemClearsOnSuccess()
+{
+    ProjectFileController* files = m_window->projectFiles();
+    files->setErrorDialogsEnabled(false);
+    const QString bad = m_dir.filePath(QStringLiteral("no-such-folder/p.json"));
+    QVERIFY(!files->saveToFile(bad));
+    QCOMPARE(m_window->problemBar()->problems().size(), qsizetype(1));
+    QVERIFY2(m_window->problemBar()->problems().front().contains(QStringLiteral("Could not save")),
+        qPrintable(m_window->problemBar()->problems().join(u'|')));
+    QVERIFY(files->saveToFile(m_dir.filePath(QStringLiteral("saved-after-failure.json"))));
+    QVERIFY2(
+        !m_window->problemBar()->hasProblems(), qPrintable(m_window->problemBar()->problems().join(u'|')));
 }
 
 void ProjectFileUiTest::autosaveWritesRecoveryFile()

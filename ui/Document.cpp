@@ -177,6 +177,7 @@ void Document::replaceProject(const Project& project, const QString& path, bool 
     m_project = project;
     m_forcedModified = modified;
     setFilePath(path);
+    m_diskIdentity.reset(); // open() remembers what it read; New and recovery read no such file
     updateMissingFiles();
     updateModified();
     Q_EMIT projectReplaced();
@@ -203,7 +204,35 @@ bool Document::open(const QString& path, QString* error)
     m_warnings = fromStd(warning).trimmed();
     m_sourceAssetPath.clear();
     replaceProject(*project, absolute, false);
+    // What was read (a later writer changes it): a save over another writer's work asks first.
+    rememberDiskIdentity();
     return true;
+}
+
+bool Document::reload(QString* error)
+{
+    Q_ASSERT_X(!m_filePath.isEmpty(), "Document::reload", "an untitled document has no file");
+    return open(m_filePath, error);
+}
+
+bool Document::changedOnDisk() const
+{
+    if (m_filePath.isEmpty() || !m_diskIdentity)
+        return false;
+    FileIdentity now;
+    // Removed: a save loses nothing (and one that is no file any more refuses the save itself).
+    if (!fileIdentity(m_filePath.toStdString(), &now))
+        return false;
+    return now != *m_diskIdentity;
+}
+
+void Document::rememberDiskIdentity()
+{
+    FileIdentity identity;
+    if (!m_filePath.isEmpty() && fileIdentity(m_filePath.toStdString(), &identity))
+        m_diskIdentity = identity;
+    else
+        m_diskIdentity.reset();
 }
 
 bool Document::openAsset(const QString& path, QString* error)
@@ -238,6 +267,7 @@ bool Document::saveAs(const QString& path, QString* error)
     }
     m_sourceAssetPath.clear(); // a project file of its own now
     setFilePath(absolute);
+    rememberDiskIdentity();
     m_forcedModified = false;
     m_undoStack->setClean();
     updateModified();

@@ -25,6 +25,7 @@
 // A project opens even when files it names are missing: missingFiles() lists them and
 // relinkFile() points them somewhere else (undoable).
 
+#include "core/FileCheck.h"
 #include "core/MaterialPresets.h"
 #include "core/Project.h"
 #include "ui/DocumentChanges.h"
@@ -32,6 +33,8 @@
 #include <QObject>
 #include <QString>
 #include <QStringList>
+
+#include <optional>
 
 class QUndoStack;
 
@@ -104,6 +107,14 @@ public:
     static QString recoveryOriginalPath(const QString& recoveryPath);
 
     QString filePath() const { return m_filePath; }
+    // Whether filePath() was rewritten or replaced on disk since this document opened or saved it (another
+    // window, another program): size, times and inode against those seen then (core/FileCheck.h
+    // FileIdentity). False for an untitled or recovered document (nothing seen yet) and while the file is
+    // what was seen. Saving over such a file would lose the other writer's work without a word (issue 29):
+    // the window asks first (ProjectFileController).
+    bool changedOnDisk() const;
+    // Opens filePath() again (discarding edits: ask first); as open().
+    bool reload(QString* error);
     // The asset an untitled project was opened from (openAsset); empty otherwise, and again after
     // the project is saved, or another is opened or made.
     QString sourceAssetPath() const { return m_sourceAssetPath; }
@@ -157,9 +168,11 @@ private:
     void updateMissingFiles();
     void setFilePath(const QString& path);
     void updateModified();
+    void rememberDiskIdentity();
 
     Project m_project;
     QString m_filePath;
+    std::optional<FileIdentity> m_diskIdentity; // filePath() as opened or saved
     QString m_sourceAssetPath;
     QUndoStack* m_undoStack = nullptr;
     QStringList m_missingFiles;

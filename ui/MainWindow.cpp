@@ -170,6 +170,11 @@ void MainWindow::createFileMenu()
     menu->addSeparator();
     add(tr("&Save"), "saveAction", QKeySequence::Save, &ProjectFileController::save);
     add(tr("Save &As…"), "saveAsAction", QKeySequence::SaveAs, &ProjectFileController::saveAs);
+    QAction* reloadAction
+        = add(tr("Re&load From Disk"), "reloadAction", QKeySequence(), &ProjectFileController::reload);
+    reloadAction->setEnabled(!m_document->filePath().isEmpty());
+    connect(m_document, &Document::filePathChanged, reloadAction,
+        [reloadAction](const QString& path) { reloadAction->setEnabled(!path.isEmpty()); });
     menu->addSeparator();
     QAction* exportAction = menu->addAction(tr("&Export…"), this, &MainWindow::exportMaterials);
     exportAction->setObjectName(QStringLiteral("exportAction"));
@@ -370,6 +375,9 @@ void MainWindow::createProblemBar()
     });
     connect(m_files, &ProjectFileController::errorReported, this,
         [this](const QString& text) { m_problemBar->setProblem(QStringLiteral("file"), text); });
+    // "Could not save" stayed in the bar after the next save succeeded (issue 29).
+    connect(m_files, &ProjectFileController::errorCleared, this,
+        [this] { m_problemBar->setProblem(QStringLiteral("file"), QString()); });
     connect(m_autosave, &AutosaveController::failed, this,
         [this](const QString& text) { m_problemBar->setProblem(QStringLiteral("autosave"), text); });
     // Another project: the previous one's problems are not this one's (its own arrive as it loads).

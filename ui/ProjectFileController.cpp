@@ -6,6 +6,7 @@
 #include "ui/MissingFilesDialog.h"
 #include "ui/WindowMessages.h"
 
+#include <QAbstractButton>
 #include <QDebug>
 #include <QDir>
 #include <QFileDialog>
@@ -71,7 +72,7 @@ bool ProjectFileController::newProject()
     if (!maybeSave())
         return false;
     m_document->newProject();
-    m_lastError.clear();
+    clearError();
     m_missingFilesMessage.clear();
     Q_EMIT statusMessage(tr("New project"));
     return true;
@@ -105,7 +106,7 @@ bool ProjectFileController::openFile(const QString& path)
             tr("Could not open the project: %1").arg(WindowMessages::fromCore(error)));
         return false;
     }
-    m_lastError.clear();
+    clearError();
     addRecentFile(m_document->filePath());
     afterOpen();
     return true;
@@ -119,7 +120,7 @@ bool ProjectFileController::openAssetFile(const QString& path)
             tr("Could not open the asset: %1").arg(WindowMessages::fromCore(error)));
         return false;
     }
-    m_lastError.clear();
+    clearError();
     addRecentFile(m_document->sourceAssetPath());
     const QString name = QFileInfo(m_document->sourceAssetPath()).fileName();
     QString text = tr("Opened %1 (%2) as a new project").arg(name, assetSummary(m_document->project()));
@@ -172,7 +173,7 @@ bool ProjectFileController::importAssetFile(const QString& path)
         return false;
     }
     m_document->setProject(after, tr("Import %1").arg(name));
-    m_lastError.clear();
+    clearError();
     QString text = tr("Imported %1 (%2)").arg(name, assetSummary(after));
     if (!warning.empty())
         text += QStringLiteral("; ") + WindowMessages::fromCore(warning);
@@ -242,15 +243,70 @@ bool ProjectFileController::saveAs()
     return saveToFile(path);
 }
 
+bool ProjectFileController::reload()
+{
+    if (m_document->filePath().isEmpty() || !maybeSave())
+        return false;
+    const QString path = m_document->filePath();
+    QString error;
+    if (!m_document->reload(&error)) {
+        reportError(tr("Could not reload %1: %2").arg(QDir::toNativeSeparators(path), error),
+            tr("Could not reload the project: %1").arg(WindowMessages::fromCore(error)));
+        return false;
+    }
+    clearError();
+    afterOpen();
+    Q_EMIT statusMessage(tr("Reloaded %1 from disk").arg(QDir::toNativeSeparators(path)));
+    return true;
+}
+
 bool ProjectFileController::saveToFile(const QString& path)
 {
+    // Another writer's work in the file is not overwritten without a word (issue 29: two windows
+    // on one project, the second save silently replaced the first).
+    if (QFileInfo(path).absoluteFilePath() == m_document->filePath() && m_document->changedOnDisk()) {
+        ++m_changedOnDiskQuestions;
+        QMessageBox::StandardButton answer = QMessageBox::Cancel;
+        if (m_changedOnDiskAnswer) {
+            answer = *m_changedOnDiskAnswer;
+        } else {
+            QMessageBox box(QMessageBox::Warning, tr("Project Changed on Disk"),
+                tr("%1 was changed on disk since you opened or saved it (by another window or "
+                   "program). Overwrite it with this project, or reload it from disk and lose the "
+                   "changes made here?")
+                    .arg(QDir::toNativeSeparators(path)),
+                QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, m_dialogParent);
+            box.setObjectName(QStringLiteral("changedOnDiskBox"));
+            box.button(QMessageBox::Save)->setText(tr("Overwrite"));
+            box.button(QMessageBox::Discard)->setText(tr("Reload From Disk"));
+            box.setDefaultButton(QMessageBox::Cancel);
+            answer = QMessageBox::StandardButton(box.exec());
+        }
+        if (answer == QMessageBox::Discard) {
+            QString error;
+            if (!m_document->reload(&error)) {
+                reportError(tr("Could not reload %1: %2").arg(QDir::toNativeSeparators(path), error),
+                    tr("Could not reload the project: %1").arg(WindowMessages::fromCore(error)));
+                return false;
+            }
+            clearError();
+            afterOpen();
+            Q_EMIT statusMessage(
+                tr("Reloaded %1 from disk; nothing was saved").arg(QDir::toNativeSeparators(path)));
+            return false;
+        }
+        if (answer != QMessageBox::Save) {
+            Q_EMIT statusMessage(tr("Not saved: %1 was changed on disk").arg(QDir::toNativeSeparators(path)));
+            return false;
+        }
+    }
     QString error;
     if (!m_document->saveAs(path, &error)) {
         reportError(tr("Could not save %1: %2").arg(QDir::toNativeSeparators(path), error),
             tr("Could not save the project: %1").arg(WindowMessages::fromCore(error)));
         return false;
     }
-    m_lastError.clear();
+    clearError();
     addRecentFile(m_document->filePath());
     Q_EMIT statusMessage(tr("Saved %1").arg(QDir::toNativeSeparators(m_document->filePath())));
     return true;
@@ -276,6 +332,12 @@ bool ProjectFileController::maybeSave()
     default:
         return false;
     }
+}
+
+void ProjectFileController::clearError()
+{
+    m_lastError.clear();
+    Q_EMIT errorCleared();
 }
 
 void ProjectFileController::reportError(const QString& precise, const QString& text)

@@ -44,12 +44,19 @@ public:
     bool importAsset(); // asks for a glTF asset
     bool save(); // Save As when untitled
     bool saveAs(); // asks for a file
+    // File > Reload From Disk: the project file as it is on disk now (after the unsaved-changes
+    // question). False for an untitled project.
+    bool reload();
     // The same without file dialogs. openFile asks about unsaved changes first (maybeSave); a
     // .gltf / .glb opens as an untitled project made from the asset.
     bool openFile(const QString& path);
     // Replaces the current project's mesh, materials and parts with the asset's: one undo step
     // "Import <file name>". No question about unsaved changes (nothing is lost: Undo).
     bool importAssetFile(const QString& path);
+    // Saving over the document's own file when another writer changed it since it was opened or
+    // saved (Document::changedOnDisk: a second window, a text editor, a sync tool) asks first:
+    // Overwrite (QMessageBox::Save), Reload From Disk (QMessageBox::Discard: this window's
+    // changes are dropped and the file's read) or Cancel (the file and the document unchanged).
     bool saveToFile(const QString& path);
     // Asks "Save changes to X?" when the document is modified: Save (then true if saved), Discard
     // (true), Cancel (false). True at once when unmodified.
@@ -59,6 +66,13 @@ public:
     {
         m_unsavedAnswer = answer;
     }
+    // Test hook: answer the changed-on-disk question with `answer` instead of asking; and how many
+    // times it was put.
+    void setChangedOnDiskAnswer(std::optional<QMessageBox::StandardButton> answer)
+    {
+        m_changedOnDiskAnswer = answer;
+    }
+    int changedOnDiskQuestions() const { return m_changedOnDiskQuestions; }
     // Test hook: report errors in the status bar only, without message boxes.
     void setErrorDialogsEnabled(bool enabled) { m_errorDialogs = enabled; }
 
@@ -79,10 +93,13 @@ Q_SIGNALS:
     void statusMessage(const QString& text);
     // A failure, naming the file and the reason.
     void errorReported(const QString& text);
+    // An open, save, reload or import succeeded: an earlier failure's message is stale.
+    void errorCleared();
 
 private:
     // `precise` goes to lastError() and the log, `text` (window wording) to the window.
     void reportError(const QString& precise, const QString& text);
+    void clearError();
     void addRecentFile(const QString& path);
     void afterOpen();
     bool openAssetFile(const QString& path);
@@ -91,6 +108,8 @@ private:
     QWidget* m_dialogParent;
     QPointer<MissingFilesDialog> m_missingDialog;
     std::optional<QMessageBox::StandardButton> m_unsavedAnswer;
+    std::optional<QMessageBox::StandardButton> m_changedOnDiskAnswer;
+    int m_changedOnDiskQuestions = 0;
     bool m_errorDialogs = true;
     QString m_lastError;
     QString m_missingFilesMessage;

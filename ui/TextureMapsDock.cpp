@@ -126,6 +126,7 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     m_reloadTimer->setInterval(kReloadDelayMs);
     connect(m_reloadTimer, &QTimer::timeout, this, &TextureMapsDock::reloadChangedFiles);
     connect(m_watcher, &QFileSystemWatcher::fileChanged, this, &TextureMapsDock::onFileChanged);
+    connect(m_watcher, &QFileSystemWatcher::directoryChanged, this, &TextureMapsDock::onFolderChanged);
     connect(m_thumbnails, &ThumbnailLoader::ready, this,
         [this](const QString& key, const QImage& image, QSize sourceSize, const QString& error, double) {
             for (MapSlot slot : kAllMapSlots)
@@ -194,11 +195,26 @@ void TextureMapsDock::refreshThumbnails(bool force)
 
 void TextureMapsDock::watchFiles()
 {
+    // The maps' files, and their folders: a file deleted and made again (an exporter that removes
+    // the old set first) ends the file's watch, and only its folder tells when it is back (issue
+    // 29: such a texture never reloaded).
+    m_wantedFiles.clear();
     QStringList wanted;
-    for (const MaterialMap& map : m_document->project().material().maps)
-        if (map.hasTexture() && QFileInfo::exists(QString::fromStdString(map.path)))
-            wanted.append(QString::fromStdString(map.path));
+    QStringList folders;
+    for (const MaterialMap& map : m_document->project().material().maps) {
+        if (!map.hasTexture())
+            continue;
+        const QString file = QString::fromStdString(map.path);
+        m_wantedFiles.append(file);
+        if (QFileInfo::exists(file))
+            wanted.append(file);
+        const QString folder = QFileInfo(file).absolutePath();
+        if (QFileInfo(folder).isDir())
+            folders.append(folder);
+    }
+    m_wantedFiles.removeDuplicates();
     wanted.removeDuplicates();
+    folders.removeDuplicates();
     const QStringList watched = m_watcher->files();
     for (const QString& file : watched)
         if (!wanted.contains(file))
@@ -206,6 +222,22 @@ void TextureMapsDock::watchFiles()
     for (const QString& file : wanted)
         if (!watched.contains(file))
             m_watcher->addPath(file);
+    const QStringList watchedFolders = m_watcher->directories();
+    for (const QString& folder : watchedFolders)
+        if (!folders.contains(folder))
+            m_watcher->removePath(folder);
+    for (const QString& folder : folders)
+        if (!watchedFolders.contains(folder))
+            m_watcher->addPath(folder);
+}
+
+void TextureMapsDock::onFolderChanged(const QString& folder)
+{
+    // A map's file that exists again but is not watched: made anew since it was removed.
+    const QStringList watched = m_watcher->files();
+    for (const QString& file : std::as_const(m_wantedFiles))
+        if (QFileInfo(file).absolutePath() == folder && !watched.contains(file) && QFileInfo::exists(file))
+            onFileChanged(file);
 }
 
 void TextureMapsDock::onFileChanged(const QString& path)
@@ -220,7 +252,8 @@ void TextureMapsDock::reloadChangedFiles()
     QStringList reloaded;
     for (const QString& file : std::as_const(m_changedFiles)) {
         // Editors often save by writing a new file and renaming it over the old one, which
-        // ends the watch: watch the new file.
+        // ends the watch: watch the new file. A file removed is watched again through its folder
+        // when it comes back (onFolderChanged).
         if (QFileInfo::exists(file) && !m_watcher->files().contains(file))
             m_watcher->addPath(file);
         reloaded.append(QFileInfo(file).fileName());

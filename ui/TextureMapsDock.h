@@ -57,6 +57,7 @@ private:
     void refreshThumbnails(bool force);
     void watchFiles();
     void onFileChanged(const QString& path);
+    void onFolderChanged(const QString& folder);
     void reloadChangedFiles();
     void assignFolder();
     void report(const QString& text);
@@ -67,6 +68,7 @@ private:
     QFileSystemWatcher* m_watcher;
     QTimer* m_reloadTimer;
     QStringList m_changedFiles;
+    QStringList m_wantedFiles; // the current material's map files, existing or not
     QLabel* m_messageLabel;
     QLabel* m_materialLabel; // which material the dock edits
     std::array<QString, kMapSlotCount> m_thumbnailKeys; // what each slot's thumbnail shows
