@@ -201,6 +201,18 @@ glm::dvec3 importanceSampleVNDF(const glm::dvec2& u, const glm::dvec3& v, double
     return glm::normalize(glm::dvec3(alpha * nh.x, alpha * nh.y, std::max(0.0, nh.z)));
 }
 
+glm::dvec3 importanceSampleVNDFSphericalCap(const glm::dvec2& u, const glm::dvec3& v, double alpha)
+{
+    // Dupuy and Benyoub 2023, listing 3: in the stretched (alpha = 1) configuration the visible
+    // normals are c + vh for c uniform on the spherical cap z >= -vh.z; unstretch.
+    const glm::dvec3 vh = glm::normalize(glm::dvec3(alpha * v.x, alpha * v.y, v.z));
+    const double phi = 2.0 * kPi * u.x;
+    const double z = (1.0 - u.y) * (1.0 + vh.z) - vh.z;
+    const double sinTheta = std::sqrt(std::clamp(1.0 - z * z, 0.0, 1.0));
+    const glm::dvec3 h = glm::dvec3(sinTheta * std::cos(phi), sinTheta * std::sin(phi), z) + vh;
+    return glm::normalize(glm::dvec3(alpha * h.x, alpha * h.y, std::max(0.0, h.z)));
+}
+
 double pdfVNDFReflection(double NoV, double NoH, double alpha)
 {
     if (NoV <= 0.0 || NoH <= 0.0)

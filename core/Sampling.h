@@ -103,6 +103,13 @@ double pdfGGXReflection(double NoH, double VoH, double alpha);
 // Normals", JCGT 7(4)]. The reflected direction has pdf_l = G1(v) D(h) / (4 n.v): no sample is
 // wasted below the horizon or on back-facing microfacets, which matters at grazing angles.
 glm::dvec3 importanceSampleVNDF(const glm::dvec2& u, const glm::dvec3& v, double alpha);
+// The same distribution by spherical caps [Dupuy and Benyoub 2023, "Sampling Visible GGX Normals
+// with Spherical Caps", HPG, listing 3]: a point of the cap of the unit sphere below the stretched
+// view's horizon, added to the view, is the stretched visible normal. No frame is built around
+// the view, so the points u map to move continuously with v: Heitz's frame turns with v's azimuth
+// and, where n = v (the middle of a sphere facing the camera), a fixed set of points turned a full
+// circle around one pixel and drew a pinch in FIS's structured error (issue 29).
+glm::dvec3 importanceSampleVNDFSphericalCap(const glm::dvec2& u, const glm::dvec3& v, double alpha);
 double pdfVNDFReflection(double NoV, double NoH, double alpha);
 // Smith G1 for GGX, exact [Walter et al. 2007, eq. 34].
 double G1_SmithGGX(double NoX, double alpha);

@@ -170,11 +170,13 @@ private Q_SLOTS:
     {
         QTest::addColumn<double>("alpha");
         QTest::addColumn<double>("NoV");
-        QTest::addColumn<bool>("visible");
+        QTest::addColumn<int>("sampler"); // 0: NDF, 1: VNDF (Heitz), 2: VNDF by spherical caps
+        static const char* const kNames[] = {"NDF", "VNDF", "VNDF caps"};
         for (double alpha : {0.2, 0.5, 1.0})
             for (double NoV : {0.15, 0.6, 1.0})
-                for (bool visible : {false, true})
-                    QTest::addRow("%s alpha %g n.v %g", visible ? "VNDF" : "NDF", alpha, NoV) << alpha << NoV << visible;
+                for (int sampler : {0, 1, 2})
+                    QTest::addRow("%s alpha %g n.v %g", kNames[sampler], alpha, NoV)
+                        << alpha << NoV << sampler;
     }
     // The reflected directions' histogram matches pdfGGXReflection / pdfVNDFReflection. Both
     // lose the samples that reflect below the horizon, so the pdf's total is the fraction kept.
@@ -182,10 +184,15 @@ private Q_SLOTS:
     {
         QFETCH(double, alpha);
         QFETCH(double, NoV);
-        QFETCH(bool, visible);
+        QFETCH(int, sampler);
+        const bool visible = sampler != 0;
         const glm::dvec3 v(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
+        const auto visibleNormal = [&](glm::dvec2 u) {
+            return sampler == 2 ? importanceSampleVNDFSphericalCap(u, v, alpha)
+                                : importanceSampleVNDF(u, v, alpha);
+        };
         auto sample = [&](glm::dvec2 u) {
-            const glm::dvec3 h = visible ? importanceSampleVNDF(u, v, alpha) : importanceSampleGGX(u, alpha);
+            const glm::dvec3 h = visible ? visibleNormal(u) : importanceSampleGGX(u, alpha);
             const glm::dvec3 l = reflectAbout(v, h);
             return (l.z > 0.0 && glm::dot(v, h) > 0.0) ? l : glm::dvec3(0.0); // rejected: not counted
         };
@@ -206,7 +213,7 @@ private Q_SLOTS:
         if (visible) {
             Pcg32 rng(5);
             for (int i = 0; i < 10000; ++i)
-                QVERIFY(glm::dot(v, importanceSampleVNDF(rng.next2D(), v, alpha)) >= 0.0);
+                QVERIFY(glm::dot(v, visibleNormal(rng.next2D())) >= 0.0);
         }
     }
 

@@ -136,3 +136,16 @@ vec3 importanceSampleVNDF(vec2 u, vec3 v, float alpha)
     vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
     return normalize(vec3(alpha * nh.x, alpha * nh.y, max(0.0, nh.z)));
 }
+
+// The same distribution by spherical caps [Dupuy and Benyoub 2023, HPG, listing 3]: no frame is
+// built around v, so a fixed set of points u moves continuously with v (Heitz's frame turns with
+// v's azimuth and drew a pinch where n = v in FIS's structured error). core/Sampling.h has the why.
+vec3 importanceSampleVNDFSphericalCap(vec2 u, vec3 v, float alpha)
+{
+    vec3 vh = normalize(vec3(alpha * v.x, alpha * v.y, v.z));
+    float phi = TWO_PI * u.x;
+    float z = (1.0 - u.y) * (1.0 + vh.z) - vh.z;
+    float sinTheta = sqrt(clamp(1.0 - z * z, 0.0, 1.0));
+    vec3 h = vec3(sinTheta * cos(phi), sinTheta * sin(phi), z) + vh;
+    return normalize(vec3(alpha * h.x, alpha * h.y, max(0.0, h.z)));
+}
