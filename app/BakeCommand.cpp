@@ -253,8 +253,8 @@ int BakeCommand::run(const BakeRequest& request)
     if (!QDir().mkpath(folder))
         return fail(request.outputDirectory + ": cannot make the folder");
 
-    // A surfaceless EGL context: no display server needed (shared/PLATFORM.md). The precompute
-    // and its textures go before it.
+    // A surfaceless EGL context: no display server needed (docs/architecture.md, "OpenGL without a display").
+    // The precompute and its textures go before it.
     auto context = HeadlessGLContext::create(&error);
     if (!context)
         return fail(error);
@@ -340,7 +340,7 @@ int BakeCommand::run(const BakeRequest& request)
                         "Directions in the environment image's frame, unrotated, at intensity 1 (Facet turns "
                         "the environment about +Y and scales it at shading time). World right-handed, +Y "
                         "up; equirect u = atan2(d.z, d.x) / (2 pi) + 0.5, v = asin(d.y) / pi + 0.5, v = 1 "
-                        "the image's top row (shared/DESIGN.md).")},
+                        "the image's top row (docs/architecture.md).")},
                 {QStringLiteral("faces"),
                     QJsonArray {QStringLiteral("px"), QStringLiteral("nx"), QStringLiteral("py"),
                         QStringLiteral("ny"), QStringLiteral("pz"), QStringLiteral("nz")}},

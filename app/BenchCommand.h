@@ -1,6 +1,6 @@
 #pragma once
 // `facet bench`: run time against error of the real-time renderer's quality settings
-// (DESIGN.md, "Fast and accurate, measured"). For each IBL configuration (the quality presets and
+// (docs/architecture.md, "Accuracy"). For each IBL configuration (the quality presets and
 // sweeps around the default one) and each environment, it times a fresh IBL precompute (no cache)
 // and renders the reference view of a metal and a dielectric at several roughness values, and
 // compares each image with the CPU ground truth (core/GroundTruth.h) by relative RMSE over the

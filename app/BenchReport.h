@@ -1,7 +1,7 @@
 #pragma once
 // What `facet bench` measured, one row per (configuration, environment, material, roughness),
-// and the two ways it is reported: readable tables (time and error side by side, STYLE.md) and
-// a CSV with every number, for plots and for docs/benchmarks.md.
+// and the two ways it is reported: readable tables (time and error side by side, docs/architecture.md "Every
+// approximation is measured") and a CSV with every number, for plots and for docs/benchmarks.md.
 
 #include <cmath>
 #include <cstdio>

@@ -329,7 +329,8 @@ void BenchRun::printHeader(const GLInfo& gl) const
 int BenchRun::run()
 {
     std::string error;
-    // One surfaceless EGL context for the whole run: no display server needed (shared/PLATFORM.md).
+    // One surfaceless EGL context for the whole run: no display server needed (docs/architecture.md, "OpenGL
+    // without a display").
     auto context = HeadlessGLContext::create(&error);
     if (!context) {
         fail(error);

@@ -31,7 +31,7 @@ struct CommandLine {
     // `arguments` as QCoreApplication::arguments() would give them: the program first.
     static CommandLine parse(const QStringList& arguments);
     static QString helpText();
-    // The headless commands of the design (shared/DESIGN.md), whether this version has them or not.
+    // The headless commands of the design (docs/architecture.md), whether this version has them or not.
     static const QStringList& commandNames();
     // Those this version has.
     static const QStringList& availableCommandNames();

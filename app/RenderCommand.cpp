@@ -66,7 +66,7 @@ struct Options {
     QCommandLineOption size {
         QStringLiteral("size"), QStringLiteral("Image size, e.g. 512x512."), QStringLiteral("WxH")};
     QCommandLineOption referenceView {QStringLiteral("reference-view"),
-        QStringLiteral("Use DESIGN.md's reference camera (unit sphere, camera at "
+        QStringLiteral("Use the reference view of docs/architecture.md (unit sphere, camera at "
                        "(0,0,3), 45 degree FOV).")};
     QCommandLineOption spp {QStringLiteral("spp"),
         QStringLiteral("Render with the CPU ground-truth integrator at N samples per pixel."),
@@ -363,7 +363,7 @@ int runGpu(const RenderRequest& request)
     }
     const auto loaded = Clock::now();
 
-    // A surfaceless EGL context: no display server needed (shared/PLATFORM.md).
+    // A surfaceless EGL context: no display server needed (docs/architecture.md, "OpenGL without a display").
     auto context = HeadlessGLContext::create(&error);
     if (!context) {
         std::fprintf(stderr, "facet render: %s\n", error.c_str());

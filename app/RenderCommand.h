@@ -8,7 +8,7 @@
 //
 // EXR output is linear scene radiance (no exposure, no tone mapping); PNG is display-referred
 // through the project's view transform. With --spp N the image comes from core's ground-truth
-// integrator (always the reference view of DESIGN.md) instead of the GPU renderer, so the two
+// integrator (always the reference view of docs/architecture.md) instead of the GPU renderer, so the two
 // can be compared pixel for pixel. Flag names are an interface: scripts outside Facet use them.
 
 #include <optional>

@@ -66,7 +66,8 @@ struct Options {
     QCommandLineOption iblSamples {
         QStringLiteral("ibl-samples"), QStringLiteral("Samples per pixel for --ibl fis or reference."), QStringLiteral("N")};
     QCommandLineOption referenceView {QStringLiteral("reference-view"),
-        QStringLiteral("Every cell uses DESIGN.md's reference camera (unit sphere, camera at (0,0,3), 45 degree "
+        QStringLiteral("Every cell uses the reference view of docs/architecture.md (unit sphere, camera at "
+                       "(0,0,3), 45 degree "
                        "FOV).")};
     QCommandLineOption stats {QStringLiteral("stats"), QStringLiteral("Print timings and work counters.")};
     QCommandLineOption output {{QStringLiteral("o"), QStringLiteral("output")},

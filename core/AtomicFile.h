@@ -1,6 +1,6 @@
 #pragma once
 // The one way Facet writes a file: the file at `path` is afterwards either the complete new
-// content or exactly what it was before, never empty or half-written (DESIGN.md "Bad input").
+// content or exactly what it was before, never empty or half-written (docs/architecture.md, "Bad input").
 // Every writer goes through it: projects, presets and the autosave (core/JsonFile.cpp), the IBL
 // disk cache (core/IblDiskCache.cpp), images (core/Image.cpp), the ground-truth cache, bench CSV
 // and screenshots (app/).

@@ -1,5 +1,5 @@
 #pragma once
-// A pinhole camera looking from `position` at `target`. World conventions (DESIGN.md):
+// A pinhole camera looking from `position` at `target`. World conventions (docs/architecture.md):
 // right-handed, +Y up; the reference view looks toward -Z.
 
 #include <string>
@@ -19,7 +19,7 @@ struct Camera {
     double nearPlane = 0.05;
     double farPlane = 100.0;
 
-    // DESIGN.md's reference view, used by the headless renderer, the benchmarks and the accuracy
+    // docs/architecture.md's reference view, used by the headless renderer, the benchmarks and the accuracy
     // tests: a pinhole at (0, 0, 3) looking at the origin, +Y up, 45 degree vertical field of
     // view. (The unit sphere, seen under asin(1/3) = 19.5 degrees, fills about 85% of the image height.)
     static Camera referenceView() { return Camera {}; }

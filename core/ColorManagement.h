@@ -2,9 +2,9 @@
 // OpenColorIO display/view transforms for the tone-map pass. The config is the file named by the
 // `OCIO` environment variable (what studio pipelines expect), else a built-in one made in code:
 // OCIO 2.1 has no Config::CreateFromBuiltinConfig (2.2), but its built-in transform registry
-// has the ACES output transforms and the display encodings (shared/PLATFORM.md).
+// has the ACES output transforms and the display encodings (docs/architecture.md, "OpenColorIO 2.1").
 //
-// Facet's radiance is linear Rec.709 (DESIGN.md); every processor here starts from it. CPU
+// Facet's radiance is linear Rec.709 (docs/architecture.md); every processor here starts from it. CPU
 // processors are the twins of render/OcioDisplayTransform (the same OCIO processor, run on the
 // GPU). No GL here. OCIO throws; nothing here does: failures return empty values and a message
 // "ColorManagement::<function>: ...".

@@ -12,7 +12,7 @@
 //     W(n.v) = 1/pi integral of (1 - Fc) (n.l) dl,   albedo of the base = c (1 - F0) W(n.v)
 // W does not depend on roughness (the base is Lambertian); the table stores it in every row so
 // that one RGBA lookup gives all four (docs/energy.md has its values).
-// Axes (shared/DESIGN.md): x = n.v, y = perceptual roughness. Texel i of size holds the value at
+// Axes (docs/architecture.md): x = n.v, y = perceptual roughness. Texel i of size holds the value at
 // i / (size - 1), so the table's first and last texel centres sit exactly on 0 and 1 and a
 // lookup never extrapolates by clamping (grazing n.v is where the albedo changes fastest). A GL
 // lookup of the same value reads texture coordinate (value * (size - 1) + 0.5) / size with

@@ -1,6 +1,6 @@
 #pragma once
 // An HDR environment: an equirectangular radiance image plus rotation and intensity.
-// Conventions (shared/DESIGN.md): for a unit world direction d,
+// Conventions (docs/architecture.md): for a unit world direction d,
 //   u = atan2(d.z, d.x) / (2 pi) + 0.5,   v = asin(d.y) / pi + 0.5,   v = 1 is the image's top row.
 // Rotation turns the environment about +Y by rotationDegrees, right-handed: a positive angle turns
 // it counter-clockwise seen from above, so a feature the image shows at direction d appears in the
@@ -20,7 +20,7 @@
 
 namespace facet {
 
-// Direction <-> equirect mapping of DESIGN.md, in the environment's own (unrotated) frame.
+// Direction <-> equirect mapping of docs/architecture.md, in the environment's own (unrotated) frame.
 glm::dvec2 equirectUvFromDirection(const glm::dvec3& direction);
 glm::dvec3 directionFromEquirectUv(const glm::dvec2& uv);
 

@@ -5,7 +5,7 @@
 // ("Environment sampling tables") has the layout and the conventions.
 //
 // Row order is the distribution's, not the image's: row r covers v in [r/H, (r+1)/H), which is
-// image row H - 1 - r (v = 1 is the image's top row, shared/DESIGN.md). Columns are u, texel c
+// image row H - 1 - r (v = 1 is the image's top row, docs/architecture.md). Columns are u, texel c
 // covering [c/W, (c+1)/W).
 
 #include <glm/vec2.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 // Error of a rendered image against a ground truth over a mask of pixels: the reference view's
-// sphere (DESIGN.md; core/ReferenceView.h) for `facet bench` and the accuracy tests
+// sphere (docs/architecture.md; core/ReferenceView.h) for `facet bench` and the accuracy tests
 // (docs/accuracy.md), the visible object for the window's error view (ui/CompareRenderer.h), so
 // that every number in docs/ and on screen means the same thing.
 //

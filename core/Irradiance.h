@@ -14,7 +14,7 @@
 //
 // ---------------------------------------------------------------------------------------------
 // Solid angle of an equirect texel. Image row y (0 = top) of an H-row image covers
-// v in [1 - (y+1)/H, 1 - y/H] (shared/DESIGN.md: v = 1 is the top row), i.e. latitude
+// v in [1 - (y+1)/H, 1 - y/H] (docs/architecture.md: v = 1 is the top row), i.e. latitude
 // lat = (v - 1/2) pi in [lat0, lat1] = [pi (1/2 - (y+1)/H), pi (1/2 - y/H)], and 1/W of the full
 // turn in longitude. With dOmega = cos(lat) dlat dphi:
 //   Omega = (2 pi / W) * integral_{lat0}^{lat1} cos(lat) dlat = (2 pi / W) (sin lat1 - sin lat0)
@@ -44,7 +44,7 @@ namespace facet {
 double equirectTexelSolidAngle(int row, int width, int height);
 
 // Unit direction of the centre of texel (column, row) of a width x height equirect image, in the
-// image's own frame (shared/DESIGN.md mapping; u = (column + 1/2)/W, v = 1 - (row + 1/2)/H):
+// image's own frame (docs/architecture.md mapping; u = (column + 1/2)/W, v = 1 - (row + 1/2)/H):
 //   phi = 2 pi (u - 1/2), lat = pi (v - 1/2), d = (cos lat cos phi, sin lat, cos lat sin phi).
 glm::dvec3 equirectTexelDirection(int column, int row, int width, int height);
 

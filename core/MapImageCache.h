@@ -1,5 +1,5 @@
 #pragma once
-// Decode each map file once (shared/DESIGN.md: "a document owns an asset cache ... shared by
+// Decode each map file once (docs/architecture.md: "a document owns an asset cache ... shared by
 // slots, thumbnails and views"): every reader of a material map (core/ProjectAssets for
 // `facet render`, the window's SceneController, the Texture Maps dock's thumbnails) asks here.
 // A file already in memory, unchanged on disk (same modification time and size), is not decoded

@@ -139,7 +139,8 @@ std::array<MaterialMap, kMapSlotCount> Material::defaultMaps()
     std::array<MaterialMap, kMapSlotCount> maps;
     MaterialMap& baseColor = maps[std::size_t(MapSlot::BaseColor)];
     baseColor.factor = glm::dvec4(0.8, 0.8, 0.8, 1.0);
-    baseColor.colorSpace = ColorEncoding::SRGB; // colour textures are sRGB-encoded (DESIGN.md "Textures")
+    baseColor.colorSpace
+        = ColorEncoding::SRGB; // colour textures are sRGB-encoded (docs/architecture.md, "Textures")
     // Scalar maps default to the channels of an ORM / glTF metallicRoughness texture; a greyscale
     // texture has the same value in every channel, so the defaults suit it too.
     maps[std::size_t(MapSlot::Metallic)].factor = glm::dvec4(0.0);

@@ -1,15 +1,15 @@
 #pragma once
 // A triangle mesh as plain values: what the viewer draws and the importer and the primitive
-// builders produce. No GL here (DESIGN.md): render/ uploads a Mesh, it never reads files.
+// builders produce. No GL here (docs/architecture.md): render/ uploads a Mesh, it never reads files.
 //
 // Conventions (docs/meshes.md):
-// - World space as in DESIGN.md: right-handed, +Y up. Triangles wind counter-clockwise seen from
+// - World space as in docs/architecture.md: right-handed, +Y up. Triangles wind counter-clockwise seen from
 //   outside (the OpenGL default front face), so a closed mesh has a positive signed volume.
 // - UVs follow OpenGL: (0, 0) is the bottom-left of the image, v grows upward. (Assimp's glTF
 //   importer already flips glTF's top-left origin; the OBJ format is bottom-left.)
 // - Tangents follow glTF 2.0 (section 3.7.2.1, "Meshes"): tangent.xyz points along dP/du, and the
 //   bitangent, which points along dP/dv, is cross(normal, tangent.xyz) * tangent.w with w = +-1.
-//   Normal maps are OpenGL style (+Y green along the bitangent), as DESIGN.md says.
+//   Normal maps are OpenGL style (+Y green along the bitangent), as docs/architecture.md says.
 
 #include <cstddef>
 #include <cstdint>

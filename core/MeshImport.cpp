@@ -583,7 +583,8 @@ std::optional<Mesh> importMesh(
     std::vector<std::string> warnings;
     std::optional<Mesh> mesh;
     // Assimp reports failures by a null scene, but a bad_alloc on a hostile size field or an
-    // exception from a reader outside its guard must not cross the API either (STYLE.md, 6).
+    // exception from a reader outside its guard must not cross the API either (docs/architecture.md, "Bad
+    // input").
     try {
         mesh = importChecked(path, options, error, warnings);
     } catch (const std::exception& e) {

@@ -18,7 +18,7 @@
 namespace facet {
 
 // UV sphere of radius 1 at the origin. u runs around +Y, v from the south pole (0) to the north
-// pole (1): u = 0.5 - atan2(z, x) / (2 pi), v = asin(y) / pi + 0.5. That is DESIGN.md's
+// pole (1): u = 0.5 - atan2(z, x) / (2 pi), v = asin(y) / pi + 0.5. That is docs/architecture.md's
 // equirectangular mapping with u mirrored: the equirectangular image is seen from inside the
 // sphere, a material from outside, and with this u a texture reads the right way round (w = +1).
 // The u = 0/1 seam is on -X. The pole rows have one vertex per segment, at mid-segment u, so no

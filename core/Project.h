@@ -101,7 +101,7 @@ struct EnvironmentSettings {
     // library reference ("library:NAME/PATH", kept only when this computer lacks the library) or
     // "uniform:VALUE" / "uniform:R,G,B". Files store it with json::storedSpec.
     std::string source = "studio";
-    double rotationDegrees = 0.0; // about +Y (DESIGN.md)
+    double rotationDegrees = 0.0; // about +Y (docs/architecture.md)
     double intensity = 1.0; // linear radiance multiplier, >= 0 (the UI shows log2 as EV)
     IblQuality quality = IblQuality::Default;
     IblMethod method = IblMethod::SplitSum;

@@ -1,6 +1,6 @@
 #pragma once
 // What a project refers to, loaded: the environment, the mesh and the material's map images.
-// core loads, render uploads (shared/DESIGN.md): the viewport and the headless commands both
+// core loads, render uploads (docs/architecture.md): the viewport and the headless commands both
 // turn a Project into ProjectAssets here, then hand the assets to the renderer.
 
 #include <array>

@@ -1,5 +1,5 @@
 #pragma once
-// The reference view of shared/DESIGN.md, used by the headless renderer, the benchmarks and the
+// The reference view of docs/architecture.md, used by the headless renderer, the benchmarks and the
 // accuracy tests: a unit sphere at the origin, a pinhole camera at (0, 0, 3) looking at the
 // origin, +Y up, 45 degree vertical field of view, square image, one ray through each pixel
 // centre. Pixel (0, 0) is the top-left of the image.

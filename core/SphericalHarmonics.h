@@ -15,7 +15,7 @@
 // ---------------------------------------------------------------------------------------------
 // Basis and ordering (index i = l (l + 1) + m, Ramamoorthi & Hanrahan 2001, WITHOUT the
 // Condon-Shortley phase: every constant is positive). For a unit direction d = (x, y, z) in the
-// WORLD frame of shared/DESIGN.md (+Y up):
+// WORLD frame of docs/architecture.md (+Y up):
 //
 //   i  (l, m)   Y_lm(d)                        constant
 //   0  (0,  0)  K0                              K0 = 1/2 sqrt(1/pi)  = 0.282094791773878

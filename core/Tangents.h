@@ -1,7 +1,7 @@
 #pragma once
 // The tangent frame a normal map needs: per-vertex tangents generated from the UVs, and UVs
-// generated for meshes that have none (the CC0 sample meshes, PLATFORM.md), so every mesh can
-// show a tangent-space normal map. docs/meshes.md explains the choices.
+// generated for meshes that have none (the CC0 sample meshes, docs/architecture.md "Sample data (CC0)"), so
+// every mesh can show a tangent-space normal map. docs/meshes.md explains the choices.
 
 #include <array>
 #include <cstddef>
@@ -63,7 +63,7 @@ struct BoxFace {
     glm::vec3 tangent;
     glm::vec3 bitangent;
 };
-// +X, -X, +Y, -Y, +Z, -Z, cubemap order (DESIGN.md).
+// +X, -X, +Y, -Y, +Z, -Z, cubemap order (docs/architecture.md).
 const std::array<BoxFace, 6>& boxProjectionFaces();
 
 // Replaces the UVs of the triangles of `onlySubMeshes` (indices into mesh.subMeshes; empty:

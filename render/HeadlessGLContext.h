@@ -2,7 +2,8 @@
 // An OpenGL 4.1+ core context that needs no display server: EGL on a GPU device (NVIDIA's
 // EGL_EXT_platform_device) or Mesa's surfaceless platform, with no config and no surface.
 // GL functions (libepoxy) resolve for it once it is current. Qt cannot adopt such a context
-// (shared/PLATFORM.md), so the headless subcommands and the *GLTest executables draw with it.
+// (docs/architecture.md, "OpenGL without a display"), so the headless subcommands and the *GLTest executables
+// draw with it.
 
 #include "render/GLDebug.h"
 #include "render/GLInfo.h"

@@ -188,12 +188,12 @@ struct RenderScene {
     Camera camera;
     EnvironmentLighting environment;
     IblSampling sampling;
-    // The mesh is the unit sphere at the origin (model matrix identity) seen in DESIGN.md's
+    // The mesh is the unit sphere at the origin (model matrix identity) seen in docs/architecture.md's
     // reference view: shade each pixel at the exact hit of its ray, as core/GroundTruth does.
     // The sphere mesh's interpolated normals are off by up to ~1e-3 rad, which moves a
     // roughness-0.05 reflection by about its own width (2% relative RMSE against the truth).
     bool analyticSphere = false;
-    // DESIGN.md's reference view: one ray through each pixel centre, so a converging method's
+    // docs/architecture.md's reference view: one ray through each pixel centre, so a converging method's
     // draws are not jittered (the metric compares pixel centres with the ground truth's).
     bool pixelCentres = false;
     // This draw's sub-pixel offset in pixels, each in [-0.5, 0.5): the projection is translated

@@ -1,5 +1,5 @@
 #pragma once
-// Counters that make skipped work observable (DESIGN.md, "Skip what the scene does not need"):
+// Counters that make skipped work observable (docs/architecture.md, "Skipping work"):
 // rendering the same scene twice compiles no program and uploads nothing the second time, and a
 // roughness change only sets uniforms. Renderer keeps one RenderStats for the last frame and
 // one accumulated since creation.

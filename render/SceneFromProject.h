@@ -20,7 +20,7 @@ struct IblStats;
 class IblPrecompute;
 
 struct SceneOptions {
-    // DESIGN.md's reference view: the reference camera, one sample through each pixel centre
+    // docs/architecture.md's reference view: the reference camera, one sample through each pixel centre
     // (no MSAA), the environment behind the object. With the fis or reference method and the
     // "sphere" mesh, also the analytic sphere (RenderScene::analyticSphere): the split sum keeps the mesh
     // normals, so its goldens and measured errors stay those of the real-time path.

@@ -66,7 +66,7 @@ namespace {
 
 // Whether a slot's texture can change the result: at factor 0 metallic, roughness and emission
 // are 0 whatever the texture says, occlusion at strength 0 is 1, and a normal map at strength 0
-// is the geometric normal. Such a map is not sampled (DESIGN.md: a constant map samples no
+// is the geometric normal. Such a map is not sampled (docs/architecture.md: a constant map samples no
 // texture); the CPU twin gives the same values (core/MaterialInputs.h).
 bool textureMatters(const Material& material, MapSlot slot)
 {

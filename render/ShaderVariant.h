@@ -4,7 +4,7 @@
 // `#define DEBUG_VIEW <n>`. A variant key (flags + debug view) names one compiled program; the
 // cache compiles each key once and counts compiles so tests can see skipped work.
 //
-// What the flags remove (DESIGN.md, "Shader permutations"): without a Has*Map bit the input is
+// What the flags remove (docs/architecture.md, "Shader permutations"): without a Has*Map bit the input is
 // the constant factor and the shader declares no sampler for it; without HasNormalMap there is no
 // tangent frame and surface.vert reads no tangent attribute; without HasPunctualLights there is
 // no light loop.
@@ -28,23 +28,23 @@ class ShaderProgram;
 
 enum class SurfaceFeature : uint32_t {
     None = 0,
-    HasBaseColorMap = 1u << 0,          // HAS_BASE_COLOR_MAP
-    HasNormalMap = 1u << 1,             // HAS_NORMAL_MAP (tangent frame, aTangent)
-    HasMetallicMap = 1u << 2,           // HAS_METALLIC_MAP
-    HasRoughnessMap = 1u << 3,          // HAS_ROUGHNESS_MAP
-    HasOcclusionMap = 1u << 4,          // HAS_OCCLUSION_MAP
-    HasPunctualLights = 1u << 5,        // HAS_PUNCTUAL_LIGHTS (the light loop)
-    IrradianceSH = 1u << 6,             // IRRADIANCE_SH: 9 SH uniforms instead of the irradiance cubemap
-    MultiScatter = 1u << 7,             // MULTI_SCATTER: Turquin 2019 compensation
-    CompositionLearnOpenGL = 1u << 8,   // COMPOSITION_LEARNOPENGL (else glTF 2.0 Appendix B)
+    HasBaseColorMap = 1u << 0, // HAS_BASE_COLOR_MAP
+    HasNormalMap = 1u << 1, // HAS_NORMAL_MAP (tangent frame, aTangent)
+    HasMetallicMap = 1u << 2, // HAS_METALLIC_MAP
+    HasRoughnessMap = 1u << 3, // HAS_ROUGHNESS_MAP
+    HasOcclusionMap = 1u << 4, // HAS_OCCLUSION_MAP
+    HasPunctualLights = 1u << 5, // HAS_PUNCTUAL_LIGHTS (the light loop)
+    IrradianceSH = 1u << 6, // IRRADIANCE_SH: 9 SH uniforms instead of the irradiance cubemap
+    MultiScatter = 1u << 7, // MULTI_SCATTER: Turquin 2019 compensation
+    CompositionLearnOpenGL = 1u << 8, // COMPOSITION_LEARNOPENGL (else glTF 2.0 Appendix B)
     EnergyPreservingCoupling = 1u << 9, // COUPLING_ENERGY_PRESERVING (else fresnel_mix)
-    Beckmann = 1u << 10,                // DISTRIBUTION_BECKMANN (else GGX)
-    VisibilityUncorrelated = 1u << 11,  // VISIBILITY_UNCORRELATED (separable Smith-GGX)
-    VisibilitySchlick = 1u << 12,       // VISIBILITY_SCHLICK (Smith with Schlick-GGX G1)
-    FresnelDielectric = 1u << 13,       // FRESNEL_DIELECTRIC (exact dielectric Fresnel, lights only)
-    HasEmissiveMap = 1u << 14,          // HAS_EMISSIVE_MAP
-    AlphaMask = 1u << 15,               // ALPHA_MASK: discard below uAlphaCutoff (glTF alphaMode MASK)
-    AlphaBlend = 1u << 16,              // ALPHA_BLEND: premultiplied colour and alpha out (glTF BLEND)
+    Beckmann = 1u << 10, // DISTRIBUTION_BECKMANN (else GGX)
+    VisibilityUncorrelated = 1u << 11, // VISIBILITY_UNCORRELATED (separable Smith-GGX)
+    VisibilitySchlick = 1u << 12, // VISIBILITY_SCHLICK (Smith with Schlick-GGX G1)
+    FresnelDielectric = 1u << 13, // FRESNEL_DIELECTRIC (exact dielectric Fresnel, lights only)
+    HasEmissiveMap = 1u << 14, // HAS_EMISSIVE_MAP
+    AlphaMask = 1u << 15, // ALPHA_MASK: discard below uAlphaCutoff (glTF alphaMode MASK)
+    AlphaBlend = 1u << 16, // ALPHA_BLEND: premultiplied colour and alpha out (glTF BLEND)
     // One fetch for scalar maps that read the same texture (a packed occlusion-roughness-metallic
     // file; same file, colour space and UV transform): the later slot reuses the earlier one's
     // texel and declares no sampler (sharedTexelFeatures).
@@ -54,7 +54,7 @@ enum class SurfaceFeature : uint32_t {
     // IBL_REFERENCE: the environment by Monte Carlo (IblMethod::Reference, ibl_reference.glsl)
     // from the source equirect and its sampling tables, instead of the split sum's cubes.
     IblReference = 1u << 20,
-    // ANALYTIC_SPHERE_NORMAL: DESIGN.md's reference view of the unit sphere, shaded at the exact
+    // ANALYTIC_SPHERE_NORMAL: docs/architecture.md's reference view of the unit sphere, shaded at the exact
     // hit of the pixel's ray (n = hit, v = -ray) instead of the mesh's interpolated normal, as the
     // CPU ground truth does (RenderScene::analyticSphere).
     AnalyticSphereNormal = 1u << 21,

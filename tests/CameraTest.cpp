@@ -101,7 +101,7 @@ void CameraTest::framedSphereFitsTheSmallerDimension()
 
 void CameraTest::wideReferenceFramingIsTheReferenceView()
 {
-    // The reference view (DESIGN.md) frames the unit sphere exactly as framing does in a square
+    // The reference view (docs/architecture.md) frames the unit sphere exactly as framing does in a square
     // or wide image: F there gives the reference distance back.
     const Camera reference = Camera::referenceView();
     for (const double aspect : {1.0, 1.5, 16.0 / 9.0})

@@ -1,4 +1,4 @@
-// core/Environment: the equirect convention of DESIGN.md, rotation, sampling, hashing, the
+// core/Environment: the equirect convention of docs/architecture.md, rotation, sampling, hashing, the
 // uniform and built-in environments, loading the CC0 HDRIs and parsing specs.
 
 #include <algorithm>

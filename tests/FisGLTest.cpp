@@ -1,5 +1,5 @@
 // IblMethod::Fis (ibl_fis.glsl): filtered importance sampling of each pixel's own lobe, in
-// DESIGN.md's reference view, through the same FrameRenderer path as `facet render --ibl fis`.
+// docs/architecture.md's reference view, through the same FrameRenderer path as `facet render --ibl fis`.
 // It is a biased estimator (each sample reads a mip level of its footprint), so it is held to
 // three things rather than to noise bounds: it converges toward the CPU ground truth as its
 // samples grow, it stays within measured bounds of the truth at its default count for each BRDF
@@ -155,7 +155,7 @@ private Q_SLOTS:
         for (std::size_t i = 0; i < std::size(kRows); ++i)
             QTest::newRow(kRows[i].row.name) << int(i);
     }
-    // At its default samples, per composition, within the row's bound of the truth (DESIGN.md's
+    // At its default samples, per composition, within the row's bound of the truth (docs/architecture.md's
     // metric); a lost term (a lobe, the Fresnel, the compensation) is far outside it.
     void agreesWithTheGroundTruth()
     {

@@ -1,4 +1,4 @@
-// The real-time renderer against the ground truth (core/GroundTruth.h) on DESIGN.md's reference
+// The real-time renderer against the ground truth (core/GroundTruth.h) on docs/architecture.md's reference
 // view: the default IBL preset, metal and dielectric spheres at several roughness values under
 // three CC0 HDRIs. Each case has its own bound on the relative RMSE over interior sphere pixels,
 // sqrt(sum |gpu - truth|^2 / sum |truth|^2): the measured value on Mesa llvmpipe plus a margin,

@@ -1,6 +1,6 @@
 // The white furnace of every BRDF composition through the real GPU path: `uniform:1.0`, a white
-// (or gold-like) material, DESIGN.md's reference view, drawn as `facet render --reference-view` draws it
-// (IblPrecompute with the default preset, its DFG table of the material's visibility term,
+// (or gold-like) material, docs/architecture.md's reference view, drawn as `facet render --reference-view`
+// draws it (IblPrecompute with the default preset, its DFG table of the material's visibility term,
 // Renderer), against the CPU truth at the centre pixel, a pixel near the silhouette and over the
 // interior (relative RMSE, core/ImageMetrics).
 //

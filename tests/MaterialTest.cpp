@@ -89,7 +89,7 @@ private Q_SLOTS:
         const Material m;
         std::string problem;
         QVERIFY2(m.validate(&problem), problem.c_str());
-        // DESIGN.md "Textures": base colour sRGB, data maps linear.
+        // docs/architecture.md, "Textures": base colour sRGB, data maps linear.
         QCOMPARE(m.map(MapSlot::BaseColor).colorSpace, ColorEncoding::SRGB);
         for (MapSlot slot : {MapSlot::Normal, MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion})
             QCOMPARE(m.map(slot).colorSpace, ColorEncoding::Linear);

@@ -211,7 +211,7 @@ private Q_SLOTS:
         QCOMPARE(p.material().roughness(), 0.35);
         QVERIFY(p.material().baseColorFactor().x > p.material().baseColorFactor().z);
 
-        // DESIGN.md's reference view.
+        // docs/architecture.md's reference view.
         const Camera reference = Camera::referenceView();
         QCOMPARE(reference.position, glm::dvec3(0.0, 0.0, 3.0));
         QCOMPARE(reference.target, glm::dvec3(0.0));

@@ -1,7 +1,7 @@
 // IblMethod::Reference on the GPU (ibl_reference.glsl, FrameRenderer::renderConverged) against the
 // CPU ground truth (core/GroundTruth, `facet render --spp`): the same rendering equation, so the
 // two must agree within their noise, for every BRDF composition, under a rotated environment and
-// a CC0 map, with lights, in a furnace, and under extreme radiance. DESIGN.md's reference view,
+// a CC0 map, with lights, in a furnace, and under extreme radiance. docs/architecture.md's reference view,
 // relative RMSE over the interior sphere pixels (core/ImageMetrics).
 //
 // The bound of an agreement row is statistical: rmse(GPU, CPU) < 3 sqrt(nG^2 + nC^2) + 2e-3, where

@@ -290,7 +290,7 @@ void RendererGLTest::whiteFurnaceMetal()
         double worst = 0.0;
         for (const SpherePixel& p : pixels)
             worst = std::max(worst, double(glm::length(glm::vec3(image.at(p.x, p.y)) - glm::vec3(1.0f))));
-        // 1%: the furnace bound of DESIGN.md (measured: float rounding only, ~1e-6).
+        // 1%: the furnace bound of docs/architecture.md (measured: float rounding only, ~1e-6).
         QVERIFY2(worst < 0.01,
             ("roughness " + std::to_string(roughness) + ": worst " + std::to_string(worst)).c_str());
     }

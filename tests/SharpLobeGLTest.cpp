@@ -1,6 +1,6 @@
 // The split sum's sharp lobes (IblSampling::sharpLobeSamples, environment_lighting.glsl): below
 // the prefiltered map's level 1 each pixel integrates its own lobe by a few filtered importance
-// samples of the environment cube instead of reading the resampled level 0. Held, in DESIGN.md's
+// samples of the environment cube instead of reading the resampled level 0. Held, in docs/architecture.md's
 // reference view through `facet render --reference-view`'s FrameRenderer path, to:
 // - the CPU ground truth, per CC0 map and material at roughness 0.05 (the lookup alone: 7.75%
 //   mean relative RMSE over the five maps in `facet bench`) and in the blend region (0.08);

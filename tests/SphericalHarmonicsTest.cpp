@@ -64,7 +64,7 @@ std::vector<glm::dvec3> accuracyNormals()
 }
 
 // An equirect environment whose texels hold radiance(direction at the texel centre). The
-// direction is computed here from shared/DESIGN.md's mapping, independently of core's helpers:
+// direction is computed here from docs/architecture.md's mapping, independently of core's helpers:
 // row y has v = 1 - (y + 1/2)/H, lat = pi (v - 1/2); column x has u = (x + 1/2)/W,
 // phi = 2 pi (u - 1/2); d = (cos lat cos phi, sin lat, cos lat sin phi).
 Environment synthetic(int width, int height, const std::function<glm::dvec3(const glm::dvec3&)>& radiance)

@@ -1,6 +1,6 @@
 #pragma once
 // What an edit of the Document changed, so that observers redo only what depends on it
-// (DESIGN.md, "Skip what the scene does not need"; docs/app.md, "Change events"). After Tiled's
+// (docs/architecture.md, "Skipping work"; docs/app.md, "Change events"). After Tiled's
 // change events (src/tiled/changeevents.h): an event names the objects that changed and a mask of
 // their properties, and a mask left at "all" means "assume everything changed".
 //

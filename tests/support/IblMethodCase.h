@@ -1,6 +1,6 @@
 #pragma once
 // One case of the sampled IBL methods' GL tests (ReferenceGLTest, FisGLTest): a material of one
-// BRDF composition on DESIGN.md's reference sphere under an environment, as the project that
+// BRDF composition on docs/architecture.md's reference sphere under an environment, as the project that
 // both the GPU method and the CPU ground truth render.
 
 #include <cstdint>

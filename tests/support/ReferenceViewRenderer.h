@@ -1,5 +1,5 @@
 #pragma once
-// For GL tests that render DESIGN.md's reference view of a project on the GPU, as `facet render
+// For GL tests that render docs/architecture.md's reference view of a project on the GPU, as `facet render
 // --reference-view` does, through the same render/FrameRenderer: one surfaceless EGL context and
 // one FrameRenderer with its memory cache only (each environment is prepared once per test
 // executable, never read from or written to the user's disk cache), torn down in the right order.
