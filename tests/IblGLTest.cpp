@@ -661,9 +661,11 @@ void IblGLTest::prefilterAgainstCpuHdri()
         qInfo("studio.exr prefilter level %zu (roughness %.2f): max relative error %.2f%%", level,
             roughnessFromLod(int(level), settings.prefilterMipLevels), 100 * worst[level]);
         // High contrast (small lights thousands of times the background): the filtered lookups
-        // spread the lights over their footprints, so the GPU is far off next to a light; the
-        // bound (measured values in docs/ibl.md, plus margin) catches regressions only.
-        QVERIFY2(worst[level] < 1.6, std::to_string(worst[level]).c_str());
+        // spread the lights over their footprints, so the GPU is far off next to a light. Each
+        // level's bound is its measured worst texel on llvmpipe (Mesa 22.3: 78.0%, 80.1%, 84.0%,
+        // 89.1%) plus an eighth of it for another driver's filtering; it was a flat 160% before.
+        const double bound[] = {0.0, 0.88, 0.90, 0.95, 1.00};
+        QVERIFY2(worst[level] < bound[std::min<std::size_t>(level, 4)], std::to_string(worst[level]).c_str());
     }
 }
 

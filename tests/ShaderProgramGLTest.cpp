@@ -193,8 +193,15 @@ void ShaderProgramGLTest::uniformsReachTheShader()
     program->setInt("uMode", 1);
     program->setVec4("uColor", 0.5f, -2.0f, 1000.0f, 1.0f);
     program->setFloat("uScale", 2.0f);
-    QVERIFY(program->uniformLocation("uColor") >= 0);
-    QCOMPARE(program->uniformLocation("uColor"), program->uniformLocation("uColor")); // cached
+    // The location is GL's, also when it comes from the cache (the second lookup), and a name the
+    // program does not have is -1 (setting it is then a no-op, as GL's -1 is).
+    const int location = program->uniformLocation("uColor");
+    QVERIFY(location >= 0);
+    QCOMPARE(location, glGetUniformLocation(program->id(), "uColor"));
+    QCOMPARE(program->uniformLocation("uColor"), location);
+    QCOMPARE(program->uniformLocation("uScale"), glGetUniformLocation(program->id(), "uScale"));
+    QVERIFY(program->uniformLocation("uScale") != location);
+    QCOMPARE(program->uniformLocation("uNoSuchUniform"), -1);
     QCOMPARE(renderOnePixel(*program), glm::vec4(1.0f, -4.0f, 2000.0f, 2.0f));
     program->setFloat("uScale", 0.5f);
     QCOMPARE(renderOnePixel(*program), glm::vec4(0.25f, -1.0f, 500.0f, 0.5f));

@@ -28,7 +28,10 @@ static QString existing(const QString& path)
 
 QString hdriPath(const QString& name)
 {
-    return existing(assetsDir() + QStringLiteral("/hdri/") + name + QStringLiteral(".exr"));
+    const QString fetched = existing(assetsDir() + QStringLiteral("/hdri/") + name + QStringLiteral(".exr"));
+    if (!fetched.isEmpty())
+        return fetched;
+    return existing(sourceDir() + QStringLiteral("/tests/data/hdri/") + name + QStringLiteral(".exr"));
 }
 QString modelPath(const QString& name)
 {
