@@ -400,6 +400,55 @@ std::optional<PrimitiveData> decodeDraco(const tinygltf::Model& model, const tin
     return data;
 }
 
+// A primitive's morph targets blended at the weights the asset gives when nothing animates them
+// (glTF 2.0 section 3.7.2.2): the node's "weights", else the mesh's; the sum over targets of
+// weight x displacement, per vertex, for POSITION, NORMAL and TANGENT (xyz). Empty vectors where
+// no target with a non-zero weight displaces that attribute. Issue 29: the weights were not
+// applied, so a mesh whose rest shape is a blend (AnimatedMorphCube) showed its base shape.
+struct MorphDisplacement {
+    std::vector<glm::vec3> position, normal, tangent;
+};
+
+std::optional<MorphDisplacement> morphDisplacement(const tinygltf::Model& model, const MeshInstance& instance,
+    const tinygltf::Primitive& primitive, std::size_t vertexCount, const std::string& where,
+    std::string* problem)
+{
+    MorphDisplacement out;
+    const tinygltf::Node& node = model.nodes[std::size_t(instance.node)];
+    const std::vector<double>& weights
+        = !node.weights.empty() ? node.weights : model.meshes[std::size_t(instance.mesh)].weights;
+    const std::size_t targets = std::min(weights.size(), primitive.targets.size());
+    for (std::size_t k = 0; k < targets; ++k) {
+        const auto w = float(weights[k]);
+        if (w == 0.0f || !std::isfinite(w))
+            continue;
+        for (const auto& [name, accessor] : primitive.targets[k]) {
+            std::vector<glm::vec3>* sum = name == "POSITION" ? &out.position
+                : name == "NORMAL"                           ? &out.normal
+                : name == "TANGENT"                          ? &out.tangent
+                                                             : nullptr;
+            if (!sum)
+                continue; // TEXCOORD_n, COLOR_n displacements: not read (docs/gltf.md)
+            const std::string what = where + " morph target " + std::to_string(k) + " " + name;
+            const std::optional<AccessorView> view = accessorView(model, accessor, 3, what, problem);
+            if (!view)
+                return std::nullopt;
+            if (view->count != vertexCount) {
+                gltfsupport::fail(what + ": " + std::to_string(view->count) + " elements, but POSITION has "
+                        + std::to_string(vertexCount),
+                    problem);
+                return std::nullopt;
+            }
+            if (sum->empty())
+                sum->assign(vertexCount, glm::vec3(0.0f));
+            for (std::size_t i = 0; i < vertexCount; ++i)
+                (*sum)[i]
+                    += w * glm::vec3(component(*view, i, 0), component(*view, i, 1), component(*view, i, 2));
+        }
+    }
+    return out;
+}
+
 // A primitive instance's sub-mesh name: its mesh's name (else its node's), "#i" when the mesh
 // has several primitives.
 std::string partName(const tinygltf::Model& model, const MeshInstance& instance, std::size_t primitiveIndex)
@@ -453,6 +502,10 @@ std::optional<PartFacts> appendPrimitive(const tinygltf::Model& model, const Mes
     if (!data)
         return std::nullopt;
     const std::size_t vertexCount = data->vertexCount;
+    const std::optional<MorphDisplacement> morph
+        = morphDisplacement(model, instance, primitive, vertexCount, where, problem);
+    if (!morph)
+        return std::nullopt;
 
     // Triangle corners as vertex indices of this primitive.
     const std::vector<std::uint32_t>& list = data->indices;
@@ -495,13 +548,20 @@ std::optional<PartFacts> appendPrimitive(const tinygltf::Model& model, const Mes
 
     const auto vertexAt = [&](std::uint32_t i) {
         Vertex v;
-        const glm::vec3 p(data->position.at(i, 0), data->position.at(i, 1), data->position.at(i, 2));
+        glm::vec3 p(data->position.at(i, 0), data->position.at(i, 1), data->position.at(i, 2));
+        if (!morph->position.empty())
+            p += morph->position[i];
         v.position = glm::vec3(instance.transform * glm::vec4(p, 1.0f));
-        if (data->normal.present())
-            v.normal = normalizedOrZero(
-                normalMatrix * glm::vec3(data->normal.at(i, 0), data->normal.at(i, 1), data->normal.at(i, 2)));
+        if (data->normal.present()) {
+            glm::vec3 n(data->normal.at(i, 0), data->normal.at(i, 1), data->normal.at(i, 2));
+            if (!morph->normal.empty())
+                n += morph->normal[i];
+            v.normal = normalizedOrZero(normalMatrix * n);
+        }
         if (data->tangent.present()) {
-            const glm::vec3 t(data->tangent.at(i, 0), data->tangent.at(i, 1), data->tangent.at(i, 2));
+            glm::vec3 t(data->tangent.at(i, 0), data->tangent.at(i, 1), data->tangent.at(i, 2));
+            if (!morph->tangent.empty())
+                t += morph->tangent[i];
             const float w = data->tangent.at(i, 3) < 0.0f ? -1.0f : 1.0f;
             // A mirroring transform flips cross(n, t) against the transformed bitangent.
             v.tangent = glm::vec4(linear * t, mirrored ? -w : w);

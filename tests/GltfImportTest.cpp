@@ -104,6 +104,8 @@ private Q_SLOTS:
     void brokenFilesGiveClearMessages_data();
     void brokenFilesGiveClearMessages();
     void deepNodeGraphDoesNotOverflow();
+    void morphTargetsAtTheirDefaultWeights_data();
+    void morphTargetsAtTheirDefaultWeights();
     void deeplyNestedJsonIsRefused_data();
     void deeplyNestedJsonIsRefused();
     void meshImportReadsGltfThroughThisReader();
@@ -641,6 +643,76 @@ void GltfImportTest::deeplyNestedJsonIsRefused()
         QVERIFY2(text.contains(file) && text.contains(QStringLiteral("nest deeper than 256 levels"))
                 && text.contains(QStringLiteral("line 1, column ")),
             message.c_str());
+    }
+}
+
+void GltfImportTest::morphTargetsAtTheirDefaultWeights_data()
+{
+    QTest::addColumn<QVector<double>>("meshWeights");
+    QTest::addColumn<QVector<double>>("nodeWeights");
+    QTest::addColumn<double>("z"); // every vertex's z afterwards
+    QTest::addColumn<double>("normalX"); // every normal's x afterwards (before normalising: 0 + w1)
+    // Target 0 moves every vertex by +1 in z; target 1 tilts the normals by +1 in x.
+    QTest::newRow("no weights: the base shape") << QVector<double> {} << QVector<double> {} << 0.0 << 0.0;
+    QTest::newRow("mesh weights") << QVector<double> {0.5, 0.0} << QVector<double> {} << 0.5 << 0.0;
+    QTest::newRow("both targets") << QVector<double> {0.25, 1.0} << QVector<double> {} << 0.25 << 1.0;
+    QTest::newRow("node weights win")
+        << QVector<double> {0.5, 0.0} << QVector<double> {1.0, 0.0} << 1.0 << 0.0;
+    QTest::newRow("negative weight") << QVector<double> {-2.0, 0.0} << QVector<double> {} << -2.0 << 0.0;
+}
+
+// Issue 29: a mesh's default morph-target weights were not applied (AnimatedMorphCube showed
+// its base shape). glTF 2.0 section 3.7.2.2: position/normal = base + sum of weight x target, with
+// the node's weights, else the mesh's.
+void GltfImportTest::morphTargetsAtTheirDefaultWeights()
+{
+    QFETCH(QVector<double>, meshWeights);
+    QFETCH(QVector<double>, nodeWeights);
+    QFETCH(double, z);
+    QFETCH(double, normalX);
+    GltfWriter w;
+    const int mesh = w.addQuad(-1);
+    std::vector<float> up(4 * 3, 0.0f);
+    for (int i = 0; i < 4; ++i)
+        up[std::size_t(i) * 3 + 2] = 1.0f;
+    const int liftUp = w.addFloatAccessor(up, 3, true);
+    std::vector<float> tilt(4 * 3, 0.0f);
+    for (int i = 0; i < 4; ++i)
+        tilt[std::size_t(i) * 3] = 1.0f;
+    const int tiltX = w.addFloatAccessor(tilt, 3);
+    QJsonObject m = w.json()[QLatin1String("meshes")].toArray()[mesh].toObject();
+    QJsonObject p = m[QLatin1String("primitives")].toArray()[0].toObject();
+    p[QLatin1String("targets")] = QJsonArray {
+        QJsonObject {{QStringLiteral("POSITION"), liftUp}}, QJsonObject {{QStringLiteral("NORMAL"), tiltX}}};
+    m[QLatin1String("primitives")] = QJsonArray {p};
+    QJsonArray weights;
+    for (double value : meshWeights)
+        weights.append(value);
+    if (!weights.isEmpty())
+        m[QLatin1String("weights")] = weights;
+    w.json()[QLatin1String("meshes")] = QJsonArray {m};
+    const int node = w.addNode(mesh);
+    if (!nodeWeights.isEmpty()) {
+        QJsonArray nodes = w.json()[QLatin1String("nodes")].toArray();
+        QJsonObject n = nodes[node].toObject();
+        QJsonArray values;
+        for (double value : nodeWeights)
+            values.append(value);
+        n[QLatin1String("weights")] = values;
+        nodes[node] = n;
+        w.json()[QLatin1String("nodes")] = nodes;
+    }
+    const QString file = path(
+        QStringLiteral("morph-%1.gltf").arg(QLatin1String(QTest::currentDataTag())).replace(u' ', u'-'));
+    QVERIFY(w.write(file, Storage::DataUri));
+    std::string error;
+    const auto asset = importGltf(file.toStdString(), &error);
+    QVERIFY2(asset, error.c_str());
+    QCOMPARE(asset->mesh.vertices.size(), std::size_t(4));
+    const glm::vec3 expectedNormal = glm::normalize(glm::vec3(float(normalX), 0.0f, 1.0f));
+    for (const Vertex& v : asset->mesh.vertices) {
+        QVERIFY2(near(v.position.z, z, 1e-6), qPrintable(QString::number(v.position.z)));
+        QVERIFY2(glm::length(v.normal - expectedNormal) < 1e-6f, qPrintable(QString::number(v.normal.x)));
     }
 }
 
