@@ -2,6 +2,7 @@
 
 #include "CommandInputs.h"
 #include "CommandOptions.h"
+#include "SceneFlags.h"
 #include "render/FrameRenderer.h"
 
 #include <cmath>
@@ -87,6 +88,7 @@ struct Options {
     QCommandLineOption output {{QStringLiteral("o"), QStringLiteral("output")},
         QStringLiteral("Output image: .exr (linear radiance) or .png (display-referred)."),
         QStringLiteral("file")};
+    SceneFlags scene;
 
     Options()
     {
@@ -98,6 +100,7 @@ struct Options {
             {&help, &env, &material, &baseColor, &metallic, &roughness, &brdf, &multiScatter, &mesh, &view,
                 &size, &referenceView, &spp, &quality, &ibl, &iblSamples, &stats, &output})
             parser.addOption(*option);
+        scene.addTo(parser);
         parser.addPositionalArgument(QStringLiteral("input"),
             QStringLiteral("A project file (JSON) or a glTF asset (.gltf, .glb) with its materials."),
             QStringLiteral("[PROJECT.json|ASSET.glb|ASSET.gltf]"));
@@ -278,6 +281,9 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
         request.samplesPerPixel = spp;
     }
     request.printStats = o.parser.isSet(o.stats);
+    if (!o.scene.apply(o.parser, project, {}, error))
+        return std::nullopt;
+    request.saveProjectPath = o.scene.saveProjectPath(o.parser).toStdString();
 
     std::string problem;
     if (!project.validate(&problem)) {
@@ -453,6 +459,13 @@ int runGpu(const RenderRequest& request)
 
 int RenderCommand::run(const RenderRequest& request)
 {
+    if (!request.saveProjectPath.empty()) {
+        std::string error;
+        if (!request.project.save(request.saveProjectPath, &error)) {
+            std::fprintf(stderr, "facet render: --save-project: %s\n", error.c_str());
+            return kExitFailure;
+        }
+    }
     if (request.samplesPerPixel > 0)
         return runGroundTruth(request);
     return runGpu(request);

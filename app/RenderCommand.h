@@ -4,7 +4,9 @@
 //   facet render [PROJECT.json] [--env PATH|NAME|uniform:VALUE] [--material PRESET |
 //       --base-color r,g,b --metallic m --roughness r] [--brdf gltf|learnopengl]
 //       [--multiscatter on|off] [--mesh NAME|PATH] [--view NAME] [--size WxH] [--reference-view]
-//       [--spp N] [--quality PRESET] [--stats] -o OUT.(exr|png)
+//       [--spp N] [--quality PRESET] [--stats] [the scene flags of app/SceneFlags.h: --camera-position,
+//       --camera-target, --fov, --exposure, --tone-mapper, --env-rotation, --env-intensity,
+//       --background, --set PATH=VALUE, --save-project FILE] -o OUT.(exr|png)
 //
 // EXR output is linear scene radiance (no exposure, no tone mapping); PNG is display-referred
 // through the project's view transform. With --spp N the image comes from core's ground-truth
@@ -29,6 +31,7 @@ struct RenderRequest {
     bool referenceView = false;
     int samplesPerPixel = 0;  // > 0: render with the ground-truth integrator
     bool printStats = false;
+    std::string saveProjectPath; // --save-project: written before rendering
 };
 
 class RenderCommand {

@@ -2,6 +2,7 @@
 
 #include "CommandInputs.h"
 #include "CommandOptions.h"
+#include "SceneFlags.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
@@ -74,6 +75,7 @@ struct Options {
         QStringLiteral("Output image: .png (display-referred, labelled) or .exr (linear radiance, layout in the "
                        "header)."),
         QStringLiteral("file")};
+    SceneFlags scene;
 
     Options()
     {
@@ -84,6 +86,7 @@ struct Options {
         for (const QCommandLineOption* option : {&help, &materials, &envs, &wedge, &wedge2, &mesh, &cell, &labels,
                  &quality, &ibl, &iblSamples, &referenceView, &stats, &output})
             parser.addOption(*option);
+        scene.addTo(parser);
         parser.addPositionalArgument(QStringLiteral("input"),
             QStringLiteral("A project file (JSON) or a glTF asset (.gltf, .glb); default: the built-in project."),
             QStringLiteral("[PROJECT.json|ASSET.glb|ASSET.gltf]"));
@@ -279,6 +282,9 @@ std::optional<SheetRequest> SheetCommand::parse(const QStringList& arguments, QS
             return std::nullopt;
         }
     }
+    if (!o.scene.apply(o.parser, request.project, {}, error))
+        return std::nullopt;
+    request.saveProjectPath = o.scene.saveProjectPath(o.parser).toStdString();
     const SheetGrid grid = sheetGrid(request);
     if (grid.rows.size() * grid.columns.size() > std::size_t(kMaxCells)) {
         *error = QStringLiteral("%1 x %2 cells: at most %3 in one sheet")
@@ -426,6 +432,11 @@ int SheetCommand::run(const SheetRequest& request)
         std::fprintf(stderr, "facet sheet: %s\n", message.c_str());
         return kExitFailure;
     };
+    if (!request.saveProjectPath.empty()) {
+        std::string error;
+        if (!request.project.save(request.saveProjectPath, &error))
+            return fail("--save-project: " + error);
+    }
 
     // Every cell's assets before any rendering: a missing environment, mesh or map is named and
     // nothing is rendered or written. Environments and the mesh load once (AssetCache); maps once

@@ -44,6 +44,7 @@ struct SheetRequest {
     bool labels = true;
     bool referenceView = false;
     bool printStats = false;
+    std::string saveProjectPath; // --save-project (app/SceneFlags.h): written before rendering
 };
 
 // The grid a request describes: per row and per column, a label and what it changes.

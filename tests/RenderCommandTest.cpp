@@ -488,7 +488,7 @@ private Q_SLOTS:
                                              << 1 << QStringLiteral("/no/such/env.exr");
         QTest::newRow("uniform garbage") << QStringList {QStringLiteral("render"), QStringLiteral("--env"),
             QStringLiteral("uniform:-1"), QStringLiteral("--spp"), QStringLiteral("4"), QStringLiteral("-o"),
-            out} << 1 << QStringLiteral("uniform:-1");
+            out} << 2 << QStringLiteral("environment.source: uniform:-1"); // a bad flag value: a usage error
         QTest::newRow("unknown debug view")
             << QStringList {QStringLiteral("render"), QStringLiteral("--view"), QStringLiteral("bogus"),
                    QStringLiteral("-o"), out}
