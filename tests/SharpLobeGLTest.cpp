@@ -42,22 +42,24 @@ struct Row {
     double gain; // with / without must be at most this (1: no worse)
 };
 
-// Bounds: 1.3x the error measured on llvmpipe at 32^2 (printed by each row: 0.58-13.5%; the lookup
+// Bounds: 1.3x the error measured on llvmpipe at 32^2 (printed by each row: 0.59-12.2%; the lookup
 // alone 0.70-21.3%), room for another driver's arithmetic and the truth's own noise. Gains: the
-// measured ratio (0.31-0.83) plus 0.1, at most 0.95.
+// measured ratio (0.27-0.84) plus 0.1, at most 0.95. Measured with the visible normals sampled by
+// spherical caps (issue 29's pinch): against Heitz's sampling six rows gained and five lost, the
+// mean over the rows the same (3.76% against 3.78%).
 const Row kRows[] = {
-    {"studio metal 0.05", "studio", true, 0.05, 0.0239, 0.41},
-    {"studio dielectric 0.05", "studio", false, 0.05, 0.0277, 0.92},
-    {"city metal 0.05", "city", true, 0.05, 0.0255, 0.67},
-    {"city dielectric 0.05", "city", false, 0.05, 0.0095, 0.86},
-    {"sunset metal 0.05", "sunset", true, 0.05, 0.0231, 0.55},
-    {"sunset dielectric 0.05", "sunset", false, 0.05, 0.0075, 0.93},
-    {"night metal 0.05", "night", true, 0.05, 0.0927, 0.68},
-    {"night dielectric 0.05", "night", false, 0.05, 0.0289, 0.58},
-    {"forest metal 0.05", "forest", true, 0.05, 0.1759, 0.74},
-    {"forest dielectric 0.05", "forest", false, 0.05, 0.0919, 0.93},
-    {"studio metal 0.08 (blend)", "studio", true, 0.08, 0.0551, 0.88},
-    {"sunset metal 0.08 (blend)", "sunset", true, 0.08, 0.0277, 0.81},
+    {"studio metal 0.05", "studio", true, 0.05, 0.0211, 0.37},
+    {"studio dielectric 0.05", "studio", false, 0.05, 0.0274, 0.92},
+    {"city metal 0.05", "city", true, 0.05, 0.0317, 0.82},
+    {"city dielectric 0.05", "city", false, 0.05, 0.0103, 0.91},
+    {"sunset metal 0.05", "sunset", true, 0.05, 0.0218, 0.53},
+    {"sunset dielectric 0.05", "sunset", false, 0.05, 0.0077, 0.94},
+    {"night metal 0.05", "night", true, 0.05, 0.1178, 0.83},
+    {"night dielectric 0.05", "night", false, 0.05, 0.0363, 0.71},
+    {"forest metal 0.05", "forest", true, 0.05, 0.1586, 0.67},
+    {"forest dielectric 0.05", "forest", false, 0.05, 0.0837, 0.86},
+    {"studio metal 0.08 (blend)", "studio", true, 0.08, 0.0417, 0.69},
+    {"sunset metal 0.08 (blend)", "sunset", true, 0.08, 0.0290, 0.85},
 };
 
 test::IblMethodCase caseOf(const Row& row)
