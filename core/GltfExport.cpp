@@ -361,7 +361,7 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
     }
 
     // Geometry: one view per attribute, the indices in one view, a primitive per sub-mesh.
-    std::vector<float> positions, normals, uvs, tangents;
+    std::vector<float> positions, normals, uvs, tangents, colors;
     glm::vec3 lo(INFINITY), hi(-INFINITY);
     for (const Vertex& v : mesh.vertices) {
         positions.insert(positions.end(), {v.position.x, v.position.y, v.position.z});
@@ -374,6 +374,10 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
         if (mesh.hasTangents)
             tangents.insert(
                 tangents.end(), {v.tangent.x, v.tangent.y, v.tangent.z, v.tangent.w < 0.0f ? -1.0f : 1.0f});
+        if (mesh.hasVertexColors) {
+            const glm::vec4 c = vertexColor(v);
+            colors.insert(colors.end(), {c.r, c.g, c.b, c.a});
+        }
     }
     const qint64 count = qint64(mesh.vertices.size());
     const auto attribute = [&](const std::vector<float>& values, const char* type, bool withBounds) {
@@ -394,6 +398,8 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
         attributes.insert(QStringLiteral("TEXCOORD_0"), attribute(uvs, "VEC2", false));
     if (mesh.hasTangents)
         attributes.insert(QStringLiteral("TANGENT"), attribute(tangents, "VEC4", false));
+    if (mesh.hasVertexColors) // glTF COLOR_0, as read (core/Mesh.h Vertex::color)
+        attributes.insert(QStringLiteral("COLOR_0"), attribute(colors, "VEC4", false));
     const int indexView = buffer.addView(
         mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t), kElementArrayBuffer, bufferViews);
     std::vector<SubMesh> parts = mesh.subMeshes;

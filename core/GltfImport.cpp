@@ -165,7 +165,7 @@ struct Attribute {
 // A primitive's vertex attributes and its index list (0, 1, 2, ... when it has no indices).
 struct PrimitiveData {
     std::size_t vertexCount = 0;
-    Attribute position, normal, tangent, uv;
+    Attribute position, normal, tangent, uv, color; // color: COLOR_0, VEC3 or VEC4
     std::vector<std::uint32_t> indices;
 };
 
@@ -278,8 +278,14 @@ std::optional<PrimitiveData> readAccessors(const tinygltf::Model& model, const t
                 problem);
         return true;
     };
+    // COLOR_0 is RGB or RGBA (glTF 2.0 section 3.7.2.1); its accessor says which.
+    const int colorIndex = attribute("COLOR_0");
+    const int colorComponents = colorIndex >= 0 && std::size_t(colorIndex) < model.accessors.size()
+            && model.accessors[std::size_t(colorIndex)].type == TINYGLTF_TYPE_VEC4
+        ? 4
+        : 3;
     if (!optional("NORMAL", 3, data.normal) || !optional("TANGENT", 4, data.tangent)
-        || !optional("TEXCOORD_0", 2, data.uv))
+        || !optional("TEXCOORD_0", 2, data.uv) || !optional("COLOR_0", colorComponents, data.color))
         return std::nullopt;
     if (primitive.indices >= 0) {
         const auto indices = accessorView(model, primitive.indices, 1, where + " indices", problem);
@@ -541,6 +547,8 @@ std::optional<PartFacts> appendPrimitive(const tinygltf::Model& model, const Mes
     facts.hasTangents = data->tangent.present() && data->normal.present();
     facts.flatNormals = !data->normal.present();
 
+    if (data->color.present())
+        out.hasVertexColors = true;
     SubMesh sub;
     sub.name = partName(model, instance, primitiveIndex);
     sub.materialIndex = materialIndex;
@@ -568,6 +576,9 @@ std::optional<PartFacts> appendPrimitive(const tinygltf::Model& model, const Mes
         }
         if (data->uv.present())
             v.uv = glm::vec2(data->uv.at(i, 0), 1.0f - data->uv.at(i, 1)); // top-left -> bottom-left
+        if (data->color.present())
+            v.color = packVertexColor(glm::vec4(data->color.at(i, 0), data->color.at(i, 1),
+                data->color.at(i, 2), data->color.components == 4 ? data->color.at(i, 3) : 1.0f));
         return v;
     };
 

@@ -151,7 +151,8 @@ glm::dvec4 sampleTexture(const MapImage& image, ColorEncoding colorSpace, const 
     return glm::mix(bottom, top, fy);
 }
 
-MaterialInfo materialInputs(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv)
+MaterialInfo materialInputs(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv,
+    const glm::dvec4& vertexColor)
 {
     const auto read = [&](MapSlot slot) -> std::optional<glm::dvec4> {
         const MapImage* image = images[std::size_t(slot)];
@@ -172,6 +173,8 @@ MaterialInfo materialInputs(const Material& material, const MaterialMapImages& i
         if (channel == MapChannel::Rgb)
             m.alpha *= base->a;
     }
+    m.baseColor *= glm::dvec3(vertexColor);
+    m.alpha *= vertexColor.a;
     m.emissive = material.emissive();
     if (const auto emissive = read(MapSlot::Emissive))
         m.emissive *= glm::dvec3(*emissive);

@@ -64,6 +64,9 @@ glm::dvec4 sampleTexture(const MapImage& image, ColorEncoding colorSpace, const 
 // The material's inputs at texture coordinate `uv` (before any UV transform: each map applies its
 // own, core/Material.h UvTransform): base colour and its alpha, metallic, perceptual roughness
 // (clamped to [0, 1]), occlusion (glTF strength mix), emitted radiance and IOR (GLSL materialInputs).
-MaterialInfo materialInputs(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv);
+// `vertexColor`: the interpolated glTF COLOR_0 (core/Mesh.h Vertex::color), which multiplies the
+// base colour and alpha as the shader's HAS_VERTEX_COLOR does; white for a mesh without one.
+MaterialInfo materialInputs(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv,
+    const glm::dvec4& vertexColor = glm::dvec4(1.0));
 
 } // namespace facet

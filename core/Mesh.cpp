@@ -16,6 +16,21 @@
 
 namespace facet {
 
+glm::vec4 vertexColor(const Vertex& vertex)
+{
+    return glm::vec4(vertex.color) / 65535.0f;
+}
+
+glm::u16vec4 packVertexColor(const glm::vec4& rgba)
+{
+    glm::u16vec4 packed;
+    for (int c = 0; c < 4; ++c) {
+        const float unit = std::isnan(rgba[c]) ? 0.0f : std::clamp(rgba[c], 0.0f, 1.0f);
+        packed[c] = static_cast<std::uint16_t>(std::lround(unit * 65535.0f));
+    }
+    return packed;
+}
+
 namespace {
 
 // Tolerances of validate(). Everything this module writes is normalised in float (error about

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/ext/vector_uint4_sized.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -30,9 +31,17 @@ struct Vertex {
     // (glTF convention: bitangent = cross(normal, tangent.xyz) * w).
     glm::vec4 tangent {1.0f, 0.0f, 0.0f, 1.0f};
     glm::vec2 uv {0.0f};
+    // Linear RGBA that multiplies the base colour and its alpha (glTF COLOR_0), in 16-bit fixed
+    // point (value / 65535): white where the file has none. Eight bytes, not sixteen: at 50 M
+    // vertices a float vec4 would cost another 400 MB for a rarely used attribute.
+    glm::u16vec4 color {65535, 65535, 65535, 65535};
 
     bool operator==(const Vertex&) const = default;
 };
+
+// A Vertex::color as the linear RGBA it stands for, and back (clamped to [0, 1], rounded).
+glm::vec4 vertexColor(const Vertex& vertex);
+glm::u16vec4 packVertexColor(const glm::vec4& rgba);
 
 // A range of the index buffer drawn with one material: one per aiMesh instance on import.
 struct SubMesh {
@@ -69,6 +78,7 @@ public:
     bool hasUvs = false; // the UVs mean something (from the file, a primitive, or generated)
     bool uvsGenerated = false; // they were made by generateUvs() because the file had none
     bool hasTangents = false; // tangents are valid (from the file or generated from the UVs)
+    bool hasVertexColors = false; // some vertex's color is the file's (glTF COLOR_0): the shader reads them
 
     std::size_t triangleCount() const { return indices.size() / 3; }
 

@@ -496,7 +496,7 @@ std::optional<Mesh> importChecked(const std::string& path, const MeshImportOptio
         return failed("contains no triangles");
     if (vertexCount > options.maxVertices)
         return failed(std::to_string(vertexCount) + " vertices (all instances) are over the "
-            + std::to_string(options.maxVertices) + " Facet previews: at 48 bytes each that is more memory"
+            + std::to_string(options.maxVertices) + " Facet previews: at 56 bytes each that is more memory"
             + " than a preview should take (docs/meshes.md, limits)");
     if (triangleCount > options.maxTriangles)
         return failed(std::to_string(triangleCount) + " triangles (all instances) are over the "

@@ -13,8 +13,8 @@
 namespace facet {
 
 struct MeshImportOptions {
-    // Limits, so a wrong or hostile file is refused instead of exhausting memory: at 48 bytes a
-    // Vertex, 50M vertices are 2.4 GB in RAM and as much again on the GPU, past what the
+    // Limits, so a wrong or hostile file is refused instead of exhausting memory: at 56 bytes a
+    // Vertex, 50M vertices are 2.8 GB in RAM and as much again on the GPU, past what the
     // machines Facet targets can hold (and far past what a material preview needs).
     std::size_t maxVertices = 50'000'000;
     std::size_t maxTriangles = 100'000'000; // 1.2 GB of 32-bit indices

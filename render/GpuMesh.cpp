@@ -7,7 +7,8 @@
 
 namespace facet {
 
-static_assert(sizeof(Vertex) == 12 * sizeof(float), "GpuMesh assumes core Vertex is 12 packed floats");
+static_assert(sizeof(Vertex) == 12 * sizeof(float) + 4 * sizeof(std::uint16_t),
+    "GpuMesh assumes core Vertex is 12 packed floats and 4 16-bit colour channels");
 
 GpuMesh::GpuMesh(GpuMesh&& other) noexcept
     : m_vao(std::exchange(other.m_vao, 0u))
@@ -73,6 +74,10 @@ bool GpuMesh::update(const Mesh& mesh, std::uint64_t key)
     glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(Vertex, tangent)));
     glEnableVertexAttribArray(3);
     glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(Vertex, uv)));
+    // COLOR_0 in 16-bit fixed point, read as [0, 1] (only variants with HAS_VERTEX_COLOR use it).
+    glEnableVertexAttribArray(4);
+    glVertexAttribPointer(
+        4, 4, GL_UNSIGNED_SHORT, GL_TRUE, stride, reinterpret_cast<const void*>(offsetof(Vertex, color)));
     glBindVertexArray(0);
     m_indexCount = std::uint32_t(mesh.indices.size());
     m_key = key;

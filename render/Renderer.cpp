@@ -168,6 +168,8 @@ SurfaceVariantKey Renderer::variantKeyFor(const RenderScene& scene, int material
         key.features = key.features | SurfaceFeature::IblFis;
     if (scene.analyticSphere)
         key.features = key.features | SurfaceFeature::AnalyticSphereNormal;
+    if (scene.mesh && scene.mesh->hasVertexColors)
+        key.features = key.features | SurfaceFeature::HasVertexColors;
     if (splitSumSharpLobes(scene, material))
         key.features = key.features | SurfaceFeature::SplitSumSharpLobes;
     key.debugView = debugViewFromString(scene.view.debugView).value_or(DebugView::None);

@@ -66,8 +66,11 @@ enum class SurfaceFeature : uint32_t {
     // (factor times its map's smallest value) reaches below level 1: the loop's mere presence cost
     // llvmpipe a third of a textured frame where no pixel took it.
     SplitSumSharpLobes = 1u << 23,
+    // HAS_VERTEX_COLOR: the mesh has glTF COLOR_0 (Mesh::hasVertexColors), which multiplies the
+    // base colour and alpha; meshes without it read no colour attribute.
+    HasVertexColors = 1u << 24,
 };
-inline constexpr int kSurfaceFeatureBits = 24;
+inline constexpr int kSurfaceFeatureBits = 25;
 
 using SurfaceFeatures = uint32_t;
 inline constexpr SurfaceFeatures operator|(SurfaceFeature a, SurfaceFeature b) { return uint32_t(a) | uint32_t(b); }

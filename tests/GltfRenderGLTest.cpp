@@ -22,6 +22,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -100,6 +101,7 @@ private Q_SLOTS:
     void textureTransformPicksTheQuadrant_data();
     void textureTransformPicksTheQuadrant();
     void twoMaterialsSideBySide();
+    void vertexColorsMultiplyTheBaseColour();
     void hiddenPartIsNotDrawn();
     void alphaMaskCutsOut();
     void alphaBlendComposites();
@@ -272,6 +274,39 @@ void GltfRenderGLTest::textureTransformPicksTheQuadrant()
     // Pixels near the centre read the middle of one quadrant (uv' = offset + 0.25 +- a little).
     for (const auto& [x, y] : {std::pair {32, 32}, std::pair {28, 28}, std::pair {36, 36}})
         expectPixel(*image, x, y, {expected[0], expected[1], expected[2]}, 2e-3);
+}
+
+// Issue 29: COLOR_0 multiplies the base colour (glTF 2.0 section 3.9.2), here a uniform colour
+// on every vertex of a quad whose material says 0.8 grey: the base-color view reads their product,
+// and the asset without COLOR_0 reads the factor alone (the same program would show white there).
+void GltfRenderGLTest::vertexColorsMultiplyTheBaseColour()
+{
+    for (const bool withColours : {true, false}) {
+        GltfWriter w;
+        QJsonObject values;
+        values[QLatin1String("baseColorFactor")] = jsonNumbers({0.8, 0.8, 0.8, 1});
+        const int mesh = w.addQuad(w.addMaterial(pbr(values)));
+        if (withColours) {
+            std::vector<float> colours(16);
+            for (std::size_t i = 0; i < colours.size(); ++i)
+                colours[i] = std::array<float, 4> {0.5f, 0.25f, 1.0f, 1.0f}[i % 4];
+            const int accessor = w.addFloatAccessor(colours, 4);
+            QJsonObject m = w.json()[QLatin1String("meshes")].toArray()[mesh].toObject();
+            QJsonObject p = m[QLatin1String("primitives")].toArray()[0].toObject();
+            QJsonObject attributes = p[QLatin1String("attributes")].toObject();
+            attributes[QLatin1String("COLOR_0")] = accessor;
+            p[QLatin1String("attributes")] = attributes;
+            m[QLatin1String("primitives")] = QJsonArray {p};
+            w.json()[QLatin1String("meshes")] = QJsonArray {m};
+        }
+        w.addNode(mesh);
+        const auto image
+            = render(w, withColours ? QStringLiteral("colours") : QStringLiteral("no-colours"), "base-color");
+        QVERIFY(image);
+        const glm::dvec3 expected = withColours ? glm::dvec3(0.4, 0.2, 0.8) : glm::dvec3(0.8);
+        for (const auto& [x, y] : {std::pair {32, 32}, std::pair {20, 40}, std::pair {44, 24}})
+            expectPixel(*image, x, y, expected, 2e-3);
+    }
 }
 
 // Two primitives with two materials: each half shows its own, as the part assignment says.

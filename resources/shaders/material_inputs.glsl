@@ -71,6 +71,10 @@ float scalarMapValue(int slot, vec4 texel)
     return uInvert[slot] != 0 ? 1.0 - value : value;
 }
 
+#ifdef HAS_VERTEX_COLOR
+in vec4 vColor; // glTF COLOR_0 from surface.vert
+#endif
+
 MaterialInfo materialInputs(vec2 uv)
 {
     MaterialInfo m;
@@ -82,6 +86,11 @@ MaterialInfo materialInputs(vec2 uv)
     // A single-channel pick is a greyscale colour without coverage of its own.
     if (uChannel[0] == 0)
         m.alpha *= base.a;
+#endif
+#ifdef HAS_VERTEX_COLOR
+    // glTF COLOR_0 multiplies the base colour and its alpha (glTF 2.0 section 3.9.2).
+    m.baseColor *= vColor.rgb;
+    m.alpha *= vColor.a;
 #endif
     m.emissive = uEmissiveFactor;
 #ifdef HAS_EMISSIVE_MAP

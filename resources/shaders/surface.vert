@@ -7,6 +7,10 @@ layout(location = 2) in vec4 aTangent; // xyz along dP/du, w = handedness (glTF 
 out vec4 vTangent;
 #endif
 layout(location = 3) in vec2 aUv;
+#ifdef HAS_VERTEX_COLOR
+layout(location = 4) in vec4 aColor; // glTF COLOR_0, linear RGBA (core/Mesh.h Vertex::color)
+out vec4 vColor;
+#endif
 
 uniform mat4 uModel;
 uniform mat3 uNormalMatrix; // inverse transpose of uModel's upper 3x3
@@ -22,6 +26,9 @@ void main()
     vWorldPosition = world.xyz;
     vNormal = uNormalMatrix * aNormal;
     vUv = aUv;
+#ifdef HAS_VERTEX_COLOR
+    vColor = aColor;
+#endif
 #ifdef HAS_NORMAL_MAP
     vTangent = vec4(mat3(uModel) * aTangent.xyz, aTangent.w);
 #endif
