@@ -209,22 +209,11 @@ std::optional<QJsonObject> readObjectFile(const std::string& path, qint64 maxByt
     QJsonParseError parseError;
     const QJsonDocument document = QJsonDocument::fromJson(data, &parseError);
     if (parseError.error != QJsonParseError::NoError) {
-        // QJsonParseError::offset counts bytes of the UTF-8 input; report a 1-based line and a
-        // column in characters (UTF-8 continuation bytes do not start a character).
+        // QJsonParseError::offset counts bytes of the UTF-8 input.
         const qsizetype offset = std::clamp<qsizetype>(parseError.offset, 0, data.size());
-        int line = 1;
-        int column = 1;
-        for (qsizetype i = 0; i < offset; ++i) {
-            const auto byte = static_cast<unsigned char>(data[i]);
-            if (byte == '\n') {
-                ++line;
-                column = 1;
-            } else if ((byte & 0xC0) != 0x80) {
-                ++column;
-            }
-        }
-        return failed("line " + std::to_string(line) + ", column " + std::to_string(column) + ": "
-                + ss(parseError.errorString()) + " (not valid JSON)",
+        return failed(
+            jsonPosition(std::string_view(data.constData(), std::size_t(data.size())), std::size_t(offset))
+                + ": " + ss(parseError.errorString()) + " (not valid JSON)",
             problem);
     }
     if (!document.isObject())

@@ -18,24 +18,6 @@ struct Frame {
     std::unordered_set<std::string> keys; // an object's keys so far (when duplicates are refused)
 };
 
-// "line L, column C" of a byte offset: 1-based, columns in characters (UTF-8 continuation bytes
-// start none), as core/JsonFile.cpp reports the parser's errors.
-std::string position(std::string_view text, std::size_t offset)
-{
-    int line = 1;
-    int column = 1;
-    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-        const auto byte = static_cast<unsigned char>(text[i]);
-        if (byte == '\n') {
-            ++line;
-            column = 1;
-        } else if ((byte & 0xC0) != 0x80) {
-            ++column;
-        }
-    }
-    return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
 // The JSON path of the value frame `count - 1` holds, as core's readers write paths
 // ("materials[0].maps").
 std::string pathOf(const std::vector<Frame>& frames, std::size_t count)
@@ -160,6 +142,22 @@ bool readString(std::string_view text, std::size_t at, std::size_t* end, std::st
 
 } // namespace
 
+std::string jsonPosition(std::string_view text, std::size_t offset)
+{
+    int line = 1;
+    int column = 1;
+    for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+        const auto byte = static_cast<unsigned char>(text[i]);
+        if (byte == '\n') {
+            ++line;
+            column = 1;
+        } else if ((byte & 0xC0) != 0x80) {
+            ++column;
+        }
+    }
+    return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
 std::optional<std::string> jsonStructureProblem(std::string_view text, const JsonStructureRules& rules)
 {
     std::vector<Frame> frames;
@@ -170,7 +168,7 @@ std::optional<std::string> jsonStructureProblem(std::string_view text, const Jso
         case '{':
         case '[':
             if (int(frames.size()) >= rules.maxDepth)
-                return position(text, i) + ": arrays and objects nest deeper than "
+                return jsonPosition(text, i) + ": arrays and objects nest deeper than "
                     + std::to_string(rules.maxDepth) + " levels";
             frames.push_back(Frame {});
             frames.back().object = c == '{';
@@ -204,7 +202,7 @@ std::optional<std::string> jsonStructureProblem(std::string_view text, const Jso
                 frame.expectKey = false;
                 if (rules.refuseDuplicateKeys && !frame.keys.insert(key).second) {
                     const std::string path = pathOf(frames, frames.size());
-                    return position(text, i) + ": " + (path.empty() ? std::string() : path + ": ")
+                    return jsonPosition(text, i) + ": " + (path.empty() ? std::string() : path + ": ")
                         + "the key \"" + key + "\" appears twice in one object";
                 }
                 frame.key = std::move(key);

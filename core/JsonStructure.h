@@ -36,6 +36,10 @@ struct JsonStructureRules {
     bool refuseDuplicateKeys = true;
 };
 
+// "line L, column C" of byte `offset` in `text`: 1-based, columns in characters (UTF-8
+// continuation bytes start none), as every JSON message of Facet's gives a position.
+std::string jsonPosition(std::string_view text, std::size_t offset);
+
 // Nothing when `text` is within the rules (or is not JSON at all: the parser says so); else one
 // line saying where and what, e.g. "line 3, column 18: arrays and objects nest deeper than 256
 // levels" or "line 7, column 9: materials[0]: the key \"roughness\" appears twice in one object".

@@ -713,13 +713,7 @@ void GltfImportTest::vertexColorsAreRead()
             w.json()[QLatin1String("accessors")] = accessors;
             accessor = int(accessors.size() - 1);
         }
-        QJsonObject m = w.json()[QLatin1String("meshes")].toArray()[mesh].toObject();
-        QJsonObject p = m[QLatin1String("primitives")].toArray()[0].toObject();
-        QJsonObject attributes = p[QLatin1String("attributes")].toObject();
-        attributes[QLatin1String("COLOR_0")] = accessor;
-        p[QLatin1String("attributes")] = attributes;
-        m[QLatin1String("primitives")] = QJsonArray {p};
-        w.json()[QLatin1String("meshes")] = QJsonArray {m};
+        w.setAttribute(mesh, QStringLiteral("COLOR_0"), accessor);
     }
     w.addNode(mesh);
     const QString file = path(QStringLiteral("colours-%1.glb")

@@ -291,13 +291,7 @@ void GltfRenderGLTest::vertexColorsMultiplyTheBaseColour()
             for (std::size_t i = 0; i < colours.size(); ++i)
                 colours[i] = std::array<float, 4> {0.5f, 0.25f, 1.0f, 1.0f}[i % 4];
             const int accessor = w.addFloatAccessor(colours, 4);
-            QJsonObject m = w.json()[QLatin1String("meshes")].toArray()[mesh].toObject();
-            QJsonObject p = m[QLatin1String("primitives")].toArray()[0].toObject();
-            QJsonObject attributes = p[QLatin1String("attributes")].toObject();
-            attributes[QLatin1String("COLOR_0")] = accessor;
-            p[QLatin1String("attributes")] = attributes;
-            m[QLatin1String("primitives")] = QJsonArray {p};
-            w.json()[QLatin1String("meshes")] = QJsonArray {m};
+            w.setAttribute(mesh, QStringLiteral("COLOR_0"), accessor);
         }
         w.addNode(mesh);
         const auto image

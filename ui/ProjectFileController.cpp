@@ -247,16 +247,21 @@ bool ProjectFileController::reload()
 {
     if (m_document->filePath().isEmpty() || !maybeSave())
         return false;
-    const QString path = m_document->filePath();
+    return reloadFromDisk(tr("Reloaded %1 from disk"));
+}
+
+bool ProjectFileController::reloadFromDisk(const QString& statusText)
+{
+    const QString path = QDir::toNativeSeparators(m_document->filePath());
     QString error;
     if (!m_document->reload(&error)) {
-        reportError(tr("Could not reload %1: %2").arg(QDir::toNativeSeparators(path), error),
+        reportError(tr("Could not reload %1: %2").arg(path, error),
             tr("Could not reload the project: %1").arg(WindowMessages::fromCore(error)));
         return false;
     }
     clearError();
     afterOpen();
-    Q_EMIT statusMessage(tr("Reloaded %1 from disk").arg(QDir::toNativeSeparators(path)));
+    Q_EMIT statusMessage(statusText.arg(path));
     return true;
 }
 
@@ -283,16 +288,7 @@ bool ProjectFileController::saveToFile(const QString& path)
             answer = QMessageBox::StandardButton(box.exec());
         }
         if (answer == QMessageBox::Discard) {
-            QString error;
-            if (!m_document->reload(&error)) {
-                reportError(tr("Could not reload %1: %2").arg(QDir::toNativeSeparators(path), error),
-                    tr("Could not reload the project: %1").arg(WindowMessages::fromCore(error)));
-                return false;
-            }
-            clearError();
-            afterOpen();
-            Q_EMIT statusMessage(
-                tr("Reloaded %1 from disk; nothing was saved").arg(QDir::toNativeSeparators(path)));
+            reloadFromDisk(tr("Reloaded %1 from disk; nothing was saved"));
             return false;
         }
         if (answer != QMessageBox::Save) {

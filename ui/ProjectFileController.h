@@ -100,6 +100,8 @@ private:
     // `precise` goes to lastError() and the log, `text` (window wording) to the window.
     void reportError(const QString& precise, const QString& text);
     void clearError();
+    // Document::reload with the window's messages; `statusText` has a %1 for the file.
+    bool reloadFromDisk(const QString& statusText);
     void addRecentFile(const QString& path);
     void afterOpen();
     bool openAssetFile(const QString& path);

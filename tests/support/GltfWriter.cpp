@@ -157,6 +157,31 @@ int GltfWriter::addSphere(int material, int segments, int rings)
     return addMesh(positions, normals, uvs, indices, material, QStringLiteral("sphere"));
 }
 
+void GltfWriter::setPrimitive(int mesh, const QString& key, const QJsonValue& value)
+{
+    QJsonArray meshes = m_json[QLatin1String("meshes")].toArray();
+    QJsonObject m = meshes[mesh].toObject();
+    QJsonArray primitives = m[QLatin1String("primitives")].toArray();
+    QJsonObject p = primitives[0].toObject();
+    p[key] = value;
+    primitives[0] = p;
+    m[QLatin1String("primitives")] = primitives;
+    meshes[mesh] = m;
+    m_json[QLatin1String("meshes")] = meshes;
+}
+
+void GltfWriter::setAttribute(int mesh, const QString& attribute, int accessor)
+{
+    QJsonObject attributes = m_json[QLatin1String("meshes")]
+                                 .toArray()[mesh]
+                                 .toObject()[QLatin1String("primitives")]
+                                 .toArray()[0]
+                                 .toObject()[QLatin1String("attributes")]
+                                 .toObject();
+    attributes[attribute] = accessor;
+    setPrimitive(mesh, QStringLiteral("attributes"), attributes);
+}
+
 int GltfWriter::addNode(int mesh, const QJsonObject& transform)
 {
     QJsonObject node = transform;

@@ -37,6 +37,10 @@ public:
     int addQuad(int material, float z = 0.0f, const QString& name = {});
     // A UV sphere of radius 1 (glTF UVs).
     int addSphere(int material, int segments = 48, int rings = 24);
+    // Sets `key` of the first primitive of `mesh` to `value` ("attributes", "targets", ...), or,
+    // with `attribute`, one entry of its "attributes" ("COLOR_0" -> an accessor index).
+    void setPrimitive(int mesh, const QString& key, const QJsonValue& value);
+    void setAttribute(int mesh, const QString& attribute, int accessor);
     // A node showing `mesh` (with an optional JSON transform), added to the scene's roots.
     int addNode(int mesh, const QJsonObject& transform = {});
     // An image: an external file name (relative to the asset), or bytes embedded in the buffer.
