@@ -345,15 +345,21 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
         if (material.doubleSided)
             json.insert(QStringLiteral("doubleSided"), true);
         QJsonObject extensions;
-        if (std::abs(material.ior - Material::kDefaultIor) > 1e-9) {
+        // An unlit material carries no extension of the lit model beside KHR_materials_unlit (the
+        // validator warns of MULTIPLE_EXTENSIONS): its IOR and emission strength mean nothing.
+        if (!material.unlit && std::abs(material.ior - Material::kDefaultIor) > 1e-9) {
             extensions.insert(
                 QStringLiteral("KHR_materials_ior"), QJsonObject {{QStringLiteral("ior"), material.ior}});
             extensionsUsed.insert(QStringLiteral("KHR_materials_ior"));
         }
-        if (emits && material.emissiveStrength != 1.0) {
+        if (!material.unlit && emits && material.emissiveStrength != 1.0) {
             extensions.insert(QStringLiteral("KHR_materials_emissive_strength"),
                 QJsonObject {{QStringLiteral("emissiveStrength"), material.emissiveStrength}});
             extensionsUsed.insert(QStringLiteral("KHR_materials_emissive_strength"));
+        }
+        if (material.unlit) {
+            extensions.insert(QStringLiteral("KHR_materials_unlit"), QJsonObject {});
+            extensionsUsed.insert(QStringLiteral("KHR_materials_unlit"));
         }
         if (!extensions.isEmpty())
             json.insert(QStringLiteral("extensions"), extensions);

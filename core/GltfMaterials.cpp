@@ -226,7 +226,8 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
     m.doubleSided = g.doubleSided;
 
     // Extensions of the material model.
-    static const std::set<std::string> kRead = {"KHR_materials_emissive_strength", "KHR_materials_ior"};
+    static const std::set<std::string> kRead
+        = {"KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_unlit"};
     for (const auto& [name, value] : g.extensions) {
         if (name == "KHR_materials_emissive_strength") {
             if (value.Has("emissiveStrength") && value.Get("emissiveStrength").IsNumber())
@@ -235,6 +236,8 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
         } else if (name == "KHR_materials_ior") {
             if (value.Has("ior") && value.Get("ior").IsNumber())
                 m.ior = clamped(value.Get("ior").GetNumberAsDouble(), 1.0, 5.0, where + " ior", notes);
+        } else if (name == "KHR_materials_unlit") {
+            m.unlit = true; // an empty object: its presence is the whole extension
         } else if (!kRead.count(name)) {
             notes.add("the material extension " + name + " is not supported: previewed as metallic-roughness");
         }

@@ -94,6 +94,8 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
                                      GroundTruthSettings::Lobes lobes)
 {
     const MaterialInfo& material = scene.material;
+    if (scene.unlit)
+        return material.baseColor;
     const Environment& environment = scene.environment;
     const bool lambertOnly = lobes == GroundTruthSettings::Lobes::LambertOnly;
     const double NoV = std::clamp(glm::dot(n, v), 0.0, 1.0);
@@ -261,6 +263,7 @@ std::optional<GroundTruthScene> groundTruthSceneFromProject(const Project& proje
     scene.material.emissive = material.emissive();
     scene.alphaMode = material.alphaMode;
     scene.alphaCutoff = material.alphaCutoff;
+    scene.unlit = material.unlit;
     scene.material.metallic = material.metallic();
     scene.material.perceptualRoughness = material.roughness();
     scene.material.ior = material.ior;

@@ -48,6 +48,9 @@ struct GroundTruthScene {
     ShadingModel model;
     AlphaMode alphaMode = AlphaMode::Opaque; // Mask: alpha < alphaCutoff shows the environment
     double alphaCutoff = 0.5;
+    // KHR_materials_unlit: the hit's radiance is material.baseColor, nothing integrated (the
+    // shader's MATERIAL_UNLIT twin).
+    bool unlit = false;
     Environment environment; // must not be empty
     std::vector<Light> lights;
 };

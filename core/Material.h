@@ -128,6 +128,10 @@ struct Material {
     // False: faces seen from behind are culled (glTF default). Facet's own materials default to
     // true so an open mesh shows its inside.
     bool doubleSided = true;
+    // KHR_materials_unlit: the surface shows its base colour (factor x texture x vertex colour)
+    // as radiance, with no light, environment or emission (the glTF Sample Viewer's
+    // MATERIAL_UNLIT). For baked lighting, stylised assets and photogrammetry.
+    bool unlit = false;
     // Indexed by MapSlot. Defaults: base colour 0.8 grey (sRGB texture), metallic 0, roughness
     // 0.5, occlusion 1, normal strength 1, emissive black. (glTF's defaults, metallic 1 and roughness 1, describe
     // a rough white metal: fine as texture multipliers, poor as a starting material.)

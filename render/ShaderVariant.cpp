@@ -34,6 +34,7 @@ constexpr std::array<const char*, kSurfaceFeatureBits> kFeatureDefines = {
     "IBL_FIS",
     "SPLIT_SUM_SHARP_LOBES",
     "HAS_VERTEX_COLOR",
+    "MATERIAL_UNLIT",
 };
 
 } // namespace
@@ -123,6 +124,8 @@ SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMap
         f = f | SurfaceFeature::HasPunctualLights;
     if (irradianceFromSH)
         f = f | SurfaceFeature::IrradianceSH;
+    if (material.unlit)
+        f = f | SurfaceFeature::Unlit;
     return f;
 }
 

@@ -69,8 +69,10 @@ enum class SurfaceFeature : uint32_t {
     // HAS_VERTEX_COLOR: the mesh has glTF COLOR_0 (Mesh::hasVertexColors), which multiplies the
     // base colour and alpha; meshes without it read no colour attribute.
     HasVertexColors = 1u << 24,
+    // MATERIAL_UNLIT: KHR_materials_unlit, the base colour is the radiance (Material::unlit).
+    Unlit = 1u << 25,
 };
-inline constexpr int kSurfaceFeatureBits = 25;
+inline constexpr int kSurfaceFeatureBits = 26;
 
 using SurfaceFeatures = uint32_t;
 inline constexpr SurfaceFeatures operator|(SurfaceFeature a, SurfaceFeature b) { return uint32_t(a) | uint32_t(b); }

@@ -125,6 +125,9 @@ std::vector<Row> rows()
         "material double-sided", [](Project& p) { p.materials[1].doubleSided = false; },
         material(1, MaterialProperty::DoubleSided));
     add(
+        "material unlit", [](Project& p) { p.materials[1].unlit = true; },
+        material(1, MaterialProperty::Unlit));
+    add(
         "material shading", [](Project& p) { p.materials[1].shading.multiScatter = false; },
         material(1, MaterialProperty::Shading));
 

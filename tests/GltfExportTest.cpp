@@ -138,7 +138,7 @@ private Q_SLOTS:
         QTest::addColumn<QString>("feature");
         QTest::addColumn<bool>("binary");
         for (const char* feature : {"constants", "every map", "shared transform", "different transforms",
-                 "ior", "mask", "blend", "single-sided", "two of one name"}) {
+                 "ior", "mask", "blend", "single-sided", "unlit", "two of one name"}) {
             QTest::newRow(qPrintable(QStringLiteral("%1, .gltf").arg(QLatin1String(feature))))
                 << QString::fromLatin1(feature) << false;
             QTest::newRow(qPrintable(QStringLiteral("%1, .glb").arg(QLatin1String(feature))))
@@ -178,6 +178,10 @@ private Q_SLOTS:
                 m.alphaMode = AlphaMode::Blend;
             if (feature == QStringLiteral("single-sided"))
                 m.doubleSided = false;
+            if (feature == QStringLiteral("unlit")) {
+                m.unlit = true;
+                m.emissiveStrength = 1.0; // an unlit material writes no other material extension
+            }
             materials.push_back(m);
             if (feature == QStringLiteral("two of one name")) {
                 Material other = m;
@@ -219,7 +223,10 @@ private Q_SLOTS:
             QCOMPARE(used.contains(QStringLiteral("KHR_texture_transform")),
                 feature == QStringLiteral("shared transform"));
             QCOMPARE(used.contains(QStringLiteral("KHR_materials_ior")), feature == QStringLiteral("ior"));
-            QCOMPARE(used.contains(QStringLiteral("KHR_materials_emissive_strength")), true);
+            QCOMPARE(used.contains(QStringLiteral("KHR_materials_emissive_strength")),
+                feature != QStringLiteral("unlit"));
+            QCOMPARE(
+                used.contains(QStringLiteral("KHR_materials_unlit")), feature == QStringLiteral("unlit"));
         }
 
         const std::optional<Project> back = projectFromAsset(path.toStdString(), &error);
@@ -233,6 +240,7 @@ private Q_SLOTS:
             if (a.alphaMode == AlphaMode::Mask)
                 QCOMPARE(b.alphaCutoff, a.alphaCutoff);
             QCOMPARE(b.doubleSided, a.doubleSided);
+            QCOMPARE(b.unlit, a.unlit);
             QVERIFY(std::abs(b.ior - a.ior) < 1e-9);
             QVERIFY(std::abs(b.emissiveStrength - a.emissiveStrength) < 1e-9);
             for (const MapSlot slot : kAllMapSlots)

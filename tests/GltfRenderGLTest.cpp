@@ -102,6 +102,7 @@ private Q_SLOTS:
     void textureTransformPicksTheQuadrant();
     void twoMaterialsSideBySide();
     void vertexColorsMultiplyTheBaseColour();
+    void unlitShowsTheBaseColour();
     void hiddenPartIsNotDrawn();
     void alphaMaskCutsOut();
     void alphaBlendComposites();
@@ -300,6 +301,39 @@ void GltfRenderGLTest::vertexColorsMultiplyTheBaseColour()
         const glm::dvec3 expected = withColours ? glm::dvec3(0.4, 0.2, 0.8) : glm::dvec3(0.8);
         for (const auto& [x, y] : {std::pair {32, 32}, std::pair {20, 40}, std::pair {44, 24}})
             expectPixel(*image, x, y, expected, 2e-3);
+    }
+}
+
+// Issue 29: KHR_materials_unlit was dropped (the sample renderer, Filament, three.js and Babylon
+// read it). An unlit material shows its base colour x vertex colour as radiance whatever the
+// environment, the lights and the emission; the same material lit does not. Its glTF round trip
+// keeps the extension; the CPU ground truth gives the same radiance.
+void GltfRenderGLTest::unlitShowsTheBaseColour()
+{
+    for (const bool unlit : {true, false}) {
+        GltfWriter w;
+        QJsonObject values;
+        values[QLatin1String("baseColorFactor")] = jsonNumbers({0.6, 0.3, 0.1, 1});
+        QJsonObject material = pbr(values);
+        material[QLatin1String("emissiveFactor")] = jsonNumbers({0.5, 0.5, 0.5});
+        if (unlit) {
+            material[QLatin1String("extensions")]
+                = QJsonObject {{QStringLiteral("KHR_materials_unlit"), QJsonObject {}}};
+            w.json()[QLatin1String("extensionsUsed")] = QJsonArray {QStringLiteral("KHR_materials_unlit")};
+        }
+        w.addNode(w.addQuad(w.addMaterial(material)));
+        Project opened;
+        const auto image
+            = render(w, unlit ? QStringLiteral("unlit") : QStringLiteral("lit"), "none", &opened);
+        QVERIFY(image);
+        QCOMPARE(opened.materials.front().unlit, unlit);
+        const glm::dvec3 shown = pixel(*image, 32, 32);
+        if (unlit) {
+            expectPixel(*image, 32, 32, {0.6, 0.3, 0.1}, 2e-3);
+            expectPixel(*image, 20, 44, {0.6, 0.3, 0.1}, 2e-3);
+        } else {
+            QVERIFY2(glm::length(shown - glm::dvec3(0.6, 0.3, 0.1)) > 0.1, qPrintable(text(shown)));
+        }
     }
 }
 

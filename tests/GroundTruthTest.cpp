@@ -101,6 +101,22 @@ private Q_SLOTS:
 
     // With multiple-scattering compensation the white metal, and the white dielectric with
     // the energy-preserving coupling, vanish in the furnace: every pixel is 1.
+    // KHR_materials_unlit: every hit shows the base colour, whatever the environment and lights.
+    void unlitShowsTheBaseColour()
+    {
+        GroundTruthScene scene = whiteFurnace(0.0, 0.5, true);
+        scene.material.baseColor = glm::dvec3(0.6, 0.3, 0.1);
+        scene.material.emissive = glm::dvec3(5.0);
+        scene.environment = Environment::uniform(glm::dvec3(7.0));
+        scene.unlit = true;
+        GroundTruthSettings settings;
+        settings.width = settings.height = kSize;
+        settings.samplesPerPixel = 4;
+        const Image image = renderGroundTruth(scene, settings);
+        for (const Pixel& p : spherePixels(kSize, 1))
+            QCOMPARE(pixel(image, p.x, p.y), glm::dvec3(glm::vec3(0.6f, 0.3f, 0.1f)));
+    }
+
     void whiteFurnaceWithCompensationIsWhite()
     {
         for (double metallic : {1.0, 0.0}) {

@@ -208,7 +208,15 @@ public:
         installViewportSurfaceFormat();
     }
 
-    enum class Edit { EmissiveColour, EmissiveStrength, AlphaMask, AlphaCutoff, AlphaBlend, DoubleSided };
+    enum class Edit {
+        EmissiveColour,
+        EmissiveStrength,
+        AlphaMask,
+        AlphaCutoff,
+        AlphaBlend,
+        DoubleSided,
+        Unlit
+    };
     Q_ENUM(Edit)
 
 private Q_SLOTS:
@@ -750,6 +758,7 @@ void MaterialsUiTest::emissiveAndAlphaEditsReachTheFrame_data()
     QTest::newRow("alpha cutoff (a slider drag)") << Edit::AlphaCutoff << QStringLiteral("Alpha Cutoff");
     QTest::newRow("alpha mode blend") << Edit::AlphaBlend << QStringLiteral("Alpha Mode");
     QTest::newRow("double-sided") << Edit::DoubleSided << QStringLiteral("Double-sided");
+    QTest::newRow("unlit") << Edit::Unlit << QStringLiteral("Unlit");
 }
 
 void MaterialsUiTest::emissiveAndAlphaEditsReachTheFrame()
@@ -760,9 +769,9 @@ void MaterialsUiTest::emissiveAndAlphaEditsReachTheFrame()
     // The right part's alpha is 0.3 (drawn opaque until the alpha mode says otherwise). Blending
     // shows in the shaded image (the debug views write the value itself).
     QVERIFY(openForPixels(m_translucent,
-        emissive                       ? "emissive"
-            : edit == Edit::AlphaBlend ? "none"
-                                       : "base-color"));
+        emissive                                              ? "emissive"
+            : edit == Edit::AlphaBlend || edit == Edit::Unlit ? "none"
+                                                              : "base-color"));
     m_window->materialsDock()->materialList()->setCurrentRow(1); // the blue material
     QCOMPARE(m_document->project().currentMaterial, 1);
     TextureMapsDock* maps = m_window->textureMapsDock();
@@ -821,14 +830,16 @@ void MaterialsUiTest::emissiveAndAlphaEditsReachTheFrame()
         QVERIFY(chooseInCombo(material->alphaModeCombo(), QStringLiteral("Blend (transparent)")));
         QVERIFY(!material->alphaCutoffSlider()->isEnabled());
         break;
+    case Edit::Unlit:
     case Edit::DoubleSided: {
         // On the box itself, where a user clicks.
-        QCheckBox* check = material->doubleSidedCheck();
+        QCheckBox* check = edit == Edit::Unlit ? material->unlitCheck() : material->doubleSidedCheck();
         QStyleOptionButton option;
         option.initFrom(check);
         const QRect box = check->style()->subElementRect(QStyle::SE_CheckBoxIndicator, &option, check);
         QTest::mouseClick(check, Qt::LeftButton, Qt::NoModifier, box.center());
-        QVERIFY(m_document->project().material().doubleSided);
+        QVERIFY(edit == Edit::Unlit ? m_document->project().material().unlit
+                                    : m_document->project().material().doubleSided);
         break;
     }
     }
@@ -867,6 +878,9 @@ void MaterialsUiTest::emissiveAndAlphaEditsReachTheFrame()
     }
     case Edit::DoubleSided: // the back face drawn
         QVERIFY2(near(before, background) && isBlue(after), qPrintable(report));
+        break;
+    case Edit::Unlit: // the lit blue becomes its flat base colour
+        QVERIFY2(isBlue(before) && isBlue(after) && !near(after, before, 10), qPrintable(report));
         break;
     }
 

@@ -451,6 +451,14 @@ private Q_SLOTS:
             QJsonObject v2 = saved;
             v2.remove(QLatin1String("compare"));
             v2[QLatin1String("version")] = 2;
+            // Optional fields added since, without a version (docs/project-format.md): "unlit".
+            QJsonArray materials = v2[QLatin1String("materials")].toArray();
+            for (QJsonValueRef each : materials) {
+                QJsonObject m = each.toObject();
+                m.remove(QLatin1String("unlit"));
+                each = m;
+            }
+            v2[QLatin1String("materials")] = materials;
             QJsonObject onDisk = QJsonDocument::fromJson(readAll(path)).object();
             onDisk.remove(QLatin1String("generator"));
             v2.remove(QLatin1String("generator"));

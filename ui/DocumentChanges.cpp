@@ -65,6 +65,8 @@ MaterialChange materialChange(const Material& a, const Material& b)
         changed |= MaterialProperty::AlphaCutoff;
     if (a.doubleSided != b.doubleSided)
         changed |= MaterialProperty::DoubleSided;
+    if (a.unlit != b.unlit)
+        changed |= MaterialProperty::Unlit;
     if (a.shading != b.shading)
         changed |= MaterialProperty::Shading;
     if (change.isEmpty() && !(a == b))
@@ -222,7 +224,8 @@ std::string materialNames(const MaterialChange& change)
         {{MaterialProperty::Name, "name"}, {MaterialProperty::Ior, "ior"},
             {MaterialProperty::EmissiveStrength, "emissiveStrength"},
             {MaterialProperty::AlphaMode, "alphaMode"}, {MaterialProperty::AlphaCutoff, "alphaCutoff"},
-            {MaterialProperty::DoubleSided, "doubleSided"}, {MaterialProperty::Shading, "shading"}});
+            {MaterialProperty::DoubleSided, "doubleSided"}, {MaterialProperty::Shading, "shading"},
+            {MaterialProperty::Unlit, "unlit"}});
     for (MapSlot slot : kAllMapSlots)
         if (change.map(slot)) {
             if (!text.empty())

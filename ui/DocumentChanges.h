@@ -83,7 +83,8 @@ enum class MaterialProperty : unsigned {
     AlphaCutoff = 1u << 4,
     DoubleSided = 1u << 5,
     Shading = 1u << 6, // Material::shading: kind Shading
-    All = (1u << 7) - 1u,
+    Unlit = 1u << 7,
+    All = (1u << 8) - 1u,
 };
 Q_DECLARE_FLAGS(MaterialProperties, MaterialProperty)
 Q_DECLARE_OPERATORS_FOR_FLAGS(MaterialProperties)

@@ -62,6 +62,7 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     , m_f0(new QLabel(this))
     , m_alphaCutoff(new ValueSlider(0.0, 1.0, 3, this))
     , m_doubleSided(new QCheckBox(tr("Double-sided"), this))
+    , m_unlit(new QCheckBox(tr("Unlit"), this))
     , m_presets(new QListWidget(this))
     , m_apply(new QPushButton(tr("Apply"), this))
     , m_delete(new QPushButton(tr("Delete"), this))
@@ -113,6 +114,11 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     surfaceForm->addRow(tr("Alpha"), m_alphaMode);
     surfaceForm->addRow(tr("Cutoff"), m_alphaCutoff);
     surfaceForm->addRow(m_doubleSided); // spans the row: its text fits a narrow dock column
+    m_unlit->setObjectName(QStringLiteral("unlitCheck"));
+    m_unlit->setToolTip(tr("KHR_materials_unlit: the surface shows its base colour (factor, texture and "
+                           "vertex colour) as it is, with no lighting, environment or emission: for baked "
+                           "lighting, stylised assets and scans."));
+    surfaceForm->addRow(m_unlit);
     layout->addWidget(surfaceGroup);
     auto* brdfGroup = new QGroupBox(tr("BRDF"), content);
     auto* brdfForm = new QFormLayout(brdfGroup);
@@ -212,6 +218,11 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
         material.doubleSided = on;
         m_document->setMaterial(material, on ? tr("Double-sided") : tr("Single-sided"));
     });
+    connect(m_unlit, &QCheckBox::clicked, this, [this](bool on) {
+        Material material = m_document->project().material();
+        material.unlit = on;
+        m_document->setMaterial(material, on ? tr("Unlit") : tr("Lit"));
+    });
     const auto connectCombo = [this](QComboBox* combo, const QString& undoText, auto apply) {
         connect(combo, &QComboBox::activated, this, [this, combo, undoText, apply] {
             const int value = combo->currentData().toInt();
@@ -274,6 +285,7 @@ void MaterialDock::onDocumentChanged(DocumentChanges changes)
     m_alphaCutoff->setValue(material.alphaCutoff);
     m_alphaCutoff->setEnabled(material.alphaMode == AlphaMode::Mask);
     m_doubleSided->setChecked(material.doubleSided);
+    m_unlit->setChecked(material.unlit);
 }
 
 void MaterialDock::editShading(const QString& undoText, const std::function<void(ShadingModel&)>& change)

@@ -41,6 +41,7 @@ public:
     QComboBox* alphaModeCombo() const { return m_alphaMode; }
     ValueSlider* alphaCutoffSlider() const { return m_alphaCutoff; }
     QCheckBox* doubleSidedCheck() const { return m_doubleSided; }
+    QCheckBox* unlitCheck() const { return m_unlit; }
     // Applies the selected preset (one undo step). False when none is selected.
     bool applySelectedPreset();
     // Saves the current material as a user preset named `name` and selects it. False with a
@@ -85,6 +86,7 @@ private:
     QComboBox* m_alphaMode;
     ValueSlider* m_alphaCutoff;
     QCheckBox* m_doubleSided;
+    QCheckBox* m_unlit;
     QListWidget* m_presets;
     QPushButton* m_apply;
     QPushButton* m_delete;

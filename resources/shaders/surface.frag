@@ -82,6 +82,11 @@ void main()
     vec3 indirect = (ibl.diffuse + ibl.specular) * m.occlusion;
     // Emission is not occluded: it leaves the surface itself.
     vec3 color = indirect + direct + m.emissive;
+#ifdef MATERIAL_UNLIT
+    // KHR_materials_unlit: the base colour (factor x texture x vertex colour) is the radiance; the
+    // lighting above is dead code the compiler drops (debug views still show it).
+    color = m.baseColor;
+#endif
 
 #if DEBUG_VIEW != DEBUG_NONE
     // The l that the D, V and F views evaluate: the first light, else the mirror direction.
