@@ -1,5 +1,6 @@
 #include "CommandInputs.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include <QFileInfo>
@@ -79,6 +80,28 @@ std::optional<Project> commandInputProject(const QStringList& positional, const 
     if (!warning.empty())
         std::fprintf(stderr, "facet %s: %s\n", qPrintable(command), warning.c_str());
     return project;
+}
+
+bool parseNumber(
+    const QString& flag, const QString& text, double low, double high, double* out, QString* error, bool open)
+{
+    bool ok = false;
+    const double value = text.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(value)) {
+        *error = QStringLiteral("--%1: '%2' is not a number").arg(flag, text);
+        return false;
+    }
+    const bool inside = open ? value > low && value < high : value >= low && value <= high;
+    if (!inside) {
+        *error = QStringLiteral("--%1: %2 is outside %3%4, %5%6")
+                     .arg(flag, text, open ? QStringLiteral("(") : QStringLiteral("["))
+                     .arg(low)
+                     .arg(high)
+                     .arg(open ? QStringLiteral(")") : QStringLiteral("]"));
+        return false;
+    }
+    *out = value;
+    return true;
 }
 
 bool parseImageSize(const QString& flag, const QString& text, int minimum, int maximum, int* width, int* height,

@@ -28,6 +28,11 @@ std::optional<Project> commandInputProject(const QStringList& positional, const 
 // count outside 1..kMaxIblSamples, or a count for the split sum, which takes none.
 bool applyIblOptions(const QString* method, const QString* samples, EnvironmentSettings& environment, QString* error);
 
+// A finite number for --FLAG within [low, high] (within (low, high) when `open`); else false with
+// *error "--FLAG: 'TEXT' is not a number" or "--FLAG: TEXT is outside [LOW, HIGH]" ("(LOW, HIGH)").
+bool parseNumber(const QString& flag, const QString& text, double low, double high, double* out,
+    QString* error, bool open = false);
+
 // "WxH" (case-insensitive x) with minimum <= W, H <= maximum; else false with
 // *error = "--FLAG: 'TEXT' is not WxH with MIN <= W, H <= MAX".
 bool parseImageSize(const QString& flag, const QString& text, int minimum, int maximum, int* width, int* height,

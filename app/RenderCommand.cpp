@@ -107,24 +107,6 @@ struct Options {
     }
 };
 
-// Parses a finite number in [low, high]; the message names the flag and the value.
-bool parseNumber(
-    const QString& flag, const QString& text, double low, double high, double* out, QString* error)
-{
-    bool ok = false;
-    const double value = text.trimmed().toDouble(&ok);
-    if (!ok || !std::isfinite(value)) {
-        *error = QStringLiteral("--%1: '%2' is not a number").arg(flag, text);
-        return false;
-    }
-    if (value < low || value > high) {
-        *error = QStringLiteral("--%1: %2 is outside [%3, %4]").arg(flag, text).arg(low).arg(high);
-        return false;
-    }
-    *out = value;
-    return true;
-}
-
 } // namespace
 
 QString RenderCommand::helpText()

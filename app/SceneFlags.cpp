@@ -1,5 +1,7 @@
 #include "SceneFlags.h"
 
+#include "CommandInputs.h"
+
 #include <cmath>
 
 #include <QJsonArray>
@@ -13,29 +15,6 @@ namespace facet {
 namespace {
 
 constexpr double kMaxEnvironmentEV = 20.0;
-
-// A finite number of `flag` within [low, high] (open ends when `open`); else *error.
-bool parseNumber(
-    const QString& flag, const QString& text, double low, double high, bool open, double* out, QString* error)
-{
-    bool ok = false;
-    const double value = text.trimmed().toDouble(&ok);
-    if (!ok || !std::isfinite(value)) {
-        *error = QStringLiteral("--%1: '%2' is not a number").arg(flag, text);
-        return false;
-    }
-    const bool inside = open ? value > low && value < high : value >= low && value <= high;
-    if (!inside) {
-        *error = QStringLiteral("--%1: %2 is outside %3%4, %5%6")
-                     .arg(flag, text, open ? QStringLiteral("(") : QStringLiteral("["))
-                     .arg(low)
-                     .arg(high)
-                     .arg(open ? QStringLiteral(")") : QStringLiteral("]"));
-        return false;
-    }
-    *out = value;
-    return true;
-}
 
 bool parseVector(const QString& flag, const QString& text, glm::dvec3* out, QString* error)
 {
@@ -171,13 +150,14 @@ bool SceneFlags::apply(
             QStringLiteral("camera-target"), parser.value(m_cameraTarget), &project.camera.target, error))
         return false;
     if (parser.isSet(m_fov)) {
-        if (!parseNumber(QStringLiteral("fov"), parser.value(m_fov), 0.0, 180.0, true, &number, error))
+        if (!parseNumber(
+                QStringLiteral("fov"), parser.value(m_fov), 0.0, 180.0, &number, error, /*open=*/true))
             return false;
         project.camera.verticalFovDegrees = number;
     }
     if (parser.isSet(m_exposure)) {
         if (!parseNumber(QStringLiteral("exposure"), parser.value(m_exposure), ViewSettings::kMinExposureEV,
-                ViewSettings::kMaxExposureEV, false, &number, error))
+                ViewSettings::kMaxExposureEV, &number, error))
             return false;
         project.view.exposureEV = number;
     }
@@ -193,14 +173,14 @@ bool SceneFlags::apply(
         project.view.toneMapper = *mapper;
     }
     if (parser.isSet(m_envRotation)) {
-        if (!parseNumber(QStringLiteral("env-rotation"), parser.value(m_envRotation), -1e6, 1e6, false,
-                &number, error))
+        if (!parseNumber(
+                QStringLiteral("env-rotation"), parser.value(m_envRotation), -1e6, 1e6, &number, error))
             return false;
         project.environment.rotationDegrees = number;
     }
     if (parser.isSet(m_envIntensity)) {
         if (!parseNumber(QStringLiteral("env-intensity"), parser.value(m_envIntensity), -kMaxEnvironmentEV,
-                kMaxEnvironmentEV, false, &number, error))
+                kMaxEnvironmentEV, &number, error))
             return false;
         project.environment.intensity = std::exp2(number);
     }
