@@ -32,12 +32,15 @@ namespace facet {
 
 namespace {
 
-using gltfsupport::Notes;
 using gltfmodel::AccessorView;
 using gltfmodel::accessorView;
+using gltfmodel::attributeTypeProblem;
 using gltfmodel::component;
 using gltfmodel::indexAt;
 using gltfmodel::loadModel;
+using gltfmodel::MorphDisplacement;
+using gltfmodel::morphDisplacement;
+using gltfsupport::Notes;
 
 // ---- Nodes --------------------------------------------------------------------------------
 
@@ -168,65 +171,6 @@ struct PrimitiveData {
     Attribute position, normal, tangent, uv, color; // color: COLOR_0, VEC3 or VEC4
     std::vector<std::uint32_t> indices;
 };
-
-const char* componentTypeName(int componentType)
-{
-    switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-        return "BYTE";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        return "UNSIGNED_BYTE";
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-        return "SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        return "UNSIGNED_SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        return "UNSIGNED_INT";
-    case TINYGLTF_COMPONENT_TYPE_FLOAT:
-        return "FLOAT";
-    default:
-        return "an unknown type";
-    }
-}
-
-// The component types glTF 2.0 allows for a vertex attribute (section 3.7.2.1), and those
-// KHR_mesh_quantization adds when the asset uses it. Anything else was read as numbers of another
-// meaning: POSITION as UNSIGNED_BYTE without the extension drew garbage (issue 29); the sample
-// renderer refuses such a primitive too. "" when allowed.
-std::string attributeTypeProblem(
-    const std::string& name, const AccessorView& view, bool quantized, const std::string& where)
-{
-    const int type = view.componentType;
-    const bool isFloat = type == TINYGLTF_COMPONENT_TYPE_FLOAT;
-    const bool small = type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE
-        || type == TINYGLTF_COMPONENT_TYPE_SHORT || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-    const bool unsignedNormalized = view.normalized
-        && (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
-    const bool signedNormalized
-        = view.normalized && (type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_SHORT);
-    bool core = isFloat;
-    bool withQuantization = isFloat;
-    if (name == "POSITION") {
-        withQuantization = isFloat || small;
-    } else if (name == "NORMAL" || name == "TANGENT") {
-        withQuantization = isFloat || signedNormalized;
-    } else { // TEXCOORD_n, COLOR_n
-        core = isFloat || unsignedNormalized;
-        withQuantization = isFloat || small;
-        if (name.starts_with("COLOR_"))
-            withQuantization = core;
-    }
-    if (core || (quantized && withQuantization))
-        return {};
-    const std::string given = std::string(view.normalized ? "normalized " : "") + componentTypeName(type);
-    const bool geometry = name == "POSITION" || name == "NORMAL" || name == "TANGENT";
-    if (!quantized && withQuantization)
-        return where + " " + name + ": " + given
-            + " components need the KHR_mesh_quantization extension, which the asset does not use (glTF 2.0 "
-              "alone allows "
-            + (geometry ? "FLOAT" : "FLOAT or normalized UNSIGNED_BYTE or UNSIGNED_SHORT") + " here)";
-    return where + " " + name + ": " + given + " components are not allowed for this attribute";
-}
 
 // Reads the accessors a primitive names, each checked (accessorView) and consistent in count.
 std::optional<PrimitiveData> readAccessors(const tinygltf::Model& model, const tinygltf::Primitive& primitive,
@@ -406,55 +350,6 @@ std::optional<PrimitiveData> decodeDraco(const tinygltf::Model& model, const tin
     return data;
 }
 
-// A primitive's morph targets blended at the weights the asset gives when nothing animates them
-// (glTF 2.0 section 3.7.2.2): the node's "weights", else the mesh's; the sum over targets of
-// weight x displacement, per vertex, for POSITION, NORMAL and TANGENT (xyz). Empty vectors where
-// no target with a non-zero weight displaces that attribute. Issue 29: the weights were not
-// applied, so a mesh whose rest shape is a blend (AnimatedMorphCube) showed its base shape.
-struct MorphDisplacement {
-    std::vector<glm::vec3> position, normal, tangent;
-};
-
-std::optional<MorphDisplacement> morphDisplacement(const tinygltf::Model& model, const MeshInstance& instance,
-    const tinygltf::Primitive& primitive, std::size_t vertexCount, const std::string& where,
-    std::string* problem)
-{
-    MorphDisplacement out;
-    const tinygltf::Node& node = model.nodes[std::size_t(instance.node)];
-    const std::vector<double>& weights
-        = !node.weights.empty() ? node.weights : model.meshes[std::size_t(instance.mesh)].weights;
-    const std::size_t targets = std::min(weights.size(), primitive.targets.size());
-    for (std::size_t k = 0; k < targets; ++k) {
-        const auto w = float(weights[k]);
-        if (w == 0.0f || !std::isfinite(w))
-            continue;
-        for (const auto& [name, accessor] : primitive.targets[k]) {
-            std::vector<glm::vec3>* sum = name == "POSITION" ? &out.position
-                : name == "NORMAL"                           ? &out.normal
-                : name == "TANGENT"                          ? &out.tangent
-                                                             : nullptr;
-            if (!sum)
-                continue; // TEXCOORD_n, COLOR_n displacements: not read (docs/gltf.md)
-            const std::string what = where + " morph target " + std::to_string(k) + " " + name;
-            const std::optional<AccessorView> view = accessorView(model, accessor, 3, what, problem);
-            if (!view)
-                return std::nullopt;
-            if (view->count != vertexCount) {
-                gltfsupport::fail(what + ": " + std::to_string(view->count) + " elements, but POSITION has "
-                        + std::to_string(vertexCount),
-                    problem);
-                return std::nullopt;
-            }
-            if (sum->empty())
-                sum->assign(vertexCount, glm::vec3(0.0f));
-            for (std::size_t i = 0; i < vertexCount; ++i)
-                (*sum)[i]
-                    += w * glm::vec3(component(*view, i, 0), component(*view, i, 1), component(*view, i, 2));
-        }
-    }
-    return out;
-}
-
 // A primitive instance's sub-mesh name: its mesh's name (else its node's), "#i" when the mesh
 // has several primitives.
 std::string partName(const tinygltf::Model& model, const MeshInstance& instance, std::size_t primitiveIndex)
@@ -508,8 +403,11 @@ std::optional<PartFacts> appendPrimitive(const tinygltf::Model& model, const Mes
     if (!data)
         return std::nullopt;
     const std::size_t vertexCount = data->vertexCount;
-    const std::optional<MorphDisplacement> morph
-        = morphDisplacement(model, instance, primitive, vertexCount, where, problem);
+    // The node's weights, else the mesh's (glTF 2.0 section 3.7.2.2).
+    const tinygltf::Node& node = model.nodes[std::size_t(instance.node)];
+    const std::optional<MorphDisplacement> morph = morphDisplacement(model,
+        !node.weights.empty() ? node.weights : model.meshes[std::size_t(instance.mesh)].weights, primitive,
+        vertexCount, where, problem);
     if (!morph)
         return std::nullopt;
 

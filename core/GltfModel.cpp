@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <exception>
 #include <utility>
@@ -283,6 +284,26 @@ int componentSize(int componentType)
     }
 }
 
+const char* componentTypeName(int componentType)
+{
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+        return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+        return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+        return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
+        return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+        return "UNSIGNED_INT";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+        return "FLOAT";
+    default:
+        return "an unknown type";
+    }
+}
+
 int componentCount(int type)
 {
     switch (type) {
@@ -408,6 +429,78 @@ std::uint32_t indexAt(const AccessorView& view, std::size_t i)
         return value;
     }
     }
+}
+
+std::string attributeTypeProblem(
+    const std::string& name, const AccessorView& view, bool quantized, const std::string& where)
+{
+    const int type = view.componentType;
+    const bool isFloat = type == TINYGLTF_COMPONENT_TYPE_FLOAT;
+    const bool small = type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE
+        || type == TINYGLTF_COMPONENT_TYPE_SHORT || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    const bool unsignedNormalized = view.normalized
+        && (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE || type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+    const bool signedNormalized
+        = view.normalized && (type == TINYGLTF_COMPONENT_TYPE_BYTE || type == TINYGLTF_COMPONENT_TYPE_SHORT);
+    bool core = isFloat;
+    bool withQuantization = isFloat;
+    if (name == "POSITION") {
+        withQuantization = isFloat || small;
+    } else if (name == "NORMAL" || name == "TANGENT") {
+        withQuantization = isFloat || signedNormalized;
+    } else { // TEXCOORD_n, COLOR_n
+        core = isFloat || unsignedNormalized;
+        withQuantization = isFloat || small;
+        if (name.starts_with("COLOR_"))
+            withQuantization = core;
+    }
+    if (core || (quantized && withQuantization))
+        return {};
+    const std::string given = std::string(view.normalized ? "normalized " : "") + componentTypeName(type);
+    const bool geometry = name == "POSITION" || name == "NORMAL" || name == "TANGENT";
+    if (!quantized && withQuantization)
+        return where + " " + name + ": " + given
+            + " components need the KHR_mesh_quantization extension, which the asset does not use (glTF 2.0 "
+              "alone allows "
+            + (geometry ? "FLOAT" : "FLOAT or normalized UNSIGNED_BYTE or UNSIGNED_SHORT") + " here)";
+    return where + " " + name + ": " + given + " components are not allowed for this attribute";
+}
+
+std::optional<MorphDisplacement> morphDisplacement(const tinygltf::Model& model,
+    const std::vector<double>& weights, const tinygltf::Primitive& primitive, std::size_t vertexCount,
+    const std::string& where, std::string* problem)
+{
+    MorphDisplacement out;
+    const std::size_t targets = std::min(weights.size(), primitive.targets.size());
+    for (std::size_t k = 0; k < targets; ++k) {
+        const auto w = float(weights[k]);
+        if (w == 0.0f || !std::isfinite(w))
+            continue;
+        for (const auto& [name, accessor] : primitive.targets[k]) {
+            std::vector<glm::vec3>* sum = name == "POSITION" ? &out.position
+                : name == "NORMAL"                           ? &out.normal
+                : name == "TANGENT"                          ? &out.tangent
+                                                             : nullptr;
+            if (!sum)
+                continue; // TEXCOORD_n, COLOR_n displacements: not read (docs/gltf.md)
+            const std::string what = where + " morph target " + std::to_string(k) + " " + name;
+            const std::optional<AccessorView> view = accessorView(model, accessor, 3, what, problem);
+            if (!view)
+                return std::nullopt;
+            if (view->count != vertexCount) {
+                fail(what + ": " + std::to_string(view->count) + " elements, but POSITION has "
+                        + std::to_string(vertexCount),
+                    problem);
+                return std::nullopt;
+            }
+            if (sum->empty())
+                sum->assign(vertexCount, glm::vec3(0.0f));
+            for (std::size_t i = 0; i < vertexCount; ++i)
+                (*sum)[i]
+                    += w * glm::vec3(component(*view, i, 0), component(*view, i, 1), component(*view, i, 2));
+        }
+    }
+    return out;
 }
 
 } // namespace facet::gltfmodel
