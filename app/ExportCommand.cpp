@@ -137,8 +137,8 @@ int ExportCommand::runGltf(const ExportRequest& request)
     if (!selected)
         return fail(error);
     std::string warning;
-    const std::optional<Mesh> mesh
-        = loadViewMesh(request.mesh.empty() ? project->view.mesh : request.mesh, &error, &warning);
+    const std::optional<Mesh> mesh = loadViewMesh(
+        request.mesh.empty() ? project->view.mesh : request.mesh, &error, &warning, project->view.keepUnits);
     if (!warning.empty())
         std::fprintf(stderr, "facet export: %s\n", warning.c_str());
     if (!mesh)

@@ -64,6 +64,18 @@ std::string GroundTruthCache::keyText(const GroundTruthScene& scene, const Groun
         + std::to_string(settings.samplesPerPixel) + " seed " + std::to_string(settings.seed) + " lobes "
         + std::to_string(int(settings.lobes)) + " albedo " + std::to_string(settings.albedoTableSize) + "/"
         + std::to_string(settings.albedoTableSamples) + "\n";
+    // What else changes the image, written only where it differs from the default so that the
+    // entries of the common case keep their keys.
+    if (scene.transparentBackground)
+        key += "background transparent\n";
+    if (scene.unlit)
+        key += "unlit\n";
+    if (scene.alphaMode != AlphaMode::Opaque)
+        key += std::string("alpha ") + toString(scene.alphaMode) + " cutoff " + number(scene.alphaCutoff)
+            + " coverage " + number(m.alpha) + "\n";
+    if (m.emissive != glm::dvec3(0.0))
+        key += "emissive " + number(m.emissive.r) + " " + number(m.emissive.g) + " " + number(m.emissive.b)
+            + "\n";
     return key;
 }
 

@@ -2,6 +2,7 @@
 
 #include "CommandInputs.h"
 #include "CommandOptions.h"
+#include "RenderScenario.h"
 #include "SceneFlags.h"
 #include "render/FrameRenderer.h"
 
@@ -85,6 +86,12 @@ struct Options {
             .arg(defaultIblSamples(IblMethod::Reference)),
         QStringLiteral("N")};
     QCommandLineOption stats {QStringLiteral("stats"), QStringLiteral("Print timings and work counters.")};
+    QCommandLineOption scenario {QStringLiteral("scenario"),
+        QStringLiteral("Render a glTF render-fidelity harness scenario: the JSON its offline renderers get, "
+                       "{\"scenario\": {name, model, lighting, dimensions, target, orbit, verticalFoV, "
+                       "renderSkybox}, \"outputFile\": PATH} (docs/fidelity.md). It gives the model, camera, "
+                       "size, background, tone mapping and output."),
+        QStringLiteral("json")};
     QCommandLineOption output {{QStringLiteral("o"), QStringLiteral("output")},
         QStringLiteral("Output image: .exr (linear radiance) or .png (display-referred)."),
         QStringLiteral("file")};
@@ -98,7 +105,7 @@ struct Options {
             "view transform. With --spp the CPU ground truth renders the reference view instead."));
         for (const QCommandLineOption* option :
             {&help, &env, &material, &baseColor, &metallic, &roughness, &brdf, &multiScatter, &mesh, &view,
-                &size, &referenceView, &spp, &quality, &ibl, &iblSamples, &stats, &output})
+                &size, &referenceView, &spp, &quality, &ibl, &iblSamples, &stats, &output, &scenario})
             parser.addOption(*option);
         scene.addTo(parser);
         parser.addPositionalArgument(QStringLiteral("input"),
@@ -125,20 +132,43 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
     const QStringList positional = o.parser.positionalArguments();
     if (!checkOneInput(positional, error))
         return std::nullopt;
-    const auto output = exrOrPngOutput(o.parser.isSet(o.output), o.parser.value(o.output),
-        QStringLiteral("-o OUT.exr or -o OUT.png is required"),
-        QStringLiteral("the output must be .exr (linear radiance) or .png (display-referred)"), error);
-    if (!output)
-        return std::nullopt;
-    request.outputPath = *output;
-
-    // The project: the file (a project, or a glTF asset with its own materials), or the built-in default.
-    auto input = commandInputProject(positional, QStringLiteral("render"), error);
-    if (!input) {
-        *exitCode = kExitFailure;
-        return std::nullopt;
+    if (o.parser.isSet(o.scenario)) {
+        // The scenario says what these would: one source for each.
+        for (const QString& name : {QStringLiteral("output"), QStringLiteral("size"),
+                 QStringLiteral("reference-view"), QStringLiteral("spp"), QStringLiteral("camera-position"),
+                 QStringLiteral("camera-target"), QStringLiteral("fov"), QStringLiteral("keep-units")})
+            if (o.parser.isSet(name)) {
+                *error = QStringLiteral("--scenario gives the model, camera, size and output: leave out --%1")
+                             .arg(name);
+                return std::nullopt;
+            }
+        if (!positional.isEmpty()) {
+            *error = QStringLiteral("--scenario gives the model: leave out '%1'").arg(positional.first());
+            return std::nullopt;
+        }
+        std::optional<RenderScenario> scenario = readRenderScenario(o.parser.value(o.scenario), error);
+        if (!scenario)
+            return std::nullopt;
+        request.outputPath = scenario->outputPath;
+        request.width = scenario->width;
+        request.height = scenario->height;
+        request.project = std::move(scenario->project);
+    } else {
+        const auto output = exrOrPngOutput(o.parser.isSet(o.output), o.parser.value(o.output),
+            QStringLiteral("-o OUT.exr or -o OUT.png is required"),
+            QStringLiteral("the output must be .exr (linear radiance) or .png (display-referred)"), error);
+        if (!output)
+            return std::nullopt;
+        request.outputPath = *output;
+        // The project: the file (a project, or a glTF asset with its own materials), or the
+        // built-in default.
+        auto input = commandInputProject(positional, QStringLiteral("render"), error);
+        if (!input) {
+            *exitCode = kExitFailure;
+            return std::nullopt;
+        }
+        request.project = std::move(*input);
     }
-    request.project = std::move(*input);
     Project& project = request.project;
     // --material and the factor flags override every material of the project or asset.
     const auto everyMaterial = [&project](const auto& edit) {
@@ -278,22 +308,32 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
 
 namespace {
 
+// Whether the output keeps an alpha channel: over a transparent background, alpha is the object's
+// coverage (EXR: premultiplied radiance, as OpenEXR stores it; PNG: straight, as PNG does).
+bool keepsAlpha(const RenderRequest& request)
+{
+    return request.project.view.background == BackgroundMode::Transparent;
+}
+
 // Writes linear radiance as EXR, or the display transform of it as PNG.
 bool writeOutput(const Image& radiance, const RenderRequest& request, std::string* error)
 {
     const bool png
         = QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower() == QStringLiteral("png");
     if (!png)
-        return radiance.save(request.outputPath, error, /*alpha=*/false);
+        return radiance.save(request.outputPath, error, keepsAlpha(request));
     Image display(radiance.width(), radiance.height());
     for (int y = 0; y < radiance.height(); ++y)
         for (int x = 0; x < radiance.width(); ++x) {
-            const glm::dvec3 c
-                = tonemap::displayTransform(glm::dvec3(glm::vec3(radiance.at(x, y))), request.project.view);
-            display.at(x, y) = glm::vec4(glm::vec3(c), 1.0f);
+            const glm::vec4 pixel = radiance.at(x, y);
+            const float alpha = keepsAlpha(request) ? pixel.a : 1.0f;
+            const glm::dvec3 straight
+                = alpha > 0.0f ? glm::dvec3(glm::vec3(pixel)) / double(alpha) : glm::dvec3(0.0);
+            const glm::dvec3 c = tonemap::displayTransform(straight, request.project.view);
+            display.at(x, y) = glm::vec4(glm::vec3(c), alpha);
         }
     display.setEncoding(ColorEncoding::SRGB);
-    return display.save(request.outputPath, error, /*alpha=*/false);
+    return display.save(request.outputPath, error, keepsAlpha(request));
 }
 
 int runGroundTruth(const RenderRequest& request)
@@ -391,7 +431,7 @@ int runGpu(const RenderRequest& request)
             return RenderCommand::kExitFailure;
         }
         const auto rendered = Clock::now();
-        if (!image->save(request.outputPath, &error, /*alpha=*/false)) {
+        if (!image->save(request.outputPath, &error, keepsAlpha(request))) {
             std::fprintf(stderr, "facet render: %s\n", error.c_str());
             exitCode = RenderCommand::kExitFailure;
         }

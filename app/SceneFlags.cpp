@@ -96,8 +96,9 @@ bool setAt(QJsonValue& node, const QStringList& tokens, int at, const QJsonValue
 
 void SceneFlags::addTo(QCommandLineParser& parser) const
 {
-    for (const QCommandLineOption* option : {&m_cameraPosition, &m_cameraTarget, &m_fov, &m_exposure,
-             &m_toneMapper, &m_envRotation, &m_envIntensity, &m_background, &m_set, &m_saveProject})
+    for (const QCommandLineOption* option :
+        {&m_cameraPosition, &m_cameraTarget, &m_fov, &m_exposure, &m_toneMapper, &m_envRotation,
+            &m_envIntensity, &m_background, &m_keepUnits, &m_set, &m_saveProject})
         parser.addOption(*option);
 }
 
@@ -184,12 +185,16 @@ bool SceneFlags::apply(
             return false;
         project.environment.intensity = std::exp2(number);
     }
+    if (parser.isSet(m_keepUnits))
+        project.view.keepUnits = true;
     if (parser.isSet(m_background)) {
         const QString mode = parser.value(m_background);
         if (mode == QStringLiteral("env")) {
             project.view.background = BackgroundMode::Environment;
         } else if (mode == QStringLiteral("blurred")) {
             project.view.background = BackgroundMode::Blurred;
+        } else if (mode == QStringLiteral("transparent")) {
+            project.view.background = BackgroundMode::Transparent;
         } else if (mode.startsWith(QStringLiteral("color:"))) {
             glm::dvec3 color;
             if (!parseVector(QStringLiteral("background"), mode.mid(6), &color, error))
@@ -201,7 +206,8 @@ bool SceneFlags::apply(
             project.view.background = BackgroundMode::Color;
             project.view.backgroundColor = color;
         } else {
-            *error = QStringLiteral("--background: '%1' is not env, blurred or color:R,G,B").arg(mode);
+            *error = QStringLiteral("--background: '%1' is not env, blurred, transparent or color:R,G,B")
+                         .arg(mode);
             return false;
         }
     }

@@ -4,7 +4,8 @@
 // intensity and the background existed only inside project files):
 //
 //   --camera-position x,y,z --camera-target x,y,z --fov DEG --exposure EV --tone-mapper NAME
-//   --env-rotation DEG --env-intensity EV --background env|blurred|color:R,G,B
+//   --env-rotation DEG --env-intensity EV --background env|blurred|transparent|color:R,G,B
+//   --keep-units
 //   --set PATH=VALUE (repeatable) --save-project FILE
 //
 // --set reaches every field: PATH is a JSON pointer into the project file's JSON (RFC 6901:
@@ -61,8 +62,12 @@ private:
         QStringLiteral("Environment intensity in stops (EV): its radiance times 2^EV."),
         QStringLiteral("EV")};
     QCommandLineOption m_background {QStringLiteral("background"),
-        QStringLiteral("What pixels that miss the mesh show: env, blurred or color:R,G,B (linear)."),
+        QStringLiteral("What pixels that miss the mesh show: env, blurred, color:R,G,B (linear) or "
+                       "transparent (alpha 0 there: PNG straight alpha, EXR premultiplied)."),
         QStringLiteral("mode")};
+    QCommandLineOption m_keepUnits {QStringLiteral("keep-units"),
+        QStringLiteral("Keep the mesh in its own units and origin (a camera in asset space) instead of "
+                       "fitting it to the unit sphere.")};
     QCommandLineOption m_set {QStringLiteral("set"),
         QStringLiteral("Set any project field: PATH=VALUE, PATH a JSON pointer into the project "
                        "(/view/exposureEV), VALUE JSON (1.5, true, [0,1,3], \"aces\") or a bare word. "

@@ -520,8 +520,10 @@ int SheetCommand::run(const SheetRequest& request)
                 {"facet:cellWidth", std::to_string(request.cellWidth)},
                 {"facet:cellHeight", std::to_string(request.cellHeight)}, {"facet:rowLabels", joinLabels(grid.rows)},
                 {"facet:columnLabels", joinLabels(grid.columns)}};
+        // A transparent background keeps the cells' alpha (a labelled sheet has an opaque page).
+        const bool alpha = request.project.view.background == BackgroundMode::Transparent;
         saved = plainSheet(cells, grid, request.cellWidth, request.cellHeight)
-                    .save(request.outputPath, &error, /*alpha=*/false, layout);
+                    .save(request.outputPath, &error, alpha, layout);
     }
     if (!saved)
         return fail(error);

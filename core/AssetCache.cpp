@@ -18,9 +18,13 @@ std::int64_t AssetCache::modifiedTime(const std::string& path)
     return info.isFile() ? info.lastModified().toMSecsSinceEpoch() : 0;
 }
 
-std::uint64_t AssetCache::meshKey(const std::string& nameOrPath, std::int64_t modified)
+std::uint64_t AssetCache::meshKey(const std::string& nameOrPath, std::int64_t modified, bool keepUnits)
 {
-    return Fnv1a64(modified ? std::uint64_t(modified) : 1u).addString(nameOrPath).value();
+    Fnv1a64 hash(modified ? std::uint64_t(modified) : 1u);
+    hash.addString(nameOrPath);
+    if (keepUnits)
+        hash.addString("\nasset units");
+    return hash.value();
 }
 
 std::optional<Environment> AssetCache::environment(
@@ -40,21 +44,22 @@ std::optional<Environment> AssetCache::environment(
 }
 
 std::optional<AssetCache::LoadedMesh> AssetCache::mesh(
-    const std::string& nameOrPath, std::string* error, std::string* warning)
+    const std::string& nameOrPath, std::string* error, std::string* warning, bool keepUnits)
 {
     const std::int64_t modified = modifiedTime(nameOrPath);
+    const std::pair<std::string, bool> entry {nameOrPath, keepUnits};
     std::lock_guard lock(m_mutex);
-    if (const auto found = m_meshes.find(nameOrPath);
+    if (const auto found = m_meshes.find(entry);
         found != m_meshes.end() && found->second.modified == modified)
         return found->second.mesh;
     ++m_meshLoads;
-    auto mesh = loadViewMesh(nameOrPath, error, warning);
+    auto mesh = loadViewMesh(nameOrPath, error, warning, keepUnits);
     if (!mesh)
         return std::nullopt;
     LoadedMesh loaded;
     loaded.mesh = std::make_shared<const Mesh>(std::move(*mesh));
-    loaded.key = meshKey(nameOrPath, modified);
-    m_meshes[nameOrPath] = MeshEntry {modified, loaded};
+    loaded.key = meshKey(nameOrPath, modified, keepUnits);
+    m_meshes[entry] = MeshEntry {modified, loaded};
     return loaded;
 }
 

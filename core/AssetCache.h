@@ -23,7 +23,8 @@ namespace facet {
 class AssetCache {
 public:
     struct LoadedMesh {
-        std::shared_ptr<const Mesh> mesh; // normalised to the unit bounding sphere (loadViewMesh)
+        std::shared_ptr<const Mesh>
+            mesh; // normalised to the unit bounding sphere unless kept in its units (loadViewMesh)
         std::uint64_t key = 0; // the content key the renderer uploads by (ProjectAssets::meshKey)
     };
 
@@ -31,8 +32,9 @@ public:
     // a project's rotation and intensity on the copy). nullopt with *error (fromSpec's message).
     // `warning` (optional) gets the load's notes the first time only.
     std::optional<Environment> environment(const std::string& spec, std::string* error, std::string* warning = nullptr);
-    // loadViewMesh(nameOrPath), with its content key.
-    std::optional<LoadedMesh> mesh(const std::string& nameOrPath, std::string* error, std::string* warning = nullptr);
+    // loadViewMesh(nameOrPath, keepUnits), with its content key (the two scalings are two meshes).
+    std::optional<LoadedMesh> mesh(const std::string& nameOrPath, std::string* error,
+        std::string* warning = nullptr, bool keepUnits = false);
 
     // Decodes and mesh loads run so far (tests: "each environment once").
     int environmentLoads() const;
@@ -43,7 +45,8 @@ public:
     static std::int64_t modifiedTime(const std::string& path);
     // The content key of a mesh loaded from `nameOrPath` at `modified` (ProjectAssets::meshKey):
     // a new file version is a new key (the renderer uploads again); a built-in name keeps its key.
-    static std::uint64_t meshKey(const std::string& nameOrPath, std::int64_t modified);
+    static std::uint64_t meshKey(
+        const std::string& nameOrPath, std::int64_t modified, bool keepUnits = false);
 
 private:
     struct EnvironmentEntry {
@@ -57,7 +60,7 @@ private:
 
     mutable std::mutex m_mutex;
     std::map<std::string, EnvironmentEntry> m_environments;
-    std::map<std::string, MeshEntry> m_meshes;
+    std::map<std::pair<std::string, bool>, MeshEntry> m_meshes; // by (name or path, keepUnits)
     int m_environmentLoads = 0;
     int m_meshLoads = 0;
 };

@@ -1,6 +1,7 @@
 #include "core/GltfExport.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "core/AtomicFile.h"
 #include "core/ExportTemplate.h"
 #include "core/FileSet.h"
+#include "core/GltfImport.h"
 #include "core/ImageWriter.h"
 
 namespace facet {
@@ -45,10 +47,39 @@ const char* mapName(Texture texture)
     return "emissive";
 }
 
+// The material slots a texture is made from.
+std::vector<MapSlot> slotsOf(const std::string& outputMap)
+{
+    if (outputMap == mapName(Texture::Orm))
+        return {MapSlot::Occlusion, MapSlot::Roughness, MapSlot::Metallic};
+    if (outputMap == mapName(Texture::Normal))
+        return {MapSlot::Normal};
+    if (outputMap == mapName(Texture::Emissive))
+        return {MapSlot::Emissive};
+    return {MapSlot::BaseColor};
+}
+
+// The sampler a texture keeps: its textured slots' one sampler, or the default where they
+// differ (the bake read each map with its own).
+TextureSampler samplerOf(const Material& material, const std::string& outputMap)
+{
+    std::optional<TextureSampler> common;
+    for (const MapSlot slot : slotsOf(outputMap)) {
+        const MaterialMap& map = material.map(slot);
+        if (!map.hasTexture())
+            continue;
+        if (common && !(*common == map.sampler))
+            return TextureSampler {};
+        common = map.sampler;
+    }
+    return common.value_or(TextureSampler {});
+}
+
 // What one material becomes: which textures, the transform they share, the job that bakes them.
 struct MaterialPlan {
     bool base = false, normal = false, orm = false, emissive = false;
     std::optional<UvTransform> shared; // written as KHR_texture_transform
+    int texCoord = 0; // the UV set every textured slot reads (textureInfo.texCoord)
     std::optional<TextureSetExport> job;
     std::map<std::string, std::string> fileOf; // {map} -> file name
 };
@@ -81,18 +112,30 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
             || material.map(MapSlot::Roughness).hasTexture() || material.map(MapSlot::Metallic).hasTexture();
         plan.emissive = material.map(MapSlot::Emissive).hasTexture();
 
-        // One transform on every textured slot: kept as KHR_texture_transform; else baked.
+        // One transform on every textured slot: kept as KHR_texture_transform; else baked. The
+        // bake writes every map into one texture set, in one UV set: maps on different sets
+        // cannot share it.
         Material baked = material;
         std::optional<UvTransform> common;
+        std::optional<int> set;
         bool same = true;
         for (const MapSlot slot : kAllMapSlots) {
-            if (!material.map(slot).hasTexture())
+            const MaterialMap& map = material.map(slot);
+            if (!map.hasTexture())
                 continue;
+            if (set && *set != map.texCoord) {
+                *error = "material '" + material.name + "': its maps read different texture-coordinate sets ("
+                    + toString(slot) + " reads TEXCOORD_" + std::to_string(map.texCoord)
+                    + "), which one baked texture set cannot hold: give them one set (docs/export.md)";
+                return std::nullopt;
+            }
+            set = map.texCoord;
             if (!common)
-                common = material.map(slot).uv;
-            else if (!(*common == material.map(slot).uv))
+                common = map.uv;
+            else if (!(*common == map.uv))
                 same = false;
         }
+        plan.texCoord = set.value_or(0);
         if (same && common && !common->isIdentity()) {
             plan.shared = common;
             for (const MapSlot slot : kAllMapSlots)
@@ -167,9 +210,14 @@ QJsonArray array(std::initializer_list<double> values)
     return result;
 }
 
-QJsonObject textureInfo(int index, const std::optional<UvTransform>& shared, QJsonObject extra = {})
+// `secondSet`: the mesh has TEXCOORD_1. Without it a map on set 1 reads set 0 (as Facet draws it),
+// and the file says so rather than naming an attribute it lacks.
+QJsonObject textureInfo(int index, const MaterialPlan& plan, bool secondSet, QJsonObject extra = {})
 {
+    const std::optional<UvTransform>& shared = plan.shared;
     extra.insert(QStringLiteral("index"), index);
+    if (plan.texCoord != 0 && secondSet)
+        extra.insert(QStringLiteral("texCoord"), plan.texCoord);
     if (shared) {
         const GltfTextureTransform t = toGltfTextureTransform(*shared);
         extra.insert(QStringLiteral("extensions"),
@@ -263,6 +311,8 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
 
     // Textures: rendered and encoded; beside the asset or in its buffer.
     std::vector<std::map<std::string, int>> textureIndex(plans->size());
+    std::vector<std::array<int, 4>>
+        samplers; // {magFilter, minFilter, wrapS, wrapT}, one per distinct sampler
     for (std::size_t m = 0; m < plans->size(); ++m) {
         const MaterialPlan& plan = (*plans)[m];
         const TextureSetPlan& set = plan.job->plans().front();
@@ -291,8 +341,12 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
             }
             image.insert(QStringLiteral("name"), QString::fromStdString(texture.fileName));
             images.append(image);
-            textures.append(QJsonObject {
-                {QStringLiteral("sampler"), 0}, {QStringLiteral("source"), int(images.size() - 1)}});
+            const std::array<int, 4> sampler = gltfSamplerValues(samplerOf(materials[m], texture.output.map));
+            auto known = std::find(samplers.begin(), samplers.end(), sampler);
+            if (known == samplers.end())
+                known = samplers.insert(samplers.end(), sampler);
+            textures.append(QJsonObject {{QStringLiteral("sampler"), int(known - samplers.begin())},
+                {QStringLiteral("source"), int(images.size() - 1)}});
             textureIndex[m][texture.output.map] = int(textures.size() - 1);
         }
     }
@@ -308,25 +362,25 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
         const glm::dvec4 base = plan.base ? glm::dvec4(1.0) : material.baseColorFactor();
         pbr.insert(QStringLiteral("baseColorFactor"), array({base.r, base.g, base.b, base.a}));
         if (plan.base)
-            pbr.insert(
-                QStringLiteral("baseColorTexture"), textureInfo(index(Texture::BaseColor), plan.shared));
+            pbr.insert(QStringLiteral("baseColorTexture"),
+                textureInfo(index(Texture::BaseColor), plan, mesh.hasTexCoord1));
         const bool mrTexture = plan.orm
             && (material.map(MapSlot::Roughness).hasTexture()
                 || material.map(MapSlot::Metallic).hasTexture());
         pbr.insert(QStringLiteral("metallicFactor"), mrTexture ? 1.0 : material.metallic());
         pbr.insert(QStringLiteral("roughnessFactor"), mrTexture ? 1.0 : material.roughness());
         if (mrTexture)
-            pbr.insert(
-                QStringLiteral("metallicRoughnessTexture"), textureInfo(index(Texture::Orm), plan.shared));
+            pbr.insert(QStringLiteral("metallicRoughnessTexture"),
+                textureInfo(index(Texture::Orm), plan, mesh.hasTexCoord1));
         QJsonObject json {{QStringLiteral("name"), QString::fromStdString(material.name)},
             {QStringLiteral("pbrMetallicRoughness"), pbr}};
         if (plan.normal)
             json.insert(QStringLiteral("normalTexture"),
-                textureInfo(index(Texture::Normal), plan.shared,
+                textureInfo(index(Texture::Normal), plan, mesh.hasTexCoord1,
                     QJsonObject {{QStringLiteral("scale"), material.normalStrength()}}));
         if (material.map(MapSlot::Occlusion).hasTexture())
             json.insert(QStringLiteral("occlusionTexture"),
-                textureInfo(index(Texture::Orm), plan.shared,
+                textureInfo(index(Texture::Orm), plan, mesh.hasTexCoord1,
                     QJsonObject {{QStringLiteral("strength"), material.occlusionStrength()}}));
         const glm::dvec3 emissive
             = plan.emissive ? glm::dvec3(1.0) : glm::dvec3(material.map(MapSlot::Emissive).factor);
@@ -334,8 +388,8 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
         if (emits)
             json.insert(QStringLiteral("emissiveFactor"), array({emissive.r, emissive.g, emissive.b}));
         if (plan.emissive)
-            json.insert(
-                QStringLiteral("emissiveTexture"), textureInfo(index(Texture::Emissive), plan.shared));
+            json.insert(QStringLiteral("emissiveTexture"),
+                textureInfo(index(Texture::Emissive), plan, mesh.hasTexCoord1));
         if (material.alphaMode != AlphaMode::Opaque) {
             json.insert(QStringLiteral("alphaMode"),
                 material.alphaMode == AlphaMode::Mask ? QStringLiteral("MASK") : QStringLiteral("BLEND"));
@@ -367,7 +421,7 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
     }
 
     // Geometry: one view per attribute, the indices in one view, a primitive per sub-mesh.
-    std::vector<float> positions, normals, uvs, tangents, colors;
+    std::vector<float> positions, normals, uvs, uvs1, tangents, colors;
     glm::vec3 lo(INFINITY), hi(-INFINITY);
     for (const Vertex& v : mesh.vertices) {
         positions.insert(positions.end(), {v.position.x, v.position.y, v.position.z});
@@ -377,6 +431,8 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
             = glm::length(v.normal) > 0.0f ? v.normal / glm::length(v.normal) : glm::vec3(0, 1, 0);
         normals.insert(normals.end(), {n.x, n.y, n.z});
         uvs.insert(uvs.end(), {v.uv.x, 1.0f - v.uv.y}); // glTF: v = 0 is the image's top
+        if (mesh.hasTexCoord1)
+            uvs1.insert(uvs1.end(), {v.uv1.x, 1.0f - v.uv1.y});
         if (mesh.hasTangents)
             tangents.insert(
                 tangents.end(), {v.tangent.x, v.tangent.y, v.tangent.z, v.tangent.w < 0.0f ? -1.0f : 1.0f});
@@ -402,6 +458,8 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
         {QStringLiteral("NORMAL"), attribute(normals, "VEC3", false)}};
     if (mesh.hasUvs)
         attributes.insert(QStringLiteral("TEXCOORD_0"), attribute(uvs, "VEC2", false));
+    if (mesh.hasTexCoord1)
+        attributes.insert(QStringLiteral("TEXCOORD_1"), attribute(uvs1, "VEC2", false));
     if (mesh.hasTangents)
         attributes.insert(QStringLiteral("TANGENT"), attribute(tangents, "VEC4", false));
     if (mesh.hasVertexColors) // glTF COLOR_0, as read (core/Mesh.h Vertex::color)
@@ -450,10 +508,17 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
     if (!textures.isEmpty()) {
         asset.insert(QStringLiteral("textures"), textures);
         asset.insert(QStringLiteral("images"), images);
-        // Linear filtering with mipmaps, repeating: how Facet samples its maps.
-        asset.insert(QStringLiteral("samplers"),
-            QJsonArray {QJsonObject {{QStringLiteral("magFilter"), 9729}, {QStringLiteral("minFilter"), 9987},
-                {QStringLiteral("wrapS"), 10497}, {QStringLiteral("wrapT"), 10497}}});
+        // Each texture's maps' wraps and filters; an Auto filter is left out (the reader's choice).
+        QJsonArray jsonSamplers;
+        for (const std::array<int, 4>& sampler : samplers) {
+            QJsonObject json {{QStringLiteral("wrapS"), sampler[2]}, {QStringLiteral("wrapT"), sampler[3]}};
+            if (sampler[0] >= 0)
+                json.insert(QStringLiteral("magFilter"), sampler[0]);
+            if (sampler[1] >= 0)
+                json.insert(QStringLiteral("minFilter"), sampler[1]);
+            jsonSamplers.append(json);
+        }
+        asset.insert(QStringLiteral("samplers"), jsonSamplers);
     }
     if (!extensionsUsed.empty()) {
         QJsonArray used;

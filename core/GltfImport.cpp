@@ -168,7 +168,7 @@ struct Attribute {
 // A primitive's vertex attributes and its index list (0, 1, 2, ... when it has no indices).
 struct PrimitiveData {
     std::size_t vertexCount = 0;
-    Attribute position, normal, tangent, uv, color; // color: COLOR_0, VEC3 or VEC4
+    Attribute position, normal, tangent, uv, uv1, color; // uv1: TEXCOORD_1; color: COLOR_0, VEC3 or VEC4
     std::vector<std::uint32_t> indices;
 };
 
@@ -229,7 +229,8 @@ std::optional<PrimitiveData> readAccessors(const tinygltf::Model& model, const t
         ? 4
         : 3;
     if (!optional("NORMAL", 3, data.normal) || !optional("TANGENT", 4, data.tangent)
-        || !optional("TEXCOORD_0", 2, data.uv) || !optional("COLOR_0", colorComponents, data.color))
+        || !optional("TEXCOORD_0", 2, data.uv) || !optional("TEXCOORD_1", 2, data.uv1)
+        || !optional("COLOR_0", colorComponents, data.color))
         return std::nullopt;
     if (primitive.indices >= 0) {
         const auto indices = accessorView(model, primitive.indices, 1, where + " indices", problem);
@@ -341,7 +342,8 @@ std::optional<PrimitiveData> decodeDraco(const tinygltf::Model& model, const tin
         return true;
     };
     if (!read("POSITION", 3, data.position, true) || !read("NORMAL", 3, data.normal, false)
-        || !read("TANGENT", 4, data.tangent, false) || !read("TEXCOORD_0", 2, data.uv, false))
+        || !read("TANGENT", 4, data.tangent, false) || !read("TEXCOORD_0", 2, data.uv, false)
+        || !read("TEXCOORD_1", 2, data.uv1, false))
         return std::nullopt;
     data.indices.reserve(std::size_t(mesh->num_faces()) * 3);
     for (draco::FaceIndex f(0); f < mesh->num_faces(); ++f)
@@ -447,6 +449,8 @@ std::optional<PartFacts> appendPrimitive(const tinygltf::Model& model, const Mes
 
     if (data->color.present())
         out.hasVertexColors = true;
+    if (data->uv1.present())
+        out.hasTexCoord1 = true;
     SubMesh sub;
     sub.name = partName(model, instance, primitiveIndex);
     sub.materialIndex = materialIndex;
@@ -474,6 +478,7 @@ std::optional<PartFacts> appendPrimitive(const tinygltf::Model& model, const Mes
         }
         if (data->uv.present())
             v.uv = glm::vec2(data->uv.at(i, 0), 1.0f - data->uv.at(i, 1)); // top-left -> bottom-left
+        v.uv1 = data->uv1.present() ? glm::vec2(data->uv1.at(i, 0), 1.0f - data->uv1.at(i, 1)) : v.uv;
         if (data->color.present())
             v.color = packVertexColor(glm::vec4(data->color.at(i, 0), data->color.at(i, 1),
                 data->color.at(i, 2), data->color.components == 4 ? data->color.at(i, 3) : 1.0f));
@@ -637,6 +642,14 @@ std::optional<GltfAsset> importChecked(const std::string& path, const GltfImport
         return std::nullopt;
     for (const std::string& repair : repairs)
         notes.add(repair);
+    // A map on the second set of a mesh without one reads the first (the shader's HAS_TEXCOORD_1
+    // is off): say so, as the glTF validator would.
+    if (!mesh.hasTexCoord1)
+        for (const Material& material : asset.materials)
+            for (const MapSlot slot : kAllMapSlots)
+                if (material.map(slot).hasTexture() && material.map(slot).texCoord == 1)
+                    notes.add("material '" + material.name + "' " + toString(slot)
+                        + " reads TEXCOORD_1, which no primitive has: set 0 is read");
     return asset;
 }
 
@@ -753,6 +766,50 @@ UvTransform gltfTextureTransform(const glm::dvec2& offset, double rotationRadian
     uv.offset = {
         offset.x + scale.y * std::sin(rotationRadians), 1.0 - offset.y - scale.y * std::cos(rotationRadians)};
     return uv;
+}
+
+namespace {
+// WebGL's numbers, as glTF 2.0 stores them.
+constexpr std::pair<TextureFilter, int> kGltfFilters[]
+    = {{TextureFilter::Nearest, 9728}, {TextureFilter::Linear, 9729},
+        {TextureFilter::NearestMipmapNearest, 9984}, {TextureFilter::LinearMipmapNearest, 9985},
+        {TextureFilter::NearestMipmapLinear, 9986}, {TextureFilter::LinearMipmapLinear, 9987}};
+constexpr std::pair<TextureWrap, int> kGltfWraps[]
+    = {{TextureWrap::ClampToEdge, 33071}, {TextureWrap::MirroredRepeat, 33648}, {TextureWrap::Repeat, 10497}};
+
+template <typename Enum, std::size_t N>
+Enum fromGltfNumber(const std::pair<Enum, int> (&table)[N], int number, Enum otherwise)
+{
+    for (const auto& [value, gl] : table)
+        if (gl == number)
+            return value;
+    return otherwise;
+}
+template <typename Enum, std::size_t N> int toGltfNumber(const std::pair<Enum, int> (&table)[N], Enum value)
+{
+    for (const auto& [v, gl] : table)
+        if (v == value)
+            return gl;
+    return -1;
+}
+} // namespace
+
+TextureSampler textureSamplerFromGltf(int magFilter, int minFilter, int wrapS, int wrapT)
+{
+    TextureSampler sampler;
+    sampler.magFilter = fromGltfNumber(kGltfFilters, magFilter, TextureFilter::Auto);
+    if (sampler.magFilter != TextureFilter::Nearest && sampler.magFilter != TextureFilter::Linear)
+        sampler.magFilter = TextureFilter::Auto; // a minification value where magnification belongs
+    sampler.minFilter = fromGltfNumber(kGltfFilters, minFilter, TextureFilter::Auto);
+    sampler.wrapS = fromGltfNumber(kGltfWraps, wrapS, TextureWrap::Repeat);
+    sampler.wrapT = fromGltfNumber(kGltfWraps, wrapT, TextureWrap::Repeat);
+    return sampler;
+}
+
+std::array<int, 4> gltfSamplerValues(const TextureSampler& sampler)
+{
+    return {toGltfNumber(kGltfFilters, sampler.magFilter), toGltfNumber(kGltfFilters, sampler.minFilter),
+        toGltfNumber(kGltfWraps, sampler.wrapS), toGltfNumber(kGltfWraps, sampler.wrapT)};
 }
 
 } // namespace facet

@@ -16,6 +16,7 @@
 // bottom-left (core/Mesh.h), so v becomes 1 - v and each KHR_texture_transform is conjugated
 // into Facet's UV space (gltfTextureTransform()).
 
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -84,5 +85,12 @@ std::optional<std::vector<unsigned char>> readGltfImage(const GltfImageReference
 // UV space: with F(u, v) = (u, 1 - v), Facet's matrix is F * M_gltf * F, which is again
 // translation * rotation * scale with the rotation negated and the offset moved.
 UvTransform gltfTextureTransform(const glm::dvec2& offset, double rotationRadians, const glm::dvec2& scale);
+
+// A glTF sampler's numbers (glTF 2.0 section 5.26: magFilter, minFilter, wrapS, wrapT; the
+// WebGL enum values) as a TextureSampler: an absent (-1) or unknown filter is Auto, an unknown
+// wrap Repeat (glTF's default). gltfSamplerValues() gives them back {magFilter, minFilter, wrapS,
+// wrapT}, -1 for an Auto filter (left out of the file: the reader's choice, as Auto is Facet's).
+TextureSampler textureSamplerFromGltf(int magFilter, int minFilter, int wrapS, int wrapT);
+std::array<int, 4> gltfSamplerValues(const TextureSampler& sampler);
 
 } // namespace facet

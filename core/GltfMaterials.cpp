@@ -114,10 +114,14 @@ bool readTexture(const tinygltf::Model& model, int textureIndex, int texCoord, c
         return false;
     map.path = imagePath(model, image, assetPath, notes);
 
+    // No sampler: repeat, filters left to the implementation (glTF 2.0 section 3.8.4).
     if (texture.sampler >= 0 && std::size_t(texture.sampler) < model.samplers.size()) {
         const tinygltf::Sampler& sampler = model.samplers[std::size_t(texture.sampler)];
-        if (sampler.wrapS != TINYGLTF_TEXTURE_WRAP_REPEAT || sampler.wrapT != TINYGLTF_TEXTURE_WRAP_REPEAT)
-            notes.add("a texture asks for clamped or mirrored wrapping: Facet repeats textures");
+        map.sampler
+            = textureSamplerFromGltf(sampler.magFilter, sampler.minFilter, sampler.wrapS, sampler.wrapT);
+    } else if (texture.sampler >= 0) {
+        notes.add(where + " names sampler " + std::to_string(texture.sampler)
+            + ", which does not exist: the default sampler is used");
     }
     int set = texCoord;
     const auto transform = extensions.find("KHR_texture_transform");
@@ -144,8 +148,12 @@ bool readTexture(const tinygltf::Model& model, int textureIndex, int texCoord, c
         else
             map.uv = gltfTextureTransform(offset, rotation, scale);
     }
-    if (set != 0)
-        notes.add("a texture reads texture coordinate set " + std::to_string(set) + ": Facet reads set 0");
+    if (set == 0 || set == 1) {
+        map.texCoord = set;
+    } else {
+        notes.add(where + " reads texture coordinate set " + std::to_string(set)
+            + ": Facet reads sets 0 and 1, and reads set 0");
+    }
     return true;
 }
 
@@ -188,6 +196,8 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
             MaterialMap& map = m.map(slot);
             map.path = packed.path;
             map.uv = packed.uv;
+            map.texCoord = packed.texCoord;
+            map.sampler = packed.sampler;
             map.colorSpace = ColorEncoding::Linear;
             map.channel = slot == MapSlot::Metallic ? MapChannel::B : MapChannel::G;
         }

@@ -214,6 +214,9 @@ Image renderGroundTruth(const GroundTruthScene& scene, const GroundTruthSettings
                     const std::uint64_t stream = std::uint64_t(y) * std::uint64_t(settings.width) + std::uint64_t(x);
                     radiance = integrateOutgoingRadiance(scene, brdf, sampler, *hit, -direction,
                                                          settings.samplesPerPixel, settings.seed, stream, settings.lobes);
+                } else if (scene.transparentBackground) {
+                    image.at(x, y) = glm::vec4(0.0f);
+                    continue;
                 } else {
                     radiance = scene.environment.radiance(direction);
                 }
@@ -264,6 +267,7 @@ std::optional<GroundTruthScene> groundTruthSceneFromProject(const Project& proje
     scene.alphaMode = material.alphaMode;
     scene.alphaCutoff = material.alphaCutoff;
     scene.unlit = material.unlit;
+    scene.transparentBackground = project.view.background == BackgroundMode::Transparent;
     scene.material.metallic = material.metallic();
     scene.material.perceptualRoughness = material.roughness();
     scene.material.ior = material.ior;

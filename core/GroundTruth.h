@@ -51,6 +51,9 @@ struct GroundTruthScene {
     // KHR_materials_unlit: the hit's radiance is material.baseColor, nothing integrated (the
     // shader's MATERIAL_UNLIT twin).
     bool unlit = false;
+    // BackgroundMode::Transparent: pixels that miss the sphere are (0, 0, 0, 0) instead of the
+    // environment, so alpha is the object's coverage.
+    bool transparentBackground = false;
     Environment environment; // must not be empty
     std::vector<Light> lights;
 };
@@ -64,7 +67,7 @@ struct GroundTruthStats {
 std::shared_ptr<const DfgTable> albedoTable(int size, int samples, Visibility visibility);
 
 // Renders linear radiance (alpha 1). Background pixels show the environment (bilinear), as the
-// real-time renderer's reference view does.
+// real-time renderer's reference view does, or nothing with alpha 0 (transparentBackground).
 Image renderGroundTruth(const GroundTruthScene& scene, const GroundTruthSettings& settings,
                         GroundTruthStats* stats = nullptr);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 #include <utility>
 
 #include "core/EnumNames.h"
@@ -21,6 +22,14 @@ constexpr std::pair<MapChannel, const char*> kChannels[] = {{MapChannel::Rgb, "r
     {MapChannel::G, "g"}, {MapChannel::B, "b"}, {MapChannel::A, "a"}};
 constexpr std::pair<ColorEncoding, const char*> kEncodings[]
     = {{ColorEncoding::SRGB, "srgb"}, {ColorEncoding::Linear, "linear"}};
+constexpr std::pair<TextureWrap, const char*> kWraps[] = {{TextureWrap::Repeat, "repeat"},
+    {TextureWrap::ClampToEdge, "clampToEdge"}, {TextureWrap::MirroredRepeat, "mirroredRepeat"}};
+constexpr std::pair<TextureFilter, const char*> kFilters[]
+    = {{TextureFilter::Auto, "auto"}, {TextureFilter::Nearest, "nearest"}, {TextureFilter::Linear, "linear"},
+        {TextureFilter::NearestMipmapNearest, "nearestMipmapNearest"},
+        {TextureFilter::LinearMipmapNearest, "linearMipmapNearest"},
+        {TextureFilter::NearestMipmapLinear, "nearestMipmapLinear"},
+        {TextureFilter::LinearMipmapLinear, "linearMipmapLinear"}};
 
 std::string number(double value)
 {
@@ -78,6 +87,15 @@ bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
     }
     if (!std::isfinite(map.uv.rotationDegrees))
         return fail(key + ".uv.rotationDegrees: must be finite", problem);
+    if (map.texCoord < 0 || map.texCoord >= kTexCoordSets)
+        return fail(
+            key + ".texCoord: " + std::to_string(map.texCoord) + " is not a texture-coordinate set (0 or 1)",
+            problem);
+    const TextureFilter mag = map.sampler.magFilter;
+    if (mag != TextureFilter::Auto && mag != TextureFilter::Nearest && mag != TextureFilter::Linear)
+        return fail(key + ".sampler.magFilter: \"" + std::string(toString(mag))
+                + "\" is a minification filter (magnification is \"auto\", \"nearest\" or \"linear\")",
+            problem);
     return true;
 }
 } // namespace
@@ -113,6 +131,23 @@ const char* toString(ColorEncoding encoding)
 std::optional<ColorEncoding> colorEncodingFromString(std::string_view name)
 {
     return enumFromName(kEncodings, name);
+}
+
+const char* toString(TextureWrap wrap)
+{
+    return enumName(kWraps, wrap);
+}
+std::optional<TextureWrap> textureWrapFromString(std::string_view name)
+{
+    return enumFromName(kWraps, name);
+}
+const char* toString(TextureFilter filter)
+{
+    return enumName(kFilters, filter);
+}
+std::optional<TextureFilter> textureFilterFromString(std::string_view name)
+{
+    return enumFromName(kFilters, name);
 }
 
 glm::dmat3 UvTransform::matrix() const

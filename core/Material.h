@@ -86,6 +86,41 @@ struct UvTransform {
     bool operator==(const UvTransform&) const = default;
 };
 
+// How a texture is read beyond [0, 1] and between texels: glTF 2.0's sampler (section 3.8.4,
+// "Samplers"), per map. Auto filters are Facet's choice, which is also what glTF leaves to the
+// implementation when the sampler says nothing: linear magnification, trilinear (the View's
+// setting) and anisotropic minification.
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+const char* toString(TextureWrap wrap); // "repeat", "clampToEdge", "mirroredRepeat"
+std::optional<TextureWrap> textureWrapFromString(std::string_view name);
+enum class TextureFilter {
+    Auto,
+    Nearest,
+    Linear,
+    // Minification only:
+    NearestMipmapNearest,
+    LinearMipmapNearest,
+    NearestMipmapLinear,
+    LinearMipmapLinear,
+};
+// "auto", "nearest", "linear", "nearestMipmapNearest", "linearMipmapNearest",
+// "nearestMipmapLinear", "linearMipmapLinear".
+const char* toString(TextureFilter filter);
+std::optional<TextureFilter> textureFilterFromString(std::string_view name);
+
+struct TextureSampler {
+    TextureWrap wrapS = TextureWrap::Repeat; // along u
+    TextureWrap wrapT = TextureWrap::Repeat; // along v
+    TextureFilter magFilter = TextureFilter::Auto; // Auto, Nearest or Linear
+    TextureFilter minFilter = TextureFilter::Auto;
+
+    bool isDefault() const { return *this == TextureSampler {}; }
+    bool operator==(const TextureSampler&) const = default;
+};
+
+// Texture-coordinate sets a map can read (glTF textureInfo.texCoord: TEXCOORD_0, TEXCOORD_1).
+inline constexpr int kTexCoordSets = 2;
+
 struct MaterialMap {
     std::string path; // texture file (absolute in memory); empty: none, the factor alone
     glm::dvec4 factor {1.0}; // see the table at the top of this file
@@ -94,6 +129,8 @@ struct MaterialMap {
     bool invert = false; // scalar maps: use 1 - value (e.g. a smoothness or gloss map as roughness)
     bool flipGreen = false; // normal map only: DirectX convention (-Y green); Facet's is OpenGL (+Y)
     UvTransform uv;
+    int texCoord = 0; // which texture-coordinate set the map reads: 0 or 1 (core/Mesh.h Vertex::uv, uv1)
+    TextureSampler sampler;
 
     bool hasTexture() const { return !path.empty(); }
     bool operator==(const MaterialMap&) const = default;

@@ -116,32 +116,53 @@ glm::dvec4 texelValue(const MapImage& image, int x, int rowFromBottom, ColorEnco
 
 namespace {
 
-int wrap(int i, int size)
+// The texel index that integer texel coordinate `t` (a whole number, any magnitude) reads under
+// `wrap`: OpenGL 4.6, section 8.14.2, table 8.20. In double so that a coordinate far outside the
+// image (a UV scale of 10^6) wraps instead of overflowing an int.
+int wrapTexel(double t, int size, TextureWrap wrap)
 {
-    const int r = i % size;
-    return r < 0 ? r + size : r;
+    const double n = double(size);
+    switch (wrap) {
+    case TextureWrap::ClampToEdge:
+        return int(std::clamp(t, 0.0, n - 1.0));
+    case TextureWrap::MirroredRepeat: {
+        double m = std::fmod(t, 2.0 * n);
+        if (m < 0.0)
+            m += 2.0 * n;
+        return int(m < n ? m : 2.0 * n - 1.0 - m);
+    }
+    case TextureWrap::Repeat:
+        break;
+    }
+    double r = std::fmod(t, n);
+    if (r < 0.0)
+        r += n;
+    return int(r);
 }
 
 } // namespace
 
-glm::dvec4 sampleTexture(const MapImage& image, ColorEncoding colorSpace, const glm::dvec2& uv)
+glm::dvec4 sampleTexture(
+    const MapImage& image, ColorEncoding colorSpace, const glm::dvec2& uv, const TextureSampler& sampler)
 {
     if (image.isEmpty())
         return glm::dvec4(0.0, 0.0, 0.0, 1.0);
     const int width = image.width();
     const int height = image.height();
-    // Texel space with centres at integers; t = 0 is the bottom row, MapImage's row 0.
+    const auto at = [&](double tx, double ty) {
+        return texelValue(
+            image, wrapTexel(tx, width, sampler.wrapS), wrapTexel(ty, height, sampler.wrapT), colorSpace);
+    };
+    // NEAREST: the texel the point falls in (t = 0 is the bottom row, MapImage's row 0).
+    if (sampler.magFilter == TextureFilter::Nearest)
+        return at(std::floor(uv.x * width), std::floor(uv.y * height));
+    // LINEAR: texel space with centres at integers.
     const double x = uv.x * width - 0.5;
     const double y = uv.y * height - 0.5;
     const double x0 = std::floor(x);
     const double y0 = std::floor(y);
     const double fx = x - x0;
     const double fy = y - y0;
-    const auto at = [&](double tx, double ty) {
-        const int column = wrap(int(std::fmod(tx, double(width))), width);
-        const int row = wrap(int(std::fmod(ty, double(height))), height);
-        return texelValue(image, column, row, colorSpace);
-    };
     // At a texel centre the bilinear weights are (1, 0, 0, 0): the texel itself, exactly (a
     // texture-set export of a map at its own size reads only centres).
     if (fx == 0.0 && fy == 0.0)
@@ -151,7 +172,19 @@ glm::dvec4 sampleTexture(const MapImage& image, ColorEncoding colorSpace, const 
     return glm::mix(bottom, top, fy);
 }
 
+glm::dvec4 sampleMap(const MaterialMap& map, const MapImage& image, const TexCoords& uvs)
+{
+    return sampleTexture(
+        image, map.colorSpace, map.uv.apply(uvs[std::size_t(std::clamp(map.texCoord, 0, 1))]), map.sampler);
+}
+
 MaterialInfo materialInputs(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv,
+    const glm::dvec4& vertexColor)
+{
+    return materialInputs(material, images, TexCoords {uv, uv}, vertexColor);
+}
+
+MaterialInfo materialInputs(const Material& material, const MaterialMapImages& images, const TexCoords& uvs,
     const glm::dvec4& vertexColor)
 {
     const auto read = [&](MapSlot slot) -> std::optional<glm::dvec4> {
@@ -159,7 +192,7 @@ MaterialInfo materialInputs(const Material& material, const MaterialMapImages& i
         const MaterialMap& map = material.map(slot);
         if (!image || image->isEmpty() || !map.hasTexture())
             return std::nullopt;
-        return sampleTexture(*image, map.colorSpace, map.uv.apply(uv));
+        return sampleMap(map, *image, uvs);
     };
 
     MaterialInfo m;

@@ -6,13 +6,15 @@
 //
 // Texture reads follow OpenGL's rules for the textures render/TextureCache makes: uv (0, 0) is the
 // map's first texel (core/MapImage.h stores rows bottom to top), texel centres sit at
-// (i + 0.5) / size, wrap mode REPEAT, bilinear between the four nearest texels of level 0, each
+// (i + 0.5) / size, wrapped as the map's sampler says (REPEAT by default), bilinear between the
+// four nearest texels of level 0 (or the nearest one, for a NEAREST magnification filter), each
 // texel as the texture holds it: 8- and 16-bit samples normalised, half samples as they are, grey
 // and grey + alpha expanded as the swizzle does (MapImage::texel). An sRGB-encoded 8-bit map is
 // decoded per texel before filtering, as GL_SRGB8(_ALPHA8) does (the sRGB specification's
 // intent); a 16-bit or float map read as sRGB holds the decoded value as a half float
 // (MapImage::linearHalfFromSrgb), as the upload makes it.
-// Mipmapping is not modelled: compare where the GPU magnifies or the texture is smooth.
+// Mipmapping (the sampler's minification filter) is not modelled: compare where the GPU magnifies
+// or the texture is smooth.
 
 #include <optional>
 #include <array>
@@ -57,15 +59,28 @@ glm::dvec3 shadingNormal(const glm::dvec3& ng, const glm::dvec4& tangent, const 
 // and alpha (see the top of this file).
 glm::dvec4 texelValue(const MapImage& image, int x, int rowFromBottom, ColorEncoding colorSpace);
 
-// Bilinear, repeating read of level 0 at `uv` (see the top of this file); sRGB-encoded images are
-// decoded to linear RGB (alpha stays as it is). An empty image reads (0, 0, 0, 1).
-glm::dvec4 sampleTexture(const MapImage& image, ColorEncoding colorSpace, const glm::dvec2& uv);
+// A read of level 0 at `uv` as `sampler` wraps and magnifies (see the top of this file);
+// sRGB-encoded images are decoded to linear RGB (alpha stays as it is). An empty image reads
+// (0, 0, 0, 1).
+glm::dvec4 sampleTexture(const MapImage& image, ColorEncoding colorSpace, const glm::dvec2& uv,
+    const TextureSampler& sampler = {});
 
-// The material's inputs at texture coordinate `uv` (before any UV transform: each map applies its
-// own, core/Material.h UvTransform): base colour and its alpha, metallic, perceptual roughness
-// (clamped to [0, 1]), occlusion (glTF strength mix), emitted radiance and IOR (GLSL materialInputs).
-// `vertexColor`: the interpolated glTF COLOR_0 (core/Mesh.h Vertex::color), which multiplies the
-// base colour and alpha as the shader's HAS_VERTEX_COLOR does; white for a mesh without one.
+// A surface point's texture coordinates, per set (TEXCOORD_0, TEXCOORD_1: core/Mesh.h Vertex::uv,
+// uv1), before any map's UV transform.
+using TexCoords = std::array<glm::dvec2, kTexCoordSets>;
+
+// `map`'s texel at the point: its set of `uvs`, its UV transform, its colour space and sampler
+// (GLSL texture(u*Map, mapUv(slot))).
+glm::dvec4 sampleMap(const MaterialMap& map, const MapImage& image, const TexCoords& uvs);
+
+// The material's inputs at texture coordinates `uvs` (before any UV transform: each map reads its
+// own set and applies its own core/Material.h UvTransform): base colour and its alpha, metallic, perceptual
+// roughness (clamped to [0, 1]), occlusion (glTF strength mix), emitted radiance and IOR (GLSL
+// materialInputs). `vertexColor`: the interpolated glTF COLOR_0 (core/Mesh.h Vertex::color), which multiplies
+// the base colour and alpha as the shader's HAS_VERTEX_COLOR does; white for a mesh without one.
+MaterialInfo materialInputs(const Material& material, const MaterialMapImages& images, const TexCoords& uvs,
+    const glm::dvec4& vertexColor = glm::dvec4(1.0));
+// The same where both sets are `uv` (a texture set, a swatch: one parameterisation).
 MaterialInfo materialInputs(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv,
     const glm::dvec4& vertexColor = glm::dvec4(1.0));
 

@@ -64,8 +64,7 @@ Image SwatchRenderer::render(const Material& material, const MaterialMapImages& 
                 glm::dvec3 n = ng;
                 if (normalMapped) {
                     const glm::dvec4 tangent(std::sin(phi), 0.0, -std::cos(phi), 1.0);
-                    n = shadingNormal(ng, tangent,
-                        sampleTexture(*normalImage, normalMap.colorSpace, normalMap.uv.apply(uv)),
+                    n = shadingNormal(ng, tangent, sampleMap(normalMap, *normalImage, TexCoords {uv, uv}),
                         material.normalStrength(), normalMap.flipGreen);
                 }
                 const MaterialInfo inputs = materialInputs(material, images, uv);

@@ -162,6 +162,8 @@ bool Mesh::validate(std::string* problem) const
             return vertexProblem(i, "position is not finite");
         if (!isFinite(v.normal) || std::abs(glm::length(v.normal) - 1.0f) > kUnitTolerance)
             return vertexProblem(i, "normal " + vec3Text(v.normal) + " is not unit length");
+        if (hasTexCoord1 && !isFinite(v.uv1))
+            return vertexProblem(i, "second UV (TEXCOORD_1) is not finite");
         if (hasUvs && !isFinite(v.uv))
             return vertexProblem(i, "UV is not finite");
         if (hasTangents) {

@@ -31,6 +31,9 @@ struct Vertex {
     // (glTF convention: bitangent = cross(normal, tangent.xyz) * w).
     glm::vec4 tangent {1.0f, 0.0f, 0.0f, 1.0f};
     glm::vec2 uv {0.0f};
+    // The second texture-coordinate set (glTF TEXCOORD_1, a mesh's lightmap or occlusion UVs),
+    // read by maps whose texCoord is 1; meaningful where Mesh::hasTexCoord1, else a copy of uv.
+    glm::vec2 uv1 {0.0f};
     // Linear RGBA that multiplies the base colour and its alpha (glTF COLOR_0), in 16-bit fixed
     // point (value / 65535): white where the file has none. Eight bytes, not sixteen: at 50 M
     // vertices a float vec4 would cost another 400 MB for a rarely used attribute.
@@ -78,6 +81,7 @@ public:
     bool hasUvs = false; // the UVs mean something (from the file, a primitive, or generated)
     bool uvsGenerated = false; // they were made by generateUvs() because the file had none
     bool hasTangents = false; // tangents are valid (from the file or generated from the UVs)
+    bool hasTexCoord1 = false; // some vertex's uv1 is the file's (glTF TEXCOORD_1)
     bool hasVertexColors = false; // some vertex's color is the file's (glTF COLOR_0): the shader reads them
 
     std::size_t triangleCount() const { return indices.size() / 3; }

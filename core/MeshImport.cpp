@@ -109,6 +109,9 @@ PartInfo appendInstance(Mesh& out, const Instance& instance, std::size_t index)
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
     const bool mirrored = glm::determinant(linear) < 0.0f;
     const bool hasUvs = in.mTextureCoords[0] != nullptr;
+    const bool hasUv1 = hasUvs && in.mTextureCoords[1] != nullptr;
+    if (hasUv1)
+        out.hasTexCoord1 = true;
     const bool hasTangents = in.mTangents != nullptr && in.mBitangents != nullptr && in.mNormals != nullptr;
 
     SubMesh sub;
@@ -123,6 +126,7 @@ PartInfo appendInstance(Mesh& out, const Instance& instance, std::size_t index)
         v.normal = in.mNormals ? normalizedOrZero(normalMatrix * toGlm(in.mNormals[i])) : glm::vec3(0.0f);
         if (hasUvs)
             v.uv = {in.mTextureCoords[0][i].x, in.mTextureCoords[0][i].y};
+        v.uv1 = hasUv1 ? glm::vec2(in.mTextureCoords[1][i].x, in.mTextureCoords[1][i].y) : v.uv;
         if (hasTangents) {
             const glm::vec3 t = linear * toGlm(in.mTangents[i]);
             const glm::vec3 b = linear * toGlm(in.mBitangents[i]);

@@ -36,7 +36,7 @@ constexpr std::pair<DisplayEncoding, const char*> kDisplayEncodings[]
     = {{DisplayEncoding::SRGB, "srgb"}, {DisplayEncoding::Gamma, "gamma"}};
 constexpr std::pair<BackgroundMode, const char*> kBackgroundModes[]
     = {{BackgroundMode::Environment, "environment"}, {BackgroundMode::Blurred, "blurred"},
-        {BackgroundMode::Color, "color"}};
+        {BackgroundMode::Color, "color"}, {BackgroundMode::Transparent, "transparent"}};
 constexpr std::pair<IblQuality, const char*> kIblQualities[]
     = {{IblQuality::Draft, "draft"}, {IblQuality::Default, "default"}, {IblQuality::High, "high"}};
 constexpr std::pair<IblMethod, const char*> kIblMethods[]
@@ -73,6 +73,11 @@ constexpr Visibility kAllVisibilities[]
     = {Visibility::SmithGGXCorrelated, Visibility::SmithGGXUncorrelated, Visibility::SchlickGGX};
 constexpr Fresnel kAllFresnels[] = {Fresnel::Schlick, Fresnel::Dielectric};
 constexpr AlphaMode kAllAlphaModes[] = {AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend};
+constexpr TextureWrap kAllWraps[]
+    = {TextureWrap::Repeat, TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat};
+constexpr TextureFilter kAllFilters[] = {TextureFilter::Auto, TextureFilter::Nearest, TextureFilter::Linear,
+    TextureFilter::NearestMipmapNearest, TextureFilter::LinearMipmapNearest,
+    TextureFilter::NearestMipmapLinear, TextureFilter::LinearMipmapLinear};
 constexpr DielectricCoupling kAllCouplings[]
     = {DielectricCoupling::FresnelMix, DielectricCoupling::EnergyPreserving};
 
@@ -128,6 +133,16 @@ QJsonObject mapToJson(
     if (slot == MapSlot::Normal)
         o[QLatin1String("flipGreen")] = map.flipGreen;
     o[QLatin1String("uv")] = uvToJson(map.uv);
+    // Written only where they say something: most maps read set 0 with the default sampler.
+    if (map.texCoord != 0)
+        o[QLatin1String("texCoord")] = map.texCoord;
+    if (!map.sampler.isDefault())
+        o[QLatin1String("sampler")] = QJsonObject {
+            {QLatin1String("wrapS"), QLatin1String(toString(map.sampler.wrapS))},
+            {QLatin1String("wrapT"), QLatin1String(toString(map.sampler.wrapT))},
+            {QLatin1String("magFilter"), QLatin1String(toString(map.sampler.magFilter))},
+            {QLatin1String("minFilter"), QLatin1String(toString(map.sampler.minFilter))},
+        };
     return o;
 }
 
@@ -165,6 +180,15 @@ void readMap(Messages& messages, MapSlot slot, const QJsonObject& object, const 
         u.vec2("offset", map.uv.offset);
         u.number("rotationDegrees", map.uv.rotationDegrees);
         u.warnAboutUnknownKeys();
+    }
+    r.integer("texCoord", map.texCoord);
+    if (const std::optional<QJsonObject> sampler = r.object("sampler")) {
+        ObjectReader s(messages, *sampler, r.pathOf("sampler"));
+        readEnum(s, "wrapS", map.sampler.wrapS, kAllWraps);
+        readEnum(s, "wrapT", map.sampler.wrapT, kAllWraps);
+        readEnum(s, "magFilter", map.sampler.magFilter, kAllFilters);
+        readEnum(s, "minFilter", map.sampler.minFilter, kAllFilters);
+        s.warnAboutUnknownKeys();
     }
     r.warnAboutUnknownKeys();
 }
@@ -266,6 +290,7 @@ QJsonObject viewToJson(const ViewSettings& view, const std::string& baseDir)
     o[QLatin1String("ocioView")] = qs(view.ocioView);
     o[QLatin1String("debugView")] = qs(view.debugView);
     o[QLatin1String("mesh")] = qs(json::storedSpec(view.mesh, baseDir));
+    o[QLatin1String("keepUnits")] = view.keepUnits;
     o[QLatin1String("msaaSamples")] = view.msaaSamples;
     o[QLatin1String("background")] = QLatin1String(toString(view.background));
     o[QLatin1String("backgroundColor")] = toArray(view.backgroundColor);
@@ -287,6 +312,7 @@ void readView(Messages& messages, const QJsonObject& object, const std::string& 
     std::string mesh = view.mesh;
     r.string("mesh", mesh);
     view.mesh = json::resolvedSpec(mesh, baseDir);
+    r.boolean("keepUnits", view.keepUnits);
     r.integer("msaaSamples", view.msaaSamples);
     r.enumeration("background", view.background, kBackgroundModes);
     r.vec3("backgroundColor", view.backgroundColor);

@@ -41,8 +41,10 @@ const char* toString(DisplayEncoding value); // "srgb" (the piecewise IEC 61966-
 std::optional<DisplayEncoding> displayEncodingFromString(std::string_view name);
 
 // What pixels that miss the mesh show.
-enum class BackgroundMode { Environment, Blurred, Color };
-const char* toString(BackgroundMode value); // "environment", "blurred", "color"
+// Transparent: the background is radiance 0 with alpha 0, so an image written with alpha has
+// the object's coverage there (PNG straight alpha, EXR premultiplied); the viewport shows black.
+enum class BackgroundMode { Environment, Blurred, Color, Transparent };
+const char* toString(BackgroundMode value); // "environment", "blurred", "color", "transparent"
 std::optional<BackgroundMode> backgroundModeFromString(std::string_view name);
 
 // The IBL precompute quality preset (sizes and sample counts are render/'s, chosen on the
@@ -86,6 +88,10 @@ struct ViewSettings {
     std::string debugView = "none"; // a debug view name, core/DebugView.h ("none": the shaded image)
     // "sphere" (a built-in mesh name: lower-case letters, digits, '-') or a mesh file path.
     std::string mesh = "sphere";
+    // False: the mesh is centred and scaled to the unit bounding sphere, which every built-in
+    // camera frames (docs/meshes.md). True: the asset's own units and origin, for a camera given
+    // in asset space (a glTF scene's, the render-fidelity harness's).
+    bool keepUnits = false;
     int msaaSamples = 4; // 1 (off), 2, 4, 8 or 16
     BackgroundMode background = BackgroundMode::Environment;
     glm::dvec3 backgroundColor {0.18}; // linear Rec.709, >= 0, for BackgroundMode::Color

@@ -41,10 +41,12 @@ std::string materialLabel(const Project& project, std::size_t material)
 
 } // namespace
 
-std::optional<Mesh> loadViewMesh(const std::string& nameOrPath, std::string* error, std::string* warning)
+std::optional<Mesh> loadViewMesh(
+    const std::string& nameOrPath, std::string* error, std::string* warning, bool keepUnits)
 {
     if (auto primitive = makePrimitive(nameOrPath)) {
-        primitive->normalizeToUnitSphere();
+        if (!keepUnits)
+            primitive->normalizeToUnitSphere();
         return primitive;
     }
     const std::optional<std::string> file = AssetLibrary::fileForSpec(nameOrPath, "loadViewMesh", error);
@@ -65,7 +67,8 @@ std::optional<Mesh> loadViewMesh(const std::string& nameOrPath, std::string* err
         }
         return std::nullopt;
     }
-    mesh->normalizeToUnitSphere();
+    if (!keepUnits)
+        mesh->normalizeToUnitSphere();
     return mesh;
 }
 
@@ -92,7 +95,7 @@ std::optional<ProjectAssets> loadProjectAssets(
     environment->setIntensity(project.environment.intensity);
     assets.environment = std::move(*environment);
 
-    auto mesh = cache.mesh(project.view.mesh, &problem, warning);
+    auto mesh = cache.mesh(project.view.mesh, &problem, warning, project.view.keepUnits);
     if (!mesh) {
         if (error)
             *error = "loadProjectAssets: mesh: " + problem;

@@ -50,8 +50,10 @@ std::optional<ProjectAssets> loadProjectAssets(
 
 // The mesh a view names: a built-in primitive ("sphere", "cube", ...), a mesh file or a library
 // reference ("library:installed/models/bunny.glb", core/AssetLibrary.h), normalised to the unit
-// bounding sphere (the built-in sphere is already the unit sphere of the reference view). A
-// missing library file says how to get it (AssetLibrary::missingFileAdvice).
-std::optional<Mesh> loadViewMesh(const std::string& nameOrPath, std::string* error, std::string* warning = nullptr);
+// bounding sphere (the built-in sphere is already the unit sphere of the reference view), or in
+// the file's own units with `keepUnits` (ViewSettings::keepUnits). A missing library file says how
+// to get it (AssetLibrary::missingFileAdvice).
+std::optional<Mesh> loadViewMesh(const std::string& nameOrPath, std::string* error,
+    std::string* warning = nullptr, bool keepUnits = false);
 
 } // namespace facet

@@ -94,14 +94,13 @@ ExportTexel exportTexel(const Material& material, const MaterialMapImages& image
         texel.emissive = glm::dvec3(material.map(MapSlot::Emissive).factor);
         const MaterialMap& emissiveMap = material.map(MapSlot::Emissive);
         if (const MapImage* image = imageOf(material, images, MapSlot::Emissive))
-            texel.emissive
-                *= glm::dvec3(sampleTexture(*image, emissiveMap.colorSpace, emissiveMap.uv.apply(uv)));
+            texel.emissive *= glm::dvec3(sampleMap(emissiveMap, *image, TexCoords {uv, uv}));
         texel.emissive = glm::max(texel.emissive, glm::dvec3(0.0));
     }
     const MaterialMap& normalMap = material.map(MapSlot::Normal);
     if (const MapImage* image = imageOf(material, images, MapSlot::Normal))
-        texel.normal = tangentSpaceNormal(sampleTexture(*image, normalMap.colorSpace, normalMap.uv.apply(uv)),
-            material.normalStrength(), normalMap.flipGreen);
+        texel.normal = tangentSpaceNormal(
+            sampleMap(normalMap, *image, TexCoords {uv, uv}), material.normalStrength(), normalMap.flipGreen);
     return texel;
 }
 

@@ -126,6 +126,7 @@ bool FrameAccumulator::resolve(Framebuffer& out, std::string* error)
     }
     m_resolveProgram->setInt("uHalfA", 0);
     m_resolveProgram->setInt("uHalfB", 1);
+    m_resolveProgram->setFloat("uTotalSamples", float(m_samples));
     glBindVertexArray(m_vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
@@ -145,8 +146,8 @@ std::optional<FrameAccumulator::Spread> FrameAccumulator::spread() const
             const std::size_t index = std::size_t(y) * std::size_t(m_width) + std::size_t(x);
             const glm::vec4 sa = a.at(x, y);
             const glm::vec4 sb = b.at(x, y);
-            const double na = sa.a;
-            const double nb = sb.a;
+            const double na = m_halfSamples[0];
+            const double nb = m_halfSamples[1];
             if (na <= 0.0 || nb <= 0.0)
                 continue;
             const double weight = na * nb / ((na + nb) * (na + nb));

@@ -1,7 +1,8 @@
 #pragma once
 // Frames of a converging method (IblMethod::Reference) summed into float targets, so that N
 // samples per pixel are the sum of draws of k samples each (docs/rendering.md, "Accumulation").
-// Two half-buffers, A and B, take alternate draws: each texel holds (sum of k * mean, sum of k).
+// Two half-buffers, A and B, take alternate draws: each texel holds the sum of k * mean (alpha,
+// the coverage, included); the sums of k are the same for every texel and kept here.
 // Their mean is the image; their difference estimates its noise [the dual-buffer estimate of
 // Rousselle et al. 2012 and Cycles' adaptive sampling]:
 //     var(mean) ~ |mA - mB|^2 nA nB / (nA + nB)^2
@@ -40,7 +41,8 @@ public:
     // Adds `frame` (same size; each texel the mean of `samples` samples) with weight `samples`,
     // into A or B in turn.
     bool add(const Framebuffer& frame, int samples, std::string* error);
-    // Writes the mean of everything added into `out` (same size; rgb, alpha 1).
+    // Writes the mean of everything added into `out` (same size; rgb and the mean coverage: alpha
+    // 1 where every draw covered the pixel, as with an opaque background).
     bool resolve(Framebuffer& out, std::string* error);
 
     int width() const { return m_width; }

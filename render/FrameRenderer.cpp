@@ -180,7 +180,10 @@ std::optional<Image> FrameRenderer::readBack(
         return hdr.readPixels();
     // The viewport's own display transform, on the GPU.
     Framebuffer* display = target(hdr.width(), hdr.height(), FramebufferFormat::RGBA16F, 1, error);
-    if (!display || !m_renderer->toneMap(hdr, *display, scene.view, error))
+    // A transparent background keeps its alpha: straight, as PNG stores it.
+    if (!display
+        || !m_renderer->toneMap(
+            hdr, *display, scene.view, error, scene.view.background == BackgroundMode::Transparent))
         return std::nullopt;
     Image image = display->readPixels();
     image.setEncoding(ColorEncoding::SRGB);

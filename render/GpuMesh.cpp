@@ -7,8 +7,8 @@
 
 namespace facet {
 
-static_assert(sizeof(Vertex) == 12 * sizeof(float) + 4 * sizeof(std::uint16_t),
-    "GpuMesh assumes core Vertex is 12 packed floats and 4 16-bit colour channels");
+static_assert(sizeof(Vertex) == 14 * sizeof(float) + 4 * sizeof(std::uint16_t),
+    "GpuMesh assumes core Vertex is 14 packed floats and 4 16-bit colour channels");
 
 GpuMesh::GpuMesh(GpuMesh&& other) noexcept
     : m_vao(std::exchange(other.m_vao, 0u))
@@ -74,6 +74,10 @@ bool GpuMesh::update(const Mesh& mesh, std::uint64_t key)
     glVertexAttribPointer(2, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(Vertex, tangent)));
     glEnableVertexAttribArray(3);
     glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(Vertex, uv)));
+    // TEXCOORD_1 (only variants with HAS_TEXCOORD_1 read it).
+    glEnableVertexAttribArray(5);
+    glVertexAttribPointer(
+        5, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<const void*>(offsetof(Vertex, uv1)));
     // COLOR_0 in 16-bit fixed point, read as [0, 1] (only variants with HAS_VERTEX_COLOR use it).
     glEnableVertexAttribArray(4);
     glVertexAttribPointer(

@@ -219,6 +219,7 @@ bool OcioDisplayTransform::compile(std::string* problem)
 
     m_hdrLocation = glGetUniformLocation(m_program, "uHdr");
     m_exposureLocation = glGetUniformLocation(m_program, "uExposureScale");
+    m_straightAlphaLocation = glGetUniformLocation(m_program, "uStraightAlpha");
     // Samplers: unit 0 is the HDR image, the LUTs follow in upload order. Set once: a program
     // keeps its sampler uniforms.
     glUseProgram(m_program);
@@ -240,7 +241,7 @@ bool OcioDisplayTransform::compile(std::string* problem)
     return true;
 }
 
-void OcioDisplayTransform::bind(unsigned hdrTexture, float exposureScale) const
+void OcioDisplayTransform::bind(unsigned hdrTexture, float exposureScale, bool straightAlpha) const
 {
     glUseProgram(m_program);
     glActiveTexture(GL_TEXTURE0);
@@ -251,6 +252,7 @@ void OcioDisplayTransform::bind(unsigned hdrTexture, float exposureScale) const
     }
     glActiveTexture(GL_TEXTURE0);
     glUniform1f(m_exposureLocation, exposureScale);
+    glUniform1i(m_straightAlphaLocation, straightAlpha ? 1 : 0);
     // OCIO's uniforms come from getters (dynamic properties): read them at every draw.
     for (const Uniform& uniform : m_uniforms) {
         if (uniform.location < 0)

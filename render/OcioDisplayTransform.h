@@ -30,7 +30,7 @@ public:
 
     // Uses the program and binds `hdrTexture` to unit 0 (uHdr), the LUTs to the units after it,
     // the exposure scale and OCIO's uniforms. The caller binds the target and draws.
-    void bind(unsigned hdrTexture, float exposureScale) const;
+    void bind(unsigned hdrTexture, float exposureScale, bool straightAlpha = false) const;
 
     // LUT textures uploaded (1D/2D and 3D), for tests and counters.
     int lutTextureCount() const { return int(m_textures.size()); }
@@ -56,6 +56,7 @@ private:
     unsigned m_program = 0;
     int m_hdrLocation = -1;
     int m_exposureLocation = -1;
+    int m_straightAlphaLocation = -1;
 };
 
 } // namespace facet

@@ -168,6 +168,7 @@ SurfaceVariantKey Renderer::variantKeyFor(const RenderScene& scene, int material
         key.features = key.features | SurfaceFeature::IblFis;
     if (scene.analyticSphere)
         key.features = key.features | SurfaceFeature::AnalyticSphereNormal;
+    key.features |= texCoordFeatures(material.material, key.features, scene.mesh && scene.mesh->hasTexCoord1);
     if (scene.mesh && scene.mesh->hasVertexColors)
         key.features = key.features | SurfaceFeature::HasVertexColors;
     if (splitSumSharpLobes(scene, material))
@@ -336,14 +337,16 @@ void Renderer::drawBackground(const RenderScene& scene, const glm::dmat4& view, 
     glDepthMask(GL_FALSE);
     glDisable(GL_BLEND);
     program.use();
-    int mode = 2;
-    if (scene.view.background == BackgroundMode::Environment && env.environmentCubemap)
+    const BackgroundMode background = scene.view.background;
+    const bool transparent = background == BackgroundMode::Transparent;
+    int mode = 2; // a colour: the view's, or nothing at all for a transparent background
+    if (background == BackgroundMode::Environment && env.environmentCubemap)
         mode = 0;
-    else if (scene.view.background != BackgroundMode::Color && env.prefilteredCubemap)
+    else if (background != BackgroundMode::Color && !transparent && env.prefilteredCubemap)
         mode = 1; // blurred, or the sharp environment is missing
     program.setInt("uBackgroundMode", mode);
-    program.setFloat("uBackgroundAlpha", scene.coverageAlpha ? 0.0f : 1.0f);
-    setVec3(program, "uBackgroundColor", scene.view.backgroundColor);
+    program.setFloat("uBackgroundAlpha", scene.coverageAlpha || transparent ? 0.0f : 1.0f);
+    setVec3(program, "uBackgroundColor", transparent ? glm::dvec3(0.0) : scene.view.backgroundColor);
     setMat4(program, "uInverseViewProjection", glm::inverse(projection * view));
     setVec3(program, "uCameraPosition", scene.camera.position);
     glActiveTexture(GL_TEXTURE0 + kEnvironmentUnit);
@@ -488,7 +491,10 @@ void Renderer::setMaterialUniforms(const ShaderProgram& program, const SurfaceVa
         if (uploaded)
             ++m_frame.texturesUploaded;
         glBindTexture(GL_TEXTURE_2D, texture);
+        // The map's wraps and filters (0, the texture's own state, for the default sampler).
+        glBindSampler(GLuint(kMapUnit0 + i), m_textures->samplerFor(map.sampler));
         program.setInt(kMapSamplers[std::size_t(i)], kMapUnit0 + i);
+        program.setInt(IndexedName("uTexCoord", i).c_str(), map.texCoord);
     }
     // The split-sum table of the material's own visibility term (render() checked it is there).
     const DfgLutBinding* dfg = env.dfgLutFor(material.shading.visibility);
@@ -617,11 +623,16 @@ bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, con
     }
     glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
+    // A sampler object bound to a unit overrides the state of any texture bound there later: the
+    // map units are units 0-5, which the other passes use with their textures' own state.
+    for (int i = 0; i < kMapSlotCount; ++i)
+        glBindSampler(GLuint(kMapUnit0 + i), 0);
     glActiveTexture(GL_TEXTURE0);
     return ok;
 }
 
-bool Renderer::toneMap(const Framebuffer& hdr, Framebuffer& output, const ViewSettings& view, std::string* error)
+bool Renderer::toneMap(const Framebuffer& hdr, Framebuffer& output, const ViewSettings& view,
+    std::string* error, bool straightAlpha)
 {
     if (hdr.width() != output.width() || hdr.height() != output.height()) {
         if (error)
@@ -630,17 +641,19 @@ bool Renderer::toneMap(const Framebuffer& hdr, Framebuffer& output, const ViewSe
                 + std::to_string(hdr.width()) + "x" + std::to_string(hdr.height()) + ")";
         return false;
     }
-    return toneMapTo(hdr, output.framebufferId(), view, error);
+    return toneMapTo(hdr, output.framebufferId(), view, error, straightAlpha);
 }
 
-bool Renderer::toneMapTo(const Framebuffer& hdr, unsigned framebuffer, const ViewSettings& view, std::string* error)
+bool Renderer::toneMapTo(const Framebuffer& hdr, unsigned framebuffer, const ViewSettings& view,
+    std::string* error, bool straightAlpha)
 {
     RenderStats pass;
     bool compiled = false;
     bool ok = false;
     {
         StepTimer timer(m_timing, &pass.toneMapMs);
-        ok = m_toneMapping->apply(hdr.colorTexture(), framebuffer, hdr.width(), hdr.height(), view, error, &compiled);
+        ok = m_toneMapping->apply(hdr.colorTexture(), framebuffer, hdr.width(), hdr.height(), view, error,
+            &compiled, straightAlpha);
     }
     pass.programsCompiled = compiled ? 1 : 0;
     pass.drawCalls = ok ? 1 : 0;

@@ -48,10 +48,13 @@ public:
     // (EnvironmentLighting::dfgLutFor): a scene without it is refused before anything is drawn.
     bool render(const RenderScene& scene, Framebuffer& hdrTarget, std::string* error);
 
-    // Display transform of `hdr` into `output` (same size). Writes display-encoded values.
-    bool toneMap(const Framebuffer& hdr, Framebuffer& output, const ViewSettings& view, std::string* error);
+    // Display transform of `hdr` into `output` (same size). Writes display-encoded values, with
+    // straight alpha when `straightAlpha` (ToneMapping::apply), else alpha 1.
+    bool toneMap(const Framebuffer& hdr, Framebuffer& output, const ViewSettings& view, std::string* error,
+        bool straightAlpha = false);
     // The same into any framebuffer (0: the default one, e.g. a widget's), width x height = hdr's size.
-    bool toneMapTo(const Framebuffer& hdr, unsigned framebuffer, const ViewSettings& view, std::string* error);
+    bool toneMapTo(const Framebuffer& hdr, unsigned framebuffer, const ViewSettings& view, std::string* error,
+        bool straightAlpha = false);
 
     // The variant key render() uses for material `materialIndex` of `scene`.
     static SurfaceVariantKey variantKeyFor(const RenderScene& scene, int materialIndex = 0);

@@ -98,7 +98,10 @@ RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets
     if (options.referenceView) {
         scene.camera = Camera::referenceView();
         scene.view.msaaSamples = 1;
-        scene.view.background = BackgroundMode::Environment;
+        // The reference view's background is the environment, as the ground truth's; a
+        // transparent one stays transparent (coverage in alpha, nothing behind).
+        if (project.view.background != BackgroundMode::Transparent)
+            scene.view.background = BackgroundMode::Environment;
         scene.analyticSphere = method != IblMethod::SplitSum && project.view.mesh == "sphere";
         scene.pixelCentres = true;
     }

@@ -35,6 +35,7 @@ constexpr std::array<const char*, kSurfaceFeatureBits> kFeatureDefines = {
     "SPLIT_SUM_SHARP_LOBES",
     "HAS_VERTEX_COLOR",
     "MATERIAL_UNLIT",
+    "HAS_TEXCOORD_1",
 };
 
 } // namespace
@@ -135,9 +136,12 @@ SurfaceFeatures sharedTexelFeatures(const Material& material, SurfaceFeatures fe
     const auto same = [&](MapSlot earlier, MapSlot later) {
         const auto a = std::size_t(earlier);
         const auto b = std::size_t(later);
-        return hasFeature(features, mapFeature(earlier)) && hasFeature(features, mapFeature(later)) && textures[a]
-            && textures[a] == textures[b] && material.maps[a].colorSpace == material.maps[b].colorSpace
-            && material.maps[a].uv == material.maps[b].uv;
+        return hasFeature(features, mapFeature(earlier)) && hasFeature(features, mapFeature(later))
+            && textures[a] && textures[a] == textures[b]
+            && material.maps[a].colorSpace == material.maps[b].colorSpace
+            && material.maps[a].uv == material.maps[b].uv
+            && material.maps[a].texCoord == material.maps[b].texCoord
+            && material.maps[a].sampler == material.maps[b].sampler;
     };
     SurfaceFeatures f = 0;
     if (same(MapSlot::Metallic, MapSlot::Roughness))
@@ -159,6 +163,16 @@ bool samplesOwnTexture(SurfaceFeatures features, MapSlot slot)
         return !hasFeature(features, SurfaceFeature::OcclusionTexelFromMetallic)
             && !hasFeature(features, SurfaceFeature::OcclusionTexelFromRoughness);
     return true;
+}
+
+SurfaceFeatures texCoordFeatures(const Material& material, SurfaceFeatures features, bool meshHasTexCoord1)
+{
+    if (!meshHasTexCoord1)
+        return 0;
+    for (MapSlot slot : kAllMapSlots)
+        if (samplesOwnTexture(features, slot) && material.map(slot).texCoord == 1)
+            return uint32_t(SurfaceFeature::HasTexCoord1);
+    return 0;
 }
 
 std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key)

@@ -71,8 +71,11 @@ enum class SurfaceFeature : uint32_t {
     HasVertexColors = 1u << 24,
     // MATERIAL_UNLIT: KHR_materials_unlit, the base colour is the radiance (Material::unlit).
     Unlit = 1u << 25,
+    // HAS_TEXCOORD_1: a sampled map reads the mesh's second UV set (MaterialMap::texCoord 1 and
+    // Mesh::hasTexCoord1); without it every map reads set 0 and no second UV is interpolated.
+    HasTexCoord1 = 1u << 26,
 };
-inline constexpr int kSurfaceFeatureBits = 26;
+inline constexpr int kSurfaceFeatureBits = 27;
 
 using SurfaceFeatures = uint32_t;
 inline constexpr SurfaceFeatures operator|(SurfaceFeature a, SurfaceFeature b) { return uint32_t(a) | uint32_t(b); }
@@ -97,13 +100,15 @@ SurfaceFeatures surfaceFeaturesFor(const ShadingModel& model);
 SurfaceFeature mapFeature(MapSlot slot);
 // The *TexelFrom* bits for `features` (its Has*Map bits set): a scalar slot whose texture is the
 // same as an earlier scalar slot's (`textures`: the slots' images, null for none; equal pointers
-// are one decoded file, core/MapImageCache.h) in the same colour space and UV transform reads that
-// slot's texel. On llvmpipe each texture fetch of a 2K map costs 7-10% of the untextured frame
-// (docs/benchmarks.md, "Texture maps").
+// are one decoded file, core/MapImageCache.h) in the same colour space, UV set, UV transform and
+// sampler reads that slot's texel. On llvmpipe each texture fetch of a 2K map costs 7-10% of the untextured
+// frame (docs/benchmarks.md, "Texture maps").
 SurfaceFeatures sharedTexelFeatures(const Material& material, SurfaceFeatures features,
                                     const std::array<const void*, kMapSlotCount>& textures);
 // Whether the variant samples the slot's own texture (a Has*Map bit and no *TexelFrom* bit for it).
 bool samplesOwnTexture(SurfaceFeatures features, MapSlot slot);
+// HasTexCoord1 when the mesh has a second UV set and a map the variant samples reads it.
+SurfaceFeatures texCoordFeatures(const Material& material, SurfaceFeatures features, bool meshHasTexCoord1);
 
 // One "#define NAME" per set bit, in bit order, then "DEBUG_VIEW <n>" and "MAX_LIGHTS <n>".
 std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key);

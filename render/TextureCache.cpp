@@ -160,6 +160,9 @@ void TextureCache::clear()
             glDeleteTextures(1, &entry.texture);
     m_textures.clear();
     m_queue.clear();
+    for (const auto& [key, sampler] : m_samplers)
+        glDeleteSamplers(1, &sampler.first);
+    m_samplers.clear();
 }
 
 TextureCache::Key TextureCache::keyFor(const std::shared_ptr<const MapImage>& image, const std::string& path,
@@ -487,6 +490,8 @@ void TextureCache::setMaxAnisotropy(float level)
         glBindTexture(GL_TEXTURE_2D, entry.texture);
         glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY, level);
     }
+    for (const auto& [key, sampler] : m_samplers)
+        applySamplerState(sampler.first, sampler.second);
 }
 
 void TextureCache::setTrilinear(bool trilinear)
@@ -501,6 +506,79 @@ void TextureCache::setTrilinear(bool trilinear)
         glBindTexture(GL_TEXTURE_2D, entry.texture);
         glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, trilinear ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST);
     }
+    for (const auto& [key, sampler] : m_samplers)
+        applySamplerState(sampler.first, sampler.second);
+}
+
+namespace {
+
+GLint glWrap(TextureWrap wrap)
+{
+    switch (wrap) {
+    case TextureWrap::ClampToEdge:
+        return GL_CLAMP_TO_EDGE;
+    case TextureWrap::MirroredRepeat:
+        return GL_MIRRORED_REPEAT;
+    case TextureWrap::Repeat:
+        break;
+    }
+    return GL_REPEAT;
+}
+
+GLint glFilter(TextureFilter filter, GLint autoFilter)
+{
+    switch (filter) {
+    case TextureFilter::Nearest:
+        return GL_NEAREST;
+    case TextureFilter::Linear:
+        return GL_LINEAR;
+    case TextureFilter::NearestMipmapNearest:
+        return GL_NEAREST_MIPMAP_NEAREST;
+    case TextureFilter::LinearMipmapNearest:
+        return GL_LINEAR_MIPMAP_NEAREST;
+    case TextureFilter::NearestMipmapLinear:
+        return GL_NEAREST_MIPMAP_LINEAR;
+    case TextureFilter::LinearMipmapLinear:
+        return GL_LINEAR_MIPMAP_LINEAR;
+    case TextureFilter::Auto:
+        break;
+    }
+    return autoFilter;
+}
+
+} // namespace
+
+void TextureCache::applySamplerState(unsigned id, const TextureSampler& sampler) const
+{
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_S, glWrap(sampler.wrapS));
+    glSamplerParameteri(id, GL_TEXTURE_WRAP_T, glWrap(sampler.wrapT));
+    glSamplerParameteri(id, GL_TEXTURE_MAG_FILTER, glFilter(sampler.magFilter, GL_LINEAR));
+    glSamplerParameteri(id, GL_TEXTURE_MIN_FILTER,
+        glFilter(sampler.minFilter, m_trilinear ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR_MIPMAP_NEAREST));
+    if (m_maxSupportedAnisotropy > 1.0f) {
+        // Anisotropy refines linear mipmapped filtering; a file that asks for nearest texels (pixel
+        // art, lookup tables) or a single level gets none, which would blur what it asked for.
+        const bool linearMips = (sampler.minFilter == TextureFilter::Auto
+                                    || sampler.minFilter == TextureFilter::LinearMipmapLinear)
+            && sampler.magFilter != TextureFilter::Nearest;
+        glSamplerParameterf(id, GL_TEXTURE_MAX_ANISOTROPY, linearMips ? m_anisotropy : 1.0f);
+    }
+}
+
+unsigned TextureCache::samplerFor(const TextureSampler& sampler)
+{
+    if (sampler.isDefault())
+        return 0;
+    const std::array<int, 4> key
+        = {int(sampler.wrapS), int(sampler.wrapT), int(sampler.magFilter), int(sampler.minFilter)};
+    auto found = m_samplers.find(key);
+    if (found != m_samplers.end())
+        return found->second.first;
+    GLuint id = 0;
+    glGenSamplers(1, &id);
+    applySamplerState(id, sampler);
+    m_samplers.emplace(key, std::make_pair(unsigned(id), sampler));
+    return id;
 }
 
 void TextureCache::evictUnused()

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "core/MapImage.h"
+#include "core/Material.h"
 #include "render/MipChain.h"
 
 namespace facet {
@@ -100,6 +101,12 @@ public:
     void setTrilinear(bool trilinear);
     bool trilinear() const { return m_trilinear; }
 
+    // The sampler object of a map's sampler (core/Material.h TextureSampler): its wraps, its
+    // filters (Auto: this cache's trilinear choice and anisotropy, as the textures' own state), or
+    // 0 for the default sampler, which the textures' own state already is. Made once per distinct
+    // sampler and kept in step with setMaxAnisotropy and setTrilinear; needs the context current.
+    unsigned samplerFor(const TextureSampler& sampler);
+
     // Why the last refused image could not be a texture ("TextureCache: <path>: ...").
     const std::string& problem() const { return m_problem; }
 
@@ -145,7 +152,9 @@ private:
     void finish(Entry& entry);
     void removeFromQueue(const Key& key);
 
+    void applySamplerState(unsigned id, const TextureSampler& sampler) const;
     std::map<Key, Entry> m_textures;
+    std::map<std::array<int, 4>, std::pair<unsigned, TextureSampler>> m_samplers;
     std::deque<Key> m_queue; // uploads under way, oldest first
     int m_maxTextureSize = 0;
     float m_maxSupportedAnisotropy = 1.0f; // 1: no anisotropic filtering extension

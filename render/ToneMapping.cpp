@@ -82,7 +82,7 @@ const OcioDisplayTransform* ToneMapping::ocioTransform(
 }
 
 bool ToneMapping::apply(unsigned hdrTexture, unsigned framebuffer, int width, int height,
-    const ViewSettings& view, std::string* error, bool* compiled)
+    const ViewSettings& view, std::string* error, bool* compiled, bool straightAlpha)
 {
     if (compiled)
         *compiled = false;
@@ -117,7 +117,7 @@ bool ToneMapping::apply(unsigned hdrTexture, unsigned framebuffer, int width, in
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     if (ocio) {
-        ocio->bind(hdrTexture, exposureScale);
+        ocio->bind(hdrTexture, exposureScale, straightAlpha);
     } else {
         m_program->use();
         glActiveTexture(GL_TEXTURE0);
@@ -127,6 +127,7 @@ bool ToneMapping::apply(unsigned hdrTexture, unsigned framebuffer, int width, in
         m_program->setInt("uToneMapper", int(view.toneMapper));
         m_program->setInt("uDisplayEncoding", view.displayEncoding == DisplayEncoding::SRGB ? 0 : 1);
         m_program->setFloat("uGamma", float(view.gamma));
+        m_program->setInt("uStraightAlpha", straightAlpha ? 1 : 0);
     }
     glBindVertexArray(m_vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -31,8 +31,11 @@ public:
     // With `view.ocioDisplay` set, the OCIO display/view `view.ocioView` of the config replaces the
     // tone mapper and the encoding (exposure still applies first); an unknown display or view, or a
     // config that failed to load, returns false with "ToneMapping::apply: ..." naming what exists.
+    // `straightAlpha`: the HDR alpha is coverage and its colour premultiplied (a transparent
+    // background, BackgroundMode::Transparent): the output is the unpremultiplied colour's display
+    // transform with that alpha; otherwise alpha is 1.
     bool apply(unsigned hdrTexture, unsigned framebuffer, int width, int height, const ViewSettings& view,
-        std::string* error, bool* compiled = nullptr);
+        std::string* error, bool* compiled = nullptr, bool straightAlpha = false);
 
     // The OCIO config for views that name a display; unset (nullptr): ColorManagement::shared(),
     // i.e. $OCIO or the built-in config.

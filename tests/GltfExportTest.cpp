@@ -11,6 +11,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -120,6 +121,27 @@ class GltfExportTest : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    // One baked texture set has one parameterisation: maps on two UV sets are refused, naming the
+    // material and the map, and nothing is written.
+    void mixedUvSetsAreRefused()
+    {
+        QTemporaryDir dir;
+        Material m = texturedMaterial(dir.path());
+        m.map(MapSlot::Occlusion).texCoord = 1;
+        Mesh mesh = makeSphere(16, 8);
+        mesh.hasTexCoord1 = true;
+        const QString path = dir.filePath(QStringLiteral("out/asset.glb"));
+        GltfExportOptions options;
+        options.binary = true;
+        std::string error;
+        std::vector<std::string> written;
+        QVERIFY(!writeGltfAsset(path.toStdString(), mesh, {}, {m}, options, false, &written, &error));
+        QVERIFY2(QString::fromStdString(error).contains(QStringLiteral(
+                     "material 'Painted Metal': its maps read different texture-coordinate sets")),
+            error.c_str());
+        QVERIFY(!QFileInfo::exists(path));
+    }
+
     void textureTransformRoundTrip()
     {
         // toGltfTextureTransform inverts the importer's conversion.
@@ -138,7 +160,8 @@ private Q_SLOTS:
         QTest::addColumn<QString>("feature");
         QTest::addColumn<bool>("binary");
         for (const char* feature : {"constants", "every map", "shared transform", "different transforms",
-                 "ior", "mask", "blend", "single-sided", "unlit", "two of one name"}) {
+                 "ior", "mask", "blend", "single-sided", "unlit", "two of one name", "samplers",
+                 "second UV set", "second UV set, mesh without it"}) {
             QTest::newRow(qPrintable(QStringLiteral("%1, .gltf").arg(QLatin1String(feature))))
                 << QString::fromLatin1(feature) << false;
             QTest::newRow(qPrintable(QStringLiteral("%1, .glb").arg(QLatin1String(feature))))
@@ -178,6 +201,16 @@ private Q_SLOTS:
                 m.alphaMode = AlphaMode::Blend;
             if (feature == QStringLiteral("single-sided"))
                 m.doubleSided = false;
+            if (feature == QStringLiteral("samplers")) {
+                // Per texture: base colour clamped and nearest; the packed slots agree (mirrored U).
+                m.map(MapSlot::BaseColor).sampler = {TextureWrap::ClampToEdge, TextureWrap::ClampToEdge,
+                    TextureFilter::Nearest, TextureFilter::NearestMipmapNearest};
+                for (const MapSlot slot : {MapSlot::Occlusion, MapSlot::Roughness, MapSlot::Metallic})
+                    m.map(slot).sampler.wrapS = TextureWrap::MirroredRepeat;
+            }
+            if (feature.startsWith(QStringLiteral("second UV set")))
+                for (const MapSlot slot : kAllMapSlots)
+                    m.map(slot).texCoord = 1;
             if (feature == QStringLiteral("unlit")) {
                 m.unlit = true;
                 m.emissiveStrength = 1.0; // an unlit material writes no other material extension
@@ -192,6 +225,11 @@ private Q_SLOTS:
         }
         Mesh mesh = makeSphere(16, 8);
         mesh.name = "Ball";
+        if (feature == QStringLiteral("second UV set")) {
+            mesh.hasTexCoord1 = true;
+            for (Vertex& v : mesh.vertices)
+                v.uv1 = 0.5f * v.uv + glm::vec2(0.25f);
+        }
         std::vector<int> parts;
         if (materials.size() == 2) {
             // Two parts: the upper and lower halves of the index buffer.
@@ -243,8 +281,27 @@ private Q_SLOTS:
             QCOMPARE(b.unlit, a.unlit);
             QVERIFY(std::abs(b.ior - a.ior) < 1e-9);
             QVERIFY(std::abs(b.emissiveStrength - a.emissiveStrength) < 1e-9);
-            for (const MapSlot slot : kAllMapSlots)
+            for (const MapSlot slot : kAllMapSlots) {
                 QCOMPARE(b.map(slot).hasTexture(), a.map(slot).hasTexture());
+                if (!a.map(slot).hasTexture())
+                    continue;
+                // The sampler and the UV set come back (set 1 only where the mesh has one).
+                QVERIFY2(b.map(slot).sampler == a.map(slot).sampler, toString(slot));
+                QCOMPARE(b.map(slot).texCoord, mesh.hasTexCoord1 ? a.map(slot).texCoord : 0);
+            }
+            if (mesh.hasTexCoord1) {
+                // TEXCOORD_1 itself: each vertex's second set as it went out.
+                const std::optional<GltfAsset> asset = importGltf(path.toStdString(), &error);
+                QVERIFY2(asset, error.c_str());
+                QVERIFY(asset->mesh.hasTexCoord1);
+                for (const Vertex& v : asset->mesh.vertices)
+                    QVERIFY2(glm::length(v.uv1 - (0.5f * v.uv + glm::vec2(0.25f))) < 1e-5f,
+                        qPrintable(QStringLiteral("uv (%1, %2), uv1 (%3, %4)")
+                                       .arg(v.uv.x)
+                                       .arg(v.uv.y)
+                                       .arg(v.uv1.x)
+                                       .arg(v.uv1.y)));
+            }
 
             // The inputs at every texel centre of the 16x8 maps.
             const Loaded mapsA = loadMaps(a);

@@ -2,8 +2,8 @@
 // `facet render ASSET.glb --reference-view` opens them (core/AssetProject projectFromAsset, then
 // the command's own render path, support/ReferenceViewRenderer::renderAsCommand), and checked in
 // the rendered image, not only in the loaded data: factors, the packed metallic-roughness texture,
-// occlusion strength, emissive with its strength, KHR_texture_transform, two materials side by
-// side, alpha MASK and BLEND, a hidden part, single-sided culling.
+// occlusion strength, emissive with its strength, KHR_texture_transform, a map on TEXCOORD_1, two
+// materials side by side, alpha MASK and BLEND, a hidden part, single-sided culling.
 //
 // The meshes are quads in the XY plane facing +Z; the view normalises them to the unit sphere, so
 // a quad spanning [-1, 1]^2 covers the middle 36 x 36 pixels of the 64 x 64 reference view.
@@ -100,6 +100,7 @@ private Q_SLOTS:
     void packedTextureOcclusionAndEmissive();
     void textureTransformPicksTheQuadrant_data();
     void textureTransformPicksTheQuadrant();
+    void secondUvSetFeedsItsMap();
     void twoMaterialsSideBySide();
     void vertexColorsMultiplyTheBaseColour();
     void unlitShowsTheBaseColour();
@@ -275,6 +276,29 @@ void GltfRenderGLTest::textureTransformPicksTheQuadrant()
     // Pixels near the centre read the middle of one quadrant (uv' = offset + 0.25 +- a little).
     for (const auto& [x, y] : {std::pair {32, 32}, std::pair {28, 28}, std::pair {36, 36}})
         expectPixel(*image, x, y, {expected[0], expected[1], expected[2]}, 2e-3);
+}
+
+// Issue 29: a textureInfo with texCoord 1 read UV 0. The quad's TEXCOORD_1 is (0.25, 0.25) at every
+// corner, the red quadrant's middle; its TEXCOORD_0 spans the texture. On set 1 the whole quad is
+// red; on set 0 each pixel shows its own quadrant (blue lower left, green upper right).
+void GltfRenderGLTest::secondUvSetFeedsItsMap()
+{
+    for (const int set : {1, 0}) {
+        GltfWriter w;
+        const int quadrants = w.addTexture(w.addImageEmbedded(quadrantsPng(), QStringLiteral("image/png")));
+        QJsonObject info = textureInfo(quadrants);
+        info[QLatin1String("texCoord")] = set;
+        QJsonObject values;
+        values[QLatin1String("baseColorTexture")] = info;
+        const int mesh = w.addQuad(w.addMaterial(pbr(values)));
+        w.setAttribute(
+            mesh, QStringLiteral("TEXCOORD_1"), w.addFloatAccessor(std::vector<float>(8, 0.25f), 2));
+        w.addNode(mesh);
+        const auto image = render(w, QStringLiteral("uv-set-%1").arg(set), "base-color");
+        QVERIFY(image);
+        expectPixel(*image, 20, 40, set == 1 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1), 2e-3);
+        expectPixel(*image, 44, 24, set == 1 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0), 2e-3);
+    }
 }
 
 // Issue 29: COLOR_0 multiplies the base colour (glTF 2.0 section 3.9.2), here a uniform colour

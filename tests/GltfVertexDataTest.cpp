@@ -1,6 +1,7 @@
 // glTF vertex data beyond position, normal, tangent and UV (issue 29): COLOR_0 in each type
-// glTF allows and one it does not, and morph targets blended at their default weights. Small
-// files the test writes itself (support/GltfWriter).
+// glTF allows and one it does not, morph targets blended at their default weights, TEXCOORD_1
+// and the maps that read it, and each texture's sampler. Small files the test writes itself
+// (support/GltfWriter).
 
 #include "core/GltfImport.h"
 
@@ -43,7 +44,160 @@ private Q_SLOTS:
     void vertexColorsAreRead();
     void morphTargetsAtTheirDefaultWeights_data();
     void morphTargetsAtTheirDefaultWeights();
+    void secondUvSetIsRead_data();
+    void secondUvSetIsRead();
+    void samplersAreRead_data();
+    void samplersAreRead();
 };
+
+void GltfVertexDataTest::secondUvSetIsRead_data()
+{
+    QTest::addColumn<bool>("withSet1"); // the quad has TEXCOORD_1
+    QTest::addColumn<int>("occlusionTexCoord"); // occlusionTexture.texCoord
+    QTest::addColumn<int>("transformTexCoord"); // KHR_texture_transform's texCoord, -1: none
+    QTest::addColumn<int>("expected"); // the occlusion map's set
+    QTest::addColumn<QString>("note"); // in the import's warning; empty: none about sets
+    QTest::newRow("set 0") << true << 0 << -1 << 0 << QString();
+    QTest::newRow("set 1") << true << 1 << -1 << 1 << QString();
+    QTest::newRow("set 1 by the texture transform") << true << 0 << 1 << 1 << QString();
+    QTest::newRow("set 1 on a mesh without it")
+        << false << 1 << -1 << 1 << QStringLiteral("occlusion reads TEXCOORD_1, which no primitive has");
+    QTest::newRow("set 2") << true << 2 << -1 << 0 << QStringLiteral("reads texture coordinate set 2");
+}
+
+// Issue 29: a textureInfo with texCoord 1 read UV 0. Both sets are read, flipped to Facet's
+// bottom-left origin, and each map keeps its set (glTF 2.0 section 3.9.2, KHR_texture_transform).
+void GltfVertexDataTest::secondUvSetIsRead()
+{
+    QFETCH(bool, withSet1);
+    QFETCH(int, occlusionTexCoord);
+    QFETCH(int, transformTexCoord);
+    QFETCH(int, expected);
+    QFETCH(QString, note);
+    GltfWriter w;
+    const int image = w.addImageEmbedded(
+        test::encodePng(2, 2, 3, std::vector<glm::vec4>(4, glm::vec4(0.5f))), QStringLiteral("image/png"));
+    const int texture = w.addTexture(image);
+    QJsonObject occlusion = test::textureInfo(texture,
+        transformTexCoord < 0 ? QJsonObject {}
+                              : QJsonObject {{QStringLiteral("KHR_texture_transform"),
+                                  QJsonObject {{QStringLiteral("texCoord"), transformTexCoord}}}});
+    occlusion[QLatin1String("texCoord")] = occlusionTexCoord;
+    const int material = w.addMaterial(QJsonObject {{QStringLiteral("occlusionTexture"), occlusion},
+        {QStringLiteral("pbrMetallicRoughness"),
+            QJsonObject {{QStringLiteral("baseColorTexture"), test::textureInfo(texture)}}}});
+    const int mesh = w.addQuad(material);
+    // Set 1: the corners' UVs scaled by a quarter and moved, unlike set 0's (0, 0) to (1, 1).
+    const std::vector<float> set1 = {0.1f, 0.2f, 0.35f, 0.2f, 0.35f, 0.45f, 0.1f, 0.45f};
+    if (withSet1)
+        w.setAttribute(mesh, QStringLiteral("TEXCOORD_1"), w.addFloatAccessor(set1, 2));
+    w.addNode(mesh);
+    const QString file = path(QStringLiteral("uv-sets-%1.glb")
+                                  .arg(QString(QLatin1String(QTest::currentDataTag())).replace(u' ', u'-')));
+    QVERIFY(w.write(file, Storage::Glb));
+    std::string error, warning;
+    const auto asset = importGltf(file.toStdString(), &error, &warning);
+    QVERIFY2(asset, error.c_str());
+    QCOMPARE(asset->materials.size(), std::size_t(1));
+    QCOMPARE(asset->materials[0].map(MapSlot::Occlusion).texCoord, expected);
+    QCOMPARE(asset->materials[0].map(MapSlot::BaseColor).texCoord, 0);
+    if (note.isEmpty())
+        QVERIFY2(!QString::fromStdString(warning).contains(QLatin1String("TEXCOORD")), warning.c_str());
+    else
+        QVERIFY2(QString::fromStdString(warning).contains(note), warning.c_str());
+    QCOMPARE(asset->mesh.hasTexCoord1, withSet1);
+    std::string problem;
+    QVERIFY2(asset->mesh.validate(&problem), problem.c_str());
+    for (std::size_t i = 0; i < asset->mesh.vertices.size(); ++i) {
+        const Vertex& v = asset->mesh.vertices[i];
+        if (!withSet1) {
+            QCOMPARE(v.uv1, v.uv); // a copy: a map on set 1 reads set 0
+            continue;
+        }
+        // Each vertex's set 1 is the file's corner that its set 0 names, with v flipped.
+        // (The quad's corners have glTF UVs (0, 1), (1, 1), (1, 0), (0, 0): Facet's (0, 0) to (0, 1).)
+        const int corner = v.uv == glm::vec2(0, 0) ? 0
+            : v.uv == glm::vec2(1, 0)              ? 1
+            : v.uv == glm::vec2(1, 1)              ? 2
+                                                   : 3;
+        const glm::vec2 file1(set1[std::size_t(corner) * 2], set1[std::size_t(corner) * 2 + 1]);
+        QVERIFY2(
+            glm::all(glm::lessThan(glm::abs(v.uv1 - glm::vec2(file1.x, 1.0f - file1.y)), glm::vec2(1e-6f))),
+            qPrintable(QStringLiteral("vertex %1: uv1 (%2, %3)").arg(i).arg(v.uv1.x).arg(v.uv1.y)));
+    }
+}
+
+void GltfVertexDataTest::samplersAreRead_data()
+{
+    QTest::addColumn<QJsonObject>("sampler"); // empty: the texture names none
+    QTest::addColumn<int>("wrapS");
+    QTest::addColumn<int>("wrapT");
+    QTest::addColumn<int>("magFilter");
+    QTest::addColumn<int>("minFilter");
+    const auto s = [](int mag, int min, int wrapS, int wrapT) {
+        QJsonObject o;
+        if (mag >= 0)
+            o[QLatin1String("magFilter")] = mag;
+        if (min >= 0)
+            o[QLatin1String("minFilter")] = min;
+        if (wrapS >= 0)
+            o[QLatin1String("wrapS")] = wrapS;
+        if (wrapT >= 0)
+            o[QLatin1String("wrapT")] = wrapT;
+        return o;
+    };
+    const int repeat = int(TextureWrap::Repeat), clamp = int(TextureWrap::ClampToEdge),
+              mirror = int(TextureWrap::MirroredRepeat);
+    const int automatic = int(TextureFilter::Auto), nearest = int(TextureFilter::Nearest),
+              linear = int(TextureFilter::Linear);
+    QTest::newRow("no sampler") << QJsonObject {} << repeat << repeat << automatic << automatic;
+    QTest::newRow("empty sampler") << s(-1, -1, -1, -1) << repeat << repeat << automatic << automatic;
+    QTest::newRow("clamp both") << s(-1, -1, 33071, 33071) << clamp << clamp << automatic << automatic;
+    QTest::newRow("mirror S, clamp T")
+        << s(-1, -1, 33648, 33071) << mirror << clamp << automatic << automatic;
+    QTest::newRow("nearest, no mips") << s(9728, 9728, -1, -1) << repeat << repeat << nearest << nearest;
+    QTest::newRow("linear, nearest-mipmap-linear") << s(9729, 9986, 10497, 10497) << repeat << repeat
+                                                   << linear << int(TextureFilter::NearestMipmapLinear);
+}
+
+// Issue 29: samplers were ignored (always repeat). Each map keeps its texture's wraps and filters
+// (glTF 2.0 section 3.8.4); the packed metallic-roughness texture gives both slots the same.
+void GltfVertexDataTest::samplersAreRead()
+{
+    QFETCH(QJsonObject, sampler);
+    QFETCH(int, wrapS);
+    QFETCH(int, wrapT);
+    QFETCH(int, magFilter);
+    QFETCH(int, minFilter);
+    GltfWriter w;
+    int samplerIndex = -1;
+    if (!sampler.isEmpty() || QLatin1String(QTest::currentDataTag()) == QLatin1String("empty sampler")) {
+        QJsonArray samplers;
+        samplers.append(sampler);
+        w.json()[QLatin1String("samplers")] = samplers;
+        samplerIndex = 0;
+    }
+    const int image = w.addImageEmbedded(
+        test::encodePng(2, 2, 3, std::vector<glm::vec4>(4, glm::vec4(0.5f))), QStringLiteral("image/png"));
+    const int withSampler = w.addTexture(image, samplerIndex);
+    const int without = w.addTexture(image);
+    const int material = w.addMaterial(QJsonObject {{QStringLiteral("pbrMetallicRoughness"),
+        QJsonObject {{QStringLiteral("metallicRoughnessTexture"), test::textureInfo(withSampler)},
+            {QStringLiteral("baseColorTexture"), test::textureInfo(without)}}}});
+    w.addNode(w.addQuad(material));
+    const QString file = path(QStringLiteral("sampler-%1.glb")
+                                  .arg(QString(QLatin1String(QTest::currentDataTag())).replace(u' ', u'-')));
+    QVERIFY(w.write(file, Storage::Glb));
+    std::string error;
+    const auto asset = importGltf(file.toStdString(), &error);
+    QVERIFY2(asset, error.c_str());
+    const TextureSampler expected {
+        TextureWrap(wrapS), TextureWrap(wrapT), TextureFilter(magFilter), TextureFilter(minFilter)};
+    const Material& m = asset->materials[0];
+    QVERIFY(m.map(MapSlot::Metallic).sampler == expected);
+    QVERIFY(m.map(MapSlot::Roughness).sampler == expected);
+    QVERIFY(m.map(MapSlot::BaseColor).sampler.isDefault()); // its texture names no sampler
+}
 
 void GltfVertexDataTest::vertexColorsAreRead_data()
 {

@@ -375,8 +375,10 @@ void MapNamingTest::assignedMapsTakeTheirRead()
     // A roughness map that was a Unity smoothness channel, replaced by a plain roughness file: the
     // invert goes with the old file; the DirectX flip of a normal likewise.
     Material material;
-    material.map(MapSlot::Roughness) = MaterialMap {
-        "/old/a_MaskMap.png", glm::dvec4(1.0), MapChannel::A, ColorEncoding::Linear, true, false, {}};
+    MaterialMap& smoothness = material.map(MapSlot::Roughness);
+    smoothness.path = "/old/a_MaskMap.png";
+    smoothness.channel = MapChannel::A;
+    smoothness.invert = true;
     material.map(MapSlot::Normal).path = "/old/T_a_N.png";
     material.map(MapSlot::Normal).flipGreen = true;
     material.setFactor(MapSlot::Metallic, 0.25);

@@ -1,8 +1,9 @@
 // The material's texture maps on the GPU against their CPU twin (core/MaterialInputs.h), one row
 // per map input and feature (Magnum's per-feature golden rows): each map alone, all five
 // together, a packed texture feeding three slots, every channel, inversion, colour space, normal
-// strength, the DirectX green flip and the UV transform, and each kind of file in its own GPU
-// format (8-bit grey and grey + alpha, 16-bit PNG, float EXR). Each row is a project with texture files
+// strength, the DirectX green flip, the UV transform, the UV set, each wrap mode and the nearest
+// filter, and each kind of file in its own GPU format (8-bit grey and grey + alpha, 16-bit PNG,
+// float EXR). Each row is a project with texture files
 // on disk, rendered the way `facet render --reference-view` renders it (core/ProjectAssets loads
 // the maps, render/SceneFromProject builds the scene, render/FrameRenderer draws and reads back
 // the RGBA16F target) by a fresh Renderer, so every map is uploaded in the row's first frame, as
@@ -99,7 +100,26 @@ double wave(int i, double phase = 0.0)
 struct Row {
     const char* name;
     std::function<void(Material&, const QString& folder)> setup;
+    // The largest difference allowed at a pixel. NEAREST steps by a whole texel (up to 0.04 in
+    // these textures) where the GPU and the twin round a coordinate on a texel edge differently;
+    // the mean bound still tells nearest from linear (half a step on average).
+    double maxBound = 0.025;
 };
+
+// The largest difference where a clamped or mirrored edge is minified: the GPU's level 1 edge
+// texel averages two texels reaching inward, first order in the texture's slope (measured 0.025
+// and 0.027 near the top of the sphere on llvmpipe); the mean bound stays.
+constexpr double kBeyondAClampedEdge = 0.04;
+
+// A UV transform that takes the compared pixels (u in [0.07, 0.43], v in [0.2, 0.8]) outside
+// [0, 1] at both ends (u' in [-0.22, 1.22], v' in [-0.09, 1.09]), so every wrap mode shows what it
+// does, with little minification: beyond a clamped edge a coarser mip level's edge texel is the
+// average of a block reaching inward, which the twin (level 0) does not model.
+void reachOutside(MaterialMap& map)
+{
+    map.uv.scale = {4.0, 2.0};
+    map.uv.offset = {-0.5, -0.5};
+}
 
 QString file(const QString& folder, const char* name)
 {
@@ -132,181 +152,259 @@ const std::vector<Row>& rows()
     static const std::vector<Row> table = {
         {"base-color", [](Material& m, const QString& f) { useBaseColor(m, f); }},
         {"base-color-linear",
-         [](Material& m, const QString& f) {
-             useBaseColor(m, f);
-             m.map(MapSlot::BaseColor).colorSpace = ColorEncoding::Linear;
-         }},
+            [](Material& m, const QString& f) {
+                useBaseColor(m, f);
+                m.map(MapSlot::BaseColor).colorSpace = ColorEncoding::Linear;
+            }},
         {"base-color-channel-g",
-         [](Material& m, const QString& f) {
-             useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::G, ColorEncoding::SRGB);
-         }},
+            [](Material& m, const QString& f) {
+                useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::G, ColorEncoding::SRGB);
+            }},
         {"normal", [](Material& m, const QString& f) { useNormal(m, f); }},
         {"normal-strength-0.5",
-         [](Material& m, const QString& f) {
-             useNormal(m, f);
-             m.setFactor(MapSlot::Normal, 0.5);
-         }},
+            [](Material& m, const QString& f) {
+                useNormal(m, f);
+                m.setFactor(MapSlot::Normal, 0.5);
+            }},
         {"normal-strength-2",
-         [](Material& m, const QString& f) {
-             useNormal(m, f);
-             m.setFactor(MapSlot::Normal, 2.0);
-         }},
+            [](Material& m, const QString& f) {
+                useNormal(m, f);
+                m.setFactor(MapSlot::Normal, 2.0);
+            }},
         {"normal-directx",
-         [](Material& m, const QString& f) {
-             useNormal(m, f);
-             m.map(MapSlot::Normal).flipGreen = true;
-         }},
-        {"metallic", [](Material& m, const QString& f) { useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R); }},
-        {"roughness", [](Material& m, const QString& f) { useScalar(m, MapSlot::Roughness, file(f, "grey.png"), MapChannel::R); }},
+            [](Material& m, const QString& f) {
+                useNormal(m, f);
+                m.map(MapSlot::Normal).flipGreen = true;
+            }},
+        {"metallic",
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
+            }},
+        {"roughness",
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Roughness, file(f, "grey.png"), MapChannel::R);
+            }},
         {"occlusion",
-         [](Material& m, const QString& f) {
-             useScalar(m, MapSlot::Occlusion, file(f, "grey.png"), MapChannel::R);
-             m.setFactor(MapSlot::Occlusion, 0.7);
-         }},
-        {"roughness-channel-r", [](Material& m, const QString& f) { useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::R); }},
-        {"roughness-channel-g", [](Material& m, const QString& f) { useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G); }},
-        {"roughness-channel-b", [](Material& m, const QString& f) { useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::B); }},
-        {"roughness-channel-a", [](Material& m, const QString& f) { useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::A); }},
-        {"metallic-channel-a", [](Material& m, const QString& f) { useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::A); }},
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Occlusion, file(f, "grey.png"), MapChannel::R);
+                m.setFactor(MapSlot::Occlusion, 0.7);
+            }},
+        {"roughness-channel-r",
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::R);
+            }},
+        {"roughness-channel-g",
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+            }},
+        {"roughness-channel-b",
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::B);
+            }},
+        {"roughness-channel-a",
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::A);
+            }},
+        {"metallic-channel-a",
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::A);
+            }},
         {"metallic-invert",
-         [](Material& m, const QString& f) {
-             useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::B);
-             m.map(MapSlot::Metallic).invert = true;
-         }},
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::B);
+                m.map(MapSlot::Metallic).invert = true;
+            }},
         {"roughness-invert",
-         [](Material& m, const QString& f) {
-             useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::A);
-             m.map(MapSlot::Roughness).invert = true;
-         }},
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::A);
+                m.map(MapSlot::Roughness).invert = true;
+            }},
         {"occlusion-invert",
-         [](Material& m, const QString& f) {
-             useScalar(m, MapSlot::Occlusion, file(f, "grey.png"), MapChannel::R);
-             m.map(MapSlot::Occlusion).invert = true;
-         }},
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Occlusion, file(f, "grey.png"), MapChannel::R);
+                m.map(MapSlot::Occlusion).invert = true;
+            }},
         {"roughness-srgb",
-         [](Material& m, const QString& f) {
-             useMap(m, MapSlot::Roughness, file(f, "grey.png"), MapChannel::R, ColorEncoding::SRGB);
-         }},
+            [](Material& m, const QString& f) {
+                useMap(m, MapSlot::Roughness, file(f, "grey.png"), MapChannel::R, ColorEncoding::SRGB);
+            }},
         {"orm-packed",
-         [](Material& m, const QString& f) {
-             useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
-             useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
-             useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::B);
-         }},
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
+                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+                useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::B);
+            }},
         // One file, but the slots cannot share a fetch (render/ShaderVariant sharedTexelFeatures):
         // another UV transform, another colour space.
         {"packed-apart-uv-and-colour-space",
-         [](Material& m, const QString& f) {
-             useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::B);
-             useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
-             m.map(MapSlot::Roughness).uv.offset = {0.3, 0.1};
-             useMap(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R, ColorEncoding::SRGB);
-         }},
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::B);
+                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+                m.map(MapSlot::Roughness).uv.offset = {0.3, 0.1};
+                useMap(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R, ColorEncoding::SRGB);
+            }},
         // Maps whose factor hides them (not sampled, render/ShaderVariant textureMatters): the
         // GPU without the fetch must still equal the twin, which reads them.
         {"maps-hidden-by-factors",
-         [](Material& m, const QString& f) {
-             useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
-             m.setFactor(MapSlot::Metallic, 0.0);
-             useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
-             m.setFactor(MapSlot::Occlusion, 0.0);
-             useNormal(m, f);
-             m.setFactor(MapSlot::Normal, 0.0);
-             useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
-             m.map(MapSlot::Emissive).factor = glm::dvec4(0.0, 0.0, 0.0, 1.0);
-         }},
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
+                m.setFactor(MapSlot::Metallic, 0.0);
+                useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
+                m.setFactor(MapSlot::Occlusion, 0.0);
+                useNormal(m, f);
+                m.setFactor(MapSlot::Normal, 0.0);
+                useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+                m.map(MapSlot::Emissive).factor = glm::dvec4(0.0, 0.0, 0.0, 1.0);
+            }},
         {"uv-scale",
-         [](Material& m, const QString& f) {
-             useBaseColor(m, f);
-             m.map(MapSlot::BaseColor).uv.scale = {2.0, 3.0};
-         }},
+            [](Material& m, const QString& f) {
+                useBaseColor(m, f);
+                m.map(MapSlot::BaseColor).uv.scale = {2.0, 3.0};
+            }},
         {"uv-offset",
-         [](Material& m, const QString& f) {
-             useScalar(m, MapSlot::Roughness, file(f, "grey.png"), MapChannel::R);
-             m.map(MapSlot::Roughness).uv.offset = {0.25, -0.1};
-         }},
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Roughness, file(f, "grey.png"), MapChannel::R);
+                m.map(MapSlot::Roughness).uv.offset = {0.25, -0.1};
+            }},
         {"uv-rotation",
-         [](Material& m, const QString& f) {
-             useNormal(m, f);
-             m.map(MapSlot::Normal).uv.rotationDegrees = 30.0;
-         }},
+            [](Material& m, const QString& f) {
+                useNormal(m, f);
+                m.map(MapSlot::Normal).uv.rotationDegrees = 30.0;
+            }},
+        // Sampler (glTF 2.0 3.8.4): each wrap mode beyond [0, 1], a mixed pair, the packed fetch
+        // kept apart by samplers that differ, and nearest magnification.
+        {"wrap-repeat",
+            [](Material& m, const QString& f) {
+                useBaseColor(m, f);
+                reachOutside(m.map(MapSlot::BaseColor));
+            }},
+        {"wrap-clamp-to-edge",
+            [](Material& m, const QString& f) {
+                useBaseColor(m, f);
+                reachOutside(m.map(MapSlot::BaseColor));
+                m.map(MapSlot::BaseColor).sampler.wrapS = TextureWrap::ClampToEdge;
+                m.map(MapSlot::BaseColor).sampler.wrapT = TextureWrap::ClampToEdge;
+            },
+            kBeyondAClampedEdge},
+        {"wrap-mirrored-repeat",
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Roughness, file(f, "grey.png"), MapChannel::R);
+                reachOutside(m.map(MapSlot::Roughness));
+                m.map(MapSlot::Roughness).sampler.wrapS = TextureWrap::MirroredRepeat;
+                m.map(MapSlot::Roughness).sampler.wrapT = TextureWrap::MirroredRepeat;
+            },
+            kBeyondAClampedEdge},
+        {"wrap-clamp-u-mirror-v",
+            [](Material& m, const QString& f) {
+                useNormal(m, f);
+                reachOutside(m.map(MapSlot::Normal));
+                m.map(MapSlot::Normal).sampler.wrapS = TextureWrap::ClampToEdge;
+                m.map(MapSlot::Normal).sampler.wrapT = TextureWrap::MirroredRepeat;
+            }},
+        {"packed-apart-by-sampler",
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Metallic, file(f, "packed.png"), MapChannel::B);
+                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+                useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
+                for (MapSlot slot : {MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion})
+                    reachOutside(m.map(slot));
+                // Each along the axis its channel varies in (G with the row, R with the column).
+                m.map(MapSlot::Roughness).sampler.wrapT = TextureWrap::ClampToEdge;
+                m.map(MapSlot::Occlusion).sampler.wrapS = TextureWrap::MirroredRepeat;
+            },
+            kBeyondAClampedEdge},
+        {"mag-nearest",
+            [](Material& m, const QString& f) {
+                useBaseColor(m, f);
+                m.map(MapSlot::BaseColor).uv.scale = {0.25, 0.25};
+                m.map(MapSlot::BaseColor).sampler.magFilter = TextureFilter::Nearest;
+            },
+            0.06},
+        // The sphere has one UV set: a map on set 1 reads set 0 (HAS_TEXCOORD_1 stays off).
+        {"texcoord-1-on-a-mesh-without-it",
+            [](Material& m, const QString& f) {
+                useBaseColor(m, f);
+                m.map(MapSlot::BaseColor).texCoord = 1;
+            }},
         {"emissive",
-         [](Material& m, const QString& f) {
-             useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
-             m.map(MapSlot::Emissive).factor = glm::dvec4(1.0, 0.5, 0.25, 1.0);
-             m.emissiveStrength = 2.0;
-         }},
+            [](Material& m, const QString& f) {
+                useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+                m.map(MapSlot::Emissive).factor = glm::dvec4(1.0, 0.5, 0.25, 1.0);
+                m.emissiveStrength = 2.0;
+            }},
         {"emissive-factor-only",
-         [](Material& m, const QString&) {
-             m.map(MapSlot::Emissive).factor = glm::dvec4(0.2, 0.4, 0.6, 1.0);
-             m.emissiveStrength = 3.0;
-         }},
+            [](Material& m, const QString&) {
+                m.map(MapSlot::Emissive).factor = glm::dvec4(0.2, 0.4, 0.6, 1.0);
+                m.emissiveStrength = 3.0;
+            }},
         {"base-color-alpha",
-         [](Material& m, const QString& f) {
-             useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::Rgb, ColorEncoding::SRGB);
-             m.map(MapSlot::BaseColor).factor.a = 0.8;
-         }},
+            [](Material& m, const QString& f) {
+                useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+                m.map(MapSlot::BaseColor).factor.a = 0.8;
+            }},
         // Each kind of file in its own format (render/TextureCache: GL_R8 and GL_RG8 swizzled,
         // GL_SRGB8 expanded from grey, GL_RGB16, 16-bit sRGB decoded to half, GL_RGBA16F).
         {"grey-8bit-base-color-srgb",
-         [](Material& m, const QString& f) {
-             useMap(m, MapSlot::BaseColor, file(f, "grey.png"), MapChannel::Rgb, ColorEncoding::SRGB);
-         }},
+            [](Material& m, const QString& f) {
+                useMap(m, MapSlot::BaseColor, file(f, "grey.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+            }},
         {"grey-alpha-8bit-base-color",
-         [](Material& m, const QString& f) {
-             useMap(m, MapSlot::BaseColor, file(f, "greyalpha.png"), MapChannel::Rgb, ColorEncoding::SRGB);
-         }},
+            [](Material& m, const QString& f) {
+                useMap(m, MapSlot::BaseColor, file(f, "greyalpha.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+            }},
         {"grey-alpha-8bit-roughness-a",
-         [](Material& m, const QString& f) {
-             useScalar(m, MapSlot::Roughness, file(f, "greyalpha.png"), MapChannel::A);
-             useScalar(m, MapSlot::Metallic, file(f, "greyalpha.png"), MapChannel::G);
-         }},
-        {"normal-16bit-png", [](Material& m, const QString& f) {
-             useMap(m, MapSlot::Normal, file(f, "normal16.png"), MapChannel::Rgb, ColorEncoding::Linear);
-         }},
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Roughness, file(f, "greyalpha.png"), MapChannel::A);
+                useScalar(m, MapSlot::Metallic, file(f, "greyalpha.png"), MapChannel::G);
+            }},
+        {"normal-16bit-png",
+            [](Material& m, const QString& f) {
+                useMap(m, MapSlot::Normal, file(f, "normal16.png"), MapChannel::Rgb, ColorEncoding::Linear);
+            }},
         {"base-color-16bit-png-srgb",
-         [](Material& m, const QString& f) {
-             useMap(m, MapSlot::BaseColor, file(f, "basecolor16.png"), MapChannel::Rgb, ColorEncoding::SRGB);
-         }},
+            [](Material& m, const QString& f) {
+                useMap(
+                    m, MapSlot::BaseColor, file(f, "basecolor16.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+            }},
         {"float-exr-packed",
-         [](Material& m, const QString& f) {
-             useScalar(m, MapSlot::Roughness, file(f, "packed.exr"), MapChannel::G);
-             useScalar(m, MapSlot::Occlusion, file(f, "packed.exr"), MapChannel::A);
-             useMap(m, MapSlot::BaseColor, file(f, "packed.exr"), MapChannel::Rgb, ColorEncoding::Linear);
-         }},
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Roughness, file(f, "packed.exr"), MapChannel::G);
+                useScalar(m, MapSlot::Occlusion, file(f, "packed.exr"), MapChannel::A);
+                useMap(m, MapSlot::BaseColor, file(f, "packed.exr"), MapChannel::Rgb, ColorEncoding::Linear);
+            }},
         {"all-five",
-         [](Material& m, const QString& f) {
-             useBaseColor(m, f);
-             useNormal(m, f);
-             useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
-             useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
-             useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
-         }},
+            [](Material& m, const QString& f) {
+                useBaseColor(m, f);
+                useNormal(m, f);
+                useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
+                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+                useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
+            }},
         {"all-six",
-         [](Material& m, const QString& f) {
-             useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::Rgb, ColorEncoding::SRGB);
-             useNormal(m, f);
-             useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
-             useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
-             useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
-             useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
-             m.map(MapSlot::Emissive).factor = glm::dvec4(1.0);
-         }},
+            [](Material& m, const QString& f) {
+                useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+                useNormal(m, f);
+                useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
+                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+                useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
+                useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+                m.map(MapSlot::Emissive).factor = glm::dvec4(1.0);
+            }},
         {"all-five-transformed",
-         [](Material& m, const QString& f) {
-             useBaseColor(m, f);
-             useNormal(m, f);
-             useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
-             useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
-             useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
-             m.map(MapSlot::BaseColor).uv.scale = {2.0, 2.0};
-             m.map(MapSlot::Normal).uv.rotationDegrees = -45.0;
-             m.map(MapSlot::Metallic).uv.offset = {0.5, 0.5};
-             m.map(MapSlot::Roughness).uv = UvTransform {{1.5, 0.5}, {0.1, 0.2}, 90.0};
-             m.map(MapSlot::Occlusion).invert = true;
-             m.map(MapSlot::Normal).flipGreen = true;
-             m.setFactor(MapSlot::Normal, 1.5);
-         }},
+            [](Material& m, const QString& f) {
+                useBaseColor(m, f);
+                useNormal(m, f);
+                useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
+                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+                useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
+                m.map(MapSlot::BaseColor).uv.scale = {2.0, 2.0};
+                m.map(MapSlot::Normal).uv.rotationDegrees = -45.0;
+                m.map(MapSlot::Metallic).uv.offset = {0.5, 0.5};
+                m.map(MapSlot::Roughness).uv = UvTransform {{1.5, 0.5}, {0.1, 0.2}, 90.0};
+                m.map(MapSlot::Occlusion).invert = true;
+                m.map(MapSlot::Normal).flipGreen = true;
+                m.setFactor(MapSlot::Normal, 1.5);
+            }},
     };
     return table;
 }
@@ -499,6 +597,8 @@ void MaterialMapsGLTest::matchesCpuTwin()
         double maxError = 0.0;
         double sumError = 0.0;
         glm::ivec2 worst {0};
+        glm::dvec3 worstExpected {0.0}, worstActual {0.0};
+        glm::dvec2 worstUv {0.0};
         for (const glm::ivec2& p : m_pixels) {
             const glm::dvec2 uv(rgb(*m_uv, p.x, p.y));
             const glm::dvec3 ng = glm::normalize(rgb(*m_geometricNormal, p.x, p.y) * 2.0 - 1.0);
@@ -507,7 +607,7 @@ void MaterialMapsGLTest::matchesCpuTwin()
             glm::dvec3 n = ng;
             if (const MapImage* normalMap = images[std::size_t(MapSlot::Normal)]) {
                 const MaterialMap& map = material.map(MapSlot::Normal);
-                const glm::dvec4 texel = sampleTexture(*normalMap, map.colorSpace, map.uv.apply(uv));
+                const glm::dvec4 texel = sampleMap(map, *normalMap, TexCoords {uv, uv});
                 // The sphere's tangents all have handedness +1 (core/MeshPrimitives).
                 n = shadingNormal(ng, glm::dvec4(t, 1.0), texel, map.factor.x, map.flipGreen);
             }
@@ -519,6 +619,9 @@ void MaterialMapsGLTest::matchesCpuTwin()
             if (!(e <= maxError)) {
                 maxError = std::isfinite(e) ? e : INFINITY;
                 worst = p;
+                worstExpected = expected;
+                worstActual = actual;
+                worstUv = uv;
             }
             sumError += e;
         }
@@ -529,10 +632,14 @@ void MaterialMapsGLTest::matchesCpuTwin()
         // max 0.012, mean 0.0025, both base colour with UV scale 2 x 3 (more minification); the
         // emissive rows scale the same errors by up to 2. A map bound to the wrong unit or not at
         // all is off by 0.1 to 1 (the texture-unit defect of issue 8 measured max 0.78, mean 0.56).
-        constexpr double kMaxBound = 0.025;
+        const double kMaxBound = rows()[std::size_t(row)].maxBound;
         constexpr double kMeanBound = 0.005;
-        std::printf("  %-22s %-15s max %.5f (at %d,%d), mean %.6f\n", rows()[std::size_t(row)].name, check.view,
-                    maxError, worst.x, worst.y, meanError);
+        std::printf(
+            "  %-22s %-15s max %.5f (at %d,%d, uv %.4f %.4f: GPU %.4f %.4f %.4f, twin %.4f %.4f %.4f), "
+            "mean %.6f\n",
+            rows()[std::size_t(row)].name, check.view, maxError, worst.x, worst.y, worstUv.x, worstUv.y,
+            worstActual.x, worstActual.y, worstActual.z, worstExpected.x, worstExpected.y, worstExpected.z,
+            meanError);
         QVERIFY2(maxError <= kMaxBound && meanError <= kMeanBound,
                  qPrintable(QStringLiteral("%1 view: max %2 (pixel %3,%4), mean %5 against the CPU twin")
                                 .arg(QLatin1String(check.view))

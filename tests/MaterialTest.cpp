@@ -1,4 +1,5 @@
-// The material value types: map slots and their names, validation, IOR/F0, the built-in presets
+// The material value types: map slots and their names, validation, IOR/F0, texture sampling
+// (wrap modes, filters, UV sets: core/MaterialInputs' sampleTexture), the built-in presets
 // against the LearnOpenGL / Real-Time Rendering F0 table, preset files, and punctual lights
 // (KHR_lights_punctual validation, colour temperature).
 
@@ -15,8 +16,12 @@
 #include <QtTest/QTest>
 
 #include "TestSupport.h"
+#include "core/GltfImport.h"
+#include "core/Image.h"
 #include "core/Light.h"
+#include "core/MapImage.h"
 #include "core/Material.h"
+#include "core/MaterialInputs.h"
 #include "core/MaterialPresets.h"
 
 using namespace facet;
@@ -48,6 +53,17 @@ const TableEntry kF0Table[] = {
     {"aluminium", {0.91, 0.92, 0.92}, true},
     {"silver", {0.95, 0.93, 0.88}, true},
 };
+
+// A 4 x 2 half-float map whose texels hold their own column (R = x / 3) and row from the bottom
+// (G: MapImage's row order, v = 0 at the bottom).
+MapImage columnsAndRows()
+{
+    Image image(4, 2);
+    for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < 4; ++x)
+            image.at(x, y) = glm::vec4(float(x) / 3.0f, float(1 - y), 0.0f, 1.0f); // Image: top row first
+    return MapImage::fromImage(image, MapLayout::Rgb, MapSampleType::Half);
+}
 
 bool contains(const std::string& text, const char* part)
 {
@@ -149,6 +165,12 @@ private Q_SLOTS:
             {"roughness.uv.scale.v", [](Material& m) { m.map(MapSlot::Roughness).uv.scale.y = 0.0; }},
             {"baseColor.uv.rotationDegrees",
                 [](Material& m) { m.map(MapSlot::BaseColor).uv.rotationDegrees = kInf; }},
+            {"occlusion.texCoord", [](Material& m) { m.map(MapSlot::Occlusion).texCoord = 2; }},
+            {"normal.texCoord", [](Material& m) { m.map(MapSlot::Normal).texCoord = -1; }},
+            {"emissive.sampler.magFilter",
+                [](Material& m) {
+                    m.map(MapSlot::Emissive).sampler.magFilter = TextureFilter::LinearMipmapLinear;
+                }},
         };
         for (const Case& c : cases) {
             Material m;
@@ -162,8 +184,125 @@ private Q_SLOTS:
         m.map(MapSlot::BaseColor).channel = MapChannel::R;
         m.map(MapSlot::Roughness).invert = true;
         m.map(MapSlot::Normal).flipGreen = true;
+        m.map(MapSlot::Occlusion).texCoord = 1;
+        m.map(MapSlot::Occlusion).sampler = {TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat,
+            TextureFilter::Nearest, TextureFilter::NearestMipmapLinear};
         std::string problem;
         QVERIFY2(m.validate(&problem), problem.c_str());
+    }
+
+    // sampleTexture against OpenGL 4.6's wrap table (section 8.14.2, table 8.20) on a 4 x 2 image
+    // whose texels are their own column and row (R = x / 3, G = y): one row per wrap mode and
+    // filter, at coordinates inside, on texel centres and edges, and beyond both ends.
+    void samplingFollowsTheWrapTable_data()
+    {
+        QTest::addColumn<int>("wrap");
+        QTest::addColumn<int>("filter");
+        QTest::addColumn<double>("u");
+        QTest::addColumn<double>("expectedColumn"); // the (interpolated) column read
+        const int repeat = int(TextureWrap::Repeat), clamp = int(TextureWrap::ClampToEdge),
+                  mirror = int(TextureWrap::MirroredRepeat);
+        const int nearest = int(TextureFilter::Nearest), linear = int(TextureFilter::Auto);
+        // Nearest: column floor(4u), wrapped.
+        QTest::newRow("repeat-nearest-inside") << repeat << nearest << 0.30 << 1.0;
+        QTest::newRow("repeat-nearest-beyond-1") << repeat << nearest << 1.30 << 1.0;
+        QTest::newRow("repeat-nearest-below-0") << repeat << nearest << -0.10 << 3.0;
+        QTest::newRow("repeat-nearest-far") << repeat << nearest << 1.0e6 + 0.6 << 2.0;
+        QTest::newRow("clamp-nearest-beyond-1") << clamp << nearest << 1.30 << 3.0;
+        QTest::newRow("clamp-nearest-below-0") << clamp << nearest << -0.60 << 0.0;
+        QTest::newRow("mirror-nearest-inside") << mirror << nearest << 0.60 << 2.0;
+        QTest::newRow("mirror-nearest-beyond-1") << mirror << nearest << 1.10 << 3.0; // texel 4 -> 3
+        QTest::newRow("mirror-nearest-beyond-1-far") << mirror << nearest << 1.90 << 0.0; // texel 7 -> 0
+        QTest::newRow("mirror-nearest-below-0") << mirror << nearest << -0.10 << 0.0; // texel -1 -> 0
+        QTest::newRow("mirror-nearest-below-minus-1") << mirror << nearest << -1.10 << 3.0; // texel -5 -> 3
+        QTest::newRow("mirror-nearest-period-2") << mirror << nearest << 2.30 << 1.0;
+        // Linear: between the two nearest centres, each wrapped.
+        QTest::newRow("repeat-linear-centre") << repeat << linear << 0.375 << 1.0;
+        QTest::newRow("repeat-linear-across-the-seam") << repeat << linear << 1.0 << 1.5; // 3 and 0, halfway
+        QTest::newRow("clamp-linear-edge") << clamp << linear << 1.0 << 3.0;
+        QTest::newRow("clamp-linear-below-0") << clamp << linear << -0.5 << 0.0;
+        QTest::newRow("clamp-linear-inside") << clamp << linear << 0.5 << 1.5;
+        QTest::newRow("mirror-linear-at-1") << mirror << linear << 1.0 << 3.0; // 3 and its mirror 3
+        QTest::newRow("mirror-linear-at-0") << mirror << linear << 0.0 << 0.0;
+        QTest::newRow("mirror-linear-beyond-1") << mirror << linear << 1.25 << 2.5; // texels 4.5 -> 3, 2
+    }
+    void samplingFollowsTheWrapTable()
+    {
+        QFETCH(int, wrap);
+        QFETCH(int, filter);
+        QFETCH(double, u);
+        QFETCH(double, expectedColumn);
+        const MapImage image = columnsAndRows();
+        TextureSampler sampler;
+        sampler.wrapS = TextureWrap(wrap);
+        sampler.wrapT = TextureWrap::ClampToEdge;
+        sampler.magFilter = TextureFilter(filter);
+        // v at row 0's centre, so only u moves.
+        const glm::dvec4 texel = sampleTexture(image, ColorEncoding::Linear, {u, 0.25}, sampler);
+        QVERIFY2(std::abs(texel.r * 3.0 - expectedColumn) < 1e-3,
+            qPrintable(QStringLiteral("column %1, expected %2").arg(texel.r * 3.0).arg(expectedColumn)));
+        QVERIFY2(std::abs(texel.g - 0.0) < 1e-6, qPrintable(QStringLiteral("row %1").arg(texel.g)));
+    }
+
+    // The wrap of one axis does not leak into the other, and a map reads its own UV set.
+    void samplingAxesAndSetsAreIndependent()
+    {
+        const MapImage image = columnsAndRows();
+        TextureSampler sampler {
+            TextureWrap::Repeat, TextureWrap::ClampToEdge, TextureFilter::Nearest, TextureFilter::Auto};
+        // u 1.3 repeats to column 1; v 1.7 clamps to the top row (row 1).
+        glm::dvec4 texel = sampleTexture(image, ColorEncoding::Linear, {1.3, 1.7}, sampler);
+        QCOMPARE(std::lround(texel.r * 3.0), 1L);
+        QCOMPARE(texel.g, 1.0);
+        std::swap(sampler.wrapS, sampler.wrapT);
+        texel = sampleTexture(image, ColorEncoding::Linear, {1.3, 1.7}, sampler);
+        QCOMPARE(std::lround(texel.r * 3.0), 3L); // clamped
+        QCOMPARE(texel.g, 1.0); // 1.7 * 2 = texel 3 -> repeat -> row 1
+
+        MaterialMap map;
+        map.path = "x.png";
+        map.colorSpace = ColorEncoding::Linear;
+        map.sampler.magFilter = TextureFilter::Nearest;
+        const TexCoords uvs = {glm::dvec2(0.1, 0.25), glm::dvec2(0.9, 0.25)};
+        QCOMPARE(std::lround(sampleMap(map, image, uvs).r * 3.0), 0L);
+        map.texCoord = 1;
+        QCOMPARE(std::lround(sampleMap(map, image, uvs).r * 3.0), 3L);
+    }
+
+    // Names in files and glTF's numbers, both ways, for every value.
+    void samplerNamesAndGltfNumbersRoundTrip()
+    {
+        for (TextureWrap wrap :
+            {TextureWrap::Repeat, TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat}) {
+            QCOMPARE(textureWrapFromString(toString(wrap)), std::optional<TextureWrap>(wrap));
+            TextureSampler sampler;
+            sampler.wrapS = sampler.wrapT = wrap;
+            const std::array<int, 4> numbers = gltfSamplerValues(sampler);
+            QCOMPARE(textureSamplerFromGltf(numbers[0], numbers[1], numbers[2], numbers[3]).wrapS, wrap);
+        }
+        QCOMPARE(gltfSamplerValues(TextureSampler {})[2], 10497);
+        QCOMPARE(gltfSamplerValues({TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat,
+                     TextureFilter::Auto, TextureFilter::Auto}),
+            (std::array<int, 4> {-1, -1, 33071, 33648})); // Auto filters are left out of the file
+        for (TextureFilter filter : {TextureFilter::Auto, TextureFilter::Nearest, TextureFilter::Linear,
+                 TextureFilter::NearestMipmapNearest, TextureFilter::LinearMipmapNearest,
+                 TextureFilter::NearestMipmapLinear, TextureFilter::LinearMipmapLinear}) {
+            QCOMPARE(textureFilterFromString(toString(filter)), std::optional<TextureFilter>(filter));
+            if (filter == TextureFilter::Auto)
+                continue;
+            TextureSampler sampler;
+            sampler.minFilter = filter;
+            const std::array<int, 4> numbers = gltfSamplerValues(sampler);
+            QCOMPARE(
+                textureSamplerFromGltf(numbers[0], numbers[1], numbers[2], numbers[3]).minFilter, filter);
+        }
+        // Absent (-1) and unknown numbers: Auto filters, repeat; a minification value given as
+        // the magnification filter is ignored.
+        QVERIFY(textureSamplerFromGltf(-1, -1, 10497, 10497).isDefault());
+        QVERIFY(textureSamplerFromGltf(12345, 9729 + 1000, 1, 2).isDefault());
+        QCOMPARE(textureSamplerFromGltf(9987, -1, 10497, 10497).magFilter, TextureFilter::Auto);
+        QVERIFY(!textureWrapFromString("clamp"));
+        QVERIFY(!textureFilterFromString("trilinear"));
     }
 
     void uvTransformFollowsKhrTextureTransform()

@@ -91,6 +91,9 @@ Project everythingChanged(const QString& root)
     occlusion.channel = MapChannel::B;
     occlusion.invert = true;
     occlusion.uv.scale = {-1.0, 1.0};
+    occlusion.texCoord = 1;
+    occlusion.sampler = {TextureWrap::ClampToEdge, TextureWrap::MirroredRepeat, TextureFilter::Nearest,
+        TextureFilter::NearestMipmapLinear};
     MaterialMap& emissive = m.map(MapSlot::Emissive);
     emissive.path = under("textures/emission.png");
     emissive.factor = {0.2, 0.4, 0.6, 1.0}; // emissive alpha is not stored: it stays 1
@@ -451,7 +454,11 @@ private Q_SLOTS:
             QJsonObject v2 = saved;
             v2.remove(QLatin1String("compare"));
             v2[QLatin1String("version")] = 2;
-            // Optional fields added since, without a version (docs/project-format.md): "unlit".
+            // Optional fields added since, without a version (docs/project-format.md): "unlit",
+            // the view's "keepUnits".
+            QJsonObject view = v2[QLatin1String("view")].toObject();
+            view.remove(QLatin1String("keepUnits"));
+            v2[QLatin1String("view")] = view;
             QJsonArray materials = v2[QLatin1String("materials")].toArray();
             for (QJsonValueRef each : materials) {
                 QJsonObject m = each.toObject();
@@ -502,6 +509,23 @@ private Q_SLOTS:
         QTest::newRow("part not an object")
             << QByteArray(R"({"format": "facet-project", "version": 2, "parts": [3]})")
             << QStringLiteral("parts[0]: expected an object, got a number");
+        QTest::newRow("unknown wrap") << QByteArray(
+            R"({"format": "facet-project", "version": 3, "materials": [{"normal": {"sampler": {"wrapT": "clamp"}}}]})")
+                                      << QStringLiteral(
+                                             "materials[0].normal.sampler.wrapT: unknown name \"clamp\"");
+        QTest::newRow("minification filter magnifying") << QByteArray(
+            R"({"format": "facet-project", "version": 3, "materials": [{"baseColor": {"sampler": {"magFilter": "linearMipmapLinear"}}}]})")
+                                                        << QStringLiteral("materials[0].baseColor.sampler."
+                                                                          "magFilter: \"linearMipmapLinear\" "
+                                                                          "is a minification filter");
+        QTest::newRow("third UV set") << QByteArray(
+            R"({"format": "facet-project", "version": 3, "materials": [{"occlusion": {"texCoord": 2}}]})")
+                                      << QStringLiteral("materials[0].occlusion.texCoord: 2 is not a "
+                                                        "texture-coordinate set (0 or 1)");
+        QTest::newRow("UV set not an integer") << QByteArray(
+            R"({"format": "facet-project", "version": 3, "materials": [{"occlusion": {"texCoord": 0.5}}]})")
+                                               << QStringLiteral(
+                                                      "materials[0].occlusion.texCoord: expected an integer");
         QTest::newRow("empty") << QByteArray() << QStringLiteral("the file is empty");
         QTest::newRow("whitespace") << QByteArray(" \n\t\n") << QStringLiteral("the file is empty");
         QTest::newRow("broken JSON") << QByteArray(

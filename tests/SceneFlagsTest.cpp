@@ -1,7 +1,8 @@
 // The scene flags of `facet render` and `facet sheet` (app/SceneFlags.h, issue 29): each flag
 // sets its project field (read back from --save-project's file), --set reaches any field through
 // a JSON pointer and is checked by the rules of a project file, and every bad value is refused
-// with exit 2 and a message naming the flag or the path, writing nothing.
+// with exit 2 and a message naming the flag or the path, writing nothing. A transparent background
+// writes the object's coverage as alpha (PNG straight, EXR premultiplied) by every method.
 
 #include <QDir>
 #include <QFile>
@@ -12,7 +13,9 @@
 #include <QtTest/QTest>
 
 #include "TestSupport.h"
+#include "core/Image.h"
 #include "core/Project.h"
+#include "core/ReferenceView.h"
 
 using namespace facet;
 
@@ -76,6 +79,9 @@ private Q_SLOTS:
             "/view/background", "\"environment\"");
         row("--background blurred", render, {QStringLiteral("--background"), QStringLiteral("blurred")},
             "/view/background", "\"blurred\"");
+        row("--background transparent", render,
+            {QStringLiteral("--background"), QStringLiteral("transparent")}, "/view/background",
+            "\"transparent\"");
         row("--background color:", render,
             {QStringLiteral("--background"), QStringLiteral("color:0.1,0.2,0.3")}, "/view/backgroundColor",
             "[0.1,0.2,0.3]");
@@ -163,7 +169,7 @@ private Q_SLOTS:
         row("camera at its target", {QStringLiteral("--camera-position"), QStringLiteral("0,0,0")},
             "camera.target: must differ from position");
         row("background word", {QStringLiteral("--background"), QStringLiteral("transparentish")},
-            "--background: 'transparentish' is not env, blurred or color:R,G,B");
+            "--background: 'transparentish' is not env, blurred, transparent or color:R,G,B");
         row("background negative", {QStringLiteral("--background"), QStringLiteral("color:-1,0,0")},
             "--background: 'color:-1,0,0': a colour is linear and >= 0");
         row("env intensity", {QStringLiteral("--env-intensity"), QStringLiteral("99")},
@@ -181,6 +187,87 @@ private Q_SLOTS:
             "--set '/view/exposureEV=bright': view.exposureEV: expected a number, got a string");
         row("set without =", {QStringLiteral("--set"), QStringLiteral("view")},
             "--set: 'view' is not PATH=VALUE");
+    }
+
+    void transparentBackgroundKeepsAlpha_data()
+    {
+        QTest::addColumn<QStringList>("method");
+        QTest::addColumn<QString>("extension");
+        for (const char* extension : {"png", "exr"}) {
+            const auto row = [&](const char* name, const QStringList& method) {
+                QTest::newRow(
+                    qPrintable(QStringLiteral("%1, %2").arg(QLatin1String(name), QLatin1String(extension))))
+                    << method << QString::fromLatin1(extension);
+            };
+            row("split sum", {QStringLiteral("--ibl"), QStringLiteral("split-sum")});
+            row("fis (accumulated)",
+                {QStringLiteral("--ibl"), QStringLiteral("fis"), QStringLiteral("--ibl-samples"),
+                    QStringLiteral("64")});
+            row("reference (accumulated)",
+                {QStringLiteral("--ibl"), QStringLiteral("reference"), QStringLiteral("--ibl-samples"),
+                    QStringLiteral("32")});
+            row("cpu ground truth", {QStringLiteral("--spp"), QStringLiteral("4")});
+        }
+    }
+
+    // The reference view (the unit sphere) over a transparent background: alpha 1 on the sphere,
+    // 0 in the corners, fractional only on the silhouette; where alpha is 0 there is no colour
+    // (EXR, premultiplied); the sphere's pixels match the same render over the environment.
+    void transparentBackgroundKeepsAlpha()
+    {
+        QFETCH(QStringList, method);
+        QFETCH(QString, extension);
+        const QString transparent = m_dir.filePath(QStringLiteral("transparent.") + extension);
+        const QString opaque = m_dir.filePath(QStringLiteral("opaque.") + extension);
+        for (const QString& out : {transparent, opaque}) {
+            QStringList arguments {QStringLiteral("render"), QStringLiteral("--reference-view"),
+                QStringLiteral("--size"), QStringLiteral("48x48"), QStringLiteral("--quality"),
+                QStringLiteral("draft"), QStringLiteral("--env"), QStringLiteral("uniform:0.5"),
+                QStringLiteral("-o"), out};
+            arguments << method;
+            if (out == transparent)
+                arguments << QStringLiteral("--background") << QStringLiteral("transparent");
+            const facet::test::ProcessResult r = runFacet(arguments);
+            QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        }
+        std::string error;
+        const std::optional<Image> image = Image::load(transparent.toStdString(), &error);
+        QVERIFY2(image, error.c_str());
+        const std::optional<Image> reference = Image::load(opaque.toStdString(), &error);
+        QVERIFY2(reference, error.c_str());
+        QCOMPARE(image->sourceChannels(), 4);
+        int inside = 0, outside = 0;
+        for (int y = 0; y < 48; ++y)
+            for (int x = 0; x < 48; ++x) {
+                const glm::vec4 p = image->at(x, y);
+                const glm::vec4 q = reference->at(x, y);
+                if (referenceview::isInteriorSpherePixel(x, y, 48, 48, 1)) {
+                    ++inside;
+                    QVERIFY2(std::abs(p.a - 1.0f) < 1e-3f,
+                        qPrintable(QStringLiteral("(%1, %2) alpha %3").arg(x).arg(y).arg(p.a)));
+                    QVERIFY2(glm::length(glm::vec3(p) - glm::vec3(q)) < 0.02f,
+                        qPrintable(QStringLiteral(
+                            "(%1, %2): (%3, %4, %5) over nothing, (%6, %7, %8) over the environment")
+                                       .arg(x)
+                                       .arg(y)
+                                       .arg(p.r)
+                                       .arg(p.g)
+                                       .arg(p.b)
+                                       .arg(q.r)
+                                       .arg(q.g)
+                                       .arg(q.b)));
+                } else if (!referenceview::intersectSphere(referenceview::rayDirection(x - 1, y - 1, 48, 48))
+                    && !referenceview::intersectSphere(referenceview::rayDirection(x + 1, y + 1, 48, 48))
+                    && !referenceview::intersectSphere(referenceview::rayDirection(x, y, 48, 48))) {
+                    ++outside;
+                    QVERIFY2(
+                        p.a == 0.0f, qPrintable(QStringLiteral("(%1, %2) alpha %3").arg(x).arg(y).arg(p.a)));
+                    if (extension == QLatin1String("exr"))
+                        QVERIFY(glm::vec3(p) == glm::vec3(0.0f));
+                }
+                QVERIFY(p.a >= 0.0f && p.a <= 1.0f);
+            }
+        QVERIFY(inside > 500 && outside > 500);
     }
 
     void badValuesAreNamed()

@@ -61,16 +61,28 @@ std::shared_ptr<const Environment> DocumentAssets::environment(const std::string
     return entry ? entry->environment : nullptr;
 }
 
-std::shared_ptr<const AssetCache::LoadedMesh> DocumentAssets::mesh(const std::string& nameOrPath)
+namespace {
+const std::string kAssetUnits = "asset units:";
+} // namespace
+
+std::string DocumentAssets::meshSource(const std::string& nameOrPath, bool keepUnits)
 {
+    return keepUnits ? kAssetUnits + nameOrPath : nameOrPath;
+}
+
+std::shared_ptr<const AssetCache::LoadedMesh> DocumentAssets::mesh(const std::string& source)
+{
+    const bool keepUnits = source.starts_with(kAssetUnits);
+    const std::string nameOrPath = keepUnits ? source.substr(kAssetUnits.size()) : source;
     const bool primitive
         = std::find(primitiveNames().begin(), primitiveNames().end(), nameOrPath) != primitiveNames().end();
-    const Entry* entry = lookup(Kind::Mesh, nameOrPath, primitive, [nameOrPath] {
+    const Entry* entry = lookup(Kind::Mesh, source, primitive, [nameOrPath, keepUnits] {
         Entry loaded;
-        if (std::optional<Mesh> mesh = loadViewMesh(nameOrPath, &loaded.problem, &loaded.warning)) {
+        if (std::optional<Mesh> mesh
+            = loadViewMesh(nameOrPath, &loaded.problem, &loaded.warning, keepUnits)) {
             auto result = std::make_shared<AssetCache::LoadedMesh>();
             result->mesh = std::make_shared<const Mesh>(std::move(*mesh));
-            result->key = AssetCache::meshKey(nameOrPath, AssetCache::modifiedTime(nameOrPath));
+            result->key = AssetCache::meshKey(nameOrPath, AssetCache::modifiedTime(nameOrPath), keepUnits);
             loaded.mesh = std::move(result);
         } else if (loaded.problem.empty()) {
             loaded.problem = "loadViewMesh: " + nameOrPath + ": could not be loaded";
@@ -96,7 +108,9 @@ const DocumentAssets::Entry* DocumentAssets::lookup(
     Kind kind, const std::string& name, bool immediate, const Load& load)
 {
     const std::string key = keyOf(kind, name);
-    const std::int64_t modified = AssetCache::modifiedTime(kind == Kind::Map ? fileOfImagePath(name) : name);
+    const std::int64_t modified = AssetCache::modifiedTime(kind == Kind::Map ? fileOfImagePath(name)
+            : kind == Kind::Mesh && name.starts_with(kAssetUnits)            ? name.substr(kAssetUnits.size())
+                                                                             : name);
     const auto found = m_entries.find(key);
     const bool current = found != m_entries.end() && found->second.modified == modified;
     if (current || m_loading.count(key))

@@ -45,8 +45,11 @@ public:
     // Environment::fromSpec(spec) at rotation 0 and intensity 1 (a copy shares its pixels: set
     // rotation and intensity on the copy); null while it loads or when it could not be read.
     std::shared_ptr<const Environment> environment(const std::string& spec);
-    // loadViewMesh(nameOrPath) with its content key; null while it loads or when it failed.
-    std::shared_ptr<const AssetCache::LoadedMesh> mesh(const std::string& nameOrPath);
+    // loadViewMesh with its content key; null while it loads or when it failed. `source` is a
+    // view's mesh name or path as meshSource() makes it (the same file in its own units is another
+    // mesh, with another name here).
+    std::shared_ptr<const AssetCache::LoadedMesh> mesh(const std::string& source);
+    static std::string meshSource(const std::string& nameOrPath, bool keepUnits);
     // The map image of `path` (MapImageCache); null while it decodes or when it failed.
     std::shared_ptr<const MapImage> map(const std::string& path);
 

@@ -44,6 +44,10 @@ MapProperties mapChange(const MaterialMap& a, const MaterialMap& b)
         changed |= MapProperty::FlipGreen;
     if (a.uv != b.uv)
         changed |= MapProperty::Uv;
+    if (a.texCoord != b.texCoord)
+        changed |= MapProperty::TexCoord;
+    if (a.sampler != b.sampler)
+        changed |= MapProperty::Sampler;
     return orAll(changed, a, b, MapProperties(MapProperty::All));
 }
 
@@ -213,7 +217,8 @@ std::string mapNames(MapProperties changed)
     return flagNames<MapProperties>(changed,
         {{MapProperty::Path, "path"}, {MapProperty::ColorSpace, "colorSpace"},
             {MapProperty::Factor, "factor"}, {MapProperty::Channel, "channel"},
-            {MapProperty::Invert, "invert"}, {MapProperty::FlipGreen, "flipGreen"}, {MapProperty::Uv, "uv"}});
+            {MapProperty::Invert, "invert"}, {MapProperty::FlipGreen, "flipGreen"}, {MapProperty::Uv, "uv"},
+            {MapProperty::TexCoord, "texCoord"}, {MapProperty::Sampler, "sampler"}});
 }
 
 std::string materialNames(const MaterialChange& change)
@@ -545,7 +550,7 @@ DocumentChanges changesBetween(const Project& before, const Project& after)
         kinds |= DocumentChange::IblQuality;
     if (before.camera != after.camera)
         kinds |= DocumentChange::Camera;
-    if (before.view.mesh != after.view.mesh)
+    if (before.view.mesh != after.view.mesh || before.view.keepUnits != after.view.keepUnits)
         kinds |= DocumentChange::Mesh;
     changes |= DocumentChanges(kinds);
     return changes;

@@ -69,7 +69,9 @@ enum class MapProperty : unsigned {
     Invert = 1u << 4,
     FlipGreen = 1u << 5,
     Uv = 1u << 6,
-    All = (1u << 7) - 1u,
+    TexCoord = 1u << 7, // which UV set the map reads
+    Sampler = 1u << 8, // wraps and filters
+    All = (1u << 9) - 1u,
 };
 Q_DECLARE_FLAGS(MapProperties, MapProperty)
 Q_DECLARE_OPERATORS_FOR_FLAGS(MapProperties)

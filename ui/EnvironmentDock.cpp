@@ -159,6 +159,8 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
     m_background->addItem(tr("Environment"), int(BackgroundMode::Environment));
     m_background->addItem(tr("Blurred environment"), int(BackgroundMode::Blurred));
     m_background->addItem(tr("Solid colour"), int(BackgroundMode::Color));
+    m_background->addItem(
+        tr("Transparent (black here, alpha in saved renders)"), int(BackgroundMode::Transparent));
     m_blur->setObjectName(QStringLiteral("backgroundBlurSlider"));
     m_blur->setToolTip(tr("The roughness whose prefiltered environment the background shows"));
     m_backgroundColor->setObjectName(QStringLiteral("backgroundColorButton"));

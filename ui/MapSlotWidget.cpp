@@ -246,6 +246,35 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
             editMap(map, tr("Flip Normal Green"));
         });
     }
+    m_texCoord = new QComboBox(this);
+    m_texCoord->setObjectName(QStringLiteral("mapTexCoord_%1").arg(key));
+    m_texCoord->addItem(tr("UV 0"), 0);
+    m_texCoord->addItem(tr("UV 1"), 1);
+    m_texCoord->setToolTip(tr("The texture-coordinate set the map reads (glTF TEXCOORD_0 or TEXCOORD_1: "
+                              "baked occlusion and lightmaps often use the second). A mesh without a "
+                              "second set reads the first."));
+    form->addRow(tr("UV set"), m_texCoord);
+    connect(m_texCoord, &QComboBox::activated, this, [this] {
+        MaterialMap map = m_document->project().material().map(m_slot);
+        map.texCoord = m_texCoord->currentData().toInt();
+        editMap(map, tr("%1 UV Set").arg(title(m_slot)));
+    });
+    m_wrap = new QComboBox(this);
+    m_wrap->setObjectName(QStringLiteral("mapWrap_%1").arg(key));
+    m_wrap->addItem(tr("Repeat"), int(TextureWrap::Repeat));
+    m_wrap->addItem(tr("Clamp to edge"), int(TextureWrap::ClampToEdge));
+    m_wrap->addItem(tr("Mirrored repeat"), int(TextureWrap::MirroredRepeat));
+    m_wrap->setToolTip(tr("How the texture continues outside [0, 1] in U and V (the glTF sampler's "
+                          "wrapS and wrapT)"));
+    form->addRow(tr("Wrap"), m_wrap);
+    connect(m_wrap, &QComboBox::activated, this, [this] {
+        const QVariant wrap = m_wrap->currentData();
+        if (!wrap.isValid())
+            return; // the file's mixed pair, shown as it is
+        MaterialMap map = m_document->project().material().map(m_slot);
+        map.sampler.wrapS = map.sampler.wrapT = TextureWrap(wrap.toInt());
+        editMap(map, tr("%1 Wrap").arg(title(m_slot)));
+    });
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
@@ -292,12 +321,29 @@ void MapSlotWidget::refresh()
     };
     select(m_channel, int(map.channel));
     select(m_colorSpace, int(map.colorSpace));
+    select(m_texCoord, map.texCoord);
+    {
+        // A pair the file gave (clamp in U, repeat in V) is shown as one extra item, kept until
+        // the artist picks one wrap for both.
+        const QSignalBlocker blocker(m_wrap);
+        if (m_wrap->count() > 3)
+            m_wrap->removeItem(3);
+        if (map.sampler.wrapS == map.sampler.wrapT) {
+            m_wrap->setCurrentIndex(m_wrap->findData(int(map.sampler.wrapS)));
+        } else {
+            m_wrap->addItem(tr("U %1, V %2")
+                                .arg(QString::fromLatin1(toString(map.sampler.wrapS)),
+                                    QString::fromLatin1(toString(map.sampler.wrapT))));
+            m_wrap->setCurrentIndex(3);
+        }
+    }
     if (m_invert)
         m_invert->setChecked(map.invert);
     if (m_flipGreen)
         m_flipGreen->setChecked(map.flipGreen);
     for (QWidget* option : {static_cast<QWidget*>(m_channel), static_cast<QWidget*>(m_colorSpace),
-             static_cast<QWidget*>(m_invert), static_cast<QWidget*>(m_flipGreen)})
+             static_cast<QWidget*>(m_invert), static_cast<QWidget*>(m_flipGreen),
+             static_cast<QWidget*>(m_texCoord), static_cast<QWidget*>(m_wrap)})
         if (option)
             option->setEnabled(map.hasTexture());
 }

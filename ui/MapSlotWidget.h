@@ -77,6 +77,8 @@ private:
     QComboBox* m_colorSpace = nullptr;
     QCheckBox* m_invert = nullptr;
     QCheckBox* m_flipGreen = nullptr;
+    QComboBox* m_texCoord = nullptr; // which UV set
+    QComboBox* m_wrap = nullptr; // the sampler's wraps (both axes; a file's mixed pair shown as such)
     QSize m_sourceSize;
 };
 

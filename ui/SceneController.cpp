@@ -62,7 +62,9 @@ void SceneController::onDocumentChanged(const DocumentChanges& changes)
         applyEnvironmentSettings();
     if (changes.testFlag(DocumentChange::IblQuality))
         ++m_iblKey;
-    if (changes.testFlag(DocumentChange::Mesh) && m_document->project().view.mesh != m_meshSource)
+    const ViewSettings& view = m_document->project().view;
+    if (changes.testFlag(DocumentChange::Mesh)
+        && DocumentAssets::meshSource(view.mesh, view.keepUnits) != m_meshSource)
         loadMesh();
     if (changes.testFlag(DocumentChange::MaterialMaps))
         loadMaps(changes);
@@ -204,7 +206,8 @@ void SceneController::applyEnvironmentSettings()
 
 void SceneController::loadMesh()
 {
-    m_meshSource = m_document->project().view.mesh;
+    const ViewSettings& view = m_document->project().view;
+    m_meshSource = DocumentAssets::meshSource(view.mesh, view.keepUnits);
     ++m_loadCounts.meshes;
     m_documentAssets->retry(DocumentAssets::Kind::Mesh, m_meshSource);
     m_meshPending = true;

@@ -1,6 +1,8 @@
 // render/FrameAccumulator's passes over a full-screen triangle (fullscreen.vert).
-// ACCUMULATE (with additive blending into a half-buffer): (k * frame.rgb, k).
-// Otherwise the resolve: (A.rgb + B.rgb) / (A.a + B.a), the mean of every sample added.
+// ACCUMULATE (with additive blending into a half-buffer): k * frame, alpha included (a frame's
+// alpha is its coverage, 1 unless the background is transparent). Every texel of a draw has the
+// same k, so the halves' sample counts are the accumulator's (uniforms), not a channel.
+// Otherwise the resolve: (A + B) / (nA + nB), the mean of every sample added, coverage too.
 in vec2 vUv;
 out vec4 fragColor;
 
@@ -10,16 +12,17 @@ uniform float uSamples;
 #else
 uniform sampler2D uHalfA;
 uniform sampler2D uHalfB;
+uniform float uTotalSamples; // nA + nB
 #endif
 
 void main()
 {
     ivec2 texel = ivec2(gl_FragCoord.xy);
 #ifdef ACCUMULATE
-    fragColor = vec4(texelFetch(uFrame, texel, 0).rgb * uSamples, uSamples);
+    fragColor = texelFetch(uFrame, texel, 0) * uSamples;
 #else
     vec4 a = texelFetch(uHalfA, texel, 0);
     vec4 b = texelFetch(uHalfB, texel, 0);
-    fragColor = vec4((a.rgb + b.rgb) / max(a.a + b.a, 1.0), 1.0);
+    fragColor = (a + b) / max(uTotalSamples, 1.0);
 #endif
 }

@@ -5,7 +5,9 @@
 // Slots (core/Material.h MapSlot): 0 base colour, 1 normal, 2 metallic, 3 roughness, 4 occlusion,
 // 5 emissive.
 // Per slot: uUvTransform (KHR_texture_transform matrix, core UvTransform::matrix()), uChannel
-// (0 rgb, 1 r, 2 g, 3 b, 4 a: core MapChannel), uInvert (scalar maps: 1 - value).
+// (0 rgb, 1 r, 2 g, 3 b, 4 a: core MapChannel), uInvert (scalar maps: 1 - value), uTexCoord (the
+// UV set, 0 or 1: glTF textureInfo.texCoord). Wraps and filters are the unit's sampler object
+// (core TextureSampler, render/TextureCache samplerFor).
 // sRGB-encoded maps are uploaded as GL_SRGB8_ALPHA8, so texture() returns linear values
 // (decoded before filtering, as the sRGB specification intends); no decode happens here.
 
@@ -29,6 +31,7 @@ uniform vec3 uEmissiveFactor; // core Material::emissive(): factor x strength
 uniform mat3 uUvTransform[6];
 uniform int uChannel[6];
 uniform int uInvert[6];
+uniform int uTexCoord[6];
 uniform int uFlipGreen;
 
 #ifdef HAS_BASE_COLOR_MAP
@@ -52,7 +55,20 @@ uniform sampler2D uOcclusionMap;
 uniform sampler2D uEmissiveMap;
 #endif
 
-vec2 mapUv(int slot, vec2 uv) { return (uUvTransform[slot] * vec3(uv, 1.0)).xy; }
+#ifdef HAS_TEXCOORD_1
+in vec2 vUv1; // glTF TEXCOORD_1 from surface.vert
+#endif
+
+// The slot's texture coordinates: its UV set (`uv` is set 0), through its UV transform. Without
+// HAS_TEXCOORD_1 the mesh has no second set (or no sampled map reads it): set 0.
+vec2 mapUv(int slot, vec2 uv)
+{
+#ifdef HAS_TEXCOORD_1
+    if (uTexCoord[slot] == 1)
+        uv = vUv1;
+#endif
+    return (uUvTransform[slot] * vec3(uv, 1.0)).xy;
+}
 
 float pickChannel(vec4 texel, int channel)
 {

@@ -1,5 +1,6 @@
 // The surface pass's vertex stage. Attribute locations match render/GpuMesh (core/Mesh.h's
-// Vertex: position, normal, tangent, uv). Without HAS_NORMAL_MAP no tangent is read.
+// Vertex: position, normal, tangent, uv, color, uv1). Without HAS_NORMAL_MAP no tangent is read,
+// without HAS_TEXCOORD_1 no second UV, without HAS_VERTEX_COLOR no colour.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 #ifdef HAS_NORMAL_MAP
@@ -7,6 +8,10 @@ layout(location = 2) in vec4 aTangent; // xyz along dP/du, w = handedness (glTF 
 out vec4 vTangent;
 #endif
 layout(location = 3) in vec2 aUv;
+#ifdef HAS_TEXCOORD_1
+layout(location = 5) in vec2 aUv1; // glTF TEXCOORD_1 (core/Mesh.h Vertex::uv1)
+out vec2 vUv1;
+#endif
 #ifdef HAS_VERTEX_COLOR
 layout(location = 4) in vec4 aColor; // glTF COLOR_0, linear RGBA (core/Mesh.h Vertex::color)
 out vec4 vColor;
@@ -26,6 +31,9 @@ void main()
     vWorldPosition = world.xyz;
     vNormal = uNormalMatrix * aNormal;
     vUv = aUv;
+#ifdef HAS_TEXCOORD_1
+    vUv1 = aUv1;
+#endif
 #ifdef HAS_VERTEX_COLOR
     vColor = aColor;
 #endif

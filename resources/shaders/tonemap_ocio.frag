@@ -9,11 +9,14 @@ vec4 facetOcioDisplay(vec4 inPixel);
 
 uniform sampler2D uHdr;
 uniform float uExposureScale; // 2^EV, computed on the CPU
+uniform int uStraightAlpha; // as tonemap.frag
 
 out vec4 fragColor;
 
 void main()
 {
-    vec3 radiance = texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0).rgb;
-    fragColor = vec4(facetOcioDisplay(vec4(radiance * uExposureScale, 1.0)).rgb, 1.0);
+    vec4 hdr = texelFetch(uHdr, ivec2(gl_FragCoord.xy), 0);
+    float alpha = uStraightAlpha != 0 ? hdr.a : 1.0;
+    vec3 radiance = uStraightAlpha == 0 ? hdr.rgb : alpha > 0.0 ? hdr.rgb / alpha : vec3(0.0);
+    fragColor = vec4(facetOcioDisplay(vec4(radiance * uExposureScale, 1.0)).rgb, alpha);
 }
