@@ -12,6 +12,7 @@
 
 #include "core/AssetProject.h"
 #include "core/JsonStructure.h"
+#include "core/JsonSupport.h"
 #include "core/ProjectAssets.h"
 
 namespace facet {
@@ -93,26 +94,7 @@ public:
     }
 
 private:
-    static QString typeName(const QJsonValue& v)
-    {
-        switch (v.type()) {
-        case QJsonValue::Null:
-            return QStringLiteral("null");
-        case QJsonValue::Bool:
-            return QStringLiteral("a boolean");
-        case QJsonValue::Double:
-            return QStringLiteral("a number");
-        case QJsonValue::String:
-            return QStringLiteral("a string");
-        case QJsonValue::Array:
-            return QStringLiteral("an array");
-        case QJsonValue::Object:
-            return QStringLiteral("an object");
-        case QJsonValue::Undefined:
-            break;
-        }
-        return QStringLiteral("nothing");
-    }
+    static QString typeName(const QJsonValue& v) { return QString::fromLatin1(jsonsupport::typeName(v)); }
 
     QString* m_error;
     bool m_failed = false;

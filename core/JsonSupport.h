@@ -1,7 +1,7 @@
 #pragma once
 // Small helpers shared by the JSON readers and writers of core/ (Project.cpp, JsonFile.cpp):
 // string conversion, error reporting in the "return false and say why" style, JSON type names.
-// Private to core: not part of any public header.
+// Not part of any public header of core; app/RenderScenario reads its JSON with the same names.
 
 #include <cmath>
 #include <cstdio>

@@ -181,6 +181,7 @@ Project furnaceProject(const Row& row)
     Project project = Project::defaultProject();
     project.environment.source = "uniform:1.0";
     project.environment.quality = IblQuality::Default;
+    project.environment.method = IblMethod::SplitSum; // the split sum's furnace (fis has its own test)
     project.view.mesh = "sphere";
     project.view.debugView = "none";
     project.lights.clear();

@@ -508,9 +508,10 @@ private Q_SLOTS:
             << QStringList {QStringLiteral("render"), QStringLiteral("--ibl"), QStringLiteral("reference"),
                    QStringLiteral("--ibl-samples"), QStringLiteral("0"), QStringLiteral("-o"), out}
             << 2 << QStringLiteral("--ibl-samples: '0' is not a whole number from 1 to 65536");
-        QTest::newRow("ibl samples with the split sum") << QStringList {QStringLiteral("render"),
-            QStringLiteral("--ibl-samples"), QStringLiteral("64"), QStringLiteral("-o"),
-            out} << 2 << QStringLiteral("--ibl-samples: 64 given with --ibl split-sum");
+        QTest::newRow("ibl samples with the split sum")
+            << QStringList {QStringLiteral("render"), QStringLiteral("--ibl"), QStringLiteral("split-sum"),
+                   QStringLiteral("--ibl-samples"), QStringLiteral("64"), QStringLiteral("-o"), out}
+            << 2 << QStringLiteral("--ibl-samples: 64 given with --ibl split-sum");
         QTest::newRow("ibl with spp") << QStringList {QStringLiteral("render"), QStringLiteral("--ibl"),
             QStringLiteral("reference"), QStringLiteral("--spp"), QStringLiteral("16"), QStringLiteral("-o"),
             out} << 2 << QStringLiteral("give one or the other");

@@ -143,6 +143,8 @@ private Q_SLOTS:
     void oneFileDroppedOnTheDockAddsToTheSet();
     void noteGoesWithTheProject_data();
     void noteGoesWithTheProject();
+    void uvSetAndWrapAreEditedAndUndone_data();
+    void uvSetAndWrapAreEditedAndUndone();
 
 private:
     QTemporaryDir m_dir;
@@ -421,6 +423,56 @@ void TextureSetUiTest::noteGoesWithTheProject()
     QVERIFY(!m_document->project().material().map(MapSlot::BaseColor).hasTexture());
     QVERIFY2(m_dock->lastMessage().isEmpty(), qPrintable(m_dock->lastMessage()));
     QVERIFY(!label->isVisible());
+}
+
+void TextureSetUiTest::uvSetAndWrapAreEditedAndUndone_data()
+{
+    QTest::addColumn<MapSlot>("slot");
+    for (const MapSlot slot : {MapSlot::BaseColor, MapSlot::Normal, MapSlot::Occlusion, MapSlot::Emissive})
+        QTest::newRow(toString(slot)) << slot;
+}
+
+// Issue 29: each map's UV set and wrap are fields of the slot, each one undo step; a file's mixed
+// wrap pair shows as one more entry until the artist picks one wrap for both.
+void TextureSetUiTest::uvSetAndWrapAreEditedAndUndone()
+{
+    QFETCH(MapSlot, slot);
+    const QString key = QString::fromLatin1(toString(slot));
+    const QString path = m_dir.filePath(QStringLiteral("wrap/wood_basecolor.png"));
+    QCOMPARE(makeFiles(QFileInfo(path).path(), {QStringLiteral("wood_basecolor.png")}).size(), 1);
+    MapSlotWidget* widget = m_dock->slotWidget(slot);
+    QVERIFY(dropUrls(widget, {QUrl::fromLocalFile(path)}));
+    auto* uvSet = widget->findChild<QComboBox*>(QStringLiteral("mapTexCoord_%1").arg(key));
+    auto* wrap = widget->findChild<QComboBox*>(QStringLiteral("mapWrap_%1").arg(key));
+    QVERIFY(uvSet && wrap && uvSet->isEnabled() && wrap->isEnabled());
+    const auto map = [&] { return m_document->project().material().map(slot); };
+    const int steps = m_document->undoStack()->index();
+
+    uvSet->setCurrentIndex(uvSet->findData(1));
+    Q_EMIT uvSet->activated(uvSet->currentIndex());
+    QCOMPARE(map().texCoord, 1);
+    wrap->setCurrentIndex(wrap->findData(int(TextureWrap::MirroredRepeat)));
+    Q_EMIT wrap->activated(wrap->currentIndex());
+    QCOMPARE(map().sampler.wrapS, TextureWrap::MirroredRepeat);
+    QCOMPARE(map().sampler.wrapT, TextureWrap::MirroredRepeat);
+    QCOMPARE(m_document->undoStack()->index(), steps + 2);
+    m_document->undoStack()->undo();
+    QCOMPARE(map().sampler.wrapS, TextureWrap::Repeat);
+    QCOMPARE(wrap->currentData().toInt(), int(TextureWrap::Repeat));
+    m_document->undoStack()->undo();
+    QCOMPARE(map().texCoord, 0);
+    QCOMPARE(uvSet->currentData().toInt(), 0);
+
+    // A mixed pair (from a file): shown as it is, replaced by a choice for both axes.
+    Material material = m_document->project().material();
+    material.map(slot).sampler.wrapS = TextureWrap::ClampToEdge;
+    m_document->setMaterial(material, QStringLiteral("Mixed"));
+    QCOMPARE(wrap->count(), 4);
+    QCOMPARE(wrap->currentText(), QStringLiteral("U clamp, V repeat"));
+    wrap->setCurrentIndex(wrap->findData(int(TextureWrap::ClampToEdge)));
+    Q_EMIT wrap->activated(wrap->currentIndex());
+    QCOMPARE(map().sampler.wrapT, TextureWrap::ClampToEdge);
+    QCOMPARE(wrap->count(), 3);
 }
 
 QTEST_MAIN(TextureSetUiTest)

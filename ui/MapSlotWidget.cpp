@@ -331,9 +331,12 @@ void MapSlotWidget::refresh()
         if (map.sampler.wrapS == map.sampler.wrapT) {
             m_wrap->setCurrentIndex(m_wrap->findData(int(map.sampler.wrapS)));
         } else {
-            m_wrap->addItem(tr("U %1, V %2")
-                                .arg(QString::fromLatin1(toString(map.sampler.wrapS)),
-                                    QString::fromLatin1(toString(map.sampler.wrapT))));
+            const auto name = [this](TextureWrap wrap) {
+                return wrap == TextureWrap::ClampToEdge   ? tr("clamp")
+                    : wrap == TextureWrap::MirroredRepeat ? tr("mirror")
+                                                          : tr("repeat");
+            };
+            m_wrap->addItem(tr("U %1, V %2").arg(name(map.sampler.wrapS), name(map.sampler.wrapT)));
             m_wrap->setCurrentIndex(3);
         }
     }
