@@ -10,6 +10,7 @@
 #include "SheetCommand.h"
 #include "WindowScreenshot.h"
 
+#include "core/Project.h"
 #include "ui/MainWindow.h"
 #include "ui/ProjectFileController.h"
 #include "ui/SurfaceFormat.h"
@@ -104,6 +105,12 @@ int main(int argc, char* argv[])
     for (int index = 0; index < argc; ++index)
         arguments.append(QString::fromLocal8Bit(argv[index]));
     const facet::CommandLine commandLine = facet::CommandLine::parse(arguments);
+    // Project::defaultProject() reads it and ignores a value it does not know: say so once.
+    if (const QByteArray method = qgetenv("FACET_NEW_PROJECT_METHOD");
+        !method.isEmpty() && !facet::iblMethodFromString(method.toStdString()))
+        std::fprintf(stderr,
+            "facet: FACET_NEW_PROJECT_METHOD='%s' is not split-sum, fis or reference: new projects use fis\n",
+            method.constData());
 
     switch (commandLine.action) {
     case facet::CommandLine::Action::ShowHelp:

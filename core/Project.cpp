@@ -637,6 +637,17 @@ Project Project::defaultProject()
     material.setFactor(MapSlot::Roughness, 0.35);
     material.setFactor(MapSlot::Metallic, 0.0);
     project.environment = EnvironmentSettings {};
+    // Accurate by default (issue 29): a new project's still view and `facet render` converge to
+    // filtered importance sampling; moving, the window draws the split sum. A file keeps what it
+    // says (one without a method is a split-sum file: EnvironmentSettings' own default).
+    // $FACET_NEW_PROJECT_METHOD (split-sum, fis or reference) chooses another for new projects,
+    // for a machine where the still view's refinement is slow (software OpenGL); the test
+    // suite's fixtures that are not about the method use it (docs/app.md). An unknown value is
+    // ignored here; the app warns about it at start.
+    project.environment.method = IblMethod::Fis;
+    if (const QByteArray chosen = qgetenv("FACET_NEW_PROJECT_METHOD"); !chosen.isEmpty())
+        if (const std::optional<IblMethod> method = iblMethodFromString(chosen.toStdString()))
+            project.environment.method = *method;
     project.camera = Camera::referenceView();
     project.view = ViewSettings {};
     project.compare = CompareLayout::defaultFor(project);

@@ -226,6 +226,52 @@ private Q_SLOTS:
         QVERIFY(std::abs(origin.z + 3.0) < 1e-12 && std::abs(origin.x) < 1e-12 && std::abs(origin.y) < 1e-12);
     }
 
+    // Accurate by default (issue 29): a new project converges to fis; $FACET_NEW_PROJECT_METHOD
+    // chooses another (an unknown value is ignored); a file without a method is a split-sum
+    // file, and a saved fis project says so.
+    void newProjectsUseFis_data()
+    {
+        QTest::addColumn<QByteArray>("variable"); // empty: unset
+        QTest::addColumn<IblMethod>("expected");
+        QTest::newRow("unset") << QByteArray() << IblMethod::Fis;
+        QTest::newRow("split-sum") << QByteArray("split-sum") << IblMethod::SplitSum;
+        QTest::newRow("reference") << QByteArray("reference") << IblMethod::Reference;
+        QTest::newRow("fis") << QByteArray("fis") << IblMethod::Fis;
+        QTest::newRow("unknown") << QByteArray("path-traced") << IblMethod::Fis;
+    }
+    void newProjectsUseFis()
+    {
+        QFETCH(QByteArray, variable);
+        QFETCH(IblMethod, expected);
+        const QByteArray saved = qgetenv("FACET_NEW_PROJECT_METHOD");
+        if (variable.isEmpty())
+            qunsetenv("FACET_NEW_PROJECT_METHOD");
+        else
+            qputenv("FACET_NEW_PROJECT_METHOD", variable);
+        const Project project = Project::defaultProject();
+        if (saved.isEmpty())
+            qunsetenv("FACET_NEW_PROJECT_METHOD");
+        else
+            qputenv("FACET_NEW_PROJECT_METHOD", saved);
+        QCOMPARE(project.environment.method, expected);
+        std::string error;
+        const auto again = Project::fromJson(project.toJson(), {}, &error);
+        QVERIFY2(again, error.c_str());
+        QCOMPARE(again->environment.method, expected);
+        QCOMPARE(
+            project.toJson().value(QLatin1String("environment")).toObject().contains(QLatin1String("method")),
+            expected != IblMethod::SplitSum);
+        // A file that names no method keeps the split sum it was written with.
+        QJsonObject json = project.toJson();
+        QJsonObject environment = json.value(QLatin1String("environment")).toObject();
+        environment.remove(QLatin1String("method"));
+        environment.remove(QLatin1String("samples"));
+        json[QLatin1String("environment")] = environment;
+        const auto old = Project::fromJson(json, {}, &error);
+        QVERIFY2(old, error.c_str());
+        QCOMPARE(old->environment.method, IblMethod::SplitSum);
+    }
+
     void enumNamesRoundTrip()
     {
         const char* const toneMappers[] = {"none", "reinhard", "exposure", "aces", "khronos-neutral", "agx"};
@@ -509,6 +555,12 @@ private Q_SLOTS:
         QTest::newRow("part not an object")
             << QByteArray(R"({"format": "facet-project", "version": 2, "parts": [3]})")
             << QStringLiteral("parts[0]: expected an object, got a number");
+        // Issue 29 named "a cell's camera reported as camera.farPlane": a compare cell's own camera
+        // is named by its path, never as the project's camera.
+        QTest::newRow("cell camera") << QByteArray(
+            R"({"format": "facet-project", "version": 3, "materials": [{}], "compare": {"environments": {"cells": [{"source": "studio"}, {"source": "sky", "cameraLinked": false, "camera": {"farPlane": 0.01, "nearPlane": 0.05}}]}}})")
+                                     << QStringLiteral("compare.environments.cells[1].camera.farPlane: must "
+                                                       "be greater than nearPlane");
         QTest::newRow("unknown wrap") << QByteArray(
             R"({"format": "facet-project", "version": 3, "materials": [{"normal": {"sampler": {"wrapT": "clamp"}}}]})")
                                       << QStringLiteral(

@@ -239,6 +239,35 @@ private Q_SLOTS:
         QVERIFY2(differsFromShaded > 20, qPrintable(QString::number(differsFromShaded)));
     }
 
+    // Accurate by default (issue 29): with no lighting flag, the default project renders by fis at
+    // its 256 samples (the suite's other tests set $FACET_NEW_PROJECT_METHOD=split-sum); a
+    // project file that names no method keeps the split sum.
+    void defaultProjectRendersByFis()
+    {
+        const QByteArray saved = qgetenv("FACET_NEW_PROJECT_METHOD");
+        qunsetenv("FACET_NEW_PROJECT_METHOD");
+        const QString out = path(QStringLiteral("default-method.png"));
+        const Result r = runFacet({QStringLiteral("render"), QStringLiteral("--reference-view"),
+            QStringLiteral("--size"), QStringLiteral("24x24"), QStringLiteral("--quality"),
+            QStringLiteral("draft"), QStringLiteral("--stats"), QStringLiteral("-o"), out});
+        const QString project = path(QStringLiteral("no-method.json"));
+        QFile file(project);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(
+            R"({"format": "facet-project", "version": 3, "materials": [{}], "environment": {"source": "studio"}})");
+        file.close();
+        const Result fromFile = runFacet({QStringLiteral("render"), project, QStringLiteral("--size"),
+            QStringLiteral("24x24"), QStringLiteral("--quality"), QStringLiteral("draft"),
+            QStringLiteral("--stats"), QStringLiteral("-o"), out});
+        qputenv("FACET_NEW_PROJECT_METHOD", saved);
+        QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+        QVERIFY2(r.out.contains(QStringLiteral("ibl_method: fis\n"))
+                && r.out.contains(QStringLiteral("ibl_samples: 256\n")),
+            qPrintable(r.out));
+        QVERIFY2(fromFile.exitCode == 0, qPrintable(fromFile.err));
+        QVERIFY2(fromFile.out.contains(QStringLiteral("ibl_method: split-sum\n")), qPrintable(fromFile.out));
+    }
+
     // The white furnace through the command line: with compensation a white metal disappears.
     void groundTruthWhiteFurnace()
     {
