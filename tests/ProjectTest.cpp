@@ -254,6 +254,8 @@ private Q_SLOTS:
         else
             qputenv("FACET_NEW_PROJECT_METHOD", saved);
         QCOMPARE(project.environment.method, expected);
+        // fis at the count that meets issue 29's target; the others at their method's default.
+        QCOMPARE(project.environment.samples, expected == IblMethod::Fis ? 1024 : 0);
         std::string error;
         const auto again = Project::fromJson(project.toJson(), {}, &error);
         QVERIFY2(again, error.c_str());

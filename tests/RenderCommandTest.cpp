@@ -240,7 +240,7 @@ private Q_SLOTS:
     }
 
     // Accurate by default (issue 29): with no lighting flag, the default project renders by fis at
-    // its 256 samples (the suite's other tests set $FACET_NEW_PROJECT_METHOD=split-sum); a
+    // 1024 samples (the suite's other tests set $FACET_NEW_PROJECT_METHOD=split-sum); a
     // project file that names no method keeps the split sum.
     void defaultProjectRendersByFis()
     {
@@ -262,7 +262,7 @@ private Q_SLOTS:
         qputenv("FACET_NEW_PROJECT_METHOD", saved);
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("ibl_method: fis\n"))
-                && r.out.contains(QStringLiteral("ibl_samples: 256\n")),
+                && r.out.contains(QStringLiteral("ibl_samples: 1024\n")),
             qPrintable(r.out));
         QVERIFY2(fromFile.exitCode == 0, qPrintable(fromFile.err));
         QVERIFY2(fromFile.out.contains(QStringLiteral("ibl_method: split-sum\n")), qPrintable(fromFile.out));
