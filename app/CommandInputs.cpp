@@ -20,7 +20,10 @@ bool applyIblOptions(const QString* method, const QString* samples, EnvironmentS
             *error = QStringLiteral("--ibl: '%1' is not split-sum, fis or reference").arg(*method);
             return false;
         }
+        // The method with its own default count (--ibl-samples may follow): a project's count
+        // belongs to its method, and the split sum takes none.
         environment.method = *parsed;
+        environment.samples = 0;
     }
     if (samples) {
         bool ok = false;

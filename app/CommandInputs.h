@@ -23,7 +23,8 @@ std::optional<std::string> exrOrPngOutput(
 // "facet COMMAND: ". nullopt with *error when the file cannot be read.
 std::optional<Project> commandInputProject(const QStringList& positional, const QString& command, QString* error);
 
-// --ibl METHOD and --ibl-samples N (null: not given) into environment.method and .samples. False
+// --ibl METHOD and --ibl-samples N (null: not given) into environment.method and .samples (--ibl
+// alone: the method with its own default count, 0; a project's count belongs to its method). False
 // with *error naming the flag: an unknown method ("--ibl: 'X' is not split-sum or reference"), a
 // count outside 1..kMaxIblSamples, or a count for the split sum, which takes none.
 bool applyIblOptions(const QString* method, const QString* samples, EnvironmentSettings& environment, QString* error);

@@ -259,7 +259,18 @@ private Q_SLOTS:
         const Result fromFile = runFacet({QStringLiteral("render"), project, QStringLiteral("--size"),
             QStringLiteral("24x24"), QStringLiteral("--quality"), QStringLiteral("draft"),
             QStringLiteral("--stats"), QStringLiteral("-o"), out});
+        // --ibl names the method with its own default count: the default project's 1024 is fis's.
+        const Result splitSum = runFacet({QStringLiteral("render"), QStringLiteral("--ibl"),
+            QStringLiteral("split-sum"), QStringLiteral("--size"), QStringLiteral("24x24"),
+            QStringLiteral("--stats"), QStringLiteral("-o"), out});
+        const Result fis = runFacet({QStringLiteral("render"), QStringLiteral("--ibl"), QStringLiteral("fis"),
+            QStringLiteral("--size"), QStringLiteral("24x24"), QStringLiteral("--stats"),
+            QStringLiteral("-o"), out});
         qputenv("FACET_NEW_PROJECT_METHOD", saved);
+        QVERIFY2(splitSum.exitCode == 0 && splitSum.out.contains(QStringLiteral("ibl_method: split-sum\n")),
+            qPrintable(splitSum.err + splitSum.out));
+        QVERIFY2(fis.exitCode == 0 && fis.out.contains(QStringLiteral("ibl_samples: 256\n")),
+            qPrintable(fis.err + fis.out));
         QVERIFY2(r.exitCode == 0, qPrintable(r.err));
         QVERIFY2(r.out.contains(QStringLiteral("ibl_method: fis\n"))
                 && r.out.contains(QStringLiteral("ibl_samples: 1024\n")),
