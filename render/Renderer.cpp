@@ -356,6 +356,11 @@ void Renderer::drawBackground(const RenderScene& scene, const glm::dmat4& view, 
     glBindTexture(GL_TEXTURE_CUBE_MAP, env.prefilteredCubemap);
     program.setInt("uPrefilteredMap", kPrefilteredUnit);
     program.setFloat("uPrefilteredLevels", float(std::max(env.prefilteredLevels, 1)));
+    // The source equirect where the scene has it: sharper than the cube (background.frag).
+    glActiveTexture(GL_TEXTURE0 + kSourceRadianceUnit);
+    glBindTexture(GL_TEXTURE_2D, env.source.radiance);
+    program.setInt("uEnvironmentSource", kSourceRadianceUnit);
+    program.setInt("uEnvironmentSourceBound", env.source.radiance != 0 ? 1 : 0);
     program.setFloat("uBlurRoughness",
                      float(scene.view.background == BackgroundMode::Blurred ? scene.view.backgroundBlurRoughness : 0.0));
     setMat3(program, "uEnvironmentRotation", environmentRotation(env.rotationDegrees));

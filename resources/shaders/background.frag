@@ -1,5 +1,9 @@
-// Pixels that miss the mesh: the environment cubemap (sharp), the prefiltered cubemap at a
-// roughness (blurred), or a solid colour; drawn first at the far plane. Linear radiance.
+// Pixels that miss the mesh: the environment (sharp), the prefiltered cubemap at a roughness
+// (blurred), or a solid colour; drawn first at the far plane. Linear radiance. The sharp
+// environment is the source equirect itself where the scene has it (fis, reference: bilinear,
+// level 0, as core Environment::radiance), else the environment cubemap, a resampling of it that
+// a wide view magnifies (a 256-texel face spans 90 degrees).
+#include "common_equirect.glsl"
 #include "ibl_lookup.glsl"
 
 in vec2 vClip;
@@ -9,6 +13,8 @@ uniform vec3 uCameraPosition;
 uniform int uBackgroundMode; // 0 environment, 1 blurred, 2 colour (core BackgroundMode)
 uniform vec3 uBackgroundColor;
 uniform samplerCube uEnvironmentMap;
+uniform sampler2D uEnvironmentSource; // RGB32F equirect, top row first (render/EnvironmentSource)
+uniform int uEnvironmentSourceBound;
 uniform samplerCube uPrefilteredMap;
 uniform float uPrefilteredLevels;
 uniform float uBlurRoughness;
@@ -31,6 +37,8 @@ void main()
     vec3 radiance;
     if (uBackgroundMode == 1)
         radiance = textureLod(uPrefilteredMap, d, lodFromRoughness(uBlurRoughness, uPrefilteredLevels)).rgb;
+    else if (uEnvironmentSourceBound != 0)
+        radiance = textureLod(uEnvironmentSource, equirectTexCoord(d), 0.0).rgb;
     else
         radiance = textureLod(uEnvironmentMap, d, 0.0).rgb;
     fragColor = vec4(min(radiance * uEnvironmentIntensity, vec3(uMaxRadiance)), uBackgroundAlpha);
