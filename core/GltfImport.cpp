@@ -768,48 +768,4 @@ UvTransform gltfTextureTransform(const glm::dvec2& offset, double rotationRadian
     return uv;
 }
 
-namespace {
-// WebGL's numbers, as glTF 2.0 stores them.
-constexpr std::pair<TextureFilter, int> kGltfFilters[]
-    = {{TextureFilter::Nearest, 9728}, {TextureFilter::Linear, 9729},
-        {TextureFilter::NearestMipmapNearest, 9984}, {TextureFilter::LinearMipmapNearest, 9985},
-        {TextureFilter::NearestMipmapLinear, 9986}, {TextureFilter::LinearMipmapLinear, 9987}};
-constexpr std::pair<TextureWrap, int> kGltfWraps[]
-    = {{TextureWrap::ClampToEdge, 33071}, {TextureWrap::MirroredRepeat, 33648}, {TextureWrap::Repeat, 10497}};
-
-template <typename Enum, std::size_t N>
-Enum fromGltfNumber(const std::pair<Enum, int> (&table)[N], int number, Enum otherwise)
-{
-    for (const auto& [value, gl] : table)
-        if (gl == number)
-            return value;
-    return otherwise;
-}
-template <typename Enum, std::size_t N> int toGltfNumber(const std::pair<Enum, int> (&table)[N], Enum value)
-{
-    for (const auto& [v, gl] : table)
-        if (v == value)
-            return gl;
-    return -1;
-}
-} // namespace
-
-TextureSampler textureSamplerFromGltf(int magFilter, int minFilter, int wrapS, int wrapT)
-{
-    TextureSampler sampler;
-    sampler.magFilter = fromGltfNumber(kGltfFilters, magFilter, TextureFilter::Auto);
-    if (sampler.magFilter != TextureFilter::Nearest && sampler.magFilter != TextureFilter::Linear)
-        sampler.magFilter = TextureFilter::Auto; // a minification value where magnification belongs
-    sampler.minFilter = fromGltfNumber(kGltfFilters, minFilter, TextureFilter::Auto);
-    sampler.wrapS = fromGltfNumber(kGltfWraps, wrapS, TextureWrap::Repeat);
-    sampler.wrapT = fromGltfNumber(kGltfWraps, wrapT, TextureWrap::Repeat);
-    return sampler;
-}
-
-std::array<int, 4> gltfSamplerValues(const TextureSampler& sampler)
-{
-    return {toGltfNumber(kGltfFilters, sampler.magFilter), toGltfNumber(kGltfFilters, sampler.minFilter),
-        toGltfNumber(kGltfWraps, sampler.wrapS), toGltfNumber(kGltfWraps, sampler.wrapT)};
-}
-
 } // namespace facet
