@@ -311,8 +311,8 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
 
     // Textures: rendered and encoded; beside the asset or in its buffer.
     std::vector<std::map<std::string, int>> textureIndex(plans->size());
-    std::vector<std::array<int, 4>>
-        samplers; // {magFilter, minFilter, wrapS, wrapT}, one per distinct sampler
+    // {magFilter, minFilter, wrapS, wrapT} (gltfSamplerValues), one per distinct sampler.
+    std::vector<std::array<int, 4>> samplers;
     for (std::size_t m = 0; m < plans->size(); ++m) {
         const MaterialPlan& plan = (*plans)[m];
         const TextureSetPlan& set = plan.job->plans().front();

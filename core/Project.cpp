@@ -641,16 +641,9 @@ Project Project::defaultProject()
     material.setFactor(MapSlot::Roughness, 0.35);
     material.setFactor(MapSlot::Metallic, 0.0);
     project.environment = EnvironmentSettings {};
-    // Accurate by default (issue 29): a new project's still view and `facet render` converge to
-    // filtered importance sampling; moving, the window draws the split sum. A file keeps what it
-    // says (one without a method is a split-sum file: EnvironmentSettings' own default).
-    // $FACET_NEW_PROJECT_METHOD (split-sum, fis or reference) chooses another for new projects,
-    // for a machine where the still view's refinement is slow (software OpenGL); the test
-    // suite's fixtures that are not about the method use it (docs/app.md). An unknown value is
-    // ignored here; the app warns about it at start.
-    // At 1024 samples: the fewest that meet issue 29's target for the default (median <= 1%,
-    // worst <= 5% on studio, night, forest and sunset: 0.97% / 2.25%; 256, fis's own default
-    // count, 1.50% / 5.96%; docs/benchmarks.md "fis against issue 29's target").
+    // Accurate by default: fis at 1024 samples, the fewest meeting the target of docs/accuracy.md
+    // ("Accurate by default"), which also says why a file without a method stays a split-sum file
+    // and what $FACET_NEW_PROJECT_METHOD is for (an unknown value is ignored here; the app warns).
     project.environment.method = IblMethod::Fis;
     project.environment.samples = kNewProjectFisSamples;
     if (const QByteArray chosen = qgetenv("FACET_NEW_PROJECT_METHOD"); !chosen.isEmpty())
