@@ -169,6 +169,7 @@ int ExportCommand::runGltf(const ExportRequest& request)
     options.binary = binary;
     options.textures = request.options;
     options.generator = "Facet " FACET_VERSION;
+    options.source = viewMeshGltfFile(request.mesh.empty() ? project->view.mesh : request.mesh);
     if (request.dryRun) {
         const std::vector<std::string> files = gltfAssetFiles(path, materials, options, &error);
         if (files.empty())

@@ -18,6 +18,7 @@
 #include "core/AtomicFile.h"
 #include "core/ExportTemplate.h"
 #include "core/FileSet.h"
+#include "core/GltfAssetCopy.h"
 #include "core/GltfImport.h"
 #include "core/ImageWriter.h"
 
@@ -229,6 +230,89 @@ QJsonObject textureInfo(int index, const MaterialPlan& plan, bool secondSet, QJs
     return extra;
 }
 
+// The mesh as Facet holds it: one view per attribute, the indices in one view, a primitive per
+// sub-mesh, one node. The asset's JSON without materials, buffers and buffer views.
+QJsonObject meshAsset(const Mesh& mesh, const std::vector<int>& partMaterials, int materialCount,
+    Buffer& buffer, QJsonArray& bufferViews)
+{
+    QJsonArray accessors;
+    std::vector<float> positions, normals, uvs, uvs1, tangents, colors;
+    glm::vec3 lo(INFINITY), hi(-INFINITY);
+    for (const Vertex& v : mesh.vertices) {
+        positions.insert(positions.end(), {v.position.x, v.position.y, v.position.z});
+        lo = glm::min(lo, v.position);
+        hi = glm::max(hi, v.position);
+        const glm::vec3 n
+            = glm::length(v.normal) > 0.0f ? v.normal / glm::length(v.normal) : glm::vec3(0, 1, 0);
+        normals.insert(normals.end(), {n.x, n.y, n.z});
+        uvs.insert(uvs.end(), {v.uv.x, 1.0f - v.uv.y}); // glTF: v = 0 is the image's top
+        if (mesh.hasTexCoord1)
+            uvs1.insert(uvs1.end(), {v.uv1.x, 1.0f - v.uv1.y});
+        if (mesh.hasTangents)
+            tangents.insert(
+                tangents.end(), {v.tangent.x, v.tangent.y, v.tangent.z, v.tangent.w < 0.0f ? -1.0f : 1.0f});
+        if (mesh.hasVertexColors) {
+            const glm::vec4 c = vertexColor(v);
+            colors.insert(colors.end(), {c.r, c.g, c.b, c.a});
+        }
+    }
+    const qint64 count = qint64(mesh.vertices.size());
+    const auto attribute = [&](const std::vector<float>& values, const char* type, bool withBounds) {
+        const int view
+            = buffer.addView(values.data(), values.size() * sizeof(float), kArrayBuffer, bufferViews);
+        QJsonObject accessor {{QStringLiteral("bufferView"), view}, {QStringLiteral("componentType"), kFloat},
+            {QStringLiteral("count"), count}, {QStringLiteral("type"), QLatin1String(type)}};
+        if (withBounds) {
+            accessor.insert(QStringLiteral("min"), array({lo.x, lo.y, lo.z}));
+            accessor.insert(QStringLiteral("max"), array({hi.x, hi.y, hi.z}));
+        }
+        accessors.append(accessor);
+        return int(accessors.size() - 1);
+    };
+    QJsonObject attributes {{QStringLiteral("POSITION"), attribute(positions, "VEC3", true)},
+        {QStringLiteral("NORMAL"), attribute(normals, "VEC3", false)}};
+    if (mesh.hasUvs)
+        attributes.insert(QStringLiteral("TEXCOORD_0"), attribute(uvs, "VEC2", false));
+    if (mesh.hasTexCoord1)
+        attributes.insert(QStringLiteral("TEXCOORD_1"), attribute(uvs1, "VEC2", false));
+    if (mesh.hasTangents)
+        attributes.insert(QStringLiteral("TANGENT"), attribute(tangents, "VEC4", false));
+    if (mesh.hasVertexColors) // glTF COLOR_0, as read (core/Mesh.h Vertex::color)
+        attributes.insert(QStringLiteral("COLOR_0"), attribute(colors, "VEC4", false));
+    const int indexView = buffer.addView(
+        mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t), kElementArrayBuffer, bufferViews);
+    std::vector<SubMesh> parts = mesh.subMeshes;
+    if (parts.empty())
+        parts.push_back(SubMesh {mesh.name, 0, std::uint32_t(mesh.indices.size()), 0, true});
+    QJsonArray primitives;
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        const SubMesh& part = parts[p];
+        if (part.indexCount == 0)
+            continue;
+        accessors.append(QJsonObject {{QStringLiteral("bufferView"), indexView},
+            {QStringLiteral("byteOffset"), qint64(part.firstIndex) * 4},
+            {QStringLiteral("componentType"), kUnsignedInt},
+            {QStringLiteral("count"), qint64(part.indexCount)},
+            {QStringLiteral("type"), QStringLiteral("SCALAR")}});
+        const int material
+            = p < partMaterials.size() ? std::clamp(partMaterials[p], 0, materialCount - 1) : 0;
+        primitives.append(QJsonObject {{QStringLiteral("attributes"), attributes},
+            {QStringLiteral("indices"), int(accessors.size() - 1)}, {QStringLiteral("material"), material}});
+    }
+
+    return QJsonObject {
+        {QStringLiteral("scene"), 0},
+        {QStringLiteral("scenes"), QJsonArray {QJsonObject {{QStringLiteral("nodes"), QJsonArray {0}}}}},
+        {QStringLiteral("nodes"),
+            QJsonArray {QJsonObject {
+                {QStringLiteral("mesh"), 0}, {QStringLiteral("name"), QString::fromStdString(mesh.name)}}}},
+        {QStringLiteral("meshes"),
+            QJsonArray {QJsonObject {{QStringLiteral("name"), QString::fromStdString(mesh.name)},
+                {QStringLiteral("primitives"), primitives}}}},
+        {QStringLiteral("accessors"), accessors},
+    };
+}
+
 } // namespace
 
 GltfTextureTransform toGltfTextureTransform(const UvTransform& uv)
@@ -278,6 +362,13 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
     const std::optional<std::vector<MaterialPlan>> plans = planMaterials(path, materials, options, &problem);
     if (!plans)
         return fail(problem);
+    // The source asset's nodes, meshes, skins and animations, its materials taken out.
+    std::optional<GltfAssetCopy> source;
+    if (!options.source.empty()) {
+        source = copyGltfAsset(options.source, partMaterials, int(materials.size()), &problem);
+        if (!source)
+            return fail(problem);
+    }
 
     std::filesystem::path folderPath = std::filesystem::path(path).parent_path();
     if (folderPath.empty())
@@ -305,9 +396,15 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
     if (!files.begin(&problem))
         return fail(folderPath.string() + ": " + problem);
 
-    QJsonArray bufferViews, accessors, images, textures, jsonMaterials;
+    QJsonArray bufferViews, images, textures, jsonMaterials;
     Buffer buffer;
     std::set<QString> extensionsUsed;
+    if (source) {
+        buffer.bytes() = source->bytes;
+        bufferViews = source->bufferViews;
+        for (const QJsonValue& name : source->extensionsUsed)
+            extensionsUsed.insert(name.toString());
+    }
 
     // Textures: rendered and encoded; beside the asset or in its buffer.
     std::vector<std::map<std::string, int>> textureIndex(plans->size());
@@ -420,91 +517,21 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
         jsonMaterials.append(json);
     }
 
-    // Geometry: one view per attribute, the indices in one view, a primitive per sub-mesh.
-    std::vector<float> positions, normals, uvs, uvs1, tangents, colors;
-    glm::vec3 lo(INFINITY), hi(-INFINITY);
-    for (const Vertex& v : mesh.vertices) {
-        positions.insert(positions.end(), {v.position.x, v.position.y, v.position.z});
-        lo = glm::min(lo, v.position);
-        hi = glm::max(hi, v.position);
-        const glm::vec3 n
-            = glm::length(v.normal) > 0.0f ? v.normal / glm::length(v.normal) : glm::vec3(0, 1, 0);
-        normals.insert(normals.end(), {n.x, n.y, n.z});
-        uvs.insert(uvs.end(), {v.uv.x, 1.0f - v.uv.y}); // glTF: v = 0 is the image's top
-        if (mesh.hasTexCoord1)
-            uvs1.insert(uvs1.end(), {v.uv1.x, 1.0f - v.uv1.y});
-        if (mesh.hasTangents)
-            tangents.insert(
-                tangents.end(), {v.tangent.x, v.tangent.y, v.tangent.z, v.tangent.w < 0.0f ? -1.0f : 1.0f});
-        if (mesh.hasVertexColors) {
-            const glm::vec4 c = vertexColor(v);
-            colors.insert(colors.end(), {c.r, c.g, c.b, c.a});
-        }
-    }
-    const qint64 count = qint64(mesh.vertices.size());
-    const auto attribute = [&](const std::vector<float>& values, const char* type, bool withBounds) {
-        const int view
-            = buffer.addView(values.data(), values.size() * sizeof(float), kArrayBuffer, bufferViews);
-        QJsonObject accessor {{QStringLiteral("bufferView"), view}, {QStringLiteral("componentType"), kFloat},
-            {QStringLiteral("count"), count}, {QStringLiteral("type"), QLatin1String(type)}};
-        if (withBounds) {
-            accessor.insert(QStringLiteral("min"), array({lo.x, lo.y, lo.z}));
-            accessor.insert(QStringLiteral("max"), array({hi.x, hi.y, hi.z}));
-        }
-        accessors.append(accessor);
-        return int(accessors.size() - 1);
-    };
-    QJsonObject attributes {{QStringLiteral("POSITION"), attribute(positions, "VEC3", true)},
-        {QStringLiteral("NORMAL"), attribute(normals, "VEC3", false)}};
-    if (mesh.hasUvs)
-        attributes.insert(QStringLiteral("TEXCOORD_0"), attribute(uvs, "VEC2", false));
-    if (mesh.hasTexCoord1)
-        attributes.insert(QStringLiteral("TEXCOORD_1"), attribute(uvs1, "VEC2", false));
-    if (mesh.hasTangents)
-        attributes.insert(QStringLiteral("TANGENT"), attribute(tangents, "VEC4", false));
-    if (mesh.hasVertexColors) // glTF COLOR_0, as read (core/Mesh.h Vertex::color)
-        attributes.insert(QStringLiteral("COLOR_0"), attribute(colors, "VEC4", false));
-    const int indexView = buffer.addView(
-        mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t), kElementArrayBuffer, bufferViews);
-    std::vector<SubMesh> parts = mesh.subMeshes;
-    if (parts.empty())
-        parts.push_back(SubMesh {mesh.name, 0, std::uint32_t(mesh.indices.size()), 0, true});
-    QJsonArray primitives;
-    for (std::size_t p = 0; p < parts.size(); ++p) {
-        const SubMesh& part = parts[p];
-        if (part.indexCount == 0)
-            continue;
-        accessors.append(QJsonObject {{QStringLiteral("bufferView"), indexView},
-            {QStringLiteral("byteOffset"), qint64(part.firstIndex) * 4},
-            {QStringLiteral("componentType"), kUnsignedInt},
-            {QStringLiteral("count"), qint64(part.indexCount)},
-            {QStringLiteral("type"), QStringLiteral("SCALAR")}});
-        const int material
-            = p < partMaterials.size() ? std::clamp(partMaterials[p], 0, int(materials.size()) - 1) : 0;
-        primitives.append(QJsonObject {{QStringLiteral("attributes"), attributes},
-            {QStringLiteral("indices"), int(accessors.size() - 1)}, {QStringLiteral("material"), material}});
-    }
-
+    QJsonObject asset
+        = source ? source->root : meshAsset(mesh, partMaterials, int(materials.size()), buffer, bufferViews);
+    QJsonObject assetInfo = asset.value(QStringLiteral("asset")).toObject();
+    assetInfo.insert(QStringLiteral("version"), QStringLiteral("2.0"));
+    assetInfo.insert(QStringLiteral("generator"), QString::fromStdString(options.generator));
+    assetInfo.remove(QStringLiteral("minVersion"));
+    asset.insert(QStringLiteral("asset"), assetInfo);
     QJsonObject bufferJson {{QStringLiteral("byteLength"), qint64(buffer.bytes().size())}};
     if (!options.binary)
         bufferJson.insert(QStringLiteral("uri"), QString::fromStdString(binName));
-    QJsonObject asset {
-        {QStringLiteral("asset"),
-            QJsonObject {{QStringLiteral("version"), QStringLiteral("2.0")},
-                {QStringLiteral("generator"), QString::fromStdString(options.generator)}}},
-        {QStringLiteral("scene"), 0},
-        {QStringLiteral("scenes"), QJsonArray {QJsonObject {{QStringLiteral("nodes"), QJsonArray {0}}}}},
-        {QStringLiteral("nodes"),
-            QJsonArray {QJsonObject {
-                {QStringLiteral("mesh"), 0}, {QStringLiteral("name"), QString::fromStdString(mesh.name)}}}},
-        {QStringLiteral("meshes"),
-            QJsonArray {QJsonObject {{QStringLiteral("name"), QString::fromStdString(mesh.name)},
-                {QStringLiteral("primitives"), primitives}}}},
-        {QStringLiteral("materials"), jsonMaterials},
-        {QStringLiteral("accessors"), accessors},
-        {QStringLiteral("bufferViews"), bufferViews},
-        {QStringLiteral("buffers"), QJsonArray {bufferJson}},
-    };
+    asset.insert(QStringLiteral("materials"), jsonMaterials);
+    asset.insert(QStringLiteral("bufferViews"), bufferViews);
+    asset.insert(QStringLiteral("buffers"), QJsonArray {bufferJson});
+    if (source && !source->extensionsRequired.isEmpty())
+        asset.insert(QStringLiteral("extensionsRequired"), source->extensionsRequired);
     if (!textures.isEmpty()) {
         asset.insert(QStringLiteral("textures"), textures);
         asset.insert(QStringLiteral("images"), images);

@@ -11,10 +11,9 @@
 // are baked into the textures. IOR other than 1.5 is KHR_materials_ior; an emissive strength
 // other than 1 KHR_materials_emissive_strength. docs/export.md, "glTF".
 //
-// The mesh is written as Facet holds it: positions (fitted to the unit sphere for an imported
-// mesh, core/ProjectAssets loadViewMesh), unit normals, texture coordinates (v flipped to glTF's
-// top-left origin), tangents when the mesh has them, one primitive per sub-mesh with its
-// material.
+// Without GltfExportOptions::source the mesh is written as Facet holds it: positions (fitted to the unit
+// sphere for an imported mesh, core/ProjectAssets loadViewMesh), unit normals, texture coordinates (v flipped
+// to glTF's top-left origin), tangents when the mesh has them, one primitive per sub-mesh with its material.
 
 #include <string>
 #include <vector>
@@ -31,6 +30,12 @@ struct GltfExportOptions {
     bool binary = false; // .glb: one file, images embedded
     TextureSetOptions textures; // size; bit depth 8 or 16 (PNG)
     std::string generator = "Facet";
+    // The glTF file the mesh was read from (core/ProjectAssets viewMeshGltfFile), or empty. When
+    // set, the asset is kept (core/GltfAssetCopy): its scenes, nodes and their transforms, meshes,
+    // morph targets, skins, animations, cameras and extras as the file has them, in its own units,
+    // with only the materials and textures Facet's; `mesh` then serves for its TEXCOORD_1 flag
+    // and partMaterials index importGltf's parts.
+    std::string source;
 };
 
 // KHR_texture_transform's values (glTF's top-left UV space, rotation in radians) for Facet's

@@ -605,6 +605,7 @@ std::optional<GltfAsset> importChecked(const std::string& path, const GltfImport
                     sub.name = partName(model, instance, p);
                     sub.materialIndex = *material;
                     mesh.subMeshes.push_back(std::move(sub));
+                    asset.partSources.push_back({instance.node, instance.mesh, int(p)});
                 }
                 continue;
             }
@@ -614,6 +615,7 @@ std::optional<GltfAsset> importChecked(const std::string& path, const GltfImport
                 return std::nullopt;
             if (mesh.subMeshes.size() == before)
                 continue; // no triangles
+            asset.partSources.push_back({instance.node, instance.mesh, int(p)});
             if (!facts->hasUvs)
                 parts.withoutUvs.push_back(before);
             parts.allHaveTangents = parts.allHaveTangents && facts->hasTangents;

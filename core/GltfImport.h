@@ -48,6 +48,14 @@ struct GltfAsset {
     // The file's materials in file order, then "Default" (glTF's default material: white,
     // metallic 1, roughness 1) when a primitive names none. At least one.
     std::vector<Material> materials;
+    // Where each sub-mesh comes from, parallel to mesh.subMeshes: the node that instances it, and
+    // the mesh and primitive in the file (what an export that keeps the asset's nodes rewrites).
+    struct PartSource {
+        int node = -1;
+        int mesh = -1;
+        int primitive = -1;
+    };
+    std::vector<PartSource> partSources;
 };
 
 // Reads `path` (.gltf or .glb, by content). On failure returns nullopt and sets *error to

@@ -172,7 +172,7 @@ std::uint32_t readUint32(const std::vector<unsigned char>& bytes, std::size_t at
 } // namespace
 
 bool loadModel(const std::string& path, std::size_t maxBytes, tinygltf::Model& model, std::string* problem,
-    std::string* warning)
+    std::string* warning, std::string* sourceJson)
 {
     const QFileInfo info(QString::fromStdString(path));
     if (path.empty())
@@ -217,6 +217,8 @@ bool loadModel(const std::string& path, std::size_t maxBytes, tinygltf::Model& m
                     const std::string json(bytes.begin() + 20, bytes.begin() + std::ptrdiff_t(20 + jsonLength));
                     if (const std::optional<std::string> shape = jsonStructureProblem(json, kGltfJsonRules))
                         return fail("its JSON chunk, " + *shape, problem);
+                    if (sourceJson)
+                        *sourceJson = json;
                     std::string field;
                     std::string rewritten = prepareJson(json, &field);
                     if (!field.empty())
@@ -244,6 +246,8 @@ bool loadModel(const std::string& path, std::size_t maxBytes, tinygltf::Model& m
             const std::string_view json(reinterpret_cast<const char*>(bytes.data()), bytes.size());
             if (const std::optional<std::string> shape = jsonStructureProblem(json, kGltfJsonRules))
                 return fail(*shape, problem);
+            if (sourceJson)
+                sourceJson->assign(json);
             std::string field;
             const std::string text = prepareJson(std::string(bytes.begin(), bytes.end()), &field);
             if (!field.empty())

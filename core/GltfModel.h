@@ -20,9 +20,10 @@
 namespace facet::gltfmodel {
 
 // Parses the asset at `path` (a .gltf or .glb of at most maxBytes, its buffers and images each
-// as large at most). False with *problem (no prefix); *warning: tinygltf's warnings on one line.
+// as large at most). False with *problem (no prefix); *warning: tinygltf's warnings on one line;
+// *json (optional): the file's JSON as written (a .glb's JSON chunk), checked for depth.
 bool loadModel(const std::string& path, std::size_t maxBytes, tinygltf::Model& model, std::string* problem,
-    std::string* warning);
+    std::string* warning, std::string* json = nullptr);
 
 // A checked view of an accessor's elements: every byte it addresses lies inside its buffer.
 struct AccessorView {

@@ -72,6 +72,15 @@ std::optional<Mesh> loadViewMesh(
     return mesh;
 }
 
+std::string viewMeshGltfFile(const std::string& nameOrPath)
+{
+    if (makePrimitive(nameOrPath))
+        return {};
+    std::string error;
+    const std::optional<std::string> file = AssetLibrary::fileForSpec(nameOrPath, "viewMeshGltfFile", &error);
+    return file && isGltfFileName(*file) ? *file : std::string();
+}
+
 std::optional<ProjectAssets> loadProjectAssets(const Project& project, std::string* error, std::string* warning)
 {
     AssetCache assets;

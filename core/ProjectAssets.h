@@ -56,4 +56,9 @@ std::optional<ProjectAssets> loadProjectAssets(
 std::optional<Mesh> loadViewMesh(const std::string& nameOrPath, std::string* error,
     std::string* warning = nullptr, bool keepUnits = false);
 
+// The glTF file (.gltf, .glb) behind a view's mesh name, resolved as loadViewMesh resolves it; empty
+// for a built-in primitive, another mesh format or a name that does not resolve. A glTF export keeps
+// this asset's nodes, skins and animations (GltfExportOptions::source).
+std::string viewMeshGltfFile(const std::string& nameOrPath);
+
 } // namespace facet

@@ -287,8 +287,10 @@ bool ExportDialog::exportNow()
         options.binary = m_template->currentData().toString() == QStringLiteral("glb");
         options.textures = chosenOptions();
         options.generator = "Facet " FACET_VERSION;
+        options.source = viewMeshGltfFile(m_project.view.mesh);
         std::string warning;
-        const std::optional<Mesh> mesh = loadViewMesh(m_project.view.mesh, &error, &warning);
+        const std::optional<Mesh> mesh
+            = loadViewMesh(m_project.view.mesh, &error, &warning, m_project.view.keepUnits);
         std::vector<int> parts;
         if (m_materials->currentData().toInt() < 0)
             for (std::size_t part = 0; mesh && part < mesh->subMeshes.size(); ++part)
