@@ -316,6 +316,9 @@ bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene,
         view.state.target = std::max(scene.sampling.samples, 1);
         if (!showsIntegratedLight(scene))
             view.state.target = 1;
+        view.state.finalTarget = view.state.target;
+        if (scene.sampling.method == IblMethod::Fis)
+            view.state.target = fisRefinementLevels(view.state.target).front();
         if (!view.accumulator.reset(width, height, error) || !m_renderer->render(preview, *view.held, error))
             return false;
         m_lastWidth = width;
@@ -385,14 +388,39 @@ bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene,
     }
     m_lastWidth = width;
     m_lastHeight = height;
+    if (scene.sampling.method == IblMethod::Fis && state.samples >= state.target
+        && state.target < state.finalTarget) {
+        // A level is complete: its estimate is held on screen while the next, four times the
+        // samples, accumulates from nothing.
+        if (!view.accumulator.resolve(*view.held, error) || !view.accumulator.reset(width, height, error))
+            return false;
+        state.levelShown = state.target;
+        state.target = std::min(state.target * 4, state.finalTarget);
+        state.samples = 0;
+        state.draws = 0;
+        state.lastDrawSamples = 0;
+        state.showing = false;
+        return show(*view.held, scene.view, framebuffer, rect, error);
+    }
     // Fis's partial runs are biased (a Hammersley prefix covers only part of the lobe): shown
     // when complete. Reference's are unbiased, and shown once no longer mostly noise.
     state.showing = state.samples
         >= (scene.sampling.method == IblMethod::Fis ? state.target : std::min(kRefinementShownAfter, state.target));
+    if (state.showing && scene.sampling.method == IblMethod::Fis)
+        state.levelShown = state.target;
     if (!state.showing)
         return show(*view.held, scene.view, framebuffer, rect, error);
     // The mean so far into the frame target (the sums are the accumulator's own textures).
     return view.accumulator.resolve(*view.frame, error) && show(*view.frame, scene.view, framebuffer, rect, error);
+}
+
+std::vector<int> FrameRenderer::fisRefinementLevels(int samples)
+{
+    std::vector<int> levels;
+    for (int level = std::max(samples, 1); !levels.empty() ? level >= kFisFirstLevel : true; level /= 4)
+        levels.push_back(level);
+    std::reverse(levels.begin(), levels.end());
+    return levels;
 }
 
 const FrameRenderer::Refinement& FrameRenderer::refinement(int slot) const

@@ -136,7 +136,8 @@ public:
     // same scene by the split sum) into a held target and shows it; each later call adds one draw
     // of `drawSamples` samples (at most what is left) and shows the held frame until
     // kRefinementShownAfter samples are in for Reference (an image of a few samples is noise) or
-    // all of them for Fis (a partial run of its points covers part of the lobe), then the mean
+    // all of them for a level of Fis (fisRefinementLevels: a partial run of its points covers part
+    // of the lobe; each complete level is held on screen while the next accumulates), then the mean
     // so far. Calls once done add nothing and show the mean again (an exposure edit). Draws come
     // in pairs of one power-of-two size and one sub-pixel offset, each pair an aligned block of
     // the run: a draw takes at most `drawSamples` (rounded down to a power of two), fewer while
@@ -150,19 +151,34 @@ public:
     // quasi-Monte Carlo runs (their own seeds), so the estimate is the mean's error, not a bound
     // far above it (renderConverged's halves share one run: its estimate is conservative).
     struct Refinement {
-        int samples = 0; // per pixel so far
-        int target = 0; // per pixel when done (1 for a debug view the samples cannot change)
+        int samples = 0; // per pixel so far, of the run being accumulated
+        int target = 0; // per pixel when that run is done (1 for a debug view the samples cannot change)
+        // Fis refines in levels (fisRefinementLevels): the last level's samples, the whole
+        // estimate, and the complete level on screen meanwhile (0: the split-sum preview).
+        int finalTarget = 0;
+        int levelShown = 0;
         int draws = 0;
         double seconds = 0.0; // of the draws, glFinish'ed
         double lastDrawMs = 0.0;
         int lastDrawSamples = 0; // the last draw's samples (lastDrawMs is its time)
-        bool showing = false; // the accumulation, not the held split-sum frame, is on screen
+        bool showing
+            = false; // the accumulation, not the held frame (split sum, or fis's last level), is on screen
         // Reference: the last noise estimate (relative RMSE of the mean's noise over the object).
         std::optional<double> noise;
         double noiseSeconds = 0.0; // `seconds` when it was made
         bool noiseReached() const { return noise && *noise <= kRefinementNoiseTarget; }
-        bool done() const { return target > 0 && (samples >= target || noiseReached()); }
+        bool done() const
+        {
+            return target > 0 && ((samples >= target && target >= finalTarget) || noiseReached());
+        }
     };
+    // Fis's levels for `samples` points: samples / 4^k for k = K ... 0, the first at least
+    // kFisFirstLevel (64; 1024 -> 64, 256, 1024). A level is a complete estimate with its own
+    // footprints (a prefix of a run's points is not: it covers part of the lobe), shown when done
+    // while the next accumulates; the error falls level by level, and the levels before the last
+    // cost at most a third more. docs/ibl.md, "Refining in the window".
+    static std::vector<int> fisRefinementLevels(int samples);
+    static constexpr int kFisFirstLevel = 64;
     static constexpr int kRefinementShownAfter = 16;
     static constexpr double kRefinementNoiseTarget = 0.01;
     static constexpr double kNoiseIntervalSeconds = 0.5;

@@ -24,6 +24,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -85,6 +86,12 @@ const BoundedRow kRows[] = {
     {{"studio with a light", Gltf, SmithGGXCorrelated, Distribution::GGX, Fresnel::Schlick,
         DielectricCoupling::FresnelMix, true, {0.8, 0.3, 0.1}, 0.0, 0.4, "studio", 40.0, true}, 0.01},
 };
+
+bool sameImage(const Image& a, const Image& b)
+{
+    return a.width() == b.width() && a.height() == b.height()
+        && std::equal(a.data(), a.data() + a.pixelCount(), b.data());
+}
 
 } // namespace
 
@@ -221,6 +228,56 @@ private Q_SLOTS:
         const double rmse = relativeRmse(*split, *whole);
         std::printf("  4 draws against 1: relative RMSE %.6f\n", rmse);
         QVERIFY2(rmse < 2e-3, qPrintable(QString::number(rmse))); // RGBA16F against RGBA32F
+    }
+
+    // The window refines fis level by level (FrameRenderer::fisRefinementLevels): 256 samples
+    // are 64, then 256. The split-sum preview is shown until the first level is complete; that
+    // level's image, the whole 64-sample estimate (the same as a refinement of 64 samples), stays
+    // on screen while the 256 accumulate; then the 256-sample image.
+    void refinesLevelByLevel()
+    {
+        QCOMPARE(FrameRenderer::fisRefinementLevels(1024), (std::vector<int> {64, 256, 1024}));
+        QCOMPARE(FrameRenderer::fisRefinementLevels(256), (std::vector<int> {64, 256}));
+        QCOMPARE(FrameRenderer::fisRefinementLevels(200), (std::vector<int> {200}));
+        QCOMPARE(FrameRenderer::fisRefinementLevels(4), (std::vector<int> {4}));
+        std::string error;
+        std::vector<test::ReferenceViewRenderer::RefineStep> steps, single;
+        const auto state = m_gpu.refine(
+            projectOf(kRows[1].row, 256), "default", kSize, 16, &error, nullptr, nullptr, &steps);
+        QVERIFY2(state, error.c_str());
+        QVERIFY(state->done());
+        QCOMPARE(state->samples, 256);
+        QCOMPARE(state->levelShown, 256);
+        const auto alone = m_gpu.refine(
+            projectOf(kRows[1].row, 64), "default", kSize, 16, &error, nullptr, nullptr, &single);
+        QVERIFY2(alone, error.c_str());
+        const Image& preview = steps.front().shown;
+        const Image* level = nullptr;
+        int levelSteps = 0;
+        for (std::size_t i = 0; i < steps.size(); ++i) {
+            const FrameRenderer::Refinement& s = steps[i].state;
+            if (s.levelShown == 0) {
+                QCOMPARE(s.target, 64);
+                QVERIFY(sameImage(steps[i].shown, preview));
+            } else if (s.levelShown == 64) {
+                QCOMPARE(s.target, 256);
+                if (!level)
+                    level = &steps[i].shown;
+                QVERIFY(sameImage(steps[i].shown, *level));
+                ++levelSteps;
+            } else {
+                QCOMPARE(s.levelShown, 256);
+                QCOMPARE(i, steps.size() - 1);
+            }
+        }
+        QVERIFY(level && levelSteps >= 2);
+        const double againstAlone = relativeRmse(*level, single.back().shown);
+        const double againstPreview = relativeRmse(*level, preview);
+        const double againstFinal = relativeRmse(*level, steps.back().shown);
+        std::printf("  level 64 against a 64-sample refinement %.5f, the preview %.4f, the 256 %.4f\n",
+            againstAlone, againstPreview, againstFinal);
+        QVERIFY2(againstAlone < 2e-3, qPrintable(QString::number(againstAlone))); // RGBA16F held frame
+        QVERIFY(againstPreview > 10.0 * againstAlone && againstFinal > 10.0 * againstAlone);
     }
 
     // A normal map that tilts the shading normal away from the viewer near one side of the

@@ -47,6 +47,10 @@ QString ViewportFrameStats::summary() const
                   .arg(*refinement.noise * 100.0, 0, 'f', 2)
             : QString();
         QString state = QCoreApplication::translate("ViewportRenderer", "(refining)");
+        // Fis's levels: "FIS 96/256 spp · … (refining; showing 64)".
+        if (refinement.levelShown > 0 && !refinement.done())
+            state = QCoreApplication::translate("ViewportRenderer", "(refining; showing %1)")
+                        .arg(refinement.levelShown);
         if (refinement.noiseReached())
             state = QCoreApplication::translate("ViewportRenderer", "(done: noise under %1%)")
                         .arg(FrameRenderer::kRefinementNoiseTarget * 100.0, 0, 'g', 3);

@@ -6,7 +6,9 @@
 // move continuously with v; Heitz's method [JCGT 7(4)] turns its frame with v's azimuth, and where
 // n = v the whole pattern turned about one pixel: a pinch in the middle of a glossy sphere. The Sobol' (0, 2)-sequence instead, whose every prefix covers the
 // lobe (so a partial sum would be a usable preview), measured worse: worst 23.6% against 15.5% at
-// 64 samples on the five CC0 maps. A partial run is therefore never shown (ViewportRenderer). Each
+// 64 samples on the five CC0 maps, and an Owen-scrambled Sobol' net per pixel [Burley 2020] worse at
+// every count (docs/benchmarks.md, "Decorrelated points"). A partial run is therefore never shown;
+// the window refines in levels, each a whole run (FrameRenderer::fisRefinementLevels). Each
 // sample reads the environment at the mip level of its footprint
 // (filteredLodAt), so the few samples estimate the lobe's integral over the prefiltered source
 // rather than sparkle. The BRDF is evaluateBrdf(), per sample: stretched grazing lobes, per-sample

@@ -91,7 +91,7 @@ std::optional<Image> ReferenceViewRenderer::render(const Project& project, const
 
 std::optional<FrameRenderer::Refinement> ReferenceViewRenderer::refine(const Project& project,
     const std::string& preset, int size, int drawSamples, std::string* error,
-    std::optional<FrameAccumulator::Spread>* spread, std::vector<int>* draws)
+    std::optional<FrameAccumulator::Spread>* spread, std::vector<int>* draws, std::vector<RefineStep>* steps)
 {
     auto scene = prepareScene(project, preset, error);
     if (!scene)
@@ -103,14 +103,20 @@ std::optional<FrameRenderer::Refinement> ReferenceViewRenderer::refine(const Pro
         return std::nullopt;
     FrameRenderer& frames = *m_state->frames;
     const FrameRect rect {0, 0, size, size};
+    const auto record = [&] {
+        if (steps)
+            steps->push_back({frames.refinement(), target->readPixels()});
+    };
     if (!frames.refine(preview, *scene, target->framebufferId(), rect, /*restart=*/true, drawSamples, error))
         return std::nullopt;
-    // A bound on the calls: the target's draws, and one more.
-    for (int call = 0; !frames.refinement().done() && call <= scene->sampling.samples; ++call) {
+    record();
+    // A bound on the calls: the target's draws (fis: its levels', at most 4/3 of them), and more.
+    for (int call = 0; !frames.refinement().done() && call <= 2 * scene->sampling.samples + 8; ++call) {
         if (!frames.refine(preview, *scene, target->framebufferId(), rect, false, drawSamples, error))
             return std::nullopt;
         if (draws)
             draws->push_back(frames.refinement().lastDrawSamples);
+        record();
     }
     if (spread)
         *spread = frames.refinementSpread();

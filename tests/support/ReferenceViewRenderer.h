@@ -44,10 +44,16 @@ public:
         const Project& project, const std::string& preset, int size, std::string* error);
     // The window's refinement of `project`'s reference view (FrameRenderer::refine, draws of
     // `drawSamples`) into a size x size target, called until done: its state then, and (optional)
-    // the accumulation's mean and variance, and each draw's samples. nullopt with *error on any failure.
-    std::optional<FrameRenderer::Refinement> refine(const Project& project, const std::string& preset, int size,
-        int drawSamples, std::string* error, std::optional<FrameAccumulator::Spread>* spread = nullptr,
-        std::vector<int>* draws = nullptr);
+    // the accumulation's mean and variance, each draw's samples, and after each call its state and
+    // the target as shown (display-referred, top row first). nullopt with *error on any failure.
+    struct RefineStep {
+        FrameRenderer::Refinement state;
+        Image shown;
+    };
+    std::optional<FrameRenderer::Refinement> refine(const Project& project, const std::string& preset,
+        int size, int drawSamples, std::string* error,
+        std::optional<FrameAccumulator::Spread>* spread = nullptr, std::vector<int>* draws = nullptr,
+        std::vector<RefineStep>* steps = nullptr);
 
     // The split sum's sharp-lobe samples of the scenes rendered from now on
     // (IblSampling::sharpLobeSamples; 0: the prefiltered lookup only).
