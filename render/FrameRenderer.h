@@ -112,8 +112,10 @@ public:
         std::optional<double> noise;
     };
     // renderImage() for any method: a Reference or Fis scene is drawn in draws of at most
-    // kSamplesPerDraw samples ([0, samples) of a run of `samples`, scene.sampling's sampleBase,
-    // samples and runLength replaced) into RGBA32F targets summed by a FrameAccumulator, then
+    // kSamplesPerDraw samples (Fis: [0, samples) of a run of `samples`; Reference: two
+    // independent runs of samples / 2, draws alternating, as refine() draws them, so that the
+    // noise estimate is the error's; scene.sampling's sampleBase, samples, seed and runLength
+    // replaced) into RGBA32F targets summed by a FrameAccumulator, then
     // resolved and read back; a split-sum scene is one renderImage() into a target of `format`. A
     // debug view that does not show the integrated light (debugViewShowsIntegratedLight) takes
     // one sample whatever `samples` says.
