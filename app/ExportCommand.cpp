@@ -171,7 +171,8 @@ int ExportCommand::runGltf(const ExportRequest& request)
     options.generator = "Facet " FACET_VERSION;
     options.source = viewMeshGltfFile(request.mesh.empty() ? project->view.mesh : request.mesh);
     if (request.dryRun) {
-        const std::vector<std::string> files = gltfAssetFiles(path, materials, options, &error);
+        const std::vector<std::string> files
+            = gltfAssetFiles(path, materials, options, &error, mesh->hasTexCoord1);
         if (files.empty())
             return fail(error);
         std::printf("%s (glTF 2.0%s): %zu material%s on '%s', %zu files\n", path.c_str(),

@@ -90,8 +90,10 @@ std::string stemOf(const std::string& path)
     return std::filesystem::path(path).stem().string();
 }
 
+// `secondSet`: the mesh has TEXCOORD_1; without it every map reads set 0, whatever it names.
 std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
-    const std::vector<Material>& materials, const GltfExportOptions& options, std::string* error)
+    const std::vector<Material>& materials, const GltfExportOptions& options, bool secondSet,
+    std::string* error)
 {
     std::optional<ExportTemplate> gltf = ExportTemplate::builtin("gltf-textures");
     if (!gltf) {
@@ -124,13 +126,14 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
             const MaterialMap& map = material.map(slot);
             if (!map.hasTexture())
                 continue;
-            if (set && *set != map.texCoord) {
+            const int texCoord = secondSet ? map.texCoord : 0;
+            if (set && *set != texCoord) {
                 *error = "material '" + material.name + "': its maps read different texture-coordinate sets ("
-                    + toString(slot) + " reads TEXCOORD_" + std::to_string(map.texCoord)
+                    + toString(slot) + " reads TEXCOORD_" + std::to_string(texCoord)
                     + "), which one baked texture set cannot hold: give them one set (docs/export.md)";
                 return std::nullopt;
             }
-            set = map.texCoord;
+            set = texCoord;
             if (!common)
                 common = map.uv;
             else if (!(*common == map.uv))
@@ -328,10 +331,11 @@ GltfTextureTransform toGltfTextureTransform(const UvTransform& uv)
 }
 
 std::vector<std::string> gltfAssetFiles(const std::string& path, const std::vector<Material>& materials,
-    const GltfExportOptions& options, std::string* error)
+    const GltfExportOptions& options, std::string* error, bool meshHasTexCoord1)
 {
     std::vector<std::string> files;
-    const std::optional<std::vector<MaterialPlan>> plans = planMaterials(path, materials, options, error);
+    const std::optional<std::vector<MaterialPlan>> plans
+        = planMaterials(path, materials, options, meshHasTexCoord1, error);
     if (!plans)
         return files;
     const std::filesystem::path folder = std::filesystem::path(path).parent_path();
@@ -359,7 +363,8 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
     if (mesh.vertices.empty() || mesh.indices.empty())
         return fail("the mesh '" + mesh.name + "' has no triangles");
     std::string problem;
-    const std::optional<std::vector<MaterialPlan>> plans = planMaterials(path, materials, options, &problem);
+    const std::optional<std::vector<MaterialPlan>> plans
+        = planMaterials(path, materials, options, mesh.hasTexCoord1, &problem);
     if (!plans)
         return fail(problem);
     // The source asset's nodes, meshes, skins and animations, its materials taken out.

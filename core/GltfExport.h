@@ -56,7 +56,9 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
     std::vector<std::string>* written, std::string* error);
 
 // The files writeGltfAsset writes for `path` (the asset last), for a dry run.
+// `meshHasTexCoord1`: without TEXCOORD_1 every map reads set 0, so maps naming different sets
+// are not refused (the export writes them on set 0).
 std::vector<std::string> gltfAssetFiles(const std::string& path, const std::vector<Material>& materials,
-    const GltfExportOptions& options, std::string* error);
+    const GltfExportOptions& options, std::string* error, bool meshHasTexCoord1 = true);
 
 } // namespace facet

@@ -318,6 +318,14 @@ private Q_SLOTS:
                      "material 'Painted Metal': its maps read different texture-coordinate sets")),
             error.c_str());
         QVERIFY(!QFileInfo::exists(path));
+        // A mesh without TEXCOORD_1 reads set 0 for every map: nothing to refuse, and the file
+        // names no second set.
+        mesh.hasTexCoord1 = false;
+        QVERIFY2(writeGltfAsset(path.toStdString(), mesh, {}, {m}, options, false, &written, &error),
+            error.c_str());
+        QCOMPARE(gltfAssetFiles(path.toStdString(), {m}, options, &error, false).size(), std::size_t(1));
+        QVERIFY(gltfAssetFiles(path.toStdString(), {m}, options, &error, true).empty());
+        FACET_REQUIRE_VALID_GLTF(path);
     }
 
     void textureTransformRoundTrip()

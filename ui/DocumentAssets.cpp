@@ -63,6 +63,13 @@ std::shared_ptr<const Environment> DocumentAssets::environment(const std::string
 
 namespace {
 const std::string kAssetUnits = "asset units:";
+
+// The mesh a meshSource() names, and whether it keeps the asset's units.
+std::pair<std::string, bool> meshOfSource(const std::string& source)
+{
+    const bool keepUnits = source.starts_with(kAssetUnits);
+    return {keepUnits ? source.substr(kAssetUnits.size()) : source, keepUnits};
+}
 } // namespace
 
 std::string DocumentAssets::meshSource(const std::string& nameOrPath, bool keepUnits)
@@ -72,8 +79,9 @@ std::string DocumentAssets::meshSource(const std::string& nameOrPath, bool keepU
 
 std::shared_ptr<const AssetCache::LoadedMesh> DocumentAssets::mesh(const std::string& source)
 {
-    const bool keepUnits = source.starts_with(kAssetUnits);
-    const std::string nameOrPath = keepUnits ? source.substr(kAssetUnits.size()) : source;
+    const std::pair<std::string, bool> parsed = meshOfSource(source);
+    const std::string& nameOrPath = parsed.first;
+    const bool keepUnits = parsed.second;
     const bool primitive
         = std::find(primitiveNames().begin(), primitiveNames().end(), nameOrPath) != primitiveNames().end();
     const Entry* entry = lookup(Kind::Mesh, source, primitive, [nameOrPath, keepUnits] {
@@ -109,7 +117,7 @@ const DocumentAssets::Entry* DocumentAssets::lookup(
 {
     const std::string key = keyOf(kind, name);
     const std::int64_t modified = AssetCache::modifiedTime(kind == Kind::Map ? fileOfImagePath(name)
-            : kind == Kind::Mesh && name.starts_with(kAssetUnits)            ? name.substr(kAssetUnits.size())
+            : kind == Kind::Mesh                                             ? meshOfSource(name).first
                                                                              : name);
     const auto found = m_entries.find(key);
     const bool current = found != m_entries.end() && found->second.modified == modified;
