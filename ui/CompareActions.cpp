@@ -46,7 +46,7 @@ CompareActions::CompareActions(
         action->setObjectName(QLatin1String(entry.name));
         action->setCheckable(true);
         action->setData(int(entry.mode));
-        // Alt+1..5: the number keys alone apply presets (Edit > Apply Preset).
+        // Alt+1..5: Ctrl+1..9 apply presets (Edit > Apply Preset).
         action->setShortcut(QKeySequence(Qt::ALT | entry.key));
         m_modes->addAction(action);
         m_toolBar->addAction(action);

@@ -6,6 +6,7 @@
 #include "core/GltfImport.h"
 #include "render/ShaderVariant.h"
 #include "ui/DocumentCommands.h"
+#include "ui/MapSlotWidget.h"
 
 #include <QDebug>
 #include <QDir>
@@ -95,11 +96,11 @@ void Document::setProject(const Project& project, const QString& undoText, int m
     push(project, undoText, mergeId);
 }
 
-void Document::applyPreset(const MaterialPreset& preset)
+QString Document::applyPreset(const MaterialPreset& preset)
 {
-    Material material = m_project.material();
+    const Material before = m_project.material();
+    Material material = before;
     const Material& look = preset.material;
-    material.name = look.name;
     material.ior = look.ior;
     material.shading = look.shading;
     for (MapSlot slot : kAllMapSlots)
@@ -113,7 +114,26 @@ void Document::applyPreset(const MaterialPreset& preset)
         material.doubleSided = look.doubleSided;
         material.emissiveStrength = look.emissiveStrength;
     }
-    setMaterial(material, tr("Apply Preset %1").arg(fromStd(preset.displayName)));
+    QStringList changed;
+    for (MapSlot slot : kAllMapSlots)
+        if (material.map(slot).factor != before.map(slot).factor)
+            changed << MapSlotWidget::title(slot).toLower();
+    if (material.ior != before.ior)
+        changed << tr("IOR");
+    if (!(material.shading == before.shading))
+        changed << tr("shading");
+    const QString name = fromStd(before.name);
+    const QString presetName = fromStd(preset.displayName);
+    if (material == before)
+        return tr("“%1” already has %2's values").arg(name, presetName);
+    setMaterial(material, tr("Apply Preset %1").arg(presetName));
+    QString maps;
+    if (hasTextures(look))
+        maps = tr("; the preset's maps replace its maps");
+    else if (hasTextures(before))
+        maps = tr("; its maps kept");
+    return tr("Applied %1 to “%2”: %3%4")
+        .arg(presetName, name, changed.isEmpty() ? tr("its maps") : changed.join(QStringLiteral(", ")), maps);
 }
 
 void Document::setCurrentMaterial(int index)

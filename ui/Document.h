@@ -55,12 +55,14 @@ public:
     void setEnvironment(const EnvironmentSettings& environment, const QString& undoText, int mergeId = 0);
     void setLights(const std::vector<Light>& lights, const QString& undoText, int mergeId = 0);
     void setView(const ViewSettings& view, const QString& undoText, int mergeId = 0);
-    // The preset's look (name, IOR, shading, factors) on the current material; the texture paths
+    // The preset's look (IOR, shading, factors) on the current material; its name, texture paths
     // and per-map options (channel, colour space, invert, flip green, UV) stay, so a preset can be
-    // tried on a texture set. A preset with textures (a package, core/PresetPackage.h) brings its
-    // texture set instead: every map as the preset has it, with alpha, sides and emissive
-    // strength. Undo text "Apply Preset <name>".
-    void applyPreset(const MaterialPreset& preset);
+    // tried on a texture set (issue 30: applying one renamed the material). A preset with
+    // textures (a package, core/PresetPackage.h) brings its texture set instead: every map as the
+    // preset has it, with alpha, sides and emissive strength. Undo text "Apply Preset <name>".
+    // Returns what changed, for the status bar: "Applied Gold to “Barrel”: base colour, metallic,
+    // roughness; its maps kept".
+    QString applyPreset(const MaterialPreset& preset);
     // Any combination of the above as one step (e.g. assigning a folder of maps and the mesh).
     // The camera part of `project` is ignored (see setCamera).
     void setProject(const Project& project, const QString& undoText, int mergeId = 0);

@@ -21,6 +21,7 @@
 #include "ui/ProjectFileController.h"
 #include "ui/SceneController.h"
 #include "ui/TextureMapsDock.h"
+#include "ui/UndoShortcutRouter.h"
 #include "ui/ViewDock.h"
 #include "ui/ViewShareGroup.h"
 #include "ui/ViewStatus.h"
@@ -64,7 +65,7 @@ constexpr int kLayoutVersion = 3;
 // the column's height, the tabs below the rest.
 constexpr int kDockColumnWidthDivisor = 4;
 constexpr double kMaterialsHeightShare = 0.35;
-constexpr int kPresetShortcuts = 9; // keys 1..9
+constexpr int kPresetShortcuts = 9; // Ctrl+1..9
 
 } // namespace
 
@@ -137,6 +138,8 @@ void MainWindow::createMenus()
 {
     createFileMenu();
     createEditMenu();
+    // Ctrl+Z / Ctrl+Shift+Z reach the document from a focused field once its edit is committed.
+    qApp->installEventFilter(new UndoShortcutRouter(this));
     createViewMenu();
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
@@ -212,10 +215,11 @@ void MainWindow::createEditMenu()
     for (const MaterialPreset& preset : builtinPresets()) {
         QAction* action = presets->addAction(QString::fromStdString(preset.displayName));
         action->setObjectName(QStringLiteral("presetAction_%1").arg(QString::fromStdString(preset.id)));
+        // Ctrl+1..9: a stray number key must not replace the material's look (issue 30).
         if (index < kPresetShortcuts)
-            action->setShortcut(QKeySequence(Qt::Key_1 + index));
-        connect(
-            action, &QAction::triggered, m_document, [this, &preset] { m_document->applyPreset(preset); });
+            action->setShortcut(QKeySequence(Qt::CTRL | (Qt::Key_1 + index)));
+        connect(action, &QAction::triggered, m_document,
+            [this, &preset] { showStatusMessage(m_document->applyPreset(preset)); });
         ++index;
     }
 }

@@ -350,10 +350,9 @@ bool MaterialDock::applySelectedPreset()
     if (!item)
         return false;
     const int index = item->data(kPresetRole).toInt();
-    if (index >= kUserOffset)
-        m_document->applyPreset(m_userPresets.at(std::size_t(index - kUserOffset)).preset);
-    else
-        m_document->applyPreset(builtinPresets().at(std::size_t(index)));
+    Q_EMIT message(index >= kUserOffset
+            ? m_document->applyPreset(m_userPresets.at(std::size_t(index - kUserOffset)).preset)
+            : m_document->applyPreset(builtinPresets().at(std::size_t(index))));
     return true;
 }
 

@@ -1,14 +1,19 @@
 #include "ui/MaterialsDock.h"
 
+#include "core/MaterialList.h"
 #include "core/Project.h"
 #include "ui/Document.h"
 #include "ui/SceneController.h"
 
+#include <QAction>
 #include <QComboBox>
+#include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QListWidget>
+#include <QMenu>
 #include <QSignalBlocker>
+#include <QToolButton>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -45,6 +50,9 @@ MaterialsDock::MaterialsDock(Document* document, SceneController* scene, QWidget
     , m_document(document)
     , m_scene(scene)
     , m_materials(new QListWidget(this))
+    , m_newButton(new QToolButton(this))
+    , m_duplicateButton(new QToolButton(this))
+    , m_deleteButton(new QToolButton(this))
     , m_parts(new QTreeWidget(this))
     , m_partsNote(new QLabel(this))
 {
@@ -52,7 +60,39 @@ MaterialsDock::MaterialsDock(Document* document, SceneController* scene, QWidget
     m_materials->setObjectName(QStringLiteral("materialList"));
     m_materials->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
     m_materials->setToolTip(tr("The project's materials: the selected one is edited in the Texture Maps and "
-                               "Material panels. Double-click to rename."));
+                               "Material panels. Double-click to rename; right-click for more."));
+    m_materials->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_materials, &QWidget::customContextMenuRequested, this, &MaterialsDock::showMaterialMenu);
+    // The list's own keys (while it has focus): Delete, Ctrl+D, Ctrl+Shift+N.
+    const auto listAction = [this](const QString& name, const QKeySequence& keys, auto slot) {
+        auto* action = new QAction(name, m_materials);
+        action->setShortcut(keys);
+        action->setShortcutContext(Qt::WidgetShortcut);
+        connect(action, &QAction::triggered, this, slot);
+        m_materials->addAction(action);
+    };
+    listAction(
+        tr("Delete Material"), QKeySequence::Delete, [this] { deleteMaterial(m_materials->currentRow()); });
+    listAction(tr("Duplicate Material"), QKeySequence(tr("Ctrl+D")),
+        [this] { duplicateMaterial(m_materials->currentRow()); });
+    listAction(tr("New Material"), QKeySequence(tr("Ctrl+Shift+N")), [this] { newMaterial(); });
+    const auto button = [this](QToolButton* b, const char* name, const QString& text, const QString& tip) {
+        b->setObjectName(QLatin1String(name));
+        b->setText(text);
+        b->setToolTip(tip);
+        b->setAutoRaise(true);
+    };
+    button(m_newButton, "newMaterialButton", tr("New"),
+        tr("A new material after the selected one (Ctrl+Shift+N)"));
+    button(m_duplicateButton, "duplicateMaterialButton", tr("Duplicate"),
+        tr("A copy of the selected material, maps and all (Ctrl+D)"));
+    button(m_deleteButton, "deleteMaterialButton", tr("Delete"),
+        tr("Delete the selected material: its parts show the one before it (Delete; Ctrl+Z brings it back)"));
+    connect(m_newButton, &QToolButton::clicked, this, &MaterialsDock::newMaterial);
+    connect(m_duplicateButton, &QToolButton::clicked, this,
+        [this] { duplicateMaterial(m_materials->currentRow()); });
+    connect(
+        m_deleteButton, &QToolButton::clicked, this, [this] { deleteMaterial(m_materials->currentRow()); });
     m_parts->setObjectName(QStringLiteral("partList"));
     m_parts->setColumnCount(2);
     m_parts->setHeaderLabels({tr("Part"), tr("Material")});
@@ -75,6 +115,12 @@ MaterialsDock::MaterialsDock(Document* document, SceneController* scene, QWidget
     auto* layout = new QVBoxLayout(content);
     layout->addWidget(new QLabel(tr("<b>Materials</b>"), content));
     layout->addWidget(m_materials, 1);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_newButton);
+    buttons->addWidget(m_duplicateButton);
+    buttons->addWidget(m_deleteButton);
+    buttons->addStretch(1);
+    layout->addLayout(buttons);
     layout->addWidget(new QLabel(tr("<b>Parts</b>"), content));
     layout->addWidget(m_parts, 2);
     layout->addWidget(m_partsNote);
@@ -181,7 +227,79 @@ void MaterialsDock::refreshMaterials()
             n == 1 ? tr("%1: shown on 1 part").arg(name) : tr("%1: shown on %2 parts").arg(name).arg(n));
     }
     m_materials->setCurrentRow(project.currentMaterial);
+    m_deleteButton->setEnabled(project.materials.size() > 1);
     m_updating = false;
+}
+
+void MaterialsDock::showMaterialMenu(const QPoint& position)
+{
+    QListWidgetItem* item = m_materials->itemAt(position);
+    const int row = item ? m_materials->row(item) : -1;
+    QMenu menu(this);
+    menu.addAction(tr("New Material"), this, &MaterialsDock::newMaterial);
+    if (row >= 0) {
+        menu.addAction(tr("Duplicate"), this, [this, row] { duplicateMaterial(row); });
+        menu.addAction(tr("Rename"), this, [this, item] { m_materials->editItem(item); });
+        QAction* remove = menu.addAction(tr("Delete"), this, [this, row] { deleteMaterial(row); });
+        remove->setEnabled(m_document->project().materials.size() > 1);
+    }
+    menu.exec(m_materials->viewport()->mapToGlobal(position));
+}
+
+void MaterialsDock::applyListEdit(const std::optional<Project>& after, const std::string& problem,
+    const QString& undoText, const QString& done)
+{
+    if (!after) {
+        Q_EMIT message(tr("%1: %2").arg(undoText, QString::fromStdString(problem)));
+        return;
+    }
+    m_document->setProject(*after, undoText);
+    Q_EMIT message(done);
+}
+
+void MaterialsDock::newMaterial()
+{
+    const Project& project = m_document->project();
+    Material material;
+    material.name = tr("Material").toStdString();
+    std::string problem;
+    const std::optional<Project> after
+        = withMaterialInserted(project, project.currentMaterial + 1, material, &problem);
+    applyListEdit(after, problem, tr("New Material"),
+        after ? tr("New material “%1”").arg(nameOf(after->material())) : QString());
+}
+
+void MaterialsDock::duplicateMaterial(int material)
+{
+    std::string problem;
+    const std::optional<Project> after = withMaterialDuplicated(m_document->project(), material, &problem);
+    applyListEdit(after, problem, tr("Duplicate Material"),
+        after ? tr("“%1” is a copy of “%2”")
+                    .arg(nameOf(after->material()),
+                        nameOf(m_document->project().materials[std::size_t(material)]))
+              : QString());
+}
+
+void MaterialsDock::deleteMaterial(int material)
+{
+    const Project& before = m_document->project();
+    std::string problem;
+    const std::optional<Project> after = withMaterialRemoved(before, material, &problem);
+    QString done;
+    if (after) {
+        int parts = 0;
+        for (int p = 0; p < partCount(); ++p)
+            parts += before.materialOfPart(std::size_t(p)) == material ? 1 : 0;
+        const QString name = nameOf(before.materials[std::size_t(material)]);
+        const QString shows = nameOf(after->material());
+        done = parts == 0 ? tr("Deleted “%1” (Ctrl+Z brings it back)").arg(name)
+            : parts == 1 ? tr("Deleted “%1”: its part shows “%2” (Ctrl+Z brings it back)").arg(name, shows)
+                         : tr("Deleted “%1”: its %2 parts show “%3” (Ctrl+Z brings it back)")
+                               .arg(name)
+                               .arg(parts)
+                               .arg(shows);
+    }
+    applyListEdit(after, problem, tr("Delete Material"), done);
 }
 
 void MaterialsDock::refreshParts(bool rebuild)

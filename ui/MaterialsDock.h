@@ -3,7 +3,10 @@
 //
 // - Materials: one row per material, the current one selected. Choosing a row makes it the one
 //   the Texture Maps and Material docks edit (Document::setCurrentMaterial: a selection, not an
-//   undo step). Double-click (or F2) renames it: one undo step "Rename Material".
+//   undo step). Double-click (or F2) renames it: one undo step "Rename Material". New, Duplicate
+//   and Delete (the buttons under the list, its context menu, Ctrl+Shift+N, Ctrl+D and Delete in
+//   the list) are one undo step each (core/MaterialList.h: every part and A/B's B keep showing
+//   what they showed; a deleted material's parts show the one before it).
 // - Parts: one row per part of the loaded mesh (the sub-meshes of SceneController's mesh, in
 //   order, named as the file names them), with a check box that shows or hides it and the
 //   material it shows (a combo of the project's materials). Each edit is one undo step through
@@ -17,10 +20,13 @@
 #include <QDockWidget>
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 class QComboBox;
 class QLabel;
+class QToolButton;
 class QListWidget;
 class QListWidgetItem;
 class QTreeWidget;
@@ -31,6 +37,7 @@ namespace facet {
 class Document;
 class SceneController;
 struct MeshPart;
+struct Project;
 
 class MaterialsDock : public QDockWidget {
     Q_OBJECT
@@ -47,6 +54,9 @@ public:
 
     // The edits the rows make (tests call them too). Each is one undo step; out of range: ignored.
     void renameMaterial(int material, const QString& name);
+    void newMaterial();
+    void duplicateMaterial(int material);
+    void deleteMaterial(int material);
     void setPartVisible(int part, bool visible);
     void setPartMaterial(int part, int material);
     // Selects `part`'s row without editing anything (a click in the viewport picked it).
@@ -59,6 +69,10 @@ private:
     void onDocumentChanged(DocumentChanges changes);
     void onSceneChanged();
     void refreshMaterials();
+    void showMaterialMenu(const QPoint& position);
+    // Applies an edit of the material list (core/MaterialList.h) as one undo step, or says why not.
+    void applyListEdit(const std::optional<Project>& after, const std::string& problem,
+        const QString& undoText, const QString& done);
     void refreshParts(bool rebuild);
     // The project's parts, one entry per part of the loaded mesh at least (MeshPart's defaults).
     std::vector<MeshPart> partsForEditing() const;
@@ -67,6 +81,9 @@ private:
     Document* m_document;
     SceneController* m_scene;
     QListWidget* m_materials;
+    QToolButton* m_newButton;
+    QToolButton* m_duplicateButton;
+    QToolButton* m_deleteButton;
     QTreeWidget* m_parts;
     QLabel* m_partsNote;
     std::uint64_t m_shownMeshKey = 0;

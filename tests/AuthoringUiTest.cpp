@@ -1,0 +1,333 @@
+// Issue 30's authoring defects in the main window under Xvfb, driven as an artist does:
+// - Materials as objects (ui/MaterialsDock, core/MaterialList): New, Duplicate and Delete by the
+//   buttons and by the list's keys, each one undo step that Ctrl+Z takes back, the parts showing
+//   what they showed, the status bar saying what happened; the last material cannot go.
+// - Undo from every kind of editor (ui/UndoShortcutRouter): an edit committed in a spin box,
+//   slider, colour button, combo box, line edit or check box, the focus left in it, then Ctrl+Z
+//   undoes the document and Ctrl+Shift+Z redoes it; a field with an uncommitted edit keeps Ctrl+Z
+//   for its text.
+// - Presets take Ctrl+1..9: the number key alone changes nothing; with Ctrl the look changes and the
+//   name and maps stay, and the status bar says what changed.
+// Needs a display (Xvfb via with-display.sh).
+
+#include "ui/ColorButton.h"
+#include "ui/Document.h"
+#include "ui/MainWindow.h"
+#include "ui/MaterialsDock.h"
+#include "ui/ProjectFileController.h"
+#include "ui/SceneController.h"
+#include "ui/SurfaceFormat.h"
+#include "ui/ValueSlider.h"
+#include "ui/ViewportWidget.h"
+
+#include "TestAssets.h"
+
+#include <QAbstractItemView>
+#include <QApplication>
+#include <QCheckBox>
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QtTest/QTest>
+
+#include <memory>
+
+using namespace facet;
+
+namespace {
+
+std::vector<std::string> materialNames(const Project& project)
+{
+    std::vector<std::string> names;
+    for (const Material& material : project.materials)
+        names.push_back(material.name);
+    return names;
+}
+
+std::vector<std::string> partMaterials(const Project& project)
+{
+    std::vector<std::string> names;
+    for (std::size_t part = 0; part < 2; ++part)
+        names.push_back(project.materials[std::size_t(project.materialOfPart(part))].name);
+    return names;
+}
+
+using Names = std::vector<std::string>;
+
+} // namespace
+
+class AuthoringUiTest : public QObject {
+    Q_OBJECT
+public:
+    static void initMain()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setAttribute(Qt::AA_DontUseNativeDialogs);
+        installViewportSurfaceFormat();
+    }
+
+private Q_SLOTS:
+    void initTestCase();
+    void cleanupTestCase();
+    void materialsAreObjects();
+    void theLastMaterialStays();
+    void undoReachesTheDocumentFromEveryEditor_data();
+    void undoReachesTheDocumentFromEveryEditor();
+    void anUncommittedFieldKeepsItsOwnUndo();
+    void presetsNeedCtrlAndKeepNameAndMaps();
+
+private:
+    bool openTwoMaterials();
+    // Raises the dock that holds `widget` (docks share tabs) and gives the widget the focus.
+    bool focus(QWidget* widget);
+    void keyOnFocus(Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
+    {
+        QWidget* target = QApplication::focusWidget() ? QApplication::focusWidget() : m_window.get();
+        QTest::keyClick(target, key, modifiers);
+    }
+    template <typename T> T* child(const char* name) const
+    {
+        return m_window->findChild<T*>(QLatin1String(name));
+    }
+
+    QTemporaryDir m_dir;
+    QTemporaryDir m_recovery;
+    QString m_twoMaterials;
+    std::unique_ptr<MainWindow> m_window;
+    Document* m_document = nullptr;
+};
+
+void AuthoringUiTest::initTestCase()
+{
+    QCoreApplication::setOrganizationName(QStringLiteral("FacetTests"));
+    m_twoMaterials = m_dir.filePath(QStringLiteral("two.glb"));
+    QString error;
+    QVERIFY2(test::writeTwoMaterialAsset(m_twoMaterials, &error), qPrintable(error));
+    m_window = std::make_unique<MainWindow>(nullptr, m_recovery.path());
+    m_document = m_window->document();
+    m_window->projectFiles()->setErrorDialogsEnabled(false);
+    m_window->projectFiles()->setUnsavedChangesAnswer(QMessageBox::Discard);
+    QSignalSpy rendered(m_window->viewport(), &ViewportWidget::frameRendered);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    QVERIFY(rendered.count() > 0 || rendered.wait(60000));
+    m_window->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
+}
+
+void AuthoringUiTest::cleanupTestCase()
+{
+    m_document->newProject();
+    m_window.reset();
+}
+
+bool AuthoringUiTest::openTwoMaterials()
+{
+    if (!m_window->projectFiles()->openFile(m_twoMaterials))
+        return false;
+    SceneController* scene = m_window->sceneController();
+    const bool loaded = QTest::qWaitFor([scene] { return scene->pendingAssetLoads() == 0; }, 30000);
+    m_document->undoStack()->clear();
+    return loaded && m_document->project().parts.size() == 2;
+}
+
+bool AuthoringUiTest::focus(QWidget* widget)
+{
+    if (!widget)
+        return false;
+    for (QWidget* w = widget; w; w = w->parentWidget())
+        if (auto* dock = qobject_cast<QDockWidget*>(w)) {
+            dock->show();
+            dock->raise();
+        }
+    widget->setFocus(Qt::OtherFocusReason);
+    return QTest::qWaitFor([widget] { return widget->hasFocus(); }, 5000);
+}
+
+void AuthoringUiTest::materialsAreObjects()
+{
+    QVERIFY(openTwoMaterials());
+    QCOMPARE(materialNames(m_document->project()), (Names {"Red", "Blue"}));
+    QCOMPARE(partMaterials(m_document->project()), (Names {"Red", "Blue"}));
+    QListWidget* list = child<QListWidget>("materialList");
+    QVERIFY(list);
+    QUndoStack* undo = m_document->undoStack();
+
+    // The buttons.
+    QTest::mouseClick(child<QToolButton>("newMaterialButton"), Qt::LeftButton);
+    QCOMPARE(materialNames(m_document->project()), (Names {"Red", "Material", "Blue"}));
+    QCOMPARE(m_document->project().currentMaterial, 1);
+    QCOMPARE(list->currentRow(), 1);
+    QCOMPARE(m_window->statusMessage(), QStringLiteral("New material “Material”"));
+    QTest::mouseClick(child<QToolButton>("duplicateMaterialButton"), Qt::LeftButton);
+    QCOMPARE(materialNames(m_document->project()), (Names {"Red", "Material", "Material copy", "Blue"}));
+    QCOMPARE(m_document->project().currentMaterial, 2);
+    QCOMPARE(partMaterials(m_document->project()), (Names {"Red", "Blue"})); // the parts kept theirs
+
+    // The list's keys, with the list focused: Delete on Red (its part shows the new first).
+    QVERIFY(focus(list));
+    list->setCurrentRow(0);
+    QTest::keyClick(list, Qt::Key_Delete);
+    QCOMPARE(materialNames(m_document->project()), (Names {"Material", "Material copy", "Blue"}));
+    QCOMPARE(partMaterials(m_document->project()), (Names {"Material", "Blue"}));
+    QCOMPARE(m_window->statusMessage(),
+        QStringLiteral("Deleted “Red”: its part shows “Material” (Ctrl+Z brings it back)"));
+    QTest::keyClick(list, Qt::Key_D, Qt::ControlModifier);
+    QCOMPARE(materialNames(m_document->project()),
+        (Names {"Material", "Material copy 2", "Material copy", "Blue"}));
+    QTest::keyClick(list, Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(m_document->project().materials.size(), std::size_t(5));
+    QCOMPARE(m_document->project().material().name, std::string("Material 2"));
+    QCOMPARE(undo->count(), 5);
+
+    // Ctrl+Z five times, from the list: back where it was, parts and all.
+    for (int i = 0; i < 5; ++i)
+        QTest::keyClick(list, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(materialNames(m_document->project()), (Names {"Red", "Blue"}));
+    QCOMPARE(partMaterials(m_document->project()), (Names {"Red", "Blue"}));
+    QCOMPARE(list->count(), 2);
+}
+
+void AuthoringUiTest::theLastMaterialStays()
+{
+    m_document->newProject();
+    QCOMPARE(m_document->project().materials.size(), std::size_t(1));
+    QToolButton* remove = child<QToolButton>("deleteMaterialButton");
+    QVERIFY(!remove->isEnabled());
+    auto* dock = m_window->findChild<MaterialsDock*>();
+    dock->deleteMaterial(0);
+    QCOMPARE(m_document->project().materials.size(), std::size_t(1));
+    QVERIFY2(m_window->statusMessage().contains(QStringLiteral("at least one material")),
+        qPrintable(m_window->statusMessage()));
+    QCOMPARE(m_document->undoStack()->count(), 0);
+    QTest::mouseClick(child<QToolButton>("newMaterialButton"), Qt::LeftButton);
+    QVERIFY(remove->isEnabled());
+    m_document->undoStack()->undo();
+    QVERIFY(!remove->isEnabled());
+}
+
+void AuthoringUiTest::undoReachesTheDocumentFromEveryEditor_data()
+{
+    QTest::addColumn<QString>("editor");
+    for (const char* editor : {"spin box", "slider", "colour", "combo box", "line edit", "check box"})
+        QTest::newRow(editor) << QString::fromLatin1(editor);
+}
+
+// Each editor's edit is committed as an artist commits it, with the focus left in the editor;
+// then Ctrl+Z and Ctrl+Shift+Z on the focused widget.
+void AuthoringUiTest::undoReachesTheDocumentFromEveryEditor()
+{
+    QFETCH(QString, editor);
+    m_document->newProject();
+    const Project before = m_document->project();
+    if (editor == QLatin1String("spin box")) {
+        // View > Exposure: type 2, Enter (the issue's case).
+        QDoubleSpinBox* spin = child<ValueSlider>("exposureSlider")->spinBox();
+        QVERIFY(focus(spin));
+        spin->selectAll();
+        QTest::keyClicks(spin, QStringLiteral("2"));
+        QTest::keyClick(spin, Qt::Key_Return);
+        QCOMPARE(m_document->project().view.exposureEV, 2.0);
+    } else if (editor == QLatin1String("slider")) {
+        QSlider* slider = child<ValueSlider>("uvRotationSlider")->slider();
+        QVERIFY(focus(slider));
+        QTest::keyClick(slider, Qt::Key_PageUp);
+    } else if (editor == QLatin1String("colour")) {
+        auto* button = child<ColorButton>("baseColorButton");
+        QVERIFY(focus(button));
+        bool answered = false;
+        QTimer poll;
+        poll.setInterval(50);
+        connect(&poll, &QTimer::timeout, this, [&] {
+            if (auto* dialog = qobject_cast<QColorDialog*>(QApplication::activeModalWidget())) {
+                poll.stop();
+                dialog->setCurrentColor(QColor(20, 200, 40));
+                answered = true;
+                dialog->accept();
+            }
+        });
+        poll.start();
+        QTest::keyClick(button, Qt::Key_Space);
+        QVERIFY(answered);
+        QVERIFY(focus(button));
+    } else if (editor == QLatin1String("combo box")) {
+        QComboBox* combo = child<QComboBox>("toneMapperCombo");
+        QVERIFY(focus(combo));
+        QTest::keyClick(combo, Qt::Key_Down);
+    } else if (editor == QLatin1String("line edit")) {
+        auto* name = child<QLineEdit>("materialName");
+        QVERIFY(focus(name));
+        name->selectAll();
+        QTest::keyClicks(name, QStringLiteral("Lacquer"));
+        QTest::keyClick(name, Qt::Key_Return);
+        QCOMPARE(m_document->project().material().name, std::string("Lacquer"));
+    } else {
+        auto* check = child<QCheckBox>("doubleSidedCheck");
+        QVERIFY(focus(check));
+        QTest::keyClick(check, Qt::Key_Space);
+    }
+    const Project after = m_document->project();
+    QVERIFY2(!(after == before), "the edit did not reach the document");
+    QVERIFY(QApplication::focusWidget());
+    const QString focused = QString::fromLatin1(QApplication::focusWidget()->metaObject()->className());
+    keyOnFocus(Qt::Key_Z, Qt::ControlModifier);
+    QVERIFY2(m_document->project() == before,
+        qPrintable(QStringLiteral("Ctrl+Z in a %1 did not undo").arg(focused)));
+    keyOnFocus(Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY2(m_document->project() == after,
+        qPrintable(QStringLiteral("Ctrl+Shift+Z in a %1 did not redo").arg(focused)));
+}
+
+// Typing without Enter: Ctrl+Z takes the typing back in the field, not the document's last edit.
+void AuthoringUiTest::anUncommittedFieldKeepsItsOwnUndo()
+{
+    m_document->newProject();
+    ViewSettings view = m_document->project().view;
+    view.exposureEV = 1.0;
+    m_document->setView(view, QStringLiteral("Exposure"));
+    auto* name = child<QLineEdit>("materialName");
+    QVERIFY(focus(name));
+    const QString original = name->text();
+    QTest::keyClicks(name, QStringLiteral("xyz"));
+    QCOMPARE(name->text(), original + QStringLiteral("xyz"));
+    QTest::keyClick(name, Qt::Key_Z, Qt::ControlModifier);
+    QVERIFY2(name->text() != original + QStringLiteral("xyz"), qPrintable(name->text()));
+    QCOMPARE(m_document->project().view.exposureEV, 1.0); // the document's edit stays
+    QCOMPARE(m_document->undoStack()->count(), 1);
+}
+
+void AuthoringUiTest::presetsNeedCtrlAndKeepNameAndMaps()
+{
+    QVERIFY(openTwoMaterials());
+    Material red = m_document->project().material();
+    QCOMPARE(red.name, std::string("Red"));
+    red.map(MapSlot::Normal).path = m_dir.filePath(QStringLiteral("normal.png")).toStdString();
+    m_document->setMaterial(red, QStringLiteral("Normal Map"));
+    const Project before = m_document->project();
+    QVERIFY(focus(m_window->viewport()));
+    QTest::keyClick(m_window->viewport(), Qt::Key_1);
+    QVERIFY2(m_document->project() == before, "the key 1 alone changed the material");
+    QTest::keyClick(m_window->viewport(), Qt::Key_1, Qt::ControlModifier);
+    const Material& applied = m_document->project().material();
+    QCOMPARE(applied.name, std::string("Red"));
+    QCOMPARE(applied.map(MapSlot::Normal).path, red.map(MapSlot::Normal).path);
+    QVERIFY(!(applied == red));
+    QVERIFY2(m_window->statusMessage().startsWith(QStringLiteral("Applied "))
+            && m_window->statusMessage().contains(QStringLiteral("to “Red”"))
+            && m_window->statusMessage().endsWith(QStringLiteral("its maps kept")),
+        qPrintable(m_window->statusMessage()));
+}
+
+QTEST_MAIN(AuthoringUiTest)
+#include "AuthoringUiTest.moc"
