@@ -160,8 +160,10 @@ int ExportCommand::runGltf(const ExportRequest& request)
     const QString out = QString::fromStdString(path);
     if (!out.endsWith(QStringLiteral(".gltf"), Qt::CaseInsensitive)
         && !out.endsWith(QStringLiteral(".glb"), Qt::CaseInsensitive)) {
-        const QString stem = request.input.isEmpty() ? QStringLiteral("facet-material")
-                                                     : QFileInfo(request.input.first()).completeBaseName();
+        QString stem = request.input.isEmpty() ? QStringLiteral("facet-material")
+                                               : QFileInfo(request.input.first()).completeBaseName();
+        if (stem.endsWith(QStringLiteral(".facet"))) // crate.facet.json: "crate"
+            stem.chop(6);
         path = (QDir(out).filePath(stem + (binary ? QStringLiteral(".glb") : QStringLiteral(".gltf"))))
                    .toStdString();
     }

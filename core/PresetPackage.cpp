@@ -1,5 +1,6 @@
 #include "core/PresetPackage.h"
 
+#include <cctype>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -16,6 +17,29 @@ namespace facet {
 namespace fs = std::filesystem;
 
 namespace {
+
+// `name` without the "<slot>-" or "<slot>-<n>-" prefixes a package gives its textures.
+std::string withoutSlotPrefix(std::string name)
+{
+    for (bool stripped = true; stripped;) {
+        stripped = false;
+        for (const MapSlot slot : kAllMapSlots) {
+            const std::string prefix = std::string(toString(slot)) + "-";
+            if (!name.starts_with(prefix) || name.size() == prefix.size())
+                continue;
+            std::size_t end = prefix.size();
+            while (end < name.size() && std::isdigit(static_cast<unsigned char>(name[end])))
+                ++end;
+            const std::size_t cut
+                = end > prefix.size() && end < name.size() && name[end] == '-' ? end + 1 : prefix.size();
+            if (cut < name.size()) {
+                name.erase(0, cut);
+                stripped = true;
+            }
+        }
+    }
+    return name;
+}
 
 std::optional<std::string> readBytes(const std::string& path, std::string* problem)
 {
@@ -107,9 +131,12 @@ std::optional<std::string> exportPresetPackage(
             std::optional<std::pair<std::string, std::string>> source = textureSource(map.path, &problem);
             if (!source)
                 return fail(std::string(toString(slot)) + ": " + map.path + ": " + problem);
-            std::string name = std::string(toString(slot)) + "-" + source->first;
+            // A texture that came from a package already carries a slot's prefix: not twice (issue
+            // 30: "baseColor-baseColor-brick.png" after an export, an import and an export).
+            const std::string stem = withoutSlotPrefix(source->first);
+            std::string name = std::string(toString(slot)) + "-" + stem;
             for (int n = 2; names.count(name); ++n)
-                name = std::string(toString(slot)) + "-" + std::to_string(n) + "-" + source->first;
+                name = std::string(toString(slot)) + "-" + std::to_string(n) + "-" + stem;
             names.insert(name);
             bytesOfName[name] = std::move(source->second);
             known = nameOfSource.emplace(map.path, name).first;

@@ -12,6 +12,7 @@
 
 #include "ui/ColorButton.h"
 #include "ui/Document.h"
+#include "ui/ExportDialog.h"
 #include "ui/MainWindow.h"
 #include "ui/MaterialsDock.h"
 #include "ui/ProjectFileController.h"
@@ -29,9 +30,11 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QFileInfo>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMessageBox>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
@@ -86,6 +89,7 @@ private Q_SLOTS:
     void undoReachesTheDocumentFromEveryEditor();
     void anUncommittedFieldKeepsItsOwnUndo();
     void presetsNeedCtrlAndKeepNameAndMaps();
+    void exportNamesAndFolderFollowTheProject();
 
 private:
     bool openTwoMaterials();
@@ -327,6 +331,39 @@ void AuthoringUiTest::presetsNeedCtrlAndKeepNameAndMaps()
             && m_window->statusMessage().contains(QStringLiteral("to “Red”"))
             && m_window->statusMessage().endsWith(QStringLiteral("its maps kept")),
         qPrintable(m_window->statusMessage()));
+}
+
+// Exports are named after the project without its extension and start in its folder (issue 30:
+// barrel.json exported "barrel.json.gltf" into the home folder).
+void AuthoringUiTest::exportNamesAndFolderFollowTheProject()
+{
+    m_document->newProject();
+    QCOMPARE(m_document->exportBaseName(), QStringLiteral("material"));
+    QCOMPARE(m_document->exportFolder(), QString());
+    QString error;
+    for (const auto& [file, stem] :
+        {std::pair {"barrel.json", "barrel"}, std::pair {"crate.facet.json", "crate"}}) {
+        const QString path = m_dir.filePath(QLatin1String(file));
+        QVERIFY2(m_document->saveAs(path, &error), qPrintable(error));
+        QCOMPARE(m_document->exportBaseName(), QLatin1String(stem));
+        QCOMPARE(m_document->exportFolder(), QFileInfo(path).absolutePath());
+    }
+    QVERIFY(openTwoMaterials()); // untitled, from two.glb
+    QCOMPARE(m_document->exportBaseName(), QStringLiteral("two"));
+    QCOMPARE(m_document->exportFolder(), QFileInfo(m_twoMaterials).absolutePath());
+
+    QTemporaryDir elsewhere;
+    QSettings().setValue(QStringLiteral("export/folder"), elsewhere.path());
+    {
+        ExportDialog dialog(
+            m_document->project(), m_document->exportBaseName(), nullptr, m_document->exportFolder());
+        QCOMPARE(
+            dialog.findChild<QLineEdit*>(QStringLiteral("exportFolder"))->text(), m_document->exportFolder());
+    }
+    {
+        ExportDialog dialog(m_document->project(), QStringLiteral("material"));
+        QCOMPARE(dialog.findChild<QLineEdit*>(QStringLiteral("exportFolder"))->text(), elsewhere.path());
+    }
 }
 
 QTEST_MAIN(AuthoringUiTest)

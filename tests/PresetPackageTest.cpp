@@ -124,6 +124,16 @@ private Q_SLOTS:
             QCOMPARE(
                 preset->material.map(MapSlot::Roughness).path, preset->material.map(MapSlot::Occlusion).path);
         }
+        // Out of B and out of C again: the same file names, no prefix piled on a prefix (issue 30:
+        // "baseColor-baseColor-brick_base.png").
+        QTemporaryDir outbox3;
+        const std::optional<std::string> outOfC
+            = exportPresetPackage(*fromC, outbox3.path().toStdString(), false, &error);
+        QVERIFY2(outOfC, error.c_str());
+        for (const std::string* package : {&*outOfB, &*outOfC})
+            QCOMPARE(QDir(QString::fromStdString(*package)).entryList(QDir::Files, QDir::Name),
+                test::strings({"baseColor-brick_base.png", "emissive-showcase-image0.png",
+                    "metallic-brick_orm.png", "normal-brick_normal.png", "preset.json"}));
         // Installing again gets a new id, not a replacement.
         const std::optional<std::string> again
             = installPresetPackage(*inA, libraryB.path().toStdString(), &error);

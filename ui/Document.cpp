@@ -347,6 +347,27 @@ QString Document::displayName() const
     return tr("Untitled");
 }
 
+QString Document::exportBaseName() const
+{
+    const QString path = !m_filePath.isEmpty() ? m_filePath : m_sourceAssetPath;
+    if (path.isEmpty())
+        return QStringLiteral("material");
+    QString name = QFileInfo(path).fileName();
+    for (const QLatin1String extension :
+        {QLatin1String(".facet.json"), QLatin1String(".json"), QLatin1String(".gltf"), QLatin1String(".glb")})
+        if (name.endsWith(extension, Qt::CaseInsensitive)) {
+            name.chop(extension.size());
+            break;
+        }
+    return name.isEmpty() ? QStringLiteral("material") : name;
+}
+
+QString Document::exportFolder() const
+{
+    const QString path = !m_filePath.isEmpty() ? m_filePath : m_sourceAssetPath;
+    return path.isEmpty() ? QString() : QFileInfo(path).absolutePath();
+}
+
 bool Document::isModified() const
 {
     return m_forcedModified || !m_undoStack->isClean();

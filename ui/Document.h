@@ -120,6 +120,12 @@ public:
     // The asset an untitled project was opened from (openAsset); empty otherwise, and again after
     // the project is saved, or another is opened or made.
     QString sourceAssetPath() const { return m_sourceAssetPath; }
+    // What exports are named after and where they go first (issue 30: saving as barrel.json gave
+    // "barrel.json.gltf", and the dialog started in the home folder): the project file's name
+    // without its extension (".json", ".facet.json") or the asset's ("barrel.glb" -> "barrel"),
+    // else "material"; and that file's folder, else empty.
+    QString exportBaseName() const;
+    QString exportFolder() const;
     // The file name without folder; "Untitled (helmet.glb)" for a project opened from an asset
     // and not saved yet; else "Untitled".
     QString displayName() const;

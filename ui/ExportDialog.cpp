@@ -2,6 +2,7 @@
 
 #include <QApplication>
 #include <QComboBox>
+#include <QCryptographicHash>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFileDialog>
@@ -27,11 +28,21 @@ namespace {
 
 const char* const kSettingsTemplate = "export/template";
 const char* const kSettingsFolder = "export/folder";
+
+// The settings key of the folder last chosen for the project in `projectFolder` (a hash: a path's
+// slashes would make groups).
+QString projectFolderKey(const QString& projectFolder)
+{
+    return QStringLiteral("export/projectFolders/")
+        + QString::fromLatin1(
+            QCryptographicHash::hash(projectFolder.toUtf8(), QCryptographicHash::Sha1).toHex());
+}
 const char* const kSettingsSize = "export/size";
 
 } // namespace
 
-ExportDialog::ExportDialog(const Project& project, const QString& baseName, QWidget* parent)
+ExportDialog::ExportDialog(
+    const Project& project, const QString& baseName, QWidget* parent, const QString& projectFolder)
     : QDialog(parent)
     , m_project(project)
     , m_baseName(QString::fromStdString(fileNameSafe(baseName.toStdString())))
@@ -123,7 +134,11 @@ ExportDialog::ExportDialog(const Project& project, const QString& baseName, QWid
     const int sizeIndex = m_size->findData(settings.value(QLatin1String(kSettingsSize), 0).toInt());
     if (sizeIndex >= 0)
         m_size->setCurrentIndex(sizeIndex);
-    m_folder->setText(settings.value(QLatin1String(kSettingsFolder), QDir::homePath()).toString());
+    m_projectFolder = projectFolder;
+    const QString remembered = settings.value(QLatin1String(kSettingsFolder), QDir::homePath()).toString();
+    m_folder->setText(projectFolder.isEmpty()
+            ? remembered
+            : settings.value(projectFolderKey(projectFolder), projectFolder).toString());
 
     for (QComboBox* box : {m_template, m_materials, m_size, m_bitDepth})
         connect(box, &QComboBox::currentIndexChanged, this, &ExportDialog::updatePreview);
@@ -339,6 +354,8 @@ void ExportDialog::remember() const
     if (!m_templateFiles.contains(id))
         settings.setValue(QLatin1String(kSettingsTemplate), id);
     settings.setValue(QLatin1String(kSettingsFolder), m_folder->text().trimmed());
+    if (!m_projectFolder.isEmpty())
+        settings.setValue(projectFolderKey(m_projectFolder), m_folder->text().trimmed());
     settings.setValue(QLatin1String(kSettingsSize), m_size->currentData().toInt());
 }
 

@@ -29,9 +29,12 @@ namespace facet {
 class ExportDialog : public QDialog {
     Q_OBJECT
 public:
-    // `baseName`: the glTF asset's file name without extension (the project's name).
+    // `baseName`: the glTF asset's file name without extension (the project's name,
+    // Document::exportBaseName). `projectFolder`: the project's (or its asset's) folder, where a
+    // project's first export goes; the folder chosen last for that project after that, and for a
+    // project without a folder the last one chosen at all (else the home folder).
     ExportDialog(const Project& project, const QString& baseName = QStringLiteral("material"),
-        QWidget* parent = nullptr);
+        QWidget* parent = nullptr, const QString& projectFolder = QString());
 
     // Asked with the files an export would replace; true replaces them. Default: a message box.
     void setConfirmReplace(std::function<bool(const QStringList& existing)> confirm);
@@ -73,6 +76,7 @@ private:
     QString gltfPath() const;
 
     QString m_baseName;
+    QString m_projectFolder; // the project's folder (empty: none), for the per-project remembered folder
     std::optional<TextureSetExport> m_job; // the plan the preview shows (texture sets)
     std::vector<std::string> m_gltfFiles; // the files a glTF export writes
     QString m_problem;

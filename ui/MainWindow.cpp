@@ -474,7 +474,8 @@ void MainWindow::updateTitle()
 
 void MainWindow::exportMaterials()
 {
-    ExportDialog dialog(m_document->project(), m_document->displayName(), this);
+    ExportDialog dialog(
+        m_document->project(), m_document->exportBaseName(), this, m_document->exportFolder());
     connect(&dialog, &ExportDialog::exported, this, &MainWindow::showStatusMessage);
     dialog.exec();
 }
