@@ -227,14 +227,22 @@ std::optional<SheetRequest> SheetCommand::parse(const QStringList& arguments, QS
         if (!(request.wedge2 = parseAxis(QStringLiteral("wedge2"), o.parser.value(o.wedge2))))
             return std::nullopt;
     }
+    // --envs with one environment beside --wedge2 is that environment for every cell (the README's
+    // wedge example); several would be columns that --wedge2 already sets.
+    std::optional<WedgeAxis> singleEnvironment;
     if (o.parser.isSet(o.envs)) {
-        if (request.wedge2) {
-            *error = QStringLiteral("--envs and --wedge2 both set the columns: give one (--wedge2 env=... sweeps "
-                                    "environments)");
+        if (!(request.environments
+                = parseAxis(QStringLiteral("envs"), QStringLiteral("env=") + o.parser.value(o.envs))))
+            return std::nullopt;
+        if (request.wedge2 && request.environments->size() == 1) {
+            singleEnvironment = std::move(request.environments);
+            request.environments.reset();
+        } else if (request.wedge2) {
+            *error = QStringLiteral(
+                "--envs and --wedge2 both set the columns: give one (--wedge2 env=... sweeps "
+                "environments; one --envs environment is the sheet's)");
             return std::nullopt;
         }
-        if (!(request.environments = parseAxis(QStringLiteral("envs"), QStringLiteral("env=") + o.parser.value(o.envs))))
-            return std::nullopt;
     }
     request.referenceView = o.parser.isSet(o.referenceView);
     request.printStats = o.parser.isSet(o.stats);
@@ -246,6 +254,8 @@ std::optional<SheetRequest> SheetCommand::parse(const QStringList& arguments, QS
         return std::nullopt;
     }
     request.project = std::move(*input);
+    if (singleEnvironment)
+        singleEnvironment->apply(0, request.project);
     if (o.parser.isSet(o.mesh))
         request.project.view.mesh = o.parser.value(o.mesh).toStdString();
     if (o.parser.isSet(o.quality)) {
