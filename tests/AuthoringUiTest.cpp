@@ -90,6 +90,7 @@ private Q_SLOTS:
     void anUncommittedFieldKeepsItsOwnUndo();
     void presetsNeedCtrlAndKeepNameAndMaps();
     void exportNamesAndFolderFollowTheProject();
+    void normalStrengthAndUvScaleAsTheFormatHasThem();
 
 private:
     bool openTwoMaterials();
@@ -364,6 +365,45 @@ void AuthoringUiTest::exportNamesAndFolderFollowTheProject()
         ExportDialog dialog(m_document->project(), QStringLiteral("material"));
         QCOMPARE(dialog.findChild<QLineEdit*>(QStringLiteral("exportFolder"))->text(), elsewhere.path());
     }
+}
+
+// The window reaches what the format holds (issue 30): a normal strength up to 10 (the slider spans
+// 0-2, the field takes more) and UV scales apart in U and V.
+void AuthoringUiTest::normalStrengthAndUvScaleAsTheFormatHasThem()
+{
+    m_document->newProject();
+    QDoubleSpinBox* strength = child<ValueSlider>("factorSlider_normal")->spinBox();
+    QVERIFY(focus(strength));
+    strength->selectAll();
+    QTest::keyClicks(strength, QStringLiteral("5"));
+    QTest::keyClick(strength, Qt::Key_Return);
+    QCOMPARE(m_document->project().material().normalStrength(), 5.0);
+
+    auto* linked = child<QCheckBox>("uvScaleLinkedCheck");
+    QVERIFY(linked->isChecked());
+    const auto typeInto = [this](const char* slider, const QString& text) {
+        QDoubleSpinBox* spin = child<ValueSlider>(slider)->spinBox();
+        QVERIFY(focus(spin));
+        spin->selectAll();
+        QTest::keyClicks(spin, text);
+        QTest::keyClick(spin, Qt::Key_Return);
+    };
+    typeInto("uvScaleSlider", QStringLiteral("2"));
+    for (const MaterialMap& map : m_document->project().material().maps)
+        QCOMPARE(map.uv.scale, glm::dvec2(2.0, 2.0));
+    QVERIFY(focus(linked));
+    QTest::keyClick(linked, Qt::Key_Space);
+    QVERIFY(!linked->isChecked());
+    typeInto("uvScaleVSlider", QStringLiteral("3"));
+    for (const MaterialMap& map : m_document->project().material().maps)
+        QCOMPARE(map.uv.scale, glm::dvec2(2.0, 3.0));
+    QCOMPARE(child<ValueSlider>("uvScaleSlider")->spinBox()->value(), 2.0);
+    // Shown as they are after an undo and a redo: unlinked, as the scales differ.
+    m_document->undoStack()->undo();
+    linked->setChecked(true);
+    m_document->undoStack()->redo();
+    QVERIFY(!linked->isChecked());
+    QCOMPARE(child<ValueSlider>("uvScaleVSlider")->spinBox()->value(), 3.0);
 }
 
 QTEST_MAIN(AuthoringUiTest)

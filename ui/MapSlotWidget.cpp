@@ -188,6 +188,9 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
         const bool normal = slot == MapSlot::Normal;
         m_factor = new ValueSlider(0.0, normal ? 2.0 : 1.0, 3, this);
         m_factor->setObjectName(QStringLiteral("factorSlider_%1").arg(key));
+        // The slider spans the usual 0-2; the field takes what the format allows (issue 30).
+        if (normal)
+            m_factor->setSpinRange(0.0, Material::kMaxNormalStrength);
         form->addRow(normal || slot == MapSlot::Occlusion ? tr("Strength") : tr("Value"), m_factor);
         connect(m_factor, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
         connect(m_factor, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);

@@ -10,6 +10,9 @@
 #include "ui/ThumbnailLoader.h"
 #include "ui/ValueSlider.h"
 
+#include <functional>
+
+#include <QCheckBox>
 #include <QDateTime>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -49,6 +52,8 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     , m_messageLabel(new QLabel(this))
     , m_materialLabel(new ElidedLabel(this)) // a long name must not widen the dock
     , m_uvScale(new ValueSlider(0.1, 16.0, 2, this))
+    , m_uvScaleV(new ValueSlider(0.1, 16.0, 2, this))
+    , m_uvScaleLinked(new QCheckBox(tr("Uniform"), this))
     , m_uvOffsetU(new ValueSlider(-1.0, 1.0, 3, this))
     , m_uvOffsetV(new ValueSlider(-1.0, 1.0, 3, this))
     , m_uvRotation(new ValueSlider(-180.0, 180.0, 1, this))
@@ -98,12 +103,19 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     m_uvOffsetV->setObjectName(QStringLiteral("uvOffsetVSlider"));
     m_uvRotation->setObjectName(QStringLiteral("uvRotationSlider"));
     m_uvRotation->setSuffix(QStringLiteral("°"));
+    m_uvScaleV->setObjectName(QStringLiteral("uvScaleVSlider"));
+    m_uvScaleLinked->setObjectName(QStringLiteral("uvScaleLinkedCheck"));
+    m_uvScaleLinked->setToolTip(tr("One scale for U and V: editing either sets both"));
+    m_uvScaleLinked->setChecked(true);
     m_uvScale->setSpinRange(0.001, 1000.0);
-    uvForm->addRow(tr("Scale"), m_uvScale);
+    m_uvScaleV->setSpinRange(0.001, 1000.0);
+    uvForm->addRow(tr("Scale U"), m_uvScale);
+    uvForm->addRow(tr("Scale V"), m_uvScaleV);
+    uvForm->addRow(QString(), m_uvScaleLinked);
     uvForm->addRow(tr("Offset U"), m_uvOffsetU);
     uvForm->addRow(tr("Offset V"), m_uvOffsetV);
     uvForm->addRow(tr("Rotation"), m_uvRotation);
-    const auto connectUv = [this](ValueSlider* slider, void (*apply)(UvTransform&, double)) {
+    const auto connectUv = [this](ValueSlider* slider, std::function<void(UvTransform&, double)> apply) {
         connect(slider, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
         connect(slider, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);
         connect(slider, &ValueSlider::valueEdited, this, [this, apply](double value) {
@@ -113,7 +125,17 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
             m_document->setMaterial(material, tr("UV Transform"), MergeId::UvTransform);
         });
     };
-    connectUv(m_uvScale, [](UvTransform& uv, double v) { uv.scale = glm::dvec2(v); });
+    // U and V apart (the format stores both; issue 30), or together while "Uniform" is ticked.
+    connectUv(m_uvScale, [this](UvTransform& uv, double v) {
+        uv.scale.x = v;
+        if (m_uvScaleLinked->isChecked())
+            uv.scale.y = v;
+    });
+    connectUv(m_uvScaleV, [this](UvTransform& uv, double v) {
+        uv.scale.y = v;
+        if (m_uvScaleLinked->isChecked())
+            uv.scale.x = v;
+    });
     connectUv(m_uvOffsetU, [](UvTransform& uv, double v) { uv.offset.x = v; });
     connectUv(m_uvOffsetV, [](UvTransform& uv, double v) { uv.offset.y = v; });
     connectUv(m_uvRotation, [](UvTransform& uv, double v) { uv.rotationDegrees = v; });
@@ -163,6 +185,9 @@ void TextureMapsDock::onDocumentChanged(DocumentChanges changes)
         widget->refresh();
     const UvTransform& uv = m_document->project().material().map(MapSlot::BaseColor).uv;
     m_uvScale->setValue(uv.scale.x);
+    m_uvScaleV->setValue(uv.scale.y);
+    if (uv.scale.x != uv.scale.y)
+        m_uvScaleLinked->setChecked(false); // a file's different scales are shown as they are
     m_uvOffsetU->setValue(uv.offset.x);
     m_uvOffsetV->setValue(uv.offset.y);
     m_uvRotation->setValue(uv.rotationDegrees);

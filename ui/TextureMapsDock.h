@@ -16,6 +16,7 @@
 #include <array>
 
 class QFileSystemWatcher;
+class QCheckBox;
 class QLabel;
 class QTimer;
 
@@ -72,7 +73,9 @@ private:
     QLabel* m_messageLabel;
     QLabel* m_materialLabel; // which material the dock edits
     std::array<QString, kMapSlotCount> m_thumbnailKeys; // what each slot's thumbnail shows
-    ValueSlider* m_uvScale;
+    ValueSlider* m_uvScale; // U
+    ValueSlider* m_uvScaleV;
+    QCheckBox* m_uvScaleLinked;
     ValueSlider* m_uvOffsetU;
     ValueSlider* m_uvOffsetV;
     ValueSlider* m_uvRotation;
