@@ -18,6 +18,7 @@
 #include "ui/ProjectFileController.h"
 #include "ui/SceneController.h"
 #include "ui/SurfaceFormat.h"
+#include "ui/TextureMapsDock.h"
 #include "ui/ValueSlider.h"
 #include "ui/ViewportWidget.h"
 
@@ -28,9 +29,11 @@
 #include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
+#include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFileInfo>
+#include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QMessageBox>
@@ -91,6 +94,7 @@ private Q_SLOTS:
     void presetsNeedCtrlAndKeepNameAndMaps();
     void exportNamesAndFolderFollowTheProject();
     void normalStrengthAndUvScaleAsTheFormatHasThem();
+    void messagesStayWhileTrueAndGoWhenNot();
 
 private:
     bool openTwoMaterials();
@@ -404,6 +408,40 @@ void AuthoringUiTest::normalStrengthAndUvScaleAsTheFormatHasThem()
     m_document->undoStack()->redo();
     QVERIFY(!linked->isChecked());
     QCOMPARE(child<ValueSlider>("uvScaleVSlider")->spinBox()->value(), 3.0);
+}
+
+// Issue 30's messages: an action's message is not overwritten at once by lighting news; a step's
+// note in the Texture Maps dock goes when the step is undone, and the bar says what was undone.
+void AuthoringUiTest::messagesStayWhileTrueAndGoWhenNot()
+{
+    // Opening an asset: its summary stays while its lighting is prepared (in a second, here).
+    QVERIFY(openTwoMaterials());
+    const QString opened = m_window->statusMessage();
+    QVERIFY2(opened.startsWith(QStringLiteral("Opened two.glb")), qPrintable(opened));
+    EnvironmentSettings environment = m_document->project().environment;
+    environment.source = "uniform:0.3";
+    m_document->setEnvironment(environment, QStringLiteral("Environment"));
+    QTest::qWait(1500);
+    QCOMPARE(m_window->statusMessage(), opened);
+
+    // A texture set assigned, then undone: the dock's note goes, the bar says what was undone.
+    QTemporaryDir folder;
+    const QString project = test::writeTexturedProject(folder.path());
+    QVERIFY(!project.isEmpty());
+    QStringList maps;
+    for (const QFileInfo& file : QDir(folder.path()).entryInfoList({QStringLiteral("*.png")}, QDir::Files))
+        maps << file.absoluteFilePath();
+    QVERIFY(maps.size() >= 2);
+    auto* dock = m_window->findChild<TextureMapsDock*>();
+    const QString note = dock->assignFiles(maps);
+    QVERIFY2(note.startsWith(QStringLiteral("Assigned ")), qPrintable(note));
+    auto* label = dock->findChild<QLabel*>(QStringLiteral("textureMapsMessage"));
+    QVERIFY(label && label->isVisibleTo(dock) && label->text() == note);
+    QVERIFY(focus(m_window->viewport()));
+    QTest::keyClick(m_window->viewport(), Qt::Key_Z, Qt::ControlModifier);
+    QVERIFY(!label->isVisibleTo(dock));
+    QVERIFY2(m_window->statusMessage().startsWith(QStringLiteral("Undone: ")),
+        qPrintable(m_window->statusMessage()));
 }
 
 QTEST_MAIN(AuthoringUiTest)

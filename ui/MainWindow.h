@@ -18,6 +18,8 @@ class QMenu;
 
 namespace facet {
 
+class ViewStatus;
+
 class AutosaveController;
 class CameraController;
 class CompareActions;
@@ -131,6 +133,7 @@ private:
     ViewDock* m_viewDock = nullptr;
     QLabel* m_glStatusLabel = nullptr;
     QLabel* m_frameStatsLabel = nullptr;
+    ViewStatus* m_viewStatus = nullptr;
     ProblemBar* m_problemBar = nullptr;
     QToolBar* m_problemRow = nullptr;
     QMenu* m_recentMenu = nullptr;

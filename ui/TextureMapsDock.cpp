@@ -25,6 +25,7 @@
 #include <QMimeData>
 #include <QPushButton>
 #include <QTimer>
+#include <QUndoStack>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -161,6 +162,14 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     connect(m_document, &Document::projectReplaced, this, [this] {
         m_messageLabel->clear();
         m_messageLabel->hide();
+    });
+    // ... and it goes when the step it reports is undone (issue 30: "Assigned 4 maps" stayed).
+    connect(m_document->undoStack(), &QUndoStack::indexChanged, this, [this](int index) {
+        if (m_reportedAt >= 0 && index < m_reportedAt) {
+            m_messageLabel->clear();
+            m_messageLabel->hide();
+            m_reportedAt = -1;
+        }
     });
     onDocumentChanged(DocumentChange::WholeProject);
 }
@@ -347,6 +356,7 @@ void TextureMapsDock::report(const QString& text)
     m_messageLabel->setText(text);
     m_messageLabel->setToolTip(text);
     m_messageLabel->show();
+    m_reportedAt = m_document->undoStack()->index();
     Q_EMIT message(text);
 }
 

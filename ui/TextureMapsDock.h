@@ -71,6 +71,7 @@ private:
     QStringList m_changedFiles;
     QStringList m_wantedFiles; // the current material's map files, existing or not
     QLabel* m_messageLabel;
+    int m_reportedAt = -1; // the undo index after the step m_messageLabel reports (-1: none)
     QLabel* m_materialLabel; // which material the dock edits
     std::array<QString, kMapSlotCount> m_thumbnailKeys; // what each slot's thumbnail shows
     ValueSlider* m_uvScale; // U

@@ -38,7 +38,7 @@ ViewStatus::ViewStatus(QStatusBar* bar, QLabel* frameStats, QStackedWidget* cent
                 return; // finished meanwhile
             m_singlePending = WindowMessages::lightingPreparing(name, fraction);
             if (!compareShown()) {
-                m_bar->showMessage(m_singlePending);
+                showNews(m_singlePending);
                 m_dock->showLightingProgress(m_singlePending, fraction);
             }
         });
@@ -63,7 +63,7 @@ ViewStatus::ViewStatus(QStatusBar* bar, QLabel* frameStats, QStackedWidget* cent
         if (compareShown()) {
             showLighting(m_comparePending, true);
             if (!m_compareNote.isEmpty())
-                m_bar->showMessage(withNote(m_comparePending));
+                showNews(withNote(m_comparePending));
         }
     });
     connect(m_compare, &CompareView::lightingReady, this, [this](int environments, double ms) {
@@ -72,7 +72,7 @@ ViewStatus::ViewStatus(QStatusBar* bar, QLabel* frameStats, QStackedWidget* cent
             const QString text = WindowMessages::lightingReady(environments, ms);
             showLighting(text, false);
             if (!m_compareNote.isEmpty())
-                m_bar->showMessage(withNote(text));
+                showNews(withNote(text));
         }
     });
     connect(m_compare, &CompareView::frameRendered, this, &ViewStatus::onCompareFrame);
@@ -98,8 +98,20 @@ bool ViewStatus::compareShown() const
 
 void ViewStatus::showLighting(const QString& text, bool busy)
 {
-    m_bar->showMessage(text);
+    showNews(text);
     m_dock->showLightingStatus(text, busy);
+}
+
+void ViewStatus::noteUserMessage()
+{
+    m_userMessage.start();
+}
+
+void ViewStatus::showNews(const QString& text)
+{
+    if (m_userMessage.isValid() && m_userMessage.elapsed() < kUserMessageHoldMs)
+        return;
+    m_bar->showMessage(text);
 }
 
 void ViewStatus::onViewSwitched()

@@ -12,6 +12,7 @@
 //   compareSummary() for the Compare view; a failed frame says "frame failed" and puts the
 //   reason in the status bar.
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 
@@ -38,6 +39,13 @@ public:
     // 1 from disk" once this view has prepared lighting); compareDetails(): the tooltip, with the
     // cells kept and the milliseconds spent on lighting.
     static QString compareSummary(const CompareFrameStats& stats);
+
+    // A file was opened, imported or saved and the status bar says what came of it
+    // (ProjectFileController::statusMessage): for kUserMessageHoldMs lighting progress does not
+    // replace it (issue 30: "Opened barrel.glb (...)" was overwritten at once by "Preparing the
+    // lighting"); the Environment dock still shows the lighting.
+    void noteUserMessage();
+    static constexpr int kUserMessageHoldMs = 5000;
     static QString compareDetails(const CompareFrameStats& stats);
 
     // A message about what the Compare view is about to show (Compare Selected Environments using
@@ -56,6 +64,9 @@ private:
     void showLighting(const QString& text, bool busy);
 
     QStatusBar* m_bar;
+    QElapsedTimer m_userMessage; // since the last message of the artist's action (invalid: none)
+    // Lighting news on the bar, unless an action's message is fresh.
+    void showNews(const QString& text);
     QLabel* m_frameStats;
     QStackedWidget* m_central;
     ViewportWidget* m_single;
