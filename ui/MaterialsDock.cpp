@@ -13,6 +13,7 @@
 #include <QListWidget>
 #include <QMenu>
 #include <QSignalBlocker>
+#include <QStringListModel>
 #include <QToolButton>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -29,18 +30,13 @@ QString nameOf(const Material& material)
     return QString::fromStdString(material.name);
 }
 
-// Fills `combo` with the project's material names unless it already lists exactly those.
-void listMaterials(QComboBox* combo, const Project& project)
+QStringList namesOf(const Project& project)
 {
-    bool same = combo->count() == int(project.materials.size());
-    for (int m = 0; same && m < combo->count(); ++m)
-        same = combo->itemText(m) == nameOf(project.materials[std::size_t(m)]);
-    if (same)
-        return;
-    const QSignalBlocker blocker(combo);
-    combo->clear();
+    QStringList names;
+    names.reserve(qsizetype(project.materials.size()));
     for (const Material& material : project.materials)
-        combo->addItem(nameOf(material));
+        names.append(nameOf(material));
+    return names;
 }
 
 } // namespace
@@ -54,6 +50,7 @@ MaterialsDock::MaterialsDock(Document* document, SceneController* scene, QWidget
     , m_duplicateButton(new QToolButton(this))
     , m_deleteButton(new QToolButton(this))
     , m_parts(new QTreeWidget(this))
+    , m_materialNames(new QStringListModel(this))
     , m_partsNote(new QLabel(this))
 {
     setObjectName(QStringLiteral("materialsDock"));
@@ -99,7 +96,10 @@ MaterialsDock::MaterialsDock(Document* document, SceneController* scene, QWidget
     m_parts->setRootIsDecorated(false);
     m_parts->setUniformRowHeights(true);
     m_parts->header()->setSectionResizeMode(kPartColumn, QHeaderView::Stretch);
-    m_parts->header()->setSectionResizeMode(kMaterialColumn, QHeaderView::ResizeToContents);
+    // A width of its own, not fitted to the contents: fitting measured every row's combo on each
+    // change (a 1 000-part mesh: most of an edit's time).
+    m_parts->header()->setSectionResizeMode(kMaterialColumn, QHeaderView::Interactive);
+    m_parts->header()->resizeSection(kMaterialColumn, m_parts->fontMetrics().averageCharWidth() * 18 + 32);
     m_parts->header()->setStretchLastSection(false);
     m_parts->setToolTip(tr("The parts of the mesh: tick to show, untick to hide; the material each shows. "
                            "Click a part in the viewport to edit its material."));
@@ -307,15 +307,23 @@ void MaterialsDock::refreshParts(bool rebuild)
     const Project& project = m_document->project();
     const int count = partCount();
     m_updating = true;
+    // The names, once for every row (a reset of the shared model: each combo's index is set below).
+    if (const QStringList names = namesOf(project); names != m_materialNames->stringList())
+        m_materialNames->setStringList(names);
     if (rebuild || m_parts->topLevelItemCount() != count) {
         m_parts->clear();
         for (int part = 0; part < count; ++part) {
             auto* item = new QTreeWidgetItem(m_parts);
             item->setText(kPartColumn, partName(part));
             item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+            // Every row's combo shows the one list of names (issue 30: 1 000 combos of 500 entries each
+            // froze the window for 13 s on opening and seconds on every edit); its width does not
+            // depend on the names, so no row measures 500 of them.
             auto* combo = new QComboBox(m_parts);
             combo->setObjectName(QStringLiteral("partMaterial_%1").arg(part));
-            combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+            combo->setModel(m_materialNames);
+            combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+            combo->setMinimumContentsLength(12);
             connect(combo, &QComboBox::activated, this, [this, part](int material) {
                 if (!m_updating)
                     setPartMaterial(part, material);
@@ -332,9 +340,11 @@ void MaterialsDock::refreshParts(bool rebuild)
             project.isPartVisible(std::size_t(part)) ? tr("Shown: untick to hide it")
                                                      : tr("Hidden: tick to show it"));
         QComboBox* combo = partMaterialCombo(part);
-        listMaterials(combo, project);
-        const QSignalBlocker blocker(combo);
-        combo->setCurrentIndex(project.materialOfPart(std::size_t(part)));
+        const int material = project.materialOfPart(std::size_t(part));
+        if (combo->currentIndex() != material) {
+            const QSignalBlocker blocker(combo);
+            combo->setCurrentIndex(material);
+        }
     }
     m_updating = false;
 }

@@ -29,6 +29,7 @@ class QLabel;
 class QToolButton;
 class QListWidget;
 class QListWidgetItem;
+class QStringListModel;
 class QTreeWidget;
 class QTreeWidgetItem;
 
@@ -85,6 +86,7 @@ private:
     QToolButton* m_duplicateButton;
     QToolButton* m_deleteButton;
     QTreeWidget* m_parts;
+    QStringListModel* m_materialNames; // every part's combo shows this one model
     QLabel* m_partsNote;
     std::uint64_t m_shownMeshKey = 0;
     bool m_updating = false; // rows being filled from the document: their signals are not edits
