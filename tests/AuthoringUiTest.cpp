@@ -41,6 +41,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
+#include <QTabBar>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QToolButton>
@@ -95,6 +96,7 @@ private Q_SLOTS:
     void exportNamesAndFolderFollowTheProject();
     void normalStrengthAndUvScaleAsTheFormatHasThem();
     void messagesStayWhileTrueAndGoWhenNot();
+    void docksShowEnoughAtASmallSize();
 
 private:
     bool openTwoMaterials();
@@ -442,6 +444,32 @@ void AuthoringUiTest::messagesStayWhileTrueAndGoWhenNot()
     QVERIFY(!label->isVisibleTo(dock));
     QVERIFY2(m_window->statusMessage().startsWith(QStringLiteral("Undone: ")),
         qPrintable(m_window->statusMessage()));
+}
+
+// Issue 30's cramped docks at 1280 x 720: the lists show several rows, and the tab names stay whole
+// (a tab bar too short for them scrolls).
+void AuthoringUiTest::docksShowEnoughAtASmallSize()
+{
+    m_window->resize(1200, 650);
+    QTest::qWait(100);
+    auto* presets = child<QListWidget>("presetList");
+    QVERIFY(presets->minimumHeight() >= 5 * 40);
+    QVERIFY(child<QListWidget>("environmentLibrary")->minimumHeight() >= 2 * 56);
+    QVERIFY(child<QListWidget>("materialList")->minimumHeight()
+        >= 5 * child<QListWidget>("materialList")->fontMetrics().height());
+    QStringList names;
+    for (QTabBar* bar : m_window->findChildren<QTabBar*>(Qt::FindDirectChildrenOnly)) {
+        if (bar->count() == 0)
+            continue;
+        QCOMPARE(bar->elideMode(), Qt::ElideNone);
+        QVERIFY(bar->usesScrollButtons());
+        for (int tab = 0; tab < bar->count(); ++tab)
+            names << bar->tabText(tab);
+    }
+    QVERIFY2(names.contains(QStringLiteral("Texture Maps"))
+            && names.contains(QStringLiteral("Environment Library")),
+        qPrintable(names.join(QStringLiteral(", "))));
+    m_window->resize(1200, 800);
 }
 
 QTEST_MAIN(AuthoringUiTest)

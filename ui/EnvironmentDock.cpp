@@ -142,6 +142,8 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
     m_library->setIconSize(QSize(kIconWidth, kIconWidth / 2));
     m_library->setGridSize(QSize(kIconWidth + 4, kIconWidth / 2 + 2 * fontMetrics().lineSpacing() + 8));
     m_library->setResizeMode(QListView::Adjust);
+    // Two rows of cells before it scrolls (issue 30: about three cells showed until resized).
+    m_library->setMinimumHeight(2 * m_library->gridSize().height() + 8);
     m_library->setMovement(QListView::Static);
     // Each item's own size, wrapped to the grid's width (uniform sizes took the size of whichever
     // item the view asked first, and could cut every label to one line).

@@ -43,9 +43,12 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
 #include <QSettings>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QTabBar>
+#include <QTimer>
 #include <QToolBar>
 #include <QUndoStack>
 
@@ -138,7 +141,11 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
             showStatusMessage(tr("Every file the project names is found"));
     });
     updateTitle();
-    resize(1200, 800);
+    // 1200 x 800, or what the screen has room for (a 1280 x 720 screen cut the window's bottom).
+    QSize size(1200, 800);
+    if (const QScreen* screen = QGuiApplication::primaryScreen())
+        size = size.boundedTo(screen->availableGeometry().size() * 0.95);
+    resize(size);
 }
 
 MainWindow::~MainWindow() = default;
@@ -315,6 +322,22 @@ void MainWindow::createDocks()
     }
     setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
     m_textureMapsDock->raise();
+    // Tab names whole (issue 30: at 1280 x 720 they read "Texture M…", "Lig…"): a tab bar too short
+    // for them scrolls instead of cutting them. QMainWindow makes its tab bars as docks are tabbed,
+    // so each new one is set up once the layout has settled.
+    const auto wholeTabNames = [this] {
+        QTimer::singleShot(0, this, [this] {
+            for (QTabBar* bar : findChildren<QTabBar*>(Qt::FindDirectChildrenOnly)) {
+                bar->setElideMode(Qt::ElideNone);
+                bar->setUsesScrollButtons(true);
+            }
+        });
+    };
+    wholeTabNames();
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+        connect(dock, &QDockWidget::dockLocationChanged, this, wholeTabNames);
+        connect(dock, &QDockWidget::topLevelChanged, this, wholeTabNames);
+    }
 
     connect(m_textureMapsDock, &TextureMapsDock::message, this, &MainWindow::showStatusMessage);
     connect(m_materialDock, &MaterialDock::message, this, &MainWindow::showStatusMessage);

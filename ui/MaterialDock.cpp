@@ -134,6 +134,8 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     auto* presetLayout = new QVBoxLayout(presetGroup);
     m_presets->setObjectName(QStringLiteral("presetList"));
     m_presets->setIconSize(QSize(kSwatchSize, kSwatchSize));
+    // Five swatch rows before it scrolls (issue 30: it showed one or two until resized).
+    m_presets->setMinimumHeight(5 * (kSwatchSize + 6) + 4);
     m_swatches = new ThumbnailLoader(this);
     connect(m_swatches, &ThumbnailLoader::ready, this,
         [this](const QString& key, const QImage& image, QSize, const QString&, double) {

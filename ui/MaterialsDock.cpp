@@ -105,8 +105,8 @@ MaterialsDock::MaterialsDock(Document* document, SceneController* scene, QWidget
                            "Click a part in the viewport to edit its material."));
     // Room for a few rows of each before the dock scrolls (a dock's first size comes from its
     // content: resizeDocks before the window is shown does not hold).
-    m_materials->setMinimumHeight(m_materials->fontMetrics().height() * 3);
-    m_parts->setMinimumHeight(m_parts->fontMetrics().height() * 6);
+    m_materials->setMinimumHeight(m_materials->fontMetrics().height() * 5);
+    m_parts->setMinimumHeight(m_parts->fontMetrics().height() * 8);
     m_partsNote->setObjectName(QStringLiteral("partsNote"));
     m_partsNote->setWordWrap(true);
     m_partsNote->setText(tr("Click a part in the viewport to edit its material."));
