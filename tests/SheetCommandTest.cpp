@@ -326,8 +326,9 @@ private Q_SLOTS:
                                                   << QStringLiteral("--wedge: ");
         QTest::newRow("wedge2 alone") << strings({"--wedge2", "metallic=0,1", "-o", "{dir}/x.png"}) << 2
                                       << QStringLiteral("--wedge2 needs --wedge");
+        // One --envs environment beside --wedge2 is the sheet's (the README's example); two are columns.
         QTest::newRow("envs and wedge2") << strings({"--wedge", "roughness=0,1", "--wedge2", "metallic=0,1", "--envs",
-                                                "uniform:1", "-o", "{dir}/x.png"})
+                                                "uniform:1,sky", "-o", "{dir}/x.png"})
                                          << 2 << QStringLiteral("--envs and --wedge2 both set the columns");
         QTest::newRow("wedge with two materials")
             << strings({"--wedge", "roughness=0,1", "--materials", "gold,copper", "-o", "{dir}/x.png"}) << 2
