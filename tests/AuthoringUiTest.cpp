@@ -41,6 +41,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTabBar>
 #include <QTemporaryDir>
 #include <QTimer>
@@ -444,6 +445,16 @@ void AuthoringUiTest::messagesStayWhileTrueAndGoWhenNot()
     QVERIFY(!label->isVisibleTo(dock));
     QVERIFY2(m_window->statusMessage().startsWith(QStringLiteral("Undone: ")),
         qPrintable(m_window->statusMessage()));
+
+    // A long message ends in "…" before the frame statistics, whole in the tooltip.
+    const QString longMessage = QStringLiteral("engine.glb has no texture coordinates; ").repeated(8);
+    m_window->showStatusMessage(longMessage);
+    QCOMPARE(m_window->statusMessage(), longMessage);
+    const QString shown = m_window->statusBar()->currentMessage();
+    QVERIFY2(shown.endsWith(QChar(0x2026)) && shown.size() < longMessage.size(), qPrintable(shown));
+    QCOMPARE(m_window->statusBar()->toolTip(), longMessage);
+    QVERIFY(m_window->statusBar()->fontMetrics().horizontalAdvance(shown) < m_window->statusBar()->width()
+            - m_window->findChild<QLabel*>(QStringLiteral("frameStatsLabel"))->width());
 }
 
 // Issue 30's cramped docks at 1280 x 720: the lists show several rows, and the tab names stay whole

@@ -586,12 +586,24 @@ bool MainWindow::saveImageTo(const QString& path, QString* error)
 
 void MainWindow::showStatusMessage(const QString& message)
 {
-    statusBar()->showMessage(message);
+    // A message longer than the room left of the frame statistics ends in "…" there, whole in the
+    // tooltip (issue 30: it ran into the statistics).
+    int room = statusBar()->width() - 24;
+    for (QWidget* permanent :
+        {static_cast<QWidget*>(m_frameStatsLabel), static_cast<QWidget*>(m_glStatusLabel)})
+        if (permanent && permanent->isVisible())
+            room -= permanent->width() + 8;
+    const QString shown = statusBar()->fontMetrics().elidedText(message, Qt::ElideRight, std::max(room, 120));
+    m_fullStatusMessage = message;
+    m_shownStatusMessage = shown;
+    statusBar()->setToolTip(shown == message ? QString() : message);
+    statusBar()->showMessage(shown);
 }
 
 QString MainWindow::statusMessage() const
 {
-    return statusBar()->currentMessage();
+    const QString current = statusBar()->currentMessage();
+    return current == m_shownStatusMessage ? m_fullStatusMessage : current;
 }
 
 QString MainWindow::aboutText() const

@@ -134,6 +134,9 @@ private:
     QLabel* m_glStatusLabel = nullptr;
     QLabel* m_frameStatsLabel = nullptr;
     ViewStatus* m_viewStatus = nullptr;
+    // The last showStatusMessage() whole, and as shown (elided to the room left of the statistics).
+    QString m_fullStatusMessage;
+    QString m_shownStatusMessage;
     ProblemBar* m_problemBar = nullptr;
     QToolBar* m_problemRow = nullptr;
     QMenu* m_recentMenu = nullptr;
