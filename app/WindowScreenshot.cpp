@@ -32,13 +32,23 @@ WindowScreenshot::WindowScreenshot(
     // for a project lit by fis or reference, the frames before its refinement is done.
     connect(viewport, &QOpenGLWidget::frameSwapped, this, [this, viewport] {
         const ViewportFrameStats& frame = viewport->lastFrameStats();
-        const bool refined = frame.refineMethod == IblMethod::SplitSum || frame.refinement.done();
+        // The project's method, not the frame's: the full split-sum frame drawn before the
+        // refinement starts (ViewportWidget::kRefineDelayMs) is not a refined one (it was taken for
+        // one, so a fis project's screenshot showed the split sum).
+        const SceneController* scene = viewport->sceneController();
+        const bool refines = scene && scene->refinementMethod() != IblMethod::SplitSum;
+        const bool refined = !refines || (frame.refineMethod != IblMethod::SplitSum && frame.refinement.done());
         if (!refined)
             m_timeout.start(kFirstFrameTimeoutMs); // progress: a refinement may take minutes
         if (!m_done && !frame.reduced && !frame.loadingMaps && frame.mapsHeldBack == 0 && refined
             && !frame.lightingPending && viewport->sceneController()
-            && viewport->sceneController()->pendingAssetLoads() == 0)
+            && viewport->sceneController()->pendingAssetLoads() == 0) {
+            if (refines)
+                m_refinement = QStringLiteral(" (refined by %1, %2 samples)")
+                                   .arg(QLatin1String(toString(frame.refineMethod)))
+                                   .arg(frame.refinement.samples);
             QTimer::singleShot(0, this, &WindowScreenshot::save);
+        }
     });
     // A project saved in a Compare mode opens in it, and the single viewport, hidden, draws
     // nothing: the compare view's first full frame with every environment loaded is the one
@@ -102,8 +112,8 @@ void WindowScreenshot::save()
     // The title says what the window showed (the project, or the asset it was made from).
     QString title = m_window->windowTitle();
     title.remove(QStringLiteral("[*]"));
-    std::fprintf(stdout, "facet: saved %dx%d screenshot of \"%s\" to %s\n", picture.width(), picture.height(),
-        qPrintable(title), qPrintable(m_path));
+    std::fprintf(stdout, "facet: saved %dx%d screenshot of \"%s\"%s to %s\n", picture.width(), picture.height(),
+        qPrintable(title), qPrintable(m_refinement), qPrintable(m_path));
     std::fflush(stdout);
     QCoreApplication::exit(0);
 }

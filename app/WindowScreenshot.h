@@ -36,6 +36,7 @@ private:
 
     QWidget* m_window;
     QString m_path;
+    QString m_refinement; // " (refined by fis, 1024 samples)" when the project refines, else empty
     QTimer m_timeout;
     bool m_done = false;
 };
