@@ -27,6 +27,7 @@
 #include <QAbstractItemView>
 #include <QApplication>
 #include <QCheckBox>
+#include <QClipboard>
 #include <QColorDialog>
 #include <QComboBox>
 #include <QDir>
@@ -98,6 +99,7 @@ private Q_SLOTS:
     void normalStrengthAndUvScaleAsTheFormatHasThem();
     void messagesStayWhileTrueAndGoWhenNot();
     void docksShowEnoughAtASmallSize();
+    void copyAndPasteAMaterial();
 
 private:
     bool openTwoMaterials();
@@ -481,6 +483,48 @@ void AuthoringUiTest::docksShowEnoughAtASmallSize()
             && names.contains(QStringLiteral("Environment Library")),
         qPrintable(names.join(QStringLiteral(", "))));
     m_window->resize(1200, 800);
+}
+
+// Edit > Copy Material and Paste Material (Ctrl+Shift+C / V): Red's factors and maps onto Blue,
+// whose name stays, in one undo step; a clipboard without a material changes nothing and says so.
+void AuthoringUiTest::copyAndPasteAMaterial()
+{
+    QVERIFY(openTwoMaterials());
+    Material red = m_document->project().materials[0];
+    red.setFactor(MapSlot::Roughness, 0.31);
+    red.map(MapSlot::Normal).path = m_dir.filePath(QStringLiteral("normal.png")).toStdString();
+    red.ior = 1.7;
+    m_document->setMaterial(red, QStringLiteral("Set up"));
+    m_document->undoStack()->clear();
+    QVERIFY(focus(m_window->viewport()));
+    QTest::keyClick(m_window->viewport(), Qt::Key_C, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY2(m_window->statusMessage().startsWith(QStringLiteral("Copied “Red”")),
+        qPrintable(m_window->statusMessage()));
+    m_document->setCurrentMaterial(1);
+    const Material blue = m_document->project().material();
+    QTest::keyClick(m_window->viewport(), Qt::Key_V, Qt::ControlModifier | Qt::ShiftModifier);
+    Material pasted = m_document->project().material();
+    QCOMPARE(pasted.name, std::string("Blue"));
+    pasted.name = red.name;
+    QVERIFY(pasted == red);
+    QCOMPARE(m_document->undoStack()->count(), 1);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Paste Material"));
+    QVERIFY2(m_window->statusMessage().startsWith(QStringLiteral("Pasted “Red” onto “Blue”")),
+        qPrintable(m_window->statusMessage()));
+    m_document->undoStack()->undo();
+    QVERIFY(m_document->project().material() == blue);
+
+    QGuiApplication::clipboard()->setText(QStringLiteral("not a material"));
+    QTest::keyClick(m_window->viewport(), Qt::Key_V, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY(m_document->project().material() == blue);
+    QCOMPARE(m_window->statusMessage(),
+        QStringLiteral("The clipboard holds no material (Edit > Copy Material copies one)"));
+    QGuiApplication::clipboard()->setText(QStringLiteral("{\"roughness\": {\"factor\": \"high\"}}"));
+    m_window->pasteMaterial();
+    QVERIFY(m_document->project().material() == blue);
+    QVERIFY2(m_window->statusMessage().startsWith(
+                 QStringLiteral("The clipboard's material cannot be used: material.roughness")),
+        qPrintable(m_window->statusMessage()));
 }
 
 QTEST_MAIN(AuthoringUiTest)

@@ -33,16 +33,19 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QBuffer>
+#include <QClipboard>
 #include <QCloseEvent>
 #include <QDebug>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QJsonDocument>
 #include <QKeySequence>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QScreen>
 #include <QSettings>
 #include <QStackedWidget>
@@ -229,6 +232,14 @@ void MainWindow::createEditMenu()
         [this] { showStatusMessage(tr("Redone: %1").arg(m_document->undoStack()->undoText())); });
     menu->addAction(undo);
     menu->addAction(redo);
+    menu->addSeparator();
+    // A material's look and maps from one material (or window) to another (issue 30).
+    QAction* copy = menu->addAction(tr("&Copy Material"), this, &MainWindow::copyMaterial);
+    copy->setObjectName(QStringLiteral("copyMaterialAction"));
+    copy->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_C));
+    QAction* paste = menu->addAction(tr("&Paste Material"), this, &MainWindow::pasteMaterial);
+    paste->setObjectName(QStringLiteral("pasteMaterialAction"));
+    paste->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_V));
     menu->addSeparator();
     QMenu* presets = menu->addMenu(tr("Apply &Preset"));
     presets->setObjectName(QStringLiteral("presetMenu"));
@@ -582,6 +593,55 @@ bool MainWindow::saveImageTo(const QString& path, QString* error)
         return fail(tr("Could not save the image: %1").arg(QString::fromStdString(problem)));
     showStatusMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
     return true;
+}
+
+namespace {
+// The clipboard's form of a material: a material object of the project format (texture paths
+// absolute), under its own MIME type and as text.
+const char* const kMaterialMime = "application/x-facet-material+json";
+} // namespace
+
+void MainWindow::copyMaterial()
+{
+    const Material& material = m_document->project().material();
+    const QByteArray json
+        = QJsonDocument(materialToJson(material, std::string())).toJson(QJsonDocument::Compact);
+    auto* mime = new QMimeData;
+    mime->setData(QLatin1String(kMaterialMime), json);
+    mime->setText(QString::fromUtf8(json));
+    QGuiApplication::clipboard()->setMimeData(mime);
+    showStatusMessage(tr("Copied “%1”: Edit > Paste Material (Ctrl+Shift+V) puts it on another material")
+                          .arg(QString::fromStdString(material.name)));
+}
+
+void MainWindow::pasteMaterial()
+{
+    const QMimeData* mime = QGuiApplication::clipboard()->mimeData();
+    QByteArray json = mime ? mime->data(QLatin1String(kMaterialMime)) : QByteArray();
+    if (json.isEmpty() && mime && mime->hasText())
+        json = mime->text().toUtf8();
+    const QJsonDocument document = QJsonDocument::fromJson(json);
+    std::string error;
+    const std::optional<Material> pasted = document.isObject()
+        ? materialFromJson(document.object(), std::string(), "material", &error)
+        : std::nullopt;
+    if (!pasted) {
+        showStatusMessage(json.isEmpty() || !document.isObject()
+                ? tr("The clipboard holds no material (Edit > Copy Material copies one)")
+                : tr("The clipboard's material cannot be used: %1").arg(QString::fromStdString(error)));
+        return;
+    }
+    // Everything but the name: the material keeps its place and what the parts call it.
+    Material material = *pasted;
+    material.name = m_document->project().material().name;
+    if (material == m_document->project().material()) {
+        showStatusMessage(
+            tr("“%1” already looks like the copied material").arg(QString::fromStdString(material.name)));
+        return;
+    }
+    m_document->setMaterial(material, tr("Paste Material"));
+    showStatusMessage(tr("Pasted “%1” onto “%2” (factors and maps; the name kept)")
+                          .arg(QString::fromStdString(pasted->name), QString::fromStdString(material.name)));
 }
 
 void MainWindow::showStatusMessage(const QString& message)

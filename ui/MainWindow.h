@@ -88,6 +88,11 @@ public:
     // File > Export…: the document's materials as a glTF asset or an engine's texture set
     // (ui/ExportDialog); what it wrote goes to the status bar.
     void exportMaterials();
+    // Edit > Copy Material / Paste Material (Ctrl+Shift+C / V): the current material's factors,
+    // maps and options through the clipboard onto the current material, whose name stays; one undo
+    // step. The status bar says what happened, or why nothing did.
+    void copyMaterial();
+    void pasteMaterial();
     // File > Save Image… (F12): the single view as a PNG (what it shows: its display transform)
     // or a linear EXR (scene radiance), rendered again at its full size and converged to the
     // project's IBL samples; in a Compare mode the grid as shown, PNG only. saveImageTo() is the
