@@ -11,7 +11,9 @@
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>
+#include <QDir>
 #include <QFileInfo>
+#include <QTemporaryDir>
 
 #include <chrono>
 
@@ -25,6 +27,7 @@
 #include "core/MaterialPresets.h"
 #include "core/ProjectAssets.h"
 #include "core/ToneMap.h"
+#include "core/VideoEncoder.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblSettings.h"
 #include "render/RenderScene.h"
@@ -38,6 +41,7 @@ namespace {
 
 constexpr int kMaxImageSide = 16384;
 constexpr int kMaxSamplesPerPixel = 1 << 20;
+constexpr int kMaxTurntableFrames = 3600;
 
 struct Options {
     QCommandLineParser parser;
@@ -93,8 +97,20 @@ struct Options {
                        "size, background, tone mapping and output."),
         QStringLiteral("json")};
     QCommandLineOption output {{QStringLiteral("o"), QStringLiteral("output")},
-        QStringLiteral("Output image: .exr (linear radiance) or .png (display-referred)."),
+        QStringLiteral("Output image: .exr (linear radiance) or .png (display-referred); with --turntable "
+                       "also a video, .mp4 or .webm (needs ffmpeg)."),
         QStringLiteral("file")};
+    QCommandLineOption turntable {QStringLiteral("turntable"),
+        QStringLiteral("Render N frames of a full turn (2 to %1): OUT_0000.png ... (a run of # in the name "
+                       "is replaced by the frame number), or a video for a .mp4 or .webm output.")
+            .arg(kMaxTurntableFrames),
+        QStringLiteral("N")};
+    QCommandLineOption turntableSubject {QStringLiteral("turntable-subject"),
+        QStringLiteral("What turns: object (under fixed lighting and camera; the default) or environment."),
+        QStringLiteral("what")};
+    QCommandLineOption fps {QStringLiteral("fps"),
+        QStringLiteral("Frames per second of a turntable video (1 to 120, default 30)."),
+        QStringLiteral("F")};
     SceneFlags scene;
 
     Options()
@@ -103,9 +119,9 @@ struct Options {
             "Renders a project (or the built-in default) without a window or display server.\n"
             "EXR output is linear scene radiance with no tone mapping; PNG goes through the project's "
             "view transform. With --spp the CPU ground truth renders the reference view instead."));
-        for (const QCommandLineOption* option :
-            {&help, &env, &material, &baseColor, &metallic, &roughness, &brdf, &multiScatter, &mesh, &view,
-                &size, &referenceView, &spp, &quality, &ibl, &iblSamples, &stats, &output, &scenario})
+        for (const QCommandLineOption* option : {&help, &env, &material, &baseColor, &metallic, &roughness,
+                 &brdf, &multiScatter, &mesh, &view, &size, &referenceView, &spp, &quality, &ibl, &iblSamples,
+                 &stats, &output, &scenario, &turntable, &turntableSubject, &fps})
             parser.addOption(*option);
         scene.addTo(parser);
         parser.addPositionalArgument(QStringLiteral("input"),
@@ -134,9 +150,10 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
         return std::nullopt;
     if (o.parser.isSet(o.scenario)) {
         // The scenario says what these would: one source for each.
-        for (const QString& name : {QStringLiteral("output"), QStringLiteral("size"),
-                 QStringLiteral("reference-view"), QStringLiteral("spp"), QStringLiteral("camera-position"),
-                 QStringLiteral("camera-target"), QStringLiteral("fov"), QStringLiteral("keep-units")})
+        for (const QString& name :
+            {QStringLiteral("output"), QStringLiteral("size"), QStringLiteral("reference-view"),
+                QStringLiteral("spp"), QStringLiteral("camera-position"), QStringLiteral("camera-target"),
+                QStringLiteral("fov"), QStringLiteral("keep-units"), QStringLiteral("turntable")})
             if (o.parser.isSet(name)) {
                 *error = QStringLiteral("--scenario gives the model, camera, size and output: leave out --%1")
                              .arg(name);
@@ -154,12 +171,25 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
         request.height = scenario->height;
         request.project = std::move(scenario->project);
     } else {
-        const auto output = exrOrPngOutput(o.parser.isSet(o.output), o.parser.value(o.output),
-            QStringLiteral("-o OUT.exr or -o OUT.png is required"),
-            QStringLiteral("the output must be .exr (linear radiance) or .png (display-referred)"), error);
-        if (!output)
-            return std::nullopt;
-        request.outputPath = *output;
+        const QString video = o.parser.value(o.output);
+        if (o.parser.isSet(o.output) && isVideoPath(video.toStdString())) {
+            if (!o.parser.isSet(o.turntable)) {
+                *error = QStringLiteral("-o '%1': a video is a turntable's: add --turntable N").arg(video);
+                return std::nullopt;
+            }
+            request.outputPath = video.toStdString();
+        } else {
+            const auto output = exrOrPngOutput(o.parser.isSet(o.output), o.parser.value(o.output),
+                QStringLiteral("-o OUT.exr or -o OUT.png is required"),
+                o.parser.isSet(o.turntable)
+                    ? QStringLiteral(
+                        "the output must be .exr, .png (numbered frames) or .mp4, .webm (a video)")
+                    : QStringLiteral("the output must be .exr (linear radiance) or .png (display-referred)"),
+                error);
+            if (!output)
+                return std::nullopt;
+            request.outputPath = *output;
+        }
         // The project: the file (a project, or a glTF asset with its own materials), or the
         // built-in default.
         auto input = commandInputProject(positional, QStringLiteral("render"), error);
@@ -293,6 +323,45 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
         request.samplesPerPixel = spp;
     }
     request.printStats = o.parser.isSet(o.stats);
+    if (o.parser.isSet(o.turntable)) {
+        if (request.samplesPerPixel > 0) {
+            *error = QStringLiteral("--turntable renders with the GPU renderer: leave out --spp");
+            return std::nullopt;
+        }
+        bool ok = false;
+        request.turntableFrames = o.parser.value(o.turntable).toInt(&ok);
+        if (!ok || request.turntableFrames < 2 || request.turntableFrames > kMaxTurntableFrames) {
+            *error = QStringLiteral("--turntable: '%1' is not a whole number from 2 to %2")
+                         .arg(o.parser.value(o.turntable))
+                         .arg(kMaxTurntableFrames);
+            return std::nullopt;
+        }
+    } else {
+        for (const QCommandLineOption* option : {&o.turntableSubject, &o.fps})
+            if (o.parser.isSet(*option)) {
+                *error = QStringLiteral("--%1 belongs to a turntable: add --turntable N")
+                             .arg(option->names().first());
+                return std::nullopt;
+            }
+    }
+    if (o.parser.isSet(o.turntableSubject)) {
+        const auto subject = turntableSubjectFromString(o.parser.value(o.turntableSubject).toStdString());
+        if (!subject) {
+            *error = QStringLiteral("--turntable-subject: '%1' is not object or environment")
+                         .arg(o.parser.value(o.turntableSubject));
+            return std::nullopt;
+        }
+        request.turntableSubject = *subject;
+    }
+    if (o.parser.isSet(o.fps)) {
+        bool ok = false;
+        request.fps = o.parser.value(o.fps).toInt(&ok);
+        if (!ok || request.fps < 1 || request.fps > 120) {
+            *error = QStringLiteral("--fps: '%1' is not a whole number from 1 to 120")
+                         .arg(o.parser.value(o.fps));
+            return std::nullopt;
+        }
+    }
     if (!o.scene.apply(o.parser, project, {}, error))
         return std::nullopt;
     request.saveProjectPath = o.scene.saveProjectPath(o.parser).toStdString();
@@ -375,6 +444,57 @@ int runGroundTruth(const RenderRequest& request)
     return 0;
 }
 
+// --turntable N: each frame the prepared scene turned (render/Turntable.h), written as numbered
+// files, or for a video as PNG frames in a temporary folder that ffmpeg encodes.
+int renderTurntable(FrameRenderer& frames, const RenderScene& scene, const RenderRequest& request)
+{
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    const bool video = isVideoPath(request.outputPath);
+    const bool png = video
+        || QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower() == QStringLiteral("png");
+    QTemporaryDir folder;
+    if (video && !folder.isValid()) {
+        std::fprintf(stderr, "facet render: no temporary folder for the frames of %s: %s\n",
+            request.outputPath.c_str(), qPrintable(folder.errorString()));
+        return RenderCommand::kExitFailure;
+    }
+    const int count = request.turntableFrames;
+    std::string error;
+    for (int index = 0; index < count; ++index) {
+        RenderScene turned = scene;
+        applyTurntable(turned, request.turntableSubject, turntableDegrees(index, count));
+        const std::optional<Image> image = frames.renderConverged(turned, request.width, request.height,
+            png ? FrameOutput::DisplayReferred : FrameOutput::LinearRadiance, turned.sampling.samples,
+            &error);
+        const std::string path = video
+            ? folder.filePath(QStringLiteral("frame_%1.png").arg(index, 5, 10, QLatin1Char('0')))
+                  .toStdString()
+            : turntableFramePath(request.outputPath, index, count);
+        if (!image || !image->save(path, &error, !video && keepsAlpha(request))) {
+            std::fprintf(stderr, "facet render: frame %d of %d: %s\n", index, count, error.c_str());
+            return RenderCommand::kExitFailure;
+        }
+    }
+    const auto rendered = Clock::now();
+    if (video
+        && !encodeVideo(folder.filePath(QStringLiteral("frame_%05d.png")).toStdString(), request.fps,
+            request.outputPath, &error)) {
+        std::fprintf(stderr, "facet render: %s\n", error.c_str());
+        return RenderCommand::kExitFailure;
+    }
+    if (request.printStats) {
+        const auto ms = [](Clock::time_point from, Clock::time_point to) {
+            return std::chrono::duration<double, std::milli>(to - from).count();
+        };
+        std::printf(
+            "turntable: %d frames, %s turning, %dx%d\nturntable_ms: %.1f a frame, render %.1f, encode %.1f\n",
+            count, toString(request.turntableSubject), request.width, request.height,
+            ms(start, rendered) / double(count), ms(start, rendered), ms(rendered, Clock::now()));
+    }
+    return 0;
+}
+
 int runGpu(const RenderRequest& request)
 {
     using Clock = std::chrono::steady_clock;
@@ -382,6 +502,14 @@ int runGpu(const RenderRequest& request)
     const Project& project = request.project;
     std::string error;
     std::string warning;
+    // A video needs ffmpeg: said before any work.
+    if (request.turntableFrames > 0 && isVideoPath(request.outputPath) && findFfmpeg().empty()) {
+        const QFileInfo video(QString::fromStdString(request.outputPath));
+        const std::string frames = "-o "
+            + video.dir().filePath(video.completeBaseName() + QStringLiteral("_####.png")).toStdString();
+        std::fprintf(stderr, "facet render: %s\n", missingFfmpegAdvice(request.outputPath, frames).c_str());
+        return RenderCommand::kExitFailure;
+    }
     auto assets = loadProjectAssets(project, &error, &warning);
     if (!warning.empty())
         std::fprintf(stderr, "facet render: %s\n", warning.c_str());
@@ -414,6 +542,8 @@ int runGpu(const RenderRequest& request)
             std::fprintf(stderr, "facet render: %s\n", frames.precompute().lastWarning().c_str());
         const auto prepared = Clock::now();
 
+        if (request.turntableFrames > 0)
+            return renderTurntable(frames, *scene, request);
         Renderer& renderer = frames.renderer();
         renderer.setTimingEnabled(request.printStats);
         const bool png = QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower()

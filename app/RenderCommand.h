@@ -6,7 +6,8 @@
 //       [--multiscatter on|off] [--mesh NAME|PATH] [--view NAME] [--size WxH] [--reference-view]
 //       [--spp N] [--quality PRESET] [--stats] [the scene flags of app/SceneFlags.h: --camera-position,
 //       --camera-target, --fov, --exposure, --tone-mapper, --env-rotation, --env-intensity,
-//       --background, --set PATH=VALUE, --save-project FILE] -o OUT.(exr|png)
+//       --background, --set PATH=VALUE, --save-project FILE]
+//       [--turntable N [--turntable-subject object|environment] [--fps F]] -o OUT.(exr|png|mp4|webm)
 //
 // EXR output is linear scene radiance (no exposure, no tone mapping); PNG is display-referred
 // through the project's view transform. With --spp N the image comes from core's ground-truth
@@ -20,6 +21,7 @@
 #include <QStringList>
 
 #include "core/Project.h"
+#include "render/Turntable.h"
 
 namespace facet {
 
@@ -32,6 +34,11 @@ struct RenderRequest {
     int samplesPerPixel = 0;  // > 0: render with the ground-truth integrator
     bool printStats = false;
     std::string saveProjectPath; // --save-project: written before rendering
+    // --turntable N: N frames of a full turn (render/Turntable.h) into numbered files
+    // (turntableFramePath) or, for a .mp4 / .webm output, a video at `fps` (core/VideoEncoder.h).
+    int turntableFrames = 0;
+    TurntableSubject turntableSubject = TurntableSubject::Object;
+    int fps = 30;
 };
 
 class RenderCommand {

@@ -88,4 +88,40 @@ std::optional<Project> withMaterialRemoved(Project project, int index, std::stri
     return project;
 }
 
+namespace {
+
+enum class SlotKind { Color, Normal, Scalar };
+
+SlotKind kindOf(MapSlot slot)
+{
+    return isColorSlot(slot)      ? SlotKind::Color
+        : slot == MapSlot::Normal ? SlotKind::Normal
+                                  : SlotKind::Scalar;
+}
+
+} // namespace
+
+MaterialMap pastedMap(MapSlot from, const MaterialMap& copied, MapSlot to, const MaterialMap& target)
+{
+    MaterialMap map = copied;
+    if (kindOf(from) == kindOf(to))
+        return map;
+    map.factor = target.factor;
+    map.colorSpace = Material::defaultMaps()[std::size_t(to)].colorSpace;
+    if (to == MapSlot::Normal || to == MapSlot::Emissive)
+        map.channel = MapChannel::Rgb;
+    else if (isScalarSlot(to) && map.channel == MapChannel::Rgb)
+        map.channel = MapChannel::R;
+    map.invert = false; // only between scalar slots, which are one kind
+    map.flipGreen = false; // only between normal maps
+    return map;
+}
+
+std::optional<glm::dvec4> pastedFactor(MapSlot from, const MaterialMap& copied, MapSlot to)
+{
+    if (kindOf(from) != kindOf(to))
+        return std::nullopt;
+    return copied.factor;
+}
+
 } // namespace facet

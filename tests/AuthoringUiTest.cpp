@@ -8,13 +8,27 @@
 //   for its text.
 // - Presets take Ctrl+1..9: the number key alone changes nothing; with Ctrl the look changes and the
 //   name and maps stay, and the status bar says what changed.
+// - One map copied and pasted (a slot's context menu: Copy Map, Paste Map, Paste Value), from one
+//   material's slot to another material's slot of the same or another kind, one undo step each.
+// - A material assigned to the selected parts (several rows of the Parts list) in one undo step,
+//   from the Assign to Selected button's menu; disabled without a selection.
+// - The cache budget (ui/CacheBudget, Edit > Preferences): where the number comes from (setting,
+//   FACET_CACHE_BUDGET_MB, default, each out of range), and the window's IBL cache keeping to it
+//   while environments change, a new budget applying at the next frame; freed memory handed back
+//   (ui/FreedMemoryTimer).
 // Needs a display (Xvfb via with-display.sh).
 
+#include "core/FreedMemory.h"
+#include "core/Image.h"
+#include "ui/CacheBudget.h"
 #include "ui/ColorButton.h"
 #include "ui/Document.h"
 #include "ui/ExportDialog.h"
+#include "ui/FreedMemoryTimer.h"
 #include "ui/MainWindow.h"
+#include "ui/MapSlotWidget.h"
 #include "ui/MaterialsDock.h"
+#include "ui/PreferencesDialog.h"
 #include "ui/ProjectFileController.h"
 #include "ui/SceneController.h"
 #include "ui/SurfaceFormat.h"
@@ -37,20 +51,25 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QSpinBox>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabBar>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QToolButton>
+#include <QTreeWidget>
 #include <QUndoStack>
 #include <QtTest/QTest>
 
 #include <memory>
+#include <thread>
+#include <vector>
 
 using namespace facet;
 
@@ -100,6 +119,12 @@ private Q_SLOTS:
     void messagesStayWhileTrueAndGoWhenNot();
     void docksShowEnoughAtASmallSize();
     void copyAndPasteAMaterial();
+    void assignAMaterialToSelectedParts();
+    void copyAndPasteAMapOrAValue();
+    void cacheBudgetComesFromSettingOrEnvironment_data();
+    void cacheBudgetComesFromSettingOrEnvironment();
+    void theLightingCacheKeepsToTheBudget();
+    void freedMemoryGoesBackToTheSystem();
 
 private:
     bool openTwoMaterials();
@@ -528,4 +553,252 @@ void AuthoringUiTest::copyAndPasteAMaterial()
 }
 
 QTEST_MAIN(AuthoringUiTest)
+void AuthoringUiTest::assignAMaterialToSelectedParts()
+{
+    QVERIFY(openTwoMaterials());
+    MaterialsDock* dock = m_window->materialsDock();
+    QCOMPARE(partMaterials(m_document->project()), (Names {"Red", "Blue"}));
+    QToolButton* assign = dock->assignToPartsButton();
+    dock->partList()->clearSelection();
+    QVERIFY(!assign->isEnabled());
+    // Both rows selected (as Ctrl-click does), then "Blue" from the button's menu.
+    dock->partList()->topLevelItem(0)->setSelected(true);
+    dock->partList()->topLevelItem(1)->setSelected(true);
+    QVERIFY(assign->isEnabled());
+    QCOMPARE(dock->selectedParts(), (std::vector<int> {0, 1}));
+    Q_EMIT assign->menu()->aboutToShow();
+    QAction* blue = assign->menu()->findChild<QAction*>(QStringLiteral("assignMaterial_1"));
+    QVERIFY(blue);
+    const int steps = m_document->undoStack()->count();
+    blue->trigger();
+    QCOMPARE(partMaterials(m_document->project()), (Names {"Blue", "Blue"}));
+    QCOMPARE(m_document->undoStack()->count(), steps + 1);
+    QCOMPARE(m_window->statusMessage(), QStringLiteral("Assigned Blue to 1 part")); // the other had it
+    // Red to both: two parts in one step; Ctrl+Z takes both back.
+    dock->assignMaterialToParts(0, dock->selectedParts());
+    QCOMPARE(partMaterials(m_document->project()), (Names {"Red", "Red"}));
+    QCOMPARE(m_window->statusMessage(), QStringLiteral("Assigned Red to 2 parts"));
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Assign Red to 2 parts"));
+    m_document->undoStack()->undo();
+    QCOMPARE(partMaterials(m_document->project()), (Names {"Blue", "Blue"}));
+    // Nothing to change: no step, and the status bar says so.
+    dock->assignMaterialToParts(1, {0, 1});
+    QCOMPARE(m_document->undoStack()->index(), steps + 1);
+    QVERIFY(m_document->undoStack()->canRedo());
+    QCOMPARE(m_window->statusMessage(), QStringLiteral("The selected parts already show Blue"));
+}
+
+void AuthoringUiTest::copyAndPasteAMapOrAValue()
+{
+    QVERIFY(openTwoMaterials());
+    // Red's roughness reads the green channel of an ORM file, inverted, at 0.4.
+    Material red = m_document->project().materials[0];
+    const std::string orm = m_dir.filePath(QStringLiteral("orm.png")).toStdString();
+    MaterialMap& roughness = red.map(MapSlot::Roughness);
+    roughness.path = orm;
+    roughness.channel = MapChannel::G;
+    roughness.invert = true;
+    red.setFactor(MapSlot::Roughness, 0.4);
+    m_document->setMaterial(red, QStringLiteral("Set up"));
+    m_document->undoStack()->clear();
+    QGuiApplication::clipboard()->clear();
+    TextureMapsDock* maps = m_window->textureMapsDock();
+    // Nothing copied yet: the pastes say so and change nothing.
+    QVERIFY(!maps->slotWidget(MapSlot::Metallic)->pasteMap());
+    QVERIFY2(m_window->statusMessage().contains(QStringLiteral("the clipboard holds no map")),
+        qPrintable(m_window->statusMessage()));
+    maps->slotWidget(MapSlot::Roughness)->copyMap();
+    QCOMPARE(m_window->statusMessage(), QStringLiteral("Copied the roughness map (orm.png)"));
+
+    // Onto Blue's metallic (one kind: all of it) and its roughness value, each one step.
+    m_document->setCurrentMaterial(1);
+    const int steps = m_document->undoStack()->index();
+    QVERIFY(maps->slotWidget(MapSlot::Metallic)->pasteMap());
+    const MaterialMap& metallic = m_document->project().materials[1].map(MapSlot::Metallic);
+    QCOMPARE(metallic.path, orm);
+    QCOMPARE(metallic.channel, MapChannel::G);
+    QVERIFY(metallic.invert);
+    QCOMPARE(metallic.factor.x, 0.4);
+    QCOMPARE(m_window->statusMessage(), QStringLiteral("Pasted the roughness map onto metallic"));
+    QVERIFY(maps->slotWidget(MapSlot::Roughness)->pasteValue());
+    QCOMPARE(m_document->project().materials[1].map(MapSlot::Roughness).factor.x, 0.4);
+    QVERIFY(!m_document->project().materials[1].map(MapSlot::Roughness).hasTexture()); // the value only
+    QCOMPARE(m_document->undoStack()->index(), steps + 2);
+    // A scalar value does not fit a colour; the map does, read as a colour map reads.
+    QVERIFY(!maps->slotWidget(MapSlot::BaseColor)->pasteValue());
+    QCOMPARE(m_window->statusMessage(),
+        QStringLiteral("Paste Value: a roughness value does not fit the base colour slot"));
+    QVERIFY(maps->slotWidget(MapSlot::Normal)->pasteMap());
+    const MaterialMap& normal = m_document->project().materials[1].map(MapSlot::Normal);
+    QCOMPARE(normal.path, orm);
+    QCOMPARE(normal.channel, MapChannel::Rgb);
+    QVERIFY(!normal.invert);
+    QCOMPARE(normal.factor.x, 1.0); // its own strength
+    // Undo takes the pastes back one at a time; Red is untouched throughout.
+    m_document->undoStack()->undo();
+    QVERIFY(!m_document->project().materials[1].map(MapSlot::Normal).hasTexture());
+    m_document->undoStack()->undo();
+    m_document->undoStack()->undo();
+    QVERIFY(!m_document->project().materials[1].map(MapSlot::Metallic).hasTexture());
+    QCOMPARE(m_document->project().materials[0].map(MapSlot::Roughness), roughness);
+}
+
+void AuthoringUiTest::cacheBudgetComesFromSettingOrEnvironment_data()
+{
+    QTest::addColumn<QVariant>("setting"); // invalid: none stored
+    QTest::addColumn<QByteArray>("environment"); // empty: unset
+    QTest::addColumn<int>("expected");
+    QTest::addColumn<bool>("fromEnvironment");
+    const int standard = CacheBudget::kDefaultMegabytes;
+    QTest::newRow("nothing set: the default") << QVariant() << QByteArray() << standard << false;
+    QTest::newRow("the setting") << QVariant(1024) << QByteArray() << 1024 << false;
+    QTest::newRow("a setting below the range") << QVariant(10) << QByteArray() << standard << false;
+    QTest::newRow("a setting that is no number")
+        << QVariant(QStringLiteral("lots")) << QByteArray() << standard << false;
+    QTest::newRow("the environment wins") << QVariant(1024) << QByteArray("128") << 128 << true;
+    QTest::newRow("the environment, no setting") << QVariant() << QByteArray("2048") << 2048 << true;
+    QTest::newRow("an environment below the range") << QVariant(1024) << QByteArray("32") << 1024 << false;
+    QTest::newRow("an environment with a unit") << QVariant(1024) << QByteArray("512MB") << 1024 << false;
+    QTest::newRow("an environment above the range")
+        << QVariant() << QByteArray("9999999") << standard << false;
+}
+
+void AuthoringUiTest::cacheBudgetComesFromSettingOrEnvironment()
+{
+    QFETCH(QVariant, setting);
+    QFETCH(QByteArray, environment);
+    QFETCH(int, expected);
+    QFETCH(bool, fromEnvironment);
+    const auto restore = qScopeGuard([] {
+        QSettings().remove(QStringLiteral("cache/budgetMB"));
+        qunsetenv("FACET_CACHE_BUDGET_MB");
+        CacheBudget::reload();
+    });
+    if (setting.isValid())
+        QSettings().setValue(QStringLiteral("cache/budgetMB"), setting);
+    else
+        QSettings().remove(QStringLiteral("cache/budgetMB"));
+    if (environment.isEmpty())
+        qunsetenv("FACET_CACHE_BUDGET_MB");
+    else
+        qputenv("FACET_CACHE_BUDGET_MB", environment);
+    CacheBudget::reload();
+    QCOMPARE(CacheBudget::megabytes(), expected);
+    QCOMPARE(CacheBudget::bytes(), std::size_t(expected) << 20);
+    QCOMPARE(CacheBudget::fromEnvironment(), fromEnvironment);
+
+    // The preference shows it, disabled when the environment sets it; OK stores what it shows.
+    PreferencesDialog dialog(0, 0, m_window.get());
+    QCOMPARE(dialog.cacheBudgetSpin()->value(), expected);
+    QCOMPARE(dialog.cacheBudgetSpin()->isEnabled(), !fromEnvironment);
+    QCOMPARE(
+        dialog.findChild<QLabel*>(QStringLiteral("cacheBudgetEnvironmentNote")) != nullptr, fromEnvironment);
+    if (!fromEnvironment) {
+        QSignalSpy changed(CacheBudget::instance(), &CacheBudget::changed);
+        dialog.cacheBudgetSpin()->setValue(768);
+        dialog.accept();
+        QCOMPARE(CacheBudget::megabytes(), 768);
+        QCOMPARE(QSettings().value(QStringLiteral("cache/budgetMB")).toInt(), 768);
+        QCOMPARE(changed.count(), 1);
+        // setMegabytes clamps to the range.
+        CacheBudget::setMegabytes(1);
+        QCOMPARE(CacheBudget::megabytes(), CacheBudget::kMinMegabytes);
+    }
+}
+
+void AuthoringUiTest::theLightingCacheKeepsToTheBudget()
+{
+    // Environments 1024 pixels wide at the high preset: an IBL set and its source take ~20 MiB,
+    // so the smallest budget (64 MiB) holds three at most.
+    const auto restore = qScopeGuard([] {
+        QSettings().remove(QStringLiteral("cache/budgetMB"));
+        CacheBudget::reload();
+    });
+    CacheBudget::setMegabytes(CacheBudget::kMinMegabytes);
+    m_document->newProject();
+    EnvironmentSettings environment = m_document->project().environment;
+    environment.quality = IblQuality::High;
+    ViewportWidget* viewport = m_window->viewport();
+    const auto show = [&](int index) {
+        Image image(1024, 512, glm::vec4(0.2f + 0.1f * float(index), 0.5f, 0.7f, 1.0f));
+        image.at(100 * index, 100) = glm::vec4(1000.0f); // each its own content
+        const QString path = m_dir.filePath(QStringLiteral("budget%1.exr").arg(index));
+        std::string error;
+        if (!image.save(path.toStdString(), &error))
+            return false;
+        environment.source = path.toStdString();
+        const std::uint64_t framesBefore = viewport->frameCount();
+        m_document->setEnvironment(environment, QStringLiteral("Environment"));
+        return QTest::qWaitFor(
+            [&] {
+                const ViewportFrameStats& stats = viewport->lastFrameStats();
+                return !stats.lightingPending && m_window->sceneController()->pendingAssetLoads() == 0
+                    && m_window->sceneController()->environmentName() == QFileInfo(path).fileName()
+                    && stats.iblCacheEntries > 0 && viewport->frameCount() > framesBefore;
+            },
+            60000);
+    };
+    QVERIFY(show(0));
+    const std::size_t oneSet = viewport->lastFrameStats().iblCacheBytes;
+    QVERIFY2(oneSet > std::size_t(12) << 20, qPrintable(QStringLiteral("one set: %1 bytes").arg(oneSet)));
+    const std::size_t budget = CacheBudget::bytes();
+    for (int index = 1; index < 6; ++index) {
+        QVERIFY(show(index));
+        const ViewportFrameStats& stats = viewport->lastFrameStats();
+        QVERIFY2(stats.iblCacheBytes <= budget,
+            qPrintable(QStringLiteral("environment %1: %2 bytes held, budget %3")
+                           .arg(index)
+                           .arg(stats.iblCacheBytes)
+                           .arg(budget)));
+    }
+    const int heldUnderTheSmallBudget = viewport->lastFrameStats().iblCacheEntries;
+    QVERIFY(heldUnderTheSmallBudget < 6);
+    // A larger budget applies at the next frame: two more environments join what is held, which
+    // now takes more than the small budget allowed.
+    CacheBudget::setMegabytes(1024);
+    QVERIFY(show(6));
+    QVERIFY(show(7));
+    QVERIFY2(viewport->lastFrameStats().iblCacheEntries > heldUnderTheSmallBudget
+            && viewport->lastFrameStats().iblCacheBytes > budget,
+        qPrintable(QStringLiteral("%1 entries (%2 under the small budget), %3 bytes")
+                       .arg(viewport->lastFrameStats().iblCacheEntries)
+                       .arg(heldUnderTheSmallBudget)
+                       .arg(viewport->lastFrameStats().iblCacheBytes)));
+    // Edit > Preferences says what is held.
+    PreferencesDialog dialog(
+        viewport->lastFrameStats().iblCacheBytes, viewport->lastFrameStats().iblCacheEntries, m_window.get());
+    QVERIFY(dialog.findChild<QLabel*>(QStringLiteral("cacheHeldLabel"))
+                ->text()
+                .contains(QStringLiteral("(%1 entries)").arg(viewport->lastFrameStats().iblCacheEntries)));
+}
+
+void AuthoringUiTest::freedMemoryGoesBackToTheSystem()
+{
+    FreedMemoryTimer timer;
+    timer.setEnabled(false);
+    // Blocks freed by another thread stay in its arena (as a decode worker's do): 96 MiB freed of
+    // 64 KiB blocks (below the allocator's mmap threshold), every other one kept so that the freed
+    // ones cannot merge into the arena's top.
+    std::vector<std::unique_ptr<char[]>> kept;
+    std::thread worker([&] {
+        std::vector<std::unique_ptr<char[]>> blocks;
+        constexpr std::size_t kBlock = std::size_t(64) << 10;
+        for (int i = 0; i < 3072; ++i) {
+            blocks.emplace_back(new char[kBlock]);
+            std::fill_n(blocks.back().get(), kBlock, char(i)); // resident
+        }
+        for (std::size_t i = 0; i < blocks.size(); i += 2)
+            kept.push_back(std::move(blocks[i]));
+    });
+    worker.join();
+    QVERIFY2(freedMemoryHeld() > FreedMemoryTimer::kThresholdBytes,
+        qPrintable(QStringLiteral("%1 bytes free").arg(freedMemoryHeld())));
+    const std::size_t before = residentBytes();
+    QVERIFY(timer.check());
+    QCOMPARE(timer.returns(), 1);
+    const std::size_t after = residentBytes();
+    QVERIFY2(after + (std::size_t(32) << 20) < before,
+        qPrintable(QStringLiteral("resident %1 -> %2 MiB").arg(before >> 20).arg(after >> 20)));
+}
+
 #include "AuthoringUiTest.moc"

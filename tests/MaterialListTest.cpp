@@ -53,6 +53,94 @@ class MaterialListTest : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    // Copy Map / Paste Map between every pair of kinds: what goes, what the target keeps, and a
+    // result Material::validate accepts.
+    void pasteAMap_data()
+    {
+        QTest::addColumn<int>("from");
+        QTest::addColumn<int>("to");
+        QTest::addColumn<bool>("factorCopied");
+        QTest::addColumn<int>("channel"); // MapChannel the result reads
+        QTest::addColumn<bool>("invert");
+        QTest::addColumn<bool>("flipGreen");
+        QTest::addColumn<int>("colorSpace"); // ColorEncoding
+        const auto row = [](const char* name, MapSlot from, MapSlot to, bool factor, MapChannel channel,
+                             bool invert, bool flip, ColorEncoding space) {
+            QTest::newRow(name) << int(from) << int(to) << factor << int(channel) << invert << flip
+                                << int(space);
+        };
+        // The copied maps (copiedMap below): roughness reads G inverted; normal flips green; base
+        // colour reads rgb as linear (set by hand); emissive rgb sRGB.
+        row("roughness -> metallic: all of it", MapSlot::Roughness, MapSlot::Metallic, true, MapChannel::G,
+            true, false, ColorEncoding::Linear);
+        row("roughness -> base colour", MapSlot::Roughness, MapSlot::BaseColor, false, MapChannel::G, false,
+            false, ColorEncoding::SRGB);
+        row("roughness -> normal", MapSlot::Roughness, MapSlot::Normal, false, MapChannel::Rgb, false, false,
+            ColorEncoding::Linear);
+        row("roughness -> emissive", MapSlot::Roughness, MapSlot::Emissive, false, MapChannel::Rgb, false,
+            false, ColorEncoding::SRGB);
+        row("normal -> normal: the flip too", MapSlot::Normal, MapSlot::Normal, true, MapChannel::Rgb, false,
+            true, ColorEncoding::Linear);
+        row("normal -> occlusion", MapSlot::Normal, MapSlot::Occlusion, false, MapChannel::R, false, false,
+            ColorEncoding::Linear);
+        row("base colour -> emissive: one kind", MapSlot::BaseColor, MapSlot::Emissive, true, MapChannel::Rgb,
+            false, false, ColorEncoding::Linear);
+        row("base colour -> roughness", MapSlot::BaseColor, MapSlot::Roughness, false, MapChannel::R, false,
+            false, ColorEncoding::Linear);
+        row("emissive -> base colour", MapSlot::Emissive, MapSlot::BaseColor, true, MapChannel::Rgb, false,
+            false, ColorEncoding::SRGB);
+    }
+
+    void pasteAMap()
+    {
+        QFETCH(int, from);
+        QFETCH(int, to);
+        QFETCH(bool, factorCopied);
+        QFETCH(int, channel);
+        QFETCH(bool, invert);
+        QFETCH(bool, flipGreen);
+        QFETCH(int, colorSpace);
+        Material source;
+        MaterialMap& roughness = source.map(MapSlot::Roughness);
+        roughness.path = "/maps/orm.png";
+        roughness.factor = glm::dvec4(0.3);
+        roughness.channel = MapChannel::G;
+        roughness.invert = true;
+        source.map(MapSlot::Normal).path = "/maps/normal.png";
+        source.map(MapSlot::Normal).factor = glm::dvec4(2.5);
+        source.map(MapSlot::Normal).flipGreen = true;
+        source.map(MapSlot::BaseColor).path = "/maps/albedo.exr";
+        source.map(MapSlot::BaseColor).colorSpace = ColorEncoding::Linear;
+        source.map(MapSlot::BaseColor).factor = glm::dvec4(0.9, 0.5, 0.2, 1.0);
+        source.map(MapSlot::Emissive).path = "/maps/glow.png";
+        source.map(MapSlot::Emissive).factor = glm::dvec4(1.0, 0.8, 0.1, 1.0);
+        for (MapSlot slot : kAllMapSlots) {
+            source.map(slot).uv.rotationDegrees = 30.0;
+            source.map(slot).texCoord = 1;
+        }
+        const MapSlot fromSlot = MapSlot(from);
+        const MapSlot toSlot = MapSlot(to);
+        Material target; // the defaults
+        const MaterialMap& copied = source.map(fromSlot);
+        const MaterialMap pasted = pastedMap(fromSlot, copied, toSlot, target.map(toSlot));
+        QCOMPARE(pasted.path, copied.path);
+        QCOMPARE(pasted.uv.rotationDegrees, 30.0);
+        QCOMPARE(pasted.texCoord, 1);
+        QCOMPARE(pasted.factor == copied.factor, factorCopied);
+        if (!factorCopied)
+            QVERIFY(pasted.factor == target.map(toSlot).factor);
+        QCOMPARE(int(pasted.channel), channel);
+        QCOMPARE(pasted.invert, invert);
+        QCOMPARE(pasted.flipGreen, flipGreen);
+        QCOMPARE(int(pasted.colorSpace), colorSpace);
+        target.map(toSlot) = pasted;
+        std::string problem;
+        QVERIFY2(target.validate(&problem), problem.c_str());
+        // Paste Value: only within one kind.
+        const std::optional<glm::dvec4> factor = pastedFactor(fromSlot, copied, toSlot);
+        QCOMPARE(factor.has_value(), factorCopied);
+    }
+
     void uniqueNames()
     {
         const Project project = fourMaterials();

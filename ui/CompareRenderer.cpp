@@ -11,6 +11,7 @@
 #include "render/TextureFiltering.h"
 
 #include "core/HeatMap.h"
+#include "ui/CacheBudget.h"
 #include "ui/ViewportRenderer.h"
 
 #include <QCoreApplication>
@@ -514,6 +515,7 @@ bool CompareRenderer::paint(const std::vector<CompareCellDraw>& cells, unsigned 
     m_stats.cellsDrawn = 0;
     m_stats.cellsKept = 0;
     m_stats.cellsLoading = 0;
+    m_frames->precompute().setMemoryBudget(CacheBudget::bytes()); // the user's (ui/CacheBudget.h)
     scale = std::clamp(scale, 0.05, 1.0);
     std::string problem;
     if (!m_composite || m_composite->width() != width || m_composite->height() != height) {

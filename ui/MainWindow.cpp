@@ -12,11 +12,14 @@
 #include "ui/DocumentAssets.h"
 #include "ui/EnvironmentDock.h"
 #include "ui/ExportDialog.h"
+#include "ui/FreedMemoryTimer.h"
+#include "ui/ImageSaver.h"
 #include "ui/LightsDock.h"
 #include "ui/MapLoadStatus.h"
 #include "ui/MaterialDock.h"
 #include "ui/MaterialsDock.h"
 #include "ui/PartPicker.h"
+#include "ui/PreferencesDialog.h"
 #include "ui/ProblemBar.h"
 #include "ui/ProjectFileController.h"
 #include "ui/SceneController.h"
@@ -96,6 +99,8 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     central->addWidget(m_viewport);
     central->addWidget(m_compareView = new CompareView(m_document, m_scene, m_compareController, central));
     setCentralWidget(central);
+    m_imageSaver = new ImageSaver(this, m_document, m_viewport, m_compareView,
+        [central, this] { return central->currentWidget() == m_compareView; });
     // One IBL precompute and one texture cache for both views (their contexts share).
     auto shareGroup = std::make_shared<ViewShareGroup>();
     m_viewport->setShareGroup(shareGroup);
@@ -130,8 +135,10 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
         m_viewStatus->noteUserMessage();
     });
     connect(m_files, &ProjectFileController::errorReported, this, &MainWindow::showStatusMessage);
+    connect(m_imageSaver, &ImageSaver::statusMessage, this, &MainWindow::showStatusMessage);
     connect(m_autosave, &AutosaveController::failed, this, &MainWindow::showStatusMessage);
     createProblemBar();
+    m_freedMemory = new FreedMemoryTimer(this);
     connect(m_document, &Document::modifiedChanged, this, &QWidget::setWindowModified);
     connect(m_document, &Document::filePathChanged, this, &MainWindow::updateTitle);
     // An asset opened as an untitled project keeps an empty path but is named in the title.
@@ -204,6 +211,10 @@ void MainWindow::createFileMenu()
     QAction* saveImageAction = menu->addAction(tr("Save &Image…"), this, &MainWindow::saveImage);
     saveImageAction->setObjectName(QStringLiteral("saveImageAction"));
     saveImageAction->setShortcut(QKeySequence(Qt::Key_F12));
+    QAction* saveTurntableAction
+        = menu->addAction(tr("Save &Turntable…"), m_imageSaver, &ImageSaver::saveTurntable);
+    saveTurntableAction->setObjectName(QStringLiteral("saveTurntableAction"));
+    saveTurntableAction->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F12));
     menu->addSeparator();
     m_relinkAction = add(tr("Re&link Missing Files…"), "relinkAction", QKeySequence(),
         &ProjectFileController::showMissingFilesDialog);
@@ -254,6 +265,18 @@ void MainWindow::createEditMenu()
             [this, &preset] { showStatusMessage(m_document->applyPreset(preset)); });
         ++index;
     }
+    menu->addSeparator();
+    QAction* preferences = menu->addAction(tr("Pre&ferences…"), this, &MainWindow::showPreferences);
+    preferences->setObjectName(QStringLiteral("preferencesAction"));
+    preferences->setShortcut(QKeySequence::Preferences);
+    preferences->setMenuRole(QAction::PreferencesRole);
+}
+
+void MainWindow::showPreferences()
+{
+    const ViewportFrameStats& stats = m_viewport->lastFrameStats();
+    PreferencesDialog dialog(stats.iblCacheBytes, stats.iblCacheEntries, this);
+    dialog.exec();
 }
 
 void MainWindow::createViewMenu()
@@ -530,69 +553,15 @@ void MainWindow::exportMaterials()
 
 void MainWindow::saveImage()
 {
-    const bool grid = centralWidget() != nullptr
-        && static_cast<QStackedWidget*>(centralWidget())->currentWidget() == m_compareView;
-    QString filters = tr("PNG image, as shown (*.png)");
-    if (!grid)
-        filters += tr(";;OpenEXR, linear scene radiance (*.exr)");
-    QString chosen;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save Image"),
-        QDir(QSettings().value(QStringLiteral("saveImage/folder"), QDir::homePath()).toString())
-            .filePath(m_document->displayName() + QStringLiteral(".png")),
-        filters, &chosen);
-    if (path.isEmpty())
-        return;
-    QSettings().setValue(QStringLiteral("saveImage/folder"), QFileInfo(path).absolutePath());
-    QString why;
-    if (!saveImageTo(path, &why))
-        QMessageBox::warning(this, tr("Save Image"), why);
+    m_imageSaver->saveImage();
 }
 
-bool MainWindow::saveImageTo(const QString& path, QString* error)
+bool MainWindow::saveImageTo(const QString& path, QString* error, QSize size, bool transparent)
 {
-    const auto fail = [&](const QString& why) {
-        *error = why;
-        showStatusMessage(why);
-        return false;
-    };
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix != QStringLiteral("png") && suffix != QStringLiteral("exr"))
-        return fail(tr("%1: Save Image writes .png (as shown) or .exr (linear radiance)").arg(path));
-    const bool grid = static_cast<QStackedWidget*>(centralWidget())->currentWidget() == m_compareView;
-    QApplication::setOverrideCursor(Qt::WaitCursor);
-    std::string problem;
-    bool saved = false;
-    if (grid) {
-        if (suffix == QStringLiteral("exr")) {
-            QApplication::restoreOverrideCursor();
-            return fail(
-                tr("%1: the compare grid saves as PNG (its cells and labels as shown); a linear EXR is "
-                   "of the single view")
-                    .arg(path));
-        }
-        // The grid as shown: cells, labels, the error view's legend.
-        QByteArray bytes;
-        QBuffer buffer(&bytes);
-        buffer.open(QIODevice::WriteOnly);
-        saved = m_compareView->grab().toImage().save(&buffer, "PNG");
-        if (!saved)
-            problem = "cannot encode the grid as PNG";
-        else if (!(saved = writeFileAtomically(path.toStdString(),
-                       std::string_view(bytes.constData(), std::size_t(bytes.size())), &problem)))
-            problem = "cannot write: " + problem;
-    } else {
-        // The single view drawn again at its full size: what it shows (PNG: the display
-        // transform) or the scene radiance under it (EXR), converged to the project's samples.
-        const FrameOutput output
-            = suffix == QStringLiteral("exr") ? FrameOutput::LinearRadiance : FrameOutput::DisplayReferred;
-        const std::optional<Image> image = m_viewport->renderStill(output, &problem);
-        saved = image && image->save(path.toStdString(), &problem, /*alpha=*/false);
-    }
-    QApplication::restoreOverrideCursor();
-    if (!saved)
-        return fail(tr("Could not save the image: %1").arg(QString::fromStdString(problem)));
-    showStatusMessage(tr("Saved %1").arg(QDir::toNativeSeparators(path)));
-    return true;
+    SaveImageDialog::Choice choice;
+    choice.size = size;
+    choice.transparent = transparent;
+    return m_imageSaver->saveImageTo(path, choice, error);
 }
 
 namespace {

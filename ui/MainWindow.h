@@ -9,6 +9,7 @@
 
 #include <QByteArray>
 #include <QMainWindow>
+#include <QSize>
 
 class QAction;
 class QDockWidget;
@@ -34,6 +35,8 @@ class MaterialsDock;
 class PartPicker;
 class ProjectFileController;
 class DocumentAssets;
+class FreedMemoryTimer;
+class ImageSaver;
 class SceneController;
 class TextureMapsDock;
 class ViewDock;
@@ -93,12 +96,17 @@ public:
     // step. The status bar says what happened, or why nothing did.
     void copyMaterial();
     void pasteMaterial();
-    // File > Save Image… (F12): the single view as a PNG (what it shows: its display transform)
-    // or a linear EXR (scene radiance), rendered again at its full size and converged to the
-    // project's IBL samples; in a Compare mode the grid as shown, PNG only. saveImageTo() is the
-    // part after the file dialog: false with *error (also in the status bar).
+    // File > Save Image… (F12, ui/ImageSaver): the single view as a PNG (what it shows: its
+    // display transform) or a linear EXR (scene radiance), rendered again offscreen at the chosen
+    // size (ui/SaveImageDialog: the view's own by default) and converged to the project's IBL
+    // samples; in a Compare mode the grid as shown, PNG only. saveImageTo() is the part after the
+    // dialogs (`size` empty: the view's own): false with *error (also in the status bar).
+    // File > Save Turntable… (Shift+F12) is imageSaver()'s.
     void saveImage();
-    bool saveImageTo(const QString& path, QString* error);
+    bool saveImageTo(const QString& path, QString* error, QSize size = {}, bool transparent = false);
+    ImageSaver* imageSaver() const { return m_imageSaver; }
+    // Edit > Preferences…: this computer's settings (ui/PreferencesDialog: the cache budget).
+    void showPreferences();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -124,6 +132,8 @@ private:
     CameraController* m_camera = nullptr;
     ProjectFileController* m_files = nullptr;
     PartPicker* m_picker = nullptr;
+    FreedMemoryTimer* m_freedMemory = nullptr; // hands freed memory back to the system
+    ImageSaver* m_imageSaver = nullptr; // File > Save Image…, Save Turntable…
     ViewportDropHandler* m_drops = nullptr;
     AutosaveController* m_autosave = nullptr;
     CompareController* m_compareController = nullptr;

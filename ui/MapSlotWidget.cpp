@@ -2,6 +2,7 @@
 
 #include "core/GltfImport.h"
 #include "core/MapNaming.h"
+#include "core/MaterialList.h"
 #include "ui/ColorButton.h"
 #include "ui/Document.h"
 #include "ui/DocumentCommands.h"
@@ -11,15 +12,21 @@
 #include "ui/WindowMessages.h"
 
 #include <QCheckBox>
+#include <QClipboard>
 #include <QComboBox>
+#include <QContextMenuEvent>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGridLayout>
+#include <QGuiApplication>
 #include <QHBoxLayout>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
+#include <QMenu>
 #include <QMimeData>
 #include <QPushButton>
 #include <QSignalBlocker>
@@ -436,6 +443,105 @@ void MapSlotWidget::dropEvent(QDropEvent* event)
         assignFile(files.first());
     else
         Q_EMIT filesDropped(files);
+}
+
+namespace {
+// The clipboard's form of one map: {"slot": "roughness", "material": a material object of the
+// project format whose map of that slot is the copy (texture paths absolute)}, under its own MIME
+// type and as text.
+const char* const kMapMime = "application/x-facet-map+json";
+
+struct CopiedMap {
+    MapSlot slot = MapSlot::BaseColor;
+    MaterialMap map;
+};
+
+std::optional<CopiedMap> copiedMap()
+{
+    const QMimeData* mime = QGuiApplication::clipboard()->mimeData();
+    QByteArray json = mime ? mime->data(QLatin1String(kMapMime)) : QByteArray();
+    if (json.isEmpty() && mime && mime->hasText())
+        json = mime->text().toUtf8();
+    const QJsonObject object = QJsonDocument::fromJson(json).object();
+    const std::optional<MapSlot> slot
+        = mapSlotFromString(object.value(QStringLiteral("slot")).toString().toStdString());
+    if (!slot || !object.value(QStringLiteral("material")).isObject())
+        return std::nullopt;
+    std::string error;
+    const std::optional<Material> material = materialFromJson(
+        object.value(QStringLiteral("material")).toObject(), std::string(), "material", &error);
+    if (!material)
+        return std::nullopt;
+    return CopiedMap {*slot, material->map(*slot)};
+}
+
+} // namespace
+
+void MapSlotWidget::copyMap()
+{
+    const Material& material = m_document->project().material();
+    QJsonObject object;
+    object.insert(QStringLiteral("slot"), QString::fromLatin1(toString(m_slot)));
+    object.insert(QStringLiteral("material"), materialToJson(material, std::string()));
+    const QByteArray json = QJsonDocument(object).toJson(QJsonDocument::Compact);
+    auto* mime = new QMimeData;
+    mime->setData(QLatin1String(kMapMime), json);
+    mime->setText(QString::fromUtf8(json));
+    QGuiApplication::clipboard()->setMimeData(mime);
+    const MaterialMap& map = material.map(m_slot);
+    Q_EMIT message(map.hasTexture()
+            ? tr("Copied the %1 map (%2)")
+                  .arg(title(m_slot).toLower(), QFileInfo(QString::fromStdString(map.path)).fileName())
+            : tr("Copied the %1 value").arg(title(m_slot).toLower()));
+}
+
+bool MapSlotWidget::pasteMap()
+{
+    const std::optional<CopiedMap> copied = copiedMap();
+    if (!copied) {
+        Q_EMIT message(tr("Paste Map: the clipboard holds no map (Copy Map on a slot first)"));
+        return false;
+    }
+    const MaterialMap& target = m_document->project().material().map(m_slot);
+    editMap(pastedMap(copied->slot, copied->map, m_slot, target), tr("Paste %1 Map").arg(title(m_slot)));
+    Q_EMIT message(
+        tr("Pasted the %1 map onto %2").arg(title(copied->slot).toLower(), title(m_slot).toLower()));
+    return true;
+}
+
+bool MapSlotWidget::pasteValue()
+{
+    const std::optional<CopiedMap> copied = copiedMap();
+    const std::optional<glm::dvec4> factor
+        = copied ? pastedFactor(copied->slot, copied->map, m_slot) : std::nullopt;
+    if (!factor) {
+        Q_EMIT message(copied ? tr("Paste Value: a %1 value does not fit the %2 slot")
+                                    .arg(title(copied->slot).toLower(), title(m_slot).toLower())
+                              : tr("Paste Value: the clipboard holds no map (Copy Map on a slot first)"));
+        return false;
+    }
+    MaterialMap map = m_document->project().material().map(m_slot);
+    map.factor = *factor;
+    editMap(map, tr("Paste %1 Value").arg(title(m_slot)));
+    Q_EMIT message(
+        tr("Pasted the %1 value onto %2").arg(title(copied->slot).toLower(), title(m_slot).toLower()));
+    return true;
+}
+
+void MapSlotWidget::contextMenuEvent(QContextMenuEvent* event)
+{
+    QMenu menu(this);
+    menu.addAction(tr("Copy Map"), this, &MapSlotWidget::copyMap);
+    const std::optional<CopiedMap> copied = copiedMap();
+    QAction* paste = menu.addAction(tr("Paste Map"), this, &MapSlotWidget::pasteMap);
+    paste->setEnabled(copied.has_value());
+    QAction* value = menu.addAction(tr("Paste Value"), this, &MapSlotWidget::pasteValue);
+    value->setEnabled(copied && pastedFactor(copied->slot, copied->map, m_slot));
+    if (m_document->project().material().map(m_slot).hasTexture()) {
+        menu.addSeparator();
+        menu.addAction(tr("Clear"), this, &MapSlotWidget::clearFile);
+    }
+    menu.exec(event->globalPos());
 }
 
 } // namespace facet

@@ -5,7 +5,8 @@
 // map's strength and DirectX green flip. Base colour and emissive take a colour (the emissive one
 // also its strength, Material::emissiveStrength, on a logarithmic slider); the other slots a number. An image
 // file dropped on it becomes its texture; a folder or several files go to the dock (filesDropped) to be
-// assigned by name. Every edit is an undo step through the Document; a drag of the factor slider is one step.
+// assigned by name. Right-click: Copy Map, Paste Map, Paste Value. Every edit is an undo step through the
+// Document; a drag of the factor slider is one step.
 
 #include "core/Material.h"
 
@@ -45,6 +46,14 @@ public:
     // file come here.
     bool assignFile(const QString& path);
     void clearFile();
+    // The slot's context menu: Copy Map puts this map (file, how it is read, factor) on the
+    // clipboard; Paste Map makes a copied map this slot's (core/MaterialList.h pastedMap: across
+    // kinds of slot, what this one cannot have is left out); Paste Value takes only the factor,
+    // between slots of one kind. Each paste is one undo step; false (with a message) when the
+    // clipboard holds no map or the value does not fit.
+    void copyMap();
+    bool pasteMap();
+    bool pasteValue();
 
     ValueSlider* factorSlider() const { return m_factor; } // null for base colour and emissive
     ColorButton* colorButton() const { return m_color; } // base colour and emissive only
@@ -60,6 +69,7 @@ Q_SIGNALS:
 protected:
     void dragEnterEvent(QDragEnterEvent* event) override;
     void dropEvent(QDropEvent* event) override;
+    void contextMenuEvent(QContextMenuEvent* event) override;
 
 private:
     void editMap(const MaterialMap& map, const QString& undoText, int mergeId = 0);

@@ -12,11 +12,13 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QMenu>
+
 #include <QSignalBlocker>
 #include <QStringListModel>
 #include <QToolButton>
 #include <QTreeWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 
 namespace facet {
 
@@ -50,6 +52,7 @@ MaterialsDock::MaterialsDock(Document* document, SceneController* scene, QWidget
     , m_duplicateButton(new QToolButton(this))
     , m_deleteButton(new QToolButton(this))
     , m_parts(new QTreeWidget(this))
+    , m_assignButton(new QToolButton(this))
     , m_materialNames(new QStringListModel(this))
     , m_partsNote(new QLabel(this))
 {
@@ -90,6 +93,27 @@ MaterialsDock::MaterialsDock(Document* document, SceneController* scene, QWidget
         [this] { duplicateMaterial(m_materials->currentRow()); });
     connect(
         m_deleteButton, &QToolButton::clicked, this, [this] { deleteMaterial(m_materials->currentRow()); });
+    // Several parts take one material in one step (Substance Painter's "assign to selection"):
+    // select them (Ctrl or Shift), then Assign or the list's context menu.
+    button(m_assignButton, "assignToPartsButton", tr("Assign to Selected"),
+        tr("Assign a material to every selected part, in one undo step"));
+    m_assignButton->setPopupMode(QToolButton::InstantPopup);
+    m_assignButton->setMenu(new QMenu(m_assignButton));
+    m_assignButton->setEnabled(false);
+    connect(m_assignButton->menu(), &QMenu::aboutToShow, this,
+        [this] { fillAssignMenu(m_assignButton->menu()); });
+    m_parts->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_parts->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_parts, &QWidget::customContextMenuRequested, this, [this](const QPoint& position) {
+        if (selectedParts().empty())
+            return;
+        QMenu menu(this);
+        fillAssignMenu(
+            menu.addMenu(tr("Assign Material to %n Selected Part(s)", nullptr, int(selectedParts().size()))));
+        menu.exec(m_parts->viewport()->mapToGlobal(position));
+    });
+    connect(m_parts, &QTreeWidget::itemSelectionChanged, this,
+        [this] { m_assignButton->setEnabled(!selectedParts().empty()); });
     m_parts->setObjectName(QStringLiteral("partList"));
     m_parts->setColumnCount(2);
     m_parts->setHeaderLabels({tr("Part"), tr("Material")});
@@ -123,6 +147,10 @@ MaterialsDock::MaterialsDock(Document* document, SceneController* scene, QWidget
     layout->addLayout(buttons);
     layout->addWidget(new QLabel(tr("<b>Parts</b>"), content));
     layout->addWidget(m_parts, 2);
+    auto* partButtons = new QHBoxLayout;
+    partButtons->addWidget(m_assignButton);
+    partButtons->addStretch(1);
+    layout->addLayout(partButtons);
     layout->addWidget(m_partsNote);
     setWidget(content);
 
@@ -396,6 +424,54 @@ void MaterialsDock::setPartMaterial(int part, int material)
     parts[std::size_t(part)].material = material;
     m_document->setParts(
         parts, tr("Assign %1 to %2").arg(nameOf(project.materials[std::size_t(material)]), partName(part)));
+}
+
+std::vector<int> MaterialsDock::selectedParts() const
+{
+    std::vector<int> parts;
+    for (QTreeWidgetItem* item : m_parts->selectedItems())
+        parts.push_back(m_parts->indexOfTopLevelItem(item));
+    std::sort(parts.begin(), parts.end());
+    return parts;
+}
+
+void MaterialsDock::fillAssignMenu(QMenu* menu)
+{
+    menu->clear();
+    const Project& project = m_document->project();
+    for (std::size_t material = 0; material < project.materials.size(); ++material) {
+        QAction* action = menu->addAction(nameOf(project.materials[material]));
+        action->setObjectName(QStringLiteral("assignMaterial_%1").arg(material));
+        if (int(material) == project.currentMaterial)
+            action->setText(tr("%1 (current)").arg(action->text()));
+        connect(action, &QAction::triggered, this,
+            [this, material] { assignMaterialToParts(int(material), selectedParts()); });
+    }
+}
+
+void MaterialsDock::assignMaterialToParts(int material, const std::vector<int>& parts)
+{
+    const Project& project = m_document->project();
+    if (material < 0 || std::size_t(material) >= project.materials.size())
+        return;
+    std::vector<MeshPart> edited = partsForEditing();
+    int changed = 0;
+    for (const int part : parts)
+        if (part >= 0 && part < partCount() && std::size_t(part) < edited.size()
+            && edited[std::size_t(part)].material != material) {
+            edited[std::size_t(part)].material = material;
+            ++changed;
+        }
+    const QString name = nameOf(project.materials[std::size_t(material)]);
+    if (changed == 0) {
+        Q_EMIT message(tr("The selected parts already show %1").arg(name));
+        return;
+    }
+    const QString what = changed == 1 ? tr("Assign %1 to a part").arg(name)
+                                      : tr("Assign %1 to %2 parts").arg(name).arg(changed);
+    m_document->setParts(edited, what);
+    Q_EMIT message(changed == 1 ? tr("Assigned %1 to 1 part").arg(name)
+                                : tr("Assigned %1 to %2 parts").arg(name).arg(changed));
 }
 
 void MaterialsDock::selectPart(int part)

@@ -26,6 +26,7 @@
 
 class QComboBox;
 class QLabel;
+class QMenu;
 class QToolButton;
 class QListWidget;
 class QListWidgetItem;
@@ -62,6 +63,13 @@ public:
     void setPartMaterial(int part, int material);
     // Selects `part`'s row without editing anything (a click in the viewport picked it).
     void selectPart(int part);
+    // The parts whose rows are selected (Ctrl- and Shift-click select several), in order.
+    std::vector<int> selectedParts() const;
+    // `material` on every part of `parts` that shows another, one undo step ("Assign Red to 3
+    // parts"); the status bar says what changed. The Assign to Selected button's menu and the
+    // parts list's context menu call it with the selected parts.
+    void assignMaterialToParts(int material, const std::vector<int>& parts);
+    QToolButton* assignToPartsButton() const { return m_assignButton; }
 
 Q_SIGNALS:
     void message(const QString& text);
@@ -71,6 +79,8 @@ private:
     void onSceneChanged();
     void refreshMaterials();
     void showMaterialMenu(const QPoint& position);
+    // One action per material, each assigning it to the selected parts.
+    void fillAssignMenu(QMenu* menu);
     // Applies an edit of the material list (core/MaterialList.h) as one undo step, or says why not.
     void applyListEdit(const std::optional<Project>& after, const std::string& problem,
         const QString& undoText, const QString& done);
@@ -86,6 +96,7 @@ private:
     QToolButton* m_duplicateButton;
     QToolButton* m_deleteButton;
     QTreeWidget* m_parts;
+    QToolButton* m_assignButton;
     QStringListModel* m_materialNames; // every part's combo shows this one model
     QLabel* m_partsNote;
     std::uint64_t m_shownMeshKey = 0;

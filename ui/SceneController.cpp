@@ -4,6 +4,7 @@
 #include "core/MapImageCache.h"
 #include "core/Project.h"
 #include "render/SceneFromProject.h"
+#include "render/Turntable.h"
 #include "ui/Document.h"
 #include "ui/DocumentAssets.h"
 #include "ui/WindowMessages.h"
@@ -489,9 +490,8 @@ RenderScene SceneController::scene(const std::shared_ptr<const IblTextures>& ibl
     options.irradianceFromSH = settings.irradiance == IblSettings::Irradiance::SH;
     options.iblMethod = method;
     RenderScene scene = sceneFromProject(m_document->project(), m_assets, ibl, options);
-    if (m_objectTurntableDegrees != 0.0)
-        scene.modelMatrix = modelMatrix();
-    scene.environment.rotationDegrees += m_environmentTurntableDegrees;
+    applyTurntable(scene, TurntableSubject::Object, m_objectTurntableDegrees);
+    applyTurntable(scene, TurntableSubject::Environment, m_environmentTurntableDegrees);
     return scene;
 }
 
@@ -502,7 +502,7 @@ IblMethod SceneController::refinementMethod() const
 
 glm::dmat4 SceneController::modelMatrix() const
 {
-    return glm::rotate(glm::dmat4(1.0), glm::radians(m_objectTurntableDegrees), glm::dvec3(0.0, 1.0, 0.0));
+    return turntableModelMatrix(m_objectTurntableDegrees);
 }
 
 void SceneController::setTurntableAngles(double objectDegrees, double environmentDegrees)

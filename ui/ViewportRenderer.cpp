@@ -3,6 +3,8 @@
 
 #include "ui/ViewportRenderer.h"
 
+#include "ui/CacheBudget.h"
+
 #include "render/FrameRenderer.h"
 #include "render/Renderer.h"
 #include "render/SceneFromProject.h"
@@ -141,8 +143,8 @@ bool ViewportRenderer::needsIbl(const SceneController& scene) const
     return m_iblKey != scene.iblKey();
 }
 
-std::optional<Image> ViewportRenderer::renderStill(
-    const SceneController& scene, int width, int height, FrameOutput output, std::string* error)
+std::optional<Image> ViewportRenderer::renderStill(const SceneController& scene, int width, int height,
+    FrameOutput output, std::string* error, const StillOptions& options)
 {
     if (m_iblKey != scene.iblKey() || !m_ibl) {
         std::string problem;
@@ -163,6 +165,12 @@ std::optional<Image> ViewportRenderer::renderStill(
     RenderScene frame = scene.scene(m_ibl, method);
     std::string ignored;
     holdBackUnreadyMaps(frame, &ignored);
+    applyTurntable(frame, options.turntableSubject, options.turntableDegrees);
+    if (options.transparent)
+        frame.view.background = BackgroundMode::Transparent;
+    while (frame.view.msaaSamples > 1
+        && (long long)width * height * frame.view.msaaSamples > kMaxStillMsaaSamplePixels)
+        frame.view.msaaSamples /= 2;
     if (!m_frames->addDfgTables(scene.iblSettings(), frame, nullptr, error)
         || !m_frames->addEnvironmentSource(scene.assets().environment, frame, nullptr, error))
         return std::nullopt;
@@ -248,6 +256,9 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
         return false;
     };
 
+    // The user's budget for the environments shown before (a change applies at the next frame).
+    IblPrecompute& precompute = m_frames->precompute();
+    precompute.setMemoryBudget(CacheBudget::bytes());
     bool iblPrepared = false;
     double iblMsHere = 0.0; // of this frame's own time (not the worker's)
     m_stats.lightingPending = false;
@@ -257,7 +268,7 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
         // a worker, fetched or computed here.
         const Environment& environment = scene.assets().environment;
         const IblSettings settings = scene.iblSettings();
-        const bool inMemory = !environment.isEmpty() && m_frames->precompute().holds(environment, settings);
+        const bool inMemory = !environment.isEmpty() && precompute.holds(environment, settings);
         const std::uint64_t cacheKey
             = environment.isEmpty() ? 0 : IblPrecompute::cacheKey(environment, settings);
         const bool failed = m_pending && m_pending->cacheKey == cacheKey && m_pending->finished
@@ -379,6 +390,8 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
     m_stats.reduced = reduced;
     m_stats.frameMs = double(clock.nsecsElapsed()) / 1e6 - iblMsHere;
     m_stats.render = m_frames->renderer().lastFrameStats();
+    m_stats.iblCacheEntries = int(precompute.memoryEntries() + precompute.sourceEntries());
+    m_stats.iblCacheBytes = precompute.memoryBytes();
     return true;
 }
 

@@ -30,6 +30,7 @@
 #include "render/GLInfo.h"
 #include "render/IblPrecompute.h"
 #include "render/RenderStats.h"
+#include "render/Turntable.h"
 
 #include <QString>
 
@@ -48,6 +49,18 @@ class SceneController;
 struct RenderScene;
 
 // What the last frame cost, for the status bar and the View dock.
+// What a still adds to the view's scene (File > Save Image, Save Turntable).
+struct StillOptions {
+    bool transparent = false; // the background's pixels alpha 0 (BackgroundMode::Transparent)
+    TurntableSubject turntableSubject = TurntableSubject::Object;
+    double turntableDegrees = 0.0;
+};
+// The most MSAA samples a still's colour target holds (4096 x 4096 at 4x): larger stills get
+// fewer samples a pixel (an 8192 x 8192 one: 1).
+inline constexpr long long kMaxStillMsaaSamplePixels = 4096LL * 4096LL * 4LL;
+// The largest still, pixels a side.
+inline constexpr int kMaxStillSide = 8192;
+
 struct ViewportFrameStats {
     std::uint64_t frameNumber = 0; // frames drawn since the renderer was made (1 = the first)
     int width = 0; // rendered size in device pixels (smaller than the widget when reduced)
@@ -63,6 +76,10 @@ struct ViewportFrameStats {
     // previous lighting (or the empty grey, before any).
     bool lightingPending = false;
     IblStats ibl; // of the last precompute (kept until the next one)
+    // The shared IBL memory cache after this frame (ui/CacheBudget.h): its sets and environment
+    // sources, and their GPU bytes.
+    int iblCacheEntries = 0;
+    std::size_t iblCacheBytes = 0;
     RenderStats render; // Renderer::lastFrameStats()
     // A refinement frame (ViewportRenderer::refine): the method and where it stands; SplitSum
     // and empty for a plain frame.
@@ -93,8 +110,11 @@ public:
     // reference in draws of up to 64 samples), as `output` (linear radiance for an EXR, the
     // display transform for a PNG). Call with the context current, after the view has drawn the
     // scene (its maps are on the GPU). nullopt with *error.
-    std::optional<Image> renderStill(
-        const SceneController& scene, int width, int height, FrameOutput output, std::string* error);
+    // `options`: the background transparent (alpha 0 there), a turntable's turn on top of the
+    // view's own (render/Turntable.h). Above 4096x4096 pixels MSAA is lowered (a 8192x8192 frame
+    // at 4x would take 3 GiB): kMaxStillMsaaSamplePixels samples in all.
+    std::optional<Image> renderStill(const SceneController& scene, int width, int height, FrameOutput output,
+        std::string* error, const StillOptions& options = {});
 
     // Whether the view does not show the lighting of the scene's environment and quality yet
     // (the next paint() precomputes it, or asks the worker; the caller may say so first).

@@ -67,18 +67,34 @@ void ViewportWidget::connectLightingWorker()
     });
 }
 
-std::optional<Image> ViewportWidget::renderStill(FrameOutput output, std::string* error)
+std::optional<Image> ViewportWidget::renderStill(
+    FrameOutput output, std::string* error, QSize size, const StillOptions& options)
 {
     if (!m_renderer || !m_scene || m_stats.frameNumber == 0) {
         *error = "the view has not drawn yet";
         return std::nullopt;
     }
+    if (size.isEmpty())
+        size = deviceSize();
+    if (size.width() > kMaxStillSide || size.height() > kMaxStillSide) {
+        *error = QStringLiteral("%1x%2 pixels is larger than the largest still, %3 a side")
+                     .arg(size.width())
+                     .arg(size.height())
+                     .arg(kMaxStillSide)
+                     .toStdString();
+        return std::nullopt;
+    }
     makeCurrent();
-    const qreal ratio = devicePixelRatioF();
-    std::optional<Image> image = m_renderer->renderStill(
-        *m_scene, std::max(1, int(width() * ratio)), std::max(1, int(height() * ratio)), output, error);
+    std::optional<Image> image
+        = m_renderer->renderStill(*m_scene, size.width(), size.height(), output, error, options);
     doneCurrent();
     return image;
+}
+
+QSize ViewportWidget::deviceSize() const
+{
+    const qreal ratio = devicePixelRatioF();
+    return {std::max(1, int(width() * ratio)), std::max(1, int(height() * ratio))};
 }
 
 QSize ViewportWidget::sizeHint() const

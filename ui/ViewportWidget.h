@@ -72,8 +72,13 @@ public:
 
     // What the view shows, rendered again as a still at its full device size (File > Save
     // Image; ViewportRenderer::renderStill). nullopt with *error before the first frame.
-    std::optional<Image> renderStill(FrameOutput output, std::string* error);
+    // `size` empty: the view's own device size; else that many pixels (at most kMaxStillSide a
+    // side), rendered offscreen. `options`: transparent background, a turntable's turn.
+    std::optional<Image> renderStill(
+        FrameOutput output, std::string* error, QSize size = {}, const StillOptions& options = {});
 
+    // The view's size in device pixels (what a still of the view's own size has).
+    QSize deviceSize() const;
     QSize sizeHint() const override;
 
 Q_SIGNALS:
