@@ -37,6 +37,8 @@ constexpr std::array<DebugViewName, kDebugViewCount> kDebugViewNames = {{
     {"emissive", "Emissive", nullptr},
     {"alpha", "Alpha (coverage)", nullptr},
     {"non-finite", "Invalid values (NaN, Inf, negative)", nullptr},
+    {"uv-checker", "UV checker", nullptr},
+    {"texel-density", "Texel density", nullptr},
 }};
 
 } // namespace

@@ -14,35 +14,41 @@ namespace facet {
 // like the image (use ToneMapper::None, exposure 0 to see them raw).
 enum class DebugView : int {
     None = 0,
-    BaseColor,        // linear base colour
-    ShadingNormal,    // n * 0.5 + 0.5, after normal mapping
-    GeometricNormal,  // interpolated vertex normal * 0.5 + 0.5
+    BaseColor, // linear base colour
+    ShadingNormal, // n * 0.5 + 0.5, after normal mapping
+    GeometricNormal, // interpolated vertex normal * 0.5 + 0.5
     Metallic,
-    Roughness,        // perceptual roughness as used (after the clamp)
+    Roughness, // perceptual roughness as used (after the clamp)
     Occlusion,
-    Distribution,     // D(n.h) for the first light (or l = reflect(-v, n) without lights)
-    Visibility,       // V = G / (4 n.l n.v), same l
-    Fresnel,          // F(v.h) of the composition, same l
-    Irradiance,       // E(n) / pi: the irradiance map or SH, rotated, times intensity
-    IblDiffuse,       // diffuse image-based light
+    Distribution, // D(n.h) for the first light (or l = reflect(-v, n) without lights)
+    Visibility, // V = G / (4 n.l n.v), same l
+    Fresnel, // F(v.h) of the composition, same l
+    Irradiance, // E(n) / pi: the irradiance map or SH, rotated, times intensity
+    IblDiffuse, // diffuse image-based light
     PrefilteredRadiance, // prefiltered(R, lodFromRoughness(r))
-    BrdfLut,          // the DFG table at (n.v, r): RGB = scale, bias, E
-    IblSpecular,      // specular image-based light
-    IblTotal,         // IBL diffuse + specular (with occlusion)
-    DirectLight,      // punctual lights only
-    WhiteFurnace,     // white material (base colour 1) under a uniform environment of radiance 1
-    Uv,               // texture coordinate 0 as it reaches the maps' UV transforms: (u, v, 0), not wrapped
-    Tangent,          // the unit tangent (after Gram-Schmidt against the geometric normal) * 0.5 + 0.5;
-                      // 0.5 grey without a normal map (no tangent frame in that variant)
-    Emissive,         // emitted radiance
-    Alpha,            // base colour alpha (factor x texture)
-    NonFinite,        // 1 where the shaded radiance is NaN, Inf or negative before the output guard, else 0
+    BrdfLut, // the DFG table at (n.v, r): RGB = scale, bias, E
+    IblSpecular, // specular image-based light
+    IblTotal, // IBL diffuse + specular (with occlusion)
+    DirectLight, // punctual lights only
+    WhiteFurnace, // white material (base colour 1) under a uniform environment of radiance 1
+    Uv, // texture coordinate 0 as it reaches the maps' UV transforms: (u, v, 0), not wrapped
+    Tangent, // the unit tangent (after Gram-Schmidt against the geometric normal) * 0.5 + 0.5;
+             // 0.5 grey without a normal map (no tangent frame in that variant)
+    Emissive, // emitted radiance
+    Alpha, // base colour alpha (factor x texture)
+    NonFinite, // 1 where the shaded radiance is NaN, Inf or negative before the output guard, else 0
+    UvChecker, // a checker of 8 x 8 squares per unit of texture coordinate 0 (red rises with u, green
+               // with v), shaded by n.v: seams, stretching, flips and scale at a glance
+    TexelDensity, // texels of the material's map per unit of surface (the source file's unit, a metre for
+                  // glTF) against ViewSettings::texelDensityTarget: green on target, blue at 1/4 or less,
+                  // red at 4x or more (log2 between), shaded by n.v (docs/rendering.md, "Texel density")
 };
-inline constexpr int kDebugViewCount = 23;
+inline constexpr int kDebugViewCount = 25;
 // "none", "base-color", "shading-normal", "geometric-normal", "metallic", "roughness",
 // "occlusion", "distribution", "visibility", "fresnel", "irradiance", "ibl-diffuse",
 // "prefiltered-radiance", "brdf-lut", "ibl-specular", "ibl-total", "direct-light",
-// "white-furnace", "uv", "tangent", "emissive", "alpha", "non-finite" (ViewSettings::debugView,
+// "white-furnace", "uv", "tangent", "emissive", "alpha", "non-finite", "uv-checker",
+// "texel-density" (ViewSettings::debugView,
 // facet render --view).
 const char* toString(DebugView view);
 // What the window shows: "Off (shaded image)", "Base colour", ..., "Distribution D", ...

@@ -92,6 +92,7 @@ glm::mat4 Mesh::normalizeToUnitSphere()
     for (Vertex& v : vertices)
         v.position = (v.position - c) * scale;
     updateBounds();
+    scaleFromSource *= scale;
     // transform = S(scale) * T(-c)
     glm::mat4 m(scale);
     m[3] = glm::vec4(-c * scale, 1.0f);

@@ -83,6 +83,9 @@ public:
     bool hasTangents = false; // tangents are valid (from the file or generated from the UVs)
     bool hasTexCoord1 = false; // some vertex's uv1 is the file's (glTF TEXCOORD_1)
     bool hasVertexColors = false; // some vertex's color is the file's (glTF COLOR_0): the shader reads them
+    // World units per unit of the source file (normalizeToUnitSphere's scale; 1 for a mesh in
+    // its own units): what turns a length on screen back into the asset's metres (texel density).
+    float scaleFromSource = 1.0f;
 
     std::size_t triangleCount() const { return indices.size() / 3; }
 

@@ -295,6 +295,7 @@ QJsonObject viewToJson(const ViewSettings& view, const std::string& baseDir)
     o[QLatin1String("background")] = QLatin1String(toString(view.background));
     o[QLatin1String("backgroundColor")] = toArray(view.backgroundColor);
     o[QLatin1String("backgroundBlurRoughness")] = view.backgroundBlurRoughness;
+    o[QLatin1String("texelDensityTarget")] = view.texelDensityTarget;
     return o;
 }
 
@@ -317,6 +318,7 @@ void readView(Messages& messages, const QJsonObject& object, const std::string& 
     r.enumeration("background", view.background, kBackgroundModes);
     r.vec3("backgroundColor", view.backgroundColor);
     r.number("backgroundBlurRoughness", view.backgroundBlurRoughness);
+    r.number("texelDensityTarget", view.texelDensityTarget);
     r.warnAboutUnknownKeys();
 }
 
@@ -535,6 +537,11 @@ bool ViewSettings::validate(std::string* problem) const
         || backgroundBlurRoughness > 1.0)
         return fail(
             "backgroundBlurRoughness: " + number(backgroundBlurRoughness) + " is outside [0, 1]", problem);
+    if (!std::isfinite(texelDensityTarget) || texelDensityTarget <= 0.0
+        || texelDensityTarget > kMaxTexelDensity)
+        return fail("texelDensityTarget: " + number(texelDensityTarget)
+                + " is outside (0, 1000000] (texels per unit)",
+            problem);
     return true;
 }
 

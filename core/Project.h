@@ -96,6 +96,11 @@ struct ViewSettings {
     BackgroundMode background = BackgroundMode::Environment;
     glm::dvec3 backgroundColor {0.18}; // linear Rec.709, >= 0, for BackgroundMode::Color
     double backgroundBlurRoughness = 0.5; // perceptual roughness of the blurred background, [0, 1]
+    // The texel-density view's target (core/DebugView.h TexelDensity): texels of the material's
+    // map per unit of the mesh's source file (a metre for glTF), in (0, kMaxTexelDensity]. 512
+    // texels a metre: a common target for third-person game assets (1024 for first-person).
+    static constexpr double kMaxTexelDensity = 1.0e6;
+    double texelDensityTarget = 512.0;
 
     // On failure: "<field>: <problem>" (the caller prefixes "view.").
     bool validate(std::string* problem) const;

@@ -386,6 +386,10 @@ void Renderer::setFrameUniforms(const ShaderProgram& program, const SurfaceVaria
     setMat4(program, "uViewProjection", projection * view);
     setVec3(program, "uCameraPosition", scene.camera.position);
     program.setFloat("uMaxRadiance", m_maxRadiance);
+    if (key.debugView == DebugView::TexelDensity) {
+        program.setFloat("uTexelDensityScale", scene.mesh ? scene.mesh->scaleFromSource : 1.0f);
+        program.setFloat("uTexelDensityTarget", float(scene.view.texelDensityTarget));
+    }
 
     glActiveTexture(GL_TEXTURE0 + kPrefilteredUnit);
     glBindTexture(GL_TEXTURE_CUBE_MAP, env.prefilteredCubemap);
@@ -464,6 +468,21 @@ void Renderer::setMaterialUniforms(const ShaderProgram& program, const SurfaceVa
                                    const RenderMaterial& renderMaterial, const EnvironmentLighting& env)
 {
     const Material& material = renderMaterial.material;
+    if (key.debugView == DebugView::TexelDensity) {
+        // The base colour map's size, else the largest map's; 1024 x 1024 for a material without
+        // maps (what a texture of that common size would give).
+        const auto& maps = renderMaterial.maps;
+        const MapImage* measured = maps[std::size_t(MapSlot::BaseColor)].image.get();
+        if (!measured)
+            for (const RenderMapImage& map : maps)
+                if (map.image
+                    && (!measured
+                        || double(map.image->width()) * map.image->height()
+                            > double(measured->width()) * measured->height()))
+                    measured = map.image.get();
+        program.setVec2("uTexelDensityMapSize", measured ? float(measured->width()) : 1024.0f,
+            measured ? float(measured->height()) : 1024.0f);
+    }
     const glm::dvec4 base = material.baseColorFactor();
     program.setVec4("uBaseColorFactor", float(base.r), float(base.g), float(base.b), float(base.a));
     program.setFloat("uMetallicFactor", float(material.metallic()));

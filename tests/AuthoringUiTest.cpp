@@ -8,10 +8,7 @@
 //   for its text.
 // - Presets take Ctrl+1..9: the number key alone changes nothing; with Ctrl the look changes and the
 //   name and maps stay, and the status bar says what changed.
-// - One map copied and pasted (a slot's context menu: Copy Map, Paste Map, Paste Value), from one
-//   material's slot to another material's slot of the same or another kind, one undo step each.
-// - A material assigned to the selected parts (several rows of the Parts list) in one undo step,
-//   from the Assign to Selected button's menu; disabled without a selection.
+// (Moving materials and maps between places: tests/MaterialTransferUiTest.cpp.)
 // - The cache budget (ui/CacheBudget, Edit > Preferences): where the number comes from (setting,
 //   FACET_CACHE_BUDGET_MB, default, each out of range), and the window's IBL cache keeping to it
 //   while environments change, a new budget applying at the next frame; freed memory handed back
@@ -27,7 +24,10 @@
 #include "ui/FreedMemoryTimer.h"
 #include "ui/MainWindow.h"
 #include "ui/MapSlotWidget.h"
+#include "ui/MaterialDock.h"
+#include "ui/MaterialTransfer.h"
 #include "ui/MaterialsDock.h"
+#include "ui/PartPicker.h"
 #include "ui/PreferencesDialog.h"
 #include "ui/ProjectFileController.h"
 #include "ui/SceneController.h"
@@ -53,6 +53,7 @@
 #include <QListWidget>
 #include <QMenu>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
@@ -67,6 +68,7 @@
 #include <QUndoStack>
 #include <QtTest/QTest>
 
+#include <map>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -75,22 +77,11 @@ using namespace facet;
 
 namespace {
 
-std::vector<std::string> materialNames(const Project& project)
-{
-    std::vector<std::string> names;
-    for (const Material& material : project.materials)
-        names.push_back(material.name);
-    return names;
-}
-
+using test::materialNames;
 std::vector<std::string> partMaterials(const Project& project)
 {
-    std::vector<std::string> names;
-    for (std::size_t part = 0; part < 2; ++part)
-        names.push_back(project.materials[std::size_t(project.materialOfPart(part))].name);
-    return names;
+    return test::partMaterialNames(project);
 }
-
 using Names = std::vector<std::string>;
 
 } // namespace
@@ -118,9 +109,6 @@ private Q_SLOTS:
     void normalStrengthAndUvScaleAsTheFormatHasThem();
     void messagesStayWhileTrueAndGoWhenNot();
     void docksShowEnoughAtASmallSize();
-    void copyAndPasteAMaterial();
-    void assignAMaterialToSelectedParts();
-    void copyAndPasteAMapOrAValue();
     void cacheBudgetComesFromSettingOrEnvironment_data();
     void cacheBudgetComesFromSettingOrEnvironment();
     void theLightingCacheKeepsToTheBudget();
@@ -512,137 +500,6 @@ void AuthoringUiTest::docksShowEnoughAtASmallSize()
 
 // Edit > Copy Material and Paste Material (Ctrl+Shift+C / V): Red's factors and maps onto Blue,
 // whose name stays, in one undo step; a clipboard without a material changes nothing and says so.
-void AuthoringUiTest::copyAndPasteAMaterial()
-{
-    QVERIFY(openTwoMaterials());
-    Material red = m_document->project().materials[0];
-    red.setFactor(MapSlot::Roughness, 0.31);
-    red.map(MapSlot::Normal).path = m_dir.filePath(QStringLiteral("normal.png")).toStdString();
-    red.ior = 1.7;
-    m_document->setMaterial(red, QStringLiteral("Set up"));
-    m_document->undoStack()->clear();
-    QVERIFY(focus(m_window->viewport()));
-    QTest::keyClick(m_window->viewport(), Qt::Key_C, Qt::ControlModifier | Qt::ShiftModifier);
-    QVERIFY2(m_window->statusMessage().startsWith(QStringLiteral("Copied “Red”")),
-        qPrintable(m_window->statusMessage()));
-    m_document->setCurrentMaterial(1);
-    const Material blue = m_document->project().material();
-    QTest::keyClick(m_window->viewport(), Qt::Key_V, Qt::ControlModifier | Qt::ShiftModifier);
-    Material pasted = m_document->project().material();
-    QCOMPARE(pasted.name, std::string("Blue"));
-    pasted.name = red.name;
-    QVERIFY(pasted == red);
-    QCOMPARE(m_document->undoStack()->count(), 1);
-    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Paste Material"));
-    QVERIFY2(m_window->statusMessage().startsWith(QStringLiteral("Pasted “Red” onto “Blue”")),
-        qPrintable(m_window->statusMessage()));
-    m_document->undoStack()->undo();
-    QVERIFY(m_document->project().material() == blue);
-
-    QGuiApplication::clipboard()->setText(QStringLiteral("not a material"));
-    QTest::keyClick(m_window->viewport(), Qt::Key_V, Qt::ControlModifier | Qt::ShiftModifier);
-    QVERIFY(m_document->project().material() == blue);
-    QCOMPARE(m_window->statusMessage(),
-        QStringLiteral("The clipboard holds no material (Edit > Copy Material copies one)"));
-    QGuiApplication::clipboard()->setText(QStringLiteral("{\"roughness\": {\"factor\": \"high\"}}"));
-    m_window->pasteMaterial();
-    QVERIFY(m_document->project().material() == blue);
-    QVERIFY2(m_window->statusMessage().startsWith(
-                 QStringLiteral("The clipboard's material cannot be used: material.roughness")),
-        qPrintable(m_window->statusMessage()));
-}
-
-QTEST_MAIN(AuthoringUiTest)
-void AuthoringUiTest::assignAMaterialToSelectedParts()
-{
-    QVERIFY(openTwoMaterials());
-    MaterialsDock* dock = m_window->materialsDock();
-    QCOMPARE(partMaterials(m_document->project()), (Names {"Red", "Blue"}));
-    QToolButton* assign = dock->assignToPartsButton();
-    dock->partList()->clearSelection();
-    QVERIFY(!assign->isEnabled());
-    // Both rows selected (as Ctrl-click does), then "Blue" from the button's menu.
-    dock->partList()->topLevelItem(0)->setSelected(true);
-    dock->partList()->topLevelItem(1)->setSelected(true);
-    QVERIFY(assign->isEnabled());
-    QCOMPARE(dock->selectedParts(), (std::vector<int> {0, 1}));
-    Q_EMIT assign->menu()->aboutToShow();
-    QAction* blue = assign->menu()->findChild<QAction*>(QStringLiteral("assignMaterial_1"));
-    QVERIFY(blue);
-    const int steps = m_document->undoStack()->count();
-    blue->trigger();
-    QCOMPARE(partMaterials(m_document->project()), (Names {"Blue", "Blue"}));
-    QCOMPARE(m_document->undoStack()->count(), steps + 1);
-    QCOMPARE(m_window->statusMessage(), QStringLiteral("Assigned Blue to 1 part")); // the other had it
-    // Red to both: two parts in one step; Ctrl+Z takes both back.
-    dock->assignMaterialToParts(0, dock->selectedParts());
-    QCOMPARE(partMaterials(m_document->project()), (Names {"Red", "Red"}));
-    QCOMPARE(m_window->statusMessage(), QStringLiteral("Assigned Red to 2 parts"));
-    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Assign Red to 2 parts"));
-    m_document->undoStack()->undo();
-    QCOMPARE(partMaterials(m_document->project()), (Names {"Blue", "Blue"}));
-    // Nothing to change: no step, and the status bar says so.
-    dock->assignMaterialToParts(1, {0, 1});
-    QCOMPARE(m_document->undoStack()->index(), steps + 1);
-    QVERIFY(m_document->undoStack()->canRedo());
-    QCOMPARE(m_window->statusMessage(), QStringLiteral("The selected parts already show Blue"));
-}
-
-void AuthoringUiTest::copyAndPasteAMapOrAValue()
-{
-    QVERIFY(openTwoMaterials());
-    // Red's roughness reads the green channel of an ORM file, inverted, at 0.4.
-    Material red = m_document->project().materials[0];
-    const std::string orm = m_dir.filePath(QStringLiteral("orm.png")).toStdString();
-    MaterialMap& roughness = red.map(MapSlot::Roughness);
-    roughness.path = orm;
-    roughness.channel = MapChannel::G;
-    roughness.invert = true;
-    red.setFactor(MapSlot::Roughness, 0.4);
-    m_document->setMaterial(red, QStringLiteral("Set up"));
-    m_document->undoStack()->clear();
-    QGuiApplication::clipboard()->clear();
-    TextureMapsDock* maps = m_window->textureMapsDock();
-    // Nothing copied yet: the pastes say so and change nothing.
-    QVERIFY(!maps->slotWidget(MapSlot::Metallic)->pasteMap());
-    QVERIFY2(m_window->statusMessage().contains(QStringLiteral("the clipboard holds no map")),
-        qPrintable(m_window->statusMessage()));
-    maps->slotWidget(MapSlot::Roughness)->copyMap();
-    QCOMPARE(m_window->statusMessage(), QStringLiteral("Copied the roughness map (orm.png)"));
-
-    // Onto Blue's metallic (one kind: all of it) and its roughness value, each one step.
-    m_document->setCurrentMaterial(1);
-    const int steps = m_document->undoStack()->index();
-    QVERIFY(maps->slotWidget(MapSlot::Metallic)->pasteMap());
-    const MaterialMap& metallic = m_document->project().materials[1].map(MapSlot::Metallic);
-    QCOMPARE(metallic.path, orm);
-    QCOMPARE(metallic.channel, MapChannel::G);
-    QVERIFY(metallic.invert);
-    QCOMPARE(metallic.factor.x, 0.4);
-    QCOMPARE(m_window->statusMessage(), QStringLiteral("Pasted the roughness map onto metallic"));
-    QVERIFY(maps->slotWidget(MapSlot::Roughness)->pasteValue());
-    QCOMPARE(m_document->project().materials[1].map(MapSlot::Roughness).factor.x, 0.4);
-    QVERIFY(!m_document->project().materials[1].map(MapSlot::Roughness).hasTexture()); // the value only
-    QCOMPARE(m_document->undoStack()->index(), steps + 2);
-    // A scalar value does not fit a colour; the map does, read as a colour map reads.
-    QVERIFY(!maps->slotWidget(MapSlot::BaseColor)->pasteValue());
-    QCOMPARE(m_window->statusMessage(),
-        QStringLiteral("Paste Value: a roughness value does not fit the base colour slot"));
-    QVERIFY(maps->slotWidget(MapSlot::Normal)->pasteMap());
-    const MaterialMap& normal = m_document->project().materials[1].map(MapSlot::Normal);
-    QCOMPARE(normal.path, orm);
-    QCOMPARE(normal.channel, MapChannel::Rgb);
-    QVERIFY(!normal.invert);
-    QCOMPARE(normal.factor.x, 1.0); // its own strength
-    // Undo takes the pastes back one at a time; Red is untouched throughout.
-    m_document->undoStack()->undo();
-    QVERIFY(!m_document->project().materials[1].map(MapSlot::Normal).hasTexture());
-    m_document->undoStack()->undo();
-    m_document->undoStack()->undo();
-    QVERIFY(!m_document->project().materials[1].map(MapSlot::Metallic).hasTexture());
-    QCOMPARE(m_document->project().materials[0].map(MapSlot::Roughness), roughness);
-}
-
 void AuthoringUiTest::cacheBudgetComesFromSettingOrEnvironment_data()
 {
     QTest::addColumn<QVariant>("setting"); // invalid: none stored
@@ -801,4 +658,5 @@ void AuthoringUiTest::freedMemoryGoesBackToTheSystem()
         qPrintable(QStringLiteral("resident %1 -> %2 MiB").arg(before >> 20).arg(after >> 20)));
 }
 
+QTEST_MAIN(AuthoringUiTest)
 #include "AuthoringUiTest.moc"

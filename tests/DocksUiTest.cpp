@@ -42,6 +42,7 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSet>
 #include <QSignalSpy>
 #include <QSlider>
@@ -432,8 +433,18 @@ void DocksUiTest::environmentLibraryTellsStudiosApart()
             item = library->item(row);
     }
     QVERIFY2(item, qPrintable(source));
-    QCOMPARE(item->text(), label);
+    // The label, and once the thumbnail is made the image's resolution on a line of its own.
+    QVERIFY(waitFor([&] { return item->text().contains(QLatin1Char('\n')); }, 30000));
+    QCOMPARE(item->text().section(QLatin1Char('\n'), 0, 0), label);
+    const QString resolution = item->text().section(QLatin1Char('\n'), 1);
+    QVERIFY2(QRegularExpression(QStringLiteral("^[1-9][0-9]*×[1-9][0-9]*$")).match(resolution).hasMatch(),
+        qPrintable(resolution));
     QVERIFY2(item->toolTip().contains(toolTip), qPrintable(item->toolTip()));
+    QVERIFY2(item->toolTip().contains(QString(resolution).replace(QStringLiteral("×"), QStringLiteral(" × "))
+                 + QStringLiteral(" pixels")),
+        qPrintable(item->toolTip()));
+    for (QString& text : labels)
+        text = text.section(QLatin1Char('\n'), 0, 0);
     QCOMPARE(labels.count(label), 1); // no other entry reads the same
     QCOMPARE(labels.size(), QSet<QString>(labels.begin(), labels.end()).size());
 
@@ -457,7 +468,7 @@ void DocksUiTest::environmentLibraryTellsStudiosApart()
     QCOMPARE(QString::fromStdString(m_document->project().environment.source), source);
     QVERIFY(library->currentItem());
     QCOMPARE(library->currentItem()->data(Qt::UserRole).toString(), source);
-    QCOMPARE(library->currentItem()->text(), label);
+    QCOMPARE(library->currentItem()->text().section(QLatin1Char('\n'), 0, 0), label);
     m_document->newProject();
 }
 

@@ -160,6 +160,7 @@ Project everythingChanged(const QString& root)
     v.background = BackgroundMode::Color;
     v.backgroundColor = {0.1, 0.2, 0.3};
     v.backgroundBlurRoughness = 0.7;
+    v.texelDensityTarget = 1024.0;
 
     // Version 3: the compare layout (tests/CompareLayoutTest.cpp covers each field).
     CompareLayout& c = p.compare;
@@ -503,9 +504,10 @@ private Q_SLOTS:
             v2.remove(QLatin1String("compare"));
             v2[QLatin1String("version")] = 2;
             // Optional fields added since, without a version (docs/project-format.md): "unlit",
-            // the view's "keepUnits".
+            // the view's "keepUnits" and "texelDensityTarget".
             QJsonObject view = v2[QLatin1String("view")].toObject();
             view.remove(QLatin1String("keepUnits"));
+            view.remove(QLatin1String("texelDensityTarget"));
             v2[QLatin1String("view")] = view;
             QJsonArray materials = v2[QLatin1String("materials")].toArray();
             for (QJsonValueRef each : materials) {
@@ -689,6 +691,11 @@ private Q_SLOTS:
                                                 << QStringLiteral("camera.target: must differ from position");
         QTest::newRow("msaa not a power of two")
             << minimalWith(R"("view": {"msaaSamples": 3})") << QStringLiteral("view.msaaSamples: 3");
+        QTest::newRow("texel density zero")
+            << minimalWith(R"("view": {"texelDensityTarget": 0})")
+            << QStringLiteral("view.texelDensityTarget: 0 is outside (0, 1000000]");
+        QTest::newRow("texel density huge") << minimalWith(R"("view": {"texelDensityTarget": 2e6})")
+                                            << QStringLiteral("view.texelDensityTarget: 2000000 is outside");
         QTest::newRow("msaa fraction") << minimalWith(R"("view": {"msaaSamples": 2.5})")
                                        << QStringLiteral("view.msaaSamples: expected an integer, got 2.5");
         QTest::newRow("ocio view without display")

@@ -33,6 +33,7 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -191,6 +192,9 @@ private Q_SLOTS:
     void skippedWorkIsCounted();
     void baseColorDebugView();
     void everyFeatureAndDebugViewCompiles();
+    void texelDensityView_data();
+    void texelDensityView();
+    void uvCheckerView();
 
 private:
     Image renderScene(
@@ -698,4 +702,85 @@ void RendererGLTest::everyFeatureAndDebugViewCompiles()
 }
 
 QTEST_GUILESS_MAIN(RendererGLTest)
+void RendererGLTest::texelDensityView_data()
+{
+    // A 256 x 128 base colour map on the unit sphere: at the equator, facing the camera, u runs
+    // 256 texels around 2 pi units and v 128 texels over pi units: 256 / (2 pi) = 40.74 texels
+    // per unit both ways. The colour at the centre is texelDensityColor of it against the target
+    // (t = log2(density / target) / 2, clamped to [-1, 1]), shaded by n.v = 1.
+    QTest::addColumn<double>("targetOverDensity");
+    QTest::addColumn<float>("scaleFromSource");
+    QTest::addColumn<QVector<double>>("expected");
+    QTest::newRow("on target: green") << 1.0 << 1.0f << QVector<double> {0.1, 0.8, 0.1};
+    QTest::newRow("a quarter of the target: blue") << 4.0 << 1.0f << QVector<double> {0.1, 0.2, 0.9};
+    QTest::newRow("half the target: halfway to blue") << 2.0 << 1.0f << QVector<double> {0.1, 0.5, 0.5};
+    QTest::newRow("four times the target: red") << 0.25 << 1.0f << QVector<double> {0.9, 0.1, 0.1};
+    QTest::newRow("sixteen times: still red") << 1.0 / 16.0 << 1.0f << QVector<double> {0.9, 0.1, 0.1};
+    // The mesh was twice this size in its file (world = 0.5 x source): half the texels a source
+    // unit, so a target of half the density is on target.
+    QTest::newRow("a mesh scaled from its source") << 0.5 << 0.5f << QVector<double> {0.1, 0.8, 0.1};
+}
+
+void RendererGLTest::texelDensityView()
+{
+    QFETCH(double, targetOverDensity);
+    QFETCH(float, scaleFromSource);
+    QFETCH(QVector<double>, expected);
+    TinyIbl ibl {glm::vec3(1.0f)};
+    RenderScene scene = referenceScene(ibl);
+    Mesh sphere = makeSphere(128, 64);
+    sphere.scaleFromSource = scaleFromSource;
+    scene.mesh = std::make_shared<const Mesh>(std::move(sphere));
+    scene.meshKey = 100 + int(scaleFromSource * 10.0f);
+    auto texture = std::make_shared<const MapImage>(
+        MapImage::fromImage(Image(256, 128, glm::vec4(0.5f)), MapLayout::Rgb, MapSampleType::UInt8));
+    scene.materials[0].material.map(MapSlot::BaseColor).path = "/t/density.png";
+    scene.materials[0].maps[std::size_t(MapSlot::BaseColor)] = {texture, "/t/density.png", 7};
+    scene.view.debugView = "texel-density";
+    const double density = 256.0 / (2.0 * std::numbers::pi);
+    scene.view.texelDensityTarget = density * targetOverDensity;
+    const Image image = renderScene(scene);
+    const glm::dvec3 centre(glm::vec3(image.at(kSize / 2, kSize / 2)));
+    const glm::dvec3 wanted(expected[0], expected[1], expected[2]);
+    // The sphere's facets and the centre pixel's offset from the exact equator: within 0.04.
+    QVERIFY2(glm::length(centre - wanted) < 0.04,
+        (facet::test::describe(centre) + " vs " + facet::test::describe(wanted)).c_str());
+}
+
+void RendererGLTest::uvCheckerView()
+{
+    // Each pixel shows the checker of its own texture coordinate (read from the "uv" view),
+    // shaded by n.v: 8 x 8 squares per unit, light 0.85 and dark 0.25, tinted by the place in
+    // the unit (the CPU formula below is the shader's).
+    TinyIbl ibl {glm::vec3(1.0f)};
+    RenderScene scene = referenceScene(ibl);
+    scene.view.debugView = "uv";
+    const Image uvs = renderScene(scene);
+    scene.view.debugView = "uv-checker";
+    const Image checker = renderScene(scene);
+    int light = 0;
+    int dark = 0;
+    for (const SpherePixel& p : interiorPixels(kSize)) {
+        const glm::dvec2 uv(uvs.at(p.x, p.y).r, uvs.at(p.x, p.y).g);
+        const glm::dvec2 cell = glm::floor(uv * 8.0);
+        const glm::dvec2 inCell = glm::fract(uv * 8.0);
+        // Pixels near a square's edge may fall either way (the UV interpolated per fragment).
+        if (glm::min(glm::min(inCell.x, inCell.y), glm::min(1.0 - inCell.x, 1.0 - inCell.y)) < 0.05)
+            continue;
+        const bool isLight = std::fmod(cell.x + cell.y, 2.0) < 0.5;
+        (isLight ? light : dark) += 1;
+        const glm::dvec2 inUnit = glm::fract(uv);
+        const glm::dvec3 expected = (isLight ? 0.85 : 0.25)
+            * glm::dvec3(0.55 + 0.45 * inUnit.x, 0.55 + 0.45 * inUnit.y, 0.55)
+            * (0.35 + 0.65 * std::max(glm::dot(p.n, p.v), 0.0));
+        const glm::dvec3 actual(glm::vec3(checker.at(p.x, p.y)));
+        QVERIFY2(glm::length(actual - expected) < 0.02,
+            (QStringLiteral("pixel %1, %2: ").arg(p.x).arg(p.y).toStdString() + facet::test::describe(actual)
+                + " vs " + facet::test::describe(expected))
+                .c_str());
+    }
+    QVERIFY2(
+        light > 50 && dark > 50, qPrintable(QStringLiteral("%1 light, %2 dark pixels").arg(light).arg(dark)));
+}
+
 #include "RendererGLTest.moc"

@@ -150,7 +150,9 @@ EnvironmentChoices CompareActions::choicesOf(const QListWidget* library)
     EnvironmentChoices choices;
     for (int row = 0; row < library->count(); ++row) {
         const QListWidgetItem* item = library->item(row);
-        choices.emplace_back(item->text(), item->data(Qt::UserRole).toString());
+        // The label without the resolution line the library adds under it.
+        choices.emplace_back(
+            item->text().section(QLatin1Char('\n'), 0, 0), item->data(Qt::UserRole).toString());
     }
     return choices;
 }

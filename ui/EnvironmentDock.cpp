@@ -38,6 +38,14 @@ namespace {
 // core's library list (AssetLibrary::addUserLibrary), which names each folder.
 const QLatin1String kLegacyFoldersKey("environmentLibrary/folders");
 constexpr int kSourceRole = Qt::UserRole;
+constexpr int kSizeRole = Qt::UserRole + 1; // the image's size in pixels, once its thumbnail is made
+
+// The entry's label and, once known, its resolution on a line of its own ("2048×1024").
+QString entryText(const QString& label, QSize size)
+{
+    return size.isValid() ? QStringLiteral("%1\n%2×%3").arg(label).arg(size.width()).arg(size.height())
+                          : label;
+}
 
 QStringList environmentFiles(const QString& folder)
 {
@@ -140,7 +148,8 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
     // label wraps, then is cut, not a wider cell.
     constexpr int kIconWidth = 112;
     m_library->setIconSize(QSize(kIconWidth, kIconWidth / 2));
-    m_library->setGridSize(QSize(kIconWidth + 4, kIconWidth / 2 + 2 * fontMetrics().lineSpacing() + 8));
+    // Two lines of label and one of resolution.
+    m_library->setGridSize(QSize(kIconWidth + 4, kIconWidth / 2 + 3 * fontMetrics().lineSpacing() + 8));
     m_library->setResizeMode(QListView::Adjust);
     // Two rows of cells before it scrolls (issue 30: about three cells showed until resized).
     m_library->setMinimumHeight(2 * m_library->gridSize().height() + 8);
@@ -230,16 +239,23 @@ EnvironmentDock::EnvironmentDock(Document* document, QWidget* parent)
     // selection, and adding an entry to a selection must not relight the view.
     connect(m_library, &QListWidget::itemSelectionChanged, this, &EnvironmentDock::onSelectionChanged);
     connect(m_thumbnails, &ThumbnailLoader::ready, this,
-        [this](const QString& key, const QImage& image, QSize, const QString& error, double ms) {
+        [this](const QString& key, const QImage& image, QSize sourceSize, const QString& error, double ms) {
             m_thumbnailMs += ms;
             for (int row = 0; row < m_library->count(); ++row) {
                 QListWidgetItem* item = m_library->item(row);
                 if (item->data(kSourceRole).toString() != key)
                     continue;
-                if (image.isNull())
+                if (image.isNull()) {
                     item->setToolTip(entryToolTip(key) + QLatin1Char('\n') + WindowMessages::fromCore(error));
-                else
+                } else {
                     item->setIcon(QIcon(QPixmap::fromImage(image)));
+                    // Its resolution, which decides what the lighting can resolve (a 512x256 map
+                    // blurs a mirror) and what it costs (issue 30).
+                    item->setData(kSizeRole, sourceSize);
+                    item->setText(entryText(entryLabel(key), sourceSize));
+                    item->setToolTip(entryToolTip(key)
+                        + tr("\n%1 × %2 pixels").arg(sourceSize.width()).arg(sourceSize.height()));
+                }
             }
         });
 
@@ -346,7 +362,7 @@ bool EnvironmentDock::addFolder(const QString& folder)
             // A file listed before as a loose file or under another library gets its new label.
             const QString source = QFileInfo(file).absoluteFilePath();
             QListWidgetItem* item = addEntry(source);
-            item->setText(entryLabel(source));
+            item->setText(entryText(entryLabel(source), item->data(kSizeRole).toSize()));
             item->setToolTip(entryToolTip(source));
         }
     }
@@ -420,7 +436,8 @@ void EnvironmentDock::onItemActivated(QListWidgetItem* item)
     if (environment.source == source)
         return;
     environment.source = source;
-    m_document->setEnvironment(environment, tr("Environment %1").arg(item->text()));
+    m_document->setEnvironment(
+        environment, tr("Environment %1").arg(item->text().section(QLatin1Char('\n'), 0, 0)));
 }
 
 void EnvironmentDock::onDocumentChanged(DocumentChanges changes)

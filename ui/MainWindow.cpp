@@ -17,6 +17,7 @@
 #include "ui/LightsDock.h"
 #include "ui/MapLoadStatus.h"
 #include "ui/MaterialDock.h"
+#include "ui/MaterialTransfer.h"
 #include "ui/MaterialsDock.h"
 #include "ui/PartPicker.h"
 #include "ui/PreferencesDialog.h"
@@ -139,6 +140,8 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     connect(m_autosave, &AutosaveController::failed, this, &MainWindow::showStatusMessage);
     createProblemBar();
     m_freedMemory = new FreedMemoryTimer(this);
+    m_materialDrops = new MaterialDropHandler(m_document, m_picker, m_viewport, this);
+    connect(m_materialDrops, &MaterialDropHandler::message, this, &MainWindow::showStatusMessage);
     connect(m_document, &Document::modifiedChanged, this, &QWidget::setWindowModified);
     connect(m_document, &Document::filePathChanged, this, &MainWindow::updateTitle);
     // An asset opened as an untitled project keeps an empty path but is named in the title.
@@ -377,7 +380,7 @@ void MainWindow::createDocks()
     connect(m_materialDock, &MaterialDock::message, this, &MainWindow::showStatusMessage);
     connect(m_materialsDock, &MaterialsDock::message, this, &MainWindow::showStatusMessage);
     connect(m_picker, &PartPicker::partPicked, m_materialsDock,
-        [this](int part) { m_materialsDock->selectPart(part); });
+        [this](int part, int, bool extend) { m_materialsDock->selectPart(part, extend); });
     connect(m_environmentDock, &EnvironmentDock::message, this, &MainWindow::showStatusMessage);
     connect(m_lightsDock, &LightsDock::message, this, &MainWindow::showStatusMessage);
     connect(m_viewDock, &ViewDock::message, this, &MainWindow::showStatusMessage);
@@ -564,42 +567,26 @@ bool MainWindow::saveImageTo(const QString& path, QString* error, QSize size, bo
     return m_imageSaver->saveImageTo(path, choice, error);
 }
 
-namespace {
-// The clipboard's form of a material: a material object of the project format (texture paths
-// absolute), under its own MIME type and as text.
-const char* const kMaterialMime = "application/x-facet-material+json";
-} // namespace
-
 void MainWindow::copyMaterial()
 {
     const Material& material = m_document->project().material();
-    const QByteArray json
-        = QJsonDocument(materialToJson(material, std::string())).toJson(QJsonDocument::Compact);
-    auto* mime = new QMimeData;
-    mime->setData(QLatin1String(kMaterialMime), json);
-    mime->setText(QString::fromUtf8(json));
-    QGuiApplication::clipboard()->setMimeData(mime);
+    QGuiApplication::clipboard()->setMimeData(materialMimeData(material));
     showStatusMessage(tr("Copied “%1”: Edit > Paste Material (Ctrl+Shift+V) puts it on another material")
                           .arg(QString::fromStdString(material.name)));
 }
 
 void MainWindow::pasteMaterial()
 {
-    const QMimeData* mime = QGuiApplication::clipboard()->mimeData();
-    QByteArray json = mime ? mime->data(QLatin1String(kMaterialMime)) : QByteArray();
-    if (json.isEmpty() && mime && mime->hasText())
-        json = mime->text().toUtf8();
-    const QJsonDocument document = QJsonDocument::fromJson(json);
     std::string error;
-    const std::optional<Material> pasted = document.isObject()
-        ? materialFromJson(document.object(), std::string(), "material", &error)
-        : std::nullopt;
-    if (!pasted) {
-        showStatusMessage(json.isEmpty() || !document.isObject()
+    const std::optional<TransferredMaterial> transferred
+        = materialFromMimeData(QGuiApplication::clipboard()->mimeData(), &error);
+    if (!transferred) {
+        showStatusMessage(error.empty()
                 ? tr("The clipboard holds no material (Edit > Copy Material copies one)")
                 : tr("The clipboard's material cannot be used: %1").arg(QString::fromStdString(error)));
         return;
     }
+    const std::optional<Material> pasted = transferred->material;
     // Everything but the name: the material keeps its place and what the parts call it.
     Material material = *pasted;
     material.name = m_document->project().material().name;

@@ -37,6 +37,7 @@ class ProjectFileController;
 class DocumentAssets;
 class FreedMemoryTimer;
 class ImageSaver;
+class MaterialDropHandler;
 class SceneController;
 class TextureMapsDock;
 class ViewDock;
@@ -61,6 +62,8 @@ public:
     MaterialsDock* materialsDock() const { return m_materialsDock; }
     PartPicker* partPicker() const { return m_picker; }
     ViewportDropHandler* viewportDrops() const { return m_drops; }
+    // Materials and presets dropped on a part of the mesh (ui/MaterialTransfer.h).
+    MaterialDropHandler* materialDrops() const { return m_materialDrops; }
     EnvironmentDock* environmentDock() const { return m_environmentDock; }
     LightsDock* lightsDock() const { return m_lightsDock; }
     ViewDock* viewDock() const { return m_viewDock; }
@@ -135,6 +138,7 @@ private:
     FreedMemoryTimer* m_freedMemory = nullptr; // hands freed memory back to the system
     ImageSaver* m_imageSaver = nullptr; // File > Save Image…, Save Turntable…
     ViewportDropHandler* m_drops = nullptr;
+    MaterialDropHandler* m_materialDrops = nullptr; // installed after m_drops: sees drags first
     AutosaveController* m_autosave = nullptr;
     CompareController* m_compareController = nullptr;
     CompareView* m_compareView = nullptr;

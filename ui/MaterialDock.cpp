@@ -4,6 +4,7 @@
 #include "core/MaterialPresets.h"
 #include "ui/Document.h"
 #include "ui/DocumentCommands.h"
+#include "ui/MaterialTransfer.h"
 #include "ui/ValueSlider.h"
 
 #include <QCheckBox>
@@ -133,6 +134,9 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     auto* presetGroup = new QGroupBox(tr("Presets"), content);
     auto* presetLayout = new QVBoxLayout(presetGroup);
     m_presets->setObjectName(QStringLiteral("presetList"));
+    // A preset dragged onto a part in the viewport becomes a material of the project, on that part
+    // (ui/MaterialTransfer.h).
+    makeMaterialDragSource(m_presets, [this](const QListWidgetItem* item) { return presetMimeData(item); });
     m_presets->setIconSize(QSize(kSwatchSize, kSwatchSize));
     // Five swatch rows before it scrolls (issue 30: it showed one or two until resized).
     m_presets->setMinimumHeight(5 * (kSwatchSize + 6) + 4);
@@ -344,6 +348,19 @@ void MaterialDock::updatePresetButtons()
     const int index = item ? item->data(kPresetRole).toInt() : -1;
     m_delete->setEnabled(
         index >= kUserOffset && m_userPresets.at(std::size_t(index - kUserOffset)).folder.isEmpty());
+}
+
+QMimeData* MaterialDock::presetMimeData(const QListWidgetItem* item) const
+{
+    if (!item)
+        return nullptr;
+    const int index = item->data(kPresetRole).toInt();
+    const MaterialPreset& preset = index >= kUserOffset
+        ? m_userPresets.at(std::size_t(index - kUserOffset)).preset
+        : builtinPresets().at(std::size_t(index));
+    Material material = preset.material;
+    material.name = preset.displayName;
+    return materialMimeData(material);
 }
 
 bool MaterialDock::applySelectedPreset()

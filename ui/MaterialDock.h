@@ -21,6 +21,7 @@ class QLabel;
 class QLineEdit;
 class QListWidget;
 class QListWidgetItem;
+class QMimeData;
 class QPushButton;
 
 namespace facet {
@@ -44,6 +45,8 @@ public:
     QCheckBox* unlitCheck() const { return m_unlit; }
     // Applies the selected preset (one undo step). False when none is selected.
     bool applySelectedPreset();
+    // The preset of `item` as a dragged material (ui/MaterialTransfer.h), named as listed.
+    QMimeData* presetMimeData(const QListWidgetItem* item) const;
     // Saves the current material as a user preset named `name` and selects it. False with a
     // message (also emitted) on failure.
     bool saveCurrentAsPreset(const QString& name);

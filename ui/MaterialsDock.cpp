@@ -3,6 +3,7 @@
 #include "core/MaterialList.h"
 #include "core/Project.h"
 #include "ui/Document.h"
+#include "ui/MaterialTransfer.h"
 #include "ui/SceneController.h"
 
 #include <QAction>
@@ -62,6 +63,14 @@ MaterialsDock::MaterialsDock(Document* document, SceneController* scene, QWidget
     m_materials->setToolTip(tr("The project's materials: the selected one is edited in the Texture Maps and "
                                "Material panels. Double-click to rename; right-click for more."));
     m_materials->setContextMenuPolicy(Qt::CustomContextMenu);
+    // A material dragged onto a part in the viewport gives it that material (ui/MaterialTransfer.h).
+    makeMaterialDragSource(m_materials, [this](const QListWidgetItem* item) -> QMimeData* {
+        const int row = m_materials->row(item);
+        const Project& project = m_document->project();
+        return row >= 0 && std::size_t(row) < project.materials.size()
+            ? materialMimeData(project.materials[std::size_t(row)], row)
+            : nullptr;
+    });
     connect(m_materials, &QWidget::customContextMenuRequested, this, &MaterialsDock::showMaterialMenu);
     // The list's own keys (while it has focus): Delete, Ctrl+D, Ctrl+Shift+N.
     const auto listAction = [this](const QString& name, const QKeySequence& keys, auto slot) {
@@ -474,13 +483,21 @@ void MaterialsDock::assignMaterialToParts(int material, const std::vector<int>& 
                                 : tr("Assigned %1 to %2 parts").arg(name).arg(changed));
 }
 
-void MaterialsDock::selectPart(int part)
+void MaterialsDock::selectPart(int part, bool extend)
 {
     QTreeWidgetItem* item = m_parts->topLevelItem(part);
     if (!item)
         return;
     m_updating = true;
-    m_parts->setCurrentItem(item);
+    if (extend) {
+        const bool selected = !item->isSelected();
+        m_parts->setCurrentItem(item, 0, QItemSelectionModel::NoUpdate);
+        item->setSelected(selected);
+        const int count = int(selectedParts().size());
+        Q_EMIT message(count == 1 ? tr("1 part selected") : tr("%1 parts selected").arg(count));
+    } else {
+        m_parts->setCurrentItem(item);
+    }
     m_parts->scrollToItem(item);
     m_updating = false;
 }

@@ -61,8 +61,9 @@ public:
     void deleteMaterial(int material);
     void setPartVisible(int part, bool visible);
     void setPartMaterial(int part, int material);
-    // Selects `part`'s row without editing anything (a click in the viewport picked it).
-    void selectPart(int part);
+    // Selects `part`'s row without editing anything (a click in the viewport picked it); `extend`
+    // (a Ctrl-click) adds the row to the selection, or takes a selected one out.
+    void selectPart(int part, bool extend = false);
     // The parts whose rows are selected (Ctrl- and Shift-click select several), in order.
     std::vector<int> selectedParts() const;
     // `material` on every part of `parts` that shows another, one undo step ("Assign Red to 3

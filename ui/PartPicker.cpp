@@ -44,7 +44,16 @@ std::optional<int> PartPicker::partAt(const QPointF& position) const
     return int(hit->subMesh);
 }
 
-std::optional<int> PartPicker::pickAt(const QPointF& position)
+QString PartPicker::partName(int part) const
+{
+    const std::shared_ptr<const Mesh>& mesh = m_scene->assets().mesh;
+    const std::string name = !mesh                                ? std::string()
+        : part >= 0 && std::size_t(part) < mesh->subMeshes.size() ? mesh->subMeshes[std::size_t(part)].name
+                                                                  : mesh->name;
+    return name.empty() ? tr("part %1").arg(part + 1) : QString::fromStdString(name);
+}
+
+std::optional<int> PartPicker::pickAt(const QPointF& position, bool extend)
 {
     const std::optional<int> part = partAt(position);
     if (!part)
@@ -52,13 +61,10 @@ std::optional<int> PartPicker::pickAt(const QPointF& position)
     const Project& project = m_document->project();
     const int material = project.materialOfPart(std::size_t(*part));
     m_document->setCurrentMaterial(material);
-    const std::shared_ptr<const Mesh>& mesh = m_scene->assets().mesh;
-    const std::string& partName
-        = std::size_t(*part) < mesh->subMeshes.size() ? mesh->subMeshes[std::size_t(*part)].name : mesh->name;
-    const QString name = partName.empty() ? tr("part %1").arg(*part + 1) : QString::fromStdString(partName);
+    const QString name = partName(*part);
     Q_EMIT message(tr("%1: material “%2”")
                        .arg(name, QString::fromStdString(project.materials[std::size_t(material)].name)));
-    Q_EMIT partPicked(*part, material);
+    Q_EMIT partPicked(*part, material, extend);
     return part;
 }
 
@@ -70,10 +76,12 @@ bool PartPicker::eventFilter(QObject* watched, QEvent* event)
     case QEvent::MouseButtonPress: {
         const auto* mouse = static_cast<QMouseEvent*>(event);
         // Shift + left drags pan; other buttons are not clicks on a part.
-        if (mouse->button() == Qt::LeftButton && !mouse->modifiers().testFlag(Qt::ShiftModifier))
+        if (mouse->button() == Qt::LeftButton && !mouse->modifiers().testFlag(Qt::ShiftModifier)) {
             m_pressedAt = mouse->position();
-        else
+            m_pressExtends = mouse->modifiers().testFlag(Qt::ControlModifier);
+        } else {
             m_pressedAt.reset();
+        }
         break;
     }
     case QEvent::MouseMove: {
@@ -91,7 +99,7 @@ bool PartPicker::eventFilter(QObject* watched, QEvent* event)
             const QPointF moved = mouse->position() - *m_pressedAt;
             // A mouse position names a pixel; its ray goes through that pixel's centre.
             if (std::abs(moved.x()) + std::abs(moved.y()) <= kClickSlopPixels)
-                pickAt(*m_pressedAt + QPointF(0.5, 0.5));
+                pickAt(*m_pressedAt + QPointF(0.5, 0.5), m_pressExtends);
         }
         m_pressedAt.reset();
         break;

@@ -37,12 +37,16 @@ public:
     // nullopt where a click would hit nothing.
     std::optional<int> partAt(const QPointF& position) const;
     // What a click at `position` does: picks the part there and makes its material current
-    // (Document::setCurrentMaterial, a selection, not an undo step). Returns the part.
-    std::optional<int> pickAt(const QPointF& position);
+    // (Document::setCurrentMaterial, a selection, not an undo step). Returns the part. `extend`
+    // (a Ctrl-click) adds the part to the selected parts, or takes it out, instead of replacing
+    // them (Assign to Selected then gives them all one material).
+    std::optional<int> pickAt(const QPointF& position, bool extend = false);
+    // The part's name as the file gives it ("part 3" when it has none), for messages.
+    QString partName(int part) const;
 
 Q_SIGNALS:
-    // A part was clicked; `material` is now the current material.
-    void partPicked(int part, int material);
+    // A part was clicked; `material` is now the current material; `extend`: a Ctrl-click.
+    void partPicked(int part, int material, bool extend);
     // For the status bar.
     void message(const QString& text);
 
@@ -54,6 +58,7 @@ private:
     SceneController* m_scene;
     ViewportWidget* m_viewport;
     std::optional<QPointF> m_pressedAt; // a left press that may still become a click
+    bool m_pressExtends = false; // the press had Ctrl: the click extends the selection
 };
 
 } // namespace facet

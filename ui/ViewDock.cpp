@@ -10,6 +10,7 @@
 #include "ui/ViewportRenderer.h"
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -47,6 +48,7 @@ ViewDock::ViewDock(Document* document, QWidget* parent)
     , m_ocioDisplay(new QComboBox(this))
     , m_ocioView(new QComboBox(this))
     , m_debugView(new QComboBox(this))
+    , m_texelDensity(new QDoubleSpinBox(this))
     , m_msaa(new QComboBox(this))
     , m_glLabel(new QLabel(tr("OpenGL: not initialised yet"), this))
     , m_frameLabel(new QLabel(this))
@@ -96,6 +98,15 @@ ViewDock::ViewDock(Document* document, QWidget* parent)
         m_debugView->setItemData(
             i, tr("“%1” in project files and facet render --view").arg(name), Qt::ToolTipRole);
     }
+    m_texelDensity->setObjectName(QStringLiteral("texelDensitySpin"));
+    m_texelDensity->setRange(1.0, ViewSettings::kMaxTexelDensity);
+    m_texelDensity->setDecimals(0);
+    m_texelDensity->setSuffix(tr(" texels/m"));
+    m_texelDensity->setKeyboardTracking(false);
+    m_texelDensity->setToolTip(
+        tr("The Texel density view's target: texels of the material's map (base colour's, "
+           "else its largest) per metre of surface (per unit of the mesh's file). Green on "
+           "target, blue at a quarter or less, red at four times or more."));
     m_msaa->setObjectName(QStringLiteral("msaaCombo"));
     for (int samples : {1, 2, 4, 8, 16})
         m_msaa->addItem(samples == 1 ? tr("Off") : QStringLiteral("%1×").arg(samples), samples);
@@ -126,6 +137,7 @@ ViewDock::ViewDock(Document* document, QWidget* parent)
     displayForm->addRow(tr("OCIO display"), m_ocioDisplay);
     displayForm->addRow(tr("OCIO view"), m_ocioView);
     displayForm->addRow(tr("Debug view"), m_debugView);
+    displayForm->addRow(tr("Density target"), m_texelDensity);
     displayForm->addRow(tr("MSAA"), m_msaa);
     layout->addWidget(displayGroup);
     auto* statsGroup = new QGroupBox(tr("Statistics"), content);
@@ -209,6 +221,12 @@ ViewDock::ViewDock(Document* document, QWidget* parent)
         const std::string name = m_debugView->currentData().toString().toStdString();
         editView(tr("Debug View"), MergeId::None, [&](ViewSettings& view) { view.debugView = name; });
     });
+    connect(m_texelDensity, &QDoubleSpinBox::valueChanged, this, [this](double value) {
+        if (m_document->project().view.texelDensityTarget == value)
+            return; // shown from the document
+        editView(tr("Texel Density Target"), MergeId::None,
+            [&](ViewSettings& view) { view.texelDensityTarget = value; });
+    });
     connect(m_msaa, &QComboBox::activated, this, [this] {
         const int samples = m_msaa->currentData().toInt();
         editView(tr("MSAA"), MergeId::None, [&](ViewSettings& view) { view.msaaSamples = samples; });
@@ -282,6 +300,11 @@ void ViewDock::onDocumentChanged(DocumentChanges changes)
     const std::optional<DebugView> debugView = debugViewFromString(view.debugView);
     selectData(m_debugView, QString::fromLatin1(toString(debugView.value_or(DebugView::None))));
     selectData(m_msaa, view.msaaSamples);
+    {
+        const QSignalBlocker blocker(m_texelDensity);
+        m_texelDensity->setValue(view.texelDensityTarget);
+    }
+    m_texelDensity->setEnabled(debugView == DebugView::TexelDensity);
     m_encoding->setEnabled(!ocio);
     m_gamma->setEnabled(!ocio && view.displayEncoding == DisplayEncoding::Gamma);
     m_ocioDisplay->setEnabled(ocio);

@@ -14,6 +14,7 @@
 #include <functional>
 
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 
 namespace facet {
@@ -59,6 +60,7 @@ private:
     QComboBox* m_ocioDisplay;
     QComboBox* m_ocioView;
     QComboBox* m_debugView;
+    QDoubleSpinBox* m_texelDensity; // the texel-density view's target
     QComboBox* m_msaa;
     QLabel* m_glLabel;
     QLabel* m_frameLabel;

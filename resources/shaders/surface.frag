@@ -146,6 +146,10 @@ void main()
     color = m.emissive;
 #elif DEBUG_VIEW == DEBUG_ALPHA
     color = vec3(m.alpha);
+#elif DEBUG_VIEW == DEBUG_UV_CHECKER
+    color = uvChecker(vUv) * (0.35 + 0.65 * debugNoV);
+#elif DEBUG_VIEW == DEBUG_TEXEL_DENSITY
+    color = texelDensityColor(texelDensity(vUv, vWorldPosition)) * (0.35 + 0.65 * debugNoV);
 #elif DEBUG_VIEW == DEBUG_TANGENT
 #ifdef HAS_NORMAL_MAP
     color = surfaceTangent(ng, vTangent) * 0.5 + 0.5;

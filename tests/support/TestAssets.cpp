@@ -15,6 +15,22 @@
 
 namespace facet::test {
 
+std::vector<std::string> materialNames(const Project& project)
+{
+    std::vector<std::string> names;
+    for (const Material& material : project.materials)
+        names.push_back(material.name);
+    return names;
+}
+
+std::vector<std::string> partMaterialNames(const Project& project, std::size_t parts)
+{
+    std::vector<std::string> names;
+    for (std::size_t part = 0; part < parts; ++part)
+        names.push_back(project.materials[std::size_t(project.materialOfPart(part))].name);
+    return names;
+}
+
 namespace {
 
 // A width x height 8-bit RGB PNG of one colour, written with OpenImageIO directly.

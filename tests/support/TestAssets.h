@@ -8,6 +8,13 @@
 
 #include "core/Image.h"
 
+#include <string>
+#include <vector>
+
+namespace facet {
+struct Project;
+}
+
 namespace facet::test {
 
 // Two quads side by side in the XY plane facing +Z, each a part with its own material, single-
@@ -19,6 +26,9 @@ bool writeTwoMaterialAsset(const QString& path, QString* error, double rightAlph
 struct TwoMaterialAsset {
     static constexpr float kLeftX0 = -1.0f, kLeftX1 = -0.05f, kRightX0 = 0.05f, kRightX1 = 1.0f;
 };
+// The names of a project's materials, in order; of the materials its first `parts` parts show.
+std::vector<std::string> materialNames(const Project& project);
+std::vector<std::string> partMaterialNames(const Project& project, std::size_t parts = 2);
 
 // A small still life for looking at the window as an artist would: a "Base" slab (rough
 // "Concrete" with a speckled texture), a "Body" sphere ("Painted Checker": a checker base colour
