@@ -136,6 +136,9 @@ int main(int argc, char** argv)
     // A key press to the frame that shows its change (issue 30): Ctrl+2 (a preset) typed on the
     // viewport, through the window's shortcut, the Document, the scene and one frame. The edit's
     // own time is when the document has changed; the rest is the frame.
+    window.activateWindow();
+    if (!QTest::qWaitForWindowActive(&window))
+        std::printf("  (the window did not become active: shortcuts may not reach it)\n");
     window.viewport()->setFocus();
     runToIdle(settle);
     for (int press = 0; press < 3; ++press) {
