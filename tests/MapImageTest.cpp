@@ -24,6 +24,7 @@
 #include "TestSupport.h"
 #include "core/MapImage.h"
 #include "core/MapImageCache.h"
+#include "core/MapStatistics.h"
 
 using namespace facet;
 
@@ -79,6 +80,89 @@ class MapImageTest : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    // Inspect Map's numbers (core/MapStatistics.h): per stored channel the histogram, the range
+    // and the mean of the values as stored, for each layout and sample type.
+    void statisticsOfEachChannel_data()
+    {
+        QTest::addColumn<int>("layout");
+        QTest::addColumn<int>("type");
+        QTest::newRow("RGB, 8-bit") << int(MapLayout::Rgb) << int(MapSampleType::UInt8);
+        QTest::newRow("grey, 16-bit") << int(MapLayout::Grey) << int(MapSampleType::UInt16);
+        QTest::newRow("RGBA, half: values above 1 in the last bin")
+            << int(MapLayout::Rgba) << int(MapSampleType::Half);
+        QTest::newRow("red + green, 8-bit") << int(MapLayout::RedGreen) << int(MapSampleType::UInt8);
+    }
+    void statisticsOfEachChannel()
+    {
+        QFETCH(int, layout);
+        QFETCH(int, type);
+        // 16 x 4 texels: channel c of column x holds x / 16 + c / 8 (the half map's last channel
+        // reaches 1.31).
+        Image source(16, 4);
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 16; ++x)
+                source.at(x, y) = glm::vec4(float(x) / 16.0f) + glm::vec4(0.0f, 0.125f, 0.25f, 0.375f);
+        const MapImage map = MapImage::fromImage(source, MapLayout(layout), MapSampleType(type));
+        const MapStatistics statistics = mapStatistics(map);
+        QCOMPARE(int(statistics.channels.size()), map.channels());
+        for (int c = 0; c < map.channels(); ++c) {
+            const MapChannelStatistics& channel = statistics.channels[std::size_t(c)];
+            std::uint64_t total = 0;
+            for (std::uint64_t count : channel.histogram)
+                total += count;
+            QCOMPARE(total, std::uint64_t(64));
+            // Exactly the stored values: their range, mean and bins.
+            float lo = 1e9f, hi = -1e9f;
+            double sum = 0.0;
+            std::array<std::uint64_t, MapChannelStatistics::kBins> bins {};
+            for (int y = 0; y < 4; ++y)
+                for (int x = 0; x < 16; ++x) {
+                    const float v = map.sample(x, y, c);
+                    lo = std::min(lo, v);
+                    hi = std::max(hi, v);
+                    sum += v;
+                    ++bins[std::size_t(std::clamp(int(std::floor(v * 256.0f)), 0, 255))];
+                }
+            QCOMPARE(channel.minimum, lo);
+            QCOMPARE(channel.maximum, hi);
+            QVERIFY(std::abs(channel.mean - sum / 64.0) < 1e-9);
+            QVERIFY(channel.histogram == bins);
+            QVERIFY(channel.maximum > channel.minimum + 0.6f); // the gradient, not a constant
+        }
+        if (MapLayout(layout) == MapLayout::Rgba) // 15/16 + 0.375 = 1.31: counted in the last bin
+            QVERIFY(statistics.channels[3].histogram[255] > 0 && statistics.channels[3].maximum > 1.3f);
+        // A stand-in without pixels has none.
+        QVERIFY(mapStatistics(MapImage::withoutPixels(map)).channels.empty());
+    }
+
+    // Which slots read which stored channel of a file (an ORM texture in three slots, a base
+    // colour reading RGB, a grey map read by "g").
+    void slotsReadingEachChannel()
+    {
+        Material material;
+        for (MapSlot slot : {MapSlot::Occlusion, MapSlot::Roughness, MapSlot::Metallic})
+            material.map(slot).path = "/maps/orm.png";
+        material.map(MapSlot::Occlusion).channel = MapChannel::R;
+        material.map(MapSlot::Roughness).channel = MapChannel::G;
+        material.map(MapSlot::Metallic).channel = MapChannel::B;
+        material.map(MapSlot::BaseColor).path = "/maps/orm.png"; // rgb
+        using Slots = std::vector<MapSlot>;
+        QCOMPARE(slotsReadingChannel(material, "/maps/orm.png", MapLayout::Rgb, 0),
+            (Slots {MapSlot::BaseColor, MapSlot::Occlusion}));
+        QCOMPARE(slotsReadingChannel(material, "/maps/orm.png", MapLayout::Rgb, 1),
+            (Slots {MapSlot::BaseColor, MapSlot::Roughness}));
+        QCOMPARE(slotsReadingChannel(material, "/maps/orm.png", MapLayout::Rgb, 2),
+            (Slots {MapSlot::BaseColor, MapSlot::Metallic}));
+        QCOMPARE(slotsReadingChannel(material, "/maps/orm.png", MapLayout::Rgba, 3), Slots {});
+        QCOMPARE(slotsReadingChannel(material, "/maps/other.png", MapLayout::Rgb, 0), Slots {});
+        // A grey file: every colour channel is its one channel.
+        QCOMPARE(slotsReadingChannel(material, "/maps/orm.png", MapLayout::Grey, 0),
+            (Slots {MapSlot::BaseColor, MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion}));
+        QCOMPARE(storedChannelOf(MapChannel::A, MapLayout::Rgb), -1);
+        QCOMPARE(storedChannelOf(MapChannel::A, MapLayout::GreyAlpha), 1);
+        QCOMPARE(storedChannelOf(MapChannel::B, MapLayout::RedGreen), -1);
+    }
+
     void initTestCase() { QVERIFY(m_folder.isValid()); }
     void cleanup()
     {

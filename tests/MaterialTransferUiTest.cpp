@@ -8,6 +8,9 @@
 //   material's slot to another material's slot of the same or another kind, one undo step each.
 // - A material or preset dropped on a part in the viewport: a project material assigned, a preset
 //   added and assigned, one undo step each; a drop beside the mesh changes nothing.
+// - The preset library (the Material dock's Presets): search by name, large swatches in a grid,
+//   Save to Library (the current material with its textures, as a package), and files added to a
+//   preset folder listed without a restart.
 // Needs a display (Xvfb via with-display.sh).
 
 #include "core/Material.h"
@@ -23,17 +26,25 @@
 #include "ui/SceneController.h"
 #include "ui/SurfaceFormat.h"
 #include "ui/TextureMapsDock.h"
+#include "ui/UserPresets.h"
 #include "ui/ViewportWidget.h"
 
 #include "TestAssets.h"
+#include "WindowTestSupport.h"
 
 #include <QApplication>
 #include <QClipboard>
+#include <QDir>
 #include <QDockWidget>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMenu>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -77,6 +88,8 @@ private Q_SLOTS:
     void assignAMaterialToSelectedParts();
     void copyAndPasteAMapOrAValue();
     void dropAMaterialOrAPresetOnAPart();
+    void theLibrarySearchesAndShowsLargeSwatches();
+    void savedToTheLibraryAndWatchedFolders();
 
 private:
     bool openTwoMaterials();
@@ -93,19 +106,15 @@ private:
 void MaterialTransferUiTest::initTestCase()
 {
     QCoreApplication::setOrganizationName(QStringLiteral("FacetTests"));
+    // The test's own presets folder (test mode), emptied: what a run saved must not meet the next.
+    QVERIFY(QDir(UserPresets::directory()).removeRecursively());
+    QSettings().remove(QStringLiteral("presets"));
     m_twoMaterials = m_dir.filePath(QStringLiteral("two.glb"));
     QString error;
     QVERIFY2(test::writeTwoMaterialAsset(m_twoMaterials, &error), qPrintable(error));
-    m_window = std::make_unique<MainWindow>(nullptr, m_recovery.path());
+    m_window = test::showTestWindow(m_recovery.path());
+    QVERIFY(m_window);
     m_document = m_window->document();
-    m_window->projectFiles()->setErrorDialogsEnabled(false);
-    m_window->projectFiles()->setUnsavedChangesAnswer(QMessageBox::Discard);
-    QSignalSpy rendered(m_window->viewport(), &ViewportWidget::frameRendered);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    QVERIFY(rendered.count() > 0 || rendered.wait(60000));
-    m_window->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
 }
 
 void MaterialTransferUiTest::cleanupTestCase()
@@ -116,25 +125,12 @@ void MaterialTransferUiTest::cleanupTestCase()
 
 bool MaterialTransferUiTest::openTwoMaterials()
 {
-    if (!m_window->projectFiles()->openFile(m_twoMaterials))
-        return false;
-    SceneController* scene = m_window->sceneController();
-    const bool loaded = QTest::qWaitFor([scene] { return scene->pendingAssetLoads() == 0; }, 30000);
-    m_document->undoStack()->clear();
-    return loaded && m_document->project().parts.size() == 2;
+    return test::openAndSettle(*m_window, m_twoMaterials) && m_document->project().parts.size() == 2;
 }
 
 bool MaterialTransferUiTest::focus(QWidget* widget)
 {
-    if (!widget)
-        return false;
-    for (QWidget* w = widget; w; w = w->parentWidget())
-        if (auto* dock = qobject_cast<QDockWidget*>(w)) {
-            dock->show();
-            dock->raise();
-        }
-    widget->setFocus(Qt::OtherFocusReason);
-    return QTest::qWaitFor([widget] { return widget->hasFocus(); }, 5000);
+    return test::focusWidget(widget);
 }
 
 void MaterialTransferUiTest::copyAndPasteAMaterial()
@@ -327,6 +323,87 @@ void MaterialTransferUiTest::dropAMaterialOrAPresetOnAPart()
     QCOMPARE(materialNames(m_document->project()), (Names {"Red", "Blue"}));
     m_document->undoStack()->undo();
     QCOMPARE(partMaterials(m_document->project()), (Names {"Red", "Blue"}));
+}
+
+void MaterialTransferUiTest::theLibrarySearchesAndShowsLargeSwatches()
+{
+    MaterialDock* dock = m_window->findChild<MaterialDock*>();
+    QListWidget* list = dock->presetList();
+    const auto visible = [list] {
+        QStringList names;
+        for (int row = 0; row < list->count(); ++row)
+            if (!list->item(row)->isHidden())
+                names.append(list->item(row)->text());
+        return names;
+    };
+    const int all = int(visible().size());
+    QVERIFY(all >= 9);
+    auto* search = dock->findChild<QLineEdit*>(QStringLiteral("presetSearch"));
+    QVERIFY(search);
+    QTest::keyClicks(search, QStringLiteral("GOL"));
+    QCOMPARE(visible(), QStringList {QStringLiteral("Gold")});
+    search->clear();
+    QCOMPARE(int(visible().size()), all);
+    QTest::keyClicks(search, QStringLiteral("no such preset"));
+    QVERIFY(visible().isEmpty());
+    search->clear();
+
+    // Large swatches: a grid of 96-pixel swatches, rendered at that size; back to the list.
+    auto* large = dock->findChild<QToolButton*>(QStringLiteral("largeSwatchesButton"));
+    large->click();
+    QVERIFY(dock->largeSwatches());
+    QCOMPARE(list->viewMode(), QListView::IconMode);
+    QCOMPARE(list->iconSize(), QSize(MaterialDock::kLargeSwatchSize, MaterialDock::kLargeSwatchSize));
+    QVERIFY(QTest::qWaitFor([dock] { return dock->pendingSwatches() == 0; }, 30000));
+    const QListWidgetItem* gold = list->findItems(QStringLiteral("Gold"), Qt::MatchExactly).value(0);
+    QVERIFY(gold);
+    QVERIFY(QTest::qWaitFor(
+        [gold] {
+            const QList<QSize> sizes = gold->icon().availableSizes();
+            return !sizes.isEmpty() && sizes.first().width() >= MaterialDock::kLargeSwatchSize;
+        },
+        30000));
+    QCOMPARE(QSettings().value(QStringLiteral("presets/largeSwatches")).toBool(), true);
+    large->click();
+    QCOMPARE(list->viewMode(), QListView::ListMode);
+    QCOMPARE(list->iconSize(), QSize(MaterialDock::kSwatchSize, MaterialDock::kSwatchSize));
+}
+
+void MaterialTransferUiTest::savedToTheLibraryAndWatchedFolders()
+{
+    m_document->newProject();
+    MaterialDock* dock = m_window->findChild<MaterialDock*>();
+    QListWidget* list = dock->presetList();
+    // The current material with a texture, saved to the library: a package in the presets folder,
+    // listed and selected at once.
+    const QString base = m_dir.filePath(QStringLiteral("library_basecolor.png"));
+    QImage texture(8, 8, QImage::Format_RGB888);
+    texture.fill(QColor(200, 120, 40));
+    QVERIFY(texture.save(base));
+    Material material = m_document->project().material();
+    material.map(MapSlot::BaseColor).path = base.toStdString();
+    m_document->setMaterial(material, QStringLiteral("Texture"));
+    QVERIFY(dock->saveCurrentToLibrary(QStringLiteral("Rusty Panel")));
+    QVERIFY(list->currentItem());
+    QVERIFY2(list->currentItem()->text().startsWith(QStringLiteral("Rusty Panel (user, with textures)")),
+        qPrintable(list->currentItem()->text()));
+    QVERIFY(QFileInfo(list->currentItem()->toolTip()).isDir()); // the package's folder
+    QVERIFY(list->currentItem()->toolTip().startsWith(UserPresets::directory()));
+    QVERIFY(dock->watchedFolders().contains(UserPresets::directory()));
+
+    // A preset file copied into the folder by another program appears without a reload call.
+    QString error;
+    const QString written = UserPresets::save(QStringLiteral("Copied In"), Material(), &error);
+    QVERIFY2(!written.isEmpty(), qPrintable(error));
+    // (save wrote it into the watched folder: the watcher, not this call, lists it)
+    QVERIFY(QTest::qWaitFor(
+        [list] { return !list->findItems(QStringLiteral("Copied In"), Qt::MatchStartsWith).isEmpty(); },
+        MaterialDock::kWatchDelayMs * 20));
+    // And a file removed behind Facet's back goes.
+    QVERIFY(QFile::remove(written));
+    QVERIFY(QTest::qWaitFor(
+        [list] { return list->findItems(QStringLiteral("Copied In"), Qt::MatchStartsWith).isEmpty(); },
+        MaterialDock::kWatchDelayMs * 20));
 }
 
 QTEST_MAIN(MaterialTransferUiTest)

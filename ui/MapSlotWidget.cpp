@@ -1,6 +1,7 @@
 #include "ui/MapSlotWidget.h"
 
 #include "core/GltfImport.h"
+#include "core/MapImageCache.h"
 #include "core/MapNaming.h"
 #include "core/MaterialList.h"
 #include "ui/ColorButton.h"
@@ -8,9 +9,11 @@
 #include "ui/DocumentCommands.h"
 #include "ui/DroppedFiles.h"
 #include "ui/ElidedLabel.h"
+#include "ui/MapInspectorDialog.h"
 #include "ui/ValueSlider.h"
 #include "ui/WindowMessages.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QClipboard>
 #include <QComboBox>
@@ -528,9 +531,35 @@ bool MapSlotWidget::pasteValue()
     return true;
 }
 
+MapInspectorDialog* MapSlotWidget::inspectMap()
+{
+    const Material& material = m_document->project().material();
+    const MaterialMap& map = material.map(m_slot);
+    if (!map.hasTexture()) {
+        Q_EMIT message(tr("Inspect Map: the %1 slot has no file").arg(title(m_slot).toLower()));
+        return nullptr;
+    }
+    std::string error;
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    // Decoded again if the window let its copy go after the upload (docs/app.md "Loading texture maps").
+    const std::shared_ptr<const MapImage> image = MapImageCache::shared().load(map.path, &error);
+    QApplication::restoreOverrideCursor();
+    if (!image) {
+        Q_EMIT message(WindowMessages::fromCore(error));
+        return nullptr;
+    }
+    auto* dialog = new MapInspectorDialog(material, m_slot, image, window());
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->show();
+    return dialog;
+}
+
 void MapSlotWidget::contextMenuEvent(QContextMenuEvent* event)
 {
     QMenu menu(this);
+    QAction* inspect = menu.addAction(tr("Inspect Map…"), this, &MapSlotWidget::inspectMap);
+    inspect->setEnabled(m_document->project().material().map(m_slot).hasTexture());
+    menu.addSeparator();
     menu.addAction(tr("Copy Map"), this, &MapSlotWidget::copyMap);
     const std::optional<CopiedMap> copied = copiedMap();
     QAction* paste = menu.addAction(tr("Paste Map"), this, &MapSlotWidget::pasteMap);

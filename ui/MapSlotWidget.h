@@ -20,6 +20,7 @@ class QPushButton;
 namespace facet {
 
 class ColorButton;
+class MapInspectorDialog;
 class Document;
 class ValueSlider;
 
@@ -54,6 +55,10 @@ public:
     void copyMap();
     bool pasteMap();
     bool pasteValue();
+    // Inspect Map… (the context menu, with a file): the map's channels, what each feeds and their
+    // histograms (ui/MapInspectorDialog), in a window of its own that closes itself. Null, with a
+    // message, when the file cannot be read or the slot has none.
+    MapInspectorDialog* inspectMap();
 
     ValueSlider* factorSlider() const { return m_factor; } // null for base colour and emissive
     ColorButton* colorButton() const { return m_color; } // base colour and emissive only

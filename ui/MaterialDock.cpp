@@ -12,6 +12,7 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFileSystemWatcher>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -24,7 +25,9 @@
 #include <QMessageBox>
 #include <QPixmap>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalBlocker>
+#include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -140,6 +143,22 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     m_presets->setIconSize(QSize(kSwatchSize, kSwatchSize));
     // Five swatch rows before it scrolls (issue 30: it showed one or two until resized).
     m_presets->setMinimumHeight(5 * (kSwatchSize + 6) + 4);
+    // The library's search and swatch size (issue 30: a library browser).
+    m_search = new QLineEdit(presetGroup);
+    m_search->setObjectName(QStringLiteral("presetSearch"));
+    m_search->setPlaceholderText(tr("Search presets"));
+    m_search->setClearButtonEnabled(true);
+    connect(m_search, &QLineEdit::textChanged, this, &MaterialDock::filterPresets);
+    m_largeButton = new QToolButton(presetGroup);
+    m_largeButton->setObjectName(QStringLiteral("largeSwatchesButton"));
+    m_largeButton->setText(tr("Large"));
+    m_largeButton->setCheckable(true);
+    m_largeButton->setToolTip(tr("Large swatches in a grid, or a list of small ones"));
+    connect(m_largeButton, &QToolButton::toggled, this, &MaterialDock::setLargeSwatches);
+    auto* searchRow = new QHBoxLayout;
+    searchRow->addWidget(m_search, 1);
+    searchRow->addWidget(m_largeButton);
+    presetLayout->addLayout(searchRow);
     m_swatches = new ThumbnailLoader(this);
     connect(m_swatches, &ThumbnailLoader::ready, this,
         [this](const QString& key, const QImage& image, QSize, const QString&, double) {
@@ -171,6 +190,17 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     QAction* importPackage = libraryMenu->addAction(tr("Import Package…"));
     importPackage->setObjectName(QStringLiteral("importPackageAction"));
     importPackage->setToolTip(tr("Add a preset package (.facetpreset folder) to your presets"));
+    QAction* saveToLibrary = libraryMenu->addAction(tr("Save to Library…"));
+    saveToLibrary->setObjectName(QStringLiteral("saveToLibraryAction"));
+    saveToLibrary->setToolTip(
+        tr("Save the current material with its textures into your presets, as a preset package"));
+    connect(saveToLibrary, &QAction::triggered, this, [this] {
+        bool ok = false;
+        const QString name = QInputDialog::getText(this, tr("Save to Library"), tr("Preset name:"),
+            QLineEdit::Normal, QString::fromStdString(m_document->project().material().name), &ok);
+        if (ok)
+            saveCurrentToLibrary(name);
+    });
     QAction* exportPackage = libraryMenu->addAction(tr("Export Package…"));
     exportPackage->setObjectName(QStringLiteral("exportPackageAction"));
     exportPackage->setToolTip(tr("Write the current material with its textures as a preset package (a "
@@ -191,6 +221,14 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     connect(importPackage, &QAction::triggered, this, &MaterialDock::askImportPackage);
     layout->addWidget(presetGroup, 1);
     setWidget(content);
+    // Files added to a preset folder appear without a restart (a short delay gathers a copy of
+    // many files into one reload).
+    m_watcher = new QFileSystemWatcher(this);
+    m_watchDelay = new QTimer(this);
+    m_watchDelay->setSingleShot(true);
+    m_watchDelay->setInterval(kWatchDelayMs);
+    connect(m_watcher, &QFileSystemWatcher::directoryChanged, m_watchDelay, qOverload<>(&QTimer::start));
+    connect(m_watchDelay, &QTimer::timeout, this, &MaterialDock::reloadPresets);
 
     connect(m_name, &QLineEdit::editingFinished, this, [this] {
         Material material = m_document->project().material();
@@ -262,8 +300,83 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
             deleteSelectedPreset();
     });
     connect(m_document, &Document::changed, this, &MaterialDock::onDocumentChanged);
+    m_largeSwatches = QSettings().value(QStringLiteral("presets/largeSwatches"), false).toBool();
+    {
+        const QSignalBlocker blocker(m_largeButton);
+        m_largeButton->setChecked(m_largeSwatches);
+    }
+    setLargeSwatches(m_largeSwatches);
     reloadPresets();
     onDocumentChanged(DocumentChange::WholeProject);
+}
+
+void MaterialDock::setLargeSwatches(bool large)
+{
+    const bool changed = large != m_largeSwatches;
+    m_largeSwatches = large;
+    QSettings().setValue(QStringLiteral("presets/largeSwatches"), large);
+    {
+        const QSignalBlocker blocker(m_largeButton);
+        m_largeButton->setChecked(large);
+    }
+    const int side = swatchSize();
+    m_presets->setViewMode(large ? QListView::IconMode : QListView::ListMode);
+    m_presets->setIconSize(QSize(side, side));
+    m_presets->setResizeMode(QListView::Adjust);
+    m_presets->setMovement(QListView::Static);
+    m_presets->setWordWrap(large);
+    // A grid cell a swatch wide with two lines of name under it.
+    m_presets->setGridSize(large ? QSize(side + 24, side + 2 * fontMetrics().lineSpacing() + 10) : QSize());
+    if (changed)
+        reloadPresets(); // the swatches again, at the new size
+}
+
+void MaterialDock::filterPresets(const QString& text)
+{
+    const QString wanted = text.trimmed();
+    for (int row = 0; row < m_presets->count(); ++row) {
+        QListWidgetItem* item = m_presets->item(row);
+        item->setHidden(!wanted.isEmpty() && !item->text().contains(wanted, Qt::CaseInsensitive));
+    }
+}
+
+QStringList MaterialDock::watchedFolders() const
+{
+    return m_watcher ? m_watcher->directories() : QStringList();
+}
+
+void MaterialDock::watchFolders()
+{
+    if (!m_watcher)
+        return;
+    QStringList wanted = UserPresets::folders();
+    // The user's own folder once it exists (made by the first save).
+    if (QFileInfo(UserPresets::directory()).isDir())
+        wanted.prepend(UserPresets::directory());
+    const QStringList watched = m_watcher->directories();
+    for (const QString& folder : watched)
+        if (!wanted.contains(folder))
+            m_watcher->removePath(folder);
+    for (const QString& folder : wanted)
+        if (!watched.contains(folder) && QFileInfo(folder).isDir())
+            m_watcher->addPath(folder);
+}
+
+bool MaterialDock::saveCurrentToLibrary(const QString& name)
+{
+    if (!QDir().mkpath(UserPresets::directory())) {
+        Q_EMIT message(tr("Could not save to the library: cannot make %1").arg(UserPresets::directory()));
+        return false;
+    }
+    const QString path = exportCurrentAsPackage(name, UserPresets::directory());
+    if (path.isEmpty())
+        return false;
+    reloadPresets();
+    for (int row = 0; row < m_presets->count(); ++row)
+        if (m_presets->item(row)->toolTip() == path)
+            m_presets->setCurrentRow(row);
+    Q_EMIT message(tr("Saved “%1” to your library, with its textures").arg(name.trimmed()));
+    return true;
 }
 
 MaterialDock::~MaterialDock() = default;
@@ -309,7 +422,7 @@ void MaterialDock::reloadPresets()
     for (const MaterialPreset& preset : builtinPresets()) {
         auto* item = new QListWidgetItem(QString::fromStdString(preset.displayName), m_presets);
         item->setData(kSwatchKeyRole, QStringLiteral("builtin|") + QString::fromStdString(preset.id));
-        m_swatches->requestSwatch(item->data(kSwatchKeyRole).toString(), preset.material, kSwatchSize);
+        m_swatches->requestSwatch(item->data(kSwatchKeyRole).toString(), preset.material, swatchSize());
         item->setData(kPresetRole, index++);
         item->setToolTip(
             tr("Built-in: F0 %1, roughness %2")
@@ -329,7 +442,8 @@ void MaterialDock::reloadPresets()
         item->setData(kPresetRole, kUserOffset + index++);
         item->setToolTip(preset.path);
         item->setData(kSwatchKeyRole, QStringLiteral("user|") + preset.path);
-        m_swatches->requestSwatch(item->data(kSwatchKeyRole).toString(), preset.preset.material, kSwatchSize);
+        m_swatches->requestSwatch(
+            item->data(kSwatchKeyRole).toString(), preset.preset.material, swatchSize());
     }
     if (!problems.isEmpty())
         Q_EMIT message(
@@ -337,6 +451,9 @@ void MaterialDock::reloadPresets()
     const auto matches = m_presets->findItems(selected, Qt::MatchExactly);
     if (!matches.isEmpty())
         m_presets->setCurrentItem(matches.first());
+    if (m_search)
+        filterPresets(m_search->text());
+    watchFolders();
     updatePresetButtons();
 }
 

@@ -19,10 +19,13 @@ class QCheckBox;
 class QComboBox;
 class QLabel;
 class QLineEdit;
+class QFileSystemWatcher;
 class QListWidget;
 class QListWidgetItem;
 class QMimeData;
 class QPushButton;
+class QTimer;
+class QToolButton;
 
 namespace facet {
 
@@ -61,9 +64,24 @@ public:
     bool importPackage(const QString& path);
     // Add Folder…: lists the presets of `folder` with the user's (UserPresets::addFolder).
     bool addPresetFolder(const QString& folder);
+    // Save to Library (with textures): the current material as a preset package named `name` in
+    // the user's presets folder, listed and selected at once. False with a message on failure.
+    bool saveCurrentToLibrary(const QString& name);
+    // The list's search (by name, any case): presets whose label does not contain `text` are
+    // hidden; empty shows every one.
+    void filterPresets(const QString& text);
+    // Large swatches (kLargeSwatchSize, a grid of them) or a list of small ones (kSwatchSize);
+    // remembered (QSettings presets/largeSwatches).
+    void setLargeSwatches(bool large);
+    bool largeSwatches() const { return m_largeSwatches; }
     // Swatches still being rendered for the list (each preset's icon, ui/ThumbnailLoader).
     int pendingSwatches() const;
+    // The preset folders watched for files added, changed or removed: the list follows within
+    // kWatchDelayMs without a restart.
+    QStringList watchedFolders() const;
     static constexpr int kSwatchSize = 40;
+    static constexpr int kLargeSwatchSize = 96;
+    static constexpr int kWatchDelayMs = 300;
 
 Q_SIGNALS:
     void message(const QString& text);
@@ -95,6 +113,13 @@ private:
     QPushButton* m_delete;
     std::vector<UserPreset> m_userPresets;
     ThumbnailLoader* m_swatches = nullptr;
+    QLineEdit* m_search = nullptr;
+    QToolButton* m_largeButton = nullptr;
+    QFileSystemWatcher* m_watcher = nullptr;
+    QTimer* m_watchDelay = nullptr;
+    bool m_largeSwatches = false;
+    int swatchSize() const { return m_largeSwatches ? kLargeSwatchSize : kSwatchSize; }
+    void watchFolders();
 };
 
 } // namespace facet

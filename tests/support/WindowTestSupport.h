@@ -1,0 +1,64 @@
+#pragma once
+// Set-up the main-window tests share. Header only: the UI tests (which link facet_ui) include it;
+// the support library links no widgets.
+
+#include "ui/Document.h"
+#include "ui/MainWindow.h"
+#include "ui/ProjectFileController.h"
+#include "ui/SceneController.h"
+#include "ui/ViewportWidget.h"
+
+#include <QDockWidget>
+#include <QMessageBox>
+#include <QSignalSpy>
+#include <QUndoStack>
+#include <QtTest/QTest>
+
+#include <memory>
+
+namespace facet::test {
+
+// A main window as the tests drive it: error dialogs off, unsaved changes discarded, shown, its
+// first frame drawn and the window active. Null when one of those did not happen in time.
+inline std::unique_ptr<MainWindow> showTestWindow(const QString& recoveryFolder)
+{
+    auto window = std::make_unique<MainWindow>(nullptr, recoveryFolder);
+    window->projectFiles()->setErrorDialogsEnabled(false);
+    window->projectFiles()->setUnsavedChangesAnswer(QMessageBox::Discard);
+    QSignalSpy rendered(window->viewport(), &ViewportWidget::frameRendered);
+    window->show();
+    if (!QTest::qWaitForWindowExposed(window.get()) || !(rendered.count() > 0 || rendered.wait(60000)))
+        return nullptr;
+    window->activateWindow();
+    if (!QTest::qWaitForWindowActive(window.get()))
+        return nullptr;
+    return window;
+}
+
+// Opens `path` (a project or an asset) and waits until its files are loaded; the undo stack is
+// cleared so a test counts only its own steps. False when it could not be opened in time.
+inline bool openAndSettle(MainWindow& window, const QString& path)
+{
+    if (!window.projectFiles()->openFile(path))
+        return false;
+    SceneController* scene = window.sceneController();
+    const bool loaded = QTest::qWaitFor([scene] { return scene->pendingAssetLoads() == 0; }, 30000);
+    window.document()->undoStack()->clear();
+    return loaded;
+}
+
+// Raises the dock that holds `widget` (docks share tabs) and gives the widget the focus.
+inline bool focusWidget(QWidget* widget)
+{
+    if (!widget)
+        return false;
+    for (QWidget* w = widget; w; w = w->parentWidget())
+        if (auto* dock = qobject_cast<QDockWidget*>(w)) {
+            dock->show();
+            dock->raise();
+        }
+    widget->setFocus(Qt::OtherFocusReason);
+    return QTest::qWaitFor([widget] { return widget->hasFocus(); }, 5000);
+}
+
+} // namespace facet::test
