@@ -176,6 +176,10 @@ struct IblSampling {
     bool operator==(const IblSampling&) const = default;
 };
 
+// The wireframe's colour once exposed (linear radiance; the line's radiance is this over
+// 2^exposureEV): an orange that reads on grey, metal and sky alike.
+inline constexpr glm::vec3 kWireframeColor {1.0f, 0.6f, 0.15f};
+
 struct RenderScene {
     std::shared_ptr<const Mesh> mesh; // drawn with the model matrix; null: background only
     std::uint64_t meshKey = 0;        // content key: a new key re-uploads, the same key never does
@@ -204,6 +208,10 @@ struct RenderScene {
     // (fractional at MSAA-resolved silhouettes and under blended materials): what the error view
     // masks its numbers with (core/ImageMetrics objectMask). Radiance is the same either way.
     bool coverageAlpha = false;
+    // The mesh's edges drawn over the surfaces (View > Wireframe): kWireframeColor lines, depth
+    // tested against what is drawn (hidden edges stay hidden), offset towards the camera so a
+    // line on its own face shows.
+    bool wireframe = false;
     // exposureEV, toneMapper, displayEncoding, gamma (tone-map pass); debugView, msaaSamples,
     // background, backgroundColor, backgroundBlurRoughness (surface pass).
     ViewSettings view;

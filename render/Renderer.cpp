@@ -315,6 +315,10 @@ bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::str
         StepTimer timer(m_timing, &m_frame.surfaceMs);
         ok = drawSurface(scene, view, projection, SurfacePass::Blended, error);
     }
+    if (ok && scene.wireframe) {
+        StepTimer timer(m_timing, &m_frame.surfaceMs);
+        ok = drawWireframe(scene, view, projection, error);
+    }
     if (samples > 1) {
         StepTimer timer(m_timing, &m_frame.resolveMs);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, m_msaaFramebuffer);
@@ -326,6 +330,54 @@ bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::str
     m_total.add(m_frame);
     ++m_total.frameCount;
     return ok;
+}
+
+bool Renderer::drawWireframe(
+    const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection, std::string* error)
+{
+    if (!scene.mesh || m_mesh->isEmpty())
+        return true;
+    if (!m_wireframeProgram) {
+        std::string message;
+        std::optional<ShaderProgram> program = ShaderProgram::create("wireframe",
+            {{ShaderStageSource::Stage::Vertex, "wireframe.vert"},
+                {ShaderStageSource::Stage::Fragment, "wireframe.frag"}},
+            {}, &message);
+        if (!program) {
+            if (error)
+                *error = "Renderer::render: " + message;
+            return false;
+        }
+        m_wireframeProgram = std::make_unique<ShaderProgram>(std::move(*program));
+        ++m_frame.programsCompiled;
+    }
+    const ShaderProgram& program = *m_wireframeProgram;
+    program.use();
+    setMat4(program, "uModel", scene.modelMatrix);
+    setMat4(program, "uViewProjection", projection * view);
+    const glm::vec3 color = kWireframeColor * float(std::exp2(-scene.view.exposureEV));
+    program.setVec3("uWireColor", color.x, color.y, color.z);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glEnable(GL_POLYGON_OFFSET_LINE);
+    glPolygonOffset(-1.0f, -1.0f);
+    const Mesh& mesh = *scene.mesh;
+    if (mesh.subMeshes.empty()) {
+        m_frame.drawCalls += m_mesh->drawRange(0, std::uint32_t(mesh.indices.size()));
+    } else {
+        for (std::size_t part = 0; part < mesh.subMeshes.size(); ++part)
+            if (scene.isPartVisible(part))
+                m_frame.drawCalls
+                    += m_mesh->drawRange(mesh.subMeshes[part].firstIndex, mesh.subMeshes[part].indexCount);
+    }
+    glDisable(GL_POLYGON_OFFSET_LINE);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_DEPTH_TEST);
+    return true;
 }
 
 void Renderer::drawBackground(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection)

@@ -73,6 +73,10 @@ private:
     bool ensureFixedPrograms(std::string* error);
     bool ensureMsaaTarget(int width, int height, int samples, bool fullFloat, std::string* error);
     void destroyMsaaTarget();
+    // The mesh's edges over the surfaces (RenderScene::wireframe); false with *error when its
+    // program does not compile.
+    bool drawWireframe(
+        const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection, std::string* error);
     void drawBackground(const RenderScene& scene, const glm::dmat4& view, const glm::dmat4& projection);
     enum class SurfacePass { Opaque, Blended };
     void setFrameUniforms(const ShaderProgram& program, const SurfaceVariantKey& key, const RenderScene& scene,
@@ -85,6 +89,7 @@ private:
 
     SurfaceProgramCache m_surfacePrograms;
     std::unique_ptr<ShaderProgram> m_backgroundProgram;
+    std::unique_ptr<ShaderProgram> m_wireframeProgram; // made when a frame first asks for it
     std::unique_ptr<ToneMapping> m_toneMapping;
     std::unique_ptr<GpuMesh> m_mesh;
     std::shared_ptr<TextureCache> m_textures;

@@ -8,6 +8,7 @@
 //   for its text.
 // - Presets take Ctrl+1..9: the number key alone changes nothing; with Ctrl the look changes and the
 //   name and maps stay, and the status bar says what changed.
+// - View > Wireframe (Shift+W) draws the mesh's edges over the view and takes them away again.
 // - Inspect Map… on a packed ORM file: each channel's thumbnail, what it feeds, its histogram and
 //   numbers (ui/MapInspectorDialog).
 // (Moving materials and maps between places: tests/MaterialTransferUiTest.cpp.)
@@ -44,6 +45,7 @@
 #include "WindowTestSupport.h"
 
 #include <QAbstractItemView>
+#include <QAction>
 #include <QApplication>
 #include <QCheckBox>
 #include <QClipboard>
@@ -116,6 +118,7 @@ private Q_SLOTS:
     void messagesStayWhileTrueAndGoWhenNot();
     void docksShowEnoughAtASmallSize();
     void inspectAPackedMap();
+    void wireframeFromTheViewMenu();
     void cacheBudgetComesFromSettingOrEnvironment_data();
     void cacheBudgetComesFromSettingOrEnvironment();
     void theLightingCacheKeepsToTheBudget();
@@ -532,6 +535,39 @@ void AuthoringUiTest::inspectAPackedMap()
     QCOMPARE(red.size(), QSize(32, 16));
     QCOMPARE(qGray(red.pixel(31, 0)), 248);
     QCOMPARE(qGray(red.pixel(0, 15)), 0);
+}
+
+void AuthoringUiTest::wireframeFromTheViewMenu()
+{
+    m_document->newProject();
+    ViewportWidget* viewport = m_window->viewport();
+    const auto frame = [&] {
+        QSignalSpy rendered(viewport, &ViewportWidget::frameRendered);
+        viewport->update();
+        rendered.wait(30000);
+        (void)QTest::qWaitFor([viewport] { return !viewport->isPreviewing(); }, 10000);
+        return viewport->grabFramebuffer();
+    };
+    const QImage plain = frame();
+    QAction* wireframe = child<QAction>("wireframeAction");
+    QVERIFY(wireframe && wireframe->isCheckable());
+    QCOMPARE(wireframe->shortcut(), QKeySequence(Qt::SHIFT | Qt::Key_W));
+    wireframe->trigger();
+    QVERIFY(m_window->sceneController()->wireframe());
+    const QImage wired = frame();
+    int changed = 0;
+    for (int y = 0; y < plain.height(); y += 2)
+        for (int x = 0; x < plain.width(); x += 2)
+            changed += plain.pixel(x, y) != wired.pixel(x, y) ? 1 : 0;
+    QVERIFY2(changed > 100, qPrintable(QString::number(changed)));
+    wireframe->trigger();
+    QVERIFY(!m_window->sceneController()->wireframe());
+    const QImage again = frame();
+    int left = 0;
+    for (int y = 0; y < plain.height(); y += 2)
+        for (int x = 0; x < plain.width(); x += 2)
+            left += qAbs(qGreen(plain.pixel(x, y)) - qGreen(again.pixel(x, y))) > 8 ? 1 : 0;
+    QVERIFY2(left < 20, qPrintable(QString::number(left)));
 }
 
 void AuthoringUiTest::cacheBudgetComesFromSettingOrEnvironment_data()

@@ -195,6 +195,7 @@ private Q_SLOTS:
     void texelDensityView_data();
     void texelDensityView();
     void uvCheckerView();
+    void wireframeOverlay();
 
 private:
     Image renderScene(
@@ -781,6 +782,44 @@ void RendererGLTest::uvCheckerView()
     }
     QVERIFY2(
         light > 50 && dark > 50, qPrintable(QStringLiteral("%1 light, %2 dark pixels").arg(light).arg(dark)));
+}
+
+void RendererGLTest::wireframeOverlay()
+{
+    // View > Wireframe: the sphere's edges drawn over it in kWireframeColor / 2^exposure; the
+    // background and the faces between the edges as before; hidden (back) edges stay hidden.
+    TinyIbl ibl {glm::vec3(0.2f)};
+    RenderScene scene = referenceScene(ibl);
+    scene.mesh = std::make_shared<const Mesh>(makeSphere(16, 8)); // facets several pixels wide
+    scene.meshKey = 300;
+    scene.materials[0].material.setBaseColor(glm::dvec3(0.2));
+    const Image plain = renderScene(scene, FramebufferFormat::RGBA32F, 96);
+    scene.wireframe = true;
+    scene.view.exposureEV = 1.0;
+    const Image wired = renderScene(scene, FramebufferFormat::RGBA32F, 96);
+    const glm::vec3 line = kWireframeColor * 0.5f;
+    int onLines = 0;
+    int changedElsewhere = 0;
+    int interior = 0;
+    for (int y = 0; y < 96; ++y)
+        for (int x = 0; x < 96; ++x) {
+            const glm::vec3 before(plain.at(x, y));
+            const glm::vec3 after(wired.at(x, y));
+            if (glm::length(after - before) < 1e-6f)
+                continue;
+            if (glm::length(after - line) < 1e-4f)
+                ++onLines;
+            else
+                ++changedElsewhere;
+        }
+    for (const SpherePixel& p : interiorPixels(96))
+        interior += p.x >= 0 ? 1 : 0; // every interior pixel
+    // The 16 x 8 sphere's edges cover a share of its pixels at this size, far from all of them.
+    QVERIFY2(onLines > interior / 20 && onLines < interior / 2,
+        qPrintable(QStringLiteral("%1 line pixels of %2").arg(onLines).arg(interior)));
+    QCOMPARE(changedElsewhere, 0);
+    // The corners are background: untouched.
+    QVERIFY(glm::length(glm::vec3(wired.at(0, 0)) - glm::vec3(plain.at(0, 0))) < 1e-6f);
 }
 
 #include "RendererGLTest.moc"

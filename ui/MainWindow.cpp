@@ -299,6 +299,12 @@ void MainWindow::createViewMenu()
     connect(fly, &QAction::toggled, m_camera, &CameraController::setFlyMode);
     connect(m_camera, &CameraController::flyModeChanged, fly, &QAction::setChecked);
 
+    // The mesh's edges over the view (an inspection aid; not saved with the project).
+    QAction* wireframe = menu->addAction(tr("&Wireframe"));
+    wireframe->setObjectName(QStringLiteral("wireframeAction"));
+    wireframe->setCheckable(true);
+    wireframe->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_W));
+    connect(wireframe, &QAction::toggled, m_scene, &SceneController::setWireframe);
     menu->addSeparator();
     QAction* turntable = menu->addAction(tr("&Turntable"));
     turntable->setObjectName(QStringLiteral("turntableAction"));

@@ -492,6 +492,7 @@ RenderScene SceneController::scene(const std::shared_ptr<const IblTextures>& ibl
     RenderScene scene = sceneFromProject(m_document->project(), m_assets, ibl, options);
     applyTurntable(scene, TurntableSubject::Object, m_objectTurntableDegrees);
     applyTurntable(scene, TurntableSubject::Environment, m_environmentTurntableDegrees);
+    scene.wireframe = m_wireframe;
     return scene;
 }
 
@@ -503,6 +504,14 @@ IblMethod SceneController::refinementMethod() const
 glm::dmat4 SceneController::modelMatrix() const
 {
     return turntableModelMatrix(m_objectTurntableDegrees);
+}
+
+void SceneController::setWireframe(bool on)
+{
+    if (on == m_wireframe)
+        return;
+    m_wireframe = on;
+    Q_EMIT sceneChanged(false);
 }
 
 void SceneController::setTurntableAngles(double objectDegrees, double environmentDegrees)

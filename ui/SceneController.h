@@ -117,6 +117,10 @@ public:
     // about +Y by objectTurntableDegrees, the environment by environmentTurntableDegrees on top of
     // the project's rotation.
     void setTurntableAngles(double objectDegrees, double environmentDegrees);
+    // View > Wireframe: the mesh's edges over the view and its stills (RenderScene::wireframe);
+    // an inspection aid of the window, not part of the project.
+    void setWireframe(bool on);
+    bool wireframe() const { return m_wireframe; }
     double objectTurntableDegrees() const { return m_objectTurntableDegrees; }
     // The matrix the mesh of assets() is drawn with (scene().modelMatrix): the object turntable's
     // rotation about +Y, identity without one. Picking (ui/PartPicker.h) casts its rays against it.
@@ -205,6 +209,7 @@ private:
     LoadCounts m_loadCounts;
     double m_objectTurntableDegrees = 0.0;
     double m_environmentTurntableDegrees = 0.0;
+    bool m_wireframe = false;
 };
 
 } // namespace facet
