@@ -154,8 +154,10 @@ glm::dvec4 sampleTexture(
             image, wrapTexel(tx, width, sampler.wrapS), wrapTexel(ty, height, sampler.wrapT), colorSpace);
     };
     // NEAREST: the texel the point falls in (t = 0 is the bottom row, MapImage's row 0).
-    if (sampler.magFilter == TextureFilter::Nearest)
-        return at(std::floor(uv.x * width), std::floor(uv.y * height));
+    if (sampler.magFilter == TextureFilter::Nearest) {
+        const glm::ivec2 texel = texelAt(image, uv, sampler);
+        return texelValue(image, texel.x, texel.y, colorSpace);
+    }
     // LINEAR: texel space with centres at integers.
     const double x = uv.x * width - 0.5;
     const double y = uv.y * height - 0.5;
@@ -170,6 +172,14 @@ glm::dvec4 sampleTexture(
     const glm::dvec4 bottom = glm::mix(at(x0, y0), at(x0 + 1.0, y0), fx);
     const glm::dvec4 top = glm::mix(at(x0, y0 + 1.0), at(x0 + 1.0, y0 + 1.0), fx);
     return glm::mix(bottom, top, fy);
+}
+
+glm::ivec2 texelAt(const MapImage& image, const glm::dvec2& uv, const TextureSampler& sampler)
+{
+    if (image.isEmpty())
+        return glm::ivec2(0);
+    return glm::ivec2(wrapTexel(std::floor(uv.x * image.width()), image.width(), sampler.wrapS),
+        wrapTexel(std::floor(uv.y * image.height()), image.height(), sampler.wrapT));
 }
 
 glm::dvec4 sampleMap(const MaterialMap& map, const MapImage& image, const TexCoords& uvs)

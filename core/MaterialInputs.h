@@ -19,6 +19,7 @@
 #include <optional>
 #include <array>
 
+#include <glm/ext/vector_int2.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -64,6 +65,11 @@ glm::dvec4 texelValue(const MapImage& image, int x, int rowFromBottom, ColorEnco
 // (0, 0, 0, 1).
 glm::dvec4 sampleTexture(const MapImage& image, ColorEncoding colorSpace, const glm::dvec2& uv,
     const TextureSampler& sampler = {});
+
+// The texel (x, row from the bottom) a read at `uv` falls in: the one NEAREST magnification takes
+// (the bottom-left of LINEAR's four otherwise is not "the" texel), wrapped as `sampler` wraps.
+// (0, 0) for an empty image.
+glm::ivec2 texelAt(const MapImage& image, const glm::dvec2& uv, const TextureSampler& sampler = {});
 
 // A surface point's texture coordinates, per set (TEXCOORD_0, TEXCOORD_1: core/Mesh.h Vertex::uv,
 // uv1), before any map's UV transform.

@@ -168,6 +168,8 @@ std::optional<Image> FrameRenderer::renderImage(const RenderScene& scene, int wi
     FrameOutput output, std::string* error, FramebufferFormat format)
 {
     Framebuffer* hdr = target(width, height, format, 0, error);
+    if (hdr == m_shown)
+        m_shown = nullptr; // it will hold this image, not the one shown
     if (!hdr || !m_renderer->render(scene, *hdr, error))
         return std::nullopt;
     return readBack(*hdr, scene, output, error);
@@ -208,6 +210,8 @@ std::optional<Image> FrameRenderer::renderConverged(const RenderScene& scene, in
     if (!m_accumulator)
         m_accumulator = std::make_unique<FrameAccumulator>();
     Framebuffer* frame = target(width, height, FramebufferFormat::RGBA32F, 0, error);
+    if (frame == m_shown)
+        m_shown = nullptr; // it will hold this image, not the one shown
     if (!frame || !m_accumulator->reset(width, height, error))
         return std::nullopt;
     RenderScene draw = scene;
@@ -284,6 +288,7 @@ bool FrameRenderer::present(
 bool FrameRenderer::show(
     const Framebuffer& hdr, const ViewSettings& view, unsigned framebuffer, const FrameRect& rect, std::string* error)
 {
+    m_shown = &hdr;
     const int width = hdr.width();
     const int height = hdr.height();
     const bool direct = rect.x == 0 && rect.y == 0 && width == rect.width && height == rect.height;
@@ -451,6 +456,21 @@ const std::optional<FrameAccumulator::Spread>& FrameRenderer::refinementSpread(i
     static const std::optional<FrameAccumulator::Spread> none;
     const auto found = m_views.find(slot);
     return found != m_views.end() ? found->second->spread : none;
+}
+
+std::optional<glm::vec4> FrameRenderer::shownRadiance(double fx, double fy) const
+{
+    if (!m_shown || !(fx >= 0.0 && fx < 1.0 && fy >= 0.0 && fy < 1.0))
+        return std::nullopt;
+    // m_shown may have been freed since (a pooled target evicted, a refinement dropped or resized):
+    // read it only while it is still one of the live targets.
+    bool live = std::any_of(m_targets.begin(), m_targets.end(),
+        [this](const PooledTarget& t) { return &t.framebuffer == m_shown; });
+    for (const auto& [slot, view] : m_views)
+        live = live || (view->frame && &*view->frame == m_shown) || (view->held && &*view->held == m_shown);
+    if (!live)
+        return std::nullopt;
+    return m_shown->readPixel(int(fx * m_shown->width()), int(fy * m_shown->height()));
 }
 
 void FrameRenderer::dropRefinements(const std::function<bool(int slot)>& keep)

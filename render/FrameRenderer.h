@@ -197,6 +197,13 @@ public:
     // Frees the refinements of the slots `keep` says no (their targets and accumulation).
     void dropRefinements(const std::function<bool(int slot)>& keep);
 
+    // The linear radiance (the HDR target as it is: no exposure, no tone mapping) of the frame the
+    // last present() or refine() showed (a reduced preview, the refinement's held frame or its
+    // mean), at the point (fx, fy) of its rectangle, fractions from the top-left corner; the value
+    // picker's reading (ui/ValuePicker.h). nullopt before any frame, outside [0, 1), or when that
+    // target is gone.
+    std::optional<glm::vec4> shownRadiance(double fx, double fy) const;
+
     // The size present() rendered at in its last call.
     int lastRenderWidth() const { return m_lastWidth; }
     int lastRenderHeight() const { return m_lastHeight; }
@@ -243,6 +250,7 @@ private:
     std::list<PooledTarget> m_targets; // most recently used first
     int m_lastWidth = 0;
     int m_lastHeight = 0;
+    const Framebuffer* m_shown = nullptr; // what show() last showed (may be gone since: checked)
 };
 
 } // namespace facet

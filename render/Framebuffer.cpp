@@ -172,9 +172,13 @@ void Framebuffer::clear(const glm::vec4& color, float depth) const
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
-Image Framebuffer::readPixels() const
+namespace {
+
+// Reads a rectangle (origin bottom-left, GL's) of `framebuffer`'s colour (`type`: GL_FLOAT or
+// GL_UNSIGNED_BYTE, RGBA) into `out`, bottom row first, keeping the caller's GL_READ_FRAMEBUFFER,
+// read buffer and pixel-pack state. False when GL reported an error (a multisampled framebuffer).
+bool readRegion(GLuint framebuffer, int x, int y, int width, int height, GLenum type, void* out)
 {
-    Q_ASSERT(m_framebuffer);
     GLint previousReadFramebuffer = 0;
     GLint previousPackBuffer = 0;
     GLint previousPackAlignment = 4;
@@ -183,22 +187,32 @@ Image Framebuffer::readPixels() const
     glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &previousPackBuffer);
     glGetIntegerv(GL_PACK_ALIGNMENT, &previousPackAlignment);
     glGetIntegerv(GL_PACK_ROW_LENGTH, &previousPackRowLength);
+    while (glGetError() != GL_NO_ERROR) { }
 
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_framebuffer);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+    glReadBuffer(framebuffer == 0 ? GL_BACK : GL_COLOR_ATTACHMENT0);
     glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-
     // GL_FLOAT read-back of a float target returns the stored values unclamped.
-    const std::size_t rowFloats = std::size_t(m_width) * 4;
-    std::vector<float> bottomUp(rowFloats * std::size_t(m_height));
-    glReadPixels(0, 0, m_width, m_height, GL_RGBA, GL_FLOAT, bottomUp.data());
+    glReadPixels(x, y, width, height, GL_RGBA, type, out);
+    const bool ok = glGetError() == GL_NO_ERROR;
 
     glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(previousReadFramebuffer));
     glBindBuffer(GL_PIXEL_PACK_BUFFER, GLuint(previousPackBuffer));
     glPixelStorei(GL_PACK_ALIGNMENT, previousPackAlignment);
     glPixelStorei(GL_PACK_ROW_LENGTH, previousPackRowLength);
+    return ok;
+}
+
+} // namespace
+
+Image Framebuffer::readPixels() const
+{
+    Q_ASSERT(m_framebuffer);
+    const std::size_t rowFloats = std::size_t(m_width) * 4;
+    std::vector<float> bottomUp(rowFloats * std::size_t(m_height));
+    readRegion(m_framebuffer, 0, 0, m_width, m_height, GL_FLOAT, bottomUp.data());
 
     Image image(m_width, m_height);
     static_assert(sizeof(glm::vec4) == 4 * sizeof(float), "Image rows are packed RGBA floats");
@@ -207,6 +221,25 @@ Image Framebuffer::readPixels() const
         std::memcpy(&image.at(0, row), source, rowFloats * sizeof(float));
     }
     return image;
+}
+
+std::optional<glm::vec4> Framebuffer::readPixel(int x, int row) const
+{
+    Q_ASSERT(m_framebuffer);
+    if (x < 0 || row < 0 || x >= m_width || row >= m_height)
+        return std::nullopt;
+    glm::vec4 value(0.0f);
+    if (!readRegion(m_framebuffer, x, m_height - 1 - row, 1, 1, GL_FLOAT, &value))
+        return std::nullopt;
+    return value;
+}
+
+std::optional<glm::u8vec4> readDisplayPixel(unsigned framebuffer, int x, int yFromBottom)
+{
+    glm::u8vec4 value(0);
+    if (x < 0 || yFromBottom < 0 || !readRegion(framebuffer, x, yFromBottom, 1, 1, GL_UNSIGNED_BYTE, &value))
+        return std::nullopt;
+    return value;
 }
 
 } // namespace facet

@@ -5,6 +5,7 @@
 
 #include "core/Image.h"
 
+#include <glm/ext/vector_uint4_sized.hpp>
 #include <glm/vec4.hpp>
 
 #include <optional>
@@ -46,6 +47,9 @@ public:
     // Reads the colour attachment as float RGBA, top row first (GL's rows are bottom-up). Keeps the
     // caller's GL_READ_FRAMEBUFFER and pixel-pack state.
     Image readPixels() const;
+    // One texel, x from the left, `row` from the TOP (as readPixels() orders them); nullopt
+    // outside the target.
+    std::optional<glm::vec4> readPixel(int x, int row) const;
 
 private:
     Framebuffer() = default;
@@ -58,5 +62,11 @@ private:
     unsigned int m_colorTexture = 0;
     unsigned int m_depthRenderbuffer = 0;
 };
+
+// One pixel of an 8-bit framebuffer (a window's, a widget's: what the screen shows), x from the
+// left, y from the BOTTOM (GL's); `framebuffer` 0 reads the default one's back buffer. nullopt
+// when it cannot be read (a multisampled framebuffer, a pixel outside it on some drivers).
+// Keeps the caller's read framebuffer and pixel-pack state.
+std::optional<glm::u8vec4> readDisplayPixel(unsigned framebuffer, int x, int yFromBottom);
 
 } // namespace facet

@@ -8,10 +8,8 @@
 //   for its text.
 // - Presets take Ctrl+1..9: the number key alone changes nothing; with Ctrl the look changes and the
 //   name and maps stay, and the status bar says what changed.
-// - View > Wireframe (Shift+W) draws the mesh's edges over the view and takes them away again.
-// - Inspect Map… on a packed ORM file: each channel's thumbnail, what it feeds, its histogram and
-//   numbers (ui/MapInspectorDialog).
-// (Moving materials and maps between places: tests/MaterialTransferUiTest.cpp.)
+// (Moving materials and maps between places: tests/MaterialTransferUiTest.cpp; inspection, the
+// value picker, Inspect Map and the wireframe: tests/InspectionUiTest.cpp.)
 // - The cache budget (ui/CacheBudget, Edit > Preferences): where the number comes from (setting,
 //   FACET_CACHE_BUDGET_MB, default, each out of range), and the window's IBL cache keeping to it
 //   while environments change, a new budget applying at the next frame; freed memory handed back
@@ -20,14 +18,12 @@
 
 #include "core/FreedMemory.h"
 #include "core/Image.h"
-#include "core/MapImageCache.h"
 #include "ui/CacheBudget.h"
 #include "ui/ColorButton.h"
 #include "ui/Document.h"
 #include "ui/ExportDialog.h"
 #include "ui/FreedMemoryTimer.h"
 #include "ui/MainWindow.h"
-#include "ui/MapInspectorDialog.h"
 #include "ui/MapSlotWidget.h"
 #include "ui/MaterialDock.h"
 #include "ui/MaterialTransfer.h"
@@ -117,8 +113,6 @@ private Q_SLOTS:
     void normalStrengthAndUvScaleAsTheFormatHasThem();
     void messagesStayWhileTrueAndGoWhenNot();
     void docksShowEnoughAtASmallSize();
-    void inspectAPackedMap();
-    void wireframeFromTheViewMenu();
     void cacheBudgetComesFromSettingOrEnvironment_data();
     void cacheBudgetComesFromSettingOrEnvironment();
     void theLightingCacheKeepsToTheBudget();
@@ -490,86 +484,6 @@ void AuthoringUiTest::docksShowEnoughAtASmallSize()
 
 // Edit > Copy Material and Paste Material (Ctrl+Shift+C / V): Red's factors and maps onto Blue,
 // whose name stays, in one undo step; a clipboard without a material changes nothing and says so.
-void AuthoringUiTest::inspectAPackedMap()
-{
-    m_document->newProject();
-    // An ORM file: R a left-to-right gradient (occlusion), G 128 (roughness), B 255 (metallic).
-    const QString orm = m_dir.filePath(QStringLiteral("inspect_orm.png"));
-    QImage image(32, 16, QImage::Format_RGB888);
-    for (int y = 0; y < 16; ++y)
-        for (int x = 0; x < 32; ++x)
-            image.setPixelColor(x, y, QColor(x * 8, 128, 255));
-    QVERIFY(image.save(orm));
-    Material material = m_document->project().material();
-    const std::pair<MapSlot, MapChannel> reads[] = {{MapSlot::Occlusion, MapChannel::R},
-        {MapSlot::Roughness, MapChannel::G}, {MapSlot::Metallic, MapChannel::B}};
-    for (const auto& [slot, channel] : reads) {
-        material.map(slot).path = orm.toStdString();
-        material.map(slot).channel = channel;
-    }
-    m_document->setMaterial(material, QStringLiteral("ORM"));
-    TextureMapsDock* maps = m_window->textureMapsDock();
-    QVERIFY(!maps->slotWidget(MapSlot::Normal)->inspectMap()); // no file
-    QCOMPARE(m_window->statusMessage(), QStringLiteral("Inspect Map: the normal slot has no file"));
-    MapInspectorDialog* dialog = maps->slotWidget(MapSlot::Roughness)->inspectMap();
-    QVERIFY(dialog);
-    QCOMPARE(dialog->channelCaptions(),
-        (QStringList {QStringLiteral("R: ambient occlusion"), QStringLiteral("G: roughness (this slot)"),
-            QStringLiteral("B: metallic")}));
-    const QStringList summaries = dialog->channelSummaries();
-    QCOMPARE(summaries.value(0), QStringLiteral("min 0.000 · max 0.973 · mean 0.486")); // 0..248 / 255
-    QCOMPARE(summaries.value(1), QStringLiteral("min 0.502 · max 0.502 · mean 0.502"));
-    QCOMPARE(summaries.value(2), QStringLiteral("min 1.000 · max 1.000 · mean 1.000"));
-    dialog->close();
-    // The histogram as drawn: one full-height bar for a constant, none where no value falls.
-    std::array<std::uint64_t, 256> histogram {};
-    histogram[128] = 512;
-    const QImage bars = MapInspectorDialog::histogramImage(histogram, QSize(256, 64));
-    QVERIFY(bars.pixelColor(128, 0).lightness() > 200 && bars.pixelColor(128, 63).lightness() > 200);
-    QVERIFY(bars.pixelColor(10, 63).lightness() < 60);
-    // The channel thumbnail keeps the file's top row at the top: the gradient runs left to right.
-    std::string error;
-    const auto decoded = MapImageCache::shared().load(orm.toStdString(), &error);
-    QVERIFY2(decoded, error.c_str());
-    const QImage red = MapInspectorDialog::channelThumbnail(*decoded, 0, 128);
-    QCOMPARE(red.size(), QSize(32, 16));
-    QCOMPARE(qGray(red.pixel(31, 0)), 248);
-    QCOMPARE(qGray(red.pixel(0, 15)), 0);
-}
-
-void AuthoringUiTest::wireframeFromTheViewMenu()
-{
-    m_document->newProject();
-    ViewportWidget* viewport = m_window->viewport();
-    const auto frame = [&] {
-        QSignalSpy rendered(viewport, &ViewportWidget::frameRendered);
-        viewport->update();
-        rendered.wait(30000);
-        (void)QTest::qWaitFor([viewport] { return !viewport->isPreviewing(); }, 10000);
-        return viewport->grabFramebuffer();
-    };
-    const QImage plain = frame();
-    QAction* wireframe = child<QAction>("wireframeAction");
-    QVERIFY(wireframe && wireframe->isCheckable());
-    QCOMPARE(wireframe->shortcut(), QKeySequence(Qt::SHIFT | Qt::Key_W));
-    wireframe->trigger();
-    QVERIFY(m_window->sceneController()->wireframe());
-    const QImage wired = frame();
-    int changed = 0;
-    for (int y = 0; y < plain.height(); y += 2)
-        for (int x = 0; x < plain.width(); x += 2)
-            changed += plain.pixel(x, y) != wired.pixel(x, y) ? 1 : 0;
-    QVERIFY2(changed > 100, qPrintable(QString::number(changed)));
-    wireframe->trigger();
-    QVERIFY(!m_window->sceneController()->wireframe());
-    const QImage again = frame();
-    int left = 0;
-    for (int y = 0; y < plain.height(); y += 2)
-        for (int x = 0; x < plain.width(); x += 2)
-            left += qAbs(qGreen(plain.pixel(x, y)) - qGreen(again.pixel(x, y))) > 8 ? 1 : 0;
-    QVERIFY2(left < 20, qPrintable(QString::number(left)));
-}
-
 void AuthoringUiTest::cacheBudgetComesFromSettingOrEnvironment_data()
 {
     QTest::addColumn<QVariant>("setting"); // invalid: none stored

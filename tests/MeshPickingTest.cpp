@@ -3,12 +3,18 @@
 // behind with and without culling, hidden parts, translated / rotated / scaled / mirrored model
 // matrices), and the ray through a pixel checked against the projection the renderer uses: a
 // world point projected with Camera::viewMatrix/projectionMatrix to a pixel lies on the ray
-// cameraRay gives for that pixel. Needs nothing.
+// cameraRay gives for that pixel. And what the value picker reads at a hit (core/SurfaceProbe.h):
+// a table of one map at a time and all together on a textured quad (the texel the point falls in,
+// counted from the top as an image editor does; stored, decoded and filtered values; the map's
+// UV set, transform and wrap; channel pick and inversion into the material's inputs; the normal
+// map's tilt; model rotation and back faces; a released map read as absent). Needs nothing.
 
 #include "core/MeshPicking.h"
 #include "core/Camera.h"
 #include "core/Mesh.h"
 #include "core/MeshPrimitives.h"
+#include "core/SurfaceProbe.h"
+#include "core/ToneMap.h"
 
 #include <QtTest/QTest>
 
@@ -112,6 +118,10 @@ private Q_SLOTS:
     void rayThroughAPixelMeetsWhatProjectsThere_data();
     void rayThroughAPixelMeetsWhatProjectsThere();
     void centreAndCornerRays();
+    void surfaceProbeReadsEachMap_data();
+    void surfaceProbeReadsEachMap();
+    void surfaceProbeFrame_data();
+    void surfaceProbeFrame();
 };
 
 void MeshPickingTest::picksTheNearestVisiblePart_data()
@@ -339,6 +349,256 @@ void MeshPickingTest::centreAndCornerRays()
     const PickRay corner = cameraRay(camera, 64, 64, {0, 0});
     const double t = std::tan(glm::radians(22.5));
     QVERIFY(glm::length(corner.direction - glm::normalize(glm::dvec3(-t, t, -1))) < 1e-12);
+}
+
+namespace {
+
+// The unit quad [0, 1]^2 at z = 0 facing +Z: TEXCOORD_0 = (x, y), TEXCOORD_1 = (1 - x, y), tangent +X.
+Mesh texturedQuad()
+{
+    Mesh mesh = meshOf({Quad {0, 1, 0, 1, 0}});
+    for (Vertex& v : mesh.vertices) {
+        v.uv = glm::vec2(v.position.x, v.position.y);
+        v.uv1 = glm::vec2(1.0f - v.position.x, v.position.y);
+        v.tangent = glm::vec4(1, 0, 0, 1);
+    }
+    mesh.hasUvs = mesh.hasTangents = mesh.hasTexCoord1 = true;
+    return mesh;
+}
+
+// A 4x4 RGBA8 map whose texel (x, y from the top) stores ((64x + 16) / 255, (64y + 32) / 255,
+// 128 / 255, 1): every texel tells where it is.
+std::shared_ptr<const MapImage> locatingMap()
+{
+    Image pixels(4, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x)
+            pixels.at(x, y) = glm::vec4((64 * x + 16) / 255.0f, (64 * y + 32) / 255.0f, 128 / 255.0f, 1.0f);
+    return std::make_shared<const MapImage>(
+        MapImage::fromImage(pixels, MapLayout::Rgba, MapSampleType::UInt8));
+}
+
+glm::dvec4 storedAt(int x, int yFromTop)
+{
+    return glm::dvec4((64 * x + 16) / 255.0, (64 * yFromTop + 32) / 255.0, 128 / 255.0, 1.0);
+}
+
+bool near(const glm::dvec4& a, const glm::dvec4& b, double tolerance = 1e-6)
+{
+    return glm::length(a - b) <= tolerance;
+}
+
+SurfaceProbe probeQuadAt(const Material& material, const MaterialMapImages& images, const glm::dvec2& point)
+{
+    const Mesh mesh = texturedQuad();
+    const std::optional<MeshHit> hit
+        = pickMesh(mesh, glm::dmat4(1.0), PickRay {glm::dvec3(point, 5.0), glm::dvec3(0, 0, -1)});
+    if (!hit)
+        return {};
+    return probeSurface(mesh, glm::dmat4(1.0), *hit, material, images);
+}
+
+enum class MapCase {
+    BaseColorSrgb, // decoded per texel: linear != stored
+    RoughnessGreenInverted, // channel pick and inversion feed the input
+    MetallicBlueUvTransform, // the map's UV transform moves the texel
+    OcclusionSet1, // TEXCOORD_1
+    RoughnessWrapsBeyondOne, // UV scale 2: point 0.8 reads uv 1.6, texel of 0.6
+    ReleasedMapIsAbsent, // a map without pixels (the window let it go): the factor alone
+    AllTogether, // base colour, roughness and metallic at once, each its own read
+};
+
+} // namespace
+
+Q_DECLARE_METATYPE(MapCase)
+
+void MeshPickingTest::surfaceProbeReadsEachMap_data()
+{
+    QTest::addColumn<MapCase>("which");
+    QTest::newRow("base colour, sRGB") << MapCase::BaseColorSrgb;
+    QTest::newRow("roughness: green, inverted") << MapCase::RoughnessGreenInverted;
+    QTest::newRow("metallic: blue, UV transform") << MapCase::MetallicBlueUvTransform;
+    QTest::newRow("occlusion: TEXCOORD_1") << MapCase::OcclusionSet1;
+    QTest::newRow("roughness: UV beyond 1 repeats") << MapCase::RoughnessWrapsBeyondOne;
+    QTest::newRow("released map: factor alone") << MapCase::ReleasedMapIsAbsent;
+    QTest::newRow("all together") << MapCase::AllTogether;
+}
+
+void MeshPickingTest::surfaceProbeReadsEachMap()
+{
+    QFETCH(MapCase, which);
+    const std::shared_ptr<const MapImage> map = locatingMap();
+    const MapImage released = MapImage::withoutPixels(*map);
+    Material material;
+    material.map(MapSlot::Roughness).factor = glm::dvec4(0.5);
+    MaterialMapImages images {};
+    const auto give = [&](MapSlot slot, const MapImage* image = nullptr) {
+        material.map(slot).path = "locating.png";
+        images[std::size_t(slot)] = image ? image : map.get();
+    };
+    // The centre of texel (1, 1 from the top) = (1, 2 from the bottom): uv (0.375, 0.625).
+    glm::dvec2 point(0.375, 0.625);
+    switch (which) {
+    case MapCase::BaseColorSrgb:
+        give(MapSlot::BaseColor);
+        material.map(MapSlot::BaseColor).colorSpace = ColorEncoding::SRGB;
+        break;
+    case MapCase::RoughnessGreenInverted:
+        give(MapSlot::Roughness);
+        material.map(MapSlot::Roughness).channel = MapChannel::G;
+        material.map(MapSlot::Roughness).invert = true;
+        material.map(MapSlot::Roughness).factor = glm::dvec4(1.0);
+        break;
+    case MapCase::MetallicBlueUvTransform:
+        give(MapSlot::Metallic);
+        material.map(MapSlot::Metallic).channel = MapChannel::B;
+        material.map(MapSlot::Metallic).factor = glm::dvec4(1.0);
+        material.map(MapSlot::Metallic).uv.offset = glm::dvec2(0.25, 0.0); // one texel right
+        break;
+    case MapCase::OcclusionSet1:
+        give(MapSlot::Occlusion);
+        material.map(MapSlot::Occlusion).texCoord = 1; // u = 1 - x = 0.625: texel 2
+        break;
+    case MapCase::RoughnessWrapsBeyondOne:
+        give(MapSlot::Roughness);
+        material.map(MapSlot::Roughness).uv.scale = glm::dvec2(2.0, 1.0);
+        point = glm::dvec2(0.6875, 0.625); // u 1.375: texel 1 again
+        break;
+    case MapCase::ReleasedMapIsAbsent:
+        give(MapSlot::Roughness, &released);
+        break;
+    case MapCase::AllTogether:
+        give(MapSlot::BaseColor);
+        give(MapSlot::Roughness);
+        give(MapSlot::Metallic);
+        material.map(MapSlot::Roughness).channel = MapChannel::G;
+        material.map(MapSlot::Metallic).channel = MapChannel::B;
+        material.map(MapSlot::Metallic).factor = glm::dvec4(1.0);
+        break;
+    }
+    const SurfaceProbe probe = probeQuadAt(material, images, point);
+    QVERIFY(glm::length(probe.uvs[0] - point) < 1e-9);
+    QVERIFY(glm::length(probe.uvs[1] - glm::dvec2(1.0 - point.x, point.y)) < 1e-9);
+
+    const auto readOf = [&](MapSlot slot) -> const MapProbe* {
+        for (const MapProbe& read : probe.maps)
+            if (read.slot == slot)
+                return &read;
+        return nullptr;
+    };
+    switch (which) {
+    case MapCase::BaseColorSrgb: {
+        const MapProbe* read = readOf(MapSlot::BaseColor);
+        QVERIFY(read);
+        QCOMPARE(read->texel, glm::ivec2(1, 1));
+        QCOMPARE(read->size, glm::ivec2(4, 4));
+        QVERIFY(near(read->stored, storedAt(1, 1)));
+        const glm::dvec4 decoded(tonemap::srgbToLinear(storedAt(1, 1).r),
+            tonemap::srgbToLinear(storedAt(1, 1).g), tonemap::srgbToLinear(storedAt(1, 1).b), 1.0);
+        QVERIFY(near(read->linear, decoded, 1e-6));
+        QVERIFY(near(read->filtered, read->linear, 1e-9)); // a texel centre reads the texel
+        const glm::dvec3 factor(material.baseColorFactor());
+        QVERIFY(glm::length(probe.inputs.baseColor - factor * glm::dvec3(decoded)) < 1e-6);
+        break;
+    }
+    case MapCase::RoughnessGreenInverted: {
+        const MapProbe* read = readOf(MapSlot::Roughness);
+        QVERIFY(read);
+        QVERIFY(near(read->linear, read->stored)); // a data map is not decoded
+        QVERIFY(std::abs(probe.inputs.perceptualRoughness - (1.0 - storedAt(1, 1).g)) < 1e-6);
+        break;
+    }
+    case MapCase::MetallicBlueUvTransform: {
+        const MapProbe* read = readOf(MapSlot::Metallic);
+        QVERIFY(read);
+        QVERIFY(glm::length(read->uv - glm::dvec2(0.625, 0.625)) < 1e-9);
+        QCOMPARE(read->texel, glm::ivec2(2, 1));
+        QVERIFY(std::abs(probe.inputs.metallic - 128 / 255.0) < 1e-6);
+        break;
+    }
+    case MapCase::OcclusionSet1: {
+        const MapProbe* read = readOf(MapSlot::Occlusion);
+        QVERIFY(read);
+        QCOMPARE(read->texel, glm::ivec2(2, 1));
+        QVERIFY(near(read->stored, storedAt(2, 1)));
+        break;
+    }
+    case MapCase::RoughnessWrapsBeyondOne: {
+        const MapProbe* read = readOf(MapSlot::Roughness);
+        QVERIFY(read);
+        QVERIFY(std::abs(read->uv.x - 1.375) < 1e-9);
+        QCOMPARE(read->texel, glm::ivec2(1, 1));
+        break;
+    }
+    case MapCase::ReleasedMapIsAbsent:
+        QVERIFY(probe.maps.empty());
+        QCOMPARE(probe.inputs.perceptualRoughness, 0.5);
+        break;
+    case MapCase::AllTogether:
+        QCOMPARE(int(probe.maps.size()), 3);
+        QCOMPARE(probe.maps[0].slot, MapSlot::BaseColor); // MapSlot order
+        for (const MapProbe& read : probe.maps) {
+            QCOMPARE(read.texel, glm::ivec2(1, 1));
+            QVERIFY(near(read.stored, storedAt(1, 1)));
+        }
+        QVERIFY(std::abs(probe.inputs.perceptualRoughness - 0.5 * storedAt(1, 1).g) < 1e-6);
+        QVERIFY(std::abs(probe.inputs.metallic - 128 / 255.0) < 1e-6);
+        break;
+    }
+}
+
+void MeshPickingTest::surfaceProbeFrame_data()
+{
+    QTest::addColumn<int>("rotationDegrees"); // about +Y
+    QTest::addColumn<bool>("fromBehind");
+    QTest::addColumn<bool>("normalMap");
+    QTest::addColumn<glm::dvec3>("expectedNormal"); // geometric, world space
+    QTest::newRow("facing the ray") << 0 << false << false << glm::dvec3(0, 0, 1);
+    QTest::newRow("seen from behind: turned to the viewer") << 0 << true << false << glm::dvec3(0, 0, -1);
+    QTest::newRow("rotated 90 degrees") << 90 << false << false << glm::dvec3(1, 0, 0);
+    QTest::newRow("normal map tilts toward +tangent") << 0 << false << true << glm::dvec3(0, 0, 1);
+    QTest::newRow("normal map, rotated") << 90 << false << true << glm::dvec3(1, 0, 0);
+}
+
+void MeshPickingTest::surfaceProbeFrame()
+{
+    QFETCH(int, rotationDegrees);
+    QFETCH(bool, fromBehind);
+    QFETCH(bool, normalMap);
+    QFETCH(glm::dvec3, expectedNormal);
+    const Mesh mesh = texturedQuad();
+    const glm::dmat4 model
+        = glm::rotate(glm::dmat4(1.0), glm::radians(double(rotationDegrees)), glm::dvec3(0, 1, 0));
+    const glm::dvec3 local(0.3, 0.6, 0.0);
+    const glm::dvec3 world(model * glm::dvec4(local, 1.0));
+    const glm::dvec3 facing(model * glm::dvec4(0, 0, fromBehind ? -1 : 1, 0));
+    const PickRay ray {world + 5.0 * facing, -facing};
+    const std::optional<MeshHit> hit = pickMesh(mesh, model, ray);
+    QVERIFY(hit);
+    Material material;
+    MaterialMapImages images {};
+    // A tangent-space normal tilted 45 degrees toward +X: texel (0.5 + 0.5 sin, 0.5, 0.5 + 0.5 cos).
+    Image tilt(1, 1);
+    tilt.at(0, 0) = glm::vec4(0.5f + 0.5f * 0.70710678f, 0.5f, 0.5f + 0.5f * 0.70710678f, 1.0f);
+    const MapImage tiltMap = MapImage::fromImage(tilt, MapLayout::Rgb, MapSampleType::Half);
+    if (normalMap) {
+        material.map(MapSlot::Normal).path = "tilt.exr";
+        images[std::size_t(MapSlot::Normal)] = &tiltMap;
+    }
+    const SurfaceProbe probe = probeSurface(mesh, model, *hit, material, images);
+    QVERIFY(glm::length(probe.position - world) < 1e-9);
+    QVERIFY2(glm::length(probe.geometricNormal - expectedNormal) < 1e-9,
+        qPrintable(QStringLiteral("%1 %2 %3")
+                       .arg(probe.geometricNormal.x)
+                       .arg(probe.geometricNormal.y)
+                       .arg(probe.geometricNormal.z)));
+    if (!normalMap) {
+        QVERIFY(glm::length(probe.shadingNormal - probe.geometricNormal) < 1e-9);
+    } else {
+        const glm::dvec3 tangent(model * glm::dvec4(1, 0, 0, 0));
+        const glm::dvec3 expected = glm::normalize(expectedNormal + tangent); // 45 degrees toward it
+        QVERIFY(glm::length(probe.shadingNormal - expected) < 2e-3); // half-float texel
+    }
 }
 
 QTEST_APPLESS_MAIN(MeshPickingTest)

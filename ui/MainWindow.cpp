@@ -26,6 +26,8 @@
 #include "ui/SceneController.h"
 #include "ui/TextureMapsDock.h"
 #include "ui/UndoShortcutRouter.h"
+#include "ui/ValuePicker.h"
+#include "ui/ValuesDock.h"
 #include "ui/ViewDock.h"
 #include "ui/ViewShareGroup.h"
 #include "ui/ViewStatus.h"
@@ -89,6 +91,7 @@ MainWindow::MainWindow(QWidget* parent, const QString& recoveryDirectory)
     , m_files(new ProjectFileController(m_document, this, this))
     // After the camera: the picker's filter must see presses and releases before the camera's.
     , m_picker(new PartPicker(m_document, m_scene, m_viewport, this))
+    , m_valuePicker(new ValuePicker(m_document, m_scene, m_viewport, m_picker, this))
     , m_drops(new ViewportDropHandler(m_files, m_viewport, this))
     , m_autosave(new AutosaveController(m_document, recoveryDirectory, this))
     , m_compareController(new CompareController(m_document, this))
@@ -305,6 +308,25 @@ void MainWindow::createViewMenu()
     wireframe->setCheckable(true);
     wireframe->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_W));
     connect(wireframe, &QAction::toggled, m_scene, &SceneController::setWireframe);
+    // What the view shows under the cursor, and why (the Values dock).
+    QAction* values = menu->addAction(tr("&Value Picker"));
+    values->setObjectName(QStringLiteral("valuePickerAction"));
+    values->setCheckable(true);
+    values->setShortcut(Qt::Key_I);
+    values->setStatusTip(
+        tr("Read the radiance, the screen value and each map's texel under the cursor; click "
+           "to pin"));
+    connect(values, &QAction::toggled, this, [this](bool on) {
+        m_valuePicker->setActive(on);
+        if (on) {
+            m_valuesDock->show();
+            m_valuesDock->raise();
+            showStatusMessage(
+                tr("Value picker: hover the view, click to pin (Esc follows the cursor again)"));
+        }
+    });
+    connect(m_valuePicker, &ValuePicker::activeChanged, values, &QAction::setChecked);
+    connect(m_valuePicker, &ValuePicker::message, this, &MainWindow::showStatusMessage);
     menu->addSeparator();
     QAction* turntable = menu->addAction(tr("&Turntable"));
     turntable->setObjectName(QStringLiteral("turntableAction"));
@@ -363,6 +385,11 @@ void MainWindow::createDocks()
         addDock(dock, Qt::RightDockWidgetArea);
         tabifyDockWidget(m_textureMapsDock, dock);
     }
+    // The Values dock waits, hidden, for View > Value Picker.
+    m_valuesDock = new ValuesDock(m_valuePicker, this);
+    addDock(m_valuesDock, Qt::RightDockWidgetArea);
+    tabifyDockWidget(m_textureMapsDock, m_valuesDock);
+    m_valuesDock->hide();
     setTabPosition(Qt::RightDockWidgetArea, QTabWidget::East);
     m_textureMapsDock->raise();
     // Tab names whole (issue 30: at 1280 x 720 they read "Texture M…", "Lig…"): a tab bar too short

@@ -40,6 +40,8 @@ class ImageSaver;
 class MaterialDropHandler;
 class SceneController;
 class TextureMapsDock;
+class ValuePicker;
+class ValuesDock;
 class ViewDock;
 class ViewportDropHandler;
 class ViewportWidget;
@@ -61,6 +63,9 @@ public:
     MaterialDock* materialDock() const { return m_materialDock; }
     MaterialsDock* materialsDock() const { return m_materialsDock; }
     PartPicker* partPicker() const { return m_picker; }
+    // View > Value Picker and the Values dock it fills (ui/ValuePicker.h).
+    ValuePicker* valuePicker() const { return m_valuePicker; }
+    ValuesDock* valuesDock() const { return m_valuesDock; }
     ViewportDropHandler* viewportDrops() const { return m_drops; }
     // Materials and presets dropped on a part of the mesh (ui/MaterialTransfer.h).
     MaterialDropHandler* materialDrops() const { return m_materialDrops; }
@@ -135,6 +140,8 @@ private:
     CameraController* m_camera = nullptr;
     ProjectFileController* m_files = nullptr;
     PartPicker* m_picker = nullptr;
+    ValuePicker* m_valuePicker = nullptr;
+    ValuesDock* m_valuesDock = nullptr;
     FreedMemoryTimer* m_freedMemory = nullptr; // hands freed memory back to the system
     ImageSaver* m_imageSaver = nullptr; // File > Save Image…, Save Turntable…
     ViewportDropHandler* m_drops = nullptr;

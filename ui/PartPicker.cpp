@@ -24,6 +24,14 @@ PartPicker::PartPicker(Document* document, SceneController* scene, ViewportWidge
 
 std::optional<int> PartPicker::partAt(const QPointF& position) const
 {
+    const std::optional<MeshHit> hit = hitAt(position);
+    if (!hit)
+        return std::nullopt;
+    return int(hit->subMesh);
+}
+
+std::optional<MeshHit> PartPicker::hitAt(const QPointF& position) const
+{
     const std::shared_ptr<const Mesh>& mesh = m_scene->assets().mesh;
     const int width = m_viewport->width();
     const int height = m_viewport->height();
@@ -38,10 +46,7 @@ std::optional<int> PartPicker::partAt(const QPointF& position) const
     // The renderer's image spans the widget (its resolution does not matter: a ray through the
     // same point of the image is the same ray).
     const PickRay ray = cameraRay(project.camera, width, height, {position.x(), position.y()});
-    const std::optional<MeshHit> hit = pickMesh(*mesh, m_scene->modelMatrix(), ray, parts);
-    if (!hit)
-        return std::nullopt;
-    return int(hit->subMesh);
+    return pickMesh(*mesh, m_scene->modelMatrix(), ray, parts);
 }
 
 QString PartPicker::partName(int part) const

@@ -11,6 +11,8 @@
 // behind only when its material is double-sided, as the renderer draws it. Alpha-masked holes are
 // not taken into account.
 
+#include "core/MeshPicking.h"
+
 #include <QObject>
 #include <QPointF>
 
@@ -36,6 +38,10 @@ public:
     // continuous: the centre of the pixel a mouse event at (x, y) names is (x + 0.5, y + 0.5)), or
     // nullopt where a click would hit nothing.
     std::optional<int> partAt(const QPointF& position) const;
+    // The hit itself (its part, triangle and barycentric coordinates, world position) under
+    // `position`, on the mesh SceneController holds, drawn with its model matrix; the value
+    // picker reads the surface there (ui/ValuePicker.h).
+    std::optional<MeshHit> hitAt(const QPointF& position) const;
     // What a click at `position` does: picks the part there and makes its material current
     // (Document::setCurrentMaterial, a selection, not an undo step). Returns the part. `extend`
     // (a Ctrl-click) adds the part to the selected parts, or takes it out, instead of replacing

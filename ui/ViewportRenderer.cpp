@@ -395,6 +395,18 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
     return true;
 }
 
+ViewportRenderer::ShownPixel ViewportRenderer::shownPixel(
+    unsigned targetFramebuffer, int width, int height, int x, int y) const
+{
+    ShownPixel pixel;
+    if (width <= 0 || height <= 0 || x < 0 || y < 0 || x >= width || y >= height)
+        return pixel;
+    // The shown frame may be smaller than the view (a preview stretched over it): the same point.
+    pixel.radiance = m_frames->shownRadiance((double(x) + 0.5) / width, (double(y) + 0.5) / height);
+    pixel.display = readDisplayPixel(targetFramebuffer, x, height - 1 - y);
+    return pixel;
+}
+
 int ViewportRenderer::holdBackUnreadyMaps(RenderScene& frame, std::string* problem)
 {
     TextureCache& textures = m_frames->textureCache();

@@ -32,6 +32,9 @@
 #include "render/RenderStats.h"
 #include "render/Turntable.h"
 
+#include <glm/ext/vector_uint4_sized.hpp>
+#include <glm/vec4.hpp>
+
 #include <QString>
 
 #include <cstdint>
@@ -159,6 +162,17 @@ public:
     static int nextDrawSamples(int samples, double milliseconds, double budgetMs);
 
     const ViewportFrameStats& lastFrame() const { return m_stats; }
+
+    // What the view shows at device pixel (x, y from the top) of the `width` x `height`
+    // framebuffer it draws into (the value picker, ui/ValuePicker.h): the linear radiance of the
+    // frame shown there (FrameRenderer::shownRadiance: scene-referred, before exposure) and the
+    // 8-bit value on screen (after exposure, tone mapping and the display encoding). Either is
+    // nullopt when it cannot be read (no frame yet, a still rendered since). Context current.
+    struct ShownPixel {
+        std::optional<glm::vec4> radiance;
+        std::optional<glm::u8vec4> display;
+    };
+    ShownPixel shownPixel(unsigned targetFramebuffer, int width, int height, int x, int y) const;
 
     // Map uploads queued by frames (or queueUploads) and not finished yet.
     bool hasPendingUploads() const;

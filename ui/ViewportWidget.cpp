@@ -8,6 +8,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 
+#include <cmath>
 #include <utility>
 
 namespace facet {
@@ -88,7 +89,23 @@ std::optional<Image> ViewportWidget::renderStill(
     std::optional<Image> image
         = m_renderer->renderStill(*m_scene, size.width(), size.height(), output, error, options);
     doneCurrent();
+    // The still may have used the target the view's frame is held in: draw it again, so that what
+    // the value picker reads is what the view shows.
+    update();
     return image;
+}
+
+ViewportRenderer::ShownPixel ViewportWidget::shownPixel(const QPointF& position)
+{
+    if (!m_renderer || m_stats.frameNumber == 0)
+        return {};
+    const qreal ratio = devicePixelRatioF();
+    const QSize size = deviceSize();
+    makeCurrent();
+    ViewportRenderer::ShownPixel pixel = m_renderer->shownPixel(defaultFramebufferObject(), size.width(),
+        size.height(), int(std::floor(position.x() * ratio)), int(std::floor(position.y() * ratio)));
+    doneCurrent();
+    return pixel;
 }
 
 QSize ViewportWidget::deviceSize() const

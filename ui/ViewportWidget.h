@@ -16,6 +16,7 @@
 #include "ui/ViewportRenderer.h"
 
 #include <QOpenGLWidget>
+#include <QPointF>
 #include <QString>
 #include <QTimer>
 
@@ -76,6 +77,11 @@ public:
     // side), rendered offscreen. `options`: transparent background, a turntable's turn.
     std::optional<Image> renderStill(
         FrameOutput output, std::string* error, QSize size = {}, const StillOptions& options = {});
+
+    // What the view shows at `position` (widget coordinates in logical pixels): the shown frame's
+    // linear radiance and the 8-bit value on screen (ViewportRenderer::shownPixel); both empty
+    // before the first frame or outside the widget.
+    ViewportRenderer::ShownPixel shownPixel(const QPointF& position);
 
     // The view's size in device pixels (what a still of the view's own size has).
     QSize deviceSize() const;
