@@ -75,6 +75,9 @@ struct FrameRenderer::ViewRefinement {
     std::optional<Framebuffer> frame; // RGBA32F: one draw, then the resolved mean
     std::optional<Framebuffer> held;  // RGBA16F: the split-sum frame shown until the mean is
     Refinement state;
+    // What a sample of a pixel cost in the last complete draw (ms), to size the next draw's bands;
+    // kept across restarts (0: not known yet).
+    double msPerSamplePixel = 0.0;
     PixelMask mask; // the object, for the noise estimate (Reference)
     // The accumulation read back for the last noise estimate (refinementSpread hands it out, so
     // nothing reads the halves back twice).
@@ -313,7 +316,7 @@ bool FrameRenderer::show(
 }
 
 bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene, unsigned framebuffer,
-    const FrameRect& rect, bool restart, int drawSamples, std::string* error, int slot)
+    const FrameRect& rect, bool restart, int drawSamples, std::string* error, int slot, double sliceMs)
 {
     std::unique_ptr<ViewRefinement>& made = m_views[slot];
     if (!made)
@@ -346,69 +349,119 @@ bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene,
         m_lastHeight = height;
         return show(*view.held, scene.view, framebuffer, rect, error);
     }
-    Refinement& state = view.state;
-    if (!state.done()) {
-        RenderScene draw = scene;
-        draw.view.msaaSamples = 1;
-        draw.sampling.sampleBase = state.samples;
-        // Draws come in pairs of one size k, a power of two, one to each of the accumulator's
-        // halves at one sub-pixel offset (jitterOf). For Reference the halves are independent
-        // runs (seeds run.seed and run.seed ^ kSecondHalfSeed: their own Cranley-Patterson
-        // shifts), each draw the next aligned block of its half's Sobol' points ([S, S + k) with k
-        // dividing S), so each half is a randomised quasi-Monte Carlo estimate as good as one
-        // run, and their difference estimates the mean's error. Halves taking alternate blocks of
-        // one run (as renderConverged's) differ far more than the whole errs: in a white furnace
-        // the estimate read 1% where the error was 0.06%, and 20% where the image had about 1%
-        // with unaligned blocks. So k grows by at most 2x a pair (1, 1, 2, 2, 4, 4 ...) up to the
-        // budget's size, and a pair never takes more than what is left. Fis is one
-        // deterministic run: its draws are consecutive parts of it.
-        const int half = state.draws % 2;
-        const int halfBase = view.accumulator.halfSamples(half);
-        if (half == 1) {
-            drawSamples = state.lastDrawSamples;
-        } else {
-            const int left = state.target - state.samples;
-            int k = 1;
-            while (k * 2 <= std::max(drawSamples, 1) && k * 4 <= left)
-                k *= 2;
-            if (halfBase > 0)
-                k = std::min(k, halfBase & -halfBase);
-            drawSamples = k;
-        }
-        if (scene.sampling.method == IblMethod::Reference) {
-            draw.sampling.sampleBase = halfBase;
-            draw.sampling.seed = half == 0 ? scene.sampling.seed : scene.sampling.seed ^ kSecondHalfSeed;
-        }
-        draw.sampling.samples = std::clamp(drawSamples, 1, state.target - state.samples);
-        state.lastDrawSamples = draw.sampling.samples;
-        draw.sampling.runLength = state.target;
-        draw.subpixelJitter = jitterOf(draw, state.draws);
-        const bool reference = scene.sampling.method == IblMethod::Reference;
-        draw.coverageAlpha = reference && state.draws == 0; // the object, for the noise estimate
-        const Clock::time_point start = Clock::now();
-        if (!accumulateDraw(draw, *view.frame, view.accumulator, view.mask, error))
-            return false;
-        glFinish();
-        state.lastDrawMs = secondsSince(start) * 1000.0;
-        state.seconds += state.lastDrawMs / 1000.0;
-        state.samples += draw.sampling.samples;
-        ++state.draws;
-        // The estimate reads both halves back: after a pair, once the drawing since the last one
-        // took kNoiseIntervalSeconds or four draws' time (whichever is less: a small view checks
-        // often, a large one pays the read-back rarely), and at the end.
-        const double interval = std::min(kNoiseIntervalSeconds, 4.0 * state.lastDrawMs / 1000.0);
-        if (reference
-            && (state.samples >= state.target
-                || (state.draws % 2 == 0 && state.seconds - state.noiseSeconds >= interval))) {
-            if (std::optional<FrameAccumulator::Spread> spread = view.accumulator.spread()) {
-                state.noise = relativeNoiseRmse(spread->mean, spread->variance, view.mask);
-                state.noiseSeconds = state.seconds;
-                view.spread = std::move(spread);
-            }
-        }
-    }
+    if (!view.state.done() && !drawStep(view, scene, width, height, drawSamples, sliceMs, error))
+        return false;
     m_lastWidth = width;
     m_lastHeight = height;
+    return showRefinement(view, scene, framebuffer, rect, error);
+}
+
+bool FrameRenderer::continueDraw(const RenderScene& scene, std::string* error, int slot)
+{
+    const auto found = m_views.find(slot);
+    if (found == m_views.end() || !found->second->frame || found->second->state.bandsDrawn == 0)
+        return true; // no draw under way
+    ViewRefinement& view = *found->second;
+    return drawStep(
+        view, scene, view.frame->width(), view.frame->height(), view.state.lastDrawSamples, 0.0, error);
+}
+
+bool FrameRenderer::drawStep(ViewRefinement& view, const RenderScene& scene, int width, int height,
+    int drawSamples, double sliceMs, std::string* error)
+{
+    Refinement& state = view.state;
+    RenderScene draw = scene;
+    draw.view.msaaSamples = 1;
+    draw.sampling.sampleBase = state.samples;
+    // Draws come in pairs of one size k, a power of two, one to each of the accumulator's
+    // halves at one sub-pixel offset (jitterOf). For Reference the halves are independent
+    // runs (seeds run.seed and run.seed ^ kSecondHalfSeed: their own Cranley-Patterson
+    // shifts), each draw the next aligned block of its half's Sobol' points ([S, S + k) with k
+    // dividing S), so each half is a randomised quasi-Monte Carlo estimate as good as one
+    // run, and their difference estimates the mean's error. Halves taking alternate blocks of
+    // one run (as renderConverged's) differ far more than the whole errs: in a white furnace
+    // the estimate read 1% where the error was 0.06%, and 20% where the image had about 1%
+    // with unaligned blocks. So k grows by at most 2x a pair (1, 1, 2, 2, 4, 4 ...) up to the
+    // budget's size, and a pair never takes more than what is left. Fis is one
+    // deterministic run: its draws are consecutive parts of it.
+    const int half = state.draws % 2;
+    const int halfBase = view.accumulator.halfSamples(half);
+    if (half == 1 || state.bandsDrawn > 0) {
+        drawSamples = state.lastDrawSamples; // the pair's size, or the draw under way
+    } else {
+        const int left = state.target - state.samples;
+        int k = 1;
+        while (k * 2 <= std::max(drawSamples, 1) && k * 4 <= left)
+            k *= 2;
+        if (halfBase > 0)
+            k = std::min(k, halfBase & -halfBase);
+        drawSamples = k;
+    }
+    if (scene.sampling.method == IblMethod::Reference) {
+        draw.sampling.sampleBase = halfBase;
+        draw.sampling.seed = half == 0 ? scene.sampling.seed : scene.sampling.seed ^ kSecondHalfSeed;
+    }
+    draw.sampling.samples = std::clamp(drawSamples, 1, state.target - state.samples);
+    state.lastDrawSamples = draw.sampling.samples;
+    draw.sampling.runLength = state.target;
+    draw.subpixelJitter = jitterOf(draw, state.draws);
+    const bool reference = scene.sampling.method == IblMethod::Reference;
+    draw.coverageAlpha = reference && state.draws == 0; // the object, for the noise estimate
+    // A draw that would take longer than `sliceMs` is drawn in bands of rows, one a call, so
+    // that input waits for a band, not a draw (llvmpipe: one fis sample over a 1278x902 view
+    // is about 0.3 s). The estimate is the last draw's cost per sample and pixel.
+    if (state.bandsDrawn == 0) {
+        const double estimateMs = view.msPerSamplePixel * double(draw.sampling.samples) * width * height;
+        state.bands = sliceMs > 0.0 && estimateMs > sliceMs
+            ? int(std::min(std::ceil(estimateMs / sliceMs), double(std::min(kMaxBands, height))))
+            : 1;
+        state.drawMs = 0.0;
+    }
+    const Clock::time_point start = Clock::now();
+    const int band = state.bandsDrawn;
+    const int y0 = height * band / state.bands;
+    const int y1 = height * (band + 1) / state.bands;
+    if (state.bands > 1) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, y0, width, y1 - y0);
+    }
+    const bool drawn = m_renderer->render(draw, *view.frame, error);
+    glDisable(GL_SCISSOR_TEST);
+    if (!drawn)
+        return false;
+    glFinish();
+    if (band + 1 < state.bands) {
+        // More bands to come: what is on screen stays (the held frame, or the mean in it).
+        ++state.bandsDrawn;
+        state.lastSliceMs = secondsSince(start) * 1000.0;
+        state.drawMs += state.lastSliceMs;
+        return true;
+    }
+    state.bandsDrawn = 0;
+    if (draw.coverageAlpha)
+        view.mask = coverageMaskOf(*view.frame);
+    if (!view.accumulator.add(*view.frame, draw.sampling.samples, error))
+        return false;
+    glFinish();
+    state.lastSliceMs = secondsSince(start) * 1000.0;
+    state.lastDrawMs = state.drawMs + state.lastSliceMs; // every band, and the accumulation
+    view.msPerSamplePixel = state.lastDrawMs / (double(draw.sampling.samples) * width * height);
+    state.seconds += state.lastDrawMs / 1000.0;
+    state.samples += draw.sampling.samples;
+    ++state.draws;
+    // The estimate reads both halves back: after a pair, once the drawing since the last one
+    // took kNoiseIntervalSeconds or four draws' time (whichever is less: a small view checks
+    // often, a large one pays the read-back rarely), and at the end.
+    const double interval = std::min(kNoiseIntervalSeconds, 4.0 * state.lastDrawMs / 1000.0);
+    if (reference
+        && (state.samples >= state.target
+            || (state.draws % 2 == 0 && state.seconds - state.noiseSeconds >= interval))) {
+        if (std::optional<FrameAccumulator::Spread> spread = view.accumulator.spread()) {
+            state.noise = relativeNoiseRmse(spread->mean, spread->variance, view.mask);
+            state.noiseSeconds = state.seconds;
+            view.spread = std::move(spread);
+        }
+    }
     if (scene.sampling.method == IblMethod::Fis && state.samples >= state.target
         && state.target < state.finalTarget) {
         // A level is complete: its estimate is held on screen while the next, four times the
@@ -421,8 +474,17 @@ bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene,
         state.draws = 0;
         state.lastDrawSamples = 0;
         state.showing = false;
-        return show(*view.held, scene.view, framebuffer, rect, error);
     }
+    return true;
+}
+
+bool FrameRenderer::showRefinement(ViewRefinement& view, const RenderScene& scene, unsigned framebuffer,
+    const FrameRect& rect, std::string* error)
+{
+    Refinement& state = view.state;
+    // Between the bands of a draw what is on screen stays: the held frame, or the mean in it.
+    if (state.bandsDrawn > 0)
+        return show(*view.held, scene.view, framebuffer, rect, error);
     // Fis's partial runs are biased (a Hammersley prefix covers only part of the lobe): shown
     // when complete. Reference's are unbiased, and shown once no longer mostly noise.
     state.showing = state.samples
@@ -431,8 +493,10 @@ bool FrameRenderer::refine(const RenderScene& preview, const RenderScene& scene,
         state.levelShown = state.target;
     if (!state.showing)
         return show(*view.held, scene.view, framebuffer, rect, error);
-    // The mean so far into the frame target (the sums are the accumulator's own textures).
-    return view.accumulator.resolve(*view.frame, error) && show(*view.frame, scene.view, framebuffer, rect, error);
+    // The mean so far into the held target (the sums are the accumulator's own textures; the
+    // frame target is the next draw's, band by band), shown from there until the next draw is done.
+    return view.accumulator.resolve(*view.held, error)
+        && show(*view.held, scene.view, framebuffer, rect, error);
 }
 
 std::vector<int> FrameRenderer::fisRefinementLevels(int samples)

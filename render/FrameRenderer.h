@@ -162,7 +162,13 @@ public:
         int draws = 0;
         double seconds = 0.0; // of the draws, glFinish'ed
         double lastDrawMs = 0.0;
-        int lastDrawSamples = 0; // the last draw's samples (lastDrawMs is its time)
+        int lastDrawSamples = 0; // the last draw's samples (lastDrawMs is its time, all its bands)
+        // A draw that would take longer than refine()'s `sliceMs` is drawn in `bands` bands of
+        // rows, one a call; `bandsDrawn` of the draw under way are done (0: none under way).
+        int bands = 1;
+        int bandsDrawn = 0;
+        double drawMs = 0.0; // of the bands of the draw under way so far
+        double lastSliceMs = 0.0; // the last call's drawing: a band, or a whole draw
         bool showing
             = false; // the accumulation, not the held frame (split sum, or fis's last level), is on screen
         // Reference: the last noise estimate (relative RMSE of the mean's noise over the object).
@@ -186,8 +192,21 @@ public:
     static constexpr double kNoiseIntervalSeconds = 0.5;
     // `slot`: which of several refinements (each its own accumulation and state; the window's view
     // is slot 0, the Compare view's cells and error view others).
-    bool refine(const RenderScene& preview, const RenderScene& scene, unsigned framebuffer, const FrameRect& rect,
-        bool restart, int drawSamples, std::string* error, int slot = 0);
+    //
+    // `sliceMs` > 0 (the window's view): a draw estimated (from the last one's cost per sample and
+    // pixel) to take longer is drawn in bands of rows under a scissor, one band a call (at most
+    // kMaxBands), and added to the accumulation when its last band is in; what is on screen
+    // stays meanwhile. Input then waits for a band, not for a whole draw.
+    static constexpr int kMaxBands = 32;
+    bool refine(const RenderScene& preview, const RenderScene& scene, unsigned framebuffer,
+        const FrameRect& rect, bool restart, int drawSamples, std::string* error, int slot = 0,
+        double sliceMs = 0.0);
+    // The next band of the draw under way in `slot` (refine() began a draw in bands), drawn and,
+    // when it is the last, added to the accumulation as refine() would; nothing is shown: the
+    // caller draws bands between frames without presenting (ui/ViewportWidget) and shows the
+    // result with its next refine(). `scene`: the one refine() was given. True (doing nothing)
+    // when no draw is under way.
+    bool continueDraw(const RenderScene& scene, std::string* error, int slot = 0);
     const Refinement& refinement(int slot = 0) const;
     // The Reference refinement's mean and its per-pixel noise (FrameAccumulator::spread, linear
     // radiance, top row first) as read back for its last noise estimate (Spread::samples says at
@@ -230,6 +249,14 @@ private:
     // through a pooled display target, stretched).
     bool show(const Framebuffer& hdr, const ViewSettings& view, unsigned framebuffer, const FrameRect& rect,
         std::string* error);
+    struct ViewRefinement;
+    // One call's drawing of a refinement: a band of a draw (all of it when in one band), the draw's
+    // completion when it is the last, and a fis level's when that completes it.
+    bool drawStep(ViewRefinement& view, const RenderScene& scene, int width, int height, int drawSamples,
+        double sliceMs, std::string* error);
+    // What a refinement shows after a call: the held frame, or the mean resolved into it.
+    bool showRefinement(ViewRefinement& view, const RenderScene& scene, unsigned framebuffer,
+        const FrameRect& rect, std::string* error);
     // One draw of a converging method: `draw` rendered into `frame` and added to `accumulator`
     // (its draw.sampling.samples); with draw.coverageAlpha, `coverage` becomes the object's mask.
     bool accumulateDraw(const RenderScene& draw, Framebuffer& frame, FrameAccumulator& accumulator,
@@ -245,7 +272,6 @@ private:
     std::shared_ptr<IblPrecompute> m_precompute;
     std::unique_ptr<Renderer> m_renderer;
     std::unique_ptr<FrameAccumulator> m_accumulator;
-    struct ViewRefinement;
     std::map<int, std::unique_ptr<ViewRefinement>> m_views; // by slot
     std::list<PooledTarget> m_targets; // most recently used first
     int m_lastWidth = 0;

@@ -234,6 +234,60 @@ private Q_SLOTS:
     // are 64, then 256. The split-sum preview is shown until the first level is complete; that
     // level's image, the whole 64-sample estimate (the same as a refinement of 64 samples), stays
     // on screen while the 256 accumulate; then the 256-sample image.
+    // A draw over its slice's time is drawn in bands of rows, one a call (the window's input waits
+    // for a band): the same image in the end as whole draws, what is shown does not change
+    // between the bands of a draw, and the draw is added once, when its last band is in. For fis
+    // and for the reference (its coverage mask and noise halves come from complete draws).
+    void bandedDrawsMatchWholeDraws_data()
+    {
+        QTest::addColumn<int>("method");
+        QTest::addColumn<bool>("betweenFrames"); // the later bands by continueDraw, as the window does
+        QTest::newRow("fis") << int(IblMethod::Fis) << false;
+        QTest::newRow("reference") << int(IblMethod::Reference) << false;
+        QTest::newRow("fis, bands between frames") << int(IblMethod::Fis) << true;
+        QTest::newRow("reference, bands between frames") << int(IblMethod::Reference) << true;
+    }
+    void bandedDrawsMatchWholeDraws()
+    {
+        QFETCH(int, method);
+        QFETCH(bool, betweenFrames);
+        const Project project = facet::test::iblMethodCaseProject(kRows[1].row, IblMethod(method), 64);
+        std::string error;
+        std::vector<test::ReferenceViewRenderer::RefineStep> whole, banded;
+        std::vector<int> wholeDraws, bandedDraws;
+        // A first refinement tells the renderer what a sample costs.
+        QVERIFY2(
+            m_gpu.refine(project, "default", kSize, 16, &error, nullptr, &wholeDraws, &whole), error.c_str());
+        const auto state = m_gpu.refine(
+            project, "default", kSize, 16, &error, nullptr, &bandedDraws, &banded, 1e-9, betweenFrames);
+        QVERIFY2(state, error.c_str());
+        QVERIFY(state->done());
+        QCOMPARE(bandedDraws, wholeDraws); // the same draws, each complete once
+        QVERIFY(sameImage(banded.back().shown, whole.back().shown));
+        int bandCalls = 0;
+        for (std::size_t i = 1; i < banded.size(); ++i) {
+            const FrameRenderer::Refinement& s = banded[i].state;
+            if (s.bandsDrawn > 0) {
+                ++bandCalls;
+                QCOMPARE(s.bands, FrameRenderer::kMaxBands); // kSize rows, a slice of almost nothing
+                QVERIFY(sameImage(banded[i].shown, banded[i - 1].shown));
+            }
+        }
+        // Through refine(), a call a band; between frames, refine() only begins each draw (its
+        // first band) and continueDraw draws the rest, so refine() is called once a draw.
+        if (!betweenFrames)
+            QVERIFY2(bandCalls
+                    >= (FrameRenderer::kMaxBands - 1) * int(wholeDraws.size()) - FrameRenderer::kMaxBands,
+                qPrintable(
+                    QStringLiteral("%1 band calls for %2 draws").arg(bandCalls).arg(wholeDraws.size())));
+        else
+            QCOMPARE(banded.size(), whole.size() + 1); // and the frame that shows the last draw
+        if (IblMethod(method) == IblMethod::Reference) {
+            QVERIFY(state->noise);
+            QVERIFY(std::abs(*state->noise - *whole.back().state.noise) < 1e-9);
+        }
+    }
+
     void refinesLevelByLevel()
     {
         QCOMPARE(FrameRenderer::fisRefinementLevels(1024), (std::vector<int> {64, 256, 1024}));
@@ -343,8 +397,11 @@ private Q_SLOTS:
     void drawsAreJitteredOutsideTheReferenceView_data()
     {
         QTest::addColumn<int>("method");
-        QTest::newRow("fis") << int(IblMethod::Fis);
-        QTest::newRow("reference") << int(IblMethod::Reference);
+        QTest::addColumn<bool>("betweenFrames"); // the later bands by continueDraw, as the window does
+        QTest::newRow("fis") << int(IblMethod::Fis) << false;
+        QTest::newRow("reference") << int(IblMethod::Reference) << false;
+        QTest::newRow("fis, bands between frames") << int(IblMethod::Fis) << true;
+        QTest::newRow("reference, bands between frames") << int(IblMethod::Reference) << true;
     }
     void drawsAreJitteredOutsideTheReferenceView()
     {

@@ -354,21 +354,19 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
     if (refineRestart) {
         // The still frame, refined by the project's method; `frame` (the split sum) is shown
         // until the accumulation is worth showing.
-        RenderScene sampled = scene.scene(m_ibl, scene.refinementMethod());
-        std::string ignored;
-        holdBackUnreadyMaps(sampled, &ignored);
-        if (!m_frames->addDfgTables(scene.iblSettings(), sampled, nullptr, &problem)
-            || !m_frames->addEnvironmentSource(scene.assets().environment, sampled, nullptr, &problem))
+        std::optional<RenderScene> sampledScene = refinementScene(scene, &problem);
+        if (!sampledScene)
             return fail(problem);
+        const RenderScene& sampled = *sampledScene;
         if (*refineRestart)
             m_drawSamples = 1;
         if (!m_frames->refine(frame, sampled, targetFramebuffer, FrameRect {0, 0, width, height},
-                *refineRestart, m_drawSamples, &problem))
+                *refineRestart, m_drawSamples, &problem, 0, kRefineSliceMs))
             return fail(problem);
         const FrameRenderer::Refinement& refinement = m_frames->refinement();
         if (!*refineRestart && refinement.draws > 0)
             m_drawSamples
-                = nextDrawSamples(refinement.lastDrawSamples, refinement.lastDrawMs, kRefineDrawBudgetMs);
+                = nextDrawSamples(refinement.lastDrawSamples, refinement.lastDrawMs, kRefineBandedDrawMs);
         m_stats.refineMethod = sampled.sampling.method;
         m_stats.refinement = refinement;
     } else {
@@ -405,6 +403,33 @@ ViewportRenderer::ShownPixel ViewportRenderer::shownPixel(
     pixel.radiance = m_frames->shownRadiance((double(x) + 0.5) / width, (double(y) + 0.5) / height);
     pixel.display = readDisplayPixel(targetFramebuffer, x, height - 1 - y);
     return pixel;
+}
+
+std::optional<RenderScene> ViewportRenderer::refinementScene(const SceneController& scene, std::string* error)
+{
+    RenderScene sampled = scene.scene(m_ibl, scene.refinementMethod());
+    std::string ignored;
+    holdBackUnreadyMaps(sampled, &ignored);
+    if (!m_frames->addDfgTables(scene.iblSettings(), sampled, nullptr, error)
+        || !m_frames->addEnvironmentSource(scene.assets().environment, sampled, nullptr, error))
+        return std::nullopt;
+    return sampled;
+}
+
+bool ViewportRenderer::continueRefinement(
+    const SceneController& scene, int width, int height, std::string* error)
+{
+    // Only the draw the last refine() began, of the scene as it was: after any change the next
+    // refine() starts again.
+    if (!m_ibl || !m_refineKey || *m_refineKey != refineKeyOf(scene, width, height)
+        || m_frames->refinement().bandsDrawn == 0)
+        return false;
+    std::optional<RenderScene> sampled = refinementScene(scene, error);
+    if (!sampled || !m_frames->continueDraw(*sampled, error))
+        return false;
+    glFinish();
+    m_stats.refinement = m_frames->refinement();
+    return m_stats.refinement.bandsDrawn > 0;
 }
 
 int ViewportRenderer::holdBackUnreadyMaps(RenderScene& frame, std::string* problem)

@@ -151,12 +151,26 @@ public:
     // the samples and shows them anew.
     bool refine(const SceneController& scene, unsigned targetFramebuffer, int width, int height, bool restart,
         std::string* error);
+    // The next band of the refinement draw under way (refine() began it in bands: one a call of
+    // about kRefineSliceMs), drawn without presenting anything; the widget calls it between
+    // frames, so that input is answered between bands and nothing is tone-mapped or composed for
+    // a band. True while more bands of that draw remain; false when it is complete (the next
+    // refine() shows it), when there is none, or when the scene changed since (the next refine()
+    // starts again), or on failure (*error). Context current.
+    bool continueRefinement(const SceneController& scene, int width, int height, std::string* error);
     // Whether the refinement shown sums what `scene` at width x height would: a change since was
     // display-only, and refine() without restarting shows it (the widget then skips previews).
     bool refinesSameSamples(const SceneController& scene, int width, int height) const;
     // What one refinement draw may take, so input events run between draws (llvmpipe: a
     // reference sample over a 720p view costs about 0.2 s, so draws there are 1 sample).
     static constexpr double kRefineDrawBudgetMs = 100.0;
+    // The single view draws in bands of rows (FrameRenderer::refine's sliceMs) of about
+    // kRefineSliceMs each, the first in a paint and the others between frames with nothing
+    // presented (continueRefinement): a key press waits for a band, or for the first band, the
+    // tone map and Qt's present of a paint, under 100 ms in all. Its draws are sized to
+    // kRefineBandedDrawMs: a paint (tone map, present) a draw, the rest drawing.
+    static constexpr double kRefineSliceMs = 25.0;
+    static constexpr double kRefineBandedDrawMs = 200.0;
     // The samples of the next draw after one of `samples` took `milliseconds`: a power of two,
     // from 1 to FrameRenderer::kSamplesPerDraw, near `budgetMs`, at most 4x up or down.
     static int nextDrawSamples(int samples, double milliseconds, double budgetMs);
@@ -200,6 +214,9 @@ private:
     // paint() (refineRestart null) or refine().
     bool draw(const SceneController& scene, unsigned targetFramebuffer, int width, int height, double scale,
         const bool* refineRestart, std::string* error);
+    // The scene the refinement samples: the project's method, complete textures only, with the
+    // DFG tables and the environment's source. nullopt with *error.
+    std::optional<RenderScene> refinementScene(const SceneController& scene, std::string* error);
     // Takes out of `frame` the maps whose textures are not complete (the previous version of the
     // file where there is one) and queues their uploads; returns how many were held back.
     int holdBackUnreadyMaps(RenderScene& frame, std::string* problem);

@@ -95,6 +95,24 @@ std::optional<Image> ViewportWidget::renderStill(
     return image;
 }
 
+void ViewportWidget::drawRefinementBand()
+{
+    // An interaction or a change since: its frame comes through paintGL (which restarts the
+    // refinement when the change needs it).
+    if (!m_renderer || !m_scene || m_previewing || !isVisible())
+        return;
+    const QSize size = deviceSize();
+    std::string error;
+    makeCurrent();
+    const bool more = m_renderer->continueRefinement(*m_scene, size.width(), size.height(), &error);
+    doneCurrent();
+    // lastFrameStats() stays the shown frame's: the draw is shown by the next paint.
+    if (more)
+        QTimer::singleShot(0, this, &ViewportWidget::drawRefinementBand);
+    else
+        update(); // the draw is complete (or the scene changed): the next frame shows it
+}
+
 ViewportRenderer::ShownPixel ViewportWidget::shownPixel(const QPointF& position)
 {
     if (!m_renderer || m_stats.frameNumber == 0)
@@ -239,8 +257,11 @@ void ViewportWidget::paintGL()
     }
     m_stats = m_renderer->lastFrame();
     // The next draw of the refinement, after the events queued meanwhile (input stops it); once
-    // done, nothing more is drawn until the scene changes.
-    if (ok
+    // done, nothing more is drawn until the scene changes. A draw in bands has its other bands
+    // drawn between frames first (drawRefinementBands), each after the events queued meanwhile.
+    if (ok && refining && m_stats.refinement.bandsDrawn > 0)
+        QTimer::singleShot(0, this, &ViewportWidget::drawRefinementBand);
+    else if (ok
         && ((refining && !m_stats.refinement.done())
             || (wantsRefinement && !refining && !m_stats.lightingPending)))
         QTimer::singleShot(0, this, [this] { update(); });

@@ -10,7 +10,10 @@
 // follows kRefineDelayMs after the last interactive change. When the project's IBL method is fis
 // or reference, that still frame then refines (ViewportRenderer::refine): one draw per paint,
 // each paint chained to the next by a zero-time timer (input events run in between), until the
-// method's samples are in; then nothing is drawn until the scene changes.
+// method's samples are in; then nothing is drawn until the scene changes. A draw that would keep
+// input waiting (over ViewportRenderer::kRefineSliceMs) is drawn in bands of rows: the paint
+// draws the first, zero-time timers the others between frames without presenting anything, and
+// the paint after the last shows the draw.
 
 #include "render/GLInfo.h"
 #include "ui/ViewportRenderer.h"
@@ -58,6 +61,12 @@ public:
     // Frames drawn with the renderer since the context was made (the idle test counts them).
     std::uint64_t frameCount() const { return m_stats.frameNumber; }
     const ViewportFrameStats& lastFrameStats() const { return m_stats; }
+    // The refinement as it stands now, bands drawn between frames included (lastFrameStats() is
+    // the shown frame's).
+    const FrameRenderer::Refinement& refinementNow() const
+    {
+        return m_renderer ? m_renderer->lastFrame().refinement : m_stats.refinement;
+    }
     // Frames drawn with the previous lighting (or none) while the lighting worker made the new
     // one; frameRendered() is not emitted for them.
     std::uint64_t framesAwaitingLighting() const { return m_framesAwaitingLighting; }
@@ -106,6 +115,8 @@ protected:
 
 private:
     void onSceneChanged(bool interactive);
+    // The next band of a refinement draw in bands, between frames (nothing presented).
+    void drawRefinementBand();
     void requestFrame();
     void releaseRenderer();
     // The lighting worker's signals (ui/LightingWorker.h) for this view's renderer.

@@ -91,7 +91,8 @@ std::optional<Image> ReferenceViewRenderer::render(const Project& project, const
 
 std::optional<FrameRenderer::Refinement> ReferenceViewRenderer::refine(const Project& project,
     const std::string& preset, int size, int drawSamples, std::string* error,
-    std::optional<FrameAccumulator::Spread>* spread, std::vector<int>* draws, std::vector<RefineStep>* steps)
+    std::optional<FrameAccumulator::Spread>* spread, std::vector<int>* draws, std::vector<RefineStep>* steps,
+    double sliceMs, bool bandsBetweenFrames)
 {
     auto scene = prepareScene(project, preset, error);
     if (!scene)
@@ -107,15 +108,29 @@ std::optional<FrameRenderer::Refinement> ReferenceViewRenderer::refine(const Pro
         if (steps)
             steps->push_back({frames.refinement(), target->readPixels()});
     };
-    if (!frames.refine(preview, *scene, target->framebufferId(), rect, /*restart=*/true, drawSamples, error))
+    if (!frames.refine(
+            preview, *scene, target->framebufferId(), rect, /*restart=*/true, drawSamples, error, 0, sliceMs))
         return std::nullopt;
     record();
-    // A bound on the calls: the target's draws (fis: its levels', at most 4/3 of them), and more.
-    for (int call = 0; !frames.refinement().done() && call <= 2 * scene->sampling.samples + 8; ++call) {
-        if (!frames.refine(preview, *scene, target->framebufferId(), rect, false, drawSamples, error))
+    // A bound on the calls: the target's draws (fis: its levels', at most 4/3 of them), and more,
+    // each in at most kMaxBands calls.
+    const int calls = (2 * scene->sampling.samples + 8) * (sliceMs > 0.0 ? FrameRenderer::kMaxBands : 1);
+    for (int call = 0; !frames.refinement().done() && call <= calls; ++call) {
+        if (!frames.refine(
+                preview, *scene, target->framebufferId(), rect, false, drawSamples, error, 0, sliceMs))
             return std::nullopt;
-        if (draws)
+        while (bandsBetweenFrames && frames.refinement().bandsDrawn > 0)
+            if (!frames.continueDraw(*scene, error))
+                return std::nullopt;
+        if (draws && frames.refinement().bandsDrawn == 0) // a draw is complete
             draws->push_back(frames.refinement().lastDrawSamples);
+        record();
+    }
+    // A draw completed between frames is shown by the next refine() (the window's next paint).
+    if (bandsBetweenFrames) {
+        if (!frames.refine(
+                preview, *scene, target->framebufferId(), rect, false, drawSamples, error, 0, sliceMs))
+            return std::nullopt;
         record();
     }
     if (spread)

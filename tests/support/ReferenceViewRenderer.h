@@ -43,9 +43,11 @@ public:
     std::optional<Image> renderAsCommand(
         const Project& project, const std::string& preset, int size, std::string* error);
     // The window's refinement of `project`'s reference view (FrameRenderer::refine, draws of
-    // `drawSamples`) into a size x size target, called until done: its state then, and (optional)
-    // the accumulation's mean and variance, each draw's samples, and after each call its state and
-    // the target as shown (display-referred, top row first). nullopt with *error on any failure.
+    // `drawSamples`, bands of about `sliceMs` when > 0) into a size x size target, called until
+    // done: its state then, and (optional) the accumulation's mean and variance, each complete
+    // draw's samples, and after each call its state and the target as shown (display-referred, top
+    // row first). `bandsBetweenFrames`: a draw's later bands through continueDraw, as the window
+    // draws them (no step recorded for them), else each through refine(). nullopt with *error on any failure.
     struct RefineStep {
         FrameRenderer::Refinement state;
         Image shown;
@@ -53,7 +55,7 @@ public:
     std::optional<FrameRenderer::Refinement> refine(const Project& project, const std::string& preset,
         int size, int drawSamples, std::string* error,
         std::optional<FrameAccumulator::Spread>* spread = nullptr, std::vector<int>* draws = nullptr,
-        std::vector<RefineStep>* steps = nullptr);
+        std::vector<RefineStep>* steps = nullptr, double sliceMs = 0.0, bool bandsBetweenFrames = false);
 
     // The split sum's sharp-lobe samples of the scenes rendered from now on
     // (IblSampling::sharpLobeSamples; 0: the prefiltered lookup only).
