@@ -13,7 +13,6 @@
 #include <QCommandLineParser>
 #include <QDir>
 #include <QFileInfo>
-#include <QTemporaryDir>
 
 #include <chrono>
 
@@ -448,50 +447,29 @@ int runGroundTruth(const RenderRequest& request)
 // files, or for a video as PNG frames in a temporary folder that ffmpeg encodes.
 int renderTurntable(FrameRenderer& frames, const RenderScene& scene, const RenderRequest& request)
 {
-    using Clock = std::chrono::steady_clock;
-    const auto start = Clock::now();
-    const bool video = isVideoPath(request.outputPath);
-    const bool png = video
+    const bool png = isVideoPath(request.outputPath)
         || QFileInfo(QString::fromStdString(request.outputPath)).suffix().toLower() == QStringLiteral("png");
-    QTemporaryDir folder;
-    if (video && !folder.isValid()) {
-        std::fprintf(stderr, "facet render: no temporary folder for the frames of %s: %s\n",
-            request.outputPath.c_str(), qPrintable(folder.errorString()));
-        return RenderCommand::kExitFailure;
-    }
-    const int count = request.turntableFrames;
     std::string error;
-    for (int index = 0; index < count; ++index) {
-        RenderScene turned = scene;
-        applyTurntable(turned, request.turntableSubject, turntableDegrees(index, count));
-        const std::optional<Image> image = frames.renderConverged(turned, request.width, request.height,
-            png ? FrameOutput::DisplayReferred : FrameOutput::LinearRadiance, turned.sampling.samples,
-            &error);
-        const std::string path = video
-            ? folder.filePath(QStringLiteral("frame_%1.png").arg(index, 5, 10, QLatin1Char('0')))
-                  .toStdString()
-            : turntableFramePath(request.outputPath, index, count);
-        if (!image || !image->save(path, &error, !video && keepsAlpha(request))) {
-            std::fprintf(stderr, "facet render: frame %d of %d: %s\n", index, count, error.c_str());
-            return RenderCommand::kExitFailure;
-        }
-    }
-    const auto rendered = Clock::now();
-    if (video
-        && !encodeVideo(folder.filePath(QStringLiteral("frame_%05d.png")).toStdString(), request.fps,
-            request.outputPath, &error)) {
+    const std::optional<TurntableWrite> written = writeTurntable(
+        request.outputPath, request.turntableFrames, request.fps, keepsAlpha(request),
+        [&](int, double degrees, std::string* frameError) {
+            RenderScene turned = scene;
+            applyTurntable(turned, request.turntableSubject, degrees);
+            return frames.renderConverged(turned, request.width, request.height,
+                png ? FrameOutput::DisplayReferred : FrameOutput::LinearRadiance, turned.sampling.samples,
+                frameError);
+        },
+        &error);
+    if (!written) {
         std::fprintf(stderr, "facet render: %s\n", error.c_str());
         return RenderCommand::kExitFailure;
     }
-    if (request.printStats) {
-        const auto ms = [](Clock::time_point from, Clock::time_point to) {
-            return std::chrono::duration<double, std::milli>(to - from).count();
-        };
+    if (request.printStats)
         std::printf(
             "turntable: %d frames, %s turning, %dx%d\nturntable_ms: %.1f a frame, render %.1f, encode %.1f\n",
-            count, toString(request.turntableSubject), request.width, request.height,
-            ms(start, rendered) / double(count), ms(start, rendered), ms(rendered, Clock::now()));
-    }
+            request.turntableFrames, toString(request.turntableSubject), request.width, request.height,
+            written->renderSeconds * 1000.0 / double(request.turntableFrames),
+            written->renderSeconds * 1000.0, written->encodeSeconds * 1000.0);
     return 0;
 }
 

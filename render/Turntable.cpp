@@ -1,8 +1,14 @@
 #include "render/Turntable.h"
 
+#include "core/VideoEncoder.h"
+
+#include <QString>
+#include <QTemporaryDir>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 
@@ -68,6 +74,50 @@ std::string turntableFramePath(const std::string& output, int index, int frames)
     const std::string stem = path.stem().string();
     const std::string extension = path.extension().string();
     return (path.parent_path() / (stem + "_" + padded(digits) + extension)).string();
+}
+
+std::optional<TurntableWrite> writeTurntable(const std::string& output, int frames, int fps, bool keepAlpha,
+    const std::function<std::optional<Image>(int index, double degrees, std::string* error)>& frame,
+    std::string* error, const std::function<bool()>& cancelled)
+{
+    using Clock = std::chrono::steady_clock;
+    const auto seconds
+        = [](Clock::time_point from) { return std::chrono::duration<double>(Clock::now() - from).count(); };
+    const bool video = isVideoPath(output);
+    QTemporaryDir folder; // a video's frames
+    if (video && !folder.isValid()) {
+        *error = output + ": no temporary folder for the frames: " + folder.errorString().toStdString();
+        return std::nullopt;
+    }
+    TurntableWrite result;
+    const auto start = Clock::now();
+    for (int index = 0; index < frames; ++index) {
+        std::string problem;
+        const std::optional<Image> image = frame(index, turntableDegrees(index, frames), &problem);
+        const std::string path = video
+            ? folder.filePath(QStringLiteral("frame_%1.png").arg(index, 5, 10, QLatin1Char('0')))
+                  .toStdString()
+            : turntableFramePath(output, index, frames);
+        if (!image || !image->save(path, &problem, keepAlpha && !video)) {
+            *error = "frame " + std::to_string(index) + " of " + std::to_string(frames) + ": " + problem;
+            return std::nullopt;
+        }
+        result.framesWritten = index + 1;
+        // Asked after every frame (the window's progress counts them); after the last there is
+        // nothing left to stop.
+        if (cancelled && cancelled() && index + 1 < frames) {
+            result.stopped = true;
+            result.renderSeconds = seconds(start);
+            return result;
+        }
+    }
+    result.renderSeconds = seconds(start);
+    const auto encoding = Clock::now();
+    if (video
+        && !encodeVideo(folder.filePath(QStringLiteral("frame_%05d.png")).toStdString(), fps, output, error))
+        return std::nullopt;
+    result.encodeSeconds = seconds(encoding);
+    return result;
 }
 
 } // namespace facet

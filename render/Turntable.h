@@ -9,10 +9,12 @@
 // background moves. Frame i of N is at 360 i / N degrees, so frame N would be frame 0 again and
 // a looping video has no repeated frame.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include "core/Image.h"
 #include "render/RenderScene.h"
 
 namespace facet {
@@ -34,5 +36,22 @@ double turntableDegrees(int index, int frames);
 // otherwise "_NNNN" goes before the extension ("turn.png" -> "turn_0007.png"), with as many digits
 // as the largest index needs (at least 4).
 std::string turntableFramePath(const std::string& output, int index, int frames);
+
+// What writeTurntable() did.
+struct TurntableWrite {
+    int framesWritten = 0;
+    bool stopped = false; // `cancelled` said so after framesWritten frames: those kept, no video
+    double renderSeconds = 0.0; // making and saving the frames
+    double encodeSeconds = 0.0; // the video's encode
+};
+// The one way a turn is written (`facet render --turntable`, File > Save Turntable…): frame i of
+// `frames` is made by `frame(i, turntableDegrees(i, frames), error)` and saved as
+// turntableFramePath(output, i, frames) (with its alpha when `keepAlpha`) or, when `output` is a
+// video (core/VideoEncoder.h), as PNG into a temporary folder and then encoded at `fps`.
+// `cancelled` (optional) is asked after each frame (the last's answer is moot). nullopt with *error ("frame 3
+// of 24: <why>", or the encoder's message) on failure; a stop is not one.
+std::optional<TurntableWrite> writeTurntable(const std::string& output, int frames, int fps, bool keepAlpha,
+    const std::function<std::optional<Image>(int index, double degrees, std::string* error)>& frame,
+    std::string* error, const std::function<bool()>& cancelled = {});
 
 } // namespace facet

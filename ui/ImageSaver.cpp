@@ -11,13 +11,11 @@
 #include <QApplication>
 #include <QBuffer>
 #include <QDir>
-#include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
 #include <QProgressDialog>
 #include <QSettings>
-#include <QTemporaryDir>
 
 namespace facet {
 
@@ -169,48 +167,35 @@ bool ImageSaver::saveTurntableTo(const QString& path, const SaveImageDialog::Cho
                             .toStdString())),
             error);
     }
-    QTemporaryDir folder; // a video's frames
-    if (video && !folder.isValid())
-        return fail(tr("%1: no temporary folder for the frames: %2").arg(path, folder.errorString()), error);
     const FrameOutput output
         = suffix == QStringLiteral("exr") ? FrameOutput::LinearRadiance : FrameOutput::DisplayReferred;
-    QElapsedTimer clock;
-    clock.start();
-    for (int index = 0; index < choice.frames; ++index) {
-        StillOptions options;
-        options.transparent = choice.transparent && !video;
-        options.turntableSubject = choice.subject;
-        options.turntableDegrees = turntableDegrees(index, choice.frames);
-        std::string problem;
-        const std::optional<Image> image = m_viewport->renderStill(output, &problem, choice.size, options);
-        const std::string frame = video
-            ? folder.filePath(QStringLiteral("frame_%1.png").arg(index, 5, 10, QLatin1Char('0')))
-                  .toStdString()
-            : turntableFramePath(path.toStdString(), index, choice.frames);
-        if (!image || !image->save(frame, &problem, options.transparent))
-            return fail(tr("Could not save frame %1 of %2: %3")
-                            .arg(index)
-                            .arg(choice.frames)
-                            .arg(QString::fromStdString(problem)),
-                error);
-        if (cancelled && cancelled()) {
-            const QString note = video ? tr("Turntable stopped after %1 of %2 frames; no video written")
-                                       : tr("Turntable stopped after %1 of %2 frames (kept)");
-            return fail(note.arg(index + 1).arg(choice.frames), error);
-        }
-    }
+    const bool transparent = choice.transparent && !video;
     std::string problem;
-    if (video
-        && !encodeVideo(folder.filePath(QStringLiteral("frame_%05d.png")).toStdString(), choice.fps,
-            path.toStdString(), &problem))
+    const std::optional<TurntableWrite> written = writeTurntable(
+        path.toStdString(), choice.frames, choice.fps, transparent,
+        [&](int, double degrees, std::string* frameError) {
+            StillOptions options;
+            options.transparent = transparent;
+            options.turntableSubject = choice.subject;
+            options.turntableDegrees = degrees;
+            return m_viewport->renderStill(output, frameError, choice.size, options);
+        },
+        &problem, cancelled);
+    if (!written)
         return fail(tr("Could not save the turntable: %1").arg(QString::fromStdString(problem)), error);
+    if (written->stopped) {
+        const QString note = video ? tr("Turntable stopped after %1 of %2 frames; no video written")
+                                   : tr("Turntable stopped after %1 of %2 frames (kept)");
+        return fail(note.arg(written->framesWritten).arg(choice.frames), error);
+    }
     const QString what = video ? QDir::toNativeSeparators(path)
                                : tr("%1 frames, %2 …")
                                      .arg(choice.frames)
                                      .arg(QDir::toNativeSeparators(QString::fromStdString(
                                          turntableFramePath(path.toStdString(), 0, choice.frames))));
-    Q_EMIT statusMessage(
-        tr("Saved the turntable: %1 (%2 s)").arg(what).arg(double(clock.elapsed()) / 1000.0, 0, 'f', 1));
+    Q_EMIT statusMessage(tr("Saved the turntable: %1 (%2 s)")
+                             .arg(what)
+                             .arg(written->renderSeconds + written->encodeSeconds, 0, 'f', 1));
     return true;
 }
 
