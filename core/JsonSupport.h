@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <QJsonArray>
 #include <QJsonValue>
@@ -41,6 +42,19 @@ inline std::nullopt_t failed(const std::string& message, std::string* problem)
 {
     fail(message, problem);
     return std::nullopt;
+}
+
+// Appends `lines` to *warning (when given), one a line, each after `prefix`.
+inline void appendWarnings(
+    std::string* warning, const std::vector<std::string>& lines, const std::string& prefix)
+{
+    if (!warning || lines.empty())
+        return;
+    for (const std::string& line : lines) {
+        if (!warning->empty())
+            *warning += "\n";
+        *warning += prefix + line;
+    }
 }
 
 inline const char* typeName(const QJsonValue& value)
