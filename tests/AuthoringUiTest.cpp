@@ -93,12 +93,7 @@ using Names = std::vector<std::string>;
 class AuthoringUiTest : public QObject {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setAttribute(Qt::AA_DontUseNativeDialogs);
-        installViewportSurfaceFormat();
-    }
+    static void initMain() { test::initWindowTestMain(); }
 
 private Q_SLOTS:
     void initTestCase();

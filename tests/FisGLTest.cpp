@@ -397,11 +397,8 @@ private Q_SLOTS:
     void drawsAreJitteredOutsideTheReferenceView_data()
     {
         QTest::addColumn<int>("method");
-        QTest::addColumn<bool>("betweenFrames"); // the later bands by continueDraw, as the window does
-        QTest::newRow("fis") << int(IblMethod::Fis) << false;
-        QTest::newRow("reference") << int(IblMethod::Reference) << false;
-        QTest::newRow("fis, bands between frames") << int(IblMethod::Fis) << true;
-        QTest::newRow("reference, bands between frames") << int(IblMethod::Reference) << true;
+        QTest::newRow("fis") << int(IblMethod::Fis);
+        QTest::newRow("reference") << int(IblMethod::Reference);
     }
     void drawsAreJitteredOutsideTheReferenceView()
     {

@@ -45,12 +45,7 @@ using namespace facet;
 class InspectionUiTest : public QObject {
     Q_OBJECT
 public:
-    static void initMain()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setAttribute(Qt::AA_DontUseNativeDialogs);
-        installViewportSurfaceFormat();
-    }
+    static void initMain() { test::initWindowTestMain(); }
 
 private Q_SLOTS:
     void initTestCase();

@@ -6,17 +6,29 @@
 #include "ui/MainWindow.h"
 #include "ui/ProjectFileController.h"
 #include "ui/SceneController.h"
+#include "ui/SurfaceFormat.h"
 #include "ui/ViewportWidget.h"
 
 #include <QDockWidget>
 #include <QMessageBox>
 #include <QSignalSpy>
+#include <QStandardPaths>
 #include <QUndoStack>
 #include <QtTest/QTest>
 
 #include <memory>
 
 namespace facet::test {
+
+// What a main-window test's initMain() does before the QApplication exists: QStandardPaths in
+// test mode (the user's settings and presets untouched), Qt's own dialogs (a test can answer
+// them), and the viewport's surface format.
+inline void initWindowTestMain()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setAttribute(Qt::AA_DontUseNativeDialogs);
+    installViewportSurfaceFormat();
+}
 
 // A main window as the tests drive it: error dialogs off, unsaved changes discarded, shown, its
 // first frame drawn and the window active. Null when one of those did not happen in time.
