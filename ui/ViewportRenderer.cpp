@@ -161,19 +161,18 @@ std::optional<Image> ViewportRenderer::renderStill(const SceneController& scene,
             m_lighting->cancel(); // made here: the worker's is not wanted
         m_pending.reset();
     }
-    const IblMethod method = scene.refinementMethod();
-    RenderScene frame = scene.scene(m_ibl, method);
-    std::string ignored;
-    holdBackUnreadyMaps(frame, &ignored);
+    // The scene the view refines (its method converged), turned and made transparent as asked.
+    std::optional<RenderScene> sampled = refinementScene(scene, error);
+    if (!sampled)
+        return std::nullopt;
+    RenderScene& frame = *sampled;
     applyTurntable(frame, options.turntableSubject, options.turntableDegrees);
     if (options.transparent)
         frame.view.background = BackgroundMode::Transparent;
     while (frame.view.msaaSamples > 1
         && (long long)width * height * frame.view.msaaSamples > kMaxStillMsaaSamplePixels)
         frame.view.msaaSamples /= 2;
-    if (!m_frames->addDfgTables(scene.iblSettings(), frame, nullptr, error)
-        || !m_frames->addEnvironmentSource(scene.assets().environment, frame, nullptr, error))
-        return std::nullopt;
+    const IblMethod method = scene.refinementMethod();
     const EnvironmentSettings& environment = scene.document()->project().environment;
     const int samples = environment.samples > 0 ? environment.samples : defaultIblSamples(method);
     std::optional<Image> image = m_frames->renderConverged(frame, width, height, output, samples, error);

@@ -214,8 +214,8 @@ private:
     // paint() (refineRestart null) or refine().
     bool draw(const SceneController& scene, unsigned targetFramebuffer, int width, int height, double scale,
         const bool* refineRestart, std::string* error);
-    // The scene the refinement samples: the project's method, complete textures only, with the
-    // DFG tables and the environment's source. nullopt with *error.
+    // The scene the refinement samples (and a still converges): the project's method, complete
+    // textures only, with the DFG tables and the environment's source. nullopt with *error.
     std::optional<RenderScene> refinementScene(const SceneController& scene, std::string* error);
     // Takes out of `frame` the maps whose textures are not complete (the previous version of the
     // file where there is one) and queues their uploads; returns how many were held back.
