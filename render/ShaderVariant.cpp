@@ -1,6 +1,7 @@
 #include "render/ShaderVariant.h"
 
 #include <array>
+#include <cctype>
 
 #include "render/ShaderProgram.h"
 
@@ -175,12 +176,24 @@ SurfaceFeatures texCoordFeatures(const Material& material, SurfaceFeatures featu
     return 0;
 }
 
+std::string debugViewDefine(DebugView view)
+{
+    std::string define = "DEBUG_";
+    for (const char* c = toString(view); *c; ++c)
+        define += *c == '-' ? '_' : char(std::toupper(static_cast<unsigned char>(*c)));
+    return define;
+}
+
 std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key)
 {
     std::vector<std::string> defines;
     for (int bit = 0; bit < kSurfaceFeatureBits; ++bit)
         if (key.features & (1u << bit))
             defines.emplace_back(kFeatureDefines[std::size_t(bit)]);
+    // The debug views' ids, from core/DebugView's one table (debug_views.glsl compares names,
+    // never numbers), and the view this variant shows.
+    for (int view = 0; view < kDebugViewCount; ++view)
+        defines.push_back(debugViewDefine(DebugView(view)) + ' ' + std::to_string(view));
     defines.push_back("DEBUG_VIEW " + std::to_string(int(key.debugView)));
     defines.push_back("MAX_LIGHTS " + std::to_string(kMaxPunctualLights));
     return defines;

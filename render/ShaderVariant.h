@@ -110,7 +110,12 @@ bool samplesOwnTexture(SurfaceFeatures features, MapSlot slot);
 // HasTexCoord1 when the mesh has a second UV set and a map the variant samples reads it.
 SurfaceFeatures texCoordFeatures(const Material& material, SurfaceFeatures features, bool meshHasTexCoord1);
 
-// One "#define NAME" per set bit, in bit order, then "DEBUG_VIEW <n>" and "MAX_LIGHTS <n>".
+// The shader's name for a debug view's id: "DEBUG_" and its name upper-cased, '-' as '_'
+// (DebugView::BaseColor, "base-color": DEBUG_BASE_COLOR).
+std::string debugViewDefine(DebugView view);
+// One "#define NAME" per set bit, in bit order, then "DEBUG_<VIEW> <n>" for every debug view (the
+// ids debug_views.glsl compares, made from core/DebugView's table so the two cannot disagree),
+// "DEBUG_VIEW <n>" and "MAX_LIGHTS <n>".
 std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key);
 inline constexpr int kMaxPunctualLights = kMaxLights; // core/Light.h
 

@@ -70,6 +70,13 @@ void ShaderVariantGLTest::variantDefines()
              "DISTRIBUTION_BECKMANN", "VISIBILITY_SCHLICK", "IRRADIANCE_SH"})
         QVERIFY2(!has(absent), absent);
     QVERIFY(has("DEBUG_VIEW 0"));
+    // Every debug view's id, named from core/DebugView's table.
+    QCOMPARE(debugViewDefine(DebugView::BaseColor), std::string("DEBUG_BASE_COLOR"));
+    QCOMPARE(debugViewDefine(DebugView::TexelDensity), std::string("DEBUG_TEXEL_DENSITY"));
+    for (int view = 0; view < kDebugViewCount; ++view)
+        QVERIFY2(
+            has(debugViewDefine(DebugView(view)) + ' ' + std::to_string(view)), toString(DebugView(view)));
+    QVERIFY(has("DEBUG_WHITE_FURNACE 17") && has("DEBUG_DISTRIBUTION 7"));
 
     // A texture path without an image is still constant (nothing to sample).
     material.map(MapSlot::Normal).path = "/x/normal.png";

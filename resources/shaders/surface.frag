@@ -114,11 +114,11 @@ void main()
     color = vec3(debugR);
 #elif DEBUG_VIEW == DEBUG_OCCLUSION
     color = vec3(m.occlusion);
-#elif DEBUG_VIEW == DEBUG_D
+#elif DEBUG_VIEW == DEBUG_DISTRIBUTION
     color = vec3(distribution(saturate(dot(n, debugH)), debugR * debugR));
-#elif DEBUG_VIEW == DEBUG_V
+#elif DEBUG_VIEW == DEBUG_VISIBILITY
     color = vec3(visibility(debugNoV, debugNoL, debugR * debugR, debugR, true));
-#elif DEBUG_VIEW == DEBUG_F
+#elif DEBUG_VIEW == DEBUG_FRESNEL
     color = compositionFresnel(m, saturate(dot(v, debugH)));
 #elif DEBUG_VIEW == DEBUG_IRRADIANCE
     color = irradiance(n) * INV_PI;
