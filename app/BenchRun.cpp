@@ -265,13 +265,14 @@ bool BenchRun::measure(const BenchConfig& config, const BenchEnvironment& enviro
     const PixelMask noiseMask = sphereMask(m_request.size, m_request.size);
     bool warmedUp = false;
     for (const Scene& scene : scenes) {
-        RenderScene renderScene = sceneFromProject(scene.project, assets, ibl, options);
         // Memory hits: the tables and the source were made above.
-        if (!m_frames->addDfgTables(config.settings, renderScene, nullptr, &error)
-            || !m_frames->addEnvironmentSource(assets.environment, renderScene, nullptr, &error)) {
+        std::optional<RenderScene> prepared
+            = m_frames->prepare(scene.project, assets, config.settings, options, nullptr, &error, ibl);
+        if (!prepared) {
             fail(error);
             return false;
         }
+        const RenderScene& renderScene = *prepared;
         if (!warmedUp) {
             // The first frame of a shader variant compiles it (and llvmpipe JITs it): not a frame's
             // cost. One sample is enough for that.

@@ -116,34 +116,24 @@ std::shared_ptr<const IblTextures> FrameRenderer::lighting(
     return m_precompute->prepare(environment, settings, stats, error);
 }
 
-bool FrameRenderer::addDfgTables(
-    const IblSettings& settings, RenderScene& scene, IblStats* stats, std::string* error)
-{
-    return facet::addDfgTables(*m_precompute, settings, scene, stats, error);
-}
-
 std::optional<RenderScene> FrameRenderer::prepare(const Project& project, const ProjectAssets& assets,
-    const IblSettings& settings, const SceneOptions& options, IblStats* stats, std::string* error)
+    const IblSettings& settings, const SceneOptions& options, IblStats* stats, std::string* error,
+    std::shared_ptr<const IblTextures> ibl)
 {
-    const auto ibl = lighting(assets.environment, settings, stats, error);
+    if (!ibl)
+        ibl = lighting(assets.environment, settings, stats, error);
     if (!ibl)
         return std::nullopt;
     RenderScene scene = sceneFromProject(project, assets, ibl, options);
-    if (!addDfgTables(settings, scene, stats, error) || !addEnvironmentSource(assets.environment, scene, stats, error))
+    if (!addDfgTables(*m_precompute, settings, scene, stats, error))
         return std::nullopt;
+    if (scene.sampling.method != IblMethod::SplitSum) {
+        const auto source = m_precompute->source(assets.environment, stats, error);
+        if (!source)
+            return std::nullopt;
+        scene.environment.setSource(source);
+    }
     return scene;
-}
-
-bool FrameRenderer::addEnvironmentSource(
-    const Environment& environment, RenderScene& scene, IblStats* stats, std::string* error)
-{
-    if (scene.sampling.method == IblMethod::SplitSum)
-        return true;
-    const auto source = m_precompute->source(environment, stats, error);
-    if (!source)
-        return false;
-    scene.environment.setSource(source);
-    return true;
 }
 
 Framebuffer* FrameRenderer::target(

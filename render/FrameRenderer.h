@@ -78,23 +78,24 @@ public:
     FrameRenderer(const FrameRenderer&) = delete;
     FrameRenderer& operator=(const FrameRenderer&) = delete;
 
-    // The frame `project` describes with `assets` (core/ProjectAssets.h), lit by the IBL of its
-    // environment at `settings`, with the DFG table of every visibility term its materials use.
-    // `stats` (optional) says what the precompute did (reset, then the tables added). nullopt
-    // with *error ("IblPrecompute::prepare: ...", "IblPrecompute::dfgTable: ...") on failure.
+    // The one way every caller builds a frame (the views and their refinement, the Compare view's
+    // cells, `facet render`, `sheet`, `bench`, the tests): the frame `project` describes with `assets`
+    // (core/ProjectAssets.h), as `options` say (render/SceneFromProject.h: reference view, method,
+    // the view's turntable and wireframe), lit by the IBL of its environment at `settings`, with the
+    // DFG table of every visibility term its materials use and, for a sampled method, the
+    // environment at source resolution. `ibl`: the IBL set when the caller has it already (the
+    // window's lighting worker made it); null: made here (a memory hit after the first call).
+    // `stats` (optional) says what the precompute did (reset when the set is made here, then the
+    // tables added). nullopt with *error ("IblPrecompute::prepare: ...", "IblPrecompute::dfgTable:
+    // ...") on failure.
     std::optional<RenderScene> prepare(const Project& project, const ProjectAssets& assets,
-        const IblSettings& settings, const SceneOptions& options, IblStats* stats, std::string* error);
+        const IblSettings& settings, const SceneOptions& options, IblStats* stats, std::string* error,
+        std::shared_ptr<const IblTextures> ibl = nullptr);
 
-    // The steps of prepare(), for callers that build the scene themselves (the viewport adds its
-    // turntable): the IBL set of `environment` at `settings` (a memory hit after the first call),
-    // and the DFG tables `scene` needs (stats added to).
+    // The IBL set of `environment` at `settings` (a memory hit after the first call), for callers
+    // that keep it across frames (the viewport).
     std::shared_ptr<const IblTextures> lighting(
         const Environment& environment, const IblSettings& settings, IblStats* stats, std::string* error);
-    bool addDfgTables(const IblSettings& settings, RenderScene& scene, IblStats* stats, std::string* error);
-
-    // The environment at source resolution (IblPrecompute::source) put into `scene` when its
-    // method reads it (IblMethod::Fis and Reference); prepare() calls it. False with *error on failure.
-    bool addEnvironmentSource(const Environment& environment, RenderScene& scene, IblStats* stats, std::string* error);
 
     // Renders `scene` into a width x height target of `format` and reads it back (top row first).
     // nullopt with *error set by the step that failed ("Framebuffer::create: ...", "Renderer::render: ...").

@@ -111,8 +111,8 @@ struct EnvironmentLighting {
 };
 
 // The lighting of an IblPrecompute::prepare() result, rotated and scaled as the environment says,
-// with no DFG table yet: add the ones the scene needs with addDfgTables() (render/SceneFromProject.h)
-// or EnvironmentLighting::setDfgLut.
+// with no DFG table yet: FrameRenderer::prepare (render/FrameRenderer.h) adds the ones the scene needs
+// (or EnvironmentLighting::setDfgLut).
 inline EnvironmentLighting environmentLighting(const std::shared_ptr<const IblTextures>& ibl, double rotationDegrees,
                                                double intensity, bool useSH)
 {

@@ -251,8 +251,8 @@ bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::str
         if (!scene.environment.dfgLutFor(visibility)) {
             const std::string name = toString(visibility);
             if (error)
-                *error = "Renderer::render: the scene has no split-sum DFG table for the visibility term '" + name
-                    + "' of its material (EnvironmentLighting::setDfgLut, addDfgTables)";
+                *error = "Renderer::render: the scene has no split-sum DFG table for the visibility term '"
+                    + name + "' of its material (FrameRenderer::prepare adds them)";
             return false;
         }
     if (scene.sampling.method != IblMethod::SplitSum && scene.mesh && !scene.environment.source.radiance) {

@@ -11,6 +11,7 @@
 #include "core/ProjectAssets.h"
 #include "render/IblPrecompute.h"
 #include "render/IblTextures.h"
+#include "render/Turntable.h"
 
 namespace facet {
 
@@ -107,6 +108,9 @@ RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets
     }
     scene.environment = environmentLighting(ibl, assets.environment.rotationDegrees(), assets.environment.intensity(),
                                             options.irradianceFromSH);
+    applyTurntable(scene, TurntableSubject::Object, options.objectTurnDegrees);
+    applyTurntable(scene, TurntableSubject::Environment, options.environmentTurnDegrees);
+    scene.wireframe = options.wireframe;
     return scene;
 }
 

@@ -31,6 +31,12 @@ struct SceneOptions {
     // previews with the split sum and refines by the sampled method in scenes of its own
     // (FrameRenderer::refine; the error view's reference).
     std::optional<IblMethod> iblMethod;
+    // The window's view of it (render/Turntable.h): the object turned about +Y by objectTurnDegrees
+    // (the model matrix), the environment by environmentTurnDegrees on top of its own rotation, and
+    // the mesh's edges drawn over it (RenderScene::wireframe). None of them is part of the project.
+    double objectTurnDegrees = 0.0;
+    double environmentTurnDegrees = 0.0;
+    bool wireframe = false;
 };
 
 // The SceneOptions that go with IBL `settings`: irradiance from the SH9 coefficients when the
@@ -39,8 +45,10 @@ SceneOptions sceneOptionsFor(const IblSettings& settings, bool referenceView);
 
 // The frame `project` describes, with `assets` (core/ProjectAssets.h: loadProjectAssets) and the
 // environment's IBL textures `ibl` (render/IblPrecompute; may be null for a background-only or
-// debug frame). Computes the dielectric average albedo the energy-preserving coupling needs.
-// The scene has no split-sum DFG table yet: addDfgTables() below adds the ones it needs.
+// debug frame), turned and drawn as `options` say. Computes the dielectric average albedo the
+// energy-preserving coupling needs. The scene has no split-sum DFG table and no environment source
+// yet: a frame is built with FrameRenderer::prepare (render/FrameRenderer.h), which adds them; this
+// alone serves callers that only read the scene (which maps a frame would draw).
 RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets,
                              const std::shared_ptr<const IblTextures>& ibl, const SceneOptions& options = {});
 

@@ -414,7 +414,7 @@ void RendererGLTest::missingDfgTableIsRefused()
     QVERIFY(!m_renderer->render(scene, *target, &error));
     QCOMPARE(error,
         std::string("Renderer::render: the scene has no split-sum DFG table for the visibility term '")
-            + toString(own) + "' of its material (EnvironmentLighting::setDfgLut, addDfgTables)");
+            + toString(own) + "' of its material (FrameRenderer::prepare adds them)");
     const Image untouched = target->readPixels();
     for (int y = 0; y < 16; ++y)
         for (int x = 0; x < 16; ++x)

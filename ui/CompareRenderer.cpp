@@ -199,11 +199,9 @@ std::optional<RenderScene> CompareRenderer::sceneOf(
     const IblSettings settings = iblSettingsOf(cell.project);
     SceneOptions options = sceneOptionsFor(settings, false);
     options.iblMethod = method;
-    RenderScene scene = sceneFromProject(cell.project, cell.assets, ibl, options);
     IblStats stats;
-    if (!m_frames->addDfgTables(settings, scene, &stats, error)
-        || !m_frames->addEnvironmentSource(cell.assets.environment, scene, &stats, error))
-        return std::nullopt;
+    std::optional<RenderScene> scene
+        = m_frames->prepare(cell.project, cell.assets, settings, options, &stats, error, ibl);
     m_stats.iblMs += stats.msTotal;
     return scene;
 }

@@ -483,17 +483,14 @@ QString SceneController::environmentName() const
     return json::isBuiltinSpec(name) ? source : QFileInfo(source).fileName();
 }
 
-RenderScene SceneController::scene(const std::shared_ptr<const IblTextures>& ibl, IblMethod method) const
+SceneOptions SceneController::sceneOptions(IblMethod method) const
 {
-    const IblSettings settings = iblSettings();
-    SceneOptions options;
-    options.irradianceFromSH = settings.irradiance == IblSettings::Irradiance::SH;
+    SceneOptions options = sceneOptionsFor(iblSettings(), /*referenceView=*/false);
     options.iblMethod = method;
-    RenderScene scene = sceneFromProject(m_document->project(), m_assets, ibl, options);
-    applyTurntable(scene, TurntableSubject::Object, m_objectTurntableDegrees);
-    applyTurntable(scene, TurntableSubject::Environment, m_environmentTurntableDegrees);
-    scene.wireframe = m_wireframe;
-    return scene;
+    options.objectTurnDegrees = m_objectTurntableDegrees;
+    options.environmentTurnDegrees = m_environmentTurntableDegrees;
+    options.wireframe = m_wireframe;
+    return options;
 }
 
 IblMethod SceneController::refinementMethod() const

@@ -27,6 +27,7 @@
 #include "core/ProjectAssets.h"
 #include "render/IblSettings.h"
 #include "render/RenderScene.h"
+#include "render/SceneFromProject.h"
 #include "ui/DocumentAssets.h"
 #include "ui/DocumentChanges.h"
 
@@ -105,11 +106,11 @@ public:
     // file ("night.exr is missing; ..."); empty when it is in use.
     const QString& environmentProblem() const { return m_environmentProblem; }
 
-    // The frame to draw, with the environment's IBL textures (null: background-only lighting), by
-    // the split sum (the interactive preview) or by `method` at the project's samples for it
-    // (the still frame's refinement, ViewportRenderer::refine).
-    RenderScene scene(
-        const std::shared_ptr<const IblTextures>& ibl, IblMethod method = IblMethod::SplitSum) const;
+    // How the view's frame is built from the project (FrameRenderer::prepare): by the split sum
+    // (the interactive preview) or by `method` at the project's samples for it (the still frame's
+    // refinement, ViewportRenderer::refine), with the IBL settings' irradiance source, the view's
+    // turntable angles and its wireframe.
+    SceneOptions sceneOptions(IblMethod method = IblMethod::SplitSum) const;
     // The method the still frame refines to: the project's environment.method (split-sum: none).
     IblMethod refinementMethod() const;
 

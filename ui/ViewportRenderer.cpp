@@ -318,7 +318,15 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
         return true;
     }
 
-    RenderScene frame = scene.scene(m_ibl);
+    std::string problem;
+    // The split-sum table of the material's visibility term: a memory hit in IblPrecompute after
+    // the first frame that needed it; a BRDF switch loads or makes one table, nothing else.
+    IblStats dfgStats;
+    std::optional<RenderScene> preview = m_frames->prepare(scene.document()->project(), scene.assets(),
+        scene.iblSettings(), scene.sceneOptions(), &dfgStats, &problem, m_ibl);
+    if (!preview)
+        return fail(problem);
+    RenderScene& frame = *preview;
     // Maps: complete textures only (uploads happen between frames), filtered for this GL and
     // this kind of frame.
     m_stats.mapsHeldBack = holdBackUnreadyMaps(frame, &m_stats.textureProblem);
@@ -331,14 +339,8 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
 
     scale = std::clamp(scale, 0.05, 1.0);
     const bool reduced = scale < 1.0;
-    std::string problem;
     m_stats.anisotropy = TextureFiltering::anisotropyFor(m_glInfo, reduced);
     m_frames->textureCache().setMaxAnisotropy(m_stats.anisotropy);
-    // The split-sum table of the material's visibility term: a memory hit in IblPrecompute after
-    // the first frame that needed it; a BRDF switch loads or makes one table, nothing else.
-    IblStats dfgStats;
-    if (!m_frames->addDfgTables(scene.iblSettings(), frame, &dfgStats, &problem))
-        return fail(problem);
     if (dfgStats.passesRun > 0 || dfgStats.cacheHitsDisk > 0 || dfgStats.dfgShipped > 0) {
         m_stats.iblMs += dfgStats.msTotal;
         iblMsHere += dfgStats.msTotal;
@@ -406,12 +408,12 @@ ViewportRenderer::ShownPixel ViewportRenderer::shownPixel(
 
 std::optional<RenderScene> ViewportRenderer::refinementScene(const SceneController& scene, std::string* error)
 {
-    RenderScene sampled = scene.scene(m_ibl, scene.refinementMethod());
-    std::string ignored;
-    holdBackUnreadyMaps(sampled, &ignored);
-    if (!m_frames->addDfgTables(scene.iblSettings(), sampled, nullptr, error)
-        || !m_frames->addEnvironmentSource(scene.assets().environment, sampled, nullptr, error))
+    std::optional<RenderScene> sampled = m_frames->prepare(scene.document()->project(), scene.assets(),
+        scene.iblSettings(), scene.sceneOptions(scene.refinementMethod()), nullptr, error, m_ibl);
+    if (!sampled)
         return std::nullopt;
+    std::string ignored;
+    holdBackUnreadyMaps(*sampled, &ignored);
     return sampled;
 }
 
@@ -470,7 +472,9 @@ int ViewportRenderer::holdBackUnreadyMaps(RenderScene& frame, std::string* probl
 
 int ViewportRenderer::queueUploads(const SceneController& scene)
 {
-    RenderScene frame = scene.scene(m_ibl);
+    // Only the maps are read: the scene without its tables (render/SceneFromProject.h).
+    RenderScene frame
+        = sceneFromProject(scene.document()->project(), scene.assets(), m_ibl, scene.sceneOptions());
     std::string problem;
     return holdBackUnreadyMaps(frame, &problem);
 }
