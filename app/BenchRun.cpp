@@ -96,7 +96,7 @@ Project benchProject(const BenchEnvironment& environment, const BenchMaterial& m
     project.environment.rotationDegrees = 0.0;
     project.environment.intensity = 1.0;
     project.view.mesh = "sphere";
-    project.view.debugView = "none";
+    project.view.debugView = DebugView::None;
     project.material().name = material.name;
     project.material().setBaseColor(material.baseColor);
     project.material().setFactor(MapSlot::Metallic, material.metallic);

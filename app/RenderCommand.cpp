@@ -275,13 +275,14 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
         project.view.mesh = o.parser.value(o.mesh).toStdString();
     if (o.parser.isSet(o.view)) {
         const QString name = o.parser.value(o.view);
-        if (!debugViewFromString(name.toStdString())) {
+        const std::optional<DebugView> view = debugViewFromString(name.toStdString());
+        if (!view) {
             *error = QStringLiteral("--view: unknown debug view '%1' (expected one of: %2)")
                          .arg(name, QString::fromStdString(debugViewNameList()));
             *exitCode = kExitUsage;
             return std::nullopt;
         }
-        project.view.debugView = name.toStdString();
+        project.view.debugView = *view;
     }
     if (o.parser.isSet(o.quality)) {
         const auto quality = iblQualityFromString(o.parser.value(o.quality).toStdString());
@@ -412,9 +413,9 @@ int runGroundTruth(const RenderRequest& request)
             project.view.mesh.c_str());
         return RenderCommand::kExitUsage;
     }
-    if (project.view.debugView != "none") {
+    if (project.view.debugView != DebugView::None) {
         std::fprintf(stderr, "facet render: --spp renders the shaded image only, not debug view '%s'\n",
-            project.view.debugView.c_str());
+            toString(project.view.debugView));
         return RenderCommand::kExitUsage;
     }
     std::string error;

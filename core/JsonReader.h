@@ -185,6 +185,26 @@ public:
         m_messages.fail(pathOf(key), "unknown name \"" + name + "\" (expected one of " + expected + ")");
     }
 
+    // A name `fromString` knows (an enum with aliases, such as core/DebugView's); otherwise
+    // "unknown <what> "<name>" (expected one of: <expected>)".
+    template <typename Enum, typename Parse>
+    void named(
+        const char* key, Enum& out, const Parse& fromString, const char* what, const std::string& expected)
+    {
+        const QJsonValue v = value(key);
+        if (v.isUndefined())
+            return;
+        if (!v.isString())
+            return wrongType(key, "a string", v);
+        const std::string name = ss(v.toString());
+        if (const std::optional<Enum> known = fromString(name)) {
+            out = *known;
+            return;
+        }
+        m_messages.fail(pathOf(key),
+            "unknown " + std::string(what) + " \"" + name + "\" (expected one of: " + expected + ")");
+    }
+
     // A nested object; nullopt when missing or of the wrong type (then an error is recorded).
     std::optional<QJsonObject> object(const char* key)
     {

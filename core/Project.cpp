@@ -123,7 +123,7 @@ QJsonObject viewToJson(const ViewSettings& view, const std::string& baseDir)
     o[QLatin1String("gamma")] = view.gamma;
     o[QLatin1String("ocioDisplay")] = qs(view.ocioDisplay);
     o[QLatin1String("ocioView")] = qs(view.ocioView);
-    o[QLatin1String("debugView")] = qs(view.debugView);
+    o[QLatin1String("debugView")] = QLatin1String(toString(view.debugView));
     o[QLatin1String("mesh")] = qs(json::storedSpec(view.mesh, baseDir));
     o[QLatin1String("keepUnits")] = view.keepUnits;
     o[QLatin1String("msaaSamples")] = view.msaaSamples;
@@ -144,7 +144,7 @@ void readView(Messages& messages, const QJsonObject& object, const std::string& 
     r.number("gamma", view.gamma);
     r.string("ocioDisplay", view.ocioDisplay);
     r.string("ocioView", view.ocioView);
-    r.string("debugView", view.debugView);
+    r.named("debugView", view.debugView, debugViewFromString, "debug view", debugViewNameList());
     std::string mesh = view.mesh;
     r.string("mesh", mesh);
     view.mesh = json::resolvedSpec(mesh, baseDir);
@@ -337,13 +337,6 @@ bool ViewSettings::validate(std::string* problem) const
         return fail("ocioDisplay: must be set when ocioView is (\"" + ocioView + "\")", problem);
     if (!ocioDisplay.empty() && ocioView.empty())
         return fail("ocioView: must be set when ocioDisplay is (\"" + ocioDisplay + "\")", problem);
-    if (debugView.empty())
-        return fail("debugView: must not be empty (\"none\" shows the shaded image)", problem);
-    // An unknown view would silently show the shaded image.
-    if (!debugViewFromString(debugView))
-        return fail("debugView: unknown debug view \"" + debugView
-                + "\" (expected one of: " + debugViewNameList() + ")",
-            problem);
     if (mesh.empty())
         return fail("mesh: must not be empty (\"sphere\" is the built-in sphere)", problem);
     if (msaaSamples != 1 && msaaSamples != 2 && msaaSamples != 4 && msaaSamples != 8 && msaaSamples != 16)

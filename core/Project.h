@@ -26,6 +26,7 @@
 
 #include "core/Camera.h"
 #include "core/CompareLayout.h"
+#include "core/DebugView.h"
 #include "core/Light.h"
 #include "core/Material.h"
 
@@ -85,7 +86,7 @@ struct ViewSettings {
     // An OCIO display/view pair (from $OCIO's config); both empty: Facet's own transform above.
     std::string ocioDisplay;
     std::string ocioView;
-    std::string debugView = "none"; // a debug view name, core/DebugView.h ("none": the shaded image)
+    DebugView debugView = DebugView::None; // core/DebugView.h (None: the shaded image)
     // "sphere" (a built-in mesh name: lower-case letters, digits, '-') or a mesh file path.
     std::string mesh = "sphere";
     // False: the mesh is centred and scaled to the unit bounding sphere, which every built-in

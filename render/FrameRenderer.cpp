@@ -31,7 +31,7 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 // Whether the scene's debug view shows light the samples integrate (not base colour, normals, ...).
 bool showsIntegratedLight(const RenderScene& scene)
 {
-    return debugViewShowsIntegratedLight(debugViewFromString(scene.view.debugView).value_or(DebugView::None));
+    return debugViewShowsIntegratedLight(scene.view.debugView);
 }
 
 glm::dvec2 jitterOf(const RenderScene& scene, int index)

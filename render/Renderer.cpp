@@ -173,7 +173,7 @@ SurfaceVariantKey Renderer::variantKeyFor(const RenderScene& scene, int material
         key.features = key.features | SurfaceFeature::HasVertexColors;
     if (splitSumSharpLobes(scene, material))
         key.features = key.features | SurfaceFeature::SplitSumSharpLobes;
-    key.debugView = debugViewFromString(scene.view.debugView).value_or(DebugView::None);
+    key.debugView = scene.view.debugView;
     return key;
 }
 

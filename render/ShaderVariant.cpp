@@ -172,7 +172,7 @@ SurfaceFeatures texCoordFeatures(const Material& material, SurfaceFeatures featu
         return 0;
     for (MapSlot slot : kAllMapSlots)
         if (samplesOwnTexture(features, slot) && material.map(slot).texCoord == 1)
-            return uint32_t(SurfaceFeature::HasTexCoord1);
+            return SurfaceFeatures(SurfaceFeature::HasTexCoord1);
     return 0;
 }
 
@@ -188,7 +188,7 @@ std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key)
 {
     std::vector<std::string> defines;
     for (int bit = 0; bit < kSurfaceFeatureBits; ++bit)
-        if (key.features & (1u << bit))
+        if (key.features & (SurfaceFeatures(1) << bit))
             defines.emplace_back(kFeatureDefines[std::size_t(bit)]);
     // The debug views' ids, from core/DebugView's one table (debug_views.glsl compares names,
     // never numbers), and the view this variant shows.

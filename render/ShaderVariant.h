@@ -26,62 +26,73 @@ namespace facet {
 
 class ShaderProgram;
 
-enum class SurfaceFeature : uint32_t {
+// 64 bits: the layered lobes (clearcoat, sheen, specular, anisotropy, iridescence) and their maps
+// take a bit each, as Filament gltfio's MaterialKey gives every extension and texture its own.
+enum class SurfaceFeature : uint64_t {
     None = 0,
-    HasBaseColorMap = 1u << 0, // HAS_BASE_COLOR_MAP
-    HasNormalMap = 1u << 1, // HAS_NORMAL_MAP (tangent frame, aTangent)
-    HasMetallicMap = 1u << 2, // HAS_METALLIC_MAP
-    HasRoughnessMap = 1u << 3, // HAS_ROUGHNESS_MAP
-    HasOcclusionMap = 1u << 4, // HAS_OCCLUSION_MAP
-    HasPunctualLights = 1u << 5, // HAS_PUNCTUAL_LIGHTS (the light loop)
-    IrradianceSH = 1u << 6, // IRRADIANCE_SH: 9 SH uniforms instead of the irradiance cubemap
-    MultiScatter = 1u << 7, // MULTI_SCATTER: Turquin 2019 compensation
-    CompositionLearnOpenGL = 1u << 8, // COMPOSITION_LEARNOPENGL (else glTF 2.0 Appendix B)
-    EnergyPreservingCoupling = 1u << 9, // COUPLING_ENERGY_PRESERVING (else fresnel_mix)
-    Beckmann = 1u << 10, // DISTRIBUTION_BECKMANN (else GGX)
-    VisibilityUncorrelated = 1u << 11, // VISIBILITY_UNCORRELATED (separable Smith-GGX)
-    VisibilitySchlick = 1u << 12, // VISIBILITY_SCHLICK (Smith with Schlick-GGX G1)
-    FresnelDielectric = 1u << 13, // FRESNEL_DIELECTRIC (exact dielectric Fresnel, lights only)
-    HasEmissiveMap = 1u << 14, // HAS_EMISSIVE_MAP
-    AlphaMask = 1u << 15, // ALPHA_MASK: discard below uAlphaCutoff (glTF alphaMode MASK)
-    AlphaBlend = 1u << 16, // ALPHA_BLEND: premultiplied colour and alpha out (glTF BLEND)
+    HasBaseColorMap = 1ull << 0, // HAS_BASE_COLOR_MAP
+    HasNormalMap = 1ull << 1, // HAS_NORMAL_MAP (tangent frame, aTangent)
+    HasMetallicMap = 1ull << 2, // HAS_METALLIC_MAP
+    HasRoughnessMap = 1ull << 3, // HAS_ROUGHNESS_MAP
+    HasOcclusionMap = 1ull << 4, // HAS_OCCLUSION_MAP
+    HasPunctualLights = 1ull << 5, // HAS_PUNCTUAL_LIGHTS (the light loop)
+    IrradianceSH = 1ull << 6, // IRRADIANCE_SH: 9 SH uniforms instead of the irradiance cubemap
+    MultiScatter = 1ull << 7, // MULTI_SCATTER: Turquin 2019 compensation
+    CompositionLearnOpenGL = 1ull << 8, // COMPOSITION_LEARNOPENGL (else glTF 2.0 Appendix B)
+    EnergyPreservingCoupling = 1ull << 9, // COUPLING_ENERGY_PRESERVING (else fresnel_mix)
+    Beckmann = 1ull << 10, // DISTRIBUTION_BECKMANN (else GGX)
+    VisibilityUncorrelated = 1ull << 11, // VISIBILITY_UNCORRELATED (separable Smith-GGX)
+    VisibilitySchlick = 1ull << 12, // VISIBILITY_SCHLICK (Smith with Schlick-GGX G1)
+    FresnelDielectric = 1ull << 13, // FRESNEL_DIELECTRIC (exact dielectric Fresnel, lights only)
+    HasEmissiveMap = 1ull << 14, // HAS_EMISSIVE_MAP
+    AlphaMask = 1ull << 15, // ALPHA_MASK: discard below uAlphaCutoff (glTF alphaMode MASK)
+    AlphaBlend = 1ull << 16, // ALPHA_BLEND: premultiplied colour and alpha out (glTF BLEND)
     // One fetch for scalar maps that read the same texture (a packed occlusion-roughness-metallic
     // file; same file, colour space and UV transform): the later slot reuses the earlier one's
     // texel and declares no sampler (sharedTexelFeatures).
-    RoughnessTexelFromMetallic = 1u << 17, // ROUGHNESS_TEXEL_FROM_METALLIC
-    OcclusionTexelFromMetallic = 1u << 18, // OCCLUSION_TEXEL_FROM_METALLIC
-    OcclusionTexelFromRoughness = 1u << 19, // OCCLUSION_TEXEL_FROM_ROUGHNESS
+    RoughnessTexelFromMetallic = 1ull << 17, // ROUGHNESS_TEXEL_FROM_METALLIC
+    OcclusionTexelFromMetallic = 1ull << 18, // OCCLUSION_TEXEL_FROM_METALLIC
+    OcclusionTexelFromRoughness = 1ull << 19, // OCCLUSION_TEXEL_FROM_ROUGHNESS
     // IBL_REFERENCE: the environment by Monte Carlo (IblMethod::Reference, ibl_reference.glsl)
     // from the source equirect and its sampling tables, instead of the split sum's cubes.
-    IblReference = 1u << 20,
+    IblReference = 1ull << 20,
     // ANALYTIC_SPHERE_NORMAL: docs/architecture.md's reference view of the unit sphere, shaded at the exact
     // hit of the pixel's ray (n = hit, v = -ray) instead of the mesh's interpolated normal, as the
     // CPU ground truth does (RenderScene::analyticSphere).
-    AnalyticSphereNormal = 1u << 21,
+    AnalyticSphereNormal = 1ull << 21,
     // IBL_FIS: the environment by filtered importance sampling of the pixel's own lobe
     // (IblMethod::Fis, ibl_fis.glsl) from the environment cube's mip chain and the source equirect.
-    IblFis = 1u << 22,
+    IblFis = 1ull << 22,
     // SPLIT_SUM_SHARP_LOBES: the split sum integrates lobes sharper than the prefiltered level 1
     // by a few fis samples (IblSampling::sharpLobeSamples). Only for materials whose roughness
     // (factor times its map's smallest value) reaches below level 1: the loop's mere presence cost
     // llvmpipe a third of a textured frame where no pixel took it.
-    SplitSumSharpLobes = 1u << 23,
+    SplitSumSharpLobes = 1ull << 23,
     // HAS_VERTEX_COLOR: the mesh has glTF COLOR_0 (Mesh::hasVertexColors), which multiplies the
     // base colour and alpha; meshes without it read no colour attribute.
-    HasVertexColors = 1u << 24,
+    HasVertexColors = 1ull << 24,
     // MATERIAL_UNLIT: KHR_materials_unlit, the base colour is the radiance (Material::unlit).
-    Unlit = 1u << 25,
+    Unlit = 1ull << 25,
     // HAS_TEXCOORD_1: a sampled map reads the mesh's second UV set (MaterialMap::texCoord 1 and
     // Mesh::hasTexCoord1); without it every map reads set 0 and no second UV is interpolated.
-    HasTexCoord1 = 1u << 26,
+    HasTexCoord1 = 1ull << 26,
 };
 inline constexpr int kSurfaceFeatureBits = 27;
+static_assert(kSurfaceFeatureBits <= 64);
 
-using SurfaceFeatures = uint32_t;
-inline constexpr SurfaceFeatures operator|(SurfaceFeature a, SurfaceFeature b) { return uint32_t(a) | uint32_t(b); }
-inline constexpr SurfaceFeatures operator|(SurfaceFeatures a, SurfaceFeature b) { return a | uint32_t(b); }
-inline constexpr bool hasFeature(SurfaceFeatures set, SurfaceFeature f) { return (set & uint32_t(f)) != 0; }
-
+using SurfaceFeatures = uint64_t;
+inline constexpr SurfaceFeatures operator|(SurfaceFeature a, SurfaceFeature b)
+{
+    return uint64_t(a) | uint64_t(b);
+}
+inline constexpr SurfaceFeatures operator|(SurfaceFeatures a, SurfaceFeature b)
+{
+    return a | uint64_t(b);
+}
+inline constexpr bool hasFeature(SurfaceFeatures set, SurfaceFeature f)
+{
+    return (set & uint64_t(f)) != 0;
+}
 
 struct SurfaceVariantKey {
     SurfaceFeatures features = 0;

@@ -121,7 +121,7 @@ void DebugViewGoldenGLTest::matchesGolden()
     project.environment.source = "studio"; // built-in, procedural
     project.environment.rotationDegrees = 30.0;
     project.view.mesh = "sphere";
-    project.view.debugView = view.toStdString();
+    project.view.debugView = debugViewFromString(view.toStdString()).value();
     project.lights.clear();
     project.material().setBaseColor(glm::dvec3(0.9, 0.6, 0.3));
     project.material().setFactor(MapSlot::Metallic, 1.0);

@@ -310,7 +310,7 @@ std::vector<Row> rows()
         "view OCIO view", [](Project& p) { p.view.ocioView = "ACES"; },
         DocumentChanges::ofView(ViewProperty::Ocio));
     add(
-        "view debug view", [](Project& p) { p.view.debugView = "normal"; },
+        "view debug view", [](Project& p) { p.view.debugView = DebugView::ShadingNormal; },
         DocumentChanges::ofView(ViewProperty::DebugView));
     add(
         "view MSAA", [](Project& p) { p.view.msaaSamples = 8; }, DocumentChanges::ofView(ViewProperty::Msaa));
@@ -446,8 +446,8 @@ void DocumentChangesTest::kindsOfEachEdit()
     QCOMPARE(kinds([](Project& p) { std::swap(p.materials[0], p.materials[1]); }),
         DocumentChangeKinds(DocumentChange::MaterialFactors));
     QCOMPARE(kinds([](Project& p) { p.lights.pop_back(); }), DocumentChangeKinds(DocumentChange::Lights));
-    QCOMPARE(
-        kinds([](Project& p) { p.view.debugView = "normal"; }), DocumentChangeKinds(DocumentChange::View));
+    QCOMPARE(kinds([](Project& p) { p.view.debugView = DebugView::ShadingNormal; }),
+        DocumentChangeKinds(DocumentChange::View));
 }
 
 void DocumentChangesTest::questions_data()

@@ -142,7 +142,7 @@ std::optional<Image> GltfRenderGLTest::render(const GltfWriter& w, const QString
         return std::nullopt;
     }
     project->environment.source = "uniform:" + std::to_string(kBackground);
-    project->view.debugView = view;
+    project->view.debugView = debugViewFromString(view).value();
     if (edit)
         edit(*project);
     if (opened)

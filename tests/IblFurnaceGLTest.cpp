@@ -183,7 +183,7 @@ Project furnaceProject(const Row& row)
     project.environment.quality = IblQuality::Default;
     project.environment.method = IblMethod::SplitSum; // the split sum's furnace (fis has its own test)
     project.view.mesh = "sphere";
-    project.view.debugView = "none";
+    project.view.debugView = DebugView::None;
     project.lights.clear();
     project.material().setBaseColor(row.baseColor);
     project.material().setFactor(MapSlot::Metallic, row.metallic);

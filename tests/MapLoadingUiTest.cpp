@@ -155,7 +155,7 @@ void MapLoadingUiTest::init()
     m_document->newProject();
     // The base colour as it is, unlit: the factor and the map are two flat colours on screen.
     ViewSettings view = m_document->project().view;
-    view.debugView = "base-color";
+    view.debugView = DebugView::BaseColor;
     m_document->setView(view, QStringLiteral("View"));
     QVERIFY(waitFor([&] { return m_scene->pendingMapLoads() == 0; }));
     QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);

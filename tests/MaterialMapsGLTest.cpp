@@ -467,7 +467,7 @@ private:
 std::optional<Image> MaterialMapsGLTest::render(const Project& project, const std::string& view, std::string* error)
 {
     Project p = project;
-    p.view.debugView = view;
+    p.view.debugView = debugViewFromString(view).value();
     return m_gpu.renderAsCommand(p, "draft", kRenderSize, error);
 }
 

@@ -313,7 +313,7 @@ bool MaterialsUiTest::openForPixels(const QString& asset, const std::string& deb
     environment.source = "uniform:0.5";
     m_document->setEnvironment(environment, QStringLiteral("test setup"));
     ViewSettings view = m_document->project().view;
-    view.debugView = debugView;
+    view.debugView = debugViewFromString(debugView).value();
     m_document->setView(view, QStringLiteral("test setup"));
     m_document->undoStack()->clear();
     return true;

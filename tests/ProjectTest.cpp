@@ -154,7 +154,7 @@ Project everythingChanged(const QString& root)
     v.gamma = 2.4;
     v.ocioDisplay = "sRGB - Display";
     v.ocioView = "ACES 1.0 - SDR Video";
-    v.debugView = "shading-normal";
+    v.debugView = DebugView::ShadingNormal;
     v.mesh = under("meshes/bunny.glb");
     v.msaaSamples = 8;
     v.background = BackgroundMode::Color;
@@ -535,7 +535,7 @@ private Q_SLOTS:
         const auto loaded = Project::load(path.toStdString(), &error);
         QVERIFY2(loaded, error.c_str());
         QCOMPARE(loaded->lights.size(), std::size_t(kMaxLights));
-        QCOMPARE(loaded->view.debugView, std::string("d"));
+        QCOMPARE(loaded->view.debugView, DebugView::Distribution);
     }
 
     void brokenFilesGiveClearErrors_data()

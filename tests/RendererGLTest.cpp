@@ -307,7 +307,7 @@ void RendererGLTest::whiteFurnaceDebugView()
     // with the energy-preserving coupling a white dielectric is exactly 1 as well (E_s + 1 - E_s).
     TinyIbl ibl {glm::vec3(0.3f, 2.0f, 7.0f)};
     RenderScene scene = referenceScene(ibl);
-    scene.view.debugView = "white-furnace";
+    scene.view.debugView = DebugView::WhiteFurnace;
     scene.materials[0].material.setBaseColor(glm::dvec3(0.2, 0.4, 0.1));
     scene.materials[0].material.shading.coupling = DielectricCoupling::EnergyPreserving;
     const std::vector<SpherePixel> pixels = interiorPixels(kSize);
@@ -530,7 +530,7 @@ void RendererGLTest::extremesStayFinite()
                     // The shader replaces NaN by 0 before writing, so the image alone cannot show
                     // one: the non-finite view marks every pixel whose radiance was NaN, Inf or
                     // negative before that guard.
-                    scene.view.debugView = "non-finite";
+                    scene.view.debugView = DebugView::NonFinite;
                     scene.view.background = BackgroundMode::Color; // black: only the surface marks
                     scene.view.backgroundColor = glm::dvec3(0.0);
                     const Image marks = renderScene(scene, format, 32);
@@ -544,7 +544,7 @@ void RendererGLTest::extremesStayFinite()
                                               + std::to_string(radiance) + " roughness " + std::to_string(roughness)
                                               + " metallic " + std::to_string(metallic))
                                               .c_str());
-                    scene.view.debugView = "none";
+                    scene.view.debugView = DebugView::None;
                     const Image image = renderScene(scene, format, 32);
                     for (int y = 0; y < image.height(); ++y)
                         for (int x = 0; x < image.width(); ++x) {
@@ -617,7 +617,7 @@ void RendererGLTest::baseColorDebugView()
 {
     TinyIbl ibl {glm::vec3(1.0f)};
     RenderScene scene = referenceScene(ibl);
-    scene.view.debugView = "base-color";
+    scene.view.debugView = DebugView::BaseColor;
     const glm::dvec3 base(0.2, 0.5, 0.8);
     scene.materials[0].material.setBaseColor(base);
     Image image = renderScene(scene);
@@ -681,7 +681,7 @@ void RendererGLTest::everyFeatureAndDebugViewCompiles()
             if (model != models[0] && view != 0)
                 continue; // debug views once, with the default model
             scene.materials[0].material.shading = model;
-            scene.view.debugView = toString(DebugView(view));
+            scene.view.debugView = DebugView(view);
             std::string error;
             std::optional<Framebuffer> target
                 = Framebuffer::create(16, 16, FramebufferFormat::RGBA16F, &error);
@@ -696,7 +696,7 @@ void RendererGLTest::everyFeatureAndDebugViewCompiles()
         }
     // SH irradiance of a constant E = pi gives the furnace's irradiance view: E / pi = 1.
     scene.materials[0].material.shading = models[0];
-    scene.view.debugView = "irradiance";
+    scene.view.debugView = DebugView::Irradiance;
     const Image image = renderScene(scene);
     for (const SpherePixel& p : interiorPixels(kSize))
         QVERIFY(std::abs(image.at(p.x, p.y).x - 1.0f) < 1e-4f);
@@ -737,7 +737,7 @@ void RendererGLTest::texelDensityView()
         MapImage::fromImage(Image(256, 128, glm::vec4(0.5f)), MapLayout::Rgb, MapSampleType::UInt8));
     scene.materials[0].material.map(MapSlot::BaseColor).path = "/t/density.png";
     scene.materials[0].maps[std::size_t(MapSlot::BaseColor)] = {texture, "/t/density.png", 7};
-    scene.view.debugView = "texel-density";
+    scene.view.debugView = DebugView::TexelDensity;
     const double density = 256.0 / (2.0 * std::numbers::pi);
     scene.view.texelDensityTarget = density * targetOverDensity;
     const Image image = renderScene(scene);
@@ -755,9 +755,9 @@ void RendererGLTest::uvCheckerView()
     // the unit (the CPU formula below is the shader's).
     TinyIbl ibl {glm::vec3(1.0f)};
     RenderScene scene = referenceScene(ibl);
-    scene.view.debugView = "uv";
+    scene.view.debugView = DebugView::Uv;
     const Image uvs = renderScene(scene);
-    scene.view.debugView = "uv-checker";
+    scene.view.debugView = DebugView::UvChecker;
     const Image checker = renderScene(scene);
     int light = 0;
     int dark = 0;

@@ -218,8 +218,9 @@ ViewDock::ViewDock(Document* document, QWidget* parent)
         });
     });
     connect(m_debugView, &QComboBox::activated, this, [this] {
-        const std::string name = m_debugView->currentData().toString().toStdString();
-        editView(tr("Debug View"), MergeId::None, [&](ViewSettings& view) { view.debugView = name; });
+        const auto chosen = debugViewFromString(m_debugView->currentData().toString().toStdString());
+        editView(tr("Debug View"), MergeId::None,
+            [&](ViewSettings& view) { view.debugView = chosen.value_or(DebugView::None); });
     });
     connect(m_texelDensity, &QDoubleSpinBox::valueChanged, this, [this](double value) {
         if (m_document->project().view.texelDensityTarget == value)
@@ -296,15 +297,13 @@ void ViewDock::onDocumentChanged(DocumentChanges changes)
     selectData(m_ocioDisplay, QString::fromStdString(view.ocioDisplay));
     fillOcioViews(ocio ? QString::fromStdString(view.ocioDisplay) : m_ocioDisplay->currentData().toString());
     selectData(m_ocioView, QString::fromStdString(view.ocioView));
-    // An older file's alias ("d") selects its view ("distribution").
-    const std::optional<DebugView> debugView = debugViewFromString(view.debugView);
-    selectData(m_debugView, QString::fromLatin1(toString(debugView.value_or(DebugView::None))));
+    selectData(m_debugView, QString::fromLatin1(toString(view.debugView)));
     selectData(m_msaa, view.msaaSamples);
     {
         const QSignalBlocker blocker(m_texelDensity);
         m_texelDensity->setValue(view.texelDensityTarget);
     }
-    m_texelDensity->setEnabled(debugView == DebugView::TexelDensity);
+    m_texelDensity->setEnabled(view.debugView == DebugView::TexelDensity);
     m_encoding->setEnabled(!ocio);
     m_gamma->setEnabled(!ocio && view.displayEncoding == DisplayEncoding::Gamma);
     m_ocioDisplay->setEnabled(ocio);

@@ -17,7 +17,7 @@ Project iblMethodCaseProject(const IblMethodCase& c, IblMethod method, int sampl
     project.environment.method = method;
     project.environment.samples = method == IblMethod::SplitSum ? 0 : samples;
     project.view.mesh = "sphere";
-    project.view.debugView = "none";
+    project.view.debugView = DebugView::None;
     project.lights.clear();
     if (c.light) {
         Light sun;
