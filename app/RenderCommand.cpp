@@ -505,14 +505,13 @@ int runGpu(const RenderRequest& request)
         return RenderCommand::kExitFailure;
     }
     const auto contextMade = Clock::now();
-    const auto settings = IblSettings::preset(toString(project.environment.quality));
-    Q_ASSERT(settings); // the project validated its quality name
+    const IblSettings settings = IblSettings::preset(project.environment.quality);
     int exitCode = 0;
     {
         FrameRenderer frames;
         IblStats iblStats;
-        const std::optional<RenderScene> scene = frames.prepare(project, *assets, *settings,
-            sceneOptionsFor(*settings, request.referenceView), &iblStats, &error);
+        const std::optional<RenderScene> scene = frames.prepare(
+            project, *assets, settings, sceneOptionsFor(settings, request.referenceView), &iblStats, &error);
         if (!scene) {
             std::fprintf(stderr, "facet render: %s\n", error.c_str());
             return RenderCommand::kExitFailure;

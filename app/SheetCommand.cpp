@@ -481,8 +481,7 @@ int SheetCommand::run(const SheetRequest& request)
     auto context = HeadlessGLContext::create(&error);
     if (!context)
         return fail(error);
-    const auto settings = IblSettings::preset(toString(request.project.environment.quality));
-    Q_ASSERT(settings); // the project validated its quality name
+    const IblSettings settings = IblSettings::preset(request.project.environment.quality);
     std::vector<Image> cells;
     IblStats total;
     int prepared = 0; // IBL sets not found in memory: each environment once
@@ -492,8 +491,8 @@ int SheetCommand::run(const SheetRequest& request)
         FrameRenderer frames;
         for (std::size_t i = 0; i < projects.size(); ++i) {
             IblStats stats;
-            const auto scene = frames.prepare(projects[i], assets[i], *settings,
-                sceneOptionsFor(*settings, request.referenceView), &stats, &error);
+            const auto scene = frames.prepare(projects[i], assets[i], settings,
+                sceneOptionsFor(settings, request.referenceView), &stats, &error);
             if (!scene)
                 return fail(error);
             prepared += stats.cacheHitsMemory == 0 ? 1 : 0; // computed, or read from the disk cache

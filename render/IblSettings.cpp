@@ -1,5 +1,6 @@
 #include "render/IblSettings.h"
 #include "core/Fnv1a.h"
+#include "core/Project.h"
 
 #include <algorithm>
 #include <bit>
@@ -77,10 +78,13 @@ IblSettings IblSettings::forImage(int equirectWidth) const
 // pass 3x / 5x / 7x longer), and the irradiance map's error is the same with 384, 1536 or 6144
 // source texels, so every preset sums 384 or 1536; SH9 stays an option, never a default (3.1%
 // vs 12.1% relative RMSE, red dielectric r 1 under studio). cubeSize is a maximum (forImage).
-std::optional<IblSettings> IblSettings::preset(const std::string& name)
+IblSettings IblSettings::preset(IblQuality quality)
 {
     IblSettings s;
-    if (name == "draft") {
+    switch (quality) {
+    case IblQuality::Default:
+        return s; // the member initialisers above
+    case IblQuality::Draft:
         s.cubeSize = 128;
         s.prefilterSize = 64;
         s.prefilterMipLevels = 5;
@@ -90,10 +94,7 @@ std::optional<IblSettings> IblSettings::preset(const std::string& name)
         s.dfgSize = 32;
         s.dfgSamples = 256;
         return s;
-    }
-    if (name == "default")
-        return s; // the member initialisers above
-    if (name == "high") {
+    case IblQuality::High:
         s.cubeSize = 512;
         s.prefilterSize = 256;
         s.prefilterMipLevels = 7;
@@ -104,12 +105,21 @@ std::optional<IblSettings> IblSettings::preset(const std::string& name)
         s.dfgSamples = 2048;
         return s;
     }
-    return std::nullopt;
+    return s;
+}
+
+std::optional<IblSettings> IblSettings::preset(const std::string& name)
+{
+    const std::optional<IblQuality> quality = iblQualityFromString(name);
+    return quality ? std::optional(preset(*quality)) : std::nullopt;
 }
 
 std::vector<std::string> IblSettings::presetNames()
 {
-    return {"draft", "default", "high"};
+    std::vector<std::string> names;
+    for (IblQuality quality : {IblQuality::Draft, IblQuality::Default, IblQuality::High})
+        names.emplace_back(toString(quality));
+    return names;
 }
 
 } // namespace facet

@@ -15,6 +15,8 @@
 
 namespace facet {
 
+enum class IblQuality; // core/Project.h
+
 struct IblSettings {
     enum class Irradiance {
         SH,  // the surface shader evaluates the 9 SH coefficients (cheap, ~-30%/+25% off on studio)
@@ -53,7 +55,9 @@ struct IblSettings {
     // IblPrecompute::prepare() (so the cache key holds what was really computed).
     IblSettings forImage(int equirectWidth) const;
 
-    // "draft", "default", "high"; nullopt for an unknown name.
+    // A project's quality (EnvironmentSettings::quality) as settings.
+    static IblSettings preset(IblQuality quality);
+    // By name, "draft", "default", "high" (toString(IblQuality)); nullopt for an unknown name.
     static std::optional<IblSettings> preset(const std::string& name);
     static std::vector<std::string> presetNames();
 };

@@ -7,6 +7,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "core/DfgTable.h"
+#include "core/Project.h"
 #include "render/IblSettings.h"
 #include "render/ShippedDfgTables.h"
 
@@ -18,6 +19,30 @@ class IblSettingsTest : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    // A project's quality and its name give the same settings; the three differ; a wrong name is none.
+    void presetsByQualityAndName_data()
+    {
+        QTest::addColumn<int>("quality");
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<int>("cubeSize");
+        QTest::newRow("draft") << int(IblQuality::Draft) << "draft" << 128;
+        QTest::newRow("default") << int(IblQuality::Default) << "default" << IblSettings {}.cubeSize;
+        QTest::newRow("high") << int(IblQuality::High) << "high" << 512;
+    }
+    void presetsByQualityAndName()
+    {
+        QFETCH(int, quality);
+        QFETCH(QString, name);
+        QFETCH(int, cubeSize);
+        const IblSettings byQuality = IblSettings::preset(IblQuality(quality));
+        const std::optional<IblSettings> byName = IblSettings::preset(name.toStdString());
+        QVERIFY(byName);
+        QCOMPARE(byQuality.hash(), byName->hash());
+        QCOMPARE(byQuality.cubeSize, cubeSize);
+        QVERIFY(IblSettings::presetNames().size() == 3);
+        QVERIFY(!IblSettings::preset(std::string("ultra")));
+    }
+
     void hashFollowsEveryField()
     {
         const IblSettings base;

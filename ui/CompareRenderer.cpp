@@ -35,7 +35,7 @@ namespace {
 
 IblSettings iblSettingsOf(const Project& project)
 {
-    return IblSettings::preset(toString(project.environment.quality)).value_or(IblSettings {});
+    return IblSettings::preset(project.environment.quality);
 }
 
 } // namespace

@@ -470,9 +470,7 @@ std::string SceneController::mapProblem(std::size_t material, MapSlot slot) cons
 
 IblSettings SceneController::iblSettings() const
 {
-    const auto settings = IblSettings::preset(toString(m_document->project().environment.quality));
-    Q_ASSERT(settings);
-    return settings.value_or(IblSettings {});
+    return IblSettings::preset(m_document->project().environment.quality);
 }
 
 QString SceneController::environmentName() const

@@ -137,7 +137,7 @@ int main(int argc, char** argv)
     int exitCode = 0;
     {
         FrameRenderer frames;
-        const IblSettings settings = *IblSettings::preset(toString(project.environment.quality));
+        const IblSettings settings = IblSettings::preset(project.environment.quality);
         SceneOptions sceneOptions = sceneOptionsFor(settings, /*referenceView=*/false);
         sceneOptions.iblMethod = IblMethod::Reference;
         const auto scene = frames.prepare(project, *assets, settings, sceneOptions, nullptr, &error);
