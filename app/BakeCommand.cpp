@@ -17,10 +17,10 @@
 #include <cstdio>
 #include <memory>
 
-#include "core/AtomicFile.h"
-#include "core/Environment.h"
-#include "core/FileSet.h"
-#include "core/Image.h"
+#include "core/ibl/Environment.h"
+#include "core/image/Image.h"
+#include "core/support/AtomicFile.h"
+#include "core/support/FileSet.h"
 #include "render/DfgLut.h"
 #include "render/GLTexture.h"
 #include "render/HeadlessGLContext.h"
@@ -277,7 +277,7 @@ int BakeCommand::run(const BakeRequest& request)
         if (const std::vector<std::string> existing = written.existing(names); !existing.empty())
             return fail(existing.front() + ": exists (use --force to replace the bake)");
 
-    // All or nothing (core/FileSet.h): a bake replaced with --force is the whole new one or the
+    // All or nothing (core/support/FileSet.h): a bake replaced with --force is the whole new one or the
     // old one, never some files of each beside an ibl.json that describes one of them.
     if (!written.begin(&error))
         return fail(request.outputDirectory + ": " + error);

@@ -9,7 +9,7 @@
 // its 9 SH coefficients, and the split-sum DFG table of each visibility term, as linear float
 // EXR files (one file a cube face), and `ibl.json`, the index with the conventions an engine
 // needs: axes and face order, the level-to-roughness map, what each channel holds. Every file is
-// written atomically (core/AtomicFile); files already in OUT_DIR are not replaced without
+// written atomically (core/support/AtomicFile); files already in OUT_DIR are not replaced without
 // --force, and a failed bake removes the files it had written, so a folder holds a whole bake or
 // what it held before. docs/app.md, "Baking IBL".
 

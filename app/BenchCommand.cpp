@@ -14,9 +14,8 @@
 #include <QFile>
 #include <QFileInfo>
 
-
-#include "core/Environment.h"
-#include "core/Project.h"
+#include "core/ibl/Environment.h"
+#include "core/project/Project.h"
 
 namespace facet {
 
@@ -284,7 +283,7 @@ std::vector<BenchConfig> BenchCommand::configsFor(
                 configs.push_back(
                     BenchConfig {"fis", "fis=" + std::to_string(samples), base, IblMethod::Fis, samples});
         } else if (group == QStringLiteral("reference")) {
-            // The converging integrator of core/GroundTruth on the GPU: it estimates the truth's
+            // The converging integrator of core/shading/GroundTruth on the GPU: it estimates the truth's
             // integral, so its error should be its noise plus the truth's, and the sweep is over
             // samples per pixel. The settings are the default preset's: they only draw the
             // background.

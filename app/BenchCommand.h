@@ -3,8 +3,8 @@
 // (docs/architecture.md, "Accuracy"). For each IBL configuration (the quality presets and
 // sweeps around the default one) and each environment, it times a fresh IBL precompute (no cache)
 // and renders the reference view of a metal and a dielectric at several roughness values, and
-// compares each image with the CPU ground truth (core/GroundTruth.h) by relative RMSE over the
-// sphere (core/ImageMetrics.h). It prints tables (time and error side by side) and writes a CSV.
+// compares each image with the CPU ground truth (core/shading/GroundTruth.h) by relative RMSE over the
+// sphere (core/image/ImageMetrics.h). It prints tables (time and error side by side) and writes a CSV.
 //
 //   facet bench [--env NAME[,NAME...]] [--size N] [--spp N] [--roughness R[,R...]]
 //       [--sweep GROUP[,GROUP...]] [--ibl-samples N[,N...]] [--repeat N] [--threads N]
@@ -24,7 +24,7 @@
 #include <QString>
 #include <QStringList>
 
-#include "core/Project.h"
+#include "core/project/Project.h"
 #include "render/IblSettings.h"
 
 namespace facet {

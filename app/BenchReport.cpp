@@ -6,7 +6,7 @@
 #include <tuple>
 #include <utility>
 
-#include "core/AtomicFile.h"
+#include "core/support/AtomicFile.h"
 
 namespace facet {
 

@@ -10,8 +10,8 @@
 
 #include <QString>
 
-#include "core/ImageMetrics.h"
-#include "core/Project.h"
+#include "core/image/ImageMetrics.h"
+#include "core/project/Project.h"
 #include "render/IblPrecompute.h"
 #include "render/IblSettings.h"
 
@@ -53,7 +53,8 @@ struct BenchRow {
 // The CSV header, comma-separated, no trailing newline: settings, times, errors, then the
 // configuration's summary over all its rows (config_median_rel_rmse, ...; the same on each).
 std::string benchCsvHeader();
-// Writes the header and one line per row through writeFileAtomically (core/AtomicFile.h). False with `error`
+// Writes the header and one line per row through writeFileAtomically (core/support/AtomicFile.h). False with
+// `error`
 // ("facet bench: --csv <path>: <reason>") when it cannot.
 bool writeBenchCsv(const QString& path, const std::vector<BenchRow>& rows, std::string* error);
 

@@ -6,9 +6,9 @@
 #include <QFileInfo>
 #include <QRegularExpression>
 
-#include "core/AssetLibrary.h"
-#include "core/AssetProject.h"
-#include "core/Environment.h"
+#include "core/ibl/Environment.h"
+#include "core/project/AssetLibrary.h"
+#include "core/project/AssetProject.h"
 
 namespace facet {
 

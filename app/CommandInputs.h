@@ -8,7 +8,7 @@
 #include <QString>
 #include <QStringList>
 
-#include "core/Project.h"
+#include "core/project/Project.h"
 
 namespace facet {
 

@@ -1,6 +1,6 @@
 #include "CommandLine.h"
 
-#include "core/AssetProject.h"
+#include "core/project/AssetProject.h"
 
 #include <QCommandLineOption>
 #include <QCommandLineParser>

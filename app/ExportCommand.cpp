@@ -11,9 +11,9 @@
 #include <chrono>
 #include <cstdio>
 
-#include "core/ExportTemplate.h"
-#include "core/GltfExport.h"
-#include "core/ProjectAssets.h"
+#include "core/export/ExportTemplate.h"
+#include "core/gltf/GltfExport.h"
+#include "core/project/ProjectAssets.h"
 
 namespace facet {
 

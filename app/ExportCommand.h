@@ -6,8 +6,8 @@
 //                [--material NAME|INDEX] [--size N] [--bit-depth 8|16|32] [--dry-run] [--force] -o OUT_DIR
 //
 // Each material (or the one --material names) becomes the files of an export template
-// (core/ExportTemplate.h; the built-ins are resources/export/*.json), filled by
-// core/TextureSetExport. Every file is written atomically; nothing in OUT_DIR is replaced without
+// (core/export/ExportTemplate.h; the built-ins are resources/export/*.json), filled by
+// core/export/TextureSetExport. Every file is written atomically; nothing in OUT_DIR is replaced without
 // --force (checked before anything is written), and a failed export removes the files it had
 // made. --dry-run lists the files and where each channel comes from, and writes nothing.
 // docs/export.md.
@@ -18,7 +18,7 @@
 #include <QString>
 #include <QStringList>
 
-#include "core/TextureSetExport.h"
+#include "core/export/TextureSetExport.h"
 
 namespace facet {
 

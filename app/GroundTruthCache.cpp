@@ -1,6 +1,6 @@
 #include "GroundTruthCache.h"
 
-#include "core/AtomicFile.h"
+#include "core/support/AtomicFile.h"
 
 #include <cstdio>
 #include <cstring>
@@ -146,7 +146,7 @@ bool GroundTruthCache::store(const GroundTruthScene& scene, const GroundTruthSet
     };
     if (!QDir().mkpath(m_directory))
         return fail(QStringLiteral("cannot create the directory"));
-    // Encoded in memory, then one checked atomic write (core/AtomicFile.h): a full disk leaves
+    // Encoded in memory, then one checked atomic write (core/support/AtomicFile.h): a full disk leaves
     // no truncated entry.
     QByteArray bytes;
     QDataStream out(&bytes, QIODevice::WriteOnly);

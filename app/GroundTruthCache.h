@@ -1,12 +1,12 @@
 #pragma once
-// A disk cache of ground-truth images (core/GroundTruth.h) for `facet bench`: a 64 x 64 image at
+// A disk cache of ground-truth images (core/shading/GroundTruth.h) for `facet bench`: a 64 x 64 image at
 // 1024 samples per pixel costs seconds, and a benchmark compares the same few dozen of them with
 // every quality setting, run after run. Keyed by everything the image depends on (the
 // environment's content hash, rotation and intensity, the material, the shading model and the
 // integrator's settings), so a changed input is a miss, never a stale image.
 //
 // Files: <directory>/<40 hex of SHA-1 of the key text>.fgt, written with writeFileAtomically
-// (core/AtomicFile.h):
+// (core/support/AtomicFile.h):
 //   "FACETGT1", uint32 version, uint32 width, uint32 height, uint32 key-text length, key text,
 //   width x height x RGBA float32, all little-endian (QDataStream).
 // A file whose header or key text does not match is ignored (with a warning) and overwritten.
@@ -16,14 +16,14 @@
 
 #include <QString>
 
-#include "core/GroundTruth.h"
-#include "core/Image.h"
+#include "core/image/Image.h"
+#include "core/shading/GroundTruth.h"
 
 namespace facet {
 
 class GroundTruthCache {
 public:
-    // Bumped when the integrator (core/GroundTruth.cpp) changes what it computes, so that old
+    // Bumped when the integrator (core/shading/GroundTruth.cpp) changes what it computes, so that old
     // files stop matching.
     static constexpr int kIntegratorVersion = 1;
 
@@ -31,7 +31,7 @@ public:
     explicit GroundTruthCache(QString directory = {});
 
     // $FACET_CACHE_DIR/ground-truth, else QStandardPaths::CacheLocation + "/ground-truth" (next to
-    // the IBL cache of core/IblDiskCache).
+    // the IBL cache of core/ibl/IblDiskCache).
     static QString defaultDirectory();
 
     // The text every cached image is keyed by (one line per input; thread count excluded: the

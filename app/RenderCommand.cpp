@@ -2,6 +2,7 @@
 
 #include "CommandInputs.h"
 #include "CommandOptions.h"
+#include "MaterialFlags.h"
 #include "RenderScenario.h"
 #include "SceneFlags.h"
 #include "render/FrameRenderer.h"
@@ -16,17 +17,17 @@
 
 #include <chrono>
 
-#include "core/AssetProject.h"
-#include "core/Brdf.h"
-#include "core/DfgTable.h"
-#include "core/GroundTruth.h"
-#include "core/Image.h"
-#include "core/ImageMetrics.h"
-#include "core/MaterialBrdf.h"
-#include "core/MaterialPresets.h"
-#include "core/ProjectAssets.h"
-#include "core/ToneMap.h"
-#include "core/VideoEncoder.h"
+#include "core/image/Image.h"
+#include "core/image/ImageMetrics.h"
+#include "core/image/ToneMap.h"
+#include "core/image/VideoEncoder.h"
+#include "core/material/MaterialPresets.h"
+#include "core/project/AssetProject.h"
+#include "core/project/ProjectAssets.h"
+#include "core/shading/Brdf.h"
+#include "core/shading/DfgTable.h"
+#include "core/shading/GroundTruth.h"
+#include "core/shading/MaterialBrdf.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblSettings.h"
 #include "render/RenderScene.h"
@@ -53,12 +54,6 @@ struct Options {
         QStringLiteral("spec")};
     QCommandLineOption material {QStringLiteral("material"),
         QStringLiteral("A built-in material preset (e.g. gold)."), QStringLiteral("preset")};
-    QCommandLineOption baseColor {QStringLiteral("base-color"),
-        QStringLiteral("Linear base colour r,g,b in [0, 1]."), QStringLiteral("r,g,b")};
-    QCommandLineOption metallic {
-        QStringLiteral("metallic"), QStringLiteral("Metallic in [0, 1]."), QStringLiteral("m")};
-    QCommandLineOption roughness {
-        QStringLiteral("roughness"), QStringLiteral("Perceptual roughness in [0, 1]."), QStringLiteral("r")};
     QCommandLineOption brdf {QStringLiteral("brdf"), QStringLiteral("BRDF composition: gltf or learnopengl."),
         QStringLiteral("name")};
     QCommandLineOption multiScatter {QStringLiteral("multiscatter"),
@@ -110,6 +105,7 @@ struct Options {
     QCommandLineOption fps {QStringLiteral("fps"),
         QStringLiteral("Frames per second of a turntable video (1 to 120, default 30)."),
         QStringLiteral("F")};
+    MaterialFlags materialFlags;
     SceneFlags scene;
 
     Options()
@@ -118,9 +114,12 @@ struct Options {
             "Renders a project (or the built-in default) without a window or display server.\n"
             "EXR output is linear scene radiance with no tone mapping; PNG goes through the project's "
             "view transform. With --spp the CPU ground truth renders the reference view instead."));
-        for (const QCommandLineOption* option : {&help, &env, &material, &baseColor, &metallic, &roughness,
-                 &brdf, &multiScatter, &mesh, &view, &size, &referenceView, &spp, &quality, &ibl, &iblSamples,
-                 &stats, &output, &scenario, &turntable, &turntableSubject, &fps})
+        for (const QCommandLineOption* option : {&help, &env, &material})
+            parser.addOption(*option);
+        materialFlags.addTo(parser);
+        for (const QCommandLineOption* option :
+            {&brdf, &multiScatter, &mesh, &view, &size, &referenceView, &spp, &quality, &ibl, &iblSamples,
+                &stats, &output, &scenario, &turntable, &turntableSubject, &fps})
             parser.addOption(*option);
         scene.addTo(parser);
         parser.addPositionalArgument(QStringLiteral("input"),
@@ -224,30 +223,11 @@ std::optional<RenderRequest> RenderCommand::parse(const QStringList& arguments, 
             material.shading = shading;
         });
     }
-    if (o.parser.isSet(o.baseColor)) {
-        const QStringList parts = o.parser.value(o.baseColor).split(QLatin1Char(','));
-        if (parts.size() != 3) {
-            *error = QStringLiteral("--base-color: '%1' is not r,g,b").arg(o.parser.value(o.baseColor));
-            return std::nullopt;
-        }
-        glm::dvec3 rgb;
-        for (int i = 0; i < 3; ++i)
-            if (!parseNumber(QStringLiteral("base-color"), parts[i], 0.0, 1.0, &rgb[i], error))
-                return std::nullopt;
-        everyMaterial(
-            [rgb](Material& material) { material.setBaseColor(rgb, material.baseColorFactor().a); });
-    }
-    double value = 0.0;
-    if (o.parser.isSet(o.metallic)) {
-        if (!parseNumber(QStringLiteral("metallic"), o.parser.value(o.metallic), 0.0, 1.0, &value, error))
-            return std::nullopt;
-        everyMaterial([value](Material& material) { material.setFactor(MapSlot::Metallic, value); });
-    }
-    if (o.parser.isSet(o.roughness)) {
-        if (!parseNumber(QStringLiteral("roughness"), o.parser.value(o.roughness), 0.0, 1.0, &value, error))
-            return std::nullopt;
-        everyMaterial([value](Material& material) { material.setFactor(MapSlot::Roughness, value); });
-    }
+    std::vector<Material*> materials;
+    for (Material& material : project.materials)
+        materials.push_back(&material);
+    if (!o.materialFlags.apply(o.parser, materials, error))
+        return std::nullopt;
     if (o.parser.isSet(o.brdf)) {
         const QString name = o.parser.value(o.brdf);
         if (name != QStringLiteral("gltf") && name != QStringLiteral("learnopengl")) {

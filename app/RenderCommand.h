@@ -20,7 +20,7 @@
 #include <QString>
 #include <QStringList>
 
-#include "core/Project.h"
+#include "core/project/Project.h"
 #include "render/Turntable.h"
 
 namespace facet {
@@ -35,7 +35,7 @@ struct RenderRequest {
     bool printStats = false;
     std::string saveProjectPath; // --save-project: written before rendering
     // --turntable N: N frames of a full turn (render/Turntable.h) into numbered files
-    // (turntableFramePath) or, for a .mp4 / .webm output, a video at `fps` (core/VideoEncoder.h).
+    // (turntableFramePath) or, for a .mp4 / .webm output, a video at `fps` (core/image/VideoEncoder.h).
     int turntableFrames = 0;
     TurntableSubject turntableSubject = TurntableSubject::Object;
     int fps = 30;

@@ -10,10 +10,10 @@
 #include <QJsonObject>
 #include <QJsonParseError>
 
-#include "core/AssetProject.h"
-#include "core/JsonStructure.h"
-#include "core/JsonSupport.h"
-#include "core/ProjectAssets.h"
+#include "core/json/JsonStructure.h"
+#include "core/json/JsonSupport.h"
+#include "core/project/AssetProject.h"
+#include "core/project/ProjectAssets.h"
 
 namespace facet {
 

@@ -28,7 +28,7 @@
 
 #include <QString>
 
-#include "core/Project.h"
+#include "core/project/Project.h"
 
 namespace facet {
 

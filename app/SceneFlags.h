@@ -24,7 +24,7 @@
 
 #include <string>
 
-#include "core/Project.h"
+#include "core/project/Project.h"
 
 namespace facet {
 

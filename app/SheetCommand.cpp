@@ -2,6 +2,7 @@
 
 #include "CommandInputs.h"
 #include "CommandOptions.h"
+#include "MaterialFlags.h"
 #include "SceneFlags.h"
 
 #include <QCommandLineOption>
@@ -19,12 +20,12 @@
 #include <cstdio>
 #include <memory>
 
-#include "core/AssetCache.h"
-#include "core/AssetProject.h"
-#include "core/Image.h"
-#include "core/MaterialLibrary.h"
-#include "core/MaterialPresets.h"
-#include "core/ProjectAssets.h"
+#include "core/image/Image.h"
+#include "core/material/MaterialLibrary.h"
+#include "core/material/MaterialPresets.h"
+#include "core/project/AssetCache.h"
+#include "core/project/AssetProject.h"
+#include "core/project/ProjectAssets.h"
 #include "render/FrameRenderer.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblSettings.h"
@@ -75,6 +76,7 @@ struct Options {
         QStringLiteral("Output image: .png (display-referred, labelled) or .exr (linear radiance, layout in the "
                        "header)."),
         QStringLiteral("file")};
+    MaterialFlags materialFlags;
     SceneFlags scene;
 
     Options()
@@ -86,6 +88,7 @@ struct Options {
         for (const QCommandLineOption* option : {&help, &materials, &envs, &wedge, &wedge2, &mesh, &cell, &labels,
                  &quality, &ibl, &iblSamples, &referenceView, &stats, &output})
             parser.addOption(*option);
+        materialFlags.addTo(parser);
         scene.addTo(parser);
         parser.addPositionalArgument(QStringLiteral("input"),
             QStringLiteral("A project file (JSON) or a glTF asset (.gltf, .glb); default: the built-in project."),
@@ -292,6 +295,14 @@ std::optional<SheetRequest> SheetCommand::parse(const QStringList& arguments, QS
             return std::nullopt;
         }
     }
+    // The material flags set every row's material (--materials items and the project's own).
+    std::vector<Material*> rowMaterials;
+    for (Material& material : request.project.materials)
+        rowMaterials.push_back(&material);
+    for (SheetMaterial& row : request.materials)
+        rowMaterials.push_back(&row.material);
+    if (!o.materialFlags.apply(o.parser, rowMaterials, error))
+        return std::nullopt;
     if (!o.scene.apply(o.parser, request.project, {}, error))
         return std::nullopt;
     request.saveProjectPath = o.scene.saveProjectPath(o.parser).toStdString();

@@ -20,9 +20,9 @@
 #include <QString>
 #include <QStringList>
 
-#include "core/Material.h"
-#include "core/Project.h"
-#include "core/WedgeAxis.h"
+#include "core/material/Material.h"
+#include "core/project/Project.h"
+#include "core/project/WedgeAxis.h"
 
 namespace facet {
 

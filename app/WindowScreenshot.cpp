@@ -12,10 +12,10 @@
 
 #include <cstdio>
 
-#include "core/AtomicFile.h"
-#include "ui/CompareView.h"
-#include "ui/SceneController.h"
-#include "ui/ViewportWidget.h"
+#include "core/support/AtomicFile.h"
+#include "ui/compare/CompareView.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/ViewportWidget.h"
 
 namespace facet {
 
@@ -95,7 +95,7 @@ void WindowScreenshot::save()
     const QByteArray format = QFileInfo(m_path).suffix().toLower().toLatin1();
     const QPixmap picture = m_window->grab();
     // Encoded in memory, then written through a checked temporary file and a rename
-    // (core/AtomicFile.h): a failed save never leaves half a picture or harms an older one.
+    // (core/support/AtomicFile.h): a failed save never leaves half a picture or harms an older one.
     QByteArray encoded;
     QBuffer buffer(&encoded);
     buffer.open(QIODevice::WriteOnly);

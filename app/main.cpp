@@ -10,11 +10,11 @@
 #include "SheetCommand.h"
 #include "WindowScreenshot.h"
 
-#include "core/Project.h"
+#include "core/project/Project.h"
 #include "ui/MainWindow.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/ViewportWidget.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include <QApplication>
 #include <QTimer>

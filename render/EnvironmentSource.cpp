@@ -4,8 +4,8 @@
 
 #include "render/GLDebug.h"
 
-#include "core/Environment.h"
-#include "core/EnvironmentSampler.h"
+#include "core/ibl/Environment.h"
+#include "core/ibl/EnvironmentSampler.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // An environment at its source resolution on the GPU, for lighting that reads the image itself
 // instead of the resampled cubemaps: the radiance (RGB32F) and the luminance sampling tables of
-// core/EnvironmentSampler (R32F), read by resources/shaders/environment_sampling.glsl. Made and
+// core/ibl/EnvironmentSampler (R32F), read by resources/shaders/environment_sampling.glsl. Made and
 // cached by IblPrecompute::source() (by Environment::contentHash(): rotation and intensity are
 // applied at shading time), shared like IblTextures: immutable, held by std::shared_ptr<const>,
 // deleted with a context of the share group current. docs/ibl.md "Environment sampling tables".
@@ -34,7 +34,7 @@ struct EnvironmentSourceTextures {
     GLTexture radiance;
     // GL_TEXTURE_2D, GL_R32F, GL_NEAREST, CLAMP_TO_EDGE, read with texelFetch. Rows in the
     // distribution's order (row r: v in [r/H, (r+1)/H), image row H-1-r): the tables of
-    // EnvironmentSampler::tables() (core/EnvironmentSamplingTables.h) as they are.
+    // EnvironmentSampler::tables() (core/ibl/EnvironmentSamplingTables.h) as they are.
     GLTexture conditionalCdf; // (width + 1) x height
     GLTexture marginalCdf; // (height + 1) x 1
     GLTexture pdf; // width x height: pdfUv

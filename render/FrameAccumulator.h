@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "core/Image.h"
-#include "core/ImageMetrics.h"
+#include "core/image/Image.h"
+#include "core/image/ImageMetrics.h"
 #include "render/Framebuffer.h"
 
 namespace facet {
@@ -54,12 +54,12 @@ public:
     int halfSamples(int half) const { return m_halfSamples[half & 1]; }
 
     // The noise estimate of the mean with the relative RMSE's normalisation
-    // (core/ImageMetrics relativeRmse): sqrt(sum var_p / sum |m_p|^2) over the pixels `mask`
+    // (core/image/ImageMetrics relativeRmse): sqrt(sum var_p / sum |m_p|^2) over the pixels `mask`
     // marks (row-major, top row first, as Image; empty: every pixel), from read-backs of A and B.
     // nullopt before both halves hold a draw.
     std::optional<double> noise(const PixelMask& mask = {}) const;
     // What noise() reads, per pixel: the mean so far (rgb; alpha 1) and the estimated variance of
-    // that mean summed over RGB (core/ImageMetrics relativeNoise turns it into a relative noise).
+    // that mean summed over RGB (core/image/ImageMetrics relativeNoise turns it into a relative noise).
     // nullopt before both halves hold a draw.
     struct Spread {
         Image mean;

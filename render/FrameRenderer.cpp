@@ -2,8 +2,8 @@
 
 #include <epoxy/gl.h>
 
-#include "core/ProjectAssets.h"
-#include "core/Sampling.h"
+#include "core/project/ProjectAssets.h"
+#include "core/shading/Sampling.h"
 #include "render/FrameAccumulator.h"
 #include "render/IblSettings.h"
 #include "render/Renderer.h"
@@ -44,7 +44,7 @@ glm::dvec2 jitterOf(const RenderScene& scene, int index)
 // independent run beside the first's.
 constexpr std::uint32_t kSecondHalfSeed = 0x9e3779b9u;
 
-// The object in a draw made with RenderScene::coverageAlpha (core/ImageMetrics objectMask); empty
+// The object in a draw made with RenderScene::coverageAlpha (core/image/ImageMetrics objectMask); empty
 // (every pixel) when nothing is covered whole.
 PixelMask coverageMaskOf(const Framebuffer& frame)
 {

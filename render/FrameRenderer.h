@@ -1,5 +1,5 @@
 #pragma once
-// The one way a frame is made, for every caller: the viewport (ui/ViewportRenderer, one per view),
+// The one way a frame is made, for every caller: the viewport (ui/viewport/ViewportRenderer, one per view),
 // `facet render`, `facet bench`, the benchmarks and the GL tests. It owns, in one GL context (or
 // share group):
 //   - the IBL precompute (render/IblPrecompute) and so the IBL results, looked up by content
@@ -8,7 +8,7 @@
 //     views, or by nine cells of a grid, is precomputed once;
 //   - the surface renderer (render/Renderer: programs, the mesh, the material textures);
 //   - the render targets, pooled by size, so grid cells of one size share one.
-// A caller names a project and its assets (core/ProjectAssets: the mesh, the map images, the
+// A caller names a project and its assets (core/project/ProjectAssets: the mesh, the map images, the
 // environment image); FrameRenderer turns them into a RenderScene with its GL textures and draws
 // it, so no caller handles GL texture names or their lifetimes.
 //
@@ -21,7 +21,7 @@
 // context current. Several FrameRenderers may share one IblPrecompute (the constructor taking one):
 // `facet render`-style tests make a fresh surface renderer per frame and keep the IBL results.
 
-#include "core/Image.h"
+#include "core/image/Image.h"
 #include "render/FrameAccumulator.h"
 #include "render/Framebuffer.h"
 #include "render/IblPrecompute.h"
@@ -70,7 +70,7 @@ public:
     explicit FrameRenderer(const QString& cacheDirectory = {}, bool useDiskCache = true);
     // Shares `precompute` (and so its IBL results) and, when given, `textures` (the material
     // textures) with other FrameRenderers of the context or of contexts sharing with it (the views
-    // of a window: ui/ViewShareGroup). Targets, the mesh's buffers and vertex arrays stay per
+    // of a window: ui/viewport/ViewShareGroup). Targets, the mesh's buffers and vertex arrays stay per
     // renderer (container objects are per context).
     explicit FrameRenderer(
         std::shared_ptr<IblPrecompute> precompute, std::shared_ptr<TextureCache> textures = nullptr);
@@ -80,7 +80,7 @@ public:
 
     // The one way every caller builds a frame (the views and their refinement, the Compare view's
     // cells, `facet render`, `sheet`, `bench`, the tests): the frame `project` describes with `assets`
-    // (core/ProjectAssets.h), as `options` say (render/SceneFromProject.h: reference view, method,
+    // (core/project/ProjectAssets.h), as `options` say (render/SceneFromProject.h: reference view, method,
     // the view's turntable and wireframe), lit by the IBL of its environment at `settings`, with the
     // DFG table of every visibility term its materials use and, for a sampled method, the
     // environment at source resolution. `ibl`: the IBL set when the caller has it already (the
@@ -204,7 +204,7 @@ public:
         double sliceMs = 0.0);
     // The next band of the draw under way in `slot` (refine() began a draw in bands), drawn and,
     // when it is the last, added to the accumulation as refine() would; nothing is shown: the
-    // caller draws bands between frames without presenting (ui/ViewportWidget) and shows the
+    // caller draws bands between frames without presenting (ui/viewport/ViewportWidget) and shows the
     // result with its next refine(). `scene`: the one refine() was given. True (doing nothing)
     // when no draw is under way.
     bool continueDraw(const RenderScene& scene, std::string* error, int slot = 0);
@@ -220,7 +220,7 @@ public:
     // The linear radiance (the HDR target as it is: no exposure, no tone mapping) of the frame the
     // last present() or refine() showed (a reduced preview, the refinement's held frame or its
     // mean), at the point (fx, fy) of its rectangle, fractions from the top-left corner; the value
-    // picker's reading (ui/ValuePicker.h). nullopt before any frame, outside [0, 1), or when that
+    // picker's reading (ui/viewport/ValuePicker.h). nullopt before any frame, outside [0, 1), or when that
     // target is gone.
     std::optional<glm::vec4> shownRadiance(double fx, double fy) const;
 

@@ -3,7 +3,7 @@
 // renderbuffer, with read-back into a facet::Image. The renderer draws into one of these; the
 // viewport and the headless commands only present or save what it holds.
 
-#include "core/Image.h"
+#include "core/image/Image.h"
 
 #include <glm/ext/vector_uint4_sized.hpp>
 #include <glm/vec4.hpp>

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "core/AsciiText.h"
+#include "core/support/AsciiText.h"
 
 namespace facet {
 

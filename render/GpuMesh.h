@@ -1,11 +1,11 @@
 #pragma once
-// A core Mesh in GL buffers: one VAO, an interleaved vertex buffer in core/Mesh.h's Vertex layout
+// A core Mesh in GL buffers: one VAO, an interleaved vertex buffer in core/mesh/Mesh.h's Vertex layout
 // (location 0 position, 1 normal, 2 tangent, 3 uv) and a 32-bit index buffer. Move-only; destroy
 // with the context current.
 
 #include <cstdint>
 
-#include "core/Mesh.h"
+#include "core/mesh/Mesh.h"
 
 namespace facet {
 

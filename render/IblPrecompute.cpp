@@ -2,14 +2,14 @@
 
 #include "render/IblPrecompute.h"
 
-#include "core/IblDiskCache.h"
-#include "core/Prefilter.h"
-#include "core/SphericalHarmonics.h"
+#include "core/ibl/IblDiskCache.h"
+#include "core/ibl/Prefilter.h"
+#include "core/ibl/SphericalHarmonics.h"
 #include "render/GLDebug.h"
 #include "render/GLPassScope.h"
 #include "render/IblTables.h"
-#include "render/ShippedDfgTables.h"
 #include "render/ShaderProgram.h"
+#include "render/ShippedDfgTables.h"
 
 #include <QtGlobal>
 

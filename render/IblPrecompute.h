@@ -6,14 +6,15 @@
 // visibility term V, dfgTable() produces the split-sum DFG LUT integrated with that V (a frame
 // needs one per V its materials use: render/RenderScene.h EnvironmentLighting).
 // docs/ibl.md has each pass's equations, the layouts, the cache and measured numbers; the CPU
-// twins are core/Prefilter.h, core/Irradiance.h, core/DfgTable.h, core/SphericalHarmonics.h.
+// twins are core/ibl/Prefilter.h, core/ibl/Irradiance.h, core/shading/DfgTable.h,
+// core/ibl/SphericalHarmonics.h.
 //
 // Everything is computed in the environment image's frame at intensity 1: rotation and intensity
 // are applied by the renderer at shading time, so changing them reruns nothing.
 //
 // Caching by content: results are keyed by (Environment::contentHash(), IblSettings::hash()),
 // kept in memory (least recently used first out, within kMemoryBudgetBytes of GPU memory) and on disk
-// (core/IblDiskCache, $FACET_CACHE_DIR or QStandardPaths::CacheLocation/ibl). A DFG LUT is keyed by
+// (core/ibl/IblDiskCache, $FACET_CACHE_DIR or QStandardPaths::CacheLocation/ibl). A DFG LUT is keyed by
 // IblSettings::dfgHash(visibility) (its size, samples and V; no environment), in memory for the object's life
 // and on disk.
 //
@@ -22,8 +23,8 @@
 // objects, textures and programs); destroy the IblPrecompute and drop every IblTextures with a
 // context of that group current.
 
-#include "core/Environment.h"
-#include "core/ShadingModel.h"
+#include "core/ibl/Environment.h"
+#include "core/shading/ShadingModel.h"
 #include "render/DfgLut.h"
 #include "render/EnvironmentSource.h"
 #include "render/IblSettings.h"
@@ -71,7 +72,7 @@ struct IblStats {
 };
 
 // Where a prepare() stands, and a way to stop it (the window's lighting worker,
-// ui/LightingWorker.h): called with the fraction done, from 0 to 1, after the disk look-up and
+// ui/viewport/LightingWorker.h): called with the fraction done, from 0 to 1, after the disk look-up and
 // as each face of the passes is finished on the GPU (the passes glFinish per level while a
 // callback is set, so the fraction is work done, not work queued). Returning false stops the
 // precompute before its next face: prepare() returns null with IblStats::cancelled and the

@@ -1,6 +1,6 @@
 #include "render/IblSettings.h"
-#include "core/Fnv1a.h"
-#include "core/Project.h"
+#include "core/project/Project.h"
+#include "core/support/Fnv1a.h"
 
 #include <algorithm>
 #include <bit>

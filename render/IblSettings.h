@@ -6,7 +6,7 @@
 // argument of every DFG call and of its key, dfgHash(visibility), so no caller can leave it out.
 // docs/ibl.md lists the presets and their measured times and errors.
 
-#include "core/ShadingModel.h"
+#include "core/shading/ShadingModel.h"
 
 #include <cstdint>
 #include <optional>
@@ -15,7 +15,7 @@
 
 namespace facet {
 
-enum class IblQuality; // core/Project.h
+enum class IblQuality; // core/project/Project.h
 
 struct IblSettings {
     enum class Irradiance {

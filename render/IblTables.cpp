@@ -9,7 +9,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/Prefilter.h"
+#include "core/ibl/Prefilter.h"
 
 namespace facet {
 

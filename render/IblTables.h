@@ -17,7 +17,7 @@ inline constexpr int kTableWidth = 1024;
 // 6 s^2 directions, solid angles and a read-back of a few KiB instead of that many per output texel.
 GLTexture irradianceTexelTable(const GLTexture& cube, int size, int level);
 
-// The samples of prefiltered level of perceptual `roughness` (core/Prefilter.h
+// The samples of prefiltered level of perceptual `roughness` (core/ibl/Prefilter.h
 // prefilterLobeSamples) as ibl_prefilter.frag reads them: RGBA32F rows of kTableWidth entries, each
 // l in the frame of n and the source lod filtered importance sampling reads it at. *count: the
 // entries; *inverseWeight: 1 / sum (n.l), 0 when no sample is above the horizon.

@@ -43,7 +43,7 @@ struct IblTextures {
     std::shared_ptr<const GLTexture> irradiance;
     int irradianceSize = 0;
 
-    // SH9 irradiance coefficients, premultiplied by the cosine-lobe A_l (core/SphericalHarmonics.h
+    // SH9 irradiance coefficients, premultiplied by the cosine-lobe A_l (core/ibl/SphericalHarmonics.h
     // IrradianceSH9), in the image frame: uniform vec3 uIrradianceSH[9] of irradianceSH(n), which
     // gives E(n) (not divided by pi) like the irradiance map.
     std::array<glm::vec3, 9> irradianceSH {};

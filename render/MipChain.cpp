@@ -1,7 +1,7 @@
 #include "render/MipChain.h"
 
-#include "core/MapImage.h"
-#include "core/ToneMap.h"
+#include "core/image/MapImage.h"
+#include "core/image/ToneMap.h"
 
 #include <algorithm>
 #include <array>
@@ -18,7 +18,7 @@ int bytesPerSample(MipFilter filter)
     return filter == MipFilter::Unorm8 || filter == MipFilter::Srgb8 ? 1 : 2;
 }
 
-// sRGB decode of each 8-bit code (IEC 61966-2-1, core/ToneMap.h).
+// sRGB decode of each 8-bit code (IEC 61966-2-1, core/image/ToneMap.h).
 const std::array<float, 256>& srgbDecodeTable()
 {
     static const std::array<float, 256> table = [] {

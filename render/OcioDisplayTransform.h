@@ -4,11 +4,11 @@
 // uploaded and its uniforms set at every draw. The pass computes
 //     display = facetOcioDisplay(radiance * 2^EV)
 // and writes that as is: the view ends in the display's encoding, so nothing is encoded after.
-// CPU twin: the same OCIO processor run by core/ColorManagement::cpuProcessor().
+// CPU twin: the same OCIO processor run by core/image/ColorManagement::cpuProcessor().
 // (OCIO's own OpenGL helper, oglapphelpers/glsl.cpp, does the same uploads; it needs GLEW/GLUT
 // and its own program, so Facet repeats them here.)
 
-#include "core/ColorManagement.h"
+#include "core/image/ColorManagement.h"
 
 #include <memory>
 #include <string>

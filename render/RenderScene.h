@@ -16,14 +16,14 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/Camera.h"
-#include "core/Image.h"
-#include "core/Light.h"
-#include "core/MapImage.h"
-#include "core/Material.h"
-#include "core/Mesh.h"
-#include "core/Project.h"
-#include "core/ShadingModel.h"
+#include "core/image/Image.h"
+#include "core/image/MapImage.h"
+#include "core/material/Material.h"
+#include "core/mesh/Mesh.h"
+#include "core/project/Camera.h"
+#include "core/project/Light.h"
+#include "core/project/Project.h"
+#include "core/shading/ShadingModel.h"
 #include "render/DfgLut.h"
 #include "render/EnvironmentSource.h"
 #include "render/IblTextures.h"
@@ -31,7 +31,7 @@
 namespace facet {
 
 // One material map's texture as core loaded it, in the file's own bit depth and channels
-// (core/MapImage.h). The numbers are as the file stores them (not converted to linear): render/
+// (core/image/MapImage.h). The numbers are as the file stores them (not converted to linear): render/
 // decodes per MaterialMap::colorSpace.
 struct RenderMapImage {
     std::shared_ptr<const MapImage> image; // null: the slot uses its constant factor only
@@ -41,7 +41,8 @@ struct RenderMapImage {
 
 // One split-sum DFG table as the renderer binds it (render/DfgLut.h has the layout).
 struct DfgLutBinding {
-    unsigned texture = 0; // GL_TEXTURE_2D, RGBA = scale, bias, E, W (core/DfgTable.h layout), LINEAR; 0: none
+    unsigned texture
+        = 0; // GL_TEXTURE_2D, RGBA = scale, bias, E, W (core/shading/DfgTable.h layout), LINEAR; 0: none
     int size = 0;
 };
 
@@ -142,16 +143,16 @@ struct RenderMaterial {
     double dielectricAverageAlbedo = 0.0;
 };
 
-// What one sub-mesh of the scene's mesh shows (core/Project.h MeshPart).
+// What one sub-mesh of the scene's mesh shows (core/project/Project.h MeshPart).
 struct RenderPart {
     int material = 0; // index into RenderScene::materials
     bool visible = true;
 };
 
-// How a draw integrates the environment (core/Project.h IblMethod). Reference and Fis draws take
+// How a draw integrates the environment (core/project/Project.h IblMethod). Reference and Fis draws take
 // samples [sampleBase, sampleBase + samples) of a run of `total`: Reference of each pixel's
 // sequence (shifted Sobol' points: any split of a run into draws gives the same points,
-// core/Sampling.h), Fis of hammersley(., total), whose points and footprints depend on the run's
+// core/shading/Sampling.h), Fis of hammersley(., total), whose points and footprints depend on the run's
 // length; so frames accumulated by render/FrameAccumulator give what one draw of the whole run
 // would.
 // The split sum's sharpest lobes (perceptual roughness below its prefiltered level 1, 0.106 at
@@ -193,7 +194,7 @@ struct RenderScene {
     EnvironmentLighting environment;
     IblSampling sampling;
     // The mesh is the unit sphere at the origin (model matrix identity) seen in docs/architecture.md's
-    // reference view: shade each pixel at the exact hit of its ray, as core/GroundTruth does.
+    // reference view: shade each pixel at the exact hit of its ray, as core/shading/GroundTruth does.
     // The sphere mesh's interpolated normals are off by up to ~1e-3 rad, which moves a
     // roughness-0.05 reflection by about its own width (2% relative RMSE against the truth).
     bool analyticSphere = false;
@@ -206,7 +207,7 @@ struct RenderScene {
     glm::dvec2 subpixelJitter {0.0};
     // The background writes alpha 0 instead of 1, so the target's alpha is the object's coverage
     // (fractional at MSAA-resolved silhouettes and under blended materials): what the error view
-    // masks its numbers with (core/ImageMetrics objectMask). Radiance is the same either way.
+    // masks its numbers with (core/image/ImageMetrics objectMask). Radiance is the same either way.
     bool coverageAlpha = false;
     // The mesh's edges drawn over the surfaces (View > Wireframe): kWireframeColor lines, depth
     // tested against what is drawn (hidden edges stay hidden), offset towards the camera so a

@@ -14,7 +14,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat3x3.hpp>
 
-#include "core/MaterialInputs.h"
+#include "core/shading/MaterialInputs.h"
 #include "render/Framebuffer.h"
 #include "render/GpuMesh.h"
 #include "render/ShaderProgram.h"
@@ -514,7 +514,7 @@ void Renderer::setFrameUniforms(const ShaderProgram& program, const SurfaceVaria
     }
 }
 
-// The material's factors, per-map options and textures (core/Material.h: what each slot's factor
+// The material's factors, per-map options and textures (core/material/Material.h: what each slot's factor
 // means), and its face culling.
 void Renderer::setMaterialUniforms(const ShaderProgram& program, const SurfaceVariantKey& key,
                                    const RenderMaterial& renderMaterial, const EnvironmentLighting& env)

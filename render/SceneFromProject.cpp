@@ -3,12 +3,12 @@
 #include <map>
 #include <mutex>
 
-#include "core/Brdf.h"
-#include "core/DfgTable.h"
-#include "core/GroundTruth.h"
-#include "core/MaterialBrdf.h"
-#include "core/Project.h"
-#include "core/ProjectAssets.h"
+#include "core/project/Project.h"
+#include "core/project/ProjectAssets.h"
+#include "core/shading/Brdf.h"
+#include "core/shading/DfgTable.h"
+#include "core/shading/GroundTruth.h"
+#include "core/shading/MaterialBrdf.h"
 #include "render/IblPrecompute.h"
 #include "render/IblTextures.h"
 #include "render/Turntable.h"
@@ -21,7 +21,7 @@ double dielectricAverageAlbedoFor(const Material& material, IblMethod method)
     if (shading.coupling != DielectricCoupling::EnergyPreserving)
         return 0.0;
     if (method == IblMethod::Reference) {
-        // The ground truth's own albedo table (core/GroundTruth), so the reference method
+        // The ground truth's own albedo table (core/shading/GroundTruth), so the reference method
         // integrates the same BRDF as `facet render --spp`.
         const GroundTruthSettings truth;
         const MaterialBrdf brdf(shading, *albedoTable(truth.albedoTableSize, truth.albedoTableSamples, shading.visibility));

@@ -43,7 +43,7 @@ struct SceneOptions {
 // settings choose them, the irradiance cubemap otherwise.
 SceneOptions sceneOptionsFor(const IblSettings& settings, bool referenceView);
 
-// The frame `project` describes, with `assets` (core/ProjectAssets.h: loadProjectAssets) and the
+// The frame `project` describes, with `assets` (core/project/ProjectAssets.h: loadProjectAssets) and the
 // environment's IBL textures `ibl` (render/IblPrecompute; may be null for a background-only or
 // debug frame), turned and drawn as `options` say. Computes the dielectric average albedo the
 // energy-preserving coupling needs. The scene has no split-sum DFG table and no environment source

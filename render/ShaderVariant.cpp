@@ -89,7 +89,7 @@ namespace {
 // Whether a slot's texture can change the result: at factor 0 metallic, roughness and emission
 // are 0 whatever the texture says, occlusion at strength 0 is 1, and a normal map at strength 0
 // is the geometric normal. Such a map is not sampled (docs/architecture.md: a constant map samples no
-// texture); the CPU twin gives the same values (core/MaterialInputs.h).
+// texture); the CPU twin gives the same values (core/shading/MaterialInputs.h).
 bool textureMatters(const Material& material, MapSlot slot)
 {
     switch (slot) {
@@ -190,7 +190,7 @@ std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key)
     for (int bit = 0; bit < kSurfaceFeatureBits; ++bit)
         if (key.features & (SurfaceFeatures(1) << bit))
             defines.emplace_back(kFeatureDefines[std::size_t(bit)]);
-    // The debug views' ids, from core/DebugView's one table (debug_views.glsl compares names,
+    // The debug views' ids, from core/shading/DebugView's one table (debug_views.glsl compares names,
     // never numbers), and the view this variant shows.
     for (int view = 0; view < kDebugViewCount; ++view)
         defines.push_back(debugViewDefine(DebugView(view)) + ' ' + std::to_string(view));

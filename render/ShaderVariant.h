@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "core/DebugView.h"
-#include "core/Light.h"
-#include "core/Material.h"
-#include "core/ShadingModel.h"
+#include "core/material/Material.h"
+#include "core/project/Light.h"
+#include "core/shading/DebugView.h"
+#include "core/shading/ShadingModel.h"
 
 namespace facet {
 
@@ -111,7 +111,7 @@ SurfaceFeatures surfaceFeaturesFor(const ShadingModel& model);
 SurfaceFeature mapFeature(MapSlot slot);
 // The *TexelFrom* bits for `features` (its Has*Map bits set): a scalar slot whose texture is the
 // same as an earlier scalar slot's (`textures`: the slots' images, null for none; equal pointers
-// are one decoded file, core/MapImageCache.h) in the same colour space, UV set, UV transform and
+// are one decoded file, core/image/MapImageCache.h) in the same colour space, UV set, UV transform and
 // sampler reads that slot's texel. On llvmpipe each texture fetch of a 2K map costs 7-10% of the untextured
 // frame (docs/benchmarks.md, "Texture maps").
 SurfaceFeatures sharedTexelFeatures(const Material& material, SurfaceFeatures features,
@@ -125,10 +125,10 @@ SurfaceFeatures texCoordFeatures(const Material& material, SurfaceFeatures featu
 // (DebugView::BaseColor, "base-color": DEBUG_BASE_COLOR).
 std::string debugViewDefine(DebugView view);
 // One "#define NAME" per set bit, in bit order, then "DEBUG_<VIEW> <n>" for every debug view (the
-// ids debug_views.glsl compares, made from core/DebugView's table so the two cannot disagree),
+// ids debug_views.glsl compares, made from core/shading/DebugView's table so the two cannot disagree),
 // "DEBUG_VIEW <n>" and "MAX_LIGHTS <n>".
 std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key);
-inline constexpr int kMaxPunctualLights = kMaxLights; // core/Light.h
+inline constexpr int kMaxPunctualLights = kMaxLights; // core/project/Light.h
 
 // Compiled surface programs by key. Needs the GL context current for get() and destruction.
 class SurfaceProgramCache {

@@ -2,7 +2,7 @@
 // The split-sum DFG tables Facet ships as data, so that no process computes them on the GPU for
 // the settings almost every scene uses (Filament ships its DFG LUT the same way): the `default`
 // IBL preset's (dfgSize 32, dfgSamples 1024), one table for each visibility term V. They are
-// core/DfgTable's integration (the one ibl_dfg.frag computes in float, here in double) stored as
+// core/shading/DfgTable's integration (the one ibl_dfg.frag computes in float, here in double) stored as
 // binary16 RGBA, the layout of the GL table (row y = roughness, texel x = n.v: scale, bias,
 // albedo, W). render/ShippedDfgTables.inc holds them, written by tests/tools/WriteDfgTables.cpp:
 //
@@ -13,7 +13,7 @@
 // computes the tables again, as for any other settings) and IblSettingsTest::shippedDfgTables
 // fails until the file is written again.
 
-#include "core/ShadingModel.h"
+#include "core/shading/ShadingModel.h"
 
 #include <cstdint>
 #include <span>

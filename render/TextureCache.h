@@ -25,14 +25,14 @@
 #include <tuple>
 #include <vector>
 
-#include "core/MapImage.h"
-#include "core/Material.h"
+#include "core/image/MapImage.h"
+#include "core/material/Material.h"
 #include "render/MipChain.h"
 
 namespace facet {
 
 // How one MapImage goes to OpenGL: the GL enums (as plain numbers: no GL header here), the
-// swizzle that makes grey and grey + alpha read like RGBA (core/MapImage.h texel()), and the
+// swizzle that makes grey and grey + alpha read like RGBA (core/image/MapImage.h texel()), and the
 // conversion the upload makes on the way (none for most maps).
 struct MapTextureFormat {
     enum class Conversion {
@@ -101,7 +101,7 @@ public:
     void setTrilinear(bool trilinear);
     bool trilinear() const { return m_trilinear; }
 
-    // The sampler object of a map's sampler (core/Material.h TextureSampler): its wraps, its
+    // The sampler object of a map's sampler (core/material/Material.h TextureSampler): its wraps, its
     // filters (Auto: this cache's trilinear choice and anisotropy, as the textures' own state), or
     // 0 for the default sampler, which the textures' own state already is. Made once per distinct
     // sampler and kept in step with setMaxAnisotropy and setTrilinear; needs the context current.

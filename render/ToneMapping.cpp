@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "core/ColorManagement.h"
+#include "core/image/ColorManagement.h"
 #include "render/OcioDisplayTransform.h"
 #include "render/ShaderProgram.h"
 

@@ -1,8 +1,8 @@
 #pragma once
 // The display transform pass: HDR radiance * 2^EV, then either Facet's own tone mapper and display
-// encoding (resources/shaders/tonemap.frag; CPU twin core/ToneMap.h displayTransform()) or, when
+// encoding (resources/shaders/tonemap.frag; CPU twin core/image/ToneMap.h displayTransform()) or, when
 // the view names one, an OpenColorIO display/view (tonemap_ocio.frag + OCIO's GLSL,
-// render/OcioDisplayTransform; CPU twin core/ColorManagement.h cpuProcessor()). One program for
+// render/OcioDisplayTransform; CPU twin core/image/ColorManagement.h cpuProcessor()). One program for
 // every Facet tone mapper (a uniform selects it): switching the tone mapper compiles nothing.
 // OCIO programs are cached by (config identity, display, view).
 
@@ -10,7 +10,7 @@
 #include <memory>
 #include <string>
 
-#include "core/Project.h"
+#include "core/project/Project.h"
 
 namespace facet {
 

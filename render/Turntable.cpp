@@ -1,6 +1,6 @@
 #include "render/Turntable.h"
 
-#include "core/VideoEncoder.h"
+#include "core/image/VideoEncoder.h"
 
 #include <QString>
 #include <QTemporaryDir>

@@ -1,6 +1,6 @@
 #pragma once
 // A turntable: the object or the environment turned about +Y, for the window's live turntable
-// (View > Turntable, ui/CameraController) and for sequences of frames (`facet render --turntable
+// (View > Turntable, ui/viewport/CameraController) and for sequences of frames (`facet render --turntable
 // N`, File > Save Turntable…). docs/app.md "Turntables" has the conventions.
 //
 // The object turns in place under a fixed camera, environment and lights (the model matrix
@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-#include "core/Image.h"
+#include "core/image/Image.h"
 #include "render/RenderScene.h"
 
 namespace facet {
@@ -47,7 +47,7 @@ struct TurntableWrite {
 // The one way a turn is written (`facet render --turntable`, File > Save Turntable…): frame i of
 // `frames` is made by `frame(i, turntableDegrees(i, frames), error)` and saved as
 // turntableFramePath(output, i, frames) (with its alpha when `keepAlpha`) or, when `output` is a
-// video (core/VideoEncoder.h), as PNG into a temporary folder and then encoded at `fps`.
+// video (core/image/VideoEncoder.h), as PNG into a temporary folder and then encoded at `fps`.
 // `cancelled` (optional) is asked after each frame (the last's answer is moot). nullopt with *error ("frame 3
 // of 24: <why>", or the encoder's message) on failure; a stop is not one.
 std::optional<TurntableWrite> writeTurntable(const std::string& output, int frames, int fps, bool keepAlpha,

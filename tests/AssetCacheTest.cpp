@@ -1,9 +1,9 @@
-// core/AssetCache: environments and meshes loaded once for a batch of frames (a contact sheet's
+// core/project/AssetCache: environments and meshes loaded once for a batch of frames (a contact sheet's
 // cells), again when their file changes, and errors passed through with the loader's message.
 
-#include "core/AssetCache.h"
-#include "core/Project.h"
-#include "core/ProjectAssets.h"
+#include "core/project/AssetCache.h"
+#include "core/project/Project.h"
+#include "core/project/ProjectAssets.h"
 
 #include "TestSupport.h"
 

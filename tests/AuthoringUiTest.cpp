@@ -1,8 +1,9 @@
 // Issue 30's authoring defects in the main window under Xvfb, driven as an artist does:
-// - Materials as objects (ui/MaterialsDock, core/MaterialList): New, Duplicate and Delete by the
+// - Materials as objects (ui/docks/MaterialsDock, core/material/MaterialList): New, Duplicate and Delete by
+// the
 //   buttons and by the list's keys, each one undo step that Ctrl+Z takes back, the parts showing
 //   what they showed, the status bar saying what happened; the last material cannot go.
-// - Undo from every kind of editor (ui/UndoShortcutRouter): an edit committed in a spin box,
+// - Undo from every kind of editor (ui/document/UndoShortcutRouter): an edit committed in a spin box,
 //   slider, colour button, combo box, line edit or check box, the focus left in it, then Ctrl+Z
 //   undoes the document and Ctrl+Shift+Z redoes it; a field with an uncommitted edit keeps Ctrl+Z
 //   for its text.
@@ -10,32 +11,32 @@
 //   name and maps stay, and the status bar says what changed.
 // (Moving materials and maps between places: tests/MaterialTransferUiTest.cpp; inspection, the
 // value picker, Inspect Map and the wireframe: tests/InspectionUiTest.cpp.)
-// - The cache budget (ui/CacheBudget, Edit > Preferences): where the number comes from (setting,
+// - The cache budget (ui/widgets/CacheBudget, Edit > Preferences): where the number comes from (setting,
 //   FACET_CACHE_BUDGET_MB, default, each out of range), and the window's IBL cache keeping to it
 //   while environments change, a new budget applying at the next frame; freed memory handed back
-//   (ui/FreedMemoryTimer).
+//   (ui/widgets/FreedMemoryTimer).
 // Needs a display (Xvfb via with-display.sh).
 
-#include "core/FreedMemory.h"
-#include "core/Image.h"
-#include "ui/CacheBudget.h"
-#include "ui/ColorButton.h"
-#include "ui/Document.h"
-#include "ui/ExportDialog.h"
-#include "ui/FreedMemoryTimer.h"
+#include "core/image/Image.h"
+#include "core/support/FreedMemory.h"
 #include "ui/MainWindow.h"
-#include "ui/MapSlotWidget.h"
-#include "ui/MaterialDock.h"
-#include "ui/MaterialTransfer.h"
-#include "ui/MaterialsDock.h"
-#include "ui/PartPicker.h"
-#include "ui/PreferencesDialog.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/TextureMapsDock.h"
-#include "ui/ValueSlider.h"
-#include "ui/ViewportWidget.h"
+#include "ui/dialogs/ExportDialog.h"
+#include "ui/dialogs/PreferencesDialog.h"
+#include "ui/docks/MapSlotWidget.h"
+#include "ui/docks/MaterialDock.h"
+#include "ui/docks/MaterialsDock.h"
+#include "ui/docks/TextureMapsDock.h"
+#include "ui/document/Document.h"
+#include "ui/document/MaterialTransfer.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/viewport/PartPicker.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/widgets/CacheBudget.h"
+#include "ui/widgets/ColorButton.h"
+#include "ui/widgets/FreedMemoryTimer.h"
+#include "ui/widgets/ValueSlider.h"
 
 #include "TestAssets.h"
 #include "WindowTestSupport.h"

@@ -4,7 +4,7 @@
 // back in this process), ibl.json indexes every file with its conventions, an earlier bake is not
 // replaced without --force, and a bake that cannot finish (a full disk) leaves no file of its own.
 
-#include "core/Environment.h"
+#include "core/ibl/Environment.h"
 #include "render/DfgLut.h"
 #include "render/GLTexture.h"
 #include "render/HeadlessGLContext.h"

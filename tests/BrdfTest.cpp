@@ -1,4 +1,4 @@
-// The BRDF terms and compositions of core/Brdf.h and core/MaterialBrdf.h: closed-form values,
+// The BRDF terms and compositions of core/shading/Brdf.h and core/shading/MaterialBrdf.h: closed-form values,
 // normalisation identities, finiteness and non-negativity over the whole parameter grid, and
 // reciprocity.
 
@@ -9,10 +9,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/Brdf.h"
-#include "core/DfgTable.h"
-#include "core/MaterialBrdf.h"
-#include "core/Sampling.h"
+#include "core/shading/Brdf.h"
+#include "core/shading/DfgTable.h"
+#include "core/shading/MaterialBrdf.h"
+#include "core/shading/Sampling.h"
 
 using namespace facet;
 using namespace facet::shading;

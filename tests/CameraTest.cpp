@@ -1,11 +1,11 @@
-// Framing (core/Camera.h framingDistance): for tall, square and wide images and several fields of
+// Framing (core/project/Camera.h framingDistance): for tall, square and wide images and several fields of
 // view, a camera at that distance has the whole bounding sphere inside the four side planes of its
 // frustum, with a small margin, and the sphere fills the smaller dimension of the image. The
 // planes come from the projection and view matrices the renderer uses (Gribb and Hartmann, "Fast
 // Extraction of Viewing Frustum Planes from the World-View-Projection Matrix", 2001), so the test
 // checks what is drawn, not the formula against itself. Needs nothing.
 
-#include "core/Camera.h"
+#include "core/project/Camera.h"
 
 #include <QtTest/QTest>
 

@@ -1,12 +1,12 @@
-// OpenColorIO configs on the CPU (core/ColorManagement.h): the built-in config's displays and
+// OpenColorIO configs on the CPU (core/image/ColorManagement.h): the built-in config's displays and
 // views, its transforms against values computed independently (the ACES 1.0 SDR video output of
 // mid grey, the sRGB and Rec.1886 curves, identity for Raw), a config named by $OCIO, and the
 // messages for broken configs and unknown names. tests/OcioGLTest.cpp holds the GPU pass to the
 // CPU processors tested here.
 
-#include "core/ColorManagement.h"
-#include "core/Project.h"
-#include "core/ToneMap.h"
+#include "core/image/ColorManagement.h"
+#include "core/image/ToneMap.h"
+#include "core/project/Project.h"
 
 #include <QDir>
 #include <QFile>
@@ -197,7 +197,7 @@ void ColorManagementTest::untonemappedViewIsTheDisplayCurve()
 {
     // "Un-tone-mapped" is colorimetric: linear Rec.709 -> XYZ -> the display's primaries (the
     // same, so grey stays grey) -> its curve. Grey x must come out as the sRGB curve of x
-    // (core/ToneMap.h, IEC 61966-2-1) and as x^(1/2.4) on the Rec.1886 display. 1e-4: the
+    // (core/image/ToneMap.h, IEC 61966-2-1) and as x^(1/2.4) on the Rec.1886 display. 1e-4: the
     // Bradford round trip through ACES2065-1 in float.
     const ColorManagement builtIn = ColorManagement::builtIn();
     std::string error;

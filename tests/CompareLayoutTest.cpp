@@ -1,4 +1,4 @@
-// The compare layout of project format version 3 (core/CompareLayout.h): every mode's JSON round
+// The compare layout of project format version 3 (core/project/CompareLayout.h): every mode's JSON round
 // trip (a table of layouts), every refusal with its JSON path, unknown keys warned about, missing
 // keys defaulted, the defaults themselves, and the operations the window and `facet sheet` use:
 // per-cell environment, camera and exposure, linking and unlinking cameras, promoting a cell,
@@ -12,11 +12,11 @@
 #include <QtTest/QTest>
 
 #include "TestSupport.h"
-#include "core/AssetProject.h"
-#include "core/CompareLayout.h"
-#include "core/GltfImport.h"
-#include "core/MaterialPresets.h"
-#include "core/Project.h"
+#include "core/gltf/GltfImport.h"
+#include "core/material/MaterialPresets.h"
+#include "core/project/AssetProject.h"
+#include "core/project/CompareLayout.h"
+#include "core/project/Project.h"
 
 using namespace facet;
 

@@ -1,14 +1,14 @@
 // The Compare view's cells converge when the project's IBL method is a sampled one (fis,
-// reference), as the single view's still frame does (ui/CompareRenderer.h refineCell,
+// reference), as the single view's still frame does (ui/compare/CompareRenderer.h refineCell,
 // FrameRenderer::refine with one slot per cell): every Shaded cell of the environment grid and of
 // A/B (whose halves are clipped) reaches its samples, says so in its label, and then the view
 // stops drawing; the split sum's cells are not refined; a change of what the samples sum
 // (roughness, environment) starts every cell again, a display setting (exposure) does not.
 // Needs a display (Xvfb via with-display.sh).
 
-#include "ui/CompareRenderer.h"
-#include "ui/CompareView.h"
-#include "ui/SurfaceFormat.h"
+#include "ui/compare/CompareRenderer.h"
+#include "ui/compare/CompareView.h"
+#include "ui/viewport/SurfaceFormat.h"
 
 #include "CompareTestWindow.h"
 #include "TestSupport.h"

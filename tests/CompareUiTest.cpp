@@ -1,4 +1,4 @@
-// The Compare modes in the main window (ui/CompareView.h): the cells each mode makes, a linked
+// The Compare modes in the main window (ui/compare/CompareView.h): the cells each mode makes, a linked
 // orbit moving every linked cell while an unlinked one stays (and only it redraws when it orbits
 // alone), the A/B divider dragged with the mouse and the pixels either side of it coming from A
 // and from B, wedge values reaching the cells (a roughness wedge's highlight peak falls
@@ -7,18 +7,18 @@
 // nothing. Screenshots of each mode go to the test output folder. Needs a display (Xvfb via
 // with-display.sh).
 
-#include "core/MaterialPresets.h"
-#include "ui/CameraController.h"
-#include "ui/CompareActions.h"
-#include "ui/CompareController.h"
-#include "ui/CompareView.h"
-#include "ui/Document.h"
-#include "ui/DocumentAssets.h"
-#include "ui/EnvironmentDock.h"
+#include "core/material/MaterialPresets.h"
 #include "ui/MainWindow.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/ViewportWidget.h"
+#include "ui/compare/CompareActions.h"
+#include "ui/compare/CompareController.h"
+#include "ui/compare/CompareView.h"
+#include "ui/docks/EnvironmentDock.h"
+#include "ui/document/Document.h"
+#include "ui/document/DocumentAssets.h"
+#include "ui/viewport/CameraController.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include "CompareTestWindow.h"
 #include "TestSupport.h"

@@ -7,9 +7,9 @@
 // To (re)create the goldens after an intended change: FACET_UPDATE_GOLDEN=1 DebugViewGoldenGLTest,
 // then look at the images and say in the commit why they changed.
 
-#include "core/Image.h"
-#include "core/Project.h"
-#include "core/ReferenceView.h"
+#include "core/image/Image.h"
+#include "core/project/Project.h"
+#include "core/shading/ReferenceView.h"
 
 #include "ReferenceViewRenderer.h"
 #include "TestSupport.h"
@@ -35,7 +35,7 @@ struct Difference {
     Image image;
 };
 
-// Absolute RGB differences over the interior sphere pixels (core/ReferenceView.h, margin 1): the
+// Absolute RGB differences over the interior sphere pixels (core/shading/ReferenceView.h, margin 1): the
 // view is the sphere's; whether a silhouette pixel's centre falls on the tessellated sphere or on
 // the background is the rasteriser's call, and one such flip would force a tolerance of 1.
 Difference compare(const Image& actual, const Image& golden)

@@ -1,4 +1,4 @@
-// The split-sum table (core/DfgTable.h) against an independent, high-resolution numerical
+// The split-sum table (core/shading/DfgTable.h) against an independent, high-resolution numerical
 // integration, its lookup, and its invariants.
 
 #include <algorithm>
@@ -9,8 +9,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/Brdf.h"
-#include "core/DfgTable.h"
+#include "core/shading/Brdf.h"
+#include "core/shading/DfgTable.h"
 
 using namespace facet;
 using namespace facet::shading;

@@ -6,26 +6,26 @@
 // library switches the environment and relights, and tells the built-in studio/sky from the
 // installed samples of those names; lights are added, edited and removed through the Lights dock;
 // the View dock changes exposure and the debug view, which have descriptive names; a mesh warning
-// reaches the status bar in the window's wording (ui/WindowMessages.h); presets are saved,
+// reaches the status bar in the window's wording (ui/widgets/WindowMessages.h); presets are saved,
 // applied, deleted.
 
-#include "core/MaterialPresets.h"
-#include "core/PresetPackage.h"
+#include "core/material/MaterialPresets.h"
+#include "core/material/PresetPackage.h"
 #include "render/ShaderVariant.h"
-#include "ui/Document.h"
-#include "ui/EnvironmentDock.h"
-#include "ui/LightsDock.h"
 #include "ui/MainWindow.h"
-#include "ui/MapSlotWidget.h"
-#include "ui/MaterialDock.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/TextureMapsDock.h"
-#include "ui/UserPresets.h"
-#include "ui/ValueSlider.h"
-#include "ui/ViewDock.h"
-#include "ui/ViewportWidget.h"
+#include "ui/docks/EnvironmentDock.h"
+#include "ui/docks/LightsDock.h"
+#include "ui/docks/MapSlotWidget.h"
+#include "ui/docks/MaterialDock.h"
+#include "ui/docks/TextureMapsDock.h"
+#include "ui/docks/ViewDock.h"
+#include "ui/document/Document.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/document/UserPresets.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/widgets/ValueSlider.h"
 
 #include "TestAssets.h"
 #include "TestSupport.h"
@@ -654,7 +654,7 @@ void DocksUiTest::meshWarningInWindowWording()
     file.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n");
     file.close();
     QVERIFY(m_window->viewDock()->importMesh(path));
-    // The mesh loads off the GUI thread (ui/DocumentAssets); its notes come when it arrives.
+    // The mesh loads off the GUI thread (ui/document/DocumentAssets); its notes come when it arrives.
     QTRY_COMPARE_WITH_TIMEOUT(m_window->sceneController()->pendingAssetLoads(), 0, 30000);
     const QString message = m_window->statusMessage();
     QVERIFY2(message.startsWith(QStringLiteral(
@@ -787,8 +787,8 @@ void DocksUiTest::presetFolders()
     m_document->newProject();
 }
 
-// The preset list shows a rendered swatch per preset (ui/ThumbnailLoader requestSwatch on its
-// worker, core/MaterialSwatch): every item gets its icon, and the icons show the materials
+// The preset list shows a rendered swatch per preset (ui/viewport/ThumbnailLoader requestSwatch on its
+// worker, core/material/MaterialSwatch): every item gets its icon, and the icons show the materials
 // (gold's redder than silver's).
 void DocksUiTest::presetSwatches()
 {

@@ -1,4 +1,4 @@
-// ui/DocumentAssets, the window's asset cache: what needs no file (a built-in environment,
+// ui/document/DocumentAssets, the window's asset cache: what needs no file (a built-in environment,
 // uniform:V, a primitive mesh) is made at once; files load on a worker and arrive through
 // assetArrived, once however many ask; a failure is named and not tried again until retry() or
 // the file changes; a file changed on disk loads again, the previous version standing in
@@ -6,7 +6,7 @@
 // index) arrives before its pixels are decoded, and environmentDecoded follows. Needs no display, but links
 // ui/ (a UiTest).
 
-#include "ui/DocumentAssets.h"
+#include "ui/document/DocumentAssets.h"
 
 #include "TestSupport.h"
 

@@ -1,14 +1,14 @@
-// Change descriptions (ui/DocumentChanges.h): changesBetween names exactly what an edit changed
+// Change descriptions (ui/document/DocumentChanges.h): changesBetween names exactly what an edit changed
 // (which material and map slot, which light, which view setting, and list insertions, removals
 // and reorders), one row per kind of edit; the questions views ask (affectsMaterial,
 // affectsLight, affectsEnvironment, map()) answer from it; a description of kinds alone
 // (New/Open, files changed on disk) answers "changed" to everything of those kinds; and two
 // changes combine without losing any. changesBetween is pure: this test is built with
-// ui/DocumentChanges.cpp alone and needs no widgets and no display.
+// ui/document/DocumentChanges.cpp alone and needs no widgets and no display.
 
-#include "ui/DocumentChanges.h"
+#include "ui/document/DocumentChanges.h"
 
-#include "core/Project.h"
+#include "core/project/Project.h"
 
 #include <QtTest/QTest>
 
@@ -60,7 +60,7 @@ struct Row {
     DocumentChanges expected;
 };
 
-DocumentChanges material(std::size_t index, MaterialProperties changed)
+DocumentChanges material(std::size_t index, MaterialFields changed)
 {
     MaterialChange change;
     change.properties = changed;
@@ -108,28 +108,26 @@ std::vector<Row> rows()
 
     // --- Each material field (material 1), each alone.
     add(
-        "material name", [](Project& p) { p.materials[1].name = "Red"; },
-        material(1, MaterialProperty::Name));
+        "material name", [](Project& p) { p.materials[1].name = "Red"; }, material(1, MaterialField::Name));
     add(
-        "material ior", [](Project& p) { p.materials[1].ior = 1.7; }, material(1, MaterialProperty::Ior));
+        "material ior", [](Project& p) { p.materials[1].ior = 1.7; }, material(1, MaterialField::Ior));
     add(
         "material emissive strength", [](Project& p) { p.materials[1].emissiveStrength = 3.0; },
-        material(1, MaterialProperty::EmissiveStrength));
+        material(1, MaterialField::EmissiveStrength));
     add(
         "material alpha mode", [](Project& p) { p.materials[1].alphaMode = AlphaMode::Mask; },
-        material(1, MaterialProperty::AlphaMode));
+        material(1, MaterialField::AlphaMode));
     add(
         "material alpha cutoff", [](Project& p) { p.materials[1].alphaCutoff = 0.25; },
-        material(1, MaterialProperty::AlphaCutoff));
+        material(1, MaterialField::AlphaCutoff));
     add(
         "material double-sided", [](Project& p) { p.materials[1].doubleSided = false; },
-        material(1, MaterialProperty::DoubleSided));
+        material(1, MaterialField::DoubleSided));
     add(
-        "material unlit", [](Project& p) { p.materials[1].unlit = true; },
-        material(1, MaterialProperty::Unlit));
+        "material unlit", [](Project& p) { p.materials[1].unlit = true; }, material(1, MaterialField::Unlit));
     add(
         "material shading", [](Project& p) { p.materials[1].shading.multiScatter = false; },
-        material(1, MaterialProperty::Shading));
+        material(1, MaterialField::Shading));
 
     // --- Each map slot's path, colour space and channel, of material 0 (no files) and of
     // material 2 (a file in every slot).
@@ -198,8 +196,7 @@ std::vector<Row> rows()
     add(
         "materials 0 and 1 swapped", [](Project& p) { std::swap(p.materials[0], p.materials[1]); },
         DocumentChanges::ofMaterialList(kReordered,
-            {{0, MaterialChange {MaterialProperty::Name, {}}},
-                {1, MaterialChange {MaterialProperty::Name, {}}}}));
+            {{0, MaterialChange {MaterialField::Name, {}}}, {1, MaterialChange {MaterialField::Name, {}}}}));
     add(
         "materials replaced by two others",
         [](Project& p) {
@@ -208,8 +205,7 @@ std::vector<Row> rows()
                 m.ior = 1.6;
         },
         DocumentChanges::ofMaterialList(removed({2}),
-            {{0, MaterialChange {MaterialProperty::Ior, {}}},
-                {1, MaterialChange {MaterialProperty::Ior, {}}}}));
+            {{0, MaterialChange {MaterialField::Ior, {}}}, {1, MaterialChange {MaterialField::Ior, {}}}}));
 
     // --- Each light field (light 1), each alone.
     const std::vector<std::pair<const char*, std::pair<std::function<void(Light&)>, LightProperty>>>

@@ -1,11 +1,11 @@
-// The Document (ui/Document.h): every edit is one undo step with the right change description
+// The Document (ui/document/Document.h): every edit is one undo step with the right change description
 // (what changesBetween works out is checked row by row in DocumentChangesTest), a slider
 // drag merges into one step, a drag back to the start leaves no step, camera moves stay off the
 // stack, the modified state follows the undo stack, and save/reopen gives the same project.
 // Needs no display (QUndoStack is QtGui but opens no window); it links facet_ui, hence "Ui".
 
-#include "ui/Document.h"
-#include "ui/DocumentCommands.h"
+#include "ui/document/Document.h"
+#include "ui/document/DocumentCommands.h"
 
 #include <QFile>
 #include <QSignalSpy>

@@ -1,4 +1,4 @@
-// Energy: white-furnace responses of the material BRDF (core/MaterialBrdf.h). A white metal
+// Energy: white-furnace responses of the material BRDF (core/shading/MaterialBrdf.h). A white metal
 // reflects at most what it receives, and all of it with multiple-scattering compensation; the
 // glTF fresnel_mix gains energy at grazing angles for a white dielectric (measured here and in
 // docs/energy.md), and the energy-preserving coupling does not.
@@ -7,9 +7,9 @@
 
 #include <QtTest/QTest>
 
-#include "core/Brdf.h"
-#include "core/DfgTable.h"
-#include "core/MaterialBrdf.h"
+#include "core/shading/Brdf.h"
+#include "core/shading/DfgTable.h"
+#include "core/shading/MaterialBrdf.h"
 
 using namespace facet;
 

@@ -1,4 +1,4 @@
-// Environment::load remembers a file by its identity (core/EnvironmentIndex.h) and does not decode
+// Environment::load remembers a file by its identity (core/ibl/EnvironmentIndex.h) and does not decode
 // it again while it is unchanged (issue 12, "Large HDRIs": a warm cache never decodes the image);
 // any change to the file, or a record that is not a good one, is a miss; a file too recent to
 // trust is not remembered; a record that turns out wrong is forgotten with a warning. Files larger
@@ -21,9 +21,9 @@
 #include <glm/common.hpp>
 #include <glm/vector_relational.hpp>
 
-#include "core/Environment.h"
-#include "core/EnvironmentIndex.h"
-#include "core/Image.h"
+#include "core/ibl/Environment.h"
+#include "core/ibl/EnvironmentIndex.h"
+#include "core/image/Image.h"
 
 using namespace facet;
 

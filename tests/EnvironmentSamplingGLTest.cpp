@@ -2,16 +2,16 @@
 // of render/EnvironmentSource, made by IblPrecompute::source) against its CPU twins:
 // EnvironmentSampler::sample/pdf and Environment::radiance; the sequence functions of
 // common_sampling.glsl (sobol2DBits, pcgHash, cranleyPattersonShift, shiftedSobol2D) against
-// core/Sampling.h bit for bit; the source cache; and, printed, what one environment sample costs
+// core/shading/Sampling.h bit for bit; the source cache; and, printed, what one environment sample costs
 // per pixel at 1280x720. A fixture shader (environment_sampling_test.frag) writes one quantity per
 // pixel into an RGBA32F target. Needs a GL context (EGL, no display server).
 
 #include <epoxy/gl.h> // before any header that could pull in <GL/gl.h>
 
-#include "core/Environment.h"
-#include "core/EnvironmentSampler.h"
-#include "core/EnvironmentSamplingTables.h"
-#include "core/Sampling.h"
+#include "core/ibl/Environment.h"
+#include "core/ibl/EnvironmentSampler.h"
+#include "core/ibl/EnvironmentSamplingTables.h"
+#include "core/shading/Sampling.h"
 #include "render/EnvironmentSource.h"
 #include "render/Framebuffer.h"
 #include "render/HeadlessGLContext.h"

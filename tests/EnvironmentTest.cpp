@@ -1,4 +1,4 @@
-// core/Environment: the equirect convention of docs/architecture.md, rotation, sampling, hashing, the
+// core/ibl/Environment: the equirect convention of docs/architecture.md, rotation, sampling, hashing, the
 // uniform and built-in environments, loading the CC0 HDRIs and parsing specs.
 
 #include <algorithm>
@@ -14,8 +14,8 @@
 #include <glm/geometric.hpp>
 
 #include "TestSupport.h"
-#include "core/Environment.h"
-#include "core/EnvironmentSampler.h"
+#include "core/ibl/Environment.h"
+#include "core/ibl/EnvironmentSampler.h"
 
 // QCOMPARE prints values it knows; teach it glm's vectors (found by argument-dependent lookup).
 namespace glm {

@@ -1,5 +1,5 @@
-// The Compare view's error view (CompareMode::Error, ui/CompareRenderer.h): its numbers are
-// core/ImageMetrics' on the images it shows (the relative RMSE and the worst pixel of the
+// The Compare view's error view (CompareMode::Error, ui/compare/CompareRenderer.h): its numbers are
+// core/image/ImageMetrics' on the images it shows (the relative RMSE and the worst pixel of the
 // real-time image against the reference's mean over the object mask, the reference's noise),
 // its heat map's pixels are heatmap::color of each pixel's relative error (or noise), row for
 // row, and the reference's accumulation restarts on every change of what it sums (material,
@@ -7,14 +7,14 @@
 // heat map's scale and mode, names, the split sum's quality, which only redraws the real-time
 // image). Needs a display (Xvfb via with-display.sh).
 
-#include "core/HeatMap.h"
-#include "core/ImageMetrics.h"
-#include "core/ToneMap.h"
-#include "ui/CompareRenderer.h"
-#include "ui/CompareView.h"
-#include "ui/Document.h"
+#include "core/image/HeatMap.h"
+#include "core/image/ImageMetrics.h"
+#include "core/image/ToneMap.h"
 #include "ui/MainWindow.h"
-#include "ui/SurfaceFormat.h"
+#include "ui/compare/CompareRenderer.h"
+#include "ui/compare/CompareView.h"
+#include "ui/document/Document.h"
+#include "ui/viewport/SurfaceFormat.h"
 
 #include "CompareTestWindow.h"
 #include "TestSupport.h"

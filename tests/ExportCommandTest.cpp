@@ -17,8 +17,8 @@
 #include "FullVolume.h"
 #include "TestAssets.h"
 #include "TestSupport.h"
-#include "core/Image.h"
-#include "core/Project.h"
+#include "core/image/Image.h"
+#include "core/project/Project.h"
 
 using facet::test::FullVolume;
 
@@ -316,7 +316,8 @@ private Q_SLOTS:
             r = runExport({m_project, QStringLiteral("--format"), QStringLiteral("unreal"),
                 QStringLiteral("-o"), readOnly.path()});
             QCOMPARE(r.exitCode, 1);
-            // The set's staging folder is the first thing written (core/FileSet.h): the folder is named.
+            // The set's staging folder is the first thing written (core/support/FileSet.h): the folder is
+            // named.
             QVERIFY2(r.err.contains(
                          readOnly.path() + QStringLiteral(": cannot make a folder to write the new files in"))
                     && r.err.contains(QStringLiteral("Read-only file system")),

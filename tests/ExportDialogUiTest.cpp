@@ -1,4 +1,4 @@
-// File > Export… (ui/ExportDialog) as an artist uses it: the file list follows the
+// File > Export… (ui/dialogs/ExportDialog) as an artist uses it: the file list follows the
 // template, material, size and bit-depth choices (a depth the format cannot hold disables Export
 // and says why); Export writes the set and reports it; files already in the folder are replaced
 // only when the artist agrees; a user template file is offered, a broken one named; the window's
@@ -17,9 +17,9 @@
 #include "FullVolume.h"
 #include "TestAssets.h"
 #include "TestSupport.h"
-#include "core/Project.h"
-#include "ui/ExportDialog.h"
+#include "core/project/Project.h"
 #include "ui/MainWindow.h"
+#include "ui/dialogs/ExportDialog.h"
 
 using namespace facet;
 

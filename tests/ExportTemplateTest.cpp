@@ -1,4 +1,4 @@
-// core/ExportTemplate: reading export templates and naming their files. The name pattern's tokens
+// core/export/ExportTemplate: reading export templates and naming their files. The name pattern's tokens
 // (and {size} as the width or WxH), file-name-safe material names, and bad templates and template
 // files, each refused with the field named. tests/TextureSetExportTest.cpp checks what the
 // templates write.
@@ -10,9 +10,9 @@
 
 #include "TestAssets.h"
 #include "TestSupport.h"
-#include "core/ExportTemplate.h"
-#include "core/MapImage.h"
-#include "core/TextureSetExport.h"
+#include "core/export/ExportTemplate.h"
+#include "core/export/TextureSetExport.h"
+#include "core/image/MapImage.h"
 
 using namespace facet;
 

@@ -1,5 +1,5 @@
-// OpenEXR files read by core (core/BuiltinExrDecoder.h) against the image module's reads of the
-// same files, the EXR header checks made before any decoder sees a file (core/ImageReader), and
+// OpenEXR files read by core (core/image/BuiltinExrDecoder.h) against the image module's reads of the
+// same files, the EXR header checks made before any decoder sees a file (core/image/ImageReader), and
 // bands of rows through both decoders. Files are written with OpenImageIO directly.
 
 #include <QFile>
@@ -17,10 +17,10 @@
 #include <vector>
 
 #include "TestSupport.h"
-#include "core/BuiltinExrDecoder.h"
-#include "core/Image.h"
-#include "core/ImageCodec.h"
-#include "core/ImageReader.h"
+#include "core/image/BuiltinExrDecoder.h"
+#include "core/image/Image.h"
+#include "core/image/ImageCodec.h"
+#include "core/image/ImageReader.h"
 
 using namespace facet;
 

@@ -7,11 +7,11 @@
 // samples split into draws give the one-draw image (the footprints are the run's, not the
 // draw's), and extreme radiance stays finite.
 
-#include "core/GroundTruth.h"
-#include "core/ImageMetrics.h"
-#include "core/Prefilter.h"
-#include "core/Project.h"
-#include "core/ReferenceView.h"
+#include "core/ibl/Prefilter.h"
+#include "core/image/ImageMetrics.h"
+#include "core/project/Project.h"
+#include "core/shading/GroundTruth.h"
+#include "core/shading/ReferenceView.h"
 #include "render/FrameRenderer.h"
 
 #include "IblMethodCase.h"

@@ -1,9 +1,9 @@
-// core/Fnv1a: the one FNV-1a 64 of Facet's keys and checksums. Its values are stored on disk (IBL
+// core/support/Fnv1a: the one FNV-1a 64 of Facet's keys and checksums. Its values are stored on disk (IBL
 // cache keys and checksums, the environment index's file names), so they are pinned here: the
 // published test vectors, numbers fed little-endian whatever the machine, and a hash continued
 // from a seed (AssetCache::meshKey) equal to one fed in a single run.
 
-#include "core/Fnv1a.h"
+#include "core/support/Fnv1a.h"
 
 #include <QtTest/QTest>
 

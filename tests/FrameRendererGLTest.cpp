@@ -9,9 +9,9 @@
 
 #include <epoxy/gl.h> // before any header that could pull in <GL/gl.h>
 
-#include "core/ImageMetrics.h"
-#include "core/Project.h"
-#include "core/ProjectAssets.h"
+#include "core/image/ImageMetrics.h"
+#include "core/project/Project.h"
+#include "core/project/ProjectAssets.h"
 #include "render/FrameRenderer.h"
 #include "render/Framebuffer.h"
 #include "render/HeadlessGLContext.h"
@@ -358,7 +358,7 @@ void FrameRendererGLTest::coverageAlphaIsTheObject_data()
 
 // RenderScene::coverageAlpha: the background writes alpha 0 and the sphere 1 (fractions only
 // at an MSAA-resolved silhouette); the radiance is the same with and without it. The error view's
-// mask (core/ImageMetrics objectMask) is made from it.
+// mask (core/image/ImageMetrics objectMask) is made from it.
 void FrameRendererGLTest::coverageAlphaIsTheObject()
 {
     QFETCH(QString, background);
@@ -446,7 +446,7 @@ void FrameRendererGLTest::texturesOfEveryCellStayUntilTheFrameEnds()
 void FrameRendererGLTest::renderersSharingTexturesUploadOnce()
 {
     // The single view and the Compare view: two FrameRenderers sharing the IBL precompute and the
-    // texture cache (ui/ViewShareGroup; one context here, a share group in the window).
+    // texture cache (ui/viewport/ViewShareGroup; one context here, a share group in the window).
     auto precompute = std::make_shared<IblPrecompute>(m_cacheDir.path(), /*useDiskCache=*/false);
     auto textures = std::make_shared<TextureCache>();
     FrameRenderer single(precompute, textures);

@@ -8,11 +8,11 @@
 // keep in tests/fuzz/regressions (each of which runs first, as it is). FACET_FUZZ_RUNS changes
 // the runs per seed (default 60; CI's budget), FACET_FUZZ_SEED the sequence.
 
-#include "core/Image.h"
-#include "core/MapImage.h"
-#include "core/Mesh.h"
-#include "core/MeshImport.h"
-#include "core/Project.h"
+#include "core/image/Image.h"
+#include "core/image/MapImage.h"
+#include "core/mesh/Mesh.h"
+#include "core/mesh/MeshImport.h"
+#include "core/project/Project.h"
 
 #include "TestSupport.h"
 

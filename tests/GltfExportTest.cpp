@@ -1,9 +1,9 @@
-// core/GltfExport: materials on a mesh written as a glTF 2.0 asset (.gltf with its .bin and
+// core/gltf/GltfExport: materials on a mesh written as a glTF 2.0 asset (.gltf with its .bin and
 // textures, and .glb), one row per feature: constants only; every map (packed ORM, DirectX normal
 // at strength 2, emissive with strength, alpha); a UV transform the maps share (kept as
 // KHR_texture_transform) and transforms that differ (baked); IOR; MASK and BLEND; single-sided;
 // two materials of one name. Each file passes the Khronos glTF-Validator with no error and no
-// warning, and imports back (core/AssetProject projectFromAsset) with the same parameters and the
+// warning, and imports back (core/project/AssetProject projectFromAsset) with the same parameters and the
 // same material inputs at every texel (0.5/255 for data and sRGB colour, 2/255 for the normal).
 
 #include <cmath>
@@ -24,15 +24,15 @@
 #include "GltfWriter.h"
 #include "TestAssets.h"
 #include "TestSupport.h"
-#include "core/AssetProject.h"
-#include "core/GltfExport.h"
-#include "core/GltfImport.h"
-#include "core/GltfModel.h"
-#include "core/MapImage.h"
-#include "core/MaterialInputs.h"
-#include "core/MeshPrimitives.h"
-#include "core/ProjectAssets.h"
-#include "core/ToneMap.h"
+#include "core/gltf/GltfExport.h"
+#include "core/gltf/GltfImport.h"
+#include "core/gltf/GltfModel.h"
+#include "core/image/MapImage.h"
+#include "core/image/ToneMap.h"
+#include "core/mesh/MeshPrimitives.h"
+#include "core/project/AssetProject.h"
+#include "core/project/ProjectAssets.h"
+#include "core/shading/MaterialInputs.h"
 
 using namespace facet;
 

@@ -1,10 +1,10 @@
-// glTF assets in (core/GltfImport.h): small files the test writes itself (support/GltfWriter),
+// glTF assets in (core/gltf/GltfImport.h): small files the test writes itself (support/GltfWriter),
 // one row per feature of the material model and the geometry, in each buffer storage (external
 // .bin, data URI, .glb), and a table of broken files that must each give a clear message.
 
-#include "core/GltfImport.h"
-#include "core/Image.h"
-#include "core/MeshImport.h"
+#include "core/gltf/GltfImport.h"
+#include "core/image/Image.h"
+#include "core/mesh/MeshImport.h"
 
 #include "GltfWriter.h"
 #include "TestSupport.h"

@@ -1,5 +1,5 @@
 // glTF assets as they render: small files this test writes (support/GltfWriter), opened the way
-// `facet render ASSET.glb --reference-view` opens them (core/AssetProject projectFromAsset, then
+// `facet render ASSET.glb --reference-view` opens them (core/project/AssetProject projectFromAsset, then
 // the command's own render path, support/ReferenceViewRenderer::renderAsCommand), and checked in
 // the rendered image, not only in the loaded data: factors, the packed metallic-roughness texture,
 // occlusion strength, emissive with its strength, KHR_texture_transform, a map on TEXCOORD_1, two
@@ -8,10 +8,10 @@
 // The meshes are quads in the XY plane facing +Z; the view normalises them to the unit sphere, so
 // a quad spanning [-1, 1]^2 covers the middle 36 x 36 pixels of the 64 x 64 reference view.
 
-#include "core/AssetProject.h"
-#include "core/Image.h"
-#include "core/Project.h"
-#include "core/ToneMap.h"
+#include "core/image/Image.h"
+#include "core/image/ToneMap.h"
+#include "core/project/AssetProject.h"
+#include "core/project/Project.h"
 
 #include "GltfWriter.h"
 #include "ReferenceViewRenderer.h"

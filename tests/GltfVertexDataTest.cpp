@@ -3,7 +3,7 @@
 // and the maps that read it, and each texture's sampler. Small files the test writes itself
 // (support/GltfWriter).
 
-#include "core/GltfImport.h"
+#include "core/gltf/GltfImport.h"
 
 #include "GltfWriter.h"
 #include "TestSupport.h"

@@ -1,4 +1,4 @@
-// The ground-truth integrator (core/GroundTruth.h) against what is known exactly: the white
+// The ground-truth integrator (core/shading/GroundTruth.h) against what is known exactly: the white
 // furnace equals the albedo table, a Lambert sphere equals brute-force irradiance, a punctual
 // light equals its closed form; and its convergence rate, determinism and background.
 
@@ -10,11 +10,11 @@
 #include <glm/geometric.hpp>
 
 #include "TestSupport.h"
-#include "core/Brdf.h"
-#include "core/DfgTable.h"
-#include "core/GroundTruth.h"
-#include "core/Irradiance.h"
-#include "core/ReferenceView.h"
+#include "core/ibl/Irradiance.h"
+#include "core/shading/Brdf.h"
+#include "core/shading/DfgTable.h"
+#include "core/shading/GroundTruth.h"
+#include "core/shading/ReferenceView.h"
 
 using namespace facet;
 
@@ -138,7 +138,7 @@ private Q_SLOTS:
     }
 
     // A Lambert sphere under a real HDRI: radiance = albedo / pi * E(n), with E(n) the exact
-    // irradiance summed over every texel (core/Irradiance.h). Tolerance 3% max, 1% RMS: Monte
+    // irradiance summed over every texel (core/ibl/Irradiance.h). Tolerance 3% max, 1% RMS: Monte
     // Carlo noise at 8192 samples on this high-contrast map (at 512 samples it is ~8% RMS: the
     // studio's small bright boxes sit near many normals' horizons) plus the difference between
     // the integrator's bilinear radiance lookups and the brute force's texel-centre values.

@@ -1,8 +1,8 @@
-// core/HeatMap: the error view's colour scale. Its ends, its stops, that it darkens nowhere along
+// core/image/HeatMap: the error view's colour scale. Its ends, its stops, that it darkens nowhere along
 // the way (luminance rises monotonically: "more error" never looks like less), the clamps, and
 // the values off the scale.
 
-#include "core/HeatMap.h"
+#include "core/image/HeatMap.h"
 
 #include <QtTest/QTest>
 

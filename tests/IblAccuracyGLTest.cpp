@@ -1,5 +1,5 @@
-// The real-time renderer against the ground truth (core/GroundTruth.h) on docs/architecture.md's reference
-// view: the default IBL preset, metal and dielectric spheres at several roughness values under
+// The real-time renderer against the ground truth (core/shading/GroundTruth.h) on docs/architecture.md's
+// reference view: the default IBL preset, metal and dielectric spheres at several roughness values under
 // three CC0 HDRIs. Each case has its own bound on the relative RMSE over interior sphere pixels,
 // sqrt(sum |gpu - truth|^2 / sum |truth|^2): the measured value on Mesa llvmpipe plus a margin,
 // so that a regression of the prefilter, the lookups or the composition fails here.
@@ -13,9 +13,9 @@
 // roughness-to-level map and the dominant direction that brought rough cases down (city r 1:
 // 47% -> 4%, studio r 0.7: 126% -> 45%).
 
-#include "core/GroundTruth.h"
-#include "core/ImageMetrics.h"
-#include "core/Project.h"
+#include "core/image/ImageMetrics.h"
+#include "core/project/Project.h"
+#include "core/shading/GroundTruth.h"
 
 #include "ReferenceViewRenderer.h"
 #include "TestSupport.h"

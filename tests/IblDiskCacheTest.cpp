@@ -1,6 +1,6 @@
-// core/IblDiskCache: round trip, corrupt and truncated files, key uniqueness. Needs nothing.
+// core/ibl/IblDiskCache: round trip, corrupt and truncated files, key uniqueness. Needs nothing.
 
-#include "core/IblDiskCache.h"
+#include "core/ibl/IblDiskCache.h"
 
 #include <QDir>
 #include <QFile>

@@ -2,10 +2,10 @@
 // (or gold-like) material, docs/architecture.md's reference view, drawn as `facet render --reference-view`
 // draws it (IblPrecompute with the default preset, its DFG table of the material's visibility term,
 // Renderer), against the CPU truth at the centre pixel, a pixel near the silhouette and over the
-// interior (relative RMSE, core/ImageMetrics).
+// interior (relative RMSE, core/image/ImageMetrics).
 //
 // The truth: for a uniform environment of radiance 1 the outgoing radiance is exactly the BRDF's
-// directional albedo at the pixel's n.v (the sphere is convex), which core/MaterialBrdf's
+// directional albedo at the pixel's n.v (the sphere is convex), which core/shading/MaterialBrdf's
 // directionalAlbedo() integrates with the ground truth's BRDF and albedo table
 // (GroundTruthSettings' 64 x 64 x 2048), deterministically to ~1e-4. It is the integral
 // `facet render --spp N` estimates, without its noise, so the bounds can be tight. Every
@@ -20,13 +20,13 @@
 // defect of issue 8) nine uncorrelated and LearnOpenGL rows fail, e.g. LearnOpenGL metal r 0.6
 // +3.45% at the centre, +21% near the edge, 11.1% RMSE (docs/ibl.md lists them all).
 
-#include "core/DfgTable.h"
-#include "core/GroundTruth.h"
-#include "core/ImageMetrics.h"
-#include "core/MaterialBrdf.h"
-#include "core/Parallel.h"
-#include "core/Project.h"
-#include "core/ReferenceView.h"
+#include "core/image/ImageMetrics.h"
+#include "core/project/Project.h"
+#include "core/shading/DfgTable.h"
+#include "core/shading/GroundTruth.h"
+#include "core/shading/MaterialBrdf.h"
+#include "core/shading/ReferenceView.h"
+#include "core/support/Parallel.h"
 
 #include "ReferenceViewRenderer.h"
 #include "TestSupport.h"

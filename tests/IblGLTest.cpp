@@ -6,13 +6,13 @@
 
 #include <epoxy/gl.h> // before any header that could pull in <GL/gl.h>
 
-#include "core/Brdf.h"
-#include "core/DfgTable.h"
-#include "core/Environment.h"
-#include "core/IblDiskCache.h"
-#include "core/Irradiance.h"
-#include "core/Prefilter.h"
-#include "core/SphericalHarmonics.h"
+#include "core/ibl/Environment.h"
+#include "core/ibl/IblDiskCache.h"
+#include "core/ibl/Irradiance.h"
+#include "core/ibl/Prefilter.h"
+#include "core/ibl/SphericalHarmonics.h"
+#include "core/shading/Brdf.h"
+#include "core/shading/DfgTable.h"
 #include "render/Framebuffer.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblPrecompute.h"

@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "TestSupport.h"
-#include "core/Image.h"
+#include "core/image/Image.h"
 
 using namespace facet;
 

@@ -6,8 +6,8 @@
 
 #include <glm/gtc/packing.hpp>
 
-#include "core/DfgTable.h"
-#include "core/Project.h"
+#include "core/project/Project.h"
+#include "core/shading/DfgTable.h"
 #include "render/IblSettings.h"
 #include "render/ShippedDfgTables.h"
 

@@ -1,4 +1,4 @@
-// The image codec module (core/ImageCodec.h): OpenImageIO loaded only by processes that read or
+// The image codec module (core/image/ImageCodec.h): OpenImageIO loaded only by processes that read or
 // write an image, what its header and reads give for each format and sample type, what a missing
 // or foreign module tells the user. Files are written with OpenImageIO directly, so that a
 // mistake in the module's encoder cannot hide one in its decoder.
@@ -20,12 +20,12 @@
 #include <vector>
 
 #include "TestSupport.h"
-#include "core/BuiltinImageEncoders.h"
-#include "core/Image.h"
-#include "core/ImageCodec.h"
-#include "core/ImageReader.h"
-#include "core/ImageWriter.h"
-#include "core/MapImage.h"
+#include "core/image/BuiltinImageEncoders.h"
+#include "core/image/Image.h"
+#include "core/image/ImageCodec.h"
+#include "core/image/ImageReader.h"
+#include "core/image/ImageWriter.h"
+#include "core/image/MapImage.h"
 
 using namespace facet;
 
@@ -89,11 +89,11 @@ private Q_SLOTS:
         Image probe(4, 2, glm::vec4(0.5f));
         QVERIFY(!imageCodecLoaded()); // making an image in memory needs no codec
         std::string error;
-        // EXR and PNG are encoded by core (core/BuiltinImageEncoders.h): still no module.
+        // EXR and PNG are encoded by core (core/image/BuiltinImageEncoders.h): still no module.
         QVERIFY2(probe.save(path(QStringLiteral("probe.exr")).toStdString(), &error), error.c_str());
         QVERIFY2(probe.save(path(QStringLiteral("probe.png")).toStdString(), &error), error.c_str());
         QVERIFY(!imageCodecLoaded());
-        // EXR is decoded by core too (core/BuiltinExrDecoder.h).
+        // EXR is decoded by core too (core/image/BuiltinExrDecoder.h).
         const std::optional<Image> read = Image::load(path(QStringLiteral("probe.exr")).toStdString(), &error);
         QVERIFY2(read, error.c_str());
         QCOMPARE(read->at(3, 1), glm::vec4(0.5f));
@@ -276,7 +276,7 @@ private Q_SLOTS:
                 qPrintable(QStringLiteral("sample %1: %2, wrote %3").arg(i).arg(back[i]).arg(values[i])));
     }
 
-    // EXR and PNG are encoded by core itself (core/BuiltinImageEncoders.h), without the module:
+    // EXR and PNG are encoded by core itself (core/image/BuiltinImageEncoders.h), without the module:
     // read back with OpenImageIO directly, each file holds what the module's encoder wrote for the
     // same samples: size, channel names, sample type, colour-space tag, text attributes, and every
     // sample bit for bit (the 8- and 16-bit rows include the values halfway between two steps).
@@ -445,7 +445,7 @@ private Q_SLOTS:
         QTest::newRow("render to an EXR") << facet::test::strings(
             {"render", "--env", "uniform:1", "--size", "16x16", "-o", "{dir}/out.exr"})
                                           << 0 << false;
-        // EXR is decoded by core too (core/BuiltinExrDecoder.h); Radiance HDR is the module's.
+        // EXR is decoded by core too (core/image/BuiltinExrDecoder.h); Radiance HDR is the module's.
         QTest::newRow("render lit by an EXR, to a PNG") << facet::test::strings(
             {"render", "--env", "{dir}/lit.exr", "--size", "16x16", "-o", "{dir}/out-lit.png"})
                                                         << 0 << false;

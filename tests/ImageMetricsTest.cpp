@@ -1,4 +1,4 @@
-// core/ImageMetrics: the relative RMSE and per-pixel errors over the reference view's interior
+// core/image/ImageMetrics: the relative RMSE and per-pixel errors over the reference view's interior
 // sphere pixels, against values worked out by hand.
 
 #include <algorithm>
@@ -7,9 +7,9 @@
 
 #include <QtTest/QTest>
 
-#include "core/Image.h"
-#include "core/ImageMetrics.h"
-#include "core/ReferenceView.h"
+#include "core/image/Image.h"
+#include "core/image/ImageMetrics.h"
+#include "core/shading/ReferenceView.h"
 
 using namespace facet;
 

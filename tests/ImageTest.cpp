@@ -1,4 +1,4 @@
-// core/Image: loading through OpenImageIO (channel expansion, encoding, sanitising, refusing bad
+// core/image/Image: loading through OpenImageIO (channel expansion, encoding, sanitising, refusing bad
 // files with a message naming them) and atomic saving. Fixture files are written here with
 // OpenImageIO directly (not through Image::save) so a bug in save cannot hide one in load, and
 // 8-bit files are cross-checked with QImage.
@@ -20,8 +20,8 @@
 #include <OpenImageIO/imageio.h>
 
 #include "TestSupport.h"
-#include "core/Image.h"
-#include "core/MapImage.h"
+#include "core/image/Image.h"
+#include "core/image/MapImage.h"
 
 // QCOMPARE prints values it knows; teach it glm's vectors (found by argument-dependent lookup).
 namespace glm {

@@ -1,27 +1,28 @@
 // Inspection in the main window under Xvfb (issue 30, "Inspection"), driven as an artist does:
-// - View > Value Picker (I) and the Values dock (ui/ValuePicker, ui/ValuesDock): the radiance read
+// - View > Value Picker (I) and the Values dock (ui/viewport/ValuePicker, ui/docks/ValuesDock): the radiance
+// read
 //   is the one the view's frame holds (the same as a linear still of the view at that pixel), the
 //   screen value is the displayed pixel, the surface is the material of the part under the cursor
 //   with every map's texel (maps the window released decoded again, then read) and the inputs
 //   they make; hovering follows, a click pins, Esc follows again, an edit re-reads the pin, the
 //   background reads no surface, turning it off stops reading.
 // - Inspect Map… on a packed ORM file: each channel's thumbnail, what it feeds, its histogram and
-//   numbers (ui/MapInspectorDialog).
+//   numbers (ui/dialogs/MapInspectorDialog).
 // - View > Wireframe (Shift+W) draws the mesh's edges over the view and takes them away again.
 // Needs a display (Xvfb via with-display.sh).
 
-#include "core/Image.h"
-#include "core/MapImageCache.h"
-#include "ui/Document.h"
+#include "core/image/Image.h"
+#include "core/image/MapImageCache.h"
 #include "ui/MainWindow.h"
-#include "ui/MapInspectorDialog.h"
-#include "ui/MapSlotWidget.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/TextureMapsDock.h"
-#include "ui/ValuePicker.h"
-#include "ui/ValuesDock.h"
-#include "ui/ViewportWidget.h"
+#include "ui/dialogs/MapInspectorDialog.h"
+#include "ui/docks/MapSlotWidget.h"
+#include "ui/docks/TextureMapsDock.h"
+#include "ui/docks/ValuesDock.h"
+#include "ui/document/Document.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ValuePicker.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include "TestAssets.h"
 #include "WindowTestSupport.h"

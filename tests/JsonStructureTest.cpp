@@ -1,10 +1,10 @@
-// The shape check made before any JSON parser sees a text (core/JsonStructure.h): nesting bounded,
+// The shape check made before any JSON parser sees a text (core/json/JsonStructure.h): nesting bounded,
 // duplicate keys named with their JSON path, strings and escapes read as JSON reads them, and
 // text that is not JSON left to the parser. Also the files that go through it: a project with a
 // key twice, and one nested past the bound, are refused naming the line and the key.
 
-#include "core/JsonStructure.h"
-#include "core/Project.h"
+#include "core/json/JsonStructure.h"
+#include "core/project/Project.h"
 
 #include "TestSupport.h"
 

@@ -18,10 +18,10 @@
 #include <QtTest/QTest>
 
 #include "TestSupport.h"
-#include "core/AssetLibrary.h"
-#include "core/Environment.h"
-#include "core/Project.h"
-#include "core/ProjectAssets.h"
+#include "core/ibl/Environment.h"
+#include "core/project/AssetLibrary.h"
+#include "core/project/Project.h"
+#include "core/project/ProjectAssets.h"
 
 using namespace facet;
 using facet::test::strings;

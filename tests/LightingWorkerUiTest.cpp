@@ -1,4 +1,4 @@
-// ui/LightingWorker: the window's IBL precompute on a thread of its own, in a context sharing
+// ui/viewport/LightingWorker: the window's IBL precompute on a thread of its own, in a context sharing
 // with the views'. What it delivers is what a precompute on the GUI thread makes, texel for texel,
 // readable from the view's context; a request for another set cancels the one running (nothing
 // of it is cached); the same request is not run twice; progress rises to the end; a failure is
@@ -6,13 +6,13 @@
 
 #include <epoxy/gl.h> // before Qt's GL headers
 
-#include "core/Environment.h"
-#include "core/IblDiskCache.h"
+#include "core/ibl/Environment.h"
+#include "core/ibl/IblDiskCache.h"
 #include "render/IblPrecompute.h"
 #include "render/IblSettings.h"
 #include "render/IblTextures.h"
-#include "ui/LightingWorker.h"
-#include "ui/SurfaceFormat.h"
+#include "ui/viewport/LightingWorker.h"
+#include "ui/viewport/SurfaceFormat.h"
 
 #include <QDir>
 #include <QElapsedTimer>

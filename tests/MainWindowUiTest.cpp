@@ -3,15 +3,15 @@
 // a dock's width holds when its content changes. Needs a display (Xvfb via with-display.sh).
 // ViewportUiTest checks what the viewport draws, ProjectFileUiTest the File menu's work.
 
-#include "core/Project.h"
-#include "ui/Document.h"
-#include "ui/EnvironmentDock.h"
-#include "ui/LightsDock.h"
+#include "core/project/Project.h"
 #include "ui/MainWindow.h"
-#include "ui/MaterialsDock.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/TextureMapsDock.h"
-#include "ui/ViewportWidget.h"
+#include "ui/docks/EnvironmentDock.h"
+#include "ui/docks/LightsDock.h"
+#include "ui/docks/MaterialsDock.h"
+#include "ui/docks/TextureMapsDock.h"
+#include "ui/document/Document.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include "TestSupport.h"
 

@@ -1,4 +1,4 @@
-// The map size budget through `facet render` (core/MapImage.h MapBudget): a project whose map is
+// The map size budget through `facet render` (core/image/MapImage.h MapBudget): a project whose map is
 // larger than the budget (a crafted 16384² PNG of 57 bytes: its pixels do not exist, so only a
 // loader that checks the header before decoding can name the real problem) exits 1 naming the
 // file and the limit, before any GL work; FACET_MAX_MAP_SIZE and FACET_MAX_MAP_MPIXELS move the
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "TestSupport.h"
-#include "core/Project.h"
+#include "core/project/Project.h"
 
 using namespace facet;
 

@@ -1,4 +1,4 @@
-// core/MapImage and core/MapImageCache: material maps read in the file's own bit depth and
+// core/image/MapImage and core/image/MapImageCache: material maps read in the file's own bit depth and
 // channels (a row per file kind: 8-bit grey, grey + alpha, RGB, RGBA, 16-bit, half and float EXR,
 // two named channels, float TIFF), rows stored bottom to top, float samples sanitised; the size
 // budget refused from the header before decoding (a crafted 16384² PNG of 57 bytes), configurable
@@ -22,9 +22,9 @@
 #include <OpenImageIO/imageio.h>
 
 #include "TestSupport.h"
-#include "core/MapImage.h"
-#include "core/MapImageCache.h"
-#include "core/MapStatistics.h"
+#include "core/image/MapImage.h"
+#include "core/image/MapImageCache.h"
+#include "core/image/MapStatistics.h"
 
 using namespace facet;
 
@@ -80,7 +80,7 @@ class MapImageTest : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
-    // Inspect Map's numbers (core/MapStatistics.h): per stored channel the histogram, the range
+    // Inspect Map's numbers (core/image/MapStatistics.h): per stored channel the histogram, the range
     // and the mean of the values as stored, for each layout and sample type.
     void statisticsOfEachChannel_data()
     {

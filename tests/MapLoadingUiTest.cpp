@@ -1,25 +1,25 @@
 // Material maps in the window: decoded off the GUI thread and uploaded between frames
-// (ui/SceneController, ui/MapUploadScheduler, ui/ViewportRenderer). The edit that assigns a set
-// returns before any map is decoded; the frames while it loads show the factors, then each map
+// (ui/viewport/SceneController, ui/viewport/MapUploadScheduler, ui/viewport/ViewportRenderer). The edit that
+// assigns a set returns before any map is decoded; the frames while it loads show the factors, then each map
 // whole, never a half-uploaded texture (every frame's sphere reads as the factor or as the map,
 // nothing between) and no frame uploads a texture itself; the frame after the last map is complete
 // is a full one and shows them all. A map beyond the size budget is refused: the status bar and
 // the slot say so, naming the file, and the slot keeps its factor. A packed file feeding three
 // slots and the dock's thumbnails is decoded once. Needs a display (Xvfb via with-display.sh).
 
-#include "core/MapImage.h"
-#include "core/MapImageCache.h"
-#include "core/Project.h"
-#include "ui/Document.h"
+#include "core/image/MapImage.h"
+#include "core/image/MapImageCache.h"
+#include "core/project/Project.h"
 #include "ui/MainWindow.h"
-#include "ui/MapSlotWidget.h"
-#include "ui/MapUploadScheduler.h"
-#include "ui/ProblemBar.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/TextureMapsDock.h"
-#include "ui/ViewportWidget.h"
+#include "ui/docks/MapSlotWidget.h"
+#include "ui/docks/TextureMapsDock.h"
+#include "ui/document/Document.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/viewport/MapUploadScheduler.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/widgets/ProblemBar.h"
 
 #include "TestSupport.h"
 

@@ -1,9 +1,9 @@
-// Texture file names to material maps (core/MapNaming.h): one row per naming convention and slot
+// Texture file names to material maps (core/material/MapNaming.h): one row per naming convention and slot
 // (which channel the slot reads, inverted or not, the normal map's green convention), names that
 // must NOT match, a whole folder's assignment (which file wins a slot), and replacing a texture
 // set (slots the new set does not fill are cleared back to sensible values). Needs nothing.
 
-#include "core/MapNaming.h"
+#include "core/material/MapNaming.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,10 +1,10 @@
-// The project's material library (core/MaterialLibrary.h): finding a material by name or index,
+// The project's material library (core/material/MaterialLibrary.h): finding a material by name or index,
 // for `facet sheet PROJECT.json#NAME`, with names that need not be unique; naming new materials.
 
 #include <QtTest/QTest>
 
-#include "core/MaterialLibrary.h"
-#include "core/Project.h"
+#include "core/material/MaterialLibrary.h"
+#include "core/project/Project.h"
 
 using namespace facet;
 

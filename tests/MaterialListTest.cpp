@@ -1,10 +1,10 @@
-// core/MaterialList: adding, duplicating and deleting a project's materials keeps every reference
+// core/material/MaterialList: adding, duplicating and deleting a project's materials keeps every reference
 // to the others (parts, the current material, A/B's B) on the same material. One row per edit
 // and position; the last material and the limit are refused.
 
 #include <QtTest/QTest>
 
-#include "core/MaterialList.h"
+#include "core/material/MaterialList.h"
 
 using namespace facet;
 

@@ -1,10 +1,10 @@
-// The material's texture maps on the GPU against their CPU twin (core/MaterialInputs.h), one row
+// The material's texture maps on the GPU against their CPU twin (core/shading/MaterialInputs.h), one row
 // per map input and feature (Magnum's per-feature golden rows): each map alone, all five
 // together, a packed texture feeding three slots, every channel, inversion, colour space, normal
 // strength, the DirectX green flip, the UV transform, the UV set, each wrap mode and the nearest
 // filter, and each kind of file in its own GPU format (8-bit grey and grey + alpha, 16-bit PNG,
 // float EXR). Each row is a project with texture files
-// on disk, rendered the way `facet render --reference-view` renders it (core/ProjectAssets loads
+// on disk, rendered the way `facet render --reference-view` renders it (core/project/ProjectAssets loads
 // the maps, render/SceneFromProject builds the scene, render/FrameRenderer draws and reads back
 // the RGBA16F target) by a fresh Renderer, so every map is uploaded in the row's first frame, as
 // after opening a project.
@@ -14,11 +14,11 @@
 // normal and the tangent that the GPU interpolated (the uv, geometric-normal and tangent debug
 // views), so the comparison isolates the material inputs from the tessellation.
 
-#include "core/Image.h"
-#include "core/MaterialInputs.h"
-#include "core/Project.h"
-#include "core/ProjectAssets.h"
-#include "core/ReferenceView.h"
+#include "core/image/Image.h"
+#include "core/project/Project.h"
+#include "core/project/ProjectAssets.h"
+#include "core/shading/MaterialInputs.h"
+#include "core/shading/ReferenceView.h"
 
 #include "ReferenceViewRenderer.h"
 #include "TestSupport.h"
@@ -608,7 +608,7 @@ void MaterialMapsGLTest::matchesCpuTwin()
             if (const MapImage* normalMap = images[std::size_t(MapSlot::Normal)]) {
                 const MaterialMap& map = material.map(MapSlot::Normal);
                 const glm::dvec4 texel = sampleMap(map, *normalMap, TexCoords {uv, uv});
-                // The sphere's tangents all have handedness +1 (core/MeshPrimitives).
+                // The sphere's tangents all have handedness +1 (core/mesh/MeshPrimitives).
                 n = shadingNormal(ng, glm::dvec4(t, 1.0), texel, map.factor.x, map.flipGreen);
             }
             const glm::dvec3 expected = check.expected(info, n);

@@ -1,4 +1,4 @@
-// core/MaterialSwatch: the preset library's swatches, rendered on the CPU. Each built-in preset's
+// core/material/MaterialSwatch: the preset library's swatches, rendered on the CPU. Each built-in preset's
 // swatch (written to test-output/swatches.png to look at) is a lit sphere: alpha 1 inside, 0
 // outside, partial at the rim; metals take their colour from the base colour (gold redder than
 // silver); a glossy material shows the studio's soft boxes as sharper highlights than a rough one
@@ -11,8 +11,8 @@
 #include <cmath>
 
 #include "TestSupport.h"
-#include "core/MaterialPresets.h"
-#include "core/MaterialSwatch.h"
+#include "core/material/MaterialPresets.h"
+#include "core/material/MaterialSwatch.h"
 
 using namespace facet;
 

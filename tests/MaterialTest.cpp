@@ -1,5 +1,5 @@
 // The material value types: map slots and their names, validation, IOR/F0, texture sampling
-// (wrap modes, filters, UV sets: core/MaterialInputs' sampleTexture), the built-in presets
+// (wrap modes, filters, UV sets: core/shading/MaterialInputs' sampleTexture), the built-in presets
 // against the LearnOpenGL / Real-Time Rendering F0 table, preset files, and punctual lights
 // (KHR_lights_punctual validation, colour temperature).
 
@@ -16,13 +16,13 @@
 #include <QtTest/QTest>
 
 #include "TestSupport.h"
-#include "core/GltfImport.h"
-#include "core/Image.h"
-#include "core/Light.h"
-#include "core/MapImage.h"
-#include "core/Material.h"
-#include "core/MaterialInputs.h"
-#include "core/MaterialPresets.h"
+#include "core/gltf/GltfImport.h"
+#include "core/image/Image.h"
+#include "core/image/MapImage.h"
+#include "core/material/Material.h"
+#include "core/material/MaterialPresets.h"
+#include "core/project/Light.h"
+#include "core/shading/MaterialInputs.h"
 
 using namespace facet;
 

@@ -1,6 +1,6 @@
 // Materials and maps moved between places in the main window under Xvfb (issue 30, "Materials as
 // first-class objects"), driven as an artist does:
-// - Edit > Copy / Paste Material (Ctrl+Shift+C / V, ui/MaterialTransfer): factors, maps and options
+// - Edit > Copy / Paste Material (Ctrl+Shift+C / V, ui/document/MaterialTransfer): factors, maps and options
 //   onto the current material, its name kept, one undo step; a clipboard without one says so.
 // - A material assigned to the selected parts (several rows of the Parts list, or Ctrl+clicks in
 //   the viewport) in one undo step, from the Assign to Selected button's menu.
@@ -13,21 +13,21 @@
 //   preset folder listed without a restart.
 // Needs a display (Xvfb via with-display.sh).
 
-#include "core/Material.h"
-#include "core/Project.h"
-#include "ui/Document.h"
+#include "core/material/Material.h"
+#include "core/project/Project.h"
 #include "ui/MainWindow.h"
-#include "ui/MapSlotWidget.h"
-#include "ui/MaterialDock.h"
-#include "ui/MaterialTransfer.h"
-#include "ui/MaterialsDock.h"
-#include "ui/PartPicker.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/TextureMapsDock.h"
-#include "ui/UserPresets.h"
-#include "ui/ViewportWidget.h"
+#include "ui/docks/MapSlotWidget.h"
+#include "ui/docks/MaterialDock.h"
+#include "ui/docks/MaterialsDock.h"
+#include "ui/docks/TextureMapsDock.h"
+#include "ui/document/Document.h"
+#include "ui/document/MaterialTransfer.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/document/UserPresets.h"
+#include "ui/viewport/PartPicker.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include "TestAssets.h"
 #include "WindowTestSupport.h"

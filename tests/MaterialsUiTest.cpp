@@ -16,22 +16,22 @@
 //   double-sidedness (Material dock), each edit checked in the rendered frame and undone.
 // Needs a display (Xvfb via with-display.sh).
 
-#include "core/MeshPicking.h"
-#include "ui/CameraController.h"
-#include "ui/ColorButton.h"
-#include "ui/Document.h"
+#include "core/mesh/MeshPicking.h"
 #include "ui/MainWindow.h"
-#include "ui/MapSlotWidget.h"
-#include "ui/MaterialDock.h"
-#include "ui/MaterialsDock.h"
-#include "ui/PartPicker.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/TextureMapsDock.h"
-#include "ui/ValueSlider.h"
-#include "ui/ViewportDropHandler.h"
-#include "ui/ViewportWidget.h"
+#include "ui/docks/MapSlotWidget.h"
+#include "ui/docks/MaterialDock.h"
+#include "ui/docks/MaterialsDock.h"
+#include "ui/docks/TextureMapsDock.h"
+#include "ui/document/Document.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/viewport/CameraController.h"
+#include "ui/viewport/PartPicker.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportDropHandler.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/widgets/ColorButton.h"
+#include "ui/widgets/ValueSlider.h"
 
 #include "GltfWriter.h"
 #include "TestAssets.h"
@@ -245,7 +245,7 @@ private:
     // turntable stopped at 0, the default view; the history is cleared. False when it did not open.
     bool openForPixels(const QString& asset, const std::string& debugView = "base-color");
     // Opens `path` and waits until its mesh (and environment) arrived: files load off the GUI
-    // thread (ui/DocumentAssets).
+    // thread (ui/document/DocumentAssets).
     bool open(const QString& path);
     // Where `part`'s centre (the mean of its vertices, in the loaded, normalised mesh) is drawn,
     // in viewport widget coordinates.

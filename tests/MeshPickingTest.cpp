@@ -1,20 +1,20 @@
-// Picking a part of the mesh under a pixel (core/MeshPicking.h): a table of rays against small
+// Picking a part of the mesh under a pixel (core/mesh/MeshPicking.h): a table of rays against small
 // meshes of quads with known answers (a hit, misses, the nearest of two, back faces seen from
 // behind with and without culling, hidden parts, translated / rotated / scaled / mirrored model
 // matrices), and the ray through a pixel checked against the projection the renderer uses: a
 // world point projected with Camera::viewMatrix/projectionMatrix to a pixel lies on the ray
-// cameraRay gives for that pixel. And what the value picker reads at a hit (core/SurfaceProbe.h):
+// cameraRay gives for that pixel. And what the value picker reads at a hit (core/mesh/SurfaceProbe.h):
 // a table of one map at a time and all together on a textured quad (the texel the point falls in,
 // counted from the top as an image editor does; stored, decoded and filtered values; the map's
 // UV set, transform and wrap; channel pick and inversion into the material's inputs; the normal
 // map's tilt; model rotation and back faces; a released map read as absent). Needs nothing.
 
-#include "core/MeshPicking.h"
-#include "core/Camera.h"
-#include "core/Mesh.h"
-#include "core/MeshPrimitives.h"
-#include "core/SurfaceProbe.h"
-#include "core/ToneMap.h"
+#include "core/mesh/MeshPicking.h"
+#include "core/image/ToneMap.h"
+#include "core/mesh/Mesh.h"
+#include "core/mesh/MeshPrimitives.h"
+#include "core/mesh/SurfaceProbe.h"
+#include "core/project/Camera.h"
 
 #include <QtTest/QTest>
 

@@ -1,5 +1,5 @@
 // The tone-map pass with an OpenColorIO display/view (render/OcioDisplayTransform, through
-// Renderer::toneMap and ToneMapping) against OCIO's CPU processor (core/ColorManagement.h) on a
+// Renderer::toneMap and ToneMapping) against OCIO's CPU processor (core/image/ColorManagement.h) on a
 // ramp of HDR values, on a headless context: the built-in config's views, and a config written
 // here whose views are a 3D LUT and 1D LUTs (so the texture uploads are exercised: the built-in
 // views are all shader code). Also: programs are cached per view, and unknown names fail with a
@@ -7,7 +7,7 @@
 
 #include <epoxy/gl.h>
 
-#include "core/ColorManagement.h"
+#include "core/image/ColorManagement.h"
 #include "render/Framebuffer.h"
 #include "render/HeadlessGLContext.h"
 #include "render/OcioDisplayTransform.h"

@@ -1,4 +1,4 @@
-// The prefiltered levels' samples (core/Prefilter.h prefilterLobeSamples), which the GPU pass reads
+// The prefiltered levels' samples (core/ibl/Prefilter.h prefilterLobeSamples), which the GPU pass reads
 // as a table and prefilteredRadiance rotates about R: each sample is a GGX reflection above the
 // horizon with its own pdf, the samples are the Hammersley points in order with only those below
 // the horizon left out, and a lobe of roughness 1 (D = 1 / pi: l uniform over the sphere) keeps
@@ -11,9 +11,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/Brdf.h"
-#include "core/Prefilter.h"
-#include "core/Sampling.h"
+#include "core/ibl/Prefilter.h"
+#include "core/shading/Brdf.h"
+#include "core/shading/Sampling.h"
 
 using namespace facet;
 

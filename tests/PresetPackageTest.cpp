@@ -1,4 +1,4 @@
-// core/PresetPackage: a material preset with its textures as one folder, carried between two
+// core/material/PresetPackage: a material preset with its textures as one folder, carried between two
 // preset libraries: exported from one (a packed file read by three slots copied once, an image
 // embedded in a .glb written out), installed into another under a unique id, and exported again
 // from there: the material's parameters equal and every texture's bytes the original's. Refused
@@ -17,9 +17,9 @@
 #include "FullVolume.h"
 #include "TestAssets.h"
 #include "TestSupport.h"
-#include "core/GltfImport.h"
-#include "core/PresetPackage.h"
-#include "core/Project.h"
+#include "core/gltf/GltfImport.h"
+#include "core/material/PresetPackage.h"
+#include "core/project/Project.h"
 
 using namespace facet;
 using facet::test::FullVolume;

@@ -6,17 +6,17 @@
 // unsaved-changes question, recent files, autosave to a recovery file and the recovery offer,
 // Reset Layout. Needs a display (Xvfb).
 
-#include "ui/AutosaveController.h"
-#include "ui/CameraController.h"
-#include "ui/Document.h"
-#include "ui/EnvironmentDock.h"
 #include "ui/MainWindow.h"
-#include "ui/MissingFilesDialog.h"
-#include "ui/ProblemBar.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/ViewportWidget.h"
+#include "ui/docks/EnvironmentDock.h"
+#include "ui/document/AutosaveController.h"
+#include "ui/document/Document.h"
+#include "ui/document/MissingFilesDialog.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/viewport/CameraController.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/widgets/ProblemBar.h"
 
 #include "TestSupport.h"
 
@@ -305,7 +305,7 @@ void ProjectFileUiTest::libraryEnvironmentSurvivesAMove()
     QVERIFY(library->currentItem());
     QCOMPARE(library->currentItem()->data(Qt::UserRole).toString(), source);
     QCOMPARE(library->currentItem()->text().section(QLatin1Char('\n'), 0, 0), label);
-    // The environment file loads off the GUI thread (ui/DocumentAssets).
+    // The environment file loads off the GUI thread (ui/document/DocumentAssets).
     QTRY_COMPARE_WITH_TIMEOUT(m_window->sceneController()->pendingAssetLoads(), 0, 30000);
     QCOMPARE(m_window->sceneController()->environmentName(), QFileInfo(source).fileName());
     QVERIFY(m_window->sceneController()->environmentProblem().isEmpty());

@@ -10,7 +10,7 @@
 #include <QTemporaryDir>
 #include <QtTest/QTest>
 
-#include "core/Project.h"
+#include "core/project/Project.h"
 
 using namespace facet;
 

@@ -17,7 +17,7 @@
 #include <QtTest/QTest>
 
 #include "TestSupport.h"
-#include "core/Project.h"
+#include "core/project/Project.h"
 
 #include <sys/stat.h>
 

@@ -1,8 +1,8 @@
 // IblMethod::Reference on the GPU (ibl_reference.glsl, FrameRenderer::renderConverged) against the
-// CPU ground truth (core/GroundTruth, `facet render --spp`): the same rendering equation, so the
+// CPU ground truth (core/shading/GroundTruth, `facet render --spp`): the same rendering equation, so the
 // two must agree within their noise, for every BRDF composition, under a rotated environment and
 // a CC0 map, with lights, in a furnace, and under extreme radiance. docs/architecture.md's reference view,
-// relative RMSE over the interior sphere pixels (core/ImageMetrics).
+// relative RMSE over the interior sphere pixels (core/image/ImageMetrics).
 //
 // The bound of an agreement row is statistical: rmse(GPU, CPU) < 3 sqrt(nG^2 + nC^2) + 2e-3, where
 // nG is the GPU's own noise estimate (FrameAccumulator's two half-buffers) and nC the CPU's,
@@ -12,10 +12,10 @@
 // off) the smooth metal row measured 2.0% against a bound of 1.7%; with it, 0.29%. A broken term
 // (a lobe, a weight, a pdf) shows as a bias far above the noise.
 
-#include "core/GroundTruth.h"
-#include "core/ImageMetrics.h"
-#include "core/Project.h"
-#include "core/ReferenceView.h"
+#include "core/image/ImageMetrics.h"
+#include "core/project/Project.h"
+#include "core/shading/GroundTruth.h"
+#include "core/shading/ReferenceView.h"
 
 #include "IblMethodCase.h"
 #include "ReferenceViewRenderer.h"

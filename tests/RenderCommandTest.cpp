@@ -16,13 +16,13 @@
 
 #include "GltfWriter.h"
 #include "TestSupport.h"
-#include "core/GroundTruth.h"
-#include "core/ImageMetrics.h"
-#include "core/MaterialBrdf.h"
-#include "core/MaterialPresets.h"
-#include "core/Project.h"
-#include "core/ReferenceView.h"
-#include "core/ToneMap.h"
+#include "core/image/ImageMetrics.h"
+#include "core/image/ToneMap.h"
+#include "core/material/MaterialPresets.h"
+#include "core/project/Project.h"
+#include "core/shading/GroundTruth.h"
+#include "core/shading/MaterialBrdf.h"
+#include "core/shading/ReferenceView.h"
 
 #include <OpenImageIO/imageio.h>
 

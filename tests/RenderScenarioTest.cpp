@@ -17,8 +17,8 @@
 #include <cmath>
 
 #include "TestSupport.h"
-#include "core/Image.h"
-#include "core/Project.h"
+#include "core/image/Image.h"
+#include "core/project/Project.h"
 
 using namespace facet;
 

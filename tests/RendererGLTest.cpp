@@ -8,14 +8,14 @@
 
 #include <epoxy/gl.h>
 
-#include "core/Brdf.h"
-#include "core/DfgTable.h"
-#include "core/MaterialBrdf.h"
-#include "core/MeshPrimitives.h"
-#include "core/Punctual.h"
-#include "core/ReferenceView.h"
-#include "core/SplitSum.h"
-#include "core/ToneMap.h"
+#include "core/image/ToneMap.h"
+#include "core/mesh/MeshPrimitives.h"
+#include "core/shading/Brdf.h"
+#include "core/shading/DfgTable.h"
+#include "core/shading/MaterialBrdf.h"
+#include "core/shading/Punctual.h"
+#include "core/shading/ReferenceView.h"
+#include "core/shading/SplitSum.h"
 #include "render/DfgLut.h"
 #include "render/Framebuffer.h"
 #include "render/HeadlessGLContext.h"

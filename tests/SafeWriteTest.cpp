@@ -2,7 +2,7 @@
 // lost"): every writer of Facet, tried on a small tmpfs filled to the last byte. Each row: the old
 // file is byte-identical afterwards, no temporary is left behind, the message names the file and
 // says "No space left on device"; then, with room again, the same write succeeds (so a row cannot
-// pass because the writer always fails). Also the primitive itself, core/AtomicFile.h, on an
+// pass because the writer always fails). Also the primitive itself, core/support/AtomicFile.h, on an
 // ordinary folder: what it replaces, keeps and refuses.
 //
 // The volumes live in a mount namespace of this process (tests/support/FullVolume.h); where none
@@ -22,11 +22,11 @@
 
 #include "FullVolume.h"
 #include "TestSupport.h"
-#include "core/AtomicFile.h"
-#include "core/IblDiskCache.h"
-#include "core/Image.h"
-#include "core/MaterialPresets.h"
-#include "core/Project.h"
+#include "core/ibl/IblDiskCache.h"
+#include "core/image/Image.h"
+#include "core/material/MaterialPresets.h"
+#include "core/project/Project.h"
+#include "core/support/AtomicFile.h"
 
 using namespace facet;
 using facet::test::fileBytes;
@@ -39,7 +39,7 @@ enum class Writer {
     Primitive, // writeFileAtomically itself
     ProjectSmall, // Project::save, under QFileDevice's 16 KiB buffer (the case QSaveFile lost)
     ProjectLarge, // Project::save, over it
-    Preset, // savePreset (ui/UserPresets)
+    Preset, // savePreset (ui/document/UserPresets)
     RecoveryFile, // json::writeObjectFile, as Document::writeRecoveryFile (the autosave) uses it
     IblCache, // IblDiskCache::store
     Image, // Image::save, by the file name's extension
@@ -329,7 +329,7 @@ void SafeWriteTest::replacingASetIsAllOrNothing_data()
 
 // Issue 29, "Data lost, mixed set": `export --force` and `bake --force` over an earlier set on a
 // disk that fills midway exited 1 having replaced some files and not others. The new set now goes
-// to a staging folder beside the old one and is swapped in whole (core/FileSet.h): on a disk with
+// to a staging folder beside the old one and is swapped in whole (core/support/FileSet.h): on a disk with
 // room for about half of the new set, every old file keeps its bytes and nothing else is left;
 // with room, the whole new set replaces the old one.
 void SafeWriteTest::replacingASetIsAllOrNothing()

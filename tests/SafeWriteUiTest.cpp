@@ -5,13 +5,13 @@
 // succeeds. Needs a display (Xvfb) and a small full tmpfs (tests/support/FullVolume.h; without
 // one the tests skip locally and fail under CI=true).
 
-#include "ui/AutosaveController.h"
-#include "ui/Document.h"
 #include "ui/MainWindow.h"
-#include "ui/MaterialDock.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/UserPresets.h"
+#include "ui/docks/MaterialDock.h"
+#include "ui/document/AutosaveController.h"
+#include "ui/document/Document.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/document/UserPresets.h"
+#include "ui/viewport/SurfaceFormat.h"
 
 #include "FullVolume.h"
 #include "TestSupport.h"
@@ -129,7 +129,7 @@ void SafeWriteUiTest::saveOnFullDiskIsReportedAndStaysModified()
     QCOMPARE(errors.count(), 1);
     const QString message = m_window->statusMessage();
     QVERIFY2(!message.startsWith(QStringLiteral("Saved")), qPrintable(message));
-    // The window names the file by its name (ui/WindowMessages); the precise message keeps the path.
+    // The window names the file by its name (ui/widgets/WindowMessages); the precise message keeps the path.
     QVERIFY2(message.contains(QFileInfo(path).fileName()) && message.contains(kNoSpace), qPrintable(message));
     QVERIFY2(files->lastError().contains(path), qPrintable(files->lastError()));
     QVERIFY(files->lastError() != message); // the precise message (function, full path) is kept apart

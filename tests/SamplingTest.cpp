@@ -1,4 +1,4 @@
-// Samplers of core/Sampling.h and core/EnvironmentSampler.h: every pdf integrates to one and
+// Samplers of core/shading/Sampling.h and core/ibl/EnvironmentSampler.h: every pdf integrates to one and
 // matches the histogram of the samples it claims to describe (a chi-square-style test, after
 // Mitsuba's and PBRT's sampler tests).
 
@@ -13,9 +13,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/EnvironmentSampler.h"
-#include "core/EnvironmentSamplingTables.h"
-#include "core/Sampling.h"
+#include "core/ibl/EnvironmentSampler.h"
+#include "core/ibl/EnvironmentSamplingTables.h"
+#include "core/shading/Sampling.h"
 
 using namespace facet;
 using namespace facet::sampling;

@@ -4,7 +4,7 @@
 // as shown (PNG; an EXR of it refused with why); a format it does not write and a full disk
 // refused with the file named, nothing left behind. A still at a chosen size (larger than the
 // view, odd, tall), with a transparent background or not, and one too large refused; a turntable
-// (File > Save Turntable…, ui/ImageSaver) as frames of each subject and format, stopped when asked,
+// (File > Save Turntable…, ui/dialogs/ImageSaver) as frames of each subject and format, stopped when asked,
 // as a video (with ffmpeg; without it the message), and the dialog remembering its choices.
 
 #include <QAction>
@@ -25,16 +25,16 @@
 
 #include "FullVolume.h"
 #include "TestSupport.h"
-#include "core/Image.h"
+#include "core/image/Image.h"
 #include "render/Turntable.h"
-#include "ui/CompareView.h"
-#include "ui/Document.h"
-#include "ui/ImageSaver.h"
 #include "ui/MainWindow.h"
-#include "ui/SaveImageDialog.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/ViewportWidget.h"
+#include "ui/compare/CompareView.h"
+#include "ui/dialogs/ImageSaver.h"
+#include "ui/dialogs/SaveImageDialog.h"
+#include "ui/document/Document.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
 
 using namespace facet;
 using facet::test::FullVolume;

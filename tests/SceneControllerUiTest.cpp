@@ -1,20 +1,20 @@
-// SceneController (ui/SceneController.h) redoes only what a change names (ui/DocumentChanges.h):
-// a new file in one slot of one material decodes that file and nothing else, even when the other
-// materials' files changed on disk unnoticed (they are not even looked at); a change that names no
-// slot (files changed on disk) looks at every file; and a frame is asked for only when the frame
+// SceneController (ui/viewport/SceneController.h) redoes only what a change names
+// (ui/document/DocumentChanges.h): a new file in one slot of one material decodes that file and nothing else,
+// even when the other materials' files changed on disk unnoticed (they are not even looked at); a change that
+// names no slot (files changed on disk) looks at every file; and a frame is asked for only when the frame
 // shows what changed (not a name, not a material no visible part shows, not a light that stays
-// off, not which material the docks edit). Decodes are counted by core/MapImageCache. Environment
-// and mesh files load off the GUI thread (ui/DocumentAssets): the previous ones stay drawn until
+// off, not which material the docks edit). Decodes are counted by core/image/MapImageCache. Environment
+// and mesh files load off the GUI thread (ui/document/DocumentAssets): the previous ones stay drawn until
 // they arrive, and one frame follows the arrival.
 // No window: a Document and a SceneController. It links facet_ui, hence "Ui" (runs under
 // with-display.sh but opens nothing).
 
 #include "TestSupport.h"
-#include "core/MapImageCache.h"
-#include "core/Project.h"
-#include "ui/Document.h"
-#include "ui/DocumentAssets.h"
-#include "ui/SceneController.h"
+#include "core/image/MapImageCache.h"
+#include "core/project/Project.h"
+#include "ui/document/Document.h"
+#include "ui/document/DocumentAssets.h"
+#include "ui/viewport/SceneController.h"
 
 #include <QDateTime>
 #include <QFile>

@@ -13,9 +13,9 @@
 #include <QtTest/QTest>
 
 #include "TestSupport.h"
-#include "core/Image.h"
-#include "core/Project.h"
-#include "core/ReferenceView.h"
+#include "core/image/Image.h"
+#include "core/project/Project.h"
+#include "core/shading/ReferenceView.h"
 
 using namespace facet;
 

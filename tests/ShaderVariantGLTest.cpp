@@ -4,8 +4,8 @@
 // MaterialMapsGLTest.
 #include <epoxy/gl.h>
 
-#include "core/MapImage.h"
-#include "core/Material.h"
+#include "core/image/MapImage.h"
+#include "core/material/Material.h"
 #include "render/HeadlessGLContext.h"
 #include "render/ShaderVariant.h"
 
@@ -70,7 +70,7 @@ void ShaderVariantGLTest::variantDefines()
              "DISTRIBUTION_BECKMANN", "VISIBILITY_SCHLICK", "IRRADIANCE_SH"})
         QVERIFY2(!has(absent), absent);
     QVERIFY(has("DEBUG_VIEW 0"));
-    // Every debug view's id, named from core/DebugView's table.
+    // Every debug view's id, named from core/shading/DebugView's table.
     QCOMPARE(debugViewDefine(DebugView::BaseColor), std::string("DEBUG_BASE_COLOR"));
     QCOMPARE(debugViewDefine(DebugView::TexelDensity), std::string("DEBUG_TEXEL_DENSITY"));
     for (int view = 0; view < kDebugViewCount; ++view)

@@ -8,9 +8,9 @@
 // - nothing changed at or above level 1 (roughness 0.25: the same image to the bit);
 // - a white furnace at 1 within 0.5% (issue 10's bound for every method).
 
-#include "core/ImageMetrics.h"
-#include "core/MapImage.h"
-#include "core/Project.h"
+#include "core/image/ImageMetrics.h"
+#include "core/image/MapImage.h"
+#include "core/project/Project.h"
 #include "render/Renderer.h"
 #include "render/ShaderVariant.h"
 

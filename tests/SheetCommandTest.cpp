@@ -5,10 +5,10 @@
 // environment; the EXR header holds the layout; labels are drawn in margins of a PNG; bad values
 // name their flag, and a missing environment or material is named and nothing is written.
 
-#include "core/Image.h"
-#include "core/ImageMetrics.h"
-#include "core/Light.h"
-#include "core/Project.h"
+#include "core/image/Image.h"
+#include "core/image/ImageMetrics.h"
+#include "core/project/Light.h"
+#include "core/project/Project.h"
 
 #include "TestSupport.h"
 
@@ -145,6 +145,33 @@ private Q_SLOTS:
         QCOMPARE(exrAttribute(out, "facet:cellWidth"), std::string("96"));
         QCOMPARE(exrAttribute(out, "facet:rowLabels"),
             std::string("roughness 0.2\nroughness 0.35\nroughness 0.5\nroughness 0.65\nroughness 0.8"));
+    }
+
+    // The material flags (the property registry's, as `facet render` has them) set every row's
+    // material: a dark base colour darkens both preset rows, a roughness of 1 spreads gold's highlight.
+    void materialFlagsSetEveryRow()
+    {
+        const auto render = [&](const QString& name, const QStringList& flags) -> std::optional<Image> {
+            const QString out = path(name);
+            const Result r = runFacet(
+                QStringList {QStringLiteral("sheet"), QStringLiteral("--materials"),
+                    QStringLiteral("gold,copper"), QStringLiteral("--cell"), QStringLiteral("48x48"),
+                    QStringLiteral("--background"), QStringLiteral("color:0,0,0"), QStringLiteral("-o"), out}
+                + flags);
+            if (r.exitCode != 0) {
+                qWarning("%s", qPrintable(describe(r)));
+                return std::nullopt;
+            }
+            return load(out);
+        };
+        const auto plain = render(QStringLiteral("plain.exr"), {});
+        const auto dark = render(QStringLiteral("dark.exr"), strings({"--base-color", "0.1,0.1,0.1"}));
+        QVERIFY(plain && dark);
+        for (int row = 0; row < 2; ++row) {
+            const double ratio = meanLuminance(cellOf(*dark, row, 0, 48, 48))
+                / meanLuminance(cellOf(*plain, row, 0, 48, 48));
+            QVERIFY2(ratio < 0.5, qPrintable(QStringLiteral("row %1: %2").arg(row).arg(ratio)));
+        }
     }
 
     void axesReachTheirCells_data()
@@ -324,6 +351,10 @@ private Q_SLOTS:
                                                  << QStringLiteral("--wedge: ");
         QTest::newRow("wedge value out of range") << strings({"--wedge", "roughness=0,2", "-o", "{dir}/x.png"}) << 2
                                                   << QStringLiteral("--wedge: ");
+        QTest::newRow("material flag out of range") << strings({"--metallic", "2", "-o", "{dir}/x.png"}) << 2
+                                                    << QStringLiteral("--metallic: 2 is outside [0, 1]");
+        QTest::newRow("material colour flag") << strings({"--base-color", "1,1", "-o", "{dir}/x.png"}) << 2
+                                              << QStringLiteral("--base-color: '1,1' is not r,g,b");
         QTest::newRow("wedge2 alone") << strings({"--wedge2", "metallic=0,1", "-o", "{dir}/x.png"}) << 2
                                       << QStringLiteral("--wedge2 needs --wedge");
         // One --envs environment beside --wedge2 is the sheet's (the README's example); two are columns.

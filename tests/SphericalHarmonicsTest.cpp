@@ -1,5 +1,5 @@
-// SH9 irradiance (core/SphericalHarmonics.h) and the brute-force irradiance integral
-// (core/Irradiance.h): the basis, the quadrature, closed forms, SH against brute force on
+// SH9 irradiance (core/ibl/SphericalHarmonics.h) and the brute-force irradiance integral
+// (core/ibl/Irradiance.h): the basis, the quadrature, closed forms, SH against brute force on
 // synthetic and real environments, brute force against an independent Monte Carlo estimate,
 // rotation, intensity and extreme values. docs/irradiance.md quotes the numbers printed here.
 
@@ -17,11 +17,11 @@
 #include <glm/geometric.hpp>
 
 #include "TestSupport.h"
-#include "core/Environment.h"
-#include "core/EnvironmentSampler.h"
-#include "core/Irradiance.h"
-#include "core/Parallel.h"
-#include "core/SphericalHarmonics.h"
+#include "core/ibl/Environment.h"
+#include "core/ibl/EnvironmentSampler.h"
+#include "core/ibl/Irradiance.h"
+#include "core/ibl/SphericalHarmonics.h"
+#include "core/support/Parallel.h"
 
 using namespace facet;
 

@@ -1,7 +1,7 @@
-// The split sum's CPU twin (core/SplitSum.h) in a white furnace: with radiance 1 all around, the
+// The split sum's CPU twin (core/shading/SplitSum.h) in a white furnace: with radiance 1 all around, the
 // split sum is no approximation (the prefiltered radiance is 1 and the irradiance pi whatever the
 // lobe), so each composition's split-sum weights must give the BRDF's own directional albedo
-// (core/MaterialBrdf directionalAlbedo, the ground truth's integral). A weight that stands in for
+// (core/shading/MaterialBrdf directionalAlbedo, the ground truth's integral). A weight that stands in for
 // the composition instead of integrating it (before issue 10: fresnel_mix's diffuse weight
 // 1 - (F0 scale + bias), LearnOpenGL's 1 - F_SchlickRoughness) shows here as a gap of up to 0.8 at
 // grazing view. One row per composition x coupling x compensation x material.
@@ -11,10 +11,10 @@
 
 #include <QtTest/QTest>
 
-#include "core/Brdf.h"
-#include "core/DfgTable.h"
-#include "core/MaterialBrdf.h"
-#include "core/SplitSum.h"
+#include "core/shading/Brdf.h"
+#include "core/shading/DfgTable.h"
+#include "core/shading/MaterialBrdf.h"
+#include "core/shading/SplitSum.h"
 
 using namespace facet;
 

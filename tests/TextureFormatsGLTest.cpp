@@ -2,7 +2,7 @@
 // RG8 as grey + alpha and as red + green, RGB8, RGBA8, sRGB 8-bit with and without alpha and
 // expanded from grey, 16-bit, 16-bit read as sRGB, half float, half read as sRGB), whole (get)
 // and in slices (request + uploadSlice), and is sampled as the CPU twin reads it
-// (core/MaterialInputs texelValue: swizzle, sRGB decode) at level 0, and as the 2 x 2 average of
+// (core/shading/MaterialInputs texelValue: swizzle, sRGB decode) at level 0, and as the 2 x 2 average of
 // those at level 1 (the mipmaps made band by band, render/MipChain). Also: a texture uploading in
 // slices is not ready until its last band and get() never returns it half done; anisotropy is set
 // on every texture and clamped; a map wider than GL_MAX_TEXTURE_SIZE is refused with its name;
@@ -10,8 +10,8 @@
 
 #include <epoxy/gl.h>
 
-#include "core/MapImage.h"
-#include "core/MaterialInputs.h"
+#include "core/image/MapImage.h"
+#include "core/shading/MaterialInputs.h"
 #include "render/Framebuffer.h"
 #include "render/GLInfo.h"
 #include "render/HeadlessGLContext.h"

@@ -1,4 +1,4 @@
-// core/ExportTemplate and core/TextureSetExport: a material written as engine texture sets.
+// core/export/ExportTemplate and core/export/TextureSetExport: a material written as engine texture sets.
 // Each built-in template's files are read back with OpenImageIO and every channel of every file
 // is held to the engine's documented layout (a table written from the engines' docs, not from
 // resources/export/*.json), on a test material whose maps hold a distinct value per channel, once
@@ -24,11 +24,11 @@
 
 #include "TestAssets.h"
 #include "TestSupport.h"
-#include "core/ExportTemplate.h"
-#include "core/FileSet.h"
-#include "core/MapImage.h"
-#include "core/TextureSetExport.h"
-#include "core/ToneMap.h"
+#include "core/export/ExportTemplate.h"
+#include "core/export/TextureSetExport.h"
+#include "core/image/MapImage.h"
+#include "core/image/ToneMap.h"
+#include "core/support/FileSet.h"
 
 using namespace facet;
 

@@ -1,17 +1,17 @@
 // Texture sets in the main window under Xvfb, driven as a user does: every way of putting a file
 // in a slot (the slot's Open… dialog, a drop on the slot, several files or a folder dropped on the
 // dock, the Assign Folder… dialog) reads the channel the file's packing convention gives that slot
-// (core/MapNaming.h; its naming table is MapNamingTest's); assigning a set replaces the whole set
+// (core/material/MapNaming.h; its naming table is MapNamingTest's); assigning a set replaces the whole set
 // in one undo step and says what it cleared; the dock's note goes when another project replaces
 // the document (New, Open, recovery). Needs a display (Xvfb via with-display.sh).
 
-#include "ui/Document.h"
 #include "ui/MainWindow.h"
-#include "ui/MapSlotWidget.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/TextureMapsDock.h"
-#include "ui/ViewportWidget.h"
+#include "ui/docks/MapSlotWidget.h"
+#include "ui/docks/TextureMapsDock.h"
+#include "ui/document/Document.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include "TestSupport.h"
 

@@ -1,8 +1,8 @@
-// The CPU twins of the tone mappers and display encodings (core/ToneMap.h): known values from
+// The CPU twins of the tone mappers and display encodings (core/image/ToneMap.h): known values from
 // their sources, 0 -> 0, monotonicity along a grey ramp, limits, finiteness over 1e-6..1e6.
 // tests/RendererGLTest.cpp holds the GPU pass (tonemap.frag) to these functions.
 
-#include "core/ToneMap.h"
+#include "core/image/ToneMap.h"
 
 #include <QtTest/QTest>
 

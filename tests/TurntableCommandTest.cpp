@@ -1,4 +1,4 @@
-// Turntables (render/Turntable.h, core/VideoEncoder.h, `facet render --turntable N`): where each
+// Turntables (render/Turntable.h, core/image/VideoEncoder.h, `facet render --turntable N`): where each
 // frame goes, what a turn does to the scene, the frames `facet render` writes for each subject
 // (the object turning under a fixed background, the environment turning behind a fixed object),
 // a transparent background kept, a video by ffmpeg (when installed), and what happens without
@@ -15,8 +15,8 @@
 #include <glm/geometric.hpp>
 
 #include "TestSupport.h"
-#include "core/Image.h"
-#include "core/VideoEncoder.h"
+#include "core/image/Image.h"
+#include "core/image/VideoEncoder.h"
 #include "render/Turntable.h"
 
 using namespace facet;

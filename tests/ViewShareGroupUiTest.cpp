@@ -1,11 +1,11 @@
-// ui/ViewShareGroup: the views of the window share one IBL precompute and one texture cache when
+// ui/viewport/ViewShareGroup: the views of the window share one IBL precompute and one texture cache when
 // their contexts share (Facet sets Qt::AA_ShareOpenGLContexts, so two windows' views share too);
 // the resources live while a view holds them and are made anew once every view has gone; a
 // context of another share group gets resources of its own (its GL names mean nothing there).
 
-#include "ui/SurfaceFormat.h"
-#include "ui/ViewShareGroup.h"
-#include "ui/ViewportWidget.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewShareGroup.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include <QOffscreenSurface>
 #include <QOpenGLContext>

@@ -6,17 +6,17 @@
 // first view of a project, F, Home) shows the whole object in a tall and in a wide viewport,
 // filling the smaller dimension. Needs a display (Xvfb via with-display.sh).
 
-#include "core/MaterialPresets.h"
-#include "ui/CameraController.h"
-#include "ui/Document.h"
-#include "ui/DocumentCommands.h"
+#include "core/material/MaterialPresets.h"
 #include "ui/MainWindow.h"
-#include "ui/MissingFilesDialog.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/ViewportRenderer.h"
-#include "ui/ViewportWidget.h"
+#include "ui/document/Document.h"
+#include "ui/document/DocumentCommands.h"
+#include "ui/document/MissingFilesDialog.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/viewport/CameraController.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportRenderer.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include "TestSupport.h"
 
@@ -268,7 +268,7 @@ void ViewportUiTest::brdfSwitchFetchesItsOwnTable()
 
 void ViewportUiTest::environmentSwitchDrawsOnWhileTheWorkerPrepares()
 {
-    // A new environment and quality: the lighting worker makes the set (ui/LightingWorker) while
+    // A new environment and quality: the lighting worker makes the set (ui/viewport/LightingWorker) while
     // the view draws on with the lighting it had; those frames are not announced as rendered.
     // The frame that shows the new set is, after "ready". Then back to the set in memory: at once.
     QVERIFY(waitForFullFrame(m_viewport));
@@ -710,7 +710,7 @@ void ViewportUiTest::unusableEnvironmentIsNamedNeverReady()
     EnvironmentSettings environment = document->project().environment;
     environment.source = source.toStdString();
     document->setEnvironment(environment, QStringLiteral("Environment"));
-    // The file is tried off the GUI thread (ui/DocumentAssets); until it fails the previous
+    // The file is tried off the GUI thread (ui/document/DocumentAssets); until it fails the previous
     // environment stays lit.
     QTRY_COMPARE_WITH_TIMEOUT(scene->pendingAssetLoads(), 0, 30000);
     waitForFrame(m_viewport, 3000); // nothing to relight: a frame may or may not follow

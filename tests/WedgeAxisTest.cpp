@@ -1,4 +1,4 @@
-// Wedge axes (core/WedgeAxis.h): every parameter parsed from the command line's form and applied
+// Wedge axes (core/project/WedgeAxis.h): every parameter parsed from the command line's form and applied
 // to a project, every parse error's message, the range table held to Material's and
 // ViewSettings's validation, labels, the text round trip, validation and the no-effect notes.
 
@@ -8,8 +8,8 @@
 #include <QtTest/QTest>
 
 #include "TestSupport.h"
-#include "core/Project.h"
-#include "core/WedgeAxis.h"
+#include "core/project/Project.h"
+#include "core/project/WedgeAxis.h"
 
 using namespace facet;
 

@@ -1,9 +1,9 @@
 // core's precise messages (command line, logs) and the window's wording of them
-// (ui/WindowMessages.h): one row per phrasing core uses, plus messages naming no file, a file name
+// (ui/widgets/WindowMessages.h): one row per phrasing core uses, plus messages naming no file, a file name
 // holding a '%', several lines, and text already in the window's words. Pure strings: the
 // display is not used, but the function lives in facet_ui.
 
-#include "ui/WindowMessages.h"
+#include "ui/widgets/WindowMessages.h"
 
 #include <QtTest/QTest>
 

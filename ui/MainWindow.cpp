@@ -1,39 +1,39 @@
 #include "ui/MainWindow.h"
 
-#include "core/AtomicFile.h"
-#include "core/MaterialPresets.h"
-#include "ui/AutosaveController.h"
-#include "ui/CameraController.h"
-#include "ui/CompareActions.h"
-#include "ui/CompareController.h"
-#include "ui/CompareView.h"
-#include "ui/DockScrollArea.h"
-#include "ui/Document.h"
-#include "ui/DocumentAssets.h"
-#include "ui/EnvironmentDock.h"
-#include "ui/ExportDialog.h"
-#include "ui/FreedMemoryTimer.h"
-#include "ui/ImageSaver.h"
-#include "ui/LightsDock.h"
-#include "ui/MapLoadStatus.h"
-#include "ui/MaterialDock.h"
-#include "ui/MaterialTransfer.h"
-#include "ui/MaterialsDock.h"
-#include "ui/PartPicker.h"
-#include "ui/PreferencesDialog.h"
-#include "ui/ProblemBar.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SceneController.h"
-#include "ui/TextureMapsDock.h"
-#include "ui/UndoShortcutRouter.h"
-#include "ui/ValuePicker.h"
-#include "ui/ValuesDock.h"
-#include "ui/ViewDock.h"
-#include "ui/ViewShareGroup.h"
-#include "ui/ViewStatus.h"
-#include "ui/ViewportDropHandler.h"
-#include "ui/ViewportWidget.h"
-#include "ui/WindowMessages.h"
+#include "core/material/MaterialPresets.h"
+#include "core/support/AtomicFile.h"
+#include "ui/compare/CompareActions.h"
+#include "ui/compare/CompareController.h"
+#include "ui/compare/CompareView.h"
+#include "ui/dialogs/ExportDialog.h"
+#include "ui/dialogs/ImageSaver.h"
+#include "ui/dialogs/PreferencesDialog.h"
+#include "ui/docks/DockScrollArea.h"
+#include "ui/docks/EnvironmentDock.h"
+#include "ui/docks/LightsDock.h"
+#include "ui/docks/MaterialDock.h"
+#include "ui/docks/MaterialsDock.h"
+#include "ui/docks/TextureMapsDock.h"
+#include "ui/docks/ValuesDock.h"
+#include "ui/docks/ViewDock.h"
+#include "ui/document/AutosaveController.h"
+#include "ui/document/Document.h"
+#include "ui/document/DocumentAssets.h"
+#include "ui/document/MaterialTransfer.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/document/UndoShortcutRouter.h"
+#include "ui/viewport/CameraController.h"
+#include "ui/viewport/MapLoadStatus.h"
+#include "ui/viewport/PartPicker.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/ValuePicker.h"
+#include "ui/viewport/ViewShareGroup.h"
+#include "ui/viewport/ViewStatus.h"
+#include "ui/viewport/ViewportDropHandler.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/widgets/FreedMemoryTimer.h"
+#include "ui/widgets/ProblemBar.h"
+#include "ui/widgets/WindowMessages.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -447,7 +447,7 @@ void MainWindow::addDock(QDockWidget* dock, Qt::DockWidgetArea area)
         QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable | QDockWidget::DockWidgetClosable);
     dock->setParent(this);
     // Content taller than the dock scrolls, and content never sets the dock's width
-    // (ui/DockScrollArea.h); a dock whose widget scrolls already (Texture Maps) keeps it.
+    // (ui/docks/DockScrollArea.h); a dock whose widget scrolls already (Texture Maps) keeps it.
     if (dock->widget() && !qobject_cast<QAbstractScrollArea*>(dock->widget())) {
         QWidget* content = dock->widget();
         dock->setWidget(nullptr); // hides `content`; the scroll area shows it again
@@ -461,7 +461,7 @@ void MainWindow::addDock(QDockWidget* dock, Qt::DockWidgetArea area)
 
 void MainWindow::createProblemBar()
 {
-    // A row above the view, shown only while there are problems (ui/ProblemBar.h). A toolbar row
+    // A row above the view, shown only while there are problems (ui/widgets/ProblemBar.h). A toolbar row
     // so that the central area (the views' stack) stays as it is; it cannot be moved or hidden
     // from the context menu, and a saved layout does not decide whether it shows.
     m_problemBar = new ProblemBar(this);

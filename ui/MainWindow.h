@@ -3,9 +3,9 @@
 // SceneController and the central ViewportWidget (the view), the CameraController (input), the
 // PartPicker (a click on a part chooses its material) and the ViewportDropHandler (assets dropped
 // on the view), the ProjectFileController (File menu) and the AutosaveController (recovery); menus, the
-// status bar (what it says about the views: ui/ViewStatus), the dock layout and its QSettings. Panels are
-// QDockWidgets made by their own controllers and plugged in with addDock(); they edit the document() and
-// never the renderer.
+// status bar (what it says about the views: ui/viewport/ViewStatus), the dock layout and its QSettings.
+// Panels are QDockWidgets made by their own controllers and plugged in with addDock(); they edit the
+// document() and never the renderer.
 
 #include <QByteArray>
 #include <QMainWindow>
@@ -63,11 +63,11 @@ public:
     MaterialDock* materialDock() const { return m_materialDock; }
     MaterialsDock* materialsDock() const { return m_materialsDock; }
     PartPicker* partPicker() const { return m_picker; }
-    // View > Value Picker and the Values dock it fills (ui/ValuePicker.h).
+    // View > Value Picker and the Values dock it fills (ui/viewport/ValuePicker.h).
     ValuePicker* valuePicker() const { return m_valuePicker; }
     ValuesDock* valuesDock() const { return m_valuesDock; }
     ViewportDropHandler* viewportDrops() const { return m_drops; }
-    // Materials and presets dropped on a part of the mesh (ui/MaterialTransfer.h).
+    // Materials and presets dropped on a part of the mesh (ui/document/MaterialTransfer.h).
     MaterialDropHandler* materialDrops() const { return m_materialDrops; }
     EnvironmentDock* environmentDock() const { return m_environmentDock; }
     LightsDock* lightsDock() const { return m_lightsDock; }
@@ -75,7 +75,7 @@ public:
     CompareView* compareView() const { return m_compareView; }
     CompareController* compareController() const { return m_compareController; }
     CompareActions* compareActions() const { return m_compareActions; }
-    // Problems that stay in view until dismissed (ui/ProblemBar.h).
+    // Problems that stay in view until dismissed (ui/widgets/ProblemBar.h).
     ProblemBar* problemBar() const { return m_problemBar; }
 
     // Adds a panel: docked in `area`, movable, floatable, closable, tabbable; its toggle goes
@@ -97,23 +97,23 @@ public:
     // file, newest first); main() calls it once the window is shown.
     void offerRecovery();
     // File > Export…: the document's materials as a glTF asset or an engine's texture set
-    // (ui/ExportDialog); what it wrote goes to the status bar.
+    // (ui/dialogs/ExportDialog); what it wrote goes to the status bar.
     void exportMaterials();
     // Edit > Copy Material / Paste Material (Ctrl+Shift+C / V): the current material's factors,
     // maps and options through the clipboard onto the current material, whose name stays; one undo
     // step. The status bar says what happened, or why nothing did.
     void copyMaterial();
     void pasteMaterial();
-    // File > Save Image… (F12, ui/ImageSaver): the single view as a PNG (what it shows: its
+    // File > Save Image… (F12, ui/dialogs/ImageSaver): the single view as a PNG (what it shows: its
     // display transform) or a linear EXR (scene radiance), rendered again offscreen at the chosen
-    // size (ui/SaveImageDialog: the view's own by default) and converged to the project's IBL
+    // size (ui/dialogs/SaveImageDialog: the view's own by default) and converged to the project's IBL
     // samples; in a Compare mode the grid as shown, PNG only. saveImageTo() is the part after the
     // dialogs (`size` empty: the view's own): false with *error (also in the status bar).
     // File > Save Turntable… (Shift+F12) is imageSaver()'s.
     void saveImage();
     bool saveImageTo(const QString& path, QString* error, QSize size = {}, bool transparent = false);
     ImageSaver* imageSaver() const { return m_imageSaver; }
-    // Edit > Preferences…: this computer's settings (ui/PreferencesDialog: the cache budget).
+    // Edit > Preferences…: this computer's settings (ui/dialogs/PreferencesDialog: the cache budget).
     void showPreferences();
 
 protected:

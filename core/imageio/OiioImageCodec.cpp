@@ -1,6 +1,6 @@
 // The image codec over OpenImageIO: built as libfacet_imageio.so, the one place OpenImageIO is
-// linked, and loaded by core/ImageCodec.cpp the first time an image is read or written. It
-// translates between core/ImageCodec.h's types and OpenImageIO's and decides nothing else.
+// linked, and loaded by core/image/ImageCodec.cpp the first time an image is read or written. It
+// translates between core/image/ImageCodec.h's types and OpenImageIO's and decides nothing else.
 
 #include <algorithm>
 #include <cstring>
@@ -15,7 +15,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 #include <OpenImageIO/imageio.h>
 
-#include "core/ImageCodec.h"
+#include "core/image/ImageCodec.h"
 
 namespace facet {
 namespace {
@@ -52,7 +52,7 @@ OIIO::TypeDesc typeOf(CodecSample sample)
 
 } // namespace
 
-// The opaque decoder of core/ImageCodec.h.
+// The opaque decoder of core/image/ImageCodec.h.
 struct ImageDecoder {
     std::unique_ptr<OIIO::Filesystem::IOMemReader> memory; // what `input` reads an embedded image from
     std::unique_ptr<OIIO::ImageInput> input;

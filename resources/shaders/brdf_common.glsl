@@ -1,4 +1,4 @@
-// Roughness remapping and guards shared by the brdf_*.glsl chunks; twins of core/Brdf.h.
+// Roughness remapping and guards shared by the brdf_*.glsl chunks; twins of core/shading/Brdf.h.
 #include "common_math.glsl"
 
 // Smallest perceptual roughness (Filament's MIN_PERCEPTUAL_ROUGHNESS); alpha = r^2 (glTF 2.0).

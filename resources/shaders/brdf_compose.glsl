@@ -1,6 +1,6 @@
 // The material BRDF f(l, v): the brdf_*.glsl terms composed as the variant says. Twin of
-// core/MaterialBrdf.cpp's evaluate(), lobe by lobe, with the same selector names; the DFG LUT
-// (uDfgLut, RGBA = scale, bias, E, W; core/DfgTable.h) gives E for multi-scatter compensation.
+// core/shading/MaterialBrdf.cpp's evaluate(), lobe by lobe, with the same selector names; the DFG LUT
+// (uDfgLut, RGBA = scale, bias, E, W; core/shading/DfgTable.h) gives E for multi-scatter compensation.
 #include "brdf_ggx.glsl"
 #include "ibl_lookup.glsl"
 

@@ -1,4 +1,4 @@
-// Normal distribution functions; twins of core/Brdf.h.
+// Normal distribution functions; twins of core/shading/Brdf.h.
 #include "brdf_common.glsl"
 
 // GGX / Trowbridge-Reitz [Walter et al. 2007, "Microfacet Models for Refraction through Rough Surfaces"].

@@ -1,4 +1,4 @@
-// Fresnel terms; twins of core/Brdf.h.
+// Fresnel terms; twins of core/shading/Brdf.h.
 #include "brdf_common.glsl"
 
 // Schlick 1994, "An Inexpensive BRDF Model for Physically-based Rendering".

@@ -1,4 +1,4 @@
-// Every BRDF term of core/Brdf.h: include this, or only the chunk a shader needs.
+// Every BRDF term of core/shading/Brdf.h: include this, or only the chunk a shader needs.
 #include "brdf_common.glsl"
 #include "brdf_distribution.glsl"
 #include "brdf_visibility.glsl"

@@ -1,4 +1,4 @@
-// Geometry / visibility terms, V = G / (4 N.L N.V); twins of core/Brdf.h.
+// Geometry / visibility terms, V = G / (4 N.L N.V); twins of core/shading/Brdf.h.
 #include "brdf_common.glsl"
 
 // Height-correlated Smith-GGX [Heitz 2014, eq. 99], the glTF 2.0 specification's V.

@@ -1,5 +1,5 @@
 // Cubemap faces in OpenGL's order and orientation (+X, -X, +Y, -Y, +Z, -Z; OpenGL 4.6 spec,
-// table 8.19). C++ twin: core/Prefilter.h, cubemapDirection().
+// table 8.19). C++ twin: core/ibl/Prefilter.h, cubemapDirection().
 // uv is the face's texture coordinate (s, t) in [0, 1]: texel (x, y) of a size-N face (y = row
 // in memory, as uploaded/read by glTexImage2D/glGetTexImage) has uv = ((x + 0.5) / N, (y + 0.5) / N).
 // With a = 2s - 1, b = 2t - 1 the (unnormalised) direction is

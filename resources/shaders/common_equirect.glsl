@@ -1,4 +1,4 @@
-// Direction <-> equirect mapping of docs/architecture.md; twins of core/Environment.h.
+// Direction <-> equirect mapping of docs/architecture.md; twins of core/ibl/Environment.h.
 //   u = atan2(d.z, d.x) / (2 pi) + 0.5,   v = asin(d.y) / pi + 0.5,   v = 1 is the image's TOP row.
 // Facet uploads Image rows top row first, so GL texture coordinate t = 0 is the image's top:
 // sample an uploaded equirect at equirectTexCoord(d) = (u, 1 - v).

@@ -1,4 +1,4 @@
-// Shared constants and tiny helpers (no dependencies). C++ twins: core/Brdf.h (kPi, pow5).
+// Shared constants and tiny helpers (no dependencies). C++ twins: core/shading/Brdf.h (kPi, pow5).
 const float PI = 3.14159265358979323846;
 const float INV_PI = 0.31830988618379067154;
 const float TWO_PI = 6.28318530717958647692;

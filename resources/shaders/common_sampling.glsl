@@ -1,4 +1,4 @@
-// Sample generation and importance sampling: GLSL twins of core/Sampling.h (same names, same
+// Sample generation and importance sampling: GLSL twins of core/shading/Sampling.h (same names, same
 // formulas, in float). Tangent space has the normal along +Z.
 #include "common_math.glsl"
 
@@ -18,7 +18,7 @@ vec2 hammersley(uint i, uint n) { return vec2(float(i) / float(n), radicalInvers
 
 // Sobol' dimensions 1 and 2 as 32-bit fractions [Sobol' 1967; Kollig & Keller 2002]: x is the
 // radical inverse, y the XOR of direction numbers v_1 = 2^31, v_{k+1} = v_k ^ (v_k >> 1) over the
-// set bits of s. Every aligned block of 2^m points is a (0, m, 2)-net (core/Sampling.h).
+// set bits of s. Every aligned block of 2^m points is a (0, m, 2)-net (core/shading/Sampling.h).
 uvec2 sobol2DBits(uint s)
 {
     uint y = 0u;
@@ -41,7 +41,7 @@ uint pcgHash(uint value)
     return (word >> 22u) ^ word;
 }
 
-// A Cranley-Patterson shift per pixel, seed and strategy (nested pcg hashes; core/Sampling.h).
+// A Cranley-Patterson shift per pixel, seed and strategy (nested pcg hashes; core/shading/Sampling.h).
 uvec2 cranleyPattersonShift(uint x, uint y, uint seed, uint strategy)
 {
     uint h = pcgHash(x + pcgHash(y + pcgHash(seed + pcgHash(strategy))));
@@ -139,7 +139,7 @@ vec3 importanceSampleVNDF(vec2 u, vec3 v, float alpha)
 
 // The same distribution by spherical caps [Dupuy and Benyoub 2023, HPG, listing 3]: no frame is
 // built around v, so a fixed set of points u moves continuously with v (Heitz's frame turns with
-// v's azimuth and drew a pinch where n = v in FIS's structured error). core/Sampling.h has the why.
+// v's azimuth and drew a pinch where n = v in FIS's structured error). core/shading/Sampling.h has the why.
 vec3 importanceSampleVNDFSphericalCap(vec2 u, vec3 v, float alpha)
 {
     vec3 vh = normalize(vec3(alpha * v.x, alpha * v.y, v.z));

@@ -1,5 +1,5 @@
 // Debug view ids: DEBUG_VIEW (a variant define) takes one of DEBUG_NONE, DEBUG_BASE_COLOR, ...,
-// which render/ShaderVariant's surfaceDefines makes from core/DebugView.cpp's table (one place
+// which render/ShaderVariant's surfaceDefines makes from core/shading/DebugView.cpp's table (one place
 // names and numbers them). Compare DEBUG_VIEW with those names, never with numbers.
 #ifndef DEBUG_NONE
 #error "the debug view ids are defined by render/ShaderVariant (surfaceDefines)"

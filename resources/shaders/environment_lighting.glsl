@@ -3,7 +3,7 @@
 // by filtered importance sampling of the pixel's lobe (ibl_fis.glsl); otherwise the split sum [Karis 2013] (its lobes
 // sharper than the prefiltered level 1 integrated by a few fis samples, below), from the textures of render/IblTextures
 // (prefiltered specular cubemap, irradiance cubemap storing E or 9 premultiplied SH
-// coefficients, DFG LUT). Twin: core/SplitSum.h splitSumRadiance(); docs/rendering.md gives the
+// coefficients, DFG LUT). Twin: core/shading/SplitSum.h splitSumRadiance(); docs/rendering.md gives the
 // formulas. Lookups turn world directions into the environment image's frame
 // (Environment::toImageFrame: R_y(-rotation)), and radiance is multiplied by the intensity.
 #include "ibl_lookup.glsl"
@@ -32,7 +32,7 @@ vec3 prefilteredRadiance(vec3 R, float perceptualRoughness)
 }
 
 #ifdef IRRADIANCE_SH
-// Twin of core/SphericalHarmonics.h irradianceSH(const IrradianceSH9&, n).
+// Twin of core/ibl/SphericalHarmonics.h irradianceSH(const IrradianceSH9&, n).
 vec3 irradianceSH(vec3 n)
 {
     vec3 e = uIrradianceSH[0] * 0.282094791773878
@@ -67,7 +67,7 @@ vec3 irradiance(vec3 n)
 //        energy-preserving coupling.
 // LearnOpenGL: w_d = (1 - F0) W(n.v) (1 - m) with F0 = mix(F0_d, c, m) (kD = (1 - F(v.h)) (1 - m)
 //        per direction), or (1 - E_s(n.v)) (1 - m) (energy preserving).
-// W(n.v) is the DFG table's alpha (core/DfgTable.h).
+// W(n.v) is the DFG table's alpha (core/shading/DfgTable.h).
 vec3 environmentDiffuseAlbedo(MaterialInfo m, float NoV, float roughness)
 {
     float metallic = saturate(m.metallic);

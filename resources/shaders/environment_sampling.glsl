@@ -1,6 +1,6 @@
 // The environment at source resolution, and its importance sampling by luminance: the GLSL twins
-// of core/Environment::radiance, core/EnvironmentSampler::sample/pdf and the table search of
-// core/EnvironmentSamplingTables.h (searchCdf, sampleCdf, sampleTables). The textures come from
+// of core/ibl/Environment::radiance, core/ibl/EnvironmentSampler::sample/pdf and the table search of
+// core/ibl/EnvironmentSamplingTables.h (searchCdf, sampleCdf, sampleTables). The textures come from
 // render/EnvironmentSource (EnvironmentSourceTextures); docs/ibl.md "Environment sampling tables".
 //
 // Sampling inverts the CDFs by bisection with texelFetch (GL 4.1, fragment shaders): ceil(log2 n)

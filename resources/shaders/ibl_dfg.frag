@@ -1,6 +1,6 @@
-// The split-sum DFG table on the GPU; twin of core/DfgTable.cpp integrateDfg() (visible-normal
+// The split-sum DFG table on the GPU; twin of core/shading/DfgTable.cpp integrateDfg() (visible-normal
 // sampling, Hammersley points). Texel (x, y) of an N x N target holds n.v = x / (N - 1) and
-// perceptual roughness y / (N - 1) (core/DfgTable.h), R = scale, G = bias, B = scale + bias,
+// perceptual roughness y / (N - 1) (core/shading/DfgTable.h), R = scale, G = bias, B = scale + bias,
 // A = W(n.v), the share of a Lambertian base that glTF's fresnel_mix passes, over (1 - F0).
 // DFG_VISIBILITY: 0 SmithGGXCorrelated (default), 1 SmithGGX, 2 SchlickGGX (k = alpha / 2); set by
 // IblPrecompute::dfgTable from the Visibility it is asked for (one table per variant).

@@ -3,7 +3,7 @@
 // for the solid angle Omega_s = 1 / (N p); reading the source cube at the level whose texels
 // cover about that much turns the estimator into one of the prefiltered source: bright small
 // sources spread instead of sparkling. The prefiltered levels' lods are made on the CPU with the
-// samples (core/Prefilter.h filteredLod: face-average texel, +1 bias; docs/ibl.md pass 3).
+// samples (core/ibl/Prefilter.h filteredLod: face-average texel, +1 bias; docs/ibl.md pass 3).
 // The pdf is floored at 1 / (2 pi), a uniform hemisphere's: a rare sample (grazing cosine, GGX
 // tail) never stands for more than 2 pi / N sr. Without the floor such samples read the 1x1
 // levels, whose average holds the light from BEHIND the surface: +500% irradiance on the dark
@@ -18,7 +18,7 @@
 // too blurred a one at the corners. lod = 0.5 log2(Omega_s / Omega_p(d)), without filteredLod's
 // +1: for IblMethod::Fis the +1's blur is bias (64 samples, five CC0 maps, 64^2 reference view:
 // median 2.22% / worst 27.3% with it, 1.84% / 15.5% without; +0.5 and -0.5 measured worse;
-// docs/benchmarks.md "IBL methods"). Twin: core/Prefilter.h filteredLodAt.
+// docs/benchmarks.md "IBL methods"). Twin: core/ibl/Prefilter.h filteredLodAt.
 float cubeTexelSolidAngle(vec3 d, float size)
 {
     vec3 a = abs(d);

@@ -15,7 +15,7 @@ float lodFromRoughness(float perceptualRoughness, float mipLevels)
 // listing 22) fit lerp(n, R, s (sqrt(s) + alpha)), s = 1 - alpha. Measured against the ground
 // truth over the 18 CC0 HDRIs, gold-like metal (docs/ibl.md, "Dominant direction"): mean relative
 // RMSE at roughness 0.7 / 0.85 / 1 falls from 0.54 / 0.60 / 0.95 to 0.46 / 0.55 / 0.52, within
-// noise of the best constant lerp at each roughness. Twin: core/SplitSum.h specularDominantDirection.
+// noise of the best constant lerp at each roughness. Twin: core/shading/SplitSum.h specularDominantDirection.
 vec3 specularDominantDirection(vec3 n, vec3 R, float alpha)
 {
     float smoothness = clamp(1.0 - alpha, 0.0, 1.0);
@@ -23,7 +23,7 @@ vec3 specularDominantDirection(vec3 n, vec3 R, float alpha)
     return normalize(mix(n, R, lerpFactor));
 }
 
-// DFG LUT (x = n.v, y = roughness; texel i at value i / (N - 1), core/DfgTable.h): GL coordinate
+// DFG LUT (x = n.v, y = roughness; texel i at value i / (N - 1), core/shading/DfgTable.h): GL coordinate
 // (value * (N - 1) + 0.5) / N, so a LINEAR lookup never extrapolates.
 vec2 dfgTexCoord(float NoV, float perceptualRoughness, float lutSize)
 {

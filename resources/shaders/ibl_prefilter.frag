@@ -1,9 +1,9 @@
 // Pass 3: one level of the prefiltered specular cubemap (one face per draw). Split-sum
 // radiance for n = v = r [Karis 2013]: sum L(l) (n.l) / sum (n.l) over l = reflect(v, h), h from
 // importanceSampleGGX; since n = v, pdf_l = D(h) (n.h) / (4 v.h) = D(h) / 4. Each sample reads
-// the environment cubemap at the filtered-importance-sampling lod (core/Prefilter.h filteredLod).
+// the environment cubemap at the filtered-importance-sampling lod (core/ibl/Prefilter.h filteredLod).
 // The samples are the same for every texel of a level: IblPrecompute makes them once on the CPU
-// (core/Prefilter.h prefilterLobeSamples, in double) and passes a table, entry i at row
+// (core/ibl/Prefilter.h prefilterLobeSamples, in double) and passes a table, entry i at row
 // i / kTableWidth, column i % kTableWidth: l in the frame of n (z along n; l.z = n.l > 0) and its
 // lod. uInverseWeight is 1 / sum (n.l). Computing hammersley, importanceSampleGGX, D and the lod
 // in every texel cost llvmpipe a quarter of the pass (docs/benchmarks.md).

@@ -1,5 +1,5 @@
 // IblMethod::Reference: the environment's light by Monte Carlo, the GLSL twin of the loop of
-// core/GroundTruth.cpp integrateOutgoingRadiance (same integrand, same strategies, same weights):
+// core/shading/GroundTruth.cpp integrateOutgoingRadiance (same integrand, same strategies, same weights):
 // each sample draws one direction from the BRDF (the lobe picked by specularSelectionProbability,
 // then visible-normal GGX [Heitz 2018] or cosine) and one from the environment's luminance tables
 // (environment_sampling.glsl), combined by the power heuristic [Veach 1997, ch. 9]; f is

@@ -1,6 +1,6 @@
 // KHR_lights_punctual lights (directional in lux, point and spot in candela), with the glTF
-// Sample Viewer's punctual.glsl names. Twins: core/Punctual.h (getRangeAttenuation,
-// getSpotAttenuation); render/Renderer.cpp fills the uniforms from core/Light.h.
+// Sample Viewer's punctual.glsl names. Twins: core/shading/Punctual.h (getRangeAttenuation,
+// getSpotAttenuation); render/Renderer.cpp fills the uniforms from core/project/Light.h.
 #include "common_math.glsl"
 
 const int LIGHT_DIRECTIONAL = 0;

@@ -1,8 +1,8 @@
 // The material's inputs at a fragment (the glTF Sample Viewer's MaterialInfo), from constant
 // factors and, where the variant says HAS_*_MAP, one texture each. Twin of what core's
-// MaterialInfo holds after textures (core/Material.h explains every factor).
+// MaterialInfo holds after textures (core/material/Material.h explains every factor).
 //
-// Slots (core/Material.h MapSlot): 0 base colour, 1 normal, 2 metallic, 3 roughness, 4 occlusion,
+// Slots (core/material/Material.h MapSlot): 0 base colour, 1 normal, 2 metallic, 3 roughness, 4 occlusion,
 // 5 emissive.
 // Per slot: uUvTransform (KHR_texture_transform matrix, core UvTransform::matrix()), uChannel
 // (0 rgb, 1 r, 2 g, 3 b, 4 a: core MapChannel), uInvert (scalar maps: 1 - value), uTexCoord (the

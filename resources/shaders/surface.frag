@@ -1,6 +1,6 @@
 // The surface pass: material inputs -> image-based light (split sum) + punctual lights, lobes
 // kept apart (glTF Sample Viewer's pbr.frag), written as linear HDR radiance. Variants: see
-// render/ShaderVariant.h. Twin of core/MaterialBrdf.cpp (lights) and core/SplitSum.cpp (IBL).
+// render/ShaderVariant.h. Twin of core/shading/MaterialBrdf.cpp (lights) and core/shading/SplitSum.cpp (IBL).
 #include "debug_views.glsl"
 #include "material_inputs.glsl"
 #include "brdf_compose.glsl"
@@ -34,7 +34,7 @@ void main()
         ng = -ng; // two-sided: shade the side the camera sees
 #ifdef ANALYTIC_SPHERE_NORMAL
     // The unit sphere itself (model = identity), hit by this pixel's ray from the camera: the
-    // ground truth's n and v (core/ReferenceView.h intersectSphere). The mesh's faces lie inside
+    // ground truth's n and v (core/shading/ReferenceView.h intersectSphere). The mesh's faces lie inside
     // the sphere, so every fragment's ray hits it.
     {
         vec3 direction = normalize(vWorldPosition - uCameraPosition);

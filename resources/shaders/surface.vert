@@ -1,4 +1,4 @@
-// The surface pass's vertex stage. Attribute locations match render/GpuMesh (core/Mesh.h's
+// The surface pass's vertex stage. Attribute locations match render/GpuMesh (core/mesh/Mesh.h's
 // Vertex: position, normal, tangent, uv, color, uv1). Without HAS_NORMAL_MAP no tangent is read,
 // without HAS_TEXCOORD_1 no second UV, without HAS_VERTEX_COLOR no colour.
 layout(location = 0) in vec3 aPosition;
@@ -9,11 +9,11 @@ out vec4 vTangent;
 #endif
 layout(location = 3) in vec2 aUv;
 #ifdef HAS_TEXCOORD_1
-layout(location = 5) in vec2 aUv1; // glTF TEXCOORD_1 (core/Mesh.h Vertex::uv1)
+layout(location = 5) in vec2 aUv1; // glTF TEXCOORD_1 (core/mesh/Mesh.h Vertex::uv1)
 out vec2 vUv1;
 #endif
 #ifdef HAS_VERTEX_COLOR
-layout(location = 4) in vec4 aColor; // glTF COLOR_0, linear RGBA (core/Mesh.h Vertex::color)
+layout(location = 4) in vec4 aColor; // glTF COLOR_0, linear RGBA (core/mesh/Mesh.h Vertex::color)
 out vec4 vColor;
 #endif
 

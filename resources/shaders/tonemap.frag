@@ -1,5 +1,5 @@
 // The display transform pass: HDR radiance * 2^EV -> tone mapper -> display encoding.
-// Twin: core/ToneMap.h displayTransform().
+// Twin: core/image/ToneMap.h displayTransform().
 #include "tonemap.glsl"
 
 uniform sampler2D uHdr;

@@ -1,4 +1,4 @@
-// Tone mappers and display encodings; twins of core/ToneMap.h (same names, sources cited there
+// Tone mappers and display encodings; twins of core/image/ToneMap.h (same names, sources cited there
 // and in docs/rendering.md). Input: exposed linear radiance; output: display-linear [0, 1].
 
 vec3 toneMapNone(vec3 c) { return clamp(c, 0.0, 1.0); }
@@ -14,7 +14,7 @@ vec3 toneMapReinhard(vec3 c)
 vec3 toneMapExposure(vec3 c) { return 1.0 - exp(-max(c, vec3(0.0))); }
 
 // Hill 2016 (BakingLab ACES.hlsl). GLSL mat3 takes columns: these are the transposes of the rows
-// printed in core/ToneMap.cpp.
+// printed in core/image/ToneMap.cpp.
 vec3 toneMapAcesHill(vec3 c)
 {
     const mat3 inputMatrix = mat3(0.59719, 0.07600, 0.02840, 0.35458, 0.90834, 0.13383, 0.04823, 0.01566, 0.83777);

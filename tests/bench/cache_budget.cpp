@@ -8,22 +8,22 @@
 // Usage (needs a display):
 //   tests/with-display.sh build/ci/bench/cache_budget [--cycles N] [--size PX] [--budget MB]
 //       [--hdri DIR] [--return-freed on|off]
-//   --return-freed off: the window keeps what it freed (ui/FreedMemoryTimer stopped), for comparison.
+//   --return-freed off: the window keeps what it freed (ui/widgets/FreedMemoryTimer stopped), for comparison.
 //   --cycles 0: ends at once (std::_Exit) after the first set and environment, so that a heap
 //     profiler (heaptrack) reports what they hold as not freed.
 //   --budget: the window's cache budget in MiB (Edit > Preferences; set here as FACET_CACHE_BUDGET_MB).
 
-#include "core/FreedMemory.h"
-#include "core/Image.h"
-#include "core/Project.h"
-#include "ui/CacheBudget.h"
-#include "ui/Document.h"
-#include "ui/FreedMemoryTimer.h"
+#include "core/image/Image.h"
+#include "core/project/Project.h"
+#include "core/support/FreedMemory.h"
 #include "ui/MainWindow.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/ViewportWidget.h"
+#include "ui/document/Document.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
+#include "ui/widgets/CacheBudget.h"
+#include "ui/widgets/FreedMemoryTimer.h"
 
 #include <QApplication>
 #include <QDir>

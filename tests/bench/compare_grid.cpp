@@ -15,16 +15,16 @@
 // built-in and uniform ones. The IBL disk cache is not used (every precompute is counted), IBL
 // quality is the default preset.
 
-#include "core/AssetLibrary.h"
-#include "core/Project.h"
-#include "ui/CameraController.h"
-#include "ui/CompareController.h"
-#include "ui/CompareView.h"
-#include "ui/Document.h"
-#include "ui/DocumentAssets.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/ViewportWidget.h"
+#include "core/project/AssetLibrary.h"
+#include "core/project/Project.h"
+#include "ui/compare/CompareController.h"
+#include "ui/compare/CompareView.h"
+#include "ui/document/Document.h"
+#include "ui/document/DocumentAssets.h"
+#include "ui/viewport/CameraController.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include <QApplication>
 #include <QDir>

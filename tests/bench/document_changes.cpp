@@ -1,22 +1,22 @@
-// Prints what a change description costs and saves (ui/DocumentChanges.h): changesBetween for one
+// Prints what a change description costs and saves (ui/document/DocumentChanges.h): changesBetween for one
 // edit of a project of N materials, whole Document edits (a roughness factor, a normal map), and
 // the window's SceneController alone handling a map change that names its slot, against a change
 // of kinds alone (what every map edit cost before changes named their slots: every material's
 // files looked at on disk).
 // Each material has three files of its own. Then choosing an environment file and a mesh file:
-// how long the edit keeps the GUI thread (the file loads on a worker, ui/DocumentAssets), how long
+// how long the edit keeps the GUI thread (the file loads on a worker, ui/document/DocumentAssets), how long
 // until it arrives, and the load alone (what the GUI thread waited for before the window's asset
 // cache). Checks nothing (SceneControllerUiTest, DocumentAssetsUiTest and DocumentChangesTest do).
 // Usage: document_changes [repeats]   (default 20; the median is printed)
 
 #include "BenchStats.h"
-#include "core/AssetLibrary.h"
-#include "core/MapImageCache.h"
-#include "core/Project.h"
-#include "core/ProjectAssets.h"
-#include "ui/Document.h"
-#include "ui/DocumentChanges.h"
-#include "ui/SceneController.h"
+#include "core/image/MapImageCache.h"
+#include "core/project/AssetLibrary.h"
+#include "core/project/Project.h"
+#include "core/project/ProjectAssets.h"
+#include "ui/document/Document.h"
+#include "ui/document/DocumentChanges.h"
+#include "ui/viewport/SceneController.h"
 
 #include "TestSupport.h"
 

@@ -10,13 +10,13 @@
 //   --screenshots DIR: the window grabbed into DIR as each case's progress is first shown
 //     (NN-progress.png) and once its lighting is ready (NN-ready.png), to look at.
 
-#include "core/AssetLibrary.h"
-#include "core/Image.h"
-#include "core/Project.h"
-#include "ui/Document.h"
+#include "core/image/Image.h"
+#include "core/project/AssetLibrary.h"
+#include "core/project/Project.h"
 #include "ui/MainWindow.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/ViewportWidget.h"
+#include "ui/document/Document.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -127,7 +127,7 @@ int main(int argc, char** argv)
     const std::string hdri = AssetLibrary::installed().folder + "/hdri/";
     std::vector<std::string> specs = {hdri + "forest.exr", hdri + "night.exr"};
     if (large) {
-        // A 4096x2048 map: the largest an environment is kept at (core/Environment.h kMaxWidth).
+        // A 4096x2048 map: the largest an environment is kept at (core/ibl/Environment.h kMaxWidth).
         Image image(4096, 2048, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
         for (int y = 0; y < image.height(); ++y)
             for (int x = 0; x < image.width(); ++x)

@@ -6,12 +6,12 @@
 // while the refinement draws, and how many turns took longer than 100 ms.
 // Checks nothing: it measures. Usage (needs a display): tests/with-display.sh build/ci/bench/fis_refinement
 
-#include "core/Project.h"
-#include "ui/Document.h"
+#include "core/project/Project.h"
 #include "ui/MainWindow.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/ViewportRenderer.h"
-#include "ui/ViewportWidget.h"
+#include "ui/document/Document.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportRenderer.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

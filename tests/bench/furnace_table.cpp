@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "core/DfgTable.h"
-#include "core/MaterialBrdf.h"
+#include "core/shading/DfgTable.h"
+#include "core/shading/MaterialBrdf.h"
 
 using namespace facet;
 

@@ -7,10 +7,10 @@
 // Usage: gl_timings [repeats]   (default 5; surfaceless EGL, no display needed)
 
 #include "BenchStats.h"
-#include "core/Environment.h"
-#include "core/Light.h"
-#include "core/Project.h"
-#include "core/ProjectAssets.h"
+#include "core/ibl/Environment.h"
+#include "core/project/Light.h"
+#include "core/project/Project.h"
+#include "core/project/ProjectAssets.h"
 #include "render/FrameRenderer.h"
 #include "render/Framebuffer.h"
 #include "render/GLInfo.h"

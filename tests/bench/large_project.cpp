@@ -7,14 +7,14 @@
 // Last, the time from a key press to the frame that shows its change.
 // Usage (needs a display): tests/with-display.sh build/ci/bench/large_project [--parts N] [--materials M]
 
-#include "core/Project.h"
-#include "ui/Document.h"
+#include "core/project/Project.h"
 #include "ui/MainWindow.h"
-#include "ui/MaterialsDock.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/ViewportWidget.h"
+#include "ui/docks/MaterialsDock.h"
+#include "ui/document/Document.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include "GltfWriter.h"
 

@@ -18,8 +18,8 @@
 // behind the object is looked up, not sampled, so it has no noise: counting it would dilute the
 // estimate.
 
-#include "core/Project.h"
-#include "core/ProjectAssets.h"
+#include "core/project/Project.h"
+#include "core/project/ProjectAssets.h"
 #include "render/FrameRenderer.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblPrecompute.h"

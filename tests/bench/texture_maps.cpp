@@ -18,15 +18,15 @@
 // frame drawn in it), the window's full-resolution frame times, and VmRSS / VmHWM. Twice: with
 // an empty IBL disk cache, then with the cache it left.
 
-// epoxy before any Qt GL header (ui/ViewportWidget.h brings Qt's): the two must not meet otherwise.
+// epoxy before any Qt GL header (ui/viewport/ViewportWidget.h brings Qt's): the two must not meet otherwise.
 #include <epoxy/gl.h>
 
 #include "BenchStats.h"
-#include "core/Image.h"
-#include "core/MapImage.h"
-#include "core/MapImageCache.h"
-#include "core/Project.h"
-#include "core/ProjectAssets.h"
+#include "core/image/Image.h"
+#include "core/image/MapImage.h"
+#include "core/image/MapImageCache.h"
+#include "core/project/Project.h"
+#include "core/project/ProjectAssets.h"
 #include "render/FrameRenderer.h"
 #include "render/Framebuffer.h"
 #include "render/GLInfo.h"
@@ -37,13 +37,13 @@
 #include "render/SceneFromProject.h"
 #include "render/TextureCache.h"
 #include "render/TextureFiltering.h"
-#include "ui/Document.h"
 #include "ui/MainWindow.h"
-#include "ui/MapUploadScheduler.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/ViewportWidget.h"
+#include "ui/document/Document.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/viewport/MapUploadScheduler.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include <OpenImageIO/imageio.h>
 

@@ -1,9 +1,9 @@
 #include "CompareTestWindow.h"
 
-#include "ui/CompareController.h"
-#include "ui/CompareView.h"
-#include "ui/Document.h"
 #include "ui/MainWindow.h"
+#include "ui/compare/CompareController.h"
+#include "ui/compare/CompareView.h"
+#include "ui/document/Document.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>

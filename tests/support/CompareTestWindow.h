@@ -5,7 +5,7 @@
 // settled frame (every cell drawn in full, nothing loading, no preview). Links facet_ui: compiled
 // into those tests only.
 
-#include "core/Project.h"
+#include "core/project/Project.h"
 
 #include <QString>
 

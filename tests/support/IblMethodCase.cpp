@@ -3,9 +3,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/GroundTruth.h"
-#include "core/Light.h"
-#include "core/Material.h"
+#include "core/material/Material.h"
+#include "core/project/Light.h"
+#include "core/shading/GroundTruth.h"
 
 namespace facet::test {
 

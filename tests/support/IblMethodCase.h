@@ -9,9 +9,9 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/Image.h"
-#include "core/Project.h"
-#include "core/ShadingModel.h"
+#include "core/image/Image.h"
+#include "core/project/Project.h"
+#include "core/shading/ShadingModel.h"
 
 namespace facet::test {
 
@@ -35,7 +35,7 @@ struct IblMethodCase {
 // view, lit by `method` at `samples` per pixel.
 Project iblMethodCaseProject(const IblMethodCase& c, IblMethod method, int samples);
 
-// The CPU ground truth (core/GroundTruth) of `project`'s reference view, size x size at
+// The CPU ground truth (core/shading/GroundTruth) of `project`'s reference view, size x size at
 // `samplesPerPixel`, seed `seed`. nullopt with *error when the project has what the truth refuses.
 std::optional<Image> groundTruthImage(
     const Project& project, int size, int samplesPerPixel, std::uint64_t seed, std::string* error);

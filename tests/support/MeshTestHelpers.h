@@ -20,10 +20,10 @@
 #include <glm/geometric.hpp>
 
 #include "TestSupport.h"
-#include "core/Mesh.h"
-#include "core/MeshImport.h"
-#include "core/MeshPrimitives.h"
-#include "core/Tangents.h"
+#include "core/mesh/Mesh.h"
+#include "core/mesh/MeshImport.h"
+#include "core/mesh/MeshPrimitives.h"
+#include "core/mesh/Tangents.h"
 
 namespace facet::test::mesh {
 

@@ -2,10 +2,10 @@
 
 #include <QTemporaryDir>
 
-#include "core/Project.h"
-#include "core/ImageMetrics.h"
-#include "core/ProjectAssets.h"
-#include "core/ReferenceView.h"
+#include "core/image/ImageMetrics.h"
+#include "core/project/Project.h"
+#include "core/project/ProjectAssets.h"
+#include "core/shading/ReferenceView.h"
 #include "render/FrameRenderer.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblSettings.h"

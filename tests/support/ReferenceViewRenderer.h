@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "core/Image.h"
+#include "core/image/Image.h"
 #include "render/FrameRenderer.h"
 #include "render/RenderScene.h"
 

@@ -2,7 +2,7 @@
 
 #include "GltfWriter.h"
 
-#include "core/Project.h"
+#include "core/project/Project.h"
 
 #include <OpenImageIO/imageio.h>
 

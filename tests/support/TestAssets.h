@@ -6,7 +6,7 @@
 #include <QByteArray>
 #include <QString>
 
-#include "core/Image.h"
+#include "core/image/Image.h"
 
 #include <string>
 #include <vector>
@@ -48,7 +48,7 @@ QString writeTexturedProject(const QString& folder);
 // the values so that two maps differ. For tests that follow texels through an export.
 facet::Image variedImage(int seed, int channels);
 
-// An export template (core/ExportTemplate.h) of the given outputs (a JSON array's inside) and
+// An export template (core/export/ExportTemplate.h) of the given outputs (a JSON array's inside) and
 // name pattern, as the bytes of its file.
 QByteArray exportTemplateJson(const QByteArray& outputs, const QByteArray& fileName = "{material}_{map}");
 

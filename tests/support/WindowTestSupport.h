@@ -2,12 +2,12 @@
 // Set-up the main-window tests share. Header only: the UI tests (which link facet_ui) include it;
 // the support library links no widgets.
 
-#include "ui/Document.h"
 #include "ui/MainWindow.h"
-#include "ui/ProjectFileController.h"
-#include "ui/SceneController.h"
-#include "ui/SurfaceFormat.h"
-#include "ui/ViewportWidget.h"
+#include "ui/document/Document.h"
+#include "ui/document/ProjectFileController.h"
+#include "ui/viewport/SceneController.h"
+#include "ui/viewport/SurfaceFormat.h"
+#include "ui/viewport/ViewportWidget.h"
 
 #include <QDockWidget>
 #include <QMessageBox>

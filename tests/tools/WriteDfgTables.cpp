@@ -1,5 +1,5 @@
 // Writes render/ShippedDfgTables.inc: the `default` IBL preset's split-sum DFG tables, one per
-// visibility term, integrated on the CPU by core/DfgTable and stored as binary16 RGBA
+// visibility term, integrated on the CPU by core/shading/DfgTable and stored as binary16 RGBA
 // (render/ShippedDfgTables.h says why and how they are found):
 //
 //   write_dfg_tables render/ShippedDfgTables.inc
@@ -7,8 +7,8 @@
 // Run it after a change to the DFG integral (IblSettings' DFG algorithm version);
 // IblSettingsTest::shippedDfgTables fails until then.
 
-#include "core/DfgTable.h"
-#include "core/ShadingModel.h"
+#include "core/shading/DfgTable.h"
+#include "core/shading/ShadingModel.h"
 #include "render/IblSettings.h"
 
 #include <glm/gtc/packing.hpp>

@@ -1,0 +1,126 @@
+#pragma once
+// An export template: which texture files a material becomes for an engine (Unreal's BaseColor,
+// Normal and ORM; Unity HDRP's MaskMap; ...), each file's channels and where each channel's
+// values come from, its colour space, bit depth and format. The built-in templates are data files
+// (resources/export/*.json, compiled into the program); a user template is the same JSON in a
+// file of the user's. docs/export.md describes the format; core/export/TextureSetExport writes the files.
+//
+//   {
+//     "format": "facet-export-template", "version": 1,
+//     "name": "Unreal Engine",
+//     "fileName": "T_{material}_{map}",          // default for every output; tokens below
+//     "outputs": [
+//       { "map": "BC", "channels": ["baseColor.r", "baseColor.g", "baseColor.b"],
+//         "colorSpace": "srgb", "bitDepth": 8, "fileFormat": "png" },
+//       { "map": "N", "channels": ["normal.x", {"source": "normal.y", "invert": true}, "normal.z"],
+//         "colorSpace": "linear", "bitDepth": 8, "fileFormat": "png" },
+//       { "map": "E", "channels": ["emissive.r", "emissive.g", "emissive.b"], "optional": true, ... },
+//       { "map": "ORM", "channels": ["occlusion", "roughness", "metallic"], ... }
+//     ]
+//   }
+//
+// A channel is a source name, a number (a constant in [0, 1]: the value the file holds, e.g. 1
+// for an unused detail mask) or {"source": NAME, "invert": true} (1 - value; a smoothness from
+// the roughness, a DirectX normal's green). One channel makes a grey file, two grey + alpha,
+// three RGB, four RGBA.
+// Sources (what the material shades with at each texel, factor and texture combined, before any
+// UV transform of its own: core/shading/MaterialInputs materialInputs):
+//   baseColor.r/.g/.b  linear base colour (the file's colour space encodes it)
+//   baseColor.a        coverage (base colour alpha)
+//   normal.x/.y/.z     the tangent-space shading normal, OpenGL convention (+Y green), strength
+//                      applied, unit length, stored as n * 0.5 + 0.5
+//   metallic, roughness (perceptual), occlusion (strength applied)
+//   emissive.r/.g/.b   emissive colour (factor x texture, linear; the strength is a parameter)
+// Tokens of file names: {material} (its name, made safe for a file name), {map}, {size} (the
+// file's width, or WxH when it is not square), {template} (the template's file name stem).
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <QJsonObject>
+
+#include "core/image/Image.h" // ColorEncoding
+
+namespace facet {
+
+enum class ExportSource {
+    Constant,
+    BaseColorR,
+    BaseColorG,
+    BaseColorB,
+    BaseColorA,
+    NormalX,
+    NormalY,
+    NormalZ,
+    Metallic,
+    Roughness,
+    Occlusion,
+    EmissiveR,
+    EmissiveG,
+    EmissiveB,
+};
+const char* toString(ExportSource source); // "baseColor.r", ...; "constant"
+std::optional<ExportSource> exportSourceFromString(std::string_view name);
+
+struct ExportChannel {
+    ExportSource source = ExportSource::Constant;
+    double constant = 0.0; // Constant: the value the file holds
+    bool invert = false; // 1 - value
+    bool operator==(const ExportChannel&) const = default;
+};
+
+enum class TextureFileFormat { Png, Tga, Tiff, Exr };
+const char* toString(TextureFileFormat format); // "png", "tga", "tiff", "exr"
+const char* extension(TextureFileFormat format); // "png", "tga", "tif", "exr"
+std::optional<TextureFileFormat> textureFileFormatFromString(std::string_view name);
+// Whether `format` holds `bitDepth` (8, 16 or 32) bits per channel: PNG 8/16, TGA 8, TIFF
+// 8/16/32 (32: float), EXR 16/32 (half, float).
+bool holdsBitDepth(TextureFileFormat format, int bitDepth);
+
+struct ExportOutput {
+    std::string map; // the {map} token: "BaseColor", "ORM"
+    std::string fileName; // the pattern without extension; empty: the template's
+    std::vector<ExportChannel> channels; // 1 to 4
+    ColorEncoding colorSpace = ColorEncoding::Linear; // sRGB: R, G and B are sRGB-encoded
+    int bitDepth = 8; // 8, 16, 32 (float)
+    TextureFileFormat fileFormat = TextureFileFormat::Png;
+    // Written only for a material that uses one of the maps it reads (core/export/TextureSetExport
+    // usesSlot: a texture, or an emissive colour other than black): a set has no black emissive
+    // file for a material that emits nothing.
+    bool optional = false;
+    bool operator==(const ExportOutput&) const = default;
+};
+
+struct ExportTemplate {
+    static constexpr const char* kFormatName = "facet-export-template";
+    static constexpr int kFormatVersion = 1;
+    static constexpr int kMaxOutputs = 16;
+
+    std::string id; // the built-in's name ("unreal") or the file's stem
+    std::string name; // what people call it: "Unreal Engine"
+    std::string fileName = "{material}_{map}";
+    std::vector<ExportOutput> outputs;
+
+    // Reads and checks a template; *error names the field ("outputs[1].channels[2]: 'rough' is
+    // not a source (baseColor.r, ...)"), without the file.
+    static std::optional<ExportTemplate> fromJson(const QJsonObject& object, std::string* error);
+    // A template file; errors "<path>: <problem>". The id is the file's stem.
+    static std::optional<ExportTemplate> load(const std::string& path, std::string* error);
+    // The built-in templates: "gltf-textures", "godot", "unity-hdrp", "unity-urp", "unreal".
+    static const std::vector<std::string>& builtinIds();
+    static std::optional<ExportTemplate> builtin(std::string_view id);
+
+    bool operator==(const ExportTemplate&) const = default;
+};
+
+// `pattern` with its tokens replaced; false with *error naming an unknown token or an unclosed
+// brace ("unknown token {colour} (known: {material}, {map}, {size}, {template})").
+bool expandFileName(const std::string& pattern, const std::string& material, const std::string& map,
+    const std::string& size, const std::string& templateId, std::string* out, std::string* error);
+// A material name as a file name's part: letters, digits, '-', '_' and '.' kept, runs of others
+// (spaces, '/', ':') become one '_', no leading '.'; empty: "Material".
+std::string fileNameSafe(std::string_view name);
+
+} // namespace facet

@@ -1,0 +1,317 @@
+// glTF materials -> Facet materials (core/gltf/GltfSupport.h). docs/gltf.md lists the mapping.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+#include <QDir>
+#include <QFileInfo>
+#include <QUrl>
+
+#include "core/gltf/GltfImport.h"
+#include "core/gltf/GltfSupport.h"
+#include "core/gltf/TinyGltf.h"
+
+namespace facet::gltfsupport {
+
+void Notes::add(const std::string& note)
+{
+    if (note.empty())
+        return;
+    for (auto& [text, count] : m_notes)
+        if (text == note) {
+            ++count;
+            return;
+        }
+    m_notes.emplace_back(note, 1);
+}
+
+std::string Notes::joined() const
+{
+    std::string result;
+    for (const auto& [text, count] : m_notes) {
+        if (!result.empty())
+            result += "; ";
+        result += text;
+        if (count > 1)
+            result += " (" + std::to_string(count) + " times)";
+    }
+    return result;
+}
+
+namespace {
+
+std::string number(double value)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.6g", value);
+    return buffer;
+}
+
+// Clamps `value` into [lo, hi], noting what was changed and why.
+double clamped(double value, double lo, double hi, const std::string& what, Notes& notes)
+{
+    if (!std::isfinite(value)) {
+        notes.add(what + " is not a finite number: " + number(lo) + " used");
+        return lo;
+    }
+    if (value < lo || value > hi) {
+        const double result = std::clamp(value, lo, hi);
+        notes.add(what + " " + number(value) + " is outside Facet's [" + number(lo) + ", " + number(hi)
+            + "]: " + number(result) + " used");
+        return result;
+    }
+    return value;
+}
+
+// The path a map names for image `imageIndex`: the external file, or an embedded reference.
+std::string imagePath(
+    const tinygltf::Model& model, int imageIndex, const std::string& assetPath, Notes& notes)
+{
+    const tinygltf::Image& image = model.images[std::size_t(imageIndex)];
+    if (image.bufferView >= 0 || image.uri.empty())
+        return gltfImageReference(assetPath, imageIndex);
+    // A URI is percent-encoded (RFC 3986) and relative to the asset's folder.
+    const QString decoded = QUrl::fromPercentEncoding(QByteArray::fromStdString(image.uri));
+    const QDir folder = QFileInfo(QString::fromStdString(assetPath)).absoluteDir();
+    const QString resolved = QDir::cleanPath(folder.absoluteFilePath(decoded));
+    if (!QFileInfo(resolved).isFile())
+        notes.add("image '" + decoded.toStdString() + "' is missing (" + resolved.toStdString()
+            + "): its maps keep the path, to relink or restore");
+    return resolved.toStdString();
+}
+
+// The image a texture reads: its source, or EXT_texture_webp's (OpenImageIO reads WebP).
+int textureImage(
+    const tinygltf::Model& model, const tinygltf::Texture& texture, const std::string& where, Notes& notes)
+{
+    int source = texture.source;
+    const auto webp = texture.extensions.find("EXT_texture_webp");
+    if (webp != texture.extensions.end() && webp->second.Has("source") && webp->second.Get("source").IsInt())
+        source = webp->second.Get("source").GetNumberAsInt();
+    if (texture.extensions.count("KHR_texture_basisu") && source < 0)
+        notes.add(where + " uses a KTX2/Basis texture, which Facet does not read: its factor is used alone");
+    if (source >= 0 && std::size_t(source) >= model.images.size()) {
+        notes.add(where + " names image " + std::to_string(source)
+            + ", which does not exist: its factor is used alone");
+        return -1;
+    }
+    return source;
+}
+
+// Reads a textureInfo's index, texCoord and KHR_texture_transform into `map`. False when there is
+// no usable texture (the map then keeps its factor alone).
+bool readTexture(const tinygltf::Model& model, int textureIndex, int texCoord,
+    const tinygltf::ExtensionMap& extensions, const std::string& assetPath, const std::string& where,
+    MaterialMap& map, Notes& notes)
+{
+    if (textureIndex < 0)
+        return false;
+    if (std::size_t(textureIndex) >= model.textures.size()) {
+        notes.add(where + " names texture " + std::to_string(textureIndex)
+            + ", which does not exist: its factor is used alone");
+        return false;
+    }
+    const tinygltf::Texture& texture = model.textures[std::size_t(textureIndex)];
+    const int image = textureImage(model, texture, where, notes);
+    if (image < 0)
+        return false;
+    map.path = imagePath(model, image, assetPath, notes);
+
+    // No sampler: repeat, filters left to the implementation (glTF 2.0 section 3.8.4).
+    if (texture.sampler >= 0 && std::size_t(texture.sampler) < model.samplers.size()) {
+        const tinygltf::Sampler& sampler = model.samplers[std::size_t(texture.sampler)];
+        map.sampler
+            = textureSamplerFromGltf(sampler.magFilter, sampler.minFilter, sampler.wrapS, sampler.wrapT);
+    } else if (texture.sampler >= 0) {
+        notes.add(where + " names sampler " + std::to_string(texture.sampler)
+            + ", which does not exist: the default sampler is used");
+    }
+    int set = texCoord;
+    const auto transform = extensions.find("KHR_texture_transform");
+    if (transform != extensions.end()) {
+        const tinygltf::Value& t = transform->second;
+        glm::dvec2 offset(0.0), scale(1.0);
+        double rotation = 0.0;
+        const auto vec2 = [](const tinygltf::Value& value, glm::dvec2& out) {
+            if (value.IsArray() && value.ArrayLen() == 2 && value.Get(0).IsNumber()
+                && value.Get(1).IsNumber())
+                out = {value.Get(0).GetNumberAsDouble(), value.Get(1).GetNumberAsDouble()};
+        };
+        if (t.Has("offset"))
+            vec2(t.Get("offset"), offset);
+        if (t.Has("scale"))
+            vec2(t.Get("scale"), scale);
+        if (t.Has("rotation") && t.Get("rotation").IsNumber())
+            rotation = t.Get("rotation").GetNumberAsDouble();
+        if (t.Has("texCoord") && t.Get("texCoord").IsInt())
+            set = t.Get("texCoord").GetNumberAsInt();
+        const bool finite = std::isfinite(offset.x) && std::isfinite(offset.y) && std::isfinite(scale.x)
+            && std::isfinite(scale.y) && std::isfinite(rotation);
+        if (!finite || scale.x == 0.0 || scale.y == 0.0)
+            notes.add(where + " has a texture transform with a zero or non-finite value: ignored");
+        else
+            map.uv = gltfTextureTransform(offset, rotation, scale);
+    }
+    if (set == 0 || set == 1) {
+        map.texCoord = set;
+    } else {
+        notes.add(where + " reads texture coordinate set " + std::to_string(set)
+            + ": Facet reads sets 0 and 1, and reads set 0");
+    }
+    return true;
+}
+
+} // namespace
+
+Material defaultGltfMaterial()
+{
+    Material m;
+    m.name = "Default";
+    m.setBaseColor(glm::dvec3(1.0), 1.0);
+    m.setFactor(MapSlot::Metallic, 1.0);
+    m.setFactor(MapSlot::Roughness, 1.0);
+    m.doubleSided = false;
+    return m;
+}
+
+Material convertMaterial(const tinygltf::Model& model, int index, const std::string& assetPath, Notes& notes)
+{
+    const tinygltf::Material& g = model.materials[std::size_t(index)];
+    Material m = defaultGltfMaterial();
+    m.name = g.name.empty() ? "Material " + std::to_string(index) : g.name;
+    const std::string where = "material '" + m.name + "'";
+    const tinygltf::PbrMetallicRoughness& pbr = g.pbrMetallicRoughness;
+
+    // Base colour: linear RGBA factor x sRGB texture (glTF 3.9.2).
+    glm::dvec4 base(1.0);
+    for (std::size_t c = 0; c < 4 && c < pbr.baseColorFactor.size(); ++c)
+        base[int(c)] = clamped(pbr.baseColorFactor[c], 0.0, 1.0, where + " baseColorFactor", notes);
+    m.map(MapSlot::BaseColor).factor = base;
+    readTexture(model, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+        pbr.baseColorTexture.extensions, assetPath, where + " base colour", m.map(MapSlot::BaseColor), notes);
+
+    // Metallic and roughness: one texture, roughness in G, metallic in B (glTF 3.9.2).
+    m.setFactor(MapSlot::Metallic, clamped(pbr.metallicFactor, 0.0, 1.0, where + " metallicFactor", notes));
+    m.setFactor(
+        MapSlot::Roughness, clamped(pbr.roughnessFactor, 0.0, 1.0, where + " roughnessFactor", notes));
+    MaterialMap packed;
+    if (readTexture(model, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+            pbr.metallicRoughnessTexture.extensions, assetPath, where + " metallic-roughness", packed,
+            notes)) {
+        for (MapSlot slot : {MapSlot::Metallic, MapSlot::Roughness}) {
+            MaterialMap& map = m.map(slot);
+            map.path = packed.path;
+            map.uv = packed.uv;
+            map.texCoord = packed.texCoord;
+            map.sampler = packed.sampler;
+            map.colorSpace = ColorEncoding::Linear;
+            map.channel = slot == MapSlot::Metallic ? MapChannel::B : MapChannel::G;
+        }
+    }
+
+    // Normal: tangent space, OpenGL convention (+Y green), X and Y scaled by `scale` (3.9.3).
+    MaterialMap& normal = m.map(MapSlot::Normal);
+    normal.factor
+        = glm::dvec4(clamped(g.normalTexture.scale, 0.0, 10.0, where + " normalTexture.scale", notes));
+    readTexture(model, g.normalTexture.index, g.normalTexture.texCoord, g.normalTexture.extensions, assetPath,
+        where + " normal", normal, notes);
+
+    // Occlusion: R channel, mix(1, ao, strength) (3.9.4).
+    MaterialMap& occlusion = m.map(MapSlot::Occlusion);
+    occlusion.factor
+        = glm::dvec4(clamped(g.occlusionTexture.strength, 0.0, 1.0, where + " occlusion strength", notes));
+    occlusion.channel = MapChannel::R;
+    readTexture(model, g.occlusionTexture.index, g.occlusionTexture.texCoord, g.occlusionTexture.extensions,
+        assetPath, where + " occlusion", occlusion, notes);
+
+    // Emissive: linear RGB factor x sRGB texture x KHR_materials_emissive_strength (3.9.5).
+    MaterialMap& emissive = m.map(MapSlot::Emissive);
+    glm::dvec4 emissiveFactor(0.0, 0.0, 0.0, 1.0);
+    for (std::size_t c = 0; c < 3 && c < g.emissiveFactor.size(); ++c)
+        emissiveFactor[int(c)] = clamped(g.emissiveFactor[c], 0.0, 1.0, where + " emissiveFactor", notes);
+    emissive.factor = emissiveFactor;
+    readTexture(model, g.emissiveTexture.index, g.emissiveTexture.texCoord, g.emissiveTexture.extensions,
+        assetPath, where + " emissive", emissive, notes);
+
+    // Alpha (3.9.6) and sidedness.
+    if (g.alphaMode == "MASK")
+        m.alphaMode = AlphaMode::Mask;
+    else if (g.alphaMode == "BLEND")
+        m.alphaMode = AlphaMode::Blend;
+    else if (g.alphaMode != "OPAQUE" && !g.alphaMode.empty())
+        notes.add(where + " has an unknown alphaMode \"" + g.alphaMode + "\": opaque used");
+    m.alphaCutoff = clamped(g.alphaCutoff, 0.0, 1.0, where + " alphaCutoff", notes);
+    m.doubleSided = g.doubleSided;
+
+    // Extensions of the material model.
+    static const std::set<std::string> kRead
+        = {"KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_unlit"};
+    for (const auto& [name, value] : g.extensions) {
+        if (name == "KHR_materials_emissive_strength") {
+            if (value.Has("emissiveStrength") && value.Get("emissiveStrength").IsNumber())
+                m.emissiveStrength = clamped(value.Get("emissiveStrength").GetNumberAsDouble(), 0.0,
+                    Material::kMaxEmissiveStrength, where + " emissiveStrength", notes);
+        } else if (name == "KHR_materials_ior") {
+            if (value.Has("ior") && value.Get("ior").IsNumber())
+                m.ior = clamped(value.Get("ior").GetNumberAsDouble(), 1.0, 5.0, where + " ior", notes);
+        } else if (name == "KHR_materials_unlit") {
+            m.unlit = true; // an empty object: its presence is the whole extension
+        } else if (!kRead.count(name)) {
+            notes.add(
+                "the material extension " + name + " is not supported: previewed as metallic-roughness");
+        }
+    }
+    return m;
+}
+
+} // namespace facet::gltfsupport
+
+namespace facet {
+
+namespace {
+// WebGL's numbers, as glTF 2.0 stores them.
+constexpr std::pair<TextureFilter, int> kGltfFilters[]
+    = {{TextureFilter::Nearest, 9728}, {TextureFilter::Linear, 9729},
+        {TextureFilter::NearestMipmapNearest, 9984}, {TextureFilter::LinearMipmapNearest, 9985},
+        {TextureFilter::NearestMipmapLinear, 9986}, {TextureFilter::LinearMipmapLinear, 9987}};
+constexpr std::pair<TextureWrap, int> kGltfWraps[]
+    = {{TextureWrap::ClampToEdge, 33071}, {TextureWrap::MirroredRepeat, 33648}, {TextureWrap::Repeat, 10497}};
+
+template <typename Enum, std::size_t N>
+Enum fromGltfNumber(const std::pair<Enum, int> (&table)[N], int number, Enum otherwise)
+{
+    for (const auto& [value, gl] : table)
+        if (gl == number)
+            return value;
+    return otherwise;
+}
+template <typename Enum, std::size_t N> int toGltfNumber(const std::pair<Enum, int> (&table)[N], Enum value)
+{
+    for (const auto& [v, gl] : table)
+        if (v == value)
+            return gl;
+    return -1;
+}
+} // namespace
+
+TextureSampler textureSamplerFromGltf(int magFilter, int minFilter, int wrapS, int wrapT)
+{
+    TextureSampler sampler;
+    sampler.magFilter = fromGltfNumber(kGltfFilters, magFilter, TextureFilter::Auto);
+    if (sampler.magFilter != TextureFilter::Nearest && sampler.magFilter != TextureFilter::Linear)
+        sampler.magFilter = TextureFilter::Auto; // a minification value where magnification belongs
+    sampler.minFilter = fromGltfNumber(kGltfFilters, minFilter, TextureFilter::Auto);
+    sampler.wrapS = fromGltfNumber(kGltfWraps, wrapS, TextureWrap::Repeat);
+    sampler.wrapT = fromGltfNumber(kGltfWraps, wrapT, TextureWrap::Repeat);
+    return sampler;
+}
+
+std::array<int, 4> gltfSamplerValues(const TextureSampler& sampler)
+{
+    return {toGltfNumber(kGltfFilters, sampler.magFilter), toGltfNumber(kGltfFilters, sampler.minFilter),
+        toGltfNumber(kGltfWraps, sampler.wrapS), toGltfNumber(kGltfWraps, sampler.wrapT)};
+}
+
+} // namespace facet

@@ -1,0 +1,210 @@
+#include "core/material/Material.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include "core/material/MaterialProperties.h"
+#include "core/support/EnumNames.h"
+#include "core/support/Failure.h"
+
+namespace facet {
+
+namespace {
+constexpr std::pair<MapSlot, const char*> kSlots[] = {{MapSlot::BaseColor, "baseColor"},
+    {MapSlot::Normal, "normal"}, {MapSlot::Metallic, "metallic"}, {MapSlot::Roughness, "roughness"},
+    {MapSlot::Occlusion, "occlusion"}, {MapSlot::Emissive, "emissive"}};
+constexpr std::pair<AlphaMode, const char*> kAlphaModes[]
+    = {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}};
+constexpr std::pair<MapChannel, const char*> kChannels[] = {{MapChannel::Rgb, "rgb"}, {MapChannel::R, "r"},
+    {MapChannel::G, "g"}, {MapChannel::B, "b"}, {MapChannel::A, "a"}};
+constexpr std::pair<ColorEncoding, const char*> kEncodings[]
+    = {{ColorEncoding::SRGB, "srgb"}, {ColorEncoding::Linear, "linear"}};
+constexpr std::pair<TextureWrap, const char*> kWraps[] = {{TextureWrap::Repeat, "repeat"},
+    {TextureWrap::ClampToEdge, "clampToEdge"}, {TextureWrap::MirroredRepeat, "mirroredRepeat"}};
+constexpr std::pair<TextureFilter, const char*> kFilters[]
+    = {{TextureFilter::Auto, "auto"}, {TextureFilter::Nearest, "nearest"}, {TextureFilter::Linear, "linear"},
+        {TextureFilter::NearestMipmapNearest, "nearestMipmapNearest"},
+        {TextureFilter::LinearMipmapNearest, "linearMipmapNearest"},
+        {TextureFilter::NearestMipmapLinear, "nearestMipmapLinear"},
+        {TextureFilter::LinearMipmapLinear, "linearMipmapLinear"}};
+
+std::string number(double value)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", value);
+    return buffer;
+}
+
+// "<field>: <value> is outside [lo, hi]" when value is not a finite number within the range.
+bool checkRange(double value, double lo, double hi, const std::string& field, std::string* problem)
+{
+    if (std::isfinite(value) && value >= lo && value <= hi)
+        return true;
+    if (problem)
+        *problem = field + ": " + number(value) + " is outside [" + number(lo) + ", " + number(hi) + "]";
+    return false;
+}
+
+bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
+{
+    // The factors' ranges are the property registry's (Material::validate checks them first).
+    const std::string key = toString(slot);
+    if (slot == MapSlot::Emissive) {
+        // Carried, never used: still a number a file can hold.
+        if (!checkRange(map.factor.a, 0.0, 1.0, key + ".factor.a", problem))
+            return false;
+    } else if (!isColorSlot(slot)) {
+        if (map.factor.y != map.factor.x || map.factor.z != map.factor.x || map.factor.w != map.factor.x)
+            return fail(key + ".factor: a scalar factor must have equal components (use Material::setFactor)",
+                problem);
+    }
+    if ((slot == MapSlot::Normal || slot == MapSlot::Emissive) && map.channel != MapChannel::Rgb)
+        return fail(
+            key + ".channel: a" + (slot == MapSlot::Normal ? " normal" : "n emissive") + " map reads \"rgb\"",
+            problem);
+    if (isScalarSlot(slot) && map.channel == MapChannel::Rgb)
+        return fail(
+            key + ".channel: a " + key + " map reads one channel (\"r\", \"g\", \"b\" or \"a\"), not \"rgb\"",
+            problem);
+    if (map.invert && !isScalarSlot(slot))
+        return fail(key + ".invert: only metallic, roughness and occlusion maps can be inverted", problem);
+    if (map.flipGreen && slot != MapSlot::Normal)
+        return fail(key + ".flipGreen: only the normal map has a green-channel convention", problem);
+    // A zero scale collapses the texture to one texel, which is never what was meant.
+    for (int i = 0; i < 2; ++i) {
+        const char* axis = i == 0 ? "u" : "v";
+        if (!std::isfinite(map.uv.scale[i]) || map.uv.scale[i] == 0.0)
+            return fail(
+                key + ".uv.scale." + axis + ": " + number(map.uv.scale[i]) + " must be finite and non-zero",
+                problem);
+        if (!std::isfinite(map.uv.offset[i]))
+            return fail(key + ".uv.offset." + axis + ": must be finite", problem);
+    }
+    if (!std::isfinite(map.uv.rotationDegrees))
+        return fail(key + ".uv.rotationDegrees: must be finite", problem);
+    if (map.texCoord < 0 || map.texCoord >= kTexCoordSets)
+        return fail(
+            key + ".texCoord: " + std::to_string(map.texCoord) + " is not a texture-coordinate set (0 or 1)",
+            problem);
+    const TextureFilter mag = map.sampler.magFilter;
+    if (mag != TextureFilter::Auto && mag != TextureFilter::Nearest && mag != TextureFilter::Linear)
+        return fail(key + ".sampler.magFilter: \"" + std::string(toString(mag))
+                + "\" is a minification filter (magnification is \"auto\", \"nearest\" or \"linear\")",
+            problem);
+    return true;
+}
+} // namespace
+
+const char* toString(MapSlot slot)
+{
+    return enumName(kSlots, slot);
+}
+std::optional<MapSlot> mapSlotFromString(std::string_view name)
+{
+    return enumFromName(kSlots, name);
+}
+const char* toString(AlphaMode mode)
+{
+    return enumName(kAlphaModes, mode);
+}
+std::optional<AlphaMode> alphaModeFromString(std::string_view name)
+{
+    return enumFromName(kAlphaModes, name);
+}
+const char* toString(MapChannel channel)
+{
+    return enumName(kChannels, channel);
+}
+std::optional<MapChannel> mapChannelFromString(std::string_view name)
+{
+    return enumFromName(kChannels, name);
+}
+const char* toString(ColorEncoding encoding)
+{
+    return enumName(kEncodings, encoding);
+}
+std::optional<ColorEncoding> colorEncodingFromString(std::string_view name)
+{
+    return enumFromName(kEncodings, name);
+}
+
+const char* toString(TextureWrap wrap)
+{
+    return enumName(kWraps, wrap);
+}
+std::optional<TextureWrap> textureWrapFromString(std::string_view name)
+{
+    return enumFromName(kWraps, name);
+}
+const char* toString(TextureFilter filter)
+{
+    return enumName(kFilters, filter);
+}
+std::optional<TextureFilter> textureFilterFromString(std::string_view name)
+{
+    return enumFromName(kFilters, name);
+}
+
+glm::dmat3 UvTransform::matrix() const
+{
+    // KHR_texture_transform's GLSL, verbatim in meaning: matrix = translation * rotation * scale,
+    // glm and GLSL both take the columns in order.
+    const double r = rotationDegrees * std::numbers::pi / 180.0;
+    const double c = std::cos(r);
+    const double s = std::sin(r);
+    const glm::dmat3 translation(1.0, 0.0, 0.0, 0.0, 1.0, 0.0, offset.x, offset.y, 1.0);
+    const glm::dmat3 rotation(c, s, 0.0, -s, c, 0.0, 0.0, 0.0, 1.0);
+    const glm::dmat3 scaling(scale.x, 0.0, 0.0, 0.0, scale.y, 0.0, 0.0, 0.0, 1.0);
+    return translation * rotation * scaling;
+}
+
+glm::dvec2 UvTransform::apply(const glm::dvec2& uv) const
+{
+    const glm::dvec3 p = matrix() * glm::dvec3(uv, 1.0);
+    return {p.x, p.y};
+}
+
+std::array<MaterialMap, kMapSlotCount> Material::defaultMaps()
+{
+    std::array<MaterialMap, kMapSlotCount> maps;
+    MaterialMap& baseColor = maps[std::size_t(MapSlot::BaseColor)];
+    baseColor.factor = glm::dvec4(0.8, 0.8, 0.8, 1.0);
+    baseColor.colorSpace
+        = ColorEncoding::SRGB; // colour textures are sRGB-encoded (docs/architecture.md, "Textures")
+    // Scalar maps default to the channels of an ORM / glTF metallicRoughness texture; a greyscale
+    // texture has the same value in every channel, so the defaults suit it too.
+    maps[std::size_t(MapSlot::Metallic)].factor = glm::dvec4(0.0);
+    maps[std::size_t(MapSlot::Metallic)].channel = MapChannel::B;
+    maps[std::size_t(MapSlot::Roughness)].factor = glm::dvec4(0.5);
+    maps[std::size_t(MapSlot::Roughness)].channel = MapChannel::G;
+    maps[std::size_t(MapSlot::Occlusion)].factor = glm::dvec4(1.0);
+    maps[std::size_t(MapSlot::Occlusion)].channel = MapChannel::R;
+    maps[std::size_t(MapSlot::Normal)].factor = glm::dvec4(1.0);
+    // glTF's emissiveFactor default: no emission until a colour (or a texture and factor) is given.
+    MaterialMap& emissive = maps[std::size_t(MapSlot::Emissive)];
+    emissive.factor = glm::dvec4(0.0, 0.0, 0.0, 1.0);
+    emissive.colorSpace = ColorEncoding::SRGB;
+    return maps;
+}
+
+double Material::dielectricF0() const
+{
+    return f0FromIor(ior);
+}
+
+bool Material::validate(std::string* problem) const
+{
+    for (const MaterialPropertyInfo& info : materialProperties())
+        if (!checkProperty(*this, info.property, problem))
+            return false;
+    for (MapSlot slot : kAllMapSlots)
+        if (!validateMap(slot, map(slot), problem))
+            return false;
+    return true;
+}
+
+} // namespace facet

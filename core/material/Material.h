@@ -1,0 +1,213 @@
+#pragma once
+// The material being authored: glTF 2.0 metallic-roughness (glTF 2.0 specification, section 3.9
+// "Materials", and Appendix B for the BRDF) with Facet's per-map texture options.
+//
+// Every input is a MaterialMap: a constant factor, optionally multiplied by one texture (as glTF
+// does: "the factor multiplies the texture"). The five maps are addressed by MapSlot. The factor's
+// meaning depends on the slot:
+//   baseColor  linear RGBA (glTF baseColorFactor); alpha is carried but Facet renders opaque
+//   normal     strength in x (glTF normalTexture.scale: scales the tangent-space X and Y)
+//   metallic   scalar in x (glTF metallicFactor)
+//   roughness  perceptual roughness in x (glTF roughnessFactor); alpha = roughness^2
+//   occlusion  strength in x (glTF occlusionTexture.strength: mix(1, ao, strength), not a multiplier)
+//   emissive   linear RGB in [0, 1] (glTF emissiveFactor), alpha unused; the emitted radiance is
+//              factor x texture x Material::emissiveStrength (KHR_materials_emissive_strength)
+// For the four scalar slots the factor is kept as (v, v, v, v) (setFactor(slot, v) does that) so
+// that a vec4 uniform reads the same from any component and operator== compares what matters.
+// docs/project-format.md lists every field with its unit and default.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/image/Image.h" // ColorEncoding
+#include "core/shading/Brdf.h"
+#include "core/shading/ShadingModel.h"
+
+namespace facet {
+
+enum class MapSlot { BaseColor, Normal, Metallic, Roughness, Occlusion, Emissive };
+inline constexpr int kMapSlotCount = 6;
+inline constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots = {MapSlot::BaseColor, MapSlot::Normal,
+    MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion, MapSlot::Emissive};
+
+// "baseColor", "normal", "metallic", "roughness", "occlusion", "emissive" (the project file's keys).
+const char* toString(MapSlot slot);
+std::optional<MapSlot> mapSlotFromString(std::string_view name);
+// Metallic, roughness and occlusion hold one number; base colour and normal hold a vector.
+inline bool isScalarSlot(MapSlot slot)
+{
+    return slot == MapSlot::Metallic || slot == MapSlot::Roughness || slot == MapSlot::Occlusion;
+}
+// Base colour and emissive hold colours: sRGB-encoded textures by default, an RGB factor.
+inline bool isColorSlot(MapSlot slot)
+{
+    return slot == MapSlot::BaseColor || slot == MapSlot::Emissive;
+}
+
+// How the base colour's alpha is used (glTF 2.0 material.alphaMode).
+enum class AlphaMode {
+    Opaque, // alpha ignored
+    Mask, // fragments with alpha < alphaCutoff are discarded, the rest are opaque
+    Blend, // composited over what is behind with the "over" operator (premultiplied by alpha)
+};
+const char* toString(AlphaMode mode); // "opaque", "mask", "blend"
+std::optional<AlphaMode> alphaModeFromString(std::string_view name);
+
+// Which channel(s) of the texture a map reads. Scalar maps read one channel, so a packed texture
+// can feed several maps (ORM: R occlusion, G roughness, B metallic; glTF's metallicRoughness
+// texture: G roughness, B metallic). Rgb reads the colour (base colour, normal); base colour may
+// also read one channel of a greyscale texture, replicated.
+enum class MapChannel { Rgb, R, G, B, A };
+const char* toString(MapChannel channel); // "rgb", "r", "g", "b", "a"
+std::optional<MapChannel> mapChannelFromString(std::string_view name);
+
+// The names of ColorEncoding in files: "srgb", "linear".
+const char* toString(ColorEncoding encoding);
+std::optional<ColorEncoding> colorEncodingFromString(std::string_view name);
+
+// Texture coordinate transform, as KHR_texture_transform defines it, but with the rotation in
+// degrees (what the UI shows): uv' = T(offset) * R(rotation) * S(scale) * uv, where the rotation
+// turns counter-clockwise in UV space.
+struct UvTransform {
+    glm::dvec2 scale {1.0, 1.0};
+    glm::dvec2 offset {0.0, 0.0};
+    double rotationDegrees = 0.0;
+
+    bool isIdentity() const { return *this == UvTransform {}; }
+    // The 3x3 matrix of KHR_texture_transform (column-major, for a uniform or glm).
+    glm::dmat3 matrix() const;
+    glm::dvec2 apply(const glm::dvec2& uv) const;
+    bool operator==(const UvTransform&) const = default;
+};
+
+// How a texture is read beyond [0, 1] and between texels: glTF 2.0's sampler (section 3.8.4,
+// "Samplers"), per map. Auto filters are Facet's choice, which is also what glTF leaves to the
+// implementation when the sampler says nothing: linear magnification, trilinear (the View's
+// setting) and anisotropic minification.
+enum class TextureWrap { Repeat, ClampToEdge, MirroredRepeat };
+const char* toString(TextureWrap wrap); // "repeat", "clampToEdge", "mirroredRepeat"
+std::optional<TextureWrap> textureWrapFromString(std::string_view name);
+enum class TextureFilter {
+    Auto,
+    Nearest,
+    Linear,
+    // Minification only:
+    NearestMipmapNearest,
+    LinearMipmapNearest,
+    NearestMipmapLinear,
+    LinearMipmapLinear,
+};
+// "auto", "nearest", "linear", "nearestMipmapNearest", "linearMipmapNearest",
+// "nearestMipmapLinear", "linearMipmapLinear".
+const char* toString(TextureFilter filter);
+std::optional<TextureFilter> textureFilterFromString(std::string_view name);
+
+struct TextureSampler {
+    TextureWrap wrapS = TextureWrap::Repeat; // along u
+    TextureWrap wrapT = TextureWrap::Repeat; // along v
+    TextureFilter magFilter = TextureFilter::Auto; // Auto, Nearest or Linear
+    TextureFilter minFilter = TextureFilter::Auto;
+
+    bool isDefault() const { return *this == TextureSampler {}; }
+    bool operator==(const TextureSampler&) const = default;
+};
+
+// Texture-coordinate sets a map can read (glTF textureInfo.texCoord: TEXCOORD_0, TEXCOORD_1).
+inline constexpr int kTexCoordSets = 2;
+
+struct MaterialMap {
+    std::string path; // texture file (absolute in memory); empty: none, the factor alone
+    glm::dvec4 factor {1.0}; // see the table at the top of this file
+    MapChannel channel = MapChannel::Rgb;
+    ColorEncoding colorSpace = ColorEncoding::Linear; // how the texture's numbers are encoded
+    bool invert = false; // scalar maps: use 1 - value (e.g. a smoothness or gloss map as roughness)
+    bool flipGreen = false; // normal map only: DirectX convention (-Y green); Facet's is OpenGL (+Y)
+    UvTransform uv;
+    int texCoord = 0; // which texture-coordinate set the map reads: 0 or 1 (core/mesh/Mesh.h Vertex::uv, uv1)
+    TextureSampler sampler;
+
+    bool hasTexture() const { return !path.empty(); }
+    bool operator==(const MaterialMap&) const = default;
+};
+
+struct Material {
+    // Smallest perceptual roughness used in shading (Filament's MIN_PERCEPTUAL_ROUGHNESS, desktop:
+    // alpha = 0.045^2 ~ 0.002 keeps the GGX peak within half-float range). The stored roughness
+    // may be 0; the clamp happens when shading (alpha()).
+    static constexpr double kMinPerceptualRoughness = shading::kMinPerceptualRoughness;
+    static constexpr double kDefaultIor = 1.5; // glTF 2.0 / KHR_materials_ior default: F0 = 0.04
+    // The ranges validate() accepts, for callers that offer a value range (wedge axes, sliders).
+    // IOR: 1 is vacuum; 5 is above every transparent dielectric an artist might want (diamond
+    // 2.42, rutile 2.9, germanium ~4 in the infrared).
+    static constexpr double kMinIor = 1.0;
+    static constexpr double kMaxIor = 5.0;
+    // Normal strength scales tangent-space X and Y; beyond 10 the map is noise, below 0 it would
+    // flip both axes, which flipGreen and the texture itself express better.
+    static constexpr double kMaxNormalStrength = 10.0;
+
+    std::string name = "Material";
+    // Index of refraction of the dielectric layer (KHR_materials_ior); metals ignore it and take
+    // F0 from the base colour.
+    double ior = kDefaultIor;
+    ShadingModel shading;
+    // Multiplies the emissive colour (KHR_materials_emissive_strength): emitted radiance in the
+    // scene's linear units, so values above 1 make a light source. [0, kMaxEmissiveStrength].
+    double emissiveStrength = 1.0;
+    static constexpr double kMaxEmissiveStrength = 10000.0; // RGBA16F holds 65504
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    double alphaCutoff = 0.5; // AlphaMode::Mask threshold, [0, 1]
+    // False: faces seen from behind are culled (glTF default). Facet's own materials default to
+    // true so an open mesh shows its inside.
+    bool doubleSided = true;
+    // KHR_materials_unlit: the surface shows its base colour (factor x texture x vertex colour)
+    // as radiance, with no light, environment or emission (the glTF Sample Viewer's
+    // MATERIAL_UNLIT). For baked lighting, stylised assets and photogrammetry.
+    bool unlit = false;
+    // Indexed by MapSlot. Defaults: base colour 0.8 grey (sRGB texture), metallic 0, roughness
+    // 0.5, occlusion 1, normal strength 1, emissive black. (glTF's defaults, metallic 1 and roughness 1,
+    // describe a rough white metal: fine as texture multipliers, poor as a starting material.)
+    std::array<MaterialMap, kMapSlotCount> maps = defaultMaps();
+
+    MaterialMap& map(MapSlot slot) { return maps[std::size_t(slot)]; }
+    const MaterialMap& map(MapSlot slot) const { return maps[std::size_t(slot)]; }
+
+    glm::dvec4 baseColorFactor() const { return map(MapSlot::BaseColor).factor; }
+    double metallic() const { return map(MapSlot::Metallic).factor.x; }
+    double roughness() const { return map(MapSlot::Roughness).factor.x; }
+    double occlusionStrength() const { return map(MapSlot::Occlusion).factor.x; }
+    double normalStrength() const { return map(MapSlot::Normal).factor.x; }
+    // Emitted radiance of an untextured point: the emissive factor times the strength.
+    glm::dvec3 emissive() const { return glm::dvec3(map(MapSlot::Emissive).factor) * emissiveStrength; }
+    // Scalar slots: stores (v, v, v, v). Base colour: use map(MapSlot::BaseColor).factor.
+    void setFactor(MapSlot slot, double value) { map(slot).factor = glm::dvec4(value); }
+    void setBaseColor(const glm::dvec3& linearRgb, double alpha = 1.0)
+    {
+        map(MapSlot::BaseColor).factor = glm::dvec4(linearRgb, alpha);
+    }
+
+    // alpha = clamp(roughness, kMinPerceptualRoughness, 1)^2 (glTF 2.0 Appendix B; Burley 2012).
+    double alpha() const { return shading::alphaFromRoughness(roughness()); }
+    // Normal-incidence reflectance of the dielectric layer from ior.
+    double dielectricF0() const;
+
+    // Checks ranges and per-slot rules. On failure returns false and sets *problem to
+    // "<field>: <problem>" with the field named as the project file names it, e.g.
+    // "roughness.factor: 1.5 is outside [0, 1]" (the caller prefixes "material.").
+    bool validate(std::string* problem) const;
+
+    static std::array<MaterialMap, kMapSlotCount> defaultMaps();
+    bool operator==(const Material&) const = default;
+};
+
+// Schlick's F0 for a dielectric of index `ior` against air, and the inverse (core/shading/Brdf.h):
+// f0FromIor(1.5) = 0.04.
+using shading::f0FromIor;
+using shading::iorFromF0;
+
+} // namespace facet

@@ -1,0 +1,162 @@
+#include "core/material/MaterialProperties.h"
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include <QtGlobal>
+
+namespace facet {
+
+namespace {
+
+using P = MaterialProperty;
+using V = PropertyValue;
+
+// The ranges are the material's constants; MaterialPropertiesTest checks that validate() accepts
+// each end and refuses the next number beyond it.
+constexpr std::array<MaterialPropertyInfo, kMaterialPropertyCount> kProperties = {{
+    {P::BaseColor, "baseColor", "baseColor.factor", "Base colour (linear)", V::Color, 0.0, 1.0,
+        MapSlot::BaseColor, "base-color"},
+    {P::Alpha, "alpha", "baseColor.factor.a", "Base colour alpha", V::Scalar, 0.0, 1.0, MapSlot::BaseColor,
+        nullptr},
+    {P::Metallic, "metallic", "metallic.factor", "Metallic", V::Scalar, 0.0, 1.0, MapSlot::Metallic,
+        "metallic"},
+    {P::Roughness, "roughness", "roughness.factor", "Perceptual roughness", V::Scalar, 0.0, 1.0,
+        MapSlot::Roughness, "roughness"},
+    {P::Occlusion, "occlusion", "occlusion.factor", "Occlusion strength", V::Scalar, 0.0, 1.0,
+        MapSlot::Occlusion, nullptr},
+    {P::Normal, "normal", "normal.factor", "Normal map strength", V::Scalar, 0.0,
+        Material::kMaxNormalStrength, MapSlot::Normal, nullptr},
+    {P::Emissive, "emissive", "emissive.factor", "Emissive colour (linear)", V::Color, 0.0, 1.0,
+        MapSlot::Emissive, nullptr},
+    {P::EmissiveStrength, "emissiveStrength", "emissiveStrength", "Emissive strength", V::Scalar, 0.0,
+        Material::kMaxEmissiveStrength, std::nullopt, nullptr},
+    {P::Ior, "ior", "ior", "Index of refraction", V::Scalar, Material::kMinIor, Material::kMaxIor,
+        std::nullopt, nullptr},
+    {P::AlphaCutoff, "alphaCutoff", "alphaCutoff", "Alpha cutoff", V::Scalar, 0.0, 1.0, std::nullopt,
+        nullptr},
+}};
+
+constexpr bool inEnumOrder()
+{
+    for (std::size_t i = 0; i < kProperties.size(); ++i)
+        if (int(kProperties[i].property) != int(i))
+            return false;
+    return true;
+}
+static_assert(inEnumOrder(), "kProperties must list the properties in the order of the enum");
+
+std::string number(double value)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", value);
+    return buffer;
+}
+
+bool checkRange(
+    double value, const MaterialPropertyInfo& info, const std::string& field, std::string* problem)
+{
+    if (std::isfinite(value) && value >= info.minimum && value <= info.maximum)
+        return true;
+    if (problem)
+        *problem = field + ": " + number(value) + " is outside [" + number(info.minimum) + ", "
+            + number(info.maximum) + "]";
+    return false;
+}
+
+} // namespace
+
+std::span<const MaterialPropertyInfo> materialProperties()
+{
+    return kProperties;
+}
+
+const MaterialPropertyInfo& infoOf(MaterialProperty property)
+{
+    return kProperties[std::size_t(property)];
+}
+
+std::optional<MaterialProperty> materialPropertyFromString(std::string_view name)
+{
+    for (const MaterialPropertyInfo& info : kProperties)
+        if (name == info.name)
+            return info.property;
+    return std::nullopt;
+}
+
+double scalarOf(const Material& material, MaterialProperty property)
+{
+    switch (property) {
+    case P::Alpha:
+        return material.map(MapSlot::BaseColor).factor.a;
+    case P::EmissiveStrength:
+        return material.emissiveStrength;
+    case P::Ior:
+        return material.ior;
+    case P::AlphaCutoff:
+        return material.alphaCutoff;
+    case P::BaseColor:
+    case P::Emissive:
+        break;
+    default:
+        return material.map(*infoOf(property).slot).factor.x;
+    }
+    Q_ASSERT_X(false, "scalarOf", "a colour property");
+    return 0.0;
+}
+
+void setScalar(Material& material, MaterialProperty property, double value)
+{
+    switch (property) {
+    case P::Alpha:
+        material.map(MapSlot::BaseColor).factor.a = value;
+        return;
+    case P::EmissiveStrength:
+        material.emissiveStrength = value;
+        return;
+    case P::Ior:
+        material.ior = value;
+        return;
+    case P::AlphaCutoff:
+        material.alphaCutoff = value;
+        return;
+    case P::BaseColor:
+    case P::Emissive:
+        break;
+    default:
+        material.setFactor(*infoOf(property).slot, value);
+        return;
+    }
+    Q_ASSERT_X(false, "setScalar", "a colour property");
+}
+
+glm::dvec3 colorOf(const Material& material, MaterialProperty property)
+{
+    const MaterialPropertyInfo& info = infoOf(property);
+    Q_ASSERT(info.value == PropertyValue::Color && info.slot);
+    return glm::dvec3(material.map(*info.slot).factor);
+}
+
+void setColor(Material& material, MaterialProperty property, const glm::dvec3& rgb)
+{
+    const MaterialPropertyInfo& info = infoOf(property);
+    Q_ASSERT(info.value == PropertyValue::Color && info.slot);
+    glm::dvec4& factor = material.map(*info.slot).factor;
+    factor = glm::dvec4(rgb, factor.w);
+}
+
+bool checkProperty(const Material& material, MaterialProperty property, std::string* problem)
+{
+    const MaterialPropertyInfo& info = infoOf(property);
+    if (info.value == PropertyValue::Scalar)
+        return checkRange(scalarOf(material, property), info, info.field, problem);
+    static const char* const kComponents[] = {"r", "g", "b"};
+    const glm::dvec3 rgb = colorOf(material, property);
+    for (int i = 0; i < 3; ++i)
+        if (!checkRange(rgb[i], info, std::string(info.field) + "." + kComponents[i], problem))
+            return false;
+    return true;
+}
+
+} // namespace facet

@@ -1,0 +1,78 @@
+#pragma once
+// The material property registry: one row per number or colour an artist sets on a material, with
+// what every part of Facet needs to know of it, so that each fact is written once. Today its
+// readers are Material::validate (the ranges and the fields its messages name), the wedge
+// (core/project/WedgeAxis: an axis of a material property takes its name, field, range and
+// setter from here) and the
+// command line's material flags (`facet render` and `facet sheet`: --base-color, --metallic,
+// --roughness; app/MaterialFlags). A property's default is the default Material's value, read
+// through the row (no second copy). docs/architecture.md, "The material property registry", says
+// how a new property joins.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include <glm/vec3.hpp>
+
+#include "core/material/Material.h"
+
+namespace facet {
+
+enum class MaterialProperty {
+    BaseColor, // the base colour factor's RGB (linear)
+    Alpha, // the base colour factor's alpha
+    Metallic,
+    Roughness, // perceptual
+    Occlusion, // the occlusion map's strength
+    Normal, // the normal map's strength
+    Emissive, // the emissive factor's RGB (linear)
+    EmissiveStrength, // KHR_materials_emissive_strength
+    Ior, // KHR_materials_ior
+    AlphaCutoff,
+};
+inline constexpr int kMaterialPropertyCount = 10;
+
+// What a property holds: one number, or a linear RGB colour whose components each lie in the range.
+enum class PropertyValue { Scalar, Color };
+
+struct MaterialPropertyInfo {
+    MaterialProperty property;
+    // Its short name: the wedge axis's ("roughness", "emissiveStrength", "alpha") and the one
+    // messages use for a command-line value.
+    const char* name;
+    // The field as the project file names it, in every message about it ("roughness.factor",
+    // "ior", "baseColor.factor.a"; a colour's components add ".r", ".g", ".b").
+    const char* field;
+    // What people call it: the command line's help ("Perceptual roughness").
+    const char* label;
+    PropertyValue value;
+    // The inclusive range Material::validate accepts (each component's, for a colour).
+    double minimum;
+    double maximum;
+    // The map whose texture the factor multiplies (glTF's rule); nullopt for a field with no texture.
+    std::optional<MapSlot> slot;
+    // The command-line flag of `facet render` and `facet sheet` ("base-color": --base-color
+    // r,g,b), or null for none; it sets every material of the project.
+    const char* flag;
+};
+
+// Every property, in the order of the enum.
+std::span<const MaterialPropertyInfo> materialProperties();
+const MaterialPropertyInfo& infoOf(MaterialProperty property);
+std::optional<MaterialProperty> materialPropertyFromString(std::string_view name);
+
+// The value of a scalar property of `material`, and setting it (a scalar map's factor keeps its
+// four components equal, Material::setFactor).
+double scalarOf(const Material& material, MaterialProperty property);
+void setScalar(Material& material, MaterialProperty property, double value);
+// A colour property's RGB; setting it keeps the factor's fourth component (the base colour's alpha).
+glm::dvec3 colorOf(const Material& material, MaterialProperty property);
+void setColor(Material& material, MaterialProperty property, const glm::dvec3& rgb);
+
+// Whether `material`'s value of `property` lies in the row's range; false with *problem
+// ("roughness.factor: 1.5 is outside [0, 1]", "baseColor.factor.g: -0.1 is outside [0, 1]").
+bool checkProperty(const Material& material, MaterialProperty property, std::string* problem);
+
+} // namespace facet

@@ -1,0 +1,306 @@
+#include "core/shading/GroundTruth.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <tuple>
+
+#include <glm/geometric.hpp>
+
+#include "core/ibl/EnvironmentSampler.h"
+#include "core/project/Project.h"
+#include "core/shading/Brdf.h"
+#include "core/shading/Punctual.h"
+#include "core/shading/ReferenceView.h"
+#include "core/shading/Sampling.h"
+#include "core/support/Parallel.h"
+
+namespace facet {
+
+namespace {
+
+double luminance(const glm::dvec3& c)
+{
+    return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+}
+
+double powerHeuristic(double pdfA, double pdfB)
+{
+    const double a = pdfA * pdfA;
+    const double b = pdfB * pdfB;
+    return a + b > 0.0 ? a / (a + b) : 0.0;
+}
+
+bool isUsable(const glm::dvec3& c)
+{
+    return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
+}
+
+// Probability of sampling the specular lobe rather than the diffuse one, from the two lobes'
+// approximate albedos at this n.v. Any value in (0, 1] keeps the estimator unbiased (the
+// environment strategy covers the rest); a good one lowers variance.
+double specularSelectionProbability(const MaterialInfo& m, double NoV, GroundTruthSettings::Lobes lobes)
+{
+    if (lobes == GroundTruthSettings::Lobes::LambertOnly)
+        return 0.0;
+    const double metallic = std::clamp(m.metallic, 0.0, 1.0);
+    const glm::dvec3 f0 = glm::mix(glm::dvec3(shading::f0FromIor(m.ior)), m.baseColor, metallic);
+    const double specular = luminance(shading::F_Schlick(f0, 1.0, NoV));
+    const double diffuse = luminance(m.baseColor) * (1.0 - metallic) * (1.0 - specular);
+    if (diffuse <= 0.0)
+        return 1.0;
+    return std::clamp(specular / (specular + diffuse), 0.1, 0.9);
+}
+
+// Radiance a punctual light delivers to the surface point `position`, and the unit direction
+// towards the light (KHR_lights_punctual: directional in lux = lm/m^2, i.e. irradiance at normal
+// incidence; point and spot in candela = lm/sr, i.e. intensity / distance^2 of irradiance).
+bool punctualIrradiance(
+    const Light& light, const glm::dvec3& position, glm::dvec3* toLight, glm::dvec3* irradiance)
+{
+    if (!light.enabled)
+        return false;
+    const glm::dvec3 color = light.linearColor();
+    if (light.type == LightType::Directional) {
+        *toLight = -glm::normalize(light.direction);
+        *irradiance = color * light.intensity;
+        return true;
+    }
+    const glm::dvec3 offset = light.position - position;
+    const double distance = glm::length(offset);
+    if (distance <= 0.0)
+        return false;
+    *toLight = offset / distance;
+    double attenuation = shading::getRangeAttenuation(light.range, distance);
+    if (light.type == LightType::Spot)
+        attenuation *= shading::getSpotAttenuation(*toLight, glm::normalize(light.direction),
+            std::cos(light.outerConeAngle), std::cos(light.innerConeAngle));
+    *irradiance = color * (light.intensity * attenuation);
+    return attenuation > 0.0;
+}
+
+} // namespace
+
+std::shared_ptr<const DfgTable> albedoTable(int size, int samples, Visibility visibility)
+{
+    // Computing a 64 x 64 table at 2048 samples takes about a second: keep the ones made.
+    static std::mutex mutex;
+    static std::map<std::tuple<int, int, Visibility>, std::shared_ptr<const DfgTable>> cache;
+    const std::lock_guard lock(mutex);
+    auto& slot = cache[{size, samples, visibility}];
+    if (!slot)
+        slot = std::make_shared<const DfgTable>(DfgTable::compute(size, samples, visibility));
+    return slot;
+}
+
+glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const MaterialBrdf& brdf,
+    const EnvironmentSampler& sampler, const glm::dvec3& n, const glm::dvec3& v, int samples,
+    std::uint64_t seed, std::uint64_t stream, GroundTruthSettings::Lobes lobes)
+{
+    const MaterialInfo& material = scene.material;
+    if (scene.unlit)
+        return material.baseColor;
+    const Environment& environment = scene.environment;
+    const bool lambertOnly = lobes == GroundTruthSettings::Lobes::LambertOnly;
+    const double NoV = std::clamp(glm::dot(n, v), 0.0, 1.0);
+    const double alpha = shading::alphaFromRoughness(material.perceptualRoughness);
+    glm::dvec3 t;
+    glm::dvec3 b;
+    sampling::buildOrthonormalBasis(n, t, b);
+    const glm::dvec3 vLocal = sampling::worldToTangent(v, t, b, n);
+    const double pSpecular = specularSelectionProbability(material, NoV, lobes);
+
+    auto f = [&](const glm::dvec3& l, LightingKind kind) -> glm::dvec3 {
+        if (lambertOnly)
+            return glm::dot(n, l) > 0.0 ? material.baseColor * shading::kInvPi : glm::dvec3(0.0);
+        return brdf.evaluate(material, n, v, l, kind).total();
+    };
+    // Density of the BRDF strategy (the lobe mixture) for direction l.
+    auto pdfBrdf = [&](const glm::dvec3& l) {
+        const double NoL = glm::dot(n, l);
+        if (NoL <= 0.0)
+            return 0.0;
+        double pdf = (1.0 - pSpecular) * sampling::pdfCosineHemisphere(NoL);
+        if (pSpecular > 0.0) {
+            const glm::dvec3 h = glm::normalize(v + l);
+            pdf += pSpecular * sampling::pdfVNDFReflection(NoV, glm::dot(n, h), alpha);
+        }
+        return pdf;
+    };
+
+    // Randomised quasi-Monte Carlo: the N Hammersley points, shifted per pixel and strategy by a
+    // random offset modulo 1 (Cranley-Patterson rotation). Unbiased like plain Monte Carlo, and
+    // its error falls faster than 1/sqrt(N) on these smooth integrands (docs/accuracy.md).
+    sampling::Pcg32 rng(seed, stream);
+    const glm::dvec2 brdfShift = rng.next2D();
+    const glm::dvec2 environmentShift = rng.next2D();
+    const auto count = std::uint32_t(std::max(samples, 1));
+    auto point = [count](std::uint32_t i, const glm::dvec2& shift) {
+        const glm::dvec2 u = sampling::hammersley(i, count) + shift;
+        return glm::dvec2(u.x - std::floor(u.x), u.y - std::floor(u.y));
+    };
+    glm::dvec3 sum(0.0);
+    for (std::uint32_t s = 0; s < count; ++s) {
+        // BRDF strategy.
+        {
+            // The lobe is chosen by the first coordinate, which is then stretched back to [0, 1):
+            // each lobe keeps a stratified share of the points.
+            glm::dvec3 l;
+            glm::dvec2 u = point(s, brdfShift);
+            if (u.x < pSpecular) {
+                u.x = std::min(u.x / pSpecular, std::nextafter(1.0, 0.0));
+                const glm::dvec3 h = sampling::importanceSampleVNDF(u, vLocal, alpha);
+                l = sampling::tangentToWorld(sampling::reflectAbout(vLocal, h), t, b, n);
+            } else {
+                u.x = std::min((u.x - pSpecular) / (1.0 - pSpecular), std::nextafter(1.0, 0.0));
+                l = sampling::tangentToWorld(sampling::sampleCosineHemisphere(u), t, b, n);
+            }
+            const double NoL = glm::dot(n, l);
+            const double pdf = pdfBrdf(l);
+            if (NoL > 0.0 && pdf > 0.0) {
+                const double weight = powerHeuristic(pdf, sampler.pdf(l));
+                const glm::dvec3 contribution
+                    = f(l, LightingKind::Environment) * environment.radiance(l) * (NoL * weight / pdf);
+                if (isUsable(contribution))
+                    sum += contribution;
+            }
+        }
+        // Environment strategy.
+        {
+            double pdf = 0.0;
+            const glm::dvec3 l = sampler.sample(point(s, environmentShift), &pdf);
+            const double NoL = glm::dot(n, l);
+            if (NoL > 0.0 && pdf > 0.0) {
+                const double weight = powerHeuristic(pdf, pdfBrdf(l));
+                const glm::dvec3 contribution
+                    = f(l, LightingKind::Environment) * environment.radiance(l) * (NoL * weight / pdf);
+                if (isUsable(contribution))
+                    sum += contribution;
+            }
+        }
+    }
+    glm::dvec3 radiance = sum / double(count);
+    // Emission is part of the outgoing radiance (the rendering equation's L_e term).
+    if (!lambertOnly)
+        radiance += material.emissive;
+
+    // Punctual lights: the position on the unit sphere is its normal.
+    for (const Light& light : scene.lights) {
+        glm::dvec3 l;
+        glm::dvec3 irradiance;
+        if (!punctualIrradiance(light, n, &l, &irradiance))
+            continue;
+        const double NoL = glm::dot(n, l);
+        if (NoL > 0.0)
+            radiance += f(l, LightingKind::Punctual) * irradiance * NoL;
+    }
+    return radiance;
+}
+
+Image renderGroundTruth(
+    const GroundTruthScene& scene, const GroundTruthSettings& settings, GroundTruthStats* stats)
+{
+    const auto start = std::chrono::steady_clock::now();
+    const std::shared_ptr<const DfgTable> table
+        = albedoTable(settings.albedoTableSize, settings.albedoTableSamples, scene.model.visibility);
+    const MaterialBrdf brdf(scene.model, *table);
+    const EnvironmentSampler sampler(scene.environment);
+    Image image(settings.width, settings.height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+
+    parallelFor(
+        std::size_t(settings.height),
+        [&](std::size_t row) {
+            const int y = int(row);
+            for (int x = 0; x < settings.width; ++x) {
+                const glm::dvec3 direction
+                    = referenceview::rayDirection(x, y, settings.width, settings.height);
+                glm::dvec3 radiance;
+                // A masked-out material (constant alpha below the cutoff) lets the environment through.
+                const bool culled
+                    = scene.alphaMode == AlphaMode::Mask && scene.material.alpha < scene.alphaCutoff;
+                const auto hit = culled ? std::nullopt : referenceview::intersectSphere(direction);
+                if (hit) {
+                    const std::uint64_t stream
+                        = std::uint64_t(y) * std::uint64_t(settings.width) + std::uint64_t(x);
+                    radiance = integrateOutgoingRadiance(scene, brdf, sampler, *hit, -direction,
+                        settings.samplesPerPixel, settings.seed, stream, settings.lobes);
+                } else if (scene.transparentBackground) {
+                    image.at(x, y) = glm::vec4(0.0f);
+                    continue;
+                } else {
+                    radiance = scene.environment.radiance(direction);
+                }
+                image.at(x, y) = glm::vec4(glm::vec3(radiance), 1.0f);
+            }
+        },
+        settings.threads);
+
+    if (stats) {
+        stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::uint64_t hits = 0;
+        for (int y = 0; y < settings.height; ++y)
+            for (int x = 0; x < settings.width; ++x)
+                hits += referenceview::intersectSphere(
+                            referenceview::rayDirection(x, y, settings.width, settings.height))
+                    ? 1
+                    : 0;
+        stats->samples = hits * std::uint64_t(settings.samplesPerPixel) * 2u;
+    }
+    return image;
+}
+
+} // namespace facet
+
+namespace facet {
+
+std::optional<GroundTruthScene> groundTruthSceneFromProject(
+    const Project& project, std::string* error, std::string* warning)
+{
+    const Material& material = project.material();
+    for (MapSlot slot : kAllMapSlots) {
+        if (material.map(slot).hasTexture()) {
+            if (error)
+                *error = std::string(
+                             "groundTruthSceneFromProject: the ground truth renders constant materials only, "
+                             "but the ")
+                    + toString(slot) + " map uses '" + material.map(slot).path + "'";
+            return std::nullopt;
+        }
+    }
+    if (material.alphaMode == AlphaMode::Blend) {
+        if (error)
+            *error = "groundTruthSceneFromProject: the ground truth renders opaque and masked materials, not "
+                     "alpha "
+                     "mode \"blend\"";
+        return std::nullopt;
+    }
+    GroundTruthScene scene;
+    const glm::dvec4 base = material.baseColorFactor();
+    scene.material.baseColor = glm::dvec3(base);
+    scene.material.alpha = base.a;
+    scene.material.emissive = material.emissive();
+    scene.alphaMode = material.alphaMode;
+    scene.alphaCutoff = material.alphaCutoff;
+    scene.unlit = material.unlit;
+    scene.transparentBackground = project.view.background == BackgroundMode::Transparent;
+    scene.material.metallic = material.metallic();
+    scene.material.perceptualRoughness = material.roughness();
+    scene.material.ior = material.ior;
+    scene.model = material.shading;
+    std::string environmentError;
+    auto environment = Environment::fromSpec(project.environment.source, &environmentError, warning);
+    if (!environment) {
+        if (error)
+            *error = environmentError;
+        return std::nullopt;
+    }
+    environment->setRotationDegrees(project.environment.rotationDegrees);
+    environment->setIntensity(project.environment.intensity);
+    scene.environment = std::move(*environment);
+    scene.lights = project.lights;
+    return scene;
+}
+
+} // namespace facet

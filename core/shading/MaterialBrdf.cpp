@@ -1,0 +1,209 @@
+#include "core/shading/MaterialBrdf.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "core/shading/Brdf.h"
+#include "core/shading/Sampling.h"
+
+namespace facet {
+
+using namespace shading;
+
+MaterialBrdf::MaterialBrdf(const ShadingModel& model, const DfgTable& albedoTable)
+    : m_model(model)
+    , m_table(&albedoTable)
+{
+    assert(!albedoTable.isEmpty());
+    // Precompute the moments of each roughness row with the trapezoid rule over the n.v texels.
+    const int size = albedoTable.size();
+    m_moments.resize(std::size_t(size));
+    for (int y = 0; y < size; ++y) {
+        RowMoments m;
+        for (int x = 0; x < size; ++x) {
+            const double w = 2.0 * DfgTable::texelPosition(x, size) * DfgTable::trapezoidWeight(x, size);
+            const DfgValue t = albedoTable.texel(x, y);
+            const double e = std::max(t.albedo(), 1e-6);
+            const double gain = (1.0 - e) / e;
+            m.bias += t.bias * w;
+            m.scale += t.scale * w;
+            m.scaleGain += t.scale * gain * w;
+            m.biasGain += t.bias * gain * w;
+        }
+        m_moments[std::size_t(y)] = m;
+    }
+}
+
+double MaterialBrdf::distribution(double NoH, double alpha) const
+{
+    switch (m_model.distribution) {
+    case Distribution::GGX:
+        return D_GGX(NoH, alpha);
+    case Distribution::Beckmann:
+        return D_Beckmann(NoH, alpha);
+    }
+    return 0.0;
+}
+
+double MaterialBrdf::visibility(
+    double NoV, double NoL, double alpha, double perceptualRoughness, LightingKind kind) const
+{
+    switch (m_model.visibility) {
+    case Visibility::SmithGGXCorrelated:
+        return V_SmithGGXCorrelated(NoV, NoL, alpha);
+    case Visibility::SmithGGXUncorrelated:
+        return V_SmithGGX(NoV, NoL, alpha);
+    case Visibility::SchlickGGX: {
+        const double k = kind == LightingKind::Punctual ? k_SchlickGGX_direct(perceptualRoughness)
+                                                        : k_SchlickGGX_ibl(alpha);
+        return V_SmithSchlickGGX(NoV, NoL, k);
+    }
+    }
+    return 0.0;
+}
+
+glm::dvec3 MaterialBrdf::multiScatterFactor(
+    const glm::dvec3& f0, double NoV, double perceptualRoughness) const
+{
+    if (!m_model.multiScatter)
+        return glm::dvec3(1.0);
+    // E is the albedo of the lobe with F = 1; a lobe of reflectance f0 loses f0 (1 - E) of the
+    // light to paths of more than one bounce, which the factor adds back in proportion.
+    const double e = std::max(m_table->sample(NoV, clampRoughness(perceptualRoughness)).albedo(), 1e-6);
+    return glm::dvec3(1.0) + f0 * ((1.0 - e) / e);
+}
+
+double MaterialBrdf::dielectricSpecularAlbedo(double f0, double NoV, double perceptualRoughness) const
+{
+    const DfgValue t = m_table->sample(NoV, clampRoughness(perceptualRoughness));
+    return (f0 * t.scale + t.bias) * multiScatterFactor(glm::dvec3(f0), NoV, perceptualRoughness).x;
+}
+
+double MaterialBrdf::dielectricSpecularAverageAlbedo(double f0, double perceptualRoughness) const
+{
+    // E_s = (f0 A + B)(1 + f0 (1 - E) / E) = f0 A + B + f0^2 A (1 - E)/E + f0 B (1 - E)/E, so its
+    // average is a quadratic in f0 whose coefficients are per-row moments, interpolated between
+    // rows as sample() interpolates the table.
+    const int size = m_table->size();
+    const double fy = clampRoughness(perceptualRoughness) * double(size - 1);
+    const auto y0 = std::size_t(fy);
+    const std::size_t y1 = std::min<std::size_t>(y0 + 1, std::size_t(size - 1));
+    const double t = fy - double(y0);
+    auto at = [&](const RowMoments& m) {
+        double avg = f0 * m.scale + m.bias;
+        if (m_model.multiScatter)
+            avg += f0 * f0 * m.scaleGain + f0 * m.biasGain;
+        return avg;
+    };
+    return at(m_moments[y0]) * (1.0 - t) + at(m_moments[y1]) * t;
+}
+
+BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3& n, const glm::dvec3& v,
+    const glm::dvec3& l, LightingKind kind) const
+{
+    const double NoL = glm::dot(n, l);
+    const double NoVraw = glm::dot(n, v);
+    if (NoL <= 0.0 || NoVraw < 0.0)
+        return {};
+    const double NoV = std::min(NoVraw, 1.0);
+    const glm::dvec3 hSum = v + l;
+    const double hLength = glm::length(hSum);
+    // v = -l (grazing from both sides) has no half vector; the lobe is zero there anyway.
+    const glm::dvec3 h = hLength > 0.0 ? hSum / hLength : n;
+    const double NoH = std::clamp(glm::dot(n, h), 0.0, 1.0);
+    const double VoH = std::clamp(glm::dot(v, h), 0.0, 1.0);
+
+    const double roughness = clampRoughness(material.perceptualRoughness);
+    const double alpha = roughness * roughness;
+    const double metallic = std::clamp(material.metallic, 0.0, 1.0);
+    const glm::dvec3 baseColor = glm::max(material.baseColor, glm::dvec3(0.0));
+    const double microfacet = distribution(NoH, alpha) * visibility(NoV, NoL, alpha, roughness, kind);
+    const double f0Dielectric = f0FromIor(material.ior);
+
+    // Diffuse of the dielectric base, before coupling with the specular layer.
+    const glm::dvec3 lambert = baseColor * Fd_Lambert();
+
+    BrdfLobes lobes;
+    if (m_model.composition == BrdfComposition::Gltf) {
+        // glTF 2.0 Appendix B: material = mix(dielectric_brdf, metal_brdf, metallic).
+        const double fDielectric = m_model.fresnel == Fresnel::Dielectric ? F_Dielectric(VoH, material.ior)
+                                                                          : F_Schlick(f0Dielectric, 1.0, VoH);
+        const glm::dvec3 fMetal = F_Schlick(baseColor, 1.0, VoH);
+        const glm::dvec3 msDielectric = multiScatterFactor(glm::dvec3(f0Dielectric), NoV, roughness);
+        const glm::dvec3 msMetal = multiScatterFactor(baseColor, NoV, roughness);
+
+        const glm::dvec3 dielectricSpecular = microfacet * fDielectric * msDielectric;
+        glm::dvec3 dielectricDiffuse;
+        if (m_model.coupling == DielectricCoupling::FresnelMix) {
+            // fresnel_mix(ior, base, layer) = mix(base, layer, F): the base keeps (1 - F(v.h)).
+            dielectricDiffuse = lambert * (1.0 - fDielectric);
+        } else {
+            dielectricDiffuse = lambert * couplingFactor(f0Dielectric, NoV, NoL, roughness);
+        }
+        lobes.diffuse = (1.0 - metallic) * dielectricDiffuse;
+        lobes.specular = (1.0 - metallic) * dielectricSpecular + metallic * microfacet * fMetal * msMetal;
+    } else {
+        // LearnOpenGL / UE4: F0 = mix(0.04, albedo, metallic), kS = F, kD = (1 - kS)(1 - metallic).
+        const glm::dvec3 f0 = glm::mix(glm::dvec3(f0Dielectric), baseColor, metallic);
+        const glm::dvec3 F = F_Schlick(f0, 1.0, VoH);
+        lobes.specular = microfacet * F * multiScatterFactor(f0, NoV, roughness);
+        const glm::dvec3 kD = m_model.coupling == DielectricCoupling::FresnelMix
+            ? (glm::dvec3(1.0) - F) * (1.0 - metallic)
+            : glm::dvec3(couplingFactor(f0Dielectric, NoV, NoL, roughness) * (1.0 - metallic));
+        lobes.diffuse = kD * lambert;
+    }
+    return lobes;
+}
+
+double MaterialBrdf::couplingFactor(double f0, double NoV, double NoL, double perceptualRoughness) const
+{
+    // Energy-preserving coupling [Kelemen & Szirmay-Kalos 2001; Kulla & Conty 2017]: the diffuse
+    // base sees what the specular layer leaves on the way in and on the way out,
+    //     f_d = c / pi * (1 - E_s(mu_o)) (1 - E_s(mu_i)) / (1 - E_s,avg),
+    // which is reciprocal and whose albedo is exactly c (1 - E_s(mu_o)): a white material's
+    // albedo is E_s + (1 - E_s) = 1.
+    const double avg = dielectricSpecularAverageAlbedo(f0, perceptualRoughness);
+    const double eo = dielectricSpecularAlbedo(f0, NoV, perceptualRoughness);
+    const double ei = dielectricSpecularAlbedo(f0, NoL, perceptualRoughness);
+    return std::max(0.0, (1.0 - eo)) * std::max(0.0, (1.0 - ei)) / std::max(1.0 - avg, 1e-6);
+}
+
+} // namespace facet
+
+namespace facet {
+
+glm::dvec3 directionalAlbedo(
+    const MaterialBrdf& brdf, const MaterialInfo& material, double NoV, int sampleCount, LightingKind kind)
+{
+    NoV = std::clamp(NoV, 1e-6, 1.0);
+    const glm::dvec3 n(0.0, 0.0, 1.0);
+    const glm::dvec3 v(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
+    const double alpha = alphaFromRoughness(material.perceptualRoughness);
+    const auto count = std::uint32_t(std::max(sampleCount, 1));
+    auto mixturePdf = [&](const glm::dvec3& l) {
+        const glm::dvec3 h = glm::normalize(v + l);
+        return sampling::pdfCosineHemisphere(l.z) + sampling::pdfVNDFReflection(NoV, h.z, alpha);
+    };
+    glm::dvec3 sum(0.0);
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const glm::dvec2 u = sampling::hammersley(i, count);
+        const glm::dvec3 candidates[2] = {
+            sampling::sampleCosineHemisphere(u),
+            sampling::reflectAbout(v, sampling::importanceSampleVNDF(u, v, alpha)),
+        };
+        for (const glm::dvec3& l : candidates) {
+            if (l.z <= 0.0)
+                continue;
+            const double pdf = mixturePdf(l);
+            if (pdf > 0.0)
+                sum += brdf.evaluate(material, n, v, l, kind).total() * (l.z / pdf);
+        }
+    }
+    return sum / double(count);
+}
+
+} // namespace facet

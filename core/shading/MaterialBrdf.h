@@ -1,0 +1,101 @@
+#pragma once
+// The full material BRDF f(l, v): the lobes of core/shading/Brdf.h composed as the shading model says.
+// This is the CPU twin of resources/shaders/surface.frag's lobe accumulation, and what the
+// ground-truth integrator integrates. docs/shading.md derives each composition.
+//
+// f excludes the cosine n.l. Lobes are kept apart (as the glTF Sample Viewer's pbr.frag does) so
+// that debug views and tests can look at each.
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/shading/DfgTable.h"
+#include "core/shading/ShadingModel.h"
+
+namespace facet {
+
+// The material's inputs at one surface point, after textures and factors were applied
+// (glTF Sample Viewer's MaterialInfo).
+struct MaterialInfo {
+    glm::dvec3 baseColor {1.0}; // linear
+    double metallic = 0.0;
+    double perceptualRoughness = 0.5; // clamped to kMinPerceptualRoughness when used
+    double ior = 1.5;
+    // Ambient occlusion: multiplies image-based (indirect) light only, as the real-time shader
+    // does; the ground truth ignores it (it traces no occluders).
+    double occlusion = 1.0;
+    // Emitted radiance (emissive factor x texture x strength), added to what the surface reflects.
+    glm::dvec3 emissive {0.0};
+    // Coverage from the base colour's alpha (factor x texture); used by AlphaMode Mask and Blend.
+    double alpha = 1.0;
+};
+
+// Where the light comes from. It only matters for the LearnOpenGL variant, whose Schlick-GGX
+// geometry uses k = (r + 1)^2 / 8 for punctual lights and k = alpha / 2 for image-based light.
+enum class LightingKind { Punctual, Environment };
+
+struct BrdfLobes {
+    glm::dvec3 diffuse {0.0};
+    glm::dvec3 specular {0.0};
+    glm::dvec3 total() const { return diffuse + specular; }
+};
+
+class MaterialBrdf {
+public:
+    // `albedoTable` supplies the directional albedo E(n.v, r) for multiple-scattering
+    // compensation and the energy-preserving coupling; it must have been computed with the same
+    // visibility term as `model` (Q_ASSERT-level contract: checked in debug builds). The table
+    // is referenced, not copied: it must outlive this object.
+    MaterialBrdf(const ShadingModel& model, const DfgTable& albedoTable);
+
+    const ShadingModel& model() const { return m_model; }
+
+    // f(l, v) for unit n, v, l (all in the same space). Zero when l or v is below the surface.
+    BrdfLobes evaluate(const MaterialInfo& material, const glm::dvec3& n, const glm::dvec3& v,
+        const glm::dvec3& l, LightingKind kind = LightingKind::Environment) const;
+
+    // Multiple-scattering compensation factor for the specular lobe of reflectance f0 at n.v:
+    // 1 + f0 (1 - E) / E [Turquin 2019, "Practical multiple scattering compensation for
+    // microfacet models"; Kulla & Conty 2017]. 1 when the model turns compensation off.
+    glm::dvec3 multiScatterFactor(const glm::dvec3& f0, double NoV, double perceptualRoughness) const;
+
+    // Directional albedo of the dielectric specular layer (Schlick, F90 = 1) including
+    // compensation, E_s(mu) = (f0 scale + bias) * (1 + f0 (1 - E) / E): what the layer reflects.
+    double dielectricSpecularAlbedo(double f0, double NoV, double perceptualRoughness) const;
+    // Its cosine-weighted average 2 * integral E_s(mu) mu dmu (trapezoid rule over the table's n.v texels).
+    double dielectricSpecularAverageAlbedo(double f0, double perceptualRoughness) const;
+
+private:
+    double visibility(
+        double NoV, double NoL, double alpha, double perceptualRoughness, LightingKind kind) const;
+    double distribution(double NoH, double alpha) const;
+    // The energy-preserving coupling's scale of the dielectric diffuse lobe.
+    double couplingFactor(double f0, double NoV, double NoL, double perceptualRoughness) const;
+
+    // Per roughness row of the table, the cosine-weighted moments that make the average albedo
+    // of the compensated dielectric layer a quadratic in f0 (see dielectricSpecularAverageAlbedo).
+    struct RowMoments {
+        double bias = 0.0; // 2 int B mu
+        double scale = 0.0; // 2 int A mu
+        double scaleGain = 0.0; // 2 int A (1 - E) / E mu
+        double biasGain = 0.0; // 2 int B (1 - E) / E mu
+    };
+
+    ShadingModel m_model;
+    const DfgTable* m_table = nullptr;
+    std::vector<RowMoments> m_moments;
+};
+
+} // namespace facet
+
+namespace facet {
+
+// The directional albedo of the material seen from n.v: integral of f(l, v) (n.l) over the
+// hemisphere, by `sampleCount` Hammersley points drawn from each of the cosine and the
+// visible-normal GGX distributions, combined with the balance heuristic. Deterministic. This is
+// the white-furnace response of the BRDF: <= 1 for an energy-conserving material.
+glm::dvec3 directionalAlbedo(const MaterialBrdf& brdf, const MaterialInfo& material, double NoV,
+    int sampleCount, LightingKind kind = LightingKind::Environment);
+
+} // namespace facet

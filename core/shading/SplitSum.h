@@ -1,0 +1,43 @@
+#pragma once
+// The image-based lighting of the real-time renderer, on the CPU: the split sum [Karis 2013]
+// with the composition of the material model, exactly as resources/shaders/
+// environment_lighting.glsl environmentLobes() computes it, so tests can compare GPU pixels
+// against it. With a uniform environment the prefiltered radiance and the irradiance are exact
+// (L and pi L), so the only approximations left are the split sum's own (see
+// docs/rendering.md, "Image-based lighting").
+
+#include <glm/vec3.hpp>
+
+#include "core/shading/MaterialBrdf.h"
+
+namespace facet {
+
+struct SplitSumLighting {
+    glm::dvec3 prefilteredRadiance {0.0}; // prefiltered(R, lodFromRoughness(r)), intensity applied
+    glm::dvec3 irradiance {0.0}; // E(n), not divided by pi, intensity applied
+};
+
+// Outgoing radiance lobes towards a viewer at n.v = NoV (before ambient occlusion):
+//   specular = prefiltered * (F0 scale + bias) * M(F0)      per lobe (glTF: dielectric F0 and
+//                                                            base colour, mixed by metallic)
+//   diffuse  = E / pi * c * w_d, with w_d:
+//     glTF, fresnel_mix         (1 - m) (1 - F0_d) W(n.v)       W = DfgValue::diffuseFresnelWeight
+//     glTF, energy preserving   (1 - m) (1 - E_s(n.v))          E_s = dielectricSpecularAlbedo
+//     LearnOpenGL, fresnel_mix  (1 - m) (1 - F0) W(n.v)
+//     LearnOpenGL, energy pres. (1 - m) (1 - E_s(n.v))
+// fresnel_mix's weights are the albedo of its base c / pi (1 - F(v.h)), the ground truth's model
+// (a white dielectric's albedo reaches 1.86 at grazing view: docs/energy.md); the split sum only
+// separates it from the irradiance, as it does the specular lobe from the prefiltered radiance.
+// `brdf`'s model selects the composition and multi-scatter; `table` is the DFG LUT the renderer
+// samples (the one `brdf` was made with), looked up bilinearly as GL_LINEAR does.
+// The direction the renderer reads the prefiltered map at for normal n, mirror direction R
+// (both unit) and alpha = roughness^2: normalize(lerp(n, R, s (sqrt(s) + alpha))), s = 1 - alpha
+// [Lagarde & de Rousiers 2014, "Moving Frostbite to PBR", listing 22]. The peak of a rough lobe
+// leans from R towards n; docs/ibl.md ("Dominant direction") has the measurement behind the
+// choice. GLSL twin: resources/shaders/ibl_lookup.glsl.
+glm::dvec3 specularDominantDirection(const glm::dvec3& n, const glm::dvec3& R, double alpha);
+
+BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, const MaterialInfo& material,
+    double NoV, const SplitSumLighting& lighting);
+
+} // namespace facet

@@ -1,0 +1,521 @@
+#include "ui/viewport/SceneController.h"
+
+#include "core/gltf/GltfImport.h"
+#include "core/image/MapImageCache.h"
+#include "core/project/Project.h"
+#include "render/SceneFromProject.h"
+#include "render/Turntable.h"
+#include "ui/document/Document.h"
+#include "ui/document/DocumentAssets.h"
+#include "ui/widgets/WindowMessages.h"
+
+#include <QDateTime>
+#include <QDebug>
+#include <QFileInfo>
+#include <QThread>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <functional>
+#include <map>
+
+namespace facet {
+
+namespace {
+
+std::int64_t modificationTime(const std::string& path)
+{
+    return QFileInfo(QString::fromStdString(path)).lastModified().toMSecsSinceEpoch();
+}
+
+} // namespace
+
+SceneController::SceneController(Document* document, DocumentAssets* assets, QObject* parent)
+    : QObject(parent)
+    , m_document(document)
+    , m_documentAssets(assets ? assets : new DocumentAssets(this))
+    , m_documentAssetsAlive(m_documentAssets)
+{
+    // Decoding is CPU work beside llvmpipe's own threads and the GUI thread: leave a core to
+    // them (one worker on a 2-core machine), at most 4.
+    m_mapPool.setMaxThreadCount(std::clamp(QThread::idealThreadCount() - 1, 1, 4));
+    connect(m_document, &Document::changed, this, &SceneController::onDocumentChanged);
+    connect(m_documentAssets, &DocumentAssets::assetArrived, this, &SceneController::onAssetArrived);
+    // The environment shown got its pixels (it came from the environment index undecoded): what
+    // waits for them (a refinement by fis or reference) can start.
+    connect(m_documentAssets, &DocumentAssets::environmentDecoded, this, [this](quint64 contentHash) {
+        if (m_environmentHeld && m_environmentHeld->contentHash() == contentHash)
+            Q_EMIT sceneChanged(false);
+    });
+    loadEnvironment();
+    loadMesh();
+    loadMaps(DocumentChange::WholeProject);
+}
+
+void SceneController::onDocumentChanged(const DocumentChanges& changes)
+{
+    if (changes.testFlag(DocumentChange::EnvironmentSource)
+        && m_document->project().environment.source != m_environmentSource)
+        loadEnvironment();
+    else if (changes
+        & (DocumentChangeKinds(DocumentChange::EnvironmentRotation) | DocumentChange::EnvironmentIntensity))
+        applyEnvironmentSettings();
+    if (changes.testFlag(DocumentChange::IblQuality))
+        ++m_iblKey;
+    const ViewSettings& view = m_document->project().view;
+    if (changes.testFlag(DocumentChange::Mesh)
+        && DocumentAssets::meshSource(view.mesh, view.keepUnits) != m_meshSource)
+        loadMesh();
+    if (changes.testFlag(DocumentChange::MaterialMaps))
+        loadMaps(changes);
+    if (isDrawn(changes))
+        Q_EMIT sceneChanged(m_document->interactiveEditOpen());
+}
+
+bool SceneController::isDrawn(const DocumentChanges& changes) const
+{
+    constexpr DocumentChangeKinds materialKinds
+        = DocumentChange::MaterialFactors | DocumentChange::MaterialMaps | DocumentChange::Shading;
+    // Which material the docks edit is not drawn: choosing one must not cost a frame; nor is the
+    // compare layout (the Compare view draws it). Every other kind but materials and lights is
+    // (the environment, the view, the camera, the mesh, parts).
+    const DocumentChangeKinds others = DocumentChangeKinds(DocumentChange::WholeProject) & ~materialKinds
+        & ~DocumentChangeKinds(DocumentChange::Lights) & ~DocumentChangeKinds(DocumentChange::CurrentMaterial)
+        & ~DocumentChangeKinds(DocumentChange::Compare);
+    if (changes & others)
+        return true;
+    const Project& project = m_document->project();
+    if (changes & DocumentChange::Lights) {
+        if (!changes.namesLights() || changes.lightList().firstShifted() != DocumentChanges::kNone)
+            return true;
+        // A light's name is not drawn, nor anything of a light that stays off.
+        for (const auto& [index, changed] : changes.lightEdits()) {
+            const bool off = index < project.lights.size() && !project.lights[index].enabled
+                && !changed.testFlag(LightProperty::Enabled);
+            if ((changed & ~LightProperties(LightProperty::Name)) && !off)
+                return true;
+        }
+    }
+    if (changes & materialKinds) {
+        if (!changes.namesMaterials() || changes.materialList().firstShifted() != DocumentChanges::kNone)
+            return true;
+        // A material's name is not drawn, nor a material that no visible part shows.
+        const std::vector<bool> shown = shownMaterials();
+        for (const auto& [index, change] : changes.materialEdits()) {
+            MaterialChange drawn = change;
+            drawn.properties &= ~MaterialFields(MaterialField::Name);
+            if (!drawn.isEmpty() && index < shown.size() && shown[index])
+                return true;
+        }
+    }
+    return false;
+}
+
+std::vector<bool> SceneController::shownMaterials() const
+{
+    // The parts of the mesh in assets() (the one drawn), with Project::materialOfPart's rule: a
+    // mesh without sub-meshes is one part showing material 0.
+    const Project& project = m_document->project();
+    std::vector<bool> shown(project.materials.size(), false);
+    const std::size_t parts = m_assets.mesh ? std::max<std::size_t>(m_assets.mesh->subMeshes.size(), 1) : 1;
+    for (std::size_t part = 0; part < parts; ++part)
+        if (project.isPartVisible(part))
+            shown[std::size_t(project.materialOfPart(part))] = true;
+    return shown;
+}
+
+void SceneController::report(const std::string& text)
+{
+    if (text.empty())
+        return;
+    // The log keeps core's precise message; the window gets its wording (ui/widgets/WindowMessages.h).
+    qWarning().noquote() << "facet:" << QString::fromStdString(text);
+    Q_EMIT message(WindowMessages::fromCore(text));
+}
+
+void SceneController::setEnvironmentProblem(const QString& problem)
+{
+    if (problem == m_environmentProblem)
+        return;
+    m_environmentProblem = problem;
+    Q_EMIT environmentProblemChanged(problem);
+}
+
+void SceneController::loadEnvironment()
+{
+    m_environmentSource = m_document->project().environment.source;
+    ++m_loadCounts.environments;
+    // Choosing it again (a relink, a reload) tries a file that failed before.
+    m_documentAssets->retry(DocumentAssets::Kind::Environment, m_environmentSource);
+    m_environmentPending = true;
+    setEnvironmentProblem({}); // the previous choice's problem is not this one's
+    if (!takeEnvironment())
+        applyEnvironmentSettings(); // the one shown keeps the project's rotation and intensity
+}
+
+bool SceneController::takeEnvironment()
+{
+    if (!m_environmentPending)
+        return false;
+    const std::string& source = m_environmentSource;
+    using Kind = DocumentAssets::Kind;
+    const std::shared_ptr<const Environment> loaded = m_documentAssets->environment(source);
+    m_documentAssets->setInUse(this, Kind::Environment, {source});
+    const bool loading = m_documentAssets->isLoading(Kind::Environment, source);
+    if (!loaded && loading) {
+        announceLoading(source);
+        return false; // the previous one stays until it arrives
+    }
+    // A file changed on disk comes back in its previous version while the new one loads: take
+    // that now and stay pending for the new one.
+    m_environmentPending = loading;
+    if (!loaded) {
+        // Keep showing the previous one (a relink or another choice will replace it), or the
+        // built-in studio when there is none; the window says which, and why.
+        const std::string error = m_documentAssets->problem(Kind::Environment, source);
+        const bool first = m_assets.environment.isEmpty();
+        if (first) {
+            m_assets.environment = Environment::builtin(Environment::Builtin::Studio);
+            ++m_iblKey;
+        }
+        applyEnvironmentSettings();
+        qWarning().noquote() << "facet: Environment:" << QString::fromStdString(error);
+        const QString problem = WindowMessages::fromCore(error);
+        setEnvironmentProblem(problem);
+        Q_EMIT message(WindowMessages::environmentNotUsed(problem, environmentName()));
+        return first;
+    } else {
+        if (loaded == m_environmentHeld)
+            return false; // the entry shown already
+        m_environmentHeld = loaded;
+        report(m_documentAssets->warning(Kind::Environment, source));
+        setEnvironmentProblem({});
+        m_assets.environment = *loaded;
+    }
+    ++m_iblKey;
+    applyEnvironmentSettings();
+    return true;
+}
+
+void SceneController::applyEnvironmentSettings()
+{
+    const EnvironmentSettings& settings = m_document->project().environment;
+    m_assets.environment.setRotationDegrees(settings.rotationDegrees);
+    m_assets.environment.setIntensity(settings.intensity);
+}
+
+void SceneController::loadMesh()
+{
+    const ViewSettings& view = m_document->project().view;
+    m_meshSource = DocumentAssets::meshSource(view.mesh, view.keepUnits);
+    ++m_loadCounts.meshes;
+    m_documentAssets->retry(DocumentAssets::Kind::Mesh, m_meshSource);
+    m_meshPending = true;
+    takeMesh();
+}
+
+bool SceneController::takeMesh()
+{
+    if (!m_meshPending)
+        return false;
+    const std::string& source = m_meshSource;
+    using Kind = DocumentAssets::Kind;
+    const std::shared_ptr<const AssetCache::LoadedMesh> loaded = m_documentAssets->mesh(source);
+    m_documentAssets->setInUse(this, Kind::Mesh, {source});
+    const bool loading = m_documentAssets->isLoading(Kind::Mesh, source);
+    if (!loaded && loading) {
+        announceLoading(source);
+        return false;
+    }
+    m_meshPending = loading; // as for the environment: a previous version now, the new one later
+    if (!loaded) {
+        const std::string problem = "Mesh: " + m_documentAssets->problem(Kind::Mesh, source);
+        report(problem);
+        Q_EMIT problemChanged(QStringLiteral("mesh"), WindowMessages::fromCore(problem));
+        if (m_assets.mesh)
+            return false;
+        const auto sphere = m_documentAssets->mesh("sphere");
+        Q_ASSERT(sphere);
+        m_assets.mesh = sphere->mesh;
+        m_assets.meshKey = sphere->key;
+        return true;
+    }
+    if (loaded == m_meshHeld)
+        return false;
+    m_meshHeld = loaded;
+    Q_EMIT problemChanged(QStringLiteral("mesh"), {});
+    report(m_documentAssets->warning(Kind::Mesh, source));
+    m_assets.mesh = loaded->mesh;
+    m_assets.meshKey = loaded->key;
+    return true;
+}
+
+void SceneController::announceLoading(const std::string& name)
+{
+    // Once a load: asking again on every arrival (a grid cell's environment) would repeat it over
+    // the other views' messages.
+    if (name == m_announced)
+        return;
+    m_announced = name;
+    const QString source = QString::fromStdString(name);
+    Q_EMIT message(
+        WindowMessages::loading(json::isBuiltinSpec(name) ? source : QFileInfo(source).fileName()));
+}
+
+void SceneController::onAssetArrived()
+{
+    const int pendingBefore = pendingAssetLoads();
+    const bool environment = takeEnvironment();
+    const bool mesh = takeMesh();
+    if (pendingAssetLoads() == 0)
+        m_announced.clear();
+    // A frame when something new shows, and when the last load settled (a failure too): a
+    // frame after it is the project's settled look (`facet --screenshot` waits for one).
+    if (environment || mesh || (pendingBefore > 0 && pendingAssetLoads() == 0))
+        Q_EMIT sceneChanged(false);
+}
+
+SceneController::~SceneController()
+{
+    m_mapPool.clear();
+    m_mapPool.waitForDone();
+    if (!m_documentAssetsAlive.isNull())
+        m_documentAssets->forgetUser(this);
+}
+
+void SceneController::loadMaps(const DocumentChanges& changes)
+{
+    // Every material's maps; a file used by several slots or materials is loaded once (by path).
+    // Only the slots whose file the change names are looked at on disk: the others keep what they
+    // show, so a new normal map for material 1 never re-reads material 0's maps. A change that
+    // names no slot (files changed on disk: kinds alone) looks at every file and loads those whose
+    // modification time changed; a new project (WholeProject) loads every file again.
+    const bool all = changes == DocumentChanges(DocumentChange::WholeProject);
+    const Project& project = m_document->project();
+    std::map<std::string, CachedImage> images;
+    for (std::size_t m = 0; m < project.materials.size(); ++m) {
+        const MaterialChange changed = changes.material(m);
+        for (MapSlot slot : kAllMapSlots) {
+            const MaterialMap& map = project.materials[m].map(slot);
+            if (!map.hasTexture() || images.count(map.path))
+                continue;
+            const auto previous = m_images.find(map.path);
+            if (!all && !changed.map(slot).testFlag(MapProperty::Path) && previous != m_images.end()) {
+                images.emplace(map.path, previous->second); // unchanged: shown (or loading) as it is
+                continue;
+            }
+            const std::int64_t timestamp = modificationTime(fileOfImagePath(map.path));
+            const bool current = previous != m_images.end() && previous->second.timestamp == timestamp
+                && (previous->second.image || !previous->second.problem.empty());
+            const auto pending = m_pendingMaps.find(map.path);
+            if (!all && current) {
+                images.emplace(map.path, previous->second); // already loaded (or reported)
+                continue;
+            }
+            // Until the new decode arrives the slot shows the previous version of the file, if any.
+            images.emplace(map.path,
+                previous != m_images.end() && previous->second.image ? previous->second : CachedImage {});
+            if (pending == m_pendingMaps.end() || pending->second.timestamp != timestamp || all)
+                startMapLoad(map.path, timestamp);
+        }
+    }
+    // A load of a file the project no longer names is stale: its result will be dropped.
+    for (auto it = m_pendingMaps.begin(); it != m_pendingMaps.end();) {
+        if (!images.count(it->first))
+            it = m_pendingMaps.erase(it);
+        else
+            ++it;
+    }
+    // A file that failed and that no slot names any more is no longer a problem.
+    for (const auto& [path, entry] : m_images)
+        if (!entry.problem.empty() && !images.count(path))
+            Q_EMIT problemChanged(QStringLiteral("map:") + QString::fromStdString(path), {});
+    m_images = std::move(images);
+    publishMaps();
+    if (m_pendingMaps.empty() && m_batchTotal > 0) {
+        // Every load of the batch went stale: the batch is over.
+        m_batchLoaded = m_batchTotal;
+        Q_EMIT mapLoadProgress(m_batchLoaded, m_batchTotal, double(m_batchClock.nsecsElapsed()) / 1e6);
+        m_batchTotal = m_batchLoaded = 0;
+    }
+}
+
+void SceneController::startMapLoad(const std::string& path, std::int64_t timestamp)
+{
+    if (m_pendingMaps.empty() && m_batchTotal == 0) {
+        m_batchLoaded = 0;
+        m_batchFailed = false;
+        m_batchClock.start();
+    }
+    const bool replacesPending = m_pendingMaps.count(path) > 0;
+    const std::uint64_t ticket = m_nextTicket++;
+    m_pendingMaps[path] = PendingMap {timestamp, ticket};
+    if (!replacesPending)
+        ++m_batchTotal;
+    ++m_loadCounts.maps;
+    Q_EMIT mapLoadProgress(m_batchLoaded, m_batchTotal, double(m_batchClock.nsecsElapsed()) / 1e6);
+    m_mapPool.start([this, path, ticket] {
+        std::string error;
+        ImageLoadStats stats;
+        std::shared_ptr<const MapImage> image = MapImageCache::shared().load(path, &error, &stats);
+        QMetaObject::invokeMethod(
+            this,
+            [this, path, ticket, image, error, stats] { onMapLoaded(path, ticket, image, error, stats); },
+            Qt::QueuedConnection);
+    });
+}
+
+void SceneController::onMapLoaded(const std::string& path, std::uint64_t ticket,
+    std::shared_ptr<const MapImage> image, const std::string& error, ImageLoadStats stats)
+{
+    const auto pending = m_pendingMaps.find(path);
+    if (pending == m_pendingMaps.end() || pending->second.ticket != ticket)
+        return; // the project no longer names the file, or a newer load of it is under way
+    CachedImage& entry = m_images[path];
+    entry.timestamp = pending->second.timestamp;
+    m_pendingMaps.erase(pending);
+    entry.image = std::move(image);
+    entry.problem = entry.image ? std::string() : error;
+    if (!entry.image) {
+        // Name the slot that wanted it (the first one, when a packed file feeds several).
+        std::string slotName = "Texture";
+        for (const Material& material : m_document->project().materials)
+            for (MapSlot slot : kAllMapSlots)
+                if (slotName == "Texture" && material.map(slot).path == path)
+                    slotName = toString(slot);
+        m_batchFailed = true;
+        report(slotName + " map: " + error);
+        Q_EMIT problemChanged(QStringLiteral("map:") + QString::fromStdString(path),
+            WindowMessages::fromCore(slotName + " map: " + error));
+    } else {
+        Q_EMIT problemChanged(QStringLiteral("map:") + QString::fromStdString(path), {});
+    }
+    if (entry.image && stats.total() > 0) {
+        report(path + ": replaced " + std::to_string(stats.total()) + " NaN, Inf or negative samples");
+    }
+    ++m_batchLoaded;
+    publishMaps();
+    const double ms = double(m_batchClock.nsecsElapsed()) / 1e6;
+    Q_EMIT mapLoadProgress(std::min(m_batchLoaded, m_batchTotal), m_batchTotal, ms);
+    if (m_pendingMaps.empty())
+        m_batchTotal = m_batchLoaded = 0;
+    if (entry.image)
+        Q_EMIT mapsArrived();
+    else
+        Q_EMIT sceneChanged(m_document->interactiveEditOpen());
+}
+
+void SceneController::publishMaps()
+{
+    const Project& project = m_document->project();
+    m_assets.maps.assign(project.materials.size(), {});
+    for (std::size_t m = 0; m < project.materials.size(); ++m)
+        for (MapSlot slot : kAllMapSlots) {
+            const MaterialMap& map = project.materials[m].map(slot);
+            const auto found = map.hasTexture() ? m_images.find(map.path) : m_images.end();
+            if (found == m_images.end())
+                continue;
+            LoadedMapImage& loaded = m_assets.maps[m][std::size_t(slot)];
+            loaded.image = found->second.image;
+            loaded.path = map.path;
+            loaded.timestamp = found->second.timestamp;
+        }
+}
+
+int SceneController::releaseMapPixels(
+    const std::function<bool(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace)>&
+        onGpu)
+{
+    int released = 0;
+    for (auto& [path, entry] : m_images) {
+        if (!entry.image || !entry.image->hasPixels() || m_pendingMaps.count(path))
+            continue;
+        bool everywhere = true;
+        for (const Material& material : m_document->project().materials)
+            for (const MaterialMap& map : material.maps)
+                if (map.hasTexture() && map.path == path && !onGpu(path, entry.timestamp, map.colorSpace))
+                    everywhere = false;
+        if (!everywhere)
+            continue;
+        // One stand-in per file: the slots that share the file still share one image.
+        entry.image = std::make_shared<const MapImage>(MapImage::withoutPixels(*entry.image));
+        ++released;
+    }
+    if (released > 0)
+        publishMaps();
+    return released;
+}
+
+void SceneController::reloadMaps(const std::vector<std::string>& paths)
+{
+    for (const std::string& path : paths) {
+        const auto found = m_images.find(path);
+        if (found == m_images.end() || !found->second.image || found->second.image->hasPixels()
+            || m_pendingMaps.count(path))
+            continue;
+        startMapLoad(path, found->second.timestamp);
+    }
+}
+
+std::string SceneController::mapProblem(std::size_t material, MapSlot slot) const
+{
+    const Project& project = m_document->project();
+    if (material >= project.materials.size())
+        return {};
+    const MaterialMap& map = project.materials[material].map(slot);
+    const auto found = map.hasTexture() ? m_images.find(map.path) : m_images.end();
+    return found == m_images.end() || m_pendingMaps.count(map.path) ? std::string() : found->second.problem;
+}
+
+IblSettings SceneController::iblSettings() const
+{
+    return IblSettings::preset(m_document->project().environment.quality);
+}
+
+QString SceneController::environmentName() const
+{
+    // The environment in use, which is not the project's when that one could not be loaded.
+    const std::string& name = m_assets.environment.name();
+    const QString source = QString::fromStdString(name);
+    return json::isBuiltinSpec(name) ? source : QFileInfo(source).fileName();
+}
+
+SceneOptions SceneController::sceneOptions(IblMethod method) const
+{
+    SceneOptions options = sceneOptionsFor(iblSettings(), /*referenceView=*/false);
+    options.iblMethod = method;
+    options.objectTurnDegrees = m_objectTurntableDegrees;
+    options.environmentTurnDegrees = m_environmentTurntableDegrees;
+    options.wireframe = m_wireframe;
+    return options;
+}
+
+IblMethod SceneController::refinementMethod() const
+{
+    return m_document->project().environment.method;
+}
+
+glm::dmat4 SceneController::modelMatrix() const
+{
+    return turntableModelMatrix(m_objectTurntableDegrees);
+}
+
+void SceneController::setWireframe(bool on)
+{
+    if (on == m_wireframe)
+        return;
+    m_wireframe = on;
+    Q_EMIT sceneChanged(false);
+}
+
+void SceneController::setTurntableAngles(double objectDegrees, double environmentDegrees)
+{
+    if (objectDegrees == m_objectTurntableDegrees && environmentDegrees == m_environmentTurntableDegrees)
+        return;
+    m_objectTurntableDegrees = objectDegrees;
+    m_environmentTurntableDegrees = environmentDegrees;
+    Q_EMIT sceneChanged(true);
+}
+
+} // namespace facet
