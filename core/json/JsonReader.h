@@ -117,15 +117,8 @@ public:
     }
     void string(const char* key, std::string& out)
     {
-        const QJsonValue v = value(key);
-        if (v.isUndefined())
-            return;
-        if (!v.isString())
-            return wrongType(key, "a string", v);
-        // A NUL would cut the text short where a C API reads it (a path would name another file).
-        if (v.toString().contains(QChar(0)))
-            return m_messages.fail(pathOf(key), "holds a NUL character");
-        out = ss(v.toString());
+        if (std::optional<std::string> text = nameAt(key))
+            out = std::move(*text);
     }
     // An array of `minCount` to `maxCount` numbers into out[0..]; returns how many were read (0
     // when missing or wrong).
@@ -168,21 +161,18 @@ public:
     // `table`: pairs of (value, name), e.g. kToneMappers.
     template <typename Enum, typename Table> void enumeration(const char* key, Enum& out, const Table& table)
     {
-        const QJsonValue v = value(key);
-        if (v.isUndefined())
+        const std::optional<std::string> name = nameAt(key);
+        if (!name)
             return;
-        if (!v.isString())
-            return wrongType(key, "a string", v);
-        const std::string name = ss(v.toString());
         std::string expected;
         for (const auto& [candidate, text] : table) {
-            if (name == text) {
+            if (*name == text) {
                 out = candidate;
                 return;
             }
             expected += std::string(expected.empty() ? "" : ", ") + "\"" + text + "\"";
         }
-        m_messages.fail(pathOf(key), "unknown name \"" + name + "\" (expected one of " + expected + ")");
+        m_messages.fail(pathOf(key), "unknown name \"" + *name + "\" (expected one of " + expected + ")");
     }
 
     // A name `fromString` knows (an enum with aliases, such as core/shading/DebugView's); otherwise
@@ -191,18 +181,15 @@ public:
     void named(
         const char* key, Enum& out, const Parse& fromString, const char* what, const std::string& expected)
     {
-        const QJsonValue v = value(key);
-        if (v.isUndefined())
+        const std::optional<std::string> name = nameAt(key);
+        if (!name)
             return;
-        if (!v.isString())
-            return wrongType(key, "a string", v);
-        const std::string name = ss(v.toString());
-        if (const std::optional<Enum> known = fromString(name)) {
+        if (const std::optional<Enum> known = fromString(*name)) {
             out = *known;
             return;
         }
         m_messages.fail(pathOf(key),
-            "unknown " + std::string(what) + " \"" + name + "\" (expected one of: " + expected + ")");
+            "unknown " + std::string(what) + " \"" + *name + "\" (expected one of: " + expected + ")");
     }
 
     // A nested object; nullopt when missing or of the wrong type (then an error is recorded).
@@ -227,6 +214,24 @@ public:
             return std::nullopt;
         }
         return v.toArray();
+    }
+
+    // The string at `key`; nullopt when missing, or (an error recorded) not a string or holding a
+    // NUL, which would cut the text short where a C API reads it (a path would name another file).
+    std::optional<std::string> nameAt(const char* key)
+    {
+        const QJsonValue v = value(key);
+        if (v.isUndefined())
+            return std::nullopt;
+        if (!v.isString()) {
+            wrongType(key, "a string", v);
+            return std::nullopt;
+        }
+        if (v.toString().contains(QChar(0))) {
+            m_messages.fail(pathOf(key), "holds a NUL character");
+            return std::nullopt;
+        }
+        return ss(v.toString());
     }
 
     // Keys nobody asked for: a newer Facet's optional fields, or typos. Warned about, not errors.
