@@ -315,7 +315,7 @@ void InspectionUiTest::wireframeFromTheViewMenu()
     QVERIFY(wireframe && wireframe->isCheckable());
     QCOMPARE(wireframe->shortcut(), QKeySequence(Qt::SHIFT | Qt::Key_W));
     wireframe->trigger();
-    QVERIFY(m_window->sceneController()->wireframe());
+    QVERIFY(m_window->viewport()->viewState().wireframe);
     const QImage wired = frame();
     int changed = 0;
     for (int y = 0; y < plain.height(); y += 2)
@@ -323,7 +323,7 @@ void InspectionUiTest::wireframeFromTheViewMenu()
             changed += plain.pixel(x, y) != wired.pixel(x, y) ? 1 : 0;
     QVERIFY2(changed > 100, qPrintable(QString::number(changed)));
     wireframe->trigger();
-    QVERIFY(!m_window->sceneController()->wireframe());
+    QVERIFY(!m_window->viewport()->viewState().wireframe);
     const QImage again = frame();
     int left = 0;
     for (int y = 0; y < plain.height(); y += 2)

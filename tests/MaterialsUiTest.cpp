@@ -307,7 +307,7 @@ bool MaterialsUiTest::openForPixels(const QString& asset, const std::string& deb
 {
     if (!open(asset) || m_document->project().parts.size() != 2)
         return false;
-    m_window->sceneController()->setTurntableAngles(0.0, 0.0);
+    m_window->viewport()->setTurntableAngles(0.0, 0.0);
     m_window->cameraController()->resetView();
     EnvironmentSettings environment = m_document->project().environment;
     environment.source = "uniform:0.5";
@@ -335,8 +335,7 @@ QPoint MaterialsUiTest::pixelOf(const glm::dvec3& objectPoint, bool turned) cons
     const double width = m_viewport->width();
     const double height = m_viewport->height();
     const glm::dvec4 clip = camera.projectionMatrix(width / height) * camera.viewMatrix()
-        * (turned ? m_window->sceneController()->modelMatrix() : glm::dmat4(1.0))
-        * glm::dvec4(objectPoint, 1.0);
+        * (turned ? m_window->viewport()->modelMatrix() : glm::dmat4(1.0)) * glm::dvec4(objectPoint, 1.0);
     const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
     return QPoint(
         int(std::floor((ndc.x + 1.0) * 0.5 * width)), int(std::floor((1.0 - ndc.y) * 0.5 * height)));
@@ -593,7 +592,7 @@ void MaterialsUiTest::clickPicksThePart()
     QFETCH(int, startMaterial);
     QFETCH(int, expectedMaterial);
     QVERIFY(openForPixels(m_twoMaterials));
-    m_window->sceneController()->setTurntableAngles(turntableDegrees, 0.0);
+    m_window->viewport()->setTurntableAngles(turntableDegrees, 0.0);
     m_document->setCurrentMaterial(startMaterial);
     const Camera cameraBefore = m_document->project().camera;
 
@@ -621,7 +620,7 @@ void MaterialsUiTest::clickPicksThePart()
             m_window->materialsDock()->partList()->topLevelItem(part));
         QCOMPARE(m_window->materialsDock()->materialList()->currentRow(), expectedMaterial);
     }
-    m_window->sceneController()->setTurntableAngles(0.0, 0.0);
+    m_window->viewport()->setTurntableAngles(0.0, 0.0);
 }
 
 void MaterialsUiTest::hidingAPartShowsTheBackground()
@@ -793,7 +792,7 @@ void MaterialsUiTest::emissiveAndAlphaEditsReachTheFrame()
     m_document->setMaterial(setup, QStringLiteral("test setup"));
     m_document->undoStack()->clear();
     if (edit == Edit::DoubleSided) // seen from behind: culled while single-sided
-        m_window->sceneController()->setTurntableAngles(180.0, 0.0);
+        m_window->viewport()->setTurntableAngles(180.0, 0.0);
     const QPoint right = pixelOfPart(1);
     QVERIFY(m_viewport->rect().contains(right));
     const QColor background = backgroundPixel();
@@ -887,7 +886,7 @@ void MaterialsUiTest::emissiveAndAlphaEditsReachTheFrame()
     m_document->undoStack()->undo();
     const QColor undone = framePixel(right);
     QVERIFY2(near(undone, before), qPrintable(report + QStringLiteral(", undone %1").arg(describe(undone))));
-    m_window->sceneController()->setTurntableAngles(0.0, 0.0);
+    m_window->viewport()->setTurntableAngles(0.0, 0.0);
 }
 
 QTEST_MAIN(MaterialsUiTest)

@@ -521,7 +521,7 @@ void ViewportUiTest::turntableDrawsOnlyWhileRunning()
     QTest::qWait(1000);
     const std::uint64_t spinning = m_viewport->frameCount() - before;
     QVERIFY2(spinning >= 3, qPrintable(QString::number(spinning)));
-    QVERIFY(m_window->sceneController()->objectTurntableDegrees() > 0.0);
+    QVERIFY(m_window->viewport()->viewState().objectTurntableDegrees > 0.0);
     qInfo("turntable: %llu frames in 1 s (preview resolution)", (unsigned long long)spinning);
     turntable->trigger();
     QVERIFY(!m_window->cameraController()->turntableRunning());

@@ -307,7 +307,7 @@ void MainWindow::createViewMenu()
     wireframe->setObjectName(QStringLiteral("wireframeAction"));
     wireframe->setCheckable(true);
     wireframe->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_W));
-    connect(wireframe, &QAction::toggled, m_scene, &SceneController::setWireframe);
+    connect(wireframe, &QAction::toggled, m_viewport, &ViewportWidget::setWireframe);
     // What the view shows under the cursor, and why (the Values dock).
     QAction* values = menu->addAction(tr("&Value Picker"));
     values->setObjectName(QStringLiteral("valuePickerAction"));

@@ -260,14 +260,14 @@ void CameraController::turntableTick()
 {
     const double seconds = double(m_turntableClock.restart()) / 1000.0;
     const double step = kTurntableDegreesPerSecond * seconds;
-    double object = m_scene->objectTurntableDegrees();
-    double environment = m_scene->environmentTurntableDegrees();
+    double object = m_viewport->viewState().objectTurntableDegrees;
+    double environment = m_viewport->viewState().environmentTurntableDegrees;
     if (m_turntableTarget == TurntableTarget::Object)
         object = std::fmod(object + step, 360.0);
     else
         environment = std::fmod(environment + step, 360.0);
     m_viewport->markInteractive();
-    m_scene->setTurntableAngles(object, environment);
+    m_viewport->setTurntableAngles(object, environment);
 }
 
 void CameraController::flyTick()

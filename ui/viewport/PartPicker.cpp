@@ -46,7 +46,7 @@ std::optional<MeshHit> PartPicker::hitAt(const QPointF& position) const
     // The renderer's image spans the widget (its resolution does not matter: a ray through the
     // same point of the image is the same ray).
     const PickRay ray = cameraRay(project.camera, width, height, {position.x(), position.y()});
-    return pickMesh(*mesh, m_scene->modelMatrix(), ray, parts);
+    return pickMesh(*mesh, m_viewport->modelMatrix(), ray, parts);
 }
 
 QString PartPicker::partName(int part) const

@@ -485,37 +485,12 @@ SceneOptions SceneController::sceneOptions(IblMethod method) const
 {
     SceneOptions options = sceneOptionsFor(iblSettings(), /*referenceView=*/false);
     options.iblMethod = method;
-    options.objectTurnDegrees = m_objectTurntableDegrees;
-    options.environmentTurnDegrees = m_environmentTurntableDegrees;
-    options.wireframe = m_wireframe;
     return options;
 }
 
 IblMethod SceneController::refinementMethod() const
 {
     return m_document->project().environment.method;
-}
-
-glm::dmat4 SceneController::modelMatrix() const
-{
-    return turntableModelMatrix(m_objectTurntableDegrees);
-}
-
-void SceneController::setWireframe(bool on)
-{
-    if (on == m_wireframe)
-        return;
-    m_wireframe = on;
-    Q_EMIT sceneChanged(false);
-}
-
-void SceneController::setTurntableAngles(double objectDegrees, double environmentDegrees)
-{
-    if (objectDegrees == m_objectTurntableDegrees && environmentDegrees == m_environmentTurntableDegrees)
-        return;
-    m_objectTurntableDegrees = objectDegrees;
-    m_environmentTurntableDegrees = environmentDegrees;
-    Q_EMIT sceneChanged(true);
 }
 
 } // namespace facet

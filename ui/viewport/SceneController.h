@@ -106,27 +106,13 @@ public:
     // file ("night.exr is missing; ..."); empty when it is in use.
     const QString& environmentProblem() const { return m_environmentProblem; }
 
-    // How the view's frame is built from the project (FrameRenderer::prepare): by the split sum
-    // (the interactive preview) or by `method` at the project's samples for it (the still frame's
-    // refinement, ViewportRenderer::refine), with the IBL settings' irradiance source, the view's
-    // turntable angles and its wireframe.
+    // How a frame is built from the project (FrameRenderer::prepare): by the split sum (the
+    // interactive preview) or by `method` at the project's samples for it (the still frame's
+    // refinement, ViewportRenderer::refine), with the IBL settings' irradiance source. A view adds
+    // its own turntable and wireframe (ui/viewport/ViewState.h).
     SceneOptions sceneOptions(IblMethod method = IblMethod::SplitSum) const;
     // The method the still frame refines to: the project's environment.method (split-sum: none).
     IblMethod refinementMethod() const;
-
-    // Viewport-only turntable angles (not part of the project, not undoable): the object turns
-    // about +Y by objectTurntableDegrees, the environment by environmentTurntableDegrees on top of
-    // the project's rotation.
-    void setTurntableAngles(double objectDegrees, double environmentDegrees);
-    // View > Wireframe: the mesh's edges over the view and its stills (RenderScene::wireframe);
-    // an inspection aid of the window, not part of the project.
-    void setWireframe(bool on);
-    bool wireframe() const { return m_wireframe; }
-    double objectTurntableDegrees() const { return m_objectTurntableDegrees; }
-    // The matrix the mesh of assets() is drawn with (scene().modelMatrix): the object turntable's
-    // rotation about +Y, identity without one. Picking (ui/viewport/PartPicker.h) casts its rays against it.
-    glm::dmat4 modelMatrix() const;
-    double environmentTurntableDegrees() const { return m_environmentTurntableDegrees; }
 
 Q_SIGNALS:
     // The scene differs from the last frame: draw again. Not emitted for changes the frame does
@@ -208,9 +194,6 @@ private:
     std::string m_meshSource;
     std::uint64_t m_iblKey = 0;
     LoadCounts m_loadCounts;
-    double m_objectTurntableDegrees = 0.0;
-    double m_environmentTurntableDegrees = 0.0;
-    bool m_wireframe = false;
 };
 
 } // namespace facet

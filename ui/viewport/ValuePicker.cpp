@@ -195,7 +195,7 @@ PickedValue ValuePicker::readAt(const QPointF& position)
         surface.materialName = QString::fromStdString(material.name);
         const MaterialMapImages images
             = imagesFor(surface.material, &surface.mapsLoading, &surface.mapProblems);
-        surface.probe = probeSurface(*mesh, m_scene->modelMatrix(), *hit, material, images);
+        surface.probe = probeSurface(*mesh, m_viewport->modelMatrix(), *hit, material, images);
         value.surface = std::move(surface);
     }
     m_current = value;

@@ -186,7 +186,8 @@ bool ViewportRenderer::paint(const SceneController& scene, unsigned targetFrameb
     return draw(scene, targetFramebuffer, width, height, scale, nullptr, error);
 }
 
-ViewportRenderer::RefineKey ViewportRenderer::refineKeyOf(const SceneController& scene, int width, int height)
+ViewportRenderer::RefineKey ViewportRenderer::refineKeyOf(
+    const SceneController& scene, int width, int height) const
 {
     RefineKey key;
     key.project = withoutDisplaySettings(scene.document()->project());
@@ -200,8 +201,7 @@ ViewportRenderer::RefineKey ViewportRenderer::refineKeyOf(const SceneController&
     for (const auto& material : assets.maps)
         for (const LoadedMapImage& map : material)
             key.maps.push_back(map.image.get());
-    key.objectTurntable = scene.objectTurntableDegrees();
-    key.environmentTurntable = scene.environmentTurntableDegrees();
+    key.view = m_view;
     key.width = width;
     key.height = height;
     return key;
@@ -323,7 +323,7 @@ bool ViewportRenderer::draw(const SceneController& scene, unsigned targetFramebu
     // the first frame that needed it; a BRDF switch loads or makes one table, nothing else.
     IblStats dfgStats;
     std::optional<RenderScene> preview = m_frames->prepare(scene.document()->project(), scene.assets(),
-        scene.iblSettings(), scene.sceneOptions(), &dfgStats, &problem, m_ibl);
+        scene.iblSettings(), m_view.appliedTo(scene.sceneOptions()), &dfgStats, &problem, m_ibl);
     if (!preview)
         return fail(problem);
     RenderScene& frame = *preview;
@@ -408,8 +408,9 @@ ViewportRenderer::ShownPixel ViewportRenderer::shownPixel(
 
 std::optional<RenderScene> ViewportRenderer::refinementScene(const SceneController& scene, std::string* error)
 {
-    std::optional<RenderScene> sampled = m_frames->prepare(scene.document()->project(), scene.assets(),
-        scene.iblSettings(), scene.sceneOptions(scene.refinementMethod()), nullptr, error, m_ibl);
+    std::optional<RenderScene> sampled
+        = m_frames->prepare(scene.document()->project(), scene.assets(), scene.iblSettings(),
+            m_view.appliedTo(scene.sceneOptions(scene.refinementMethod())), nullptr, error, m_ibl);
     if (!sampled)
         return std::nullopt;
     std::string ignored;
@@ -473,8 +474,8 @@ int ViewportRenderer::holdBackUnreadyMaps(RenderScene& frame, std::string* probl
 int ViewportRenderer::queueUploads(const SceneController& scene)
 {
     // Only the maps are read: the scene without its tables (render/SceneFromProject.h).
-    RenderScene frame
-        = sceneFromProject(scene.document()->project(), scene.assets(), m_ibl, scene.sceneOptions());
+    RenderScene frame = sceneFromProject(
+        scene.document()->project(), scene.assets(), m_ibl, m_view.appliedTo(scene.sceneOptions()));
     std::string problem;
     return holdBackUnreadyMaps(frame, &problem);
 }

@@ -31,6 +31,7 @@
 #include "render/IblPrecompute.h"
 #include "render/RenderStats.h"
 #include "render/Turntable.h"
+#include "ui/viewport/ViewState.h"
 
 #include <glm/ext/vector_uint4_sized.hpp>
 #include <glm/vec4.hpp>
@@ -122,6 +123,10 @@ public:
     // Whether the view does not show the lighting of the scene's environment and quality yet
     // (the next paint() precomputes it, or asks the worker; the caller may say so first).
     bool needsIbl(const SceneController& scene) const;
+
+    // The view's turntable and wireframe (ViewportWidget's), added to every frame, refinement and
+    // still from now on.
+    void setViewState(const ViewState& view) { m_view = view; }
 
     // Precompute new lighting on `worker`'s thread from now on (null: on this thread, in paint()).
     void setLightingWorker(std::shared_ptr<LightingWorker> worker);
@@ -247,13 +252,13 @@ private:
         double environmentIntensity = 1.0;
         const void* mesh = nullptr;
         std::vector<const void*> maps;
-        double objectTurntable = 0.0;
-        double environmentTurntable = 0.0;
+        ViewState view;
         int width = 0;
         int height = 0;
         bool operator==(const RefineKey&) const = default;
     };
-    static RefineKey refineKeyOf(const SceneController& scene, int width, int height);
+    RefineKey refineKeyOf(const SceneController& scene, int width, int height) const;
+    ViewState m_view;
     std::optional<RefineKey> m_refineKey;
 };
 

@@ -153,6 +153,28 @@ void ViewportWidget::setSceneController(SceneController* scene)
     requestFrame();
 }
 
+void ViewportWidget::setTurntableAngles(double objectDegrees, double environmentDegrees)
+{
+    if (objectDegrees == m_view.objectTurntableDegrees
+        && environmentDegrees == m_view.environmentTurntableDegrees)
+        return;
+    m_view.objectTurntableDegrees = objectDegrees;
+    m_view.environmentTurntableDegrees = environmentDegrees;
+    if (m_renderer)
+        m_renderer->setViewState(m_view);
+    onSceneChanged(true);
+}
+
+void ViewportWidget::setWireframe(bool on)
+{
+    if (on == m_view.wireframe)
+        return;
+    m_view.wireframe = on;
+    if (m_renderer)
+        m_renderer->setViewState(m_view);
+    onSceneChanged(false);
+}
+
 void ViewportWidget::onSceneChanged(bool interactive)
 {
     // A change of how the refined frame is shown only (exposure, tone mapper, OCIO, a name)
@@ -210,6 +232,7 @@ void ViewportWidget::initializeGL()
         m_renderer
             = std::make_unique<ViewportRenderer>(std::move(shared.precompute), std::move(shared.textures));
         m_renderer->setLightingWorker(std::move(shared.lighting));
+        m_renderer->setViewState(m_view);
         connectLightingWorker();
     }
     connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseRenderer,

@@ -53,6 +53,15 @@ public:
     void setShareGroup(std::shared_ptr<ViewShareGroup> group) { m_shareGroup = std::move(group); }
     SceneController* sceneController() const { return m_scene; }
 
+    // The view's own additions to the project's scene (ui/viewport/ViewState.h): the live
+    // turntable's angles (CameraController turns them) and View > Wireframe. A change redraws
+    // (the turntable's as an interactive change: previews while it runs).
+    const ViewState& viewState() const { return m_view; }
+    void setTurntableAngles(double objectDegrees, double environmentDegrees);
+    void setWireframe(bool on);
+    // The matrix the mesh is drawn with (the object turntable's rotation); picking casts under it.
+    glm::dmat4 modelMatrix() const { return m_view.modelMatrix(); }
+
     // What the widget's context is; valid once glInitialized() was emitted.
     const GLInfo& glInfo() const { return m_glInfo; }
     // Why the context is not good enough for Facet (below 4.1 core); empty when it is.
@@ -123,6 +132,7 @@ private:
     void connectLightingWorker();
 
     SceneController* m_scene = nullptr;
+    ViewState m_view;
     std::unique_ptr<ViewportRenderer> m_renderer;
     std::shared_ptr<ViewShareGroup> m_shareGroup;
     ViewportFrameStats m_stats;
