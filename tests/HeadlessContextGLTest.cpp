@@ -62,6 +62,7 @@ private Q_SLOTS:
     void rgba16fKeepsUnclampedValues();
     void rgba32fKeepsFullPrecision();
     void readbackIsTopRowFirst();
+    void readbackLeavesEarlierErrorsPending();
     void rejectsBadFramebufferSize();
     void refusesOldGLVersion();
 };
@@ -190,6 +191,29 @@ void HeadlessContextGLTest::rgba32fKeepsFullPrecision()
     const Image image = target->readPixels();
     const std::string mismatch = firstMismatch(image, 0, image.height(), value);
     QVERIFY2(mismatch.empty(), mismatch.c_str());
+}
+
+// A read of Facet's own target neither hides nor clears an error an earlier call left pending
+// (GLDebug and the frame checks still see it); a read of a framebuffer it cannot read says so.
+void HeadlessContextGLTest::readbackLeavesEarlierErrorsPending()
+{
+    std::string error;
+    std::optional<HeadlessGLContext> context = HeadlessGLContext::create(&error);
+    QVERIFY2(context, error.c_str());
+    std::optional<Framebuffer> target = Framebuffer::create(4, 4, FramebufferFormat::RGBA16F, &error);
+    QVERIFY2(target, error.c_str());
+    target->clear(glm::vec4(0.5f));
+    while (glGetError() != GL_NO_ERROR) { }
+
+    glEnable(GLenum(0x7fff)); // not a capability: GL_INVALID_ENUM
+    QCOMPARE(target->readPixels().at(1, 1), glm::vec4(0.5f));
+    QCOMPARE(glGetError(), GLenum(GL_INVALID_ENUM));
+
+    glEnable(GLenum(0x7fff));
+    QCOMPARE(target->readPixel(2, 0), std::optional(glm::vec4(0.5f)));
+    QCOMPARE(glGetError(), GLenum(GL_INVALID_ENUM));
+    QCOMPARE(target->readPixel(4, 0), std::nullopt);
+    QCOMPARE(glGetError(), GLenum(GL_NO_ERROR));
 }
 
 void HeadlessContextGLTest::readbackIsTopRowFirst()
