@@ -39,16 +39,6 @@ std::string number(double value)
     return buffer;
 }
 
-// "<field>: <value> is outside [lo, hi]" when value is not a finite number within the range.
-bool checkRange(double value, double lo, double hi, const std::string& field, std::string* problem)
-{
-    if (std::isfinite(value) && value >= lo && value <= hi)
-        return true;
-    if (problem)
-        *problem = field + ": " + number(value) + " is outside [" + number(lo) + ", " + number(hi) + "]";
-    return false;
-}
-
 bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
 {
     // The factors' ranges are the property registry's (Material::validate checks them first).

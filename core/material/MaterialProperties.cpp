@@ -1,10 +1,10 @@
 #include "core/material/MaterialProperties.h"
 
 #include <array>
-#include <cmath>
-#include <cstdio>
 
 #include <QtGlobal>
+
+#include "core/support/Failure.h"
 
 namespace facet {
 
@@ -46,24 +46,6 @@ constexpr bool inEnumOrder()
     return true;
 }
 static_assert(inEnumOrder(), "kProperties must list the properties in the order of the enum");
-
-std::string number(double value)
-{
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", value);
-    return buffer;
-}
-
-bool checkRange(
-    double value, const MaterialPropertyInfo& info, const std::string& field, std::string* problem)
-{
-    if (std::isfinite(value) && value >= info.minimum && value <= info.maximum)
-        return true;
-    if (problem)
-        *problem = field + ": " + number(value) + " is outside [" + number(info.minimum) + ", "
-            + number(info.maximum) + "]";
-    return false;
-}
 
 } // namespace
 
@@ -150,11 +132,12 @@ bool checkProperty(const Material& material, MaterialProperty property, std::str
 {
     const MaterialPropertyInfo& info = infoOf(property);
     if (info.value == PropertyValue::Scalar)
-        return checkRange(scalarOf(material, property), info, info.field, problem);
+        return checkRange(scalarOf(material, property), info.minimum, info.maximum, info.field, problem);
     static const char* const kComponents[] = {"r", "g", "b"};
     const glm::dvec3 rgb = colorOf(material, property);
     for (int i = 0; i < 3; ++i)
-        if (!checkRange(rgb[i], info, std::string(info.field) + "." + kComponents[i], problem))
+        if (!checkRange(
+                rgb[i], info.minimum, info.maximum, std::string(info.field) + "." + kComponents[i], problem))
             return false;
     return true;
 }
