@@ -119,6 +119,9 @@ bool splitSumSharpLobes(const RenderScene& scene, const RenderMaterial& material
     const auto& image = material.maps[std::size_t(MapSlot::Roughness)].image;
     if (image && !image->isEmpty())
         roughness *= smallestScalarMapValue(material.material.map(MapSlot::Roughness), *image).value_or(0.0);
+    // A coat is a lobe of its own, usually the sharpest of the material.
+    if (material.material.clearcoat.isOn() && !material.material.unlit)
+        roughness = std::min(roughness, material.material.clearcoat.roughness);
     roughness = std::clamp(roughness, Material::kMinPerceptualRoughness, 1.0);
     return lodFromRoughness(float(roughness), float(env.prefilteredLevels)) < 1.0f;
 }
@@ -544,6 +547,10 @@ void Renderer::setMaterialUniforms(const ShaderProgram& program, const SurfaceVa
     program.setFloat("uIor", float(material.ior));
     program.setFloat("uDielectricAverageAlbedo", float(renderMaterial.dielectricAverageAlbedo));
     setVec3(program, "uEmissiveFactor", material.emissive());
+    if (hasFeature(key.features, SurfaceFeature::Clearcoat)) {
+        program.setFloat("uClearcoatFactor", float(material.clearcoat.factor));
+        program.setFloat("uClearcoatRoughness", float(material.clearcoat.roughness));
+    }
     if (hasFeature(key.features, SurfaceFeature::AlphaMask))
         program.setFloat("uAlphaCutoff", float(material.alphaCutoff));
     program.setInt("uFlipGreen", material.map(MapSlot::Normal).flipGreen ? 1 : 0);

@@ -37,6 +37,7 @@ constexpr std::array<const char*, kSurfaceFeatureBits> kFeatureDefines = {
     "HAS_VERTEX_COLOR",
     "MATERIAL_UNLIT",
     "HAS_TEXCOORD_1",
+    "MATERIAL_CLEARCOAT",
 };
 
 } // namespace
@@ -128,6 +129,8 @@ SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMap
         f = f | SurfaceFeature::IrradianceSH;
     if (material.unlit)
         f = f | SurfaceFeature::Unlit;
+    else if (material.clearcoat.isOn())
+        f = f | SurfaceFeature::Clearcoat;
     return f;
 }
 

@@ -76,8 +76,11 @@ enum class SurfaceFeature : uint64_t {
     // HAS_TEXCOORD_1: a sampled map reads the mesh's second UV set (MaterialMap::texCoord 1 and
     // Mesh::hasTexCoord1); without it every map reads set 0 and no second UV is interpolated.
     HasTexCoord1 = 1ull << 26,
+    // MATERIAL_CLEARCOAT: KHR_materials_clearcoat's coat lobe (Material::clearcoat factor > 0);
+    // without it no coat code is compiled and the material pays nothing for the lobe.
+    Clearcoat = 1ull << 27,
 };
-inline constexpr int kSurfaceFeatureBits = 27;
+inline constexpr int kSurfaceFeatureBits = 28;
 static_assert(kSurfaceFeatureBits <= 64);
 
 using SurfaceFeatures = uint64_t;

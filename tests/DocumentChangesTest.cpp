@@ -126,6 +126,12 @@ std::vector<Row> rows()
     add(
         "material unlit", [](Project& p) { p.materials[1].unlit = true; }, material(1, MaterialField::Unlit));
     add(
+        "material clearcoat", [](Project& p) { p.materials[1].clearcoat.factor = 0.5; },
+        material(1, MaterialField::Clearcoat));
+    add(
+        "material clearcoat roughness", [](Project& p) { p.materials[1].clearcoat.roughness = 0.2; },
+        material(1, MaterialField::Clearcoat));
+    add(
         "material shading", [](Project& p) { p.materials[1].shading.multiScatter = false; },
         material(1, MaterialField::Shading));
 

@@ -346,8 +346,8 @@ private Q_SLOTS:
         QTest::addColumn<QString>("feature");
         QTest::addColumn<bool>("binary");
         for (const char* feature : {"constants", "every map", "shared transform", "different transforms",
-                 "ior", "mask", "blend", "single-sided", "unlit", "two of one name", "samplers",
-                 "second UV set", "second UV set, mesh without it"}) {
+                 "ior", "clearcoat", "clearcoat, smooth", "unlit, clearcoat", "mask", "blend", "single-sided",
+                 "unlit", "two of one name", "samplers", "second UV set", "second UV set, mesh without it"}) {
             QTest::newRow(qPrintable(QStringLiteral("%1, .gltf").arg(QLatin1String(feature))))
                 << QString::fromLatin1(feature) << false;
             QTest::newRow(qPrintable(QStringLiteral("%1, .glb").arg(QLatin1String(feature))))
@@ -379,6 +379,10 @@ private Q_SLOTS:
                 m.map(MapSlot::BaseColor).uv = UvTransform {{2.0, 1.0}, {0.0, 0.0}, 0.0};
             if (feature == QStringLiteral("ior"))
                 m.ior = 1.45;
+            if (feature.contains(QStringLiteral("clearcoat"))) {
+                m.clearcoat.factor = 0.7;
+                m.clearcoat.roughness = feature.contains(QStringLiteral("smooth")) ? 0.0 : 0.15;
+            }
             if (feature == QStringLiteral("mask")) {
                 m.alphaMode = AlphaMode::Mask;
                 m.alphaCutoff = 0.3;
@@ -397,7 +401,7 @@ private Q_SLOTS:
             if (feature.startsWith(QStringLiteral("second UV set")))
                 for (const MapSlot slot : kAllMapSlots)
                     m.map(slot).texCoord = 1;
-            if (feature == QStringLiteral("unlit")) {
+            if (feature.startsWith(QStringLiteral("unlit"))) {
                 m.unlit = true;
                 m.emissiveStrength = 1.0; // an unlit material writes no other material extension
             }
@@ -448,9 +452,12 @@ private Q_SLOTS:
                 feature == QStringLiteral("shared transform"));
             QCOMPARE(used.contains(QStringLiteral("KHR_materials_ior")), feature == QStringLiteral("ior"));
             QCOMPARE(used.contains(QStringLiteral("KHR_materials_emissive_strength")),
-                feature != QStringLiteral("unlit"));
-            QCOMPARE(
-                used.contains(QStringLiteral("KHR_materials_unlit")), feature == QStringLiteral("unlit"));
+                !feature.startsWith(QStringLiteral("unlit")));
+            QCOMPARE(used.contains(QStringLiteral("KHR_materials_unlit")),
+                feature.startsWith(QStringLiteral("unlit")));
+            // The coat where it is on, and not on an unlit material (it would mean nothing).
+            QCOMPARE(used.contains(QStringLiteral("KHR_materials_clearcoat")),
+                feature.startsWith(QStringLiteral("clearcoat")));
         }
 
         const std::optional<Project> back = projectFromAsset(path.toStdString(), &error);
@@ -467,6 +474,9 @@ private Q_SLOTS:
             QCOMPARE(b.unlit, a.unlit);
             QVERIFY(std::abs(b.ior - a.ior) < 1e-9);
             QVERIFY(std::abs(b.emissiveStrength - a.emissiveStrength) < 1e-9);
+            const Material::Clearcoat coat = a.unlit ? Material::Clearcoat {} : a.clearcoat;
+            QVERIFY(std::abs(b.clearcoat.factor - coat.factor) < 1e-9);
+            QVERIFY(std::abs(b.clearcoat.roughness - coat.roughness) < 1e-9);
             for (const MapSlot slot : kAllMapSlots) {
                 QCOMPARE(b.map(slot).hasTexture(), a.map(slot).hasTexture());
                 if (!a.map(slot).hasTexture())

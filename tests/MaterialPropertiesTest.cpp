@@ -137,6 +137,10 @@ private Q_SLOTS:
             << P::EmissiveStrength << "emissiveStrength" << 0.0 << 10000.0 << "";
         QTest::newRow("ior") << P::Ior << "ior" << 1.0 << 5.0 << "";
         QTest::newRow("alpha cutoff") << P::AlphaCutoff << "alphaCutoff" << 0.0 << 1.0 << "";
+        QTest::newRow("clearcoat") << P::Clearcoat << "clearcoat.factor" << 0.0 << 1.0 << "clearcoat";
+        QTest::newRow("clearcoat roughness")
+            << P::ClearcoatRoughness << "clearcoat.roughness" << 0.0 << 1.0 << "clearcoat-roughness";
+        QCOMPARE(kMaterialPropertyCount, 12); // a new property adds its golden row here
     }
 
     void goldenRows()
@@ -193,7 +197,7 @@ private Q_SLOTS:
             QCOMPARE(scalarOf(project.material(), *axis.property), value);
             QVERIFY(project.material() == expected);
         }
-        QCOMPARE(materialAxes, 8);
+        QCOMPARE(materialAxes, 10);
     }
 };
 

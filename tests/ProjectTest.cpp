@@ -100,6 +100,7 @@ Project everythingChanged(const QString& root)
     emissive.colorSpace = ColorEncoding::Linear;
     emissive.uv.offset = {0.5, 0.0};
     m.emissiveStrength = 12.5;
+    m.clearcoat = {0.75, 0.125};
     m.alphaMode = AlphaMode::Mask;
     m.alphaCutoff = 0.25;
     m.doubleSided = false;
@@ -343,7 +344,7 @@ private Q_SLOTS:
         const QJsonObject object = QJsonDocument::fromJson(readAll(qs(path))).object();
         QCOMPARE(object.value(QLatin1String("format")).toString(), QStringLiteral("facet-project"));
         QCOMPARE(object.value(QLatin1String("version")).toInt(), Project::kFormatVersion);
-        QCOMPARE(object.value(QLatin1String("version")).toInt(), 3);
+        QCOMPARE(object.value(QLatin1String("version")).toInt(), 4);
         // Paths inside the compare layout are stored relative to the project, as the others are.
         const QJsonObject compare = object.value(QLatin1String("compare")).toObject();
         QCOMPARE(compare.value(QLatin1String("environments"))
@@ -444,7 +445,8 @@ private Q_SLOTS:
     // Files as older Facets wrote them (tests/data/projects: every field, keys in Qt's order)
     // still open: version 1 with one "material", version 2 with "materials" and "parts". Neither
     // has "compare": they open with the default layout for what they hold (the grid starts with
-    // the file's environment, B is a snapshot of the current material), and save as version 3.
+    // the file's environment, B is a snapshot of the current material), and save as the current
+    // version, their materials without a coat.
     void olderVersionsOpen_data()
     {
         QTest::addColumn<QString>("file");
@@ -489,9 +491,10 @@ private Q_SLOTS:
         QCOMPARE(project->compare.environments.cells[2].source, std::string("uniform:1"));
         QVERIFY(project->compare.ab.snapshot == project->material());
 
-        // Saved again, it is a version 3 file that reads back the same.
+        QVERIFY(!project->material().clearcoat.isOn());
+        // Saved again, it is a version 4 file that reads back the same.
         const QJsonObject saved = project->toJson();
-        QCOMPARE(saved.value(QLatin1String("version")).toInt(), 3);
+        QCOMPARE(saved.value(QLatin1String("version")).toInt(), 4);
         QVERIFY(saved.contains(QLatin1String("compare")) && !saved.contains(QLatin1String("material")));
         const auto again = Project::fromJson(saved, {}, &error);
         QVERIFY2(again, error.c_str());
@@ -504,7 +507,7 @@ private Q_SLOTS:
             v2.remove(QLatin1String("compare"));
             v2[QLatin1String("version")] = 2;
             // Optional fields added since, without a version (docs/project-format.md): "unlit",
-            // the view's "keepUnits" and "texelDensityTarget".
+            // the view's "keepUnits" and "texelDensityTarget"; and version 4's "clearcoat".
             QJsonObject view = v2[QLatin1String("view")].toObject();
             view.remove(QLatin1String("keepUnits"));
             view.remove(QLatin1String("texelDensityTarget"));
@@ -513,6 +516,7 @@ private Q_SLOTS:
             for (QJsonValueRef each : materials) {
                 QJsonObject m = each.toObject();
                 m.remove(QLatin1String("unlit"));
+                m.remove(QLatin1String("clearcoat"));
                 each = m;
             }
             v2[QLatin1String("materials")] = materials;
@@ -604,8 +608,8 @@ private Q_SLOTS:
                                     << QStringLiteral("\"version\" is missing");
         QTest::newRow("newer version")
             << QByteArray(
-                   R"({"format": "facet-project", "version": 4, "material": {"roughness": "new syntax"}})")
-            << QStringLiteral("written by a newer Facet (version 4); this Facet reads up to version 3");
+                   R"({"format": "facet-project", "version": 5, "material": {"roughness": "new syntax"}})")
+            << QStringLiteral("written by a newer Facet (version 5); this Facet reads up to version 4");
         // Version 3's compare layout (every refusal: tests/CompareLayoutTest.cpp); the path names it.
         QTest::newRow("compare: B names a material the project lacks")
             << QByteArray(R"({"format": "facet-project", "version": 3, "materials": [{}, {}],

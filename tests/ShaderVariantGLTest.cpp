@@ -6,7 +6,9 @@
 
 #include "core/image/MapImage.h"
 #include "core/material/Material.h"
+#include "core/material/MaterialProperties.h"
 #include "render/HeadlessGLContext.h"
+#include "render/ShaderProgram.h"
 #include "render/ShaderVariant.h"
 
 #include "TestSupport.h"
@@ -36,6 +38,8 @@ private Q_SLOTS:
     void irrelevantMapsAreNotSampled();
     void sharedTexels_data();
     void sharedTexels();
+    void lobesOnlyWhereTheMaterialHasThem_data();
+    void lobesOnlyWhereTheMaterialHasThem();
 
 private:
     std::optional<HeadlessGLContext> m_context; // sharedTexels compiles its variants
@@ -209,6 +213,48 @@ void ShaderVariantGLTest::sharedTexels()
     SurfaceProgramCache programs;
     std::string error;
     QVERIFY2(programs.get(SurfaceVariantKey {all, DebugView::None}, &error), error.c_str());
+}
+
+// "Skip what a scene doesn't need": a lobe's bit, and with it the lobe's code and uniforms, only
+// where the material has the lobe on (a row per lobe and per way of being off).
+void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem_data()
+{
+    QTest::addColumn<QString>("property"); // the registry's name of the lobe's strength
+    QTest::addColumn<double>("value");
+    QTest::addColumn<bool>("unlit");
+    QTest::addColumn<SurfaceFeatures>("bit");
+    QTest::addColumn<bool>("on");
+    QTest::addColumn<QString>("uniform"); // a uniform only the lobe's code declares
+    const auto row = [](const char* name, const char* property, double value, bool unlit, SurfaceFeature bit,
+                         bool on, const char* uniform) {
+        QTest::newRow(name) << QString::fromLatin1(property) << value << unlit << SurfaceFeatures(bit) << on
+                            << QString::fromLatin1(uniform);
+    };
+    row("clearcoat 0 (default)", "clearcoat", 0.0, false, SurfaceFeature::Clearcoat, false,
+        "uClearcoatFactor");
+    row("clearcoat 0.5", "clearcoat", 0.5, false, SurfaceFeature::Clearcoat, true, "uClearcoatFactor");
+    row("clearcoat 1, unlit", "clearcoat", 1.0, true, SurfaceFeature::Clearcoat, false, "uClearcoatFactor");
+}
+
+void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem()
+{
+    QFETCH(QString, property);
+    QFETCH(double, value);
+    QFETCH(bool, unlit);
+    QFETCH(SurfaceFeatures, bit);
+    QFETCH(bool, on);
+    QFETCH(QString, uniform);
+    Material material;
+    setScalar(material, *materialPropertyFromString(property.toStdString()), value);
+    material.unlit = unlit;
+    const bool noImages[kMapSlotCount] = {};
+    const SurfaceFeatures features = surfaceFeaturesFor(material, noImages, false, false);
+    QCOMPARE((features & bit) != 0, on);
+    SurfaceProgramCache programs;
+    std::string error;
+    const ShaderProgram* program = programs.get(SurfaceVariantKey {features, DebugView::None}, &error);
+    QVERIFY2(program, error.c_str());
+    QCOMPARE(program->uniformLocation(uniform.toLatin1().constData()) >= 0, on);
 }
 
 QTEST_GUILESS_MAIN(ShaderVariantGLTest)

@@ -447,24 +447,65 @@ private Q_SLOTS:
         QVERIFY2(worstNormal <= 2.0 / 255.0, qPrintable(QString::number(worstNormal * 255.0)));
     }
 
-    // Optional outputs are skipped when the material does not use their maps; the rest always.
+    // Optional outputs are skipped when the material does not use their sources; the rest
+    // always. A row per template and per thing a material may or may not use.
+    void optionalOutputs_data()
+    {
+        QTest::addColumn<QString>("templateId");
+        QTest::addColumn<bool>("emits");
+        QTest::addColumn<bool>("coated");
+        QTest::addColumn<QStringList>("skipped");
+        const auto row = [](const char* name, const char* templateId, bool emits, bool coated,
+                             std::initializer_list<const char*> skipped) {
+            QStringList maps;
+            for (const char* map : skipped)
+                maps.append(QString::fromLatin1(map));
+            QTest::newRow(name) << QString::fromLatin1(templateId) << emits << coated << maps;
+        };
+        row("unreal, plain", "unreal", false, false, {"E", "CC"});
+        row("unreal, emitting", "unreal", true, false, {"CC"});
+        row("unreal, coated", "unreal", false, true, {"E"});
+        row("unreal, both", "unreal", true, true, {});
+        row("unity-hdrp, plain", "unity-hdrp", false, false, {"Emissive", "CoatMask"});
+        row("unity-hdrp, coated", "unity-hdrp", false, true, {"Emissive"});
+        row("unity-urp, emitting and coated (no coat channel)", "unity-urp", true, true, {"Occlusion"});
+        row("godot, coated (no coat channel)", "godot", false, true, {"emission"});
+    }
     void optionalOutputs()
     {
+        QFETCH(QString, templateId);
+        QFETCH(bool, emits);
+        QFETCH(bool, coated);
+        QFETCH(QStringList, skipped);
         Material plain;
         plain.name = "Plain";
-        const std::optional<ExportTemplate> unreal = ExportTemplate::builtin("unreal");
+        if (emits)
+            plain.map(MapSlot::Emissive).factor = glm::dvec4(0.0, 0.1, 0.0, 1.0); // no texture
+        if (coated)
+            plain.clearcoat = {0.75, 0.25};
+        const std::optional<ExportTemplate> exportTemplate
+            = ExportTemplate::builtin(templateId.toStdString());
+        QVERIFY(exportTemplate);
         std::string error;
-        std::optional<TextureSetPlan> plan = planTextureSet(*unreal, plain, {}, {}, &error);
+        const std::optional<TextureSetPlan> plan = planTextureSet(*exportTemplate, plain, {}, {}, &error);
         QVERIFY2(plan, error.c_str());
-        QCOMPARE(plan->files.size(), std::size_t(3));
-        QCOMPARE(plan->skipped, std::vector<std::string> {"E"});
-        plain.map(MapSlot::Emissive).factor = glm::dvec4(0.0, 0.1, 0.0, 1.0); // emits, no texture
-        plan = planTextureSet(*unreal, plain, {}, {}, &error);
-        QCOMPARE(plan->files.size(), std::size_t(4));
-        QVERIFY(plan->skipped.empty());
-        const std::optional<ExportTemplate> urp = ExportTemplate::builtin("unity-urp");
-        plan = planTextureSet(*urp, plain, {}, {}, &error);
-        QCOMPARE(plan->skipped, std::vector<std::string> {"Occlusion"});
+        QStringList actual;
+        for (const std::string& map : plan->skipped)
+            actual.append(QString::fromStdString(map));
+        QCOMPARE(actual, skipped);
+        QCOMPARE(plan->files.size() + plan->skipped.size(), exportTemplate->outputs.size());
+        if (templateId != QLatin1String("unreal") || !coated)
+            return;
+        // Unreal's CC: R the coat's strength, G its roughness, B 0 (a material of constants: 1x1).
+        TestMaterial test(false);
+        test.material = plain;
+        QTemporaryDir dir;
+        QVERIFY2(writeSet(*plan, test, dir.path(), &error), error.c_str());
+        const std::optional<ReadBack> cc = readBack(dir.filePath(QStringLiteral("T_Plain_CC.png")));
+        QVERIFY(cc && cc->channels == 3 && cc->values.size() == 3);
+        QVERIFY2(std::abs(cc->values[0] - 0.75f) < 0.5f / 255.0f
+                && std::abs(cc->values[1] - 0.25f) < 0.5f / 255.0f && cc->values[2] == 0.0f,
+            qPrintable(QStringLiteral("%1 %2 %3").arg(cc->values[0]).arg(cc->values[1]).arg(cc->values[2])));
     }
 
     // A material of constants: 1x1 files holding its factors (or --size's size).

@@ -40,6 +40,10 @@ double valueIn(const Project& project, WedgeParameter parameter)
         return m.alphaCutoff;
     case WedgeParameter::Alpha:
         return m.map(MapSlot::BaseColor).factor.w;
+    case WedgeParameter::Clearcoat:
+        return m.clearcoat.factor;
+    case WedgeParameter::ClearcoatRoughness:
+        return m.clearcoat.roughness;
     case WedgeParameter::Exposure:
         return project.view.exposureEV;
     case WedgeParameter::Environment:
@@ -68,9 +72,9 @@ private Q_SLOTS:
     void parameterNames()
     {
         QCOMPARE(wedgeParameterNameList(),
-            std::string(
-                "metallic, roughness, occlusion, normal, ior, emissiveStrength, alphaCutoff, alpha, env, "
-                "exposure"));
+            std::string("metallic, roughness, occlusion, normal, ior, emissiveStrength, alphaCutoff, alpha, "
+                        "clearcoat, "
+                        "clearcoatRoughness, env, exposure"));
         for (const WedgeParameterInfo& info : wedgeParameters()) {
             QCOMPARE(wedgeParameterFromString(info.name), std::optional(info.parameter));
             QCOMPARE(toString(info.parameter), info.name);
@@ -238,7 +242,7 @@ private Q_SLOTS:
         QTest::newRow("unknown parameter")
             << "rough=0,1"
             << "unknown parameter \"rough\" (known: metallic, roughness, occlusion, normal, ior, "
-               "emissiveStrength, alphaCutoff, alpha, env, exposure)";
+               "emissiveStrength, alphaCutoff, alpha, clearcoat, clearcoatRoughness, env, exposure)";
         QTest::newRow("names are case-sensitive") << "Roughness=0,1"
                                                   << "unknown parameter \"Roughness\"";
         QTest::newRow("no name") << "=0,1"
@@ -430,6 +434,15 @@ private Q_SLOTS:
         QTest::newRow("roughness") << "roughness=0,1"
                                    << ""
                                    << "";
+        QTest::newRow("clearcoat, none") << "clearcoat=0,1"
+                                         << ""
+                                         << "";
+        QTest::newRow("clearcoatRoughness, no coat") << "clearcoatRoughness=0,1"
+                                                     << ""
+                                                     << "has none (clearcoat 0)";
+        QTest::newRow("clearcoatRoughness, coated") << "clearcoatRoughness=0,1"
+                                                    << "coat"
+                                                    << "";
         QTest::newRow("env") << "env=studio,sky"
                              << ""
                              << "";
@@ -456,6 +469,8 @@ private Q_SLOTS:
         }
         if (setup == QLatin1String("metal"))
             m.setFactor(MapSlot::Metallic, 1.0);
+        if (setup == QLatin1String("coat"))
+            m.clearcoat.factor = 1.0;
         std::string error;
         const std::optional<WedgeAxis> parsed = WedgeAxis::parse(axis.toStdString(), &error);
         QVERIFY2(parsed, error.c_str());

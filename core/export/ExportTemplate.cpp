@@ -17,7 +17,7 @@ using namespace jsonsupport;
 
 namespace {
 
-constexpr std::array<std::pair<ExportSource, const char*>, 14> kSources = {{
+constexpr std::array<std::pair<ExportSource, const char*>, 16> kSources = {{
     {ExportSource::Constant, "constant"},
     {ExportSource::BaseColorR, "baseColor.r"},
     {ExportSource::BaseColorG, "baseColor.g"},
@@ -32,6 +32,8 @@ constexpr std::array<std::pair<ExportSource, const char*>, 14> kSources = {{
     {ExportSource::EmissiveR, "emissive.r"},
     {ExportSource::EmissiveG, "emissive.g"},
     {ExportSource::EmissiveB, "emissive.b"},
+    {ExportSource::Clearcoat, "clearcoat"},
+    {ExportSource::ClearcoatRoughness, "clearcoatRoughness"},
 }};
 
 constexpr std::array<std::pair<TextureFileFormat, const char*>, 4> kFormats = {{

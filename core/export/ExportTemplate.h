@@ -31,6 +31,7 @@
 //                      applied, unit length, stored as n * 0.5 + 0.5
 //   metallic, roughness (perceptual), occlusion (strength applied)
 //   emissive.r/.g/.b   emissive colour (factor x texture, linear; the strength is a parameter)
+//   clearcoat, clearcoatRoughness   the clear coat's strength and perceptual roughness
 // Tokens of file names: {material} (its name, made safe for a file name), {map}, {size} (the
 // file's width, or WxH when it is not square), {template} (the template's file name stem).
 
@@ -60,6 +61,8 @@ enum class ExportSource {
     EmissiveR,
     EmissiveG,
     EmissiveB,
+    Clearcoat, // KHR_materials_clearcoat's strength
+    ClearcoatRoughness, // the coat's perceptual roughness
 };
 const char* toString(ExportSource source); // "baseColor.r", ...; "constant"
 std::optional<ExportSource> exportSourceFromString(std::string_view name);
@@ -86,9 +89,10 @@ struct ExportOutput {
     ColorEncoding colorSpace = ColorEncoding::Linear; // sRGB: R, G and B are sRGB-encoded
     int bitDepth = 8; // 8, 16, 32 (float)
     TextureFileFormat fileFormat = TextureFileFormat::Png;
-    // Written only for a material that uses one of the maps it reads (core/export/TextureSetExport
-    // usesSlot: a texture, or an emissive colour other than black): a set has no black emissive
-    // file for a material that emits nothing.
+    // Written only for a material that uses one of the sources it reads (core/export/TextureSetExport
+    // usesSource: a texture, an emissive colour other than black, a clear coat that is on): a set
+    // has no black emissive file for a material that emits nothing, nor a coat mask for one
+    // without a coat.
     bool optional = false;
     bool operator==(const ExportOutput&) const = default;
 };

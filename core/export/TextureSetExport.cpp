@@ -18,9 +18,14 @@ namespace facet {
 
 namespace {
 
-MapSlot slotOf(ExportSource source)
+// The map a source reads, or none (the base colour's for Constant; a clear coat's factors have no
+// map yet).
+std::optional<MapSlot> slotOf(ExportSource source)
 {
     switch (source) {
+    case ExportSource::Clearcoat:
+    case ExportSource::ClearcoatRoughness:
+        return std::nullopt;
     case ExportSource::NormalX:
     case ExportSource::NormalY:
     case ExportSource::NormalZ:
@@ -87,6 +92,8 @@ ExportTexel exportTexel(const Material& material, const MaterialMapImages& image
     texel.metallic = inputs.metallic;
     texel.roughness = inputs.perceptualRoughness;
     texel.occlusion = inputs.occlusion;
+    texel.clearcoat = inputs.clearcoat;
+    texel.clearcoatRoughness = inputs.clearcoatRoughness;
     // The emissive strength stays a parameter of the material, not a texel value.
     if (material.emissiveStrength > 0.0) {
         texel.emissive = inputs.emissive / material.emissiveStrength;
@@ -149,6 +156,12 @@ double channelValue(const ExportChannel& channel, const ExportTexel& texel)
     case ExportSource::EmissiveB:
         value = texel.emissive.b;
         break;
+    case ExportSource::Clearcoat:
+        value = texel.clearcoat;
+        break;
+    case ExportSource::ClearcoatRoughness:
+        value = texel.clearcoatRoughness;
+        break;
     }
     return channel.invert ? 1.0 - value : value;
 }
@@ -167,6 +180,15 @@ bool usesSlot(const Material& material, MapSlot slot)
         break;
     }
     return material.map(slot).hasTexture();
+}
+
+bool usesSource(const Material& material, ExportSource source)
+{
+    if (source == ExportSource::Constant)
+        return false;
+    if (source == ExportSource::Clearcoat || source == ExportSource::ClearcoatRoughness)
+        return material.clearcoat.isOn();
+    return usesSlot(material, *slotOf(source));
 }
 
 std::optional<TextureSetPlan> planTextureSet(const ExportTemplate& exportTemplate, const Material& material,
@@ -202,9 +224,7 @@ std::optional<TextureSetPlan> planTextureSet(const ExportTemplate& exportTemplat
         if (output.optional) {
             bool used = false;
             for (const ExportChannel& channel : output.channels)
-                used = used
-                    || (channel.source != ExportSource::Constant
-                        && usesSlot(material, slotOf(channel.source)));
+                used = used || usesSource(material, channel.source);
             if (!used) {
                 plan.skipped.push_back(output.map);
                 continue;
@@ -267,8 +287,9 @@ std::vector<float> renderTexture(const PlannedTexture& texture, const TextureSet
     // the texels are evaluated from (an ORM file reads no base colour, normal or emissive).
     std::array<bool, kMapSlotCount> read {};
     for (const ExportChannel& channel : channels)
-        if (channel.source != ExportSource::Constant)
-            read[std::size_t(slotOf(channel.source))] = true;
+        if (const std::optional<MapSlot> slot = slotOf(channel.source);
+            slot && channel.source != ExportSource::Constant)
+            read[std::size_t(*slot)] = true;
     Material needed = material;
     for (const MapSlot slot : kAllMapSlots)
         if (!read[std::size_t(slot)])

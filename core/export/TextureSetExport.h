@@ -58,6 +58,8 @@ struct ExportTexel {
     double roughness = 0.5; // perceptual
     double occlusion = 1.0; // strength applied
     glm::dvec3 emissive {0.0}; // factor x texture (without the strength)
+    double clearcoat = 0.0;
+    double clearcoatRoughness = 0.0; // perceptual
 };
 ExportTexel exportTexel(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv);
 // A source's value in a texel ([0, 1] for every source but emissive: the normal is stored as
@@ -67,6 +69,9 @@ double channelValue(const ExportChannel& channel, const ExportTexel& texel);
 // Whether the material uses `slot` beyond a neutral constant: a texture, and for emissive also a
 // colour other than black (ExportOutput::optional). Base colour, metallic and roughness always.
 bool usesSlot(const Material& material, MapSlot slot);
+// The same for a template's source: its map's usesSlot, or for the clear coat's sources whether
+// the coat is on. Constant: false.
+bool usesSource(const Material& material, ExportSource source);
 
 // The files `exportTemplate` writes for `material` (file names expanded, sizes from the maps'):
 // nullopt with *error for a bit depth the format cannot hold ("unreal's BC is png, which holds 8

@@ -513,6 +513,13 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
                 QJsonObject {{QStringLiteral("emissiveStrength"), material.emissiveStrength}});
             extensionsUsed.insert(QStringLiteral("KHR_materials_emissive_strength"));
         }
+        if (!material.unlit && material.clearcoat.isOn()) {
+            QJsonObject clearcoat {{QStringLiteral("clearcoatFactor"), material.clearcoat.factor}};
+            if (material.clearcoat.roughness != 0.0)
+                clearcoat.insert(QStringLiteral("clearcoatRoughnessFactor"), material.clearcoat.roughness);
+            extensions.insert(QStringLiteral("KHR_materials_clearcoat"), clearcoat);
+            extensionsUsed.insert(QStringLiteral("KHR_materials_clearcoat"));
+        }
         if (material.unlit) {
             extensions.insert(QStringLiteral("KHR_materials_unlit"), QJsonObject {});
             extensionsUsed.insert(QStringLiteral("KHR_materials_unlit"));

@@ -544,9 +544,9 @@ bool isPointOrLineMode(int mode)
 // Extensions a file may require that Facet reads (everything else it requires is refused).
 const std::set<std::string>& supportedRequiredExtensions()
 {
-    static const std::set<std::string> kSupported
-        = {"KHR_texture_transform", "KHR_materials_emissive_strength", "KHR_materials_ior",
-            "KHR_mesh_quantization", "EXT_texture_webp", "KHR_draco_mesh_compression"};
+    static const std::set<std::string> kSupported = {"KHR_texture_transform",
+        "KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_clearcoat",
+        "KHR_mesh_quantization", "EXT_texture_webp", "KHR_draco_mesh_compression"};
     return kSupported;
 }
 

@@ -246,18 +246,41 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
     m.doubleSided = g.doubleSided;
 
     // Extensions of the material model.
-    static const std::set<std::string> kRead
-        = {"KHR_materials_emissive_strength", "KHR_materials_ior", "KHR_materials_unlit"};
+    static const std::set<std::string> kRead = {"KHR_materials_emissive_strength", "KHR_materials_ior",
+        "KHR_materials_unlit", "KHR_materials_clearcoat"};
+    // A number of an extension's object: its value clamped to [lo, hi] (a note when it was not
+    // there), or `otherwise` with a note naming the field when it is not a number.
+    const auto extensionNumber = [&](const tinygltf::Value& object, const char* extension, const char* field,
+                                     double lo, double hi, double otherwise) {
+        if (!object.Has(field))
+            return otherwise;
+        const std::string at = where + " " + extension + "." + field;
+        if (!object.Get(field).IsNumber()) {
+            notes.add(at + " is not a number: " + number(otherwise) + " used");
+            return otherwise;
+        }
+        return clamped(object.Get(field).GetNumberAsDouble(), lo, hi, at, notes);
+    };
     for (const auto& [name, value] : g.extensions) {
         if (name == "KHR_materials_emissive_strength") {
-            if (value.Has("emissiveStrength") && value.Get("emissiveStrength").IsNumber())
-                m.emissiveStrength = clamped(value.Get("emissiveStrength").GetNumberAsDouble(), 0.0,
-                    Material::kMaxEmissiveStrength, where + " emissiveStrength", notes);
+            m.emissiveStrength = extensionNumber(value, "KHR_materials_emissive_strength", "emissiveStrength",
+                0.0, Material::kMaxEmissiveStrength, m.emissiveStrength);
         } else if (name == "KHR_materials_ior") {
-            if (value.Has("ior") && value.Get("ior").IsNumber())
-                m.ior = clamped(value.Get("ior").GetNumberAsDouble(), 1.0, 5.0, where + " ior", notes);
+            m.ior = extensionNumber(
+                value, "KHR_materials_ior", "ior", Material::kMinIor, Material::kMaxIor, m.ior);
         } else if (name == "KHR_materials_unlit") {
             m.unlit = true; // an empty object: its presence is the whole extension
+        } else if (name == "KHR_materials_clearcoat") {
+            // Defaults 0 (the extension's): an object without clearcoatFactor has no coat.
+            m.clearcoat.factor
+                = extensionNumber(value, "KHR_materials_clearcoat", "clearcoatFactor", 0.0, 1.0, 0.0);
+            m.clearcoat.roughness = extensionNumber(
+                value, "KHR_materials_clearcoat", "clearcoatRoughnessFactor", 0.0, 1.0, 0.0);
+            for (const char* texture :
+                {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
+                if (value.Has(texture))
+                    notes.add(where + " KHR_materials_clearcoat." + texture
+                        + " is not read yet: the coat's factors alone are previewed");
         } else if (!kRead.count(name)) {
             notes.add(
                 "the material extension " + name + " is not supported: previewed as metallic-roughness");

@@ -169,6 +169,16 @@ struct Material {
     // as radiance, with no light, environment or emission (the glTF Sample Viewer's
     // MATERIAL_UNLIT). For baked lighting, stylised assets and photogrammetry.
     bool unlit = false;
+    // KHR_materials_clearcoat: a clear dielectric coat (IOR 1.5) over the whole material, with its
+    // own GGX roughness; the base keeps what the coat's Fresnel lets through (docs/shading.md,
+    // "Clearcoat"). Factors only: the coat's textures are not read yet.
+    struct Clearcoat {
+        double factor = 0.0; // clearcoatFactor, [0, 1]; 0: no coat, and no shader cost
+        double roughness = 0.0; // clearcoatRoughnessFactor: perceptual, [0, 1]
+        bool isOn() const { return factor > 0.0; }
+        bool operator==(const Clearcoat&) const = default;
+    };
+    Clearcoat clearcoat;
     // Indexed by MapSlot. Defaults: base colour 0.8 grey (sRGB texture), metallic 0, roughness
     // 0.5, occlusion 1, normal strength 1, emissive black. (glTF's defaults, metallic 1 and roughness 1,
     // describe a rough white metal: fine as texture multipliers, poor as a starting material.)

@@ -181,6 +181,12 @@ void readMaterial(Messages& messages, const QJsonObject& object, const std::stri
     r.boolean("unlit", material.unlit);
     if (const std::optional<QJsonObject> shading = r.object("shading"))
         readShading(messages, *shading, r.pathOf("shading"), material.shading);
+    if (const std::optional<QJsonObject> clearcoat = r.object("clearcoat")) {
+        ObjectReader c(messages, *clearcoat, r.pathOf("clearcoat"));
+        c.number("factor", material.clearcoat.factor);
+        c.number("roughness", material.clearcoat.roughness);
+        c.warnAboutUnknownKeys();
+    }
     for (MapSlot slot : kAllMapSlots)
         if (const std::optional<QJsonObject> map = r.object(toString(slot)))
             readMap(messages, slot, *map, r.pathOf(toString(slot)), baseDir, material.map(slot));
@@ -200,6 +206,8 @@ QJsonObject materialToJson(const Material& material, const std::string& baseDir,
     o[QLatin1String("doubleSided")] = material.doubleSided;
     o[QLatin1String("unlit")] = material.unlit;
     o[QLatin1String("shading")] = shadingToJson(material.shading);
+    o[QLatin1String("clearcoat")] = QJsonObject {{QLatin1String("factor"), material.clearcoat.factor},
+        {QLatin1String("roughness"), material.clearcoat.roughness}};
     for (MapSlot slot : kAllMapSlots)
         o[QLatin1String(toString(slot))] = mapToJson(slot, material.map(slot), baseDir, includeTexturePaths);
     return o;

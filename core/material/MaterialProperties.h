@@ -31,8 +31,10 @@ enum class MaterialProperty {
     EmissiveStrength, // KHR_materials_emissive_strength
     Ior, // KHR_materials_ior
     AlphaCutoff,
+    Clearcoat, // KHR_materials_clearcoat: the coat's strength
+    ClearcoatRoughness, // the coat's perceptual roughness
 };
-inline constexpr int kMaterialPropertyCount = 10;
+inline constexpr int kMaterialPropertyCount = 12;
 
 // What a property holds: one number, or a linear RGB colour whose components each lie in the range.
 enum class PropertyValue { Scalar, Color };

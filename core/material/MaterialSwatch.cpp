@@ -75,8 +75,14 @@ Image SwatchRenderer::render(const Material& material, const MaterialMapImages& 
                 lighting.prefilteredRadiance = prefilteredRadiance(m_environment,
                     specularDominantDirection(n, R, shading::alphaFromRoughness(inputs.perceptualRoughness)),
                     inputs.perceptualRoughness, m_prefilterSamples);
+                if (inputs.clearcoat > 0.0)
+                    lighting.coatPrefilteredRadiance = prefilteredRadiance(m_environment,
+                        specularDominantDirection(
+                            ng, glm::reflect(-v, ng), shading::alphaFromRoughness(inputs.clearcoatRoughness)),
+                        inputs.clearcoatRoughness, m_prefilterSamples);
                 const BrdfLobes lobes = splitSumRadiance(brdf, dfg, inputs, NoV, lighting);
-                sum += lobes.total() * inputs.occlusion + inputs.emissive;
+                sum += lobes.total() * inputs.occlusion
+                    + inputs.emissive * (1.0 - clearcoatWeight(inputs, NoV));
             }
             if (covered == 0)
                 continue;

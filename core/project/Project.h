@@ -146,7 +146,10 @@ struct Project {
     // Version 3: the compare layout ("compare", core/project/CompareLayout.h), whose A/B snapshot is a
     // material an older Facet would drop unseen on its next save; version 1 and 2 files open
     // with CompareLayout::defaultFor.
-    static constexpr int kFormatVersion = 3;
+    // Version 4: the layered lobes (each material's "clearcoat"), which a version 3 Facet would
+    // drop with a warning and then save the material without; version 1 to 3 files read with
+    // the lobes off.
+    static constexpr int kFormatVersion = 4;
     // More is refused when loading: far beyond any asset an artist previews, and each material
     // costs a shader variant and its textures.
     static constexpr int kMaxMaterials = 4096;

@@ -25,9 +25,9 @@ WedgeParameterInfo materialAxis(WedgeParameter parameter, MaterialProperty prope
     return {parameter, info.name, info.field, info.minimum, info.maximum, property};
 }
 
-const std::array<WedgeParameterInfo, 10>& parameterTable()
+const std::array<WedgeParameterInfo, 12>& parameterTable()
 {
-    static const std::array<WedgeParameterInfo, 10> table = {{
+    static const std::array<WedgeParameterInfo, 12> table = {{
         materialAxis(WedgeParameter::Metallic, MaterialProperty::Metallic),
         materialAxis(WedgeParameter::Roughness, MaterialProperty::Roughness),
         materialAxis(WedgeParameter::Occlusion, MaterialProperty::Occlusion),
@@ -36,6 +36,8 @@ const std::array<WedgeParameterInfo, 10>& parameterTable()
         materialAxis(WedgeParameter::EmissiveStrength, MaterialProperty::EmissiveStrength),
         materialAxis(WedgeParameter::AlphaCutoff, MaterialProperty::AlphaCutoff),
         materialAxis(WedgeParameter::Alpha, MaterialProperty::Alpha),
+        materialAxis(WedgeParameter::Clearcoat, MaterialProperty::Clearcoat),
+        materialAxis(WedgeParameter::ClearcoatRoughness, MaterialProperty::ClearcoatRoughness),
         {WedgeParameter::Environment, "env", "environment.source", 0.0, 0.0, std::nullopt},
         {WedgeParameter::Exposure, "exposure", "view.exposureEV", ViewSettings::kMinExposureEV,
             ViewSettings::kMaxExposureEV, std::nullopt},
@@ -310,6 +312,10 @@ std::string WedgeAxis::noEffectReason(const Project& project) const
     case WedgeParameter::Ior:
         if (m.metallic() == 1.0 && !m.map(MapSlot::Metallic).hasTexture())
             return "ior sets the dielectric's reflectance, and the material is a metal (metallic 1)";
+        break;
+    case WedgeParameter::ClearcoatRoughness:
+        if (!m.clearcoat.isOn())
+            return "clearcoatRoughness shapes the clear coat, and the material has none (clearcoat 0)";
         break;
     default:
         break;

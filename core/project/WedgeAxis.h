@@ -39,6 +39,8 @@ enum class WedgeParameter {
     EmissiveStrength,
     AlphaCutoff,
     Alpha,
+    Clearcoat,
+    ClearcoatRoughness,
     Environment,
     Exposure,
 };

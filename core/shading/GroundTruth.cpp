@@ -12,6 +12,7 @@
 #include "core/ibl/EnvironmentSampler.h"
 #include "core/project/Project.h"
 #include "core/shading/Brdf.h"
+#include "core/shading/MaterialInputs.h"
 #include "core/shading/Punctual.h"
 #include "core/shading/ReferenceView.h"
 #include "core/shading/Sampling.h"
@@ -38,20 +39,32 @@ bool isUsable(const glm::dvec3& c)
     return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
 }
 
-// Probability of sampling the specular lobe rather than the diffuse one, from the two lobes'
-// approximate albedos at this n.v. Any value in (0, 1] keeps the estimator unbiased (the
-// environment strategy covers the rest); a good one lowers variance.
-double specularSelectionProbability(const MaterialInfo& m, double NoV, GroundTruthSettings::Lobes lobes)
+// How the BRDF strategy picks its lobe: the coat with probability `coat`, the specular lobe with
+// `specular`, the diffuse one otherwise, from the lobes' approximate albedos at this n.v. Any
+// probabilities that give each lobe a share keep the estimator unbiased (the environment
+// strategy covers the rest); good ones lower variance.
+struct LobeSelection {
+    double coat = 0.0;
+    double specular = 0.0;
+};
+
+LobeSelection lobeSelection(const MaterialInfo& m, double NoV, GroundTruthSettings::Lobes lobes)
 {
     if (lobes == GroundTruthSettings::Lobes::LambertOnly)
-        return 0.0;
+        return {};
     const double metallic = std::clamp(m.metallic, 0.0, 1.0);
     const glm::dvec3 f0 = glm::mix(glm::dvec3(shading::f0FromIor(m.ior)), m.baseColor, metallic);
     const double specular = luminance(shading::F_Schlick(f0, 1.0, NoV));
     const double diffuse = luminance(m.baseColor) * (1.0 - metallic) * (1.0 - specular);
-    if (diffuse <= 0.0)
-        return 1.0;
-    return std::clamp(specular / (specular + diffuse), 0.1, 0.9);
+    LobeSelection p;
+    p.specular = diffuse <= 0.0 ? 1.0 : std::clamp(specular / (specular + diffuse), 0.1, 0.9);
+    if (m.clearcoat > 0.0) {
+        const double coat = clearcoatWeight(m, NoV);
+        const double base = (1.0 - coat) * (specular + std::max(diffuse, 0.0));
+        p.coat = std::clamp(coat / std::max(coat + base, 1e-12), 0.1, 0.9);
+        p.specular *= 1.0 - p.coat;
+    }
+    return p;
 }
 
 // Radiance a punctual light delivers to the surface point `position`, and the unit direction
@@ -110,7 +123,8 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
     glm::dvec3 b;
     sampling::buildOrthonormalBasis(n, t, b);
     const glm::dvec3 vLocal = sampling::worldToTangent(v, t, b, n);
-    const double pSpecular = specularSelectionProbability(material, NoV, lobes);
+    const LobeSelection p = lobeSelection(material, NoV, lobes);
+    const double coatAlpha = shading::alphaFromRoughness(material.clearcoatRoughness);
 
     auto f = [&](const glm::dvec3& l, LightingKind kind) -> glm::dvec3 {
         if (lambertOnly)
@@ -122,11 +136,12 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
         const double NoL = glm::dot(n, l);
         if (NoL <= 0.0)
             return 0.0;
-        double pdf = (1.0 - pSpecular) * sampling::pdfCosineHemisphere(NoL);
-        if (pSpecular > 0.0) {
-            const glm::dvec3 h = glm::normalize(v + l);
-            pdf += pSpecular * sampling::pdfVNDFReflection(NoV, glm::dot(n, h), alpha);
-        }
+        double pdf = (1.0 - p.specular - p.coat) * sampling::pdfCosineHemisphere(NoL);
+        const double NoH = glm::dot(n, glm::normalize(v + l));
+        if (p.specular > 0.0)
+            pdf += p.specular * sampling::pdfVNDFReflection(NoV, NoH, alpha);
+        if (p.coat > 0.0)
+            pdf += p.coat * sampling::pdfVNDFReflection(NoV, NoH, coatAlpha);
         return pdf;
     };
 
@@ -149,12 +164,18 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
             // each lobe keeps a stratified share of the points.
             glm::dvec3 l;
             glm::dvec2 u = point(s, brdfShift);
-            if (u.x < pSpecular) {
-                u.x = std::min(u.x / pSpecular, std::nextafter(1.0, 0.0));
+            const double belowOne = std::nextafter(1.0, 0.0);
+            if (u.x < p.coat) {
+                u.x = std::min(u.x / p.coat, belowOne);
+                const glm::dvec3 h = sampling::importanceSampleVNDF(u, vLocal, coatAlpha);
+                l = sampling::tangentToWorld(sampling::reflectAbout(vLocal, h), t, b, n);
+            } else if (u.x < p.coat + p.specular) {
+                u.x = std::min((u.x - p.coat) / p.specular, belowOne);
                 const glm::dvec3 h = sampling::importanceSampleVNDF(u, vLocal, alpha);
                 l = sampling::tangentToWorld(sampling::reflectAbout(vLocal, h), t, b, n);
             } else {
-                u.x = std::min((u.x - pSpecular) / (1.0 - pSpecular), std::nextafter(1.0, 0.0));
+                const double pDiffuse = 1.0 - p.coat - p.specular;
+                u.x = std::min((u.x - p.coat - p.specular) / pDiffuse, belowOne);
                 l = sampling::tangentToWorld(sampling::sampleCosineHemisphere(u), t, b, n);
             }
             const double NoL = glm::dot(n, l);
@@ -182,9 +203,10 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
         }
     }
     glm::dvec3 radiance = sum / double(count);
-    // Emission is part of the outgoing radiance (the rendering equation's L_e term).
+    // Emission is part of the outgoing radiance (the rendering equation's L_e term); a coat lets
+    // through 1 - clearcoatWeight of it (KHR_materials_clearcoat's coated_emission).
     if (!lambertOnly)
-        radiance += material.emissive;
+        radiance += material.emissive * (1.0 - clearcoatWeight(material, NoV));
 
     // Punctual lights: the position on the unit sphere is its normal.
     for (const Light& light : scene.lights) {
@@ -277,17 +299,12 @@ std::optional<GroundTruthScene> groundTruthSceneFromProject(
         return std::nullopt;
     }
     GroundTruthScene scene;
-    const glm::dvec4 base = material.baseColorFactor();
-    scene.material.baseColor = glm::dvec3(base);
-    scene.material.alpha = base.a;
-    scene.material.emissive = material.emissive();
+    // No textures: the inputs are the factors, as materialInputs reads them anywhere.
+    scene.material = materialInputs(material, MaterialMapImages {}, glm::dvec2(0.0));
     scene.alphaMode = material.alphaMode;
     scene.alphaCutoff = material.alphaCutoff;
     scene.unlit = material.unlit;
     scene.transparentBackground = project.view.background == BackgroundMode::Transparent;
-    scene.material.metallic = material.metallic();
-    scene.material.perceptualRoughness = material.roughness();
-    scene.material.ior = material.ior;
     scene.model = material.shading;
     std::string environmentError;
     auto environment = Environment::fromSpec(project.environment.source, &environmentError, warning);

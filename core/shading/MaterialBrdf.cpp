@@ -156,7 +156,24 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
             : glm::dvec3(couplingFactor(f0Dielectric, NoV, NoL, roughness) * (1.0 - metallic));
         lobes.diffuse = kD * lambert;
     }
+    if (material.clearcoat > 0.0) {
+        // KHR_materials_clearcoat: mix(material, clearcoat_brdf, clearcoat x Fc(n.v)), the coat a
+        // specular lobe of its own roughness with no Fresnel inside (docs/shading.md, "Clearcoat").
+        const double weight = clearcoatWeight(material, NoV);
+        const double coatRoughness = clampRoughness(material.clearcoatRoughness);
+        const double coatAlpha = coatRoughness * coatRoughness;
+        lobes.diffuse *= 1.0 - weight;
+        lobes.specular *= 1.0 - weight;
+        lobes.coat = glm::dvec3(
+            weight * distribution(NoH, coatAlpha) * visibility(NoV, NoL, coatAlpha, coatRoughness, kind));
+    }
     return lobes;
+}
+
+double clearcoatWeight(const MaterialInfo& material, double NoV)
+{
+    const double clearcoat = std::clamp(material.clearcoat, 0.0, 1.0);
+    return clearcoat * F_Schlick(f0FromIor(kClearcoatIor), 1.0, std::clamp(NoV, 0.0, 1.0));
 }
 
 double MaterialBrdf::couplingFactor(double f0, double NoV, double NoL, double perceptualRoughness) const
@@ -183,17 +200,25 @@ glm::dvec3 directionalAlbedo(
     const glm::dvec3 n(0.0, 0.0, 1.0);
     const glm::dvec3 v(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
     const double alpha = alphaFromRoughness(material.perceptualRoughness);
+    // A coat adds its own lobe as a third strategy (the balance heuristic over all three).
+    const bool coated = material.clearcoat > 0.0;
+    const double coatAlpha = alphaFromRoughness(material.clearcoatRoughness);
     const auto count = std::uint32_t(std::max(sampleCount, 1));
     auto mixturePdf = [&](const glm::dvec3& l) {
         const glm::dvec3 h = glm::normalize(v + l);
-        return sampling::pdfCosineHemisphere(l.z) + sampling::pdfVNDFReflection(NoV, h.z, alpha);
+        double pdf = sampling::pdfCosineHemisphere(l.z) + sampling::pdfVNDFReflection(NoV, h.z, alpha);
+        if (coated)
+            pdf += sampling::pdfVNDFReflection(NoV, h.z, coatAlpha);
+        return pdf;
     };
     glm::dvec3 sum(0.0);
     for (std::uint32_t i = 0; i < count; ++i) {
         const glm::dvec2 u = sampling::hammersley(i, count);
-        const glm::dvec3 candidates[2] = {
+        const glm::dvec3 candidates[3] = {
             sampling::sampleCosineHemisphere(u),
             sampling::reflectAbout(v, sampling::importanceSampleVNDF(u, v, alpha)),
+            coated ? sampling::reflectAbout(v, sampling::importanceSampleVNDF(u, v, coatAlpha))
+                   : glm::dvec3(0.0, 0.0, -1.0),
         };
         for (const glm::dvec3& l : candidates) {
             if (l.z <= 0.0)

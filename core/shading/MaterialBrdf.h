@@ -29,16 +29,31 @@ struct MaterialInfo {
     glm::dvec3 emissive {0.0};
     // Coverage from the base colour's alpha (factor x texture); used by AlphaMode Mask and Blend.
     double alpha = 1.0;
+    // KHR_materials_clearcoat: the coat's strength and perceptual roughness. The coat's normal is
+    // the geometric one (the extension's rule without a clearcoat normal texture): evaluate()'s n.
+    double clearcoat = 0.0;
+    double clearcoatRoughness = 0.0;
 };
+
+// The coat's IOR, fixed by KHR_materials_clearcoat: F0 = 0.04.
+inline constexpr double kClearcoatIor = 1.5;
+
+// What the clear coat takes of the light towards v: clearcoat x F_Schlick(0.04, 1, n.v), the
+// extension's fresnel_coat weight (Schlick at n.v, not v.h, so it does not depend on l). The
+// material under the coat, and its emission, are multiplied by 1 - this.
+double clearcoatWeight(const MaterialInfo& material, double NoV);
 
 // Where the light comes from. It only matters for the LearnOpenGL variant, whose Schlick-GGX
 // geometry uses k = (r + 1)^2 / 8 for punctual lights and k = alpha / 2 for image-based light.
 enum class LightingKind { Punctual, Environment };
 
+// The base's lobes already carry the coat's 1 - clearcoatWeight; `coat` is the coat's own
+// lobe, clearcoatWeight x D V (zero without a coat).
 struct BrdfLobes {
     glm::dvec3 diffuse {0.0};
     glm::dvec3 specular {0.0};
-    glm::dvec3 total() const { return diffuse + specular; }
+    glm::dvec3 coat {0.0};
+    glm::dvec3 total() const { return diffuse + specular + coat; }
 };
 
 class MaterialBrdf {

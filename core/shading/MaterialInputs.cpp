@@ -241,6 +241,8 @@ MaterialInfo materialInputs(const Material& material, const MaterialMapImages& i
     m.metallic = std::clamp(m.metallic, 0.0, 1.0);
     m.perceptualRoughness = std::clamp(m.perceptualRoughness, 0.0, 1.0);
     m.ior = material.ior;
+    m.clearcoat = material.clearcoat.factor;
+    m.clearcoatRoughness = material.clearcoat.roughness;
     return m;
 }
 

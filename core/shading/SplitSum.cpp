@@ -19,33 +19,19 @@ glm::dvec3 specularDominantDirection(const glm::dvec3& n, const glm::dvec3& R, d
     return glm::normalize(glm::mix(n, R, lerpFactor));
 }
 
-BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, const MaterialInfo& material,
-    double NoV, const SplitSumLighting& lighting)
+namespace {
+
+// The glTF composition's lobes: (1 - m) spec(F0_d) + m spec(c), and the diffuse weight.
+BrdfLobes gltfLobes(const MaterialBrdf& brdf, const MaterialInfo& material, double NoV,
+    const SplitSumLighting& lighting, const DfgValue& dfg)
 {
-    // Mirrors environmentLobes() in resources/shaders/environment_lighting.glsl line by line.
     const ShadingModel& model = brdf.model();
-    NoV = std::clamp(NoV, 0.0, 1.0);
     const double roughness = clampRoughness(material.perceptualRoughness);
     const double metallic = std::clamp(material.metallic, 0.0, 1.0);
     const glm::dvec3 baseColor = glm::max(material.baseColor, glm::dvec3(0.0));
-    const glm::dvec3 diffuseLight = lighting.irradiance * kInvPi;
-    const DfgValue dfg = table.sample(NoV, roughness);
     const auto albedoSingleScatter = [&dfg](const glm::dvec3& f0) { return f0 * dfg.scale + dfg.bias; };
     const double f0Dielectric = f0FromIor(material.ior);
-    // The table lookup the shader does through dfgLookup(): the same table, bilinear.
-    const double es = brdf.dielectricSpecularAlbedo(f0Dielectric, NoV, roughness);
-
     BrdfLobes lobes;
-    if (model.composition == BrdfComposition::LearnOpenGL) {
-        const glm::dvec3 f0 = glm::mix(glm::dvec3(f0Dielectric), baseColor, metallic);
-        const glm::dvec3 albedo = albedoSingleScatter(f0);
-        lobes.specular = lighting.prefilteredRadiance * albedo * brdf.multiScatterFactor(f0, NoV, roughness);
-        const glm::dvec3 kD = model.coupling == DielectricCoupling::EnergyPreserving
-            ? glm::dvec3((1.0 - es) * (1.0 - metallic))
-            : (glm::dvec3(1.0) - f0) * (dfg.diffuseFresnelWeight * (1.0 - metallic));
-        lobes.diffuse = diffuseLight * baseColor * kD;
-        return lobes;
-    }
     const double specularDielectric = albedoSingleScatter(glm::dvec3(f0Dielectric)).x
         * brdf.multiScatterFactor(glm::dvec3(f0Dielectric), NoV, roughness).x;
     const glm::dvec3 specularMetal
@@ -53,9 +39,51 @@ BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, cons
     lobes.specular
         = lighting.prefilteredRadiance * glm::mix(glm::dvec3(specularDielectric), specularMetal, metallic);
     const double diffuseWeight = model.coupling == DielectricCoupling::EnergyPreserving
-        ? std::max(0.0, 1.0 - es)
+        ? std::max(0.0, 1.0 - brdf.dielectricSpecularAlbedo(f0Dielectric, NoV, roughness))
         : (1.0 - f0Dielectric) * dfg.diffuseFresnelWeight;
-    lobes.diffuse = diffuseLight * baseColor * (diffuseWeight * (1.0 - metallic));
+    lobes.diffuse = lighting.irradiance * kInvPi * baseColor * (diffuseWeight * (1.0 - metallic));
+    return lobes;
+}
+
+// LearnOpenGL's: F0 = mix(F0_d, c, m), spec(F0), kD from F0 or E_s.
+BrdfLobes learnOpenGlLobes(const MaterialBrdf& brdf, const MaterialInfo& material, double NoV,
+    const SplitSumLighting& lighting, const DfgValue& dfg)
+{
+    const double roughness = clampRoughness(material.perceptualRoughness);
+    const double metallic = std::clamp(material.metallic, 0.0, 1.0);
+    const glm::dvec3 baseColor = glm::max(material.baseColor, glm::dvec3(0.0));
+    const double f0Dielectric = f0FromIor(material.ior);
+    const glm::dvec3 f0 = glm::mix(glm::dvec3(f0Dielectric), baseColor, metallic);
+    BrdfLobes lobes;
+    lobes.specular = lighting.prefilteredRadiance * (f0 * dfg.scale + dfg.bias)
+        * brdf.multiScatterFactor(f0, NoV, roughness);
+    const glm::dvec3 kD = brdf.model().coupling == DielectricCoupling::EnergyPreserving
+        ? glm::dvec3((1.0 - brdf.dielectricSpecularAlbedo(f0Dielectric, NoV, roughness)) * (1.0 - metallic))
+        : (glm::dvec3(1.0) - f0) * (dfg.diffuseFresnelWeight * (1.0 - metallic));
+    lobes.diffuse = lighting.irradiance * kInvPi * baseColor * kD;
+    return lobes;
+}
+
+} // namespace
+
+BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, const MaterialInfo& material,
+    double NoV, const SplitSumLighting& lighting)
+{
+    // Mirrors splitSumEnvironmentLobes() in resources/shaders/environment_lighting.glsl line by
+    // line; the tables are looked up as the shader's dfgLookup() does (the same table, bilinear).
+    NoV = std::clamp(NoV, 0.0, 1.0);
+    const DfgValue dfg = table.sample(NoV, clampRoughness(material.perceptualRoughness));
+    BrdfLobes lobes = brdf.model().composition == BrdfComposition::LearnOpenGL
+        ? learnOpenGlLobes(brdf, material, NoV, lighting, dfg)
+        : gltfLobes(brdf, material, NoV, lighting, dfg);
+    if (material.clearcoat > 0.0) {
+        // The coat: its prefiltered light times its lobe's albedo with F = 1, weighted by w_c.
+        const double weight = clearcoatWeight(material, NoV);
+        lobes.diffuse *= 1.0 - weight;
+        lobes.specular *= 1.0 - weight;
+        lobes.coat = lighting.coatPrefilteredRadiance
+            * (table.sample(NoV, clampRoughness(material.clearcoatRoughness)).albedo() * weight);
+    }
     return lobes;
 }
 

@@ -15,6 +15,8 @@ namespace facet {
 struct SplitSumLighting {
     glm::dvec3 prefilteredRadiance {0.0}; // prefiltered(R, lodFromRoughness(r)), intensity applied
     glm::dvec3 irradiance {0.0}; // E(n), not divided by pi, intensity applied
+    // prefiltered(R_c, lod(r_c)) for the clear coat's roughness; read only when the material has a coat.
+    glm::dvec3 coatPrefilteredRadiance {0.0};
 };
 
 // Outgoing radiance lobes towards a viewer at n.v = NoV (before ambient occlusion):
@@ -25,6 +27,8 @@ struct SplitSumLighting {
 //     glTF, energy preserving   (1 - m) (1 - E_s(n.v))          E_s = dielectricSpecularAlbedo
 //     LearnOpenGL, fresnel_mix  (1 - m) (1 - F0) W(n.v)
 //     LearnOpenGL, energy pres. (1 - m) (1 - E_s(n.v))
+//   coat     = prefiltered_c * (scale_c + bias_c) * w_c, w_c = clearcoatWeight (the coat's lobe has
+//              no Fresnel inside: its DFG albedo with F = 1), and the lobes above times 1 - w_c
 // fresnel_mix's weights are the albedo of its base c / pi (1 - F(v.h)), the ground truth's model
 // (a white dielectric's albedo reaches 1.86 at grazing view: docs/energy.md); the split sum only
 // separates it from the irradiance, as it does the specular lobe from the prefiltered radiance.

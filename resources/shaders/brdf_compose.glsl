@@ -10,10 +10,22 @@ uniform float uDfgSize;
 // core's MaterialBrdf::dielectricSpecularAverageAlbedo (see docs/rendering.md).
 uniform float uDielectricAverageAlbedo;
 
+// The base's lobes carry the coat's 1 - clearcoatWeight; `coat` is the coat's own lobe (zero
+// without MATERIAL_CLEARCOAT). Twin of core's BrdfLobes.
 struct BrdfLobes {
     vec3 diffuse;
     vec3 specular;
+    vec3 coat;
 };
+
+vec3 lobeTotal(BrdfLobes lobes) { return lobes.diffuse + lobes.specular + lobes.coat; }
+
+// KHR_materials_clearcoat's fresnel_coat weight at the coat's n.v: clearcoat x F_Schlick(0.04,
+// 1, n.v) (the coat's IOR is 1.5). Twin of core's clearcoatWeight.
+float clearcoatWeight(MaterialInfo m, float NcoV)
+{
+    return m.clearcoat * F_Schlick(0.04, 1.0, saturate(NcoV));
+}
 
 // (scale, bias, E, W) at (n.v, roughness), roughness clamped as core's sample() callers do.
 vec4 dfgLookup(float NoV, float perceptualRoughness)
@@ -89,6 +101,7 @@ BrdfLobes evaluateBrdf(MaterialInfo m, vec3 n, vec3 v, vec3 l, bool punctual)
     BrdfLobes lobes;
     lobes.diffuse = vec3(0.0);
     lobes.specular = vec3(0.0);
+    lobes.coat = vec3(0.0);
     float NoL = dot(n, l);
     float NoVraw = dot(n, v);
     if (NoL <= 0.0 || NoVraw < 0.0)
@@ -135,6 +148,22 @@ BrdfLobes evaluateBrdf(MaterialInfo m, vec3 n, vec3 v, vec3 l, bool punctual)
 #endif
     lobes.diffuse = (1.0 - metallic) * dielectricDiffuse;
     lobes.specular = (1.0 - metallic) * dielectricSpecular + metallic * microfacet * fMetal * msMetal;
+#endif
+#ifdef MATERIAL_CLEARCOAT
+    // mix(material, clearcoat_brdf, clearcoat x Fc(nc.v)): the coat a GGX lobe of its own
+    // roughness about its own normal, with no Fresnel inside (docs/shading.md, "Clearcoat").
+    vec3 nc = m.clearcoatNormal;
+    float NcoL = dot(nc, l);
+    float NcoV = saturate(dot(nc, v));
+    float weight = clearcoatWeight(m, NcoV);
+    lobes.diffuse *= 1.0 - weight;
+    lobes.specular *= 1.0 - weight;
+    if (NcoL > 0.0) {
+        float coatRoughness = clampRoughness(m.clearcoatRoughness);
+        float coatAlpha = coatRoughness * coatRoughness;
+        lobes.coat = vec3(weight * distribution(saturate(dot(nc, h)), coatAlpha)
+                          * visibility(NcoV, NcoL, coatAlpha, coatRoughness, punctual));
+    }
 #endif
     return lobes;
 }

@@ -140,14 +140,36 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     // filtered importance samples of the environment cube (the fis estimator), faded in over lod
     // 1 to 0.5 so that a roughness map shows no seam. render/RenderScene.h kSplitSumSharpLobeSamples;
     // the variant only for materials whose roughness reaches below level 1 (render/Renderer.cpp).
+    lobes.diffuse = irradiance(n) * INV_PI * environmentDiffuseAlbedo(m, NoV, roughness);
+    lobes.coat = vec3(0.0);
+#ifdef MATERIAL_CLEARCOAT
+    // The coat: prefiltered(R_c, lod(r_c)) times its lobe's albedo with F = 1 (the DFG table's
+    // scale + bias), weighted by w_c; the base keeps 1 - w_c.
+    vec3 nc = m.clearcoatNormal;
+    float NcoV = clamp(dot(nc, v), 0.0, 1.0);
+    float coatRoughness = clampRoughness(m.clearcoatRoughness);
+    float coatWeight = clearcoatWeight(m, NcoV);
+    lobes.diffuse *= 1.0 - coatWeight;
+    lobes.specular *= 1.0 - coatWeight;
+    vec4 coatDfg = dfgLookup(NcoV, coatRoughness);
+    vec3 Rc = specularDominantDirection(nc, reflect(-v, nc), coatRoughness * coatRoughness);
+    lobes.coat = prefilteredRadiance(Rc, coatRoughness) * ((coatDfg.r + coatDfg.g) * coatWeight);
+#endif
 #ifdef SPLIT_SUM_SHARP_LOBES
+    // (fisLobe's samples include the coat's 1 - w_c, as the lines above do.)
     float sharp = 1.0 - smoothstep(0.5, 1.0, lodFromRoughness(roughness, uPrefilteredLevels));
     if (sharp > 0.0) {
-        vec3 integrated = fisSpecular(m, facingNormal(n, v), v, 0, uSharpLobeSamples, uint(uSharpLobeSamples));
+        vec3 integrated = fisLobe(m, facingNormal(n, v), v, LOBE_SPECULAR, 0, uSharpLobeSamples, uint(uSharpLobeSamples));
         lobes.specular = mix(lobes.specular, integrated, sharp);
     }
+#ifdef MATERIAL_CLEARCOAT
+    float coatSharp = 1.0 - smoothstep(0.5, 1.0, lodFromRoughness(coatRoughness, uPrefilteredLevels));
+    if (coatSharp > 0.0) {
+        vec3 integrated = fisLobe(m, facingNormal(nc, v), v, LOBE_COAT, 0, uSharpLobeSamples, uint(uSharpLobeSamples));
+        lobes.coat = mix(lobes.coat, integrated, coatSharp);
+    }
 #endif
-    lobes.diffuse = irradiance(n) * INV_PI * environmentDiffuseAlbedo(m, NoV, roughness);
+#endif
     return lobes;
 }
 

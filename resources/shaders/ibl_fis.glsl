@@ -57,15 +57,22 @@ vec3 filteredRadiance(vec3 l, float pdf, float count)
 #endif
 }
 
-// The specular lobe's light by `count` samples [base, base + count) of hammersley(., total) for
-// the pixel's own n (facing v) and v.
-vec3 fisSpecular(MaterialInfo m, vec3 n, vec3 v, int base, int count, uint total)
+// Which microfacet lobe of evaluateBrdf() fisLobe() integrates: the base's specular lobe (about the
+// shading normal, of the material's roughness) or the clear coat's (about the coat's normal, of
+// the coat's roughness). Each method (split sum, fis, reference) lights every lobe through the
+// same signature, lobe in, radiance out.
+const int LOBE_SPECULAR = 0;
+const int LOBE_COAT = 1;
+
+// The lobe's light by `count` samples [base, base + count) of hammersley(., total) drawn from
+// its own visible normals, for the pixel's own n (facing v; the lobe's normal) and v.
+vec3 fisLobe(MaterialInfo m, vec3 n, vec3 v, int lobe, int base, int count, uint total)
 {
     float NoV = dot(n, v);
     if (NoV < 0.0)
         return vec3(0.0); // evaluateBrdf's rule: nothing is seen from below the surface
     NoV = min(NoV, 1.0);
-    float roughness = clampRoughness(m.perceptualRoughness);
+    float roughness = clampRoughness(lobe == LOBE_COAT ? m.clearcoatRoughness : m.perceptualRoughness);
     float alpha = roughness * roughness;
     vec3 t;
     vec3 b;
@@ -90,7 +97,8 @@ vec3 fisSpecular(MaterialInfo m, vec3 n, vec3 v, int base, int count, uint total
         float pdf = D_GGX(NoH, alpha) * densityScale;
         if (!(pdf > 0.0))
             continue;
-        vec3 contribution = evaluateBrdf(m, n, v, l, false).specular * filteredRadiance(l, pdf, float(total))
+        BrdfLobes f = evaluateBrdf(m, n, v, l, false);
+        vec3 contribution = (lobe == LOBE_COAT ? f.coat : f.specular) * filteredRadiance(l, pdf, float(total))
             * (lLocal.z / pdf);
         if (!any(isnan(contribution)) && !any(isinf(contribution)))
             specular += contribution;
@@ -102,9 +110,17 @@ BrdfLobes fisEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
 {
     BrdfLobes lobes;
     float NoV = dot(n, v);
-    lobes.specular = fisSpecular(m, n, v, uIblSampleBase, uIblSamples, uint(max(uIblSampleTotal, 1)));
+    uint total = uint(max(uIblSampleTotal, 1));
+    lobes.specular = fisLobe(m, n, v, LOBE_SPECULAR, uIblSampleBase, uIblSamples, total);
     lobes.diffuse = NoV < 0.0 ? vec3(0.0)
                               : irradiance(n) * INV_PI
             * environmentDiffuseAlbedo(m, min(NoV, 1.0), clampRoughness(m.perceptualRoughness));
+    lobes.coat = vec3(0.0);
+#ifdef MATERIAL_CLEARCOAT
+    // The specular lobe's samples carry the coat's 1 - w already (evaluateBrdf); the diffuse
+    // albedo does not.
+    lobes.diffuse *= 1.0 - clearcoatWeight(m, dot(m.clearcoatNormal, v));
+    lobes.coat = fisLobe(m, facingNormal(m.clearcoatNormal, v), v, LOBE_COAT, uIblSampleBase, uIblSamples, total);
+#endif
     return lobes;
 }

@@ -16,8 +16,9 @@ uniform int uIblSeed; // bits of a uint32 (IblSampling::seed)
 const uint kStrategyBrdf = 0u;
 const uint kStrategyEnvironment = 1u;
 
-// Twin of GroundTruth.cpp specularSelectionProbability (Lobes::Material).
-float specularSelectionProbability(MaterialInfo m, float NoV)
+// Twin of GroundTruth.cpp lobeSelection (Lobes::Material): the probabilities of the BRDF
+// strategy's picking the coat (x) and the specular lobe (y); the diffuse lobe takes the rest.
+vec2 lobeSelection(MaterialInfo m, float NoV)
 {
     float metallic = saturate(m.metallic);
     vec3 baseColor = max(m.baseColor, vec3(0.0));
@@ -25,9 +26,16 @@ float specularSelectionProbability(MaterialInfo m, float NoV)
     const vec3 lum = vec3(0.2126, 0.7152, 0.0722);
     float specular = dot(F_Schlick(f0, 1.0, NoV), lum);
     float diffuse = dot(baseColor, lum) * (1.0 - metallic) * (1.0 - specular);
-    if (diffuse <= 0.0)
-        return 1.0;
-    return clamp(specular / (specular + diffuse), 0.1, 0.9);
+    vec2 p = vec2(0.0, diffuse <= 0.0 ? 1.0 : clamp(specular / (specular + diffuse), 0.1, 0.9));
+#ifdef MATERIAL_CLEARCOAT
+    if (m.clearcoat > 0.0) {
+        float coat = clearcoatWeight(m, NoV);
+        float base = (1.0 - coat) * (specular + max(diffuse, 0.0));
+        p.x = clamp(coat / max(coat + base, 1e-12), 0.1, 0.9);
+        p.y *= 1.0 - p.x;
+    }
+#endif
+    return p;
 }
 
 float powerHeuristic(float pdfA, float pdfB)
@@ -37,17 +45,25 @@ float powerHeuristic(float pdfA, float pdfB)
     return a + b > 0.0 ? a / (a + b) : 0.0;
 }
 
-// The BRDF strategy's density for world direction l: the lobe mixture.
-float brdfSamplingPdf(vec3 n, vec3 v, vec3 l, float NoV, float alpha, float pSpecular)
+float pdfVndfReflection(float NoV, float NoH, float alpha)
+{
+    return NoH > 0.0 ? G1_SmithGGX(NoV, alpha) * D_GGX(NoH, alpha) / (4.0 * NoV) : 0.0;
+}
+
+// The BRDF strategy's density for world direction l: the lobe mixture (p: lobeSelection; the
+// coat's visible normals are drawn about n too).
+float brdfSamplingPdf(vec3 n, vec3 v, vec3 l, float NoV, float alpha, float coatAlpha, vec2 p)
 {
     float NoL = dot(n, l);
     if (NoL <= 0.0)
         return 0.0;
-    float pdf = (1.0 - pSpecular) * pdfCosineHemisphere(NoL);
-    if (pSpecular > 0.0 && NoV > 0.0) {
+    float pdf = (1.0 - p.x - p.y) * pdfCosineHemisphere(NoL);
+    if (NoV > 0.0) {
         float NoH = dot(n, normalize(v + l));
-        if (NoH > 0.0)
-            pdf += pSpecular * G1_SmithGGX(NoV, alpha) * D_GGX(NoH, alpha) / (4.0 * NoV);
+        if (p.y > 0.0)
+            pdf += p.y * pdfVndfReflection(NoV, NoH, alpha);
+        if (p.x > 0.0)
+            pdf += p.x * pdfVndfReflection(NoV, NoH, coatAlpha);
     }
     return pdf;
 }
@@ -66,9 +82,11 @@ void addContribution(inout BrdfLobes sum, MaterialInfo m, vec3 n, vec3 v, vec3 l
     vec3 scale = radiance * (dot(n, l) * weightOverPdf);
     vec3 diffuse = f.diffuse * scale;
     vec3 specular = f.specular * scale;
-    if (isUsable(diffuse) && isUsable(specular)) {
+    vec3 coat = f.coat * scale;
+    if (isUsable(diffuse) && isUsable(specular) && isUsable(coat)) {
         sum.diffuse += diffuse;
         sum.specular += specular;
+        sum.coat += coat;
     }
 }
 
@@ -78,11 +96,13 @@ BrdfLobes referenceEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     BrdfLobes sum;
     sum.diffuse = vec3(0.0);
     sum.specular = vec3(0.0);
+    sum.coat = vec3(0.0);
     float NoV = dot(n, v);
     if (NoV < 0.0)
         return sum; // evaluateBrdf's rule: nothing is seen from below the surface
     float alpha = alphaFromRoughness(m.perceptualRoughness);
-    float pSpecular = specularSelectionProbability(m, min(NoV, 1.0));
+    float coatAlpha = alphaFromRoughness(m.clearcoatRoughness);
+    vec2 p = lobeSelection(m, min(NoV, 1.0));
     vec3 t;
     vec3 b;
     buildOrthonormalBasis(n, t, b);
@@ -97,14 +117,17 @@ BrdfLobes referenceEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
         // BRDF strategy: the first coordinate picks the lobe and is stretched back to [0, 1).
         vec2 u = shiftedSobol2D(s, brdfShift);
         vec3 l;
-        if (u.x < pSpecular) {
-            u.x = min(u.x / pSpecular, belowOne);
+        if (u.x < p.x) {
+            u.x = min(u.x / p.x, belowOne);
+            l = tangentToWorld(reflectAbout(vLocal, importanceSampleVNDF(u, vLocal, coatAlpha)), t, b, n);
+        } else if (u.x < p.x + p.y) {
+            u.x = min((u.x - p.x) / p.y, belowOne);
             l = tangentToWorld(reflectAbout(vLocal, importanceSampleVNDF(u, vLocal, alpha)), t, b, n);
         } else {
-            u.x = min((u.x - pSpecular) / (1.0 - pSpecular), belowOne);
+            u.x = min((u.x - p.x - p.y) / (1.0 - p.x - p.y), belowOne);
             l = tangentToWorld(sampleCosineHemisphere(u), t, b, n);
         }
-        float pdf = brdfSamplingPdf(n, v, l, NoV, alpha, pSpecular);
+        float pdf = brdfSamplingPdf(n, v, l, NoV, alpha, coatAlpha, p);
         if (dot(n, l) > 0.0 && pdf > 0.0)
             addContribution(sum, m, n, v, l, powerHeuristic(pdf, environmentPdf(l)) / pdf);
         // Environment strategy.
@@ -112,10 +135,11 @@ BrdfLobes referenceEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
         l = sampleEnvironment(shiftedSobol2D(s, environmentShift), environmentDensity);
         if (dot(n, l) > 0.0 && environmentDensity > 0.0)
             addContribution(sum, m, n, v, l,
-                            powerHeuristic(environmentDensity, brdfSamplingPdf(n, v, l, NoV, alpha, pSpecular))
+                            powerHeuristic(environmentDensity, brdfSamplingPdf(n, v, l, NoV, alpha, coatAlpha, p))
                                 / environmentDensity);
     }
     sum.diffuse /= float(count);
     sum.specular /= float(count);
+    sum.coat /= float(count);
     return sum;
 }

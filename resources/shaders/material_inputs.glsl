@@ -19,6 +19,11 @@ struct MaterialInfo {
     float occlusion;           // multiplies indirect light only
     vec3 emissive;             // emitted radiance (factor x texture x strength)
     float alpha;               // base colour alpha (factor x texture), for ALPHA_MASK / ALPHA_BLEND
+    // KHR_materials_clearcoat (MATERIAL_CLEARCOAT; 0 without it): strength, perceptual roughness
+    // and the coat's normal, the geometric one (surface.frag sets it; core's evaluate() uses n).
+    float clearcoat;
+    float clearcoatRoughness;
+    vec3 clearcoatNormal;
 };
 
 uniform vec4 uBaseColorFactor;
@@ -28,6 +33,10 @@ uniform float uOcclusionStrength;
 uniform float uNormalStrength;
 uniform float uIor;
 uniform vec3 uEmissiveFactor; // core Material::emissive(): factor x strength
+#ifdef MATERIAL_CLEARCOAT
+uniform float uClearcoatFactor;
+uniform float uClearcoatRoughness;
+#endif
 uniform mat3 uUvTransform[6];
 uniform int uChannel[6];
 uniform int uInvert[6];
@@ -148,6 +157,14 @@ MaterialInfo materialInputs(vec2 uv)
     m.metallic = clamp(m.metallic, 0.0, 1.0);
     m.perceptualRoughness = clamp(m.perceptualRoughness, 0.0, 1.0);
     m.ior = uIor;
+#ifdef MATERIAL_CLEARCOAT
+    m.clearcoat = clamp(uClearcoatFactor, 0.0, 1.0);
+    m.clearcoatRoughness = clamp(uClearcoatRoughness, 0.0, 1.0);
+#else
+    m.clearcoat = 0.0;
+    m.clearcoatRoughness = 0.0;
+#endif
+    m.clearcoatNormal = vec3(0.0, 0.0, 1.0); // the caller's geometric normal replaces it
     return m;
 }
 

@@ -48,6 +48,7 @@ void main()
     }
 #endif
     MaterialInfo m = materialInputs(vUv);
+    m.clearcoatNormal = ng; // KHR_materials_clearcoat without a coat normal texture: the geometric normal
 #ifdef ALPHA_MASK
     // glTF alphaMode MASK: below the cutoff nothing is drawn, above it the surface is opaque.
     if (m.alpha < uAlphaCutoff)
@@ -75,13 +76,19 @@ void main()
         if (NoL <= 0.0)
             continue;
         BrdfLobes f = evaluateBrdf(m, n, v, l, true);
-        direct += (f.diffuse + f.specular) * lightIrradiance * NoL;
+        direct += lobeTotal(f) * lightIrradiance * NoL;
     }
 #endif
-    // Ambient occlusion darkens indirect light only.
-    vec3 indirect = (ibl.diffuse + ibl.specular) * m.occlusion;
-    // Emission is not occluded: it leaves the surface itself.
-    vec3 color = indirect + direct + m.emissive;
+    // Ambient occlusion darkens indirect light only (the coat's reflection too, as the glTF
+    // Sample Viewer does).
+    vec3 indirect = lobeTotal(ibl) * m.occlusion;
+    // Emission is not occluded: it leaves the surface itself, through the coat's 1 - w_c
+    // (KHR_materials_clearcoat's coated_emission).
+    vec3 emission = m.emissive;
+#ifdef MATERIAL_CLEARCOAT
+    emission *= 1.0 - clearcoatWeight(m, dot(m.clearcoatNormal, v));
+#endif
+    vec3 color = indirect + direct + emission;
 #ifdef MATERIAL_UNLIT
     // KHR_materials_unlit: the base colour (factor x texture x vertex colour) is the radiance; the
     // lighting above is dead code the compiler drops (debug views still show it).
@@ -129,13 +136,13 @@ void main()
 #elif DEBUG_VIEW == DEBUG_BRDF_LUT
     color = dfgLookup(debugNoV, debugR).rgb;
 #elif DEBUG_VIEW == DEBUG_IBL_SPECULAR
-    color = ibl.specular * m.occlusion;
+    color = (ibl.specular + ibl.coat) * m.occlusion;
 #elif DEBUG_VIEW == DEBUG_IBL_TOTAL
     color = indirect;
 #elif DEBUG_VIEW == DEBUG_DIRECT_LIGHT
     color = direct;
 #elif DEBUG_VIEW == DEBUG_WHITE_FURNACE
-    color = ibl.diffuse + ibl.specular;
+    color = lobeTotal(ibl);
 #elif DEBUG_VIEW == DEBUG_UV
     color = vec3(vUv, 0.0);
 #elif DEBUG_VIEW == DEBUG_NON_FINITE

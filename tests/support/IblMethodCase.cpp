@@ -36,6 +36,8 @@ Project iblMethodCaseProject(const IblMethodCase& c, IblMethod method, int sampl
     m.shading.fresnel = c.fresnel;
     m.shading.coupling = c.coupling;
     m.shading.multiScatter = c.multiScatter;
+    m.clearcoat.factor = c.clearcoat;
+    m.clearcoat.roughness = c.clearcoatRoughness;
     return project;
 }
 

@@ -29,6 +29,9 @@ struct IblMethodCase {
     const char* environment = "studio";
     double rotationDegrees = 40.0;
     bool light = false; // one directional light (intensity 2) besides the environment
+    // KHR_materials_clearcoat: the coat's strength (0: none) and perceptual roughness.
+    double clearcoat = 0.0;
+    double clearcoatRoughness = 0.0;
 };
 
 // The default project with the case's environment, material and light, the sphere, no debug

@@ -134,6 +134,17 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     brdfForm->addRow(m_multiScatter); // spans the row: its text fits a narrow dock column
     layout->addWidget(brdfGroup);
 
+    // The layered lobes (docs/shading.md): a section each, open while the lobe is on.
+    QFormLayout* clearcoatForm = nullptr;
+    m_clearcoatGroup
+        = addLobeSection(tr("Clearcoat"), MaterialProperty::Clearcoat, 1.0, content, &clearcoatForm);
+    m_clearcoatGroup->setObjectName(QStringLiteral("clearcoatGroup"));
+    m_clearcoatGroup->setToolTip(tr("KHR_materials_clearcoat: a clear lacquer (IOR 1.5) over the material, "
+                                    "with its own roughness: car paint, varnished wood, coated plastic"));
+    addPropertySlider(MaterialProperty::Clearcoat, clearcoatForm, tr("Strength"));
+    addPropertySlider(MaterialProperty::ClearcoatRoughness, clearcoatForm, tr("Roughness"));
+    layout->addWidget(m_clearcoatGroup);
+
     auto* presetGroup = new QGroupBox(tr("Presets"), content);
     auto* presetLayout = new QVBoxLayout(presetGroup);
     m_presets->setObjectName(QStringLiteral("presetList"));
@@ -310,6 +321,53 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     onDocumentChanged(DocumentChange::WholeProject);
 }
 
+QGroupBox* MaterialDock::addLobeSection(
+    const QString& title, MaterialProperty strength, double onValue, QWidget* parent, QFormLayout** form)
+{
+    auto* group = new QGroupBox(title, parent);
+    group->setCheckable(true);
+    auto* body = new QWidget(group);
+    auto* groupLayout = new QVBoxLayout(group);
+    groupLayout->setContentsMargins(0, 0, 0, 0);
+    groupLayout->addWidget(body);
+    *form = new QFormLayout(body);
+    connect(group, &QGroupBox::toggled, body, &QWidget::setVisible);
+    connect(group, &QGroupBox::clicked, this, [this, strength, onValue, title](bool on) {
+        Material material = m_document->project().material();
+        setScalar(material, strength, on ? onValue : 0.0);
+        m_document->setMaterial(material, on ? tr("%1 On").arg(title) : tr("%1 Off").arg(title));
+    });
+    return group;
+}
+
+ValueSlider* MaterialDock::addPropertySlider(
+    MaterialProperty property, QFormLayout* form, const QString& label)
+{
+    const MaterialPropertyInfo& info = infoOf(property);
+    auto* slider = new ValueSlider(info.minimum, info.maximum, 3, form->parentWidget());
+    slider->setObjectName(QLatin1String(info.name) + QLatin1String("Slider"));
+    slider->setToolTip(QString::fromUtf8(info.label));
+    form->addRow(label, slider);
+    m_propertySliders.emplace_back(property, slider);
+    connect(slider, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
+    connect(slider, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);
+    connect(slider, &ValueSlider::valueEdited, this, [this, property](double value) {
+        Material material = m_document->project().material();
+        setScalar(material, property, value);
+        m_document->setMaterial(
+            material, QString::fromUtf8(infoOf(property).label), MergeId::MaterialProperty0 + int(property));
+    });
+    return slider;
+}
+
+ValueSlider* MaterialDock::propertySlider(MaterialProperty property) const
+{
+    for (const auto& [p, slider] : m_propertySliders)
+        if (p == property)
+            return slider;
+    return nullptr;
+}
+
 void MaterialDock::setLargeSwatches(bool large)
 {
     const bool changed = large != m_largeSwatches;
@@ -405,6 +463,9 @@ void MaterialDock::onDocumentChanged(DocumentChanges changes)
     m_alphaCutoff->setEnabled(material.alphaMode == AlphaMode::Mask);
     m_doubleSided->setChecked(material.doubleSided);
     m_unlit->setChecked(material.unlit);
+    for (const auto& [property, slider] : m_propertySliders)
+        slider->setValue(scalarOf(material, property));
+    m_clearcoatGroup->setChecked(material.clearcoat.isOn()); // toggled: the sliders show or hide
 }
 
 void MaterialDock::editShading(const QString& undoText, const std::function<void(ShadingModel&)>& change)

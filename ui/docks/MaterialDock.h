@@ -1,11 +1,14 @@
 #pragma once
 // The Material dock: the BRDF (composition, distribution, visibility, Fresnel, dielectric
 // coupling, multiple-scattering compensation), the IOR with the F0 it gives, how the base colour's
-// alpha is used (opaque, mask with its cutoff, blend) and double-sidedness, and the preset
+// alpha is used (opaque, mask with its cutoff, blend) and double-sidedness, a section per layered
+// lobe (Clearcoat; shown open while the lobe is on, its sliders made from the material property
+// registry's rows), and the preset
 // library: the built-in presets (core/material/MaterialPresets.h, the F0 table) and the user's
 // (ui/document/UserPresets.h). Apply, Save As Preset…, Delete (user presets only). Edits are undo steps
 // (a slider drag is one) on the project's current material (chosen in the Materials dock).
 
+#include "core/material/MaterialProperties.h"
 #include "core/shading/ShadingModel.h"
 #include "ui/document/DocumentChanges.h"
 #include "ui/document/UserPresets.h"
@@ -17,6 +20,8 @@
 
 class QCheckBox;
 class QComboBox;
+class QFormLayout;
+class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QFileSystemWatcher;
@@ -46,6 +51,11 @@ public:
     ValueSlider* alphaCutoffSlider() const { return m_alphaCutoff; }
     QCheckBox* doubleSidedCheck() const { return m_doubleSided; }
     QCheckBox* unlitCheck() const { return m_unlit; }
+    // The Clearcoat section (KHR_materials_clearcoat): checked when the coat is on; its sliders
+    // show only then.
+    QGroupBox* clearcoatGroup() const { return m_clearcoatGroup; }
+    // The slider of a registry property the dock shows (the lobes' sliders), or null.
+    ValueSlider* propertySlider(MaterialProperty property) const;
     // Applies the selected preset (one undo step). False when none is selected.
     bool applySelectedPreset();
     // The preset of `item` as a dragged material (ui/document/MaterialTransfer.h), named as listed.
@@ -93,6 +103,13 @@ private:
     void askExportPackage();
     void askImportPackage();
     void updatePresetButtons();
+    // A slider for a registry row: its range, label and undo merge id from the row; an edit sets
+    // the value on the current material as one undo step per drag.
+    ValueSlider* addPropertySlider(MaterialProperty property, QFormLayout* form, const QString& label);
+    // A lobe's section: a checkable group whose check turns the lobe on (its strength to
+    // `onValue`) and off (0), and whose sliders show only while it is on.
+    QGroupBox* addLobeSection(
+        const QString& title, MaterialProperty strength, double onValue, QWidget* parent, QFormLayout** form);
 
     Document* m_document;
     QLineEdit* m_name;
@@ -108,6 +125,8 @@ private:
     ValueSlider* m_alphaCutoff;
     QCheckBox* m_doubleSided;
     QCheckBox* m_unlit;
+    QGroupBox* m_clearcoatGroup = nullptr;
+    std::vector<std::pair<MaterialProperty, ValueSlider*>> m_propertySliders;
     QListWidget* m_presets;
     QPushButton* m_apply;
     QPushButton* m_delete;

@@ -45,6 +45,9 @@ enum : int {
     LightCone,
     EmissiveStrength,
     AlphaCutoff,
+    // A slider made from a row of the material property registry (core/material/
+    // MaterialProperties): MaterialProperty0 + int(MaterialProperty).
+    MaterialProperty0 = 500,
     kFirstFree = 1000,
 };
 } // namespace MergeId

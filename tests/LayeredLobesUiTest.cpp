@@ -1,0 +1,173 @@
+// The layered lobes in the window (Material dock, a section per lobe), under Xvfb: turning a lobe
+// on through its section's check is one undo step that re-renders, shows the lobe's sliders and
+// undoes back (sliders hidden, frame as before); a slider drag is one undo step named by the
+// property registry's label; an undo of the document moves the sliders. A row per lobe and edit.
+
+#include "core/material/MaterialProperties.h"
+#include "ui/docks/MaterialDock.h"
+#include "ui/widgets/ValueSlider.h"
+
+#include "TestSupport.h"
+#include "WindowTestSupport.h"
+
+#include <QGroupBox>
+#include <QSlider>
+#include <QStyle>
+#include <QStyleOptionGroupBox>
+#include <QStyleOptionSlider>
+#include <QTemporaryDir>
+
+using namespace facet;
+
+namespace {
+
+// Clicks a checkable group box's check, where a user clicks it.
+void clickGroupCheck(QGroupBox* group)
+{
+    QStyleOptionGroupBox option;
+    option.initFrom(group);
+    option.subControls = QStyle::SC_GroupBoxCheckBox;
+    option.text = group->title();
+    option.features = QStyleOptionFrame::None;
+    const QRect box
+        = group->style()->subControlRect(QStyle::CC_GroupBox, &option, QStyle::SC_GroupBoxCheckBox, group);
+    QTest::mouseClick(group, Qt::LeftButton, Qt::NoModifier, box.center());
+}
+
+void dragSlider(QSlider* slider, int deltaX)
+{
+    QStyleOptionSlider option;
+    option.initFrom(slider);
+    option.orientation = slider->orientation();
+    option.minimum = slider->minimum();
+    option.maximum = slider->maximum();
+    option.sliderPosition = slider->sliderPosition();
+    option.sliderValue = slider->value();
+    const QPoint start = slider->style()
+                             ->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider)
+                             .center();
+    QTest::mousePress(slider, Qt::LeftButton, Qt::NoModifier, start);
+    for (int i = 1; i <= 6; ++i)
+        QTest::mouseMove(slider, start + QPoint(deltaX * i / 6, 0), 10);
+    QTest::mouseRelease(slider, Qt::LeftButton, Qt::NoModifier, start + QPoint(deltaX, 0), 10);
+}
+
+} // namespace
+
+class LayeredLobesUiTest : public QObject {
+    Q_OBJECT
+public:
+    static void initMain() { test::initWindowTestMain(); }
+
+private Q_SLOTS:
+    void initTestCase()
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("FacetTests"));
+        m_window = test::showTestWindow(m_recovery.path());
+        QVERIFY(m_window);
+        m_document = m_window->document();
+    }
+    void cleanupTestCase() { m_window.reset(); }
+    void init()
+    {
+        // The default material, lobes off, history empty; the Material dock in front.
+        Material material = m_document->project().material();
+        material.clearcoat = {};
+        material.setBaseColor(glm::dvec3(0.6, 0.05, 0.02));
+        material.setFactor(MapSlot::Roughness, 0.7);
+        m_document->setMaterial(material, QStringLiteral("test setup"));
+        m_document->undoStack()->clear();
+        QVERIFY(test::focusWidget(m_window->materialDock()->clearcoatGroup()));
+    }
+
+    void turningALobeOnIsOneStep_data()
+    {
+        QTest::addColumn<int>("strength"); // the registry's property the section turns on
+        QTest::addColumn<QString>("undoText");
+        QTest::newRow("clearcoat") << int(MaterialProperty::Clearcoat) << QStringLiteral("Clearcoat On");
+    }
+    void turningALobeOnIsOneStep()
+    {
+        QFETCH(int, strength);
+        QFETCH(QString, undoText);
+        MaterialDock* dock = m_window->materialDock();
+        QGroupBox* group = dock->clearcoatGroup();
+        ValueSlider* slider = dock->propertySlider(MaterialProperty(strength));
+        QVERIFY(group && slider);
+        QVERIFY(!group->isChecked() && !slider->isVisible()); // off: the section shows its title only
+        const QImage before = frame();
+        clickGroupCheck(group);
+        QCOMPARE(scalarOf(m_document->project().material(), MaterialProperty(strength)), 1.0);
+        QCOMPARE(m_document->undoStack()->count(), 1);
+        QCOMPARE(m_document->undoStack()->undoText(), undoText);
+        QVERIFY(group->isChecked() && slider->isVisible());
+        QCOMPARE(slider->value(), 1.0);
+        const QImage on = frame();
+        QVERIFY2(difference(before, on) > 2.0, qPrintable(QString::number(difference(before, on))));
+        m_document->undoStack()->undo();
+        QCOMPARE(scalarOf(m_document->project().material(), MaterialProperty(strength)), 0.0);
+        QVERIFY(!group->isChecked() && !slider->isVisible());
+        QVERIFY2(difference(before, frame()) < 0.5, qPrintable(QString::number(difference(before, frame()))));
+    }
+
+    void aSliderDragIsOneStep_data()
+    {
+        QTest::addColumn<int>("property");
+        QTest::newRow("clearcoat strength") << int(MaterialProperty::Clearcoat);
+        QTest::newRow("clearcoat roughness") << int(MaterialProperty::ClearcoatRoughness);
+    }
+    void aSliderDragIsOneStep()
+    {
+        QFETCH(int, property);
+        Material material = m_document->project().material();
+        material.clearcoat = {0.5, 0.5};
+        m_document->setMaterial(material, QStringLiteral("test setup"));
+        m_document->undoStack()->clear();
+        ValueSlider* slider = m_window->materialDock()->propertySlider(MaterialProperty(property));
+        QVERIFY(slider && slider->isVisible());
+        QCOMPARE(slider->value(), 0.5);
+        dragSlider(slider->slider(), slider->slider()->width() / 4);
+        const double value = scalarOf(m_document->project().material(), MaterialProperty(property));
+        QVERIFY2(value > 0.6 && value <= 1.0, qPrintable(QString::number(value)));
+        QCOMPARE(slider->value(), value);
+        QCOMPARE(m_document->undoStack()->count(), 1); // a drag: one step
+        QCOMPARE(
+            m_document->undoStack()->undoText(), QString::fromUtf8(infoOf(MaterialProperty(property)).label));
+        m_document->undoStack()->undo();
+        QCOMPARE(slider->value(), 0.5); // the document moved the slider back
+    }
+
+private:
+    // The finished frame (the refinement done, the lighting ready).
+    QImage frame()
+    {
+        ViewportWidget* viewport = m_window->viewport();
+        QTest::qWait(50);
+        const bool settled = QTest::qWaitFor(
+            [viewport] { return !viewport->isPreviewing() && !viewport->lastFrameStats().lightingPending; },
+            30000);
+        return settled ? viewport->grabFramebuffer() : QImage(); // a null image differs from every frame
+    }
+    // Mean absolute difference of two frames, in 8-bit levels per channel.
+    static double difference(const QImage& a, const QImage& b)
+    {
+        if (a.size() != b.size())
+            return 255.0;
+        double sum = 0.0;
+        for (int y = 0; y < a.height(); ++y)
+            for (int x = 0; x < a.width(); ++x) {
+                const QColor p = a.pixelColor(x, y);
+                const QColor q = b.pixelColor(x, y);
+                sum += std::abs(p.red() - q.red()) + std::abs(p.green() - q.green())
+                    + std::abs(p.blue() - q.blue());
+            }
+        return sum / (3.0 * a.width() * a.height());
+    }
+
+    QTemporaryDir m_recovery;
+    std::unique_ptr<MainWindow> m_window;
+    Document* m_document = nullptr;
+};
+
+QTEST_MAIN(LayeredLobesUiTest)
+#include "LayeredLobesUiTest.moc"
