@@ -29,6 +29,7 @@
 
 #include "TestAssets.h"
 #include "TestSupport.h"
+#include "WindowTestSupport.h"
 
 #include <QAbstractItemView>
 #include <QAction>
@@ -47,7 +48,6 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStandardPaths>
-#include <QStyleOptionSlider>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QUrl>
@@ -70,36 +70,6 @@ template <typename Predicate> bool waitFor(Predicate done, int timeoutMs = 30000
         QTest::qWait(20);
     }
     return true;
-}
-
-// Where the slider's handle is, from the style (what a user would grab).
-QPoint handleCentre(QSlider* slider)
-{
-    QStyleOptionSlider option;
-    option.initFrom(slider);
-    option.orientation = slider->orientation();
-    option.minimum = slider->minimum();
-    option.maximum = slider->maximum();
-    option.sliderPosition = slider->sliderPosition();
-    option.sliderValue = slider->value();
-    option.singleStep = slider->singleStep();
-    option.pageStep = slider->pageStep();
-    option.upsideDown = slider->invertedAppearance();
-    option.subControls = QStyle::SC_All;
-    return slider->style()
-        ->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider)
-        .center();
-}
-
-// A user's drag: press on the handle, several moves, release.
-void dragSlider(QSlider* slider, int deltaX)
-{
-    const QPoint start = handleCentre(slider);
-    QTest::mousePress(slider, Qt::LeftButton, Qt::NoModifier, start);
-    constexpr int kMoves = 6;
-    for (int i = 1; i <= kMoves; ++i)
-        QTest::mouseMove(slider, start + QPoint(deltaX * i / kMoves, 0), 10);
-    QTest::mouseRelease(slider, Qt::LeftButton, Qt::NoModifier, start + QPoint(deltaX, 0), 10);
 }
 
 // Drags `urls` onto `target` and drops them there, as the desktop would.
@@ -218,7 +188,7 @@ void DocksUiTest::roughnessDragIsOneUndoStep()
     const SceneController::LoadCounts loadsBefore = m_window->sceneController()->loadCounts();
     QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
 
-    dragSlider(slider, slider->width() / 4);
+    test::dragSlider(slider, slider->width() / 4);
 
     const double after = m_document->project().material().roughness();
     QVERIFY2(after > before + 0.05, qPrintable(QStringLiteral("roughness %1 -> %2").arg(before).arg(after)));
@@ -498,7 +468,7 @@ void DocksUiTest::lightsAddEditRemove()
     const double outerBefore = m_document->project().lights[0].outerConeAngle;
     auto* outer = m_window->findChild<ValueSlider*>(QStringLiteral("lightOuterConeSlider"));
     QVERIFY(outer);
-    dragSlider(outer->slider(), -outer->slider()->width() / 5);
+    test::dragSlider(outer->slider(), -outer->slider()->width() / 5);
     const Light& edited = m_document->project().lights[0];
     QVERIFY(edited.outerConeAngle < outerBefore);
     QVERIFY(edited.innerConeAngle < edited.outerConeAngle);
@@ -560,7 +530,7 @@ void DocksUiTest::viewDockExposureAndDebugView()
     ValueSlider* exposure = dock->exposureSlider();
     const double before = m_document->project().view.exposureEV;
     const int steps = m_document->undoStack()->index();
-    dragSlider(exposure->slider(), exposure->slider()->width() / 6);
+    test::dragSlider(exposure->slider(), exposure->slider()->width() / 6);
     QVERIFY(m_document->project().view.exposureEV > before);
     QCOMPARE(m_document->undoStack()->index(), steps + 1);
     QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Exposure"));

@@ -14,7 +14,6 @@
 #include <QSlider>
 #include <QStyle>
 #include <QStyleOptionGroupBox>
-#include <QStyleOptionSlider>
 #include <QTemporaryDir>
 
 using namespace facet;
@@ -32,24 +31,6 @@ void clickGroupCheck(QGroupBox* group)
     const QRect box
         = group->style()->subControlRect(QStyle::CC_GroupBox, &option, QStyle::SC_GroupBoxCheckBox, group);
     QTest::mouseClick(group, Qt::LeftButton, Qt::NoModifier, box.center());
-}
-
-void dragSlider(QSlider* slider, int deltaX)
-{
-    QStyleOptionSlider option;
-    option.initFrom(slider);
-    option.orientation = slider->orientation();
-    option.minimum = slider->minimum();
-    option.maximum = slider->maximum();
-    option.sliderPosition = slider->sliderPosition();
-    option.sliderValue = slider->value();
-    const QPoint start = slider->style()
-                             ->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider)
-                             .center();
-    QTest::mousePress(slider, Qt::LeftButton, Qt::NoModifier, start);
-    for (int i = 1; i <= 6; ++i)
-        QTest::mouseMove(slider, start + QPoint(deltaX * i / 6, 0), 10);
-    QTest::mouseRelease(slider, Qt::LeftButton, Qt::NoModifier, start + QPoint(deltaX, 0), 10);
 }
 
 } // namespace
@@ -126,7 +107,7 @@ private Q_SLOTS:
         ValueSlider* slider = m_window->materialDock()->propertySlider(MaterialProperty(property));
         QVERIFY(slider && slider->isVisible());
         QCOMPARE(slider->value(), 0.5);
-        dragSlider(slider->slider(), slider->slider()->width() / 4);
+        test::dragSlider(slider->slider(), slider->slider()->width() / 4);
         const double value = scalarOf(m_document->project().material(), MaterialProperty(property));
         QVERIFY2(value > 0.6 && value <= 1.0, qPrintable(QString::number(value)));
         QCOMPARE(slider->value(), value);

@@ -36,6 +36,7 @@
 #include "GltfWriter.h"
 #include "TestAssets.h"
 #include "TestSupport.h"
+#include "WindowTestSupport.h"
 
 #include <QAbstractItemView>
 #include <QAction>
@@ -58,7 +59,6 @@
 #include <QSlider>
 #include <QStandardPaths>
 #include <QStyleOptionButton>
-#include <QStyleOptionSlider>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QTreeWidget>
@@ -86,35 +86,6 @@ template <typename Predicate> bool waitFor(Predicate done, int timeoutMs = 30000
         QTest::qWait(20);
     }
     return true;
-}
-
-QPoint handleCentre(QSlider* slider)
-{
-    QStyleOptionSlider option;
-    option.initFrom(slider);
-    option.orientation = slider->orientation();
-    option.minimum = slider->minimum();
-    option.maximum = slider->maximum();
-    option.sliderPosition = slider->sliderPosition();
-    option.sliderValue = slider->value();
-    option.singleStep = slider->singleStep();
-    option.pageStep = slider->pageStep();
-    option.upsideDown = slider->invertedAppearance();
-    option.subControls = QStyle::SC_All;
-    return slider->style()
-        ->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider)
-        .center();
-}
-
-// A user's drag: press on the handle, several moves, release.
-void dragSlider(QSlider* slider, int deltaX)
-{
-    const QPoint start = handleCentre(slider);
-    QTest::mousePress(slider, Qt::LeftButton, Qt::NoModifier, start);
-    constexpr int kMoves = 6;
-    for (int i = 1; i <= kMoves; ++i)
-        QTest::mouseMove(slider, start + QPoint(deltaX * i / kMoves, 0), 10);
-    QTest::mouseRelease(slider, Qt::LeftButton, Qt::NoModifier, start + QPoint(deltaX, 0), 10);
 }
 
 // Picks `text` in a combo box through its popup, as a user does with the keyboard: open it, arrow
@@ -807,7 +778,7 @@ void MaterialsUiTest::emissiveAndAlphaEditsReachTheFrame()
         break;
     case Edit::EmissiveStrength: {
         QCOMPARE(emissiveSlot->strengthSlider()->value(), 1.0);
-        dragSlider(
+        test::dragSlider(
             emissiveSlot->strengthSlider()->slider(), emissiveSlot->strengthSlider()->slider()->width() / 6);
         QVERIFY2(m_document->project().material().emissiveStrength > 4.0,
             qPrintable(QString::number(m_document->project().material().emissiveStrength)));
@@ -820,7 +791,7 @@ void MaterialsUiTest::emissiveAndAlphaEditsReachTheFrame()
         break;
     case Edit::AlphaCutoff:
         QVERIFY(material->alphaCutoffSlider()->isEnabled());
-        dragSlider(
+        test::dragSlider(
             material->alphaCutoffSlider()->slider(), -material->alphaCutoffSlider()->slider()->width() / 2);
         QVERIFY2(m_document->project().material().alphaCutoff < 0.3,
             qPrintable(QString::number(m_document->project().material().alphaCutoff)));

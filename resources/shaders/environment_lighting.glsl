@@ -111,9 +111,37 @@ uniform int uEnvironmentSourceBound; // 0: no source equirect bound (fis reads t
 uniform int uSharpLobeSamples;       // SPLIT_SUM_SHARP_LOBES: the split sum's sharp lobes' fis samples
 #include "ibl_fis.glsl"
 
+// The split sum's light of one microfacet lobe of perceptual roughness r about its own normal n (the
+// shading normal, or the clear coat's): the prefiltered radiance at the lobe's dominant direction.
+// The lobe's albedo (the DFG table's scale and bias with its Fresnel) is the caller's.
+vec3 splitSumLobeRadiance(vec3 n, vec3 v, float roughness)
+{
+    return prefilteredRadiance(specularDominantDirection(n, reflect(-v, n), roughness * roughness), roughness);
+}
+
+// Lobes sharper than level 1: the prefiltered map's level 0 is the environment resampled into a
+// small cube, and a mirror-like lobe read there is blurred and shifted by that resampling (20% at
+// roughness 0.05 on forest). Those pixels integrate their own lobe instead, by a few filtered
+// importance samples of the environment cube (fisLobe, the fis estimator), faded in over lod 1 to
+// 0.5 so that a roughness map shows no seam. `splitSum` is the lobe's split-sum light with its
+// weights (fisLobe's samples carry the same: evaluateBrdf's). render/RenderScene.h
+// kSplitSumSharpLobeSamples; the variant only for materials with a lobe below level 1
+// (render/Renderer.cpp splitSumSharpLobes).
+vec3 withSharpLobe(vec3 splitSum, MaterialInfo m, vec3 n, vec3 v, int lobe, float roughness)
+{
+#ifdef SPLIT_SUM_SHARP_LOBES
+    float sharp = 1.0 - smoothstep(0.5, 1.0, lodFromRoughness(roughness, uPrefilteredLevels));
+    if (sharp > 0.0)
+        return mix(splitSum, fisLobe(m, facingNormal(n, v), v, lobe, 0, uSharpLobeSamples, uint(uSharpLobeSamples)),
+                   sharp);
+#endif
+    return splitSum;
+}
+
 // The split-sum lobes for the view direction v (unit, towards the viewer) at normal n:
 //   specular = prefiltered(R, lod(r)) * (F0 scale + bias) * M(F0)             (per lobe F0)
 //   diffuse  = E(n) / pi * environmentDiffuseAlbedo
+//   coat     = prefiltered(R_c, lod(r_c)) * (scale_c + bias_c) * w_c, the others times 1 - w_c
 // glTF:  specular = (1 - m) spec(F0_d) + m spec(c);  LearnOpenGL: F0 = mix(F0_d, c, m), spec(F0).
 BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
 {
@@ -122,8 +150,7 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     float roughness = clampRoughness(m.perceptualRoughness);
     float metallic = saturate(m.metallic);
     vec3 baseColor = max(m.baseColor, vec3(0.0));
-    vec3 R = specularDominantDirection(n, reflect(-v, n), roughness * roughness);
-    vec3 radiance = prefilteredRadiance(R, roughness);
+    vec3 radiance = splitSumLobeRadiance(n, v, roughness);
     vec4 dfg = dfgLookup(NoV, roughness);
     float f0Dielectric = f0FromIor(m.ior);
 #ifdef COMPOSITION_LEARNOPENGL
@@ -134,17 +161,11 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     vec3 specularMetal = (baseColor * dfg.r + dfg.g) * multiScatterFactor(baseColor, NoV, roughness);
     lobes.specular = radiance * mix(specularDielectric, specularMetal, metallic);
 #endif
-    // Lobes sharper than level 1: the prefiltered map's level 0 is the environment resampled into
-    // a small cube, and a mirror-like lobe read there is blurred and shifted by that resampling
-    // (20% at roughness 0.05 on forest). Those pixels integrate their own lobe instead, by a few
-    // filtered importance samples of the environment cube (the fis estimator), faded in over lod
-    // 1 to 0.5 so that a roughness map shows no seam. render/RenderScene.h kSplitSumSharpLobeSamples;
-    // the variant only for materials whose roughness reaches below level 1 (render/Renderer.cpp).
     lobes.diffuse = irradiance(n) * INV_PI * environmentDiffuseAlbedo(m, NoV, roughness);
     lobes.coat = vec3(0.0);
 #ifdef MATERIAL_CLEARCOAT
-    // The coat: prefiltered(R_c, lod(r_c)) times its lobe's albedo with F = 1 (the DFG table's
-    // scale + bias), weighted by w_c; the base keeps 1 - w_c.
+    // The coat: its prefiltered light times its lobe's albedo with F = 1 (the DFG table's scale +
+    // bias), weighted by w_c; the base keeps 1 - w_c.
     vec3 nc = m.clearcoatNormal;
     float NcoV = clamp(dot(nc, v), 0.0, 1.0);
     float coatRoughness = clampRoughness(m.clearcoatRoughness);
@@ -152,24 +173,10 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     lobes.diffuse *= 1.0 - coatWeight;
     lobes.specular *= 1.0 - coatWeight;
     vec4 coatDfg = dfgLookup(NcoV, coatRoughness);
-    vec3 Rc = specularDominantDirection(nc, reflect(-v, nc), coatRoughness * coatRoughness);
-    lobes.coat = prefilteredRadiance(Rc, coatRoughness) * ((coatDfg.r + coatDfg.g) * coatWeight);
+    lobes.coat = withSharpLobe(splitSumLobeRadiance(nc, v, coatRoughness) * ((coatDfg.r + coatDfg.g) * coatWeight),
+                               m, nc, v, LOBE_COAT, coatRoughness);
 #endif
-#ifdef SPLIT_SUM_SHARP_LOBES
-    // (fisLobe's samples include the coat's 1 - w_c, as the lines above do.)
-    float sharp = 1.0 - smoothstep(0.5, 1.0, lodFromRoughness(roughness, uPrefilteredLevels));
-    if (sharp > 0.0) {
-        vec3 integrated = fisLobe(m, facingNormal(n, v), v, LOBE_SPECULAR, 0, uSharpLobeSamples, uint(uSharpLobeSamples));
-        lobes.specular = mix(lobes.specular, integrated, sharp);
-    }
-#ifdef MATERIAL_CLEARCOAT
-    float coatSharp = 1.0 - smoothstep(0.5, 1.0, lodFromRoughness(coatRoughness, uPrefilteredLevels));
-    if (coatSharp > 0.0) {
-        vec3 integrated = fisLobe(m, facingNormal(nc, v), v, LOBE_COAT, 0, uSharpLobeSamples, uint(uSharpLobeSamples));
-        lobes.coat = mix(lobes.coat, integrated, coatSharp);
-    }
-#endif
-#endif
+    lobes.specular = withSharpLobe(lobes.specular, m, n, v, LOBE_SPECULAR, roughness);
     return lobes;
 }
 

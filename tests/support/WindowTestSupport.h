@@ -12,7 +12,10 @@
 #include <QDockWidget>
 #include <QMessageBox>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QStandardPaths>
+#include <QStyle>
+#include <QStyleOptionSlider>
 #include <QUndoStack>
 #include <QtTest/QTest>
 
@@ -71,6 +74,36 @@ inline bool focusWidget(QWidget* widget)
         }
     widget->setFocus(Qt::OtherFocusReason);
     return QTest::qWaitFor([widget] { return widget->hasFocus(); }, 5000);
+}
+
+// Where a slider's handle is, from the style (what a user would grab).
+inline QPoint sliderHandleCentre(QSlider* slider)
+{
+    QStyleOptionSlider option;
+    option.initFrom(slider);
+    option.orientation = slider->orientation();
+    option.minimum = slider->minimum();
+    option.maximum = slider->maximum();
+    option.sliderPosition = slider->sliderPosition();
+    option.sliderValue = slider->value();
+    option.singleStep = slider->singleStep();
+    option.pageStep = slider->pageStep();
+    option.upsideDown = slider->invertedAppearance();
+    option.subControls = QStyle::SC_All;
+    return slider->style()
+        ->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, slider)
+        .center();
+}
+
+// A user's drag of a slider by `deltaX` pixels: press on the handle, several moves, release.
+inline void dragSlider(QSlider* slider, int deltaX)
+{
+    const QPoint start = sliderHandleCentre(slider);
+    QTest::mousePress(slider, Qt::LeftButton, Qt::NoModifier, start);
+    constexpr int kMoves = 6;
+    for (int i = 1; i <= kMoves; ++i)
+        QTest::mouseMove(slider, start + QPoint(deltaX * i / kMoves, 0), 10);
+    QTest::mouseRelease(slider, Qt::LeftButton, Qt::NoModifier, start + QPoint(deltaX, 0), 10);
 }
 
 } // namespace facet::test
