@@ -576,8 +576,10 @@ std::optional<GltfAsset> importChecked(
         return std::nullopt;
 
     GltfAsset asset;
+    Notes unreported;
+    Notes& materialNotes = options.materialNotes ? notes : unreported;
     for (std::size_t i = 0; i < model.materials.size(); ++i)
-        asset.materials.push_back(gltfsupport::convertMaterial(model, int(i), path, notes));
+        asset.materials.push_back(gltfsupport::convertMaterial(model, int(i), path, materialNotes));
     int defaultMaterial = -1;
     const auto materialFor = [&](int index) -> std::optional<int> {
         if (index >= 0 && std::size_t(index) < model.materials.size())

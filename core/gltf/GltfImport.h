@@ -39,6 +39,11 @@ struct GltfImportOptions {
     // what a project needs from an asset whose mesh the view loads separately. Faster, and the
     // mesh's own repairs are noted once, by the mesh import.
     bool materialsOnly = false;
+    // Whether the materials' notes (an extension or texture not read, a factor clamped, an image
+    // missing) are part of *warning. importMesh turns them off: its callers read the materials
+    // through importGltf, which reports them, or take none of the asset's materials (a mesh only),
+    // so they would be said twice, or about materials not used.
+    bool materialNotes = true;
 };
 
 struct GltfAsset {

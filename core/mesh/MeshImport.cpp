@@ -567,6 +567,7 @@ std::optional<Mesh> importMesh(
     if (isGltfFileName(path)) {
         GltfImportOptions gltfOptions;
         gltfOptions.mesh = options;
+        gltfOptions.materialNotes = false; // the materials' import reports them (GltfImportOptions)
         std::string gltfError;
         auto asset = importGltf(path, &gltfError, warning, gltfOptions);
         // The messages keep importMesh's own prefix, the contract of this function.
