@@ -238,6 +238,20 @@ void InspectionUiTest::valuePickerFollowsPinsAndStops()
                 < 1e-6;
         },
         10000));
+    // A clear coat: its rows join the material's inputs (none without one).
+    ValuesDock* values = m_window->valuesDock();
+    QVERIFY2(
+        values->valueOf(QStringLiteral("Material inputs/Clearcoat")).isEmpty(), qPrintable(values->text()));
+    material.clearcoat = {0.75, 0.25};
+    m_document->setMaterial(material, QStringLiteral("Coated"));
+    QVERIFY(settledFrame());
+    QVERIFY(QTest::qWaitFor(
+        [&] {
+            return values->valueOf(QStringLiteral("Material inputs/Clearcoat")) == QStringLiteral("0.75");
+        },
+        10000));
+    QCOMPARE(values->valueOf(QStringLiteral("Material inputs/Clearcoat roughness")), QStringLiteral("0.25"));
+    QCOMPARE(picker->current()->surface->probe.inputs.clearcoat, 0.75);
     // Esc follows the cursor again.
     QTest::keyClick(viewport, Qt::Key_Escape);
     QVERIFY(!picker->isPinned());

@@ -210,6 +210,10 @@ void ValuesDock::showValue(const PickedValue& value)
         row(material, tr("Occlusion"), number(inputs.occlusion));
         if (inputs.emissive != glm::dvec3(0.0))
             row(material, tr("Emission"), components(inputs.emissive));
+        if (inputs.clearcoat > 0.0) {
+            row(material, tr("Clearcoat"), number(inputs.clearcoat));
+            row(material, tr("Clearcoat roughness"), number(inputs.clearcoatRoughness));
+        }
     }
     m_tree->expandAll();
     for (int i = 0; i < m_tree->topLevelItemCount(); ++i)
