@@ -116,6 +116,14 @@ private Q_SLOTS:
             glossyStats.mean, roughStats.largest, roughStats.mean);
         QVERIFY(glossyStats.largest > roughStats.largest + 0.15);
 
+        // A smooth clear coat over the rough one: the soft box's sharp highlight again, over the
+        // rough base (the coat lit by its own prefiltered light).
+        Material coated = rough;
+        coated.clearcoat = {1.0, 0.05};
+        const Stats coatedStats = stats(renderer.render(coated, {}, kSize));
+        qInfo("highlight: coated rough %.3f (mean %.3f)", coatedStats.largest, coatedStats.mean);
+        QVERIFY(coatedStats.largest > roughStats.largest + 0.15);
+
         Material lamp = rough;
         lamp.map(MapSlot::Emissive).factor = glm::dvec4(1.0, 0.3, 0.0, 1.0);
         lamp.emissiveStrength = 4.0;
