@@ -38,9 +38,10 @@ constexpr int kSamples = 1024;
 using Row = facet::test::IblMethodCase;
 
 Row coated(const char* name, glm::dvec3 baseColor, double metallic, double roughness, double clearcoat,
-    double clearcoatRoughness)
+    double clearcoatRoughness, bool light = false)
 {
     Row row {name};
+    row.light = light;
     row.baseColor = baseColor;
     row.metallic = metallic;
     row.roughness = roughness;
@@ -69,6 +70,8 @@ const LobeRow kRows[] = {
     {coated(
         "clearcoat 0.25, 0.15, over a half metal (0.5)", glm::dvec3(0.5, 0.7, 0.9), 0.5, 0.5, 0.25, 0.15)},
     {coated("clearcoat 1, 0.2, over black (1): the coat alone", glm::dvec3(0.0), 0.0, 1.0, 1.0, 0.2), 0.08},
+    // A directional light besides the environment: the coat's punctual lobe.
+    {coated("clearcoat 1, 0.2, over a red dielectric (0.5), a light", kRed, 0.0, 0.5, 1.0, 0.2, true)},
 };
 
 const IblMethod kMethods[] = {IblMethod::SplitSum, IblMethod::Fis, IblMethod::Reference};
