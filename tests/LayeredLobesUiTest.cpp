@@ -1,7 +1,8 @@
 // The layered lobes in the window (Material dock, a section per lobe), under Xvfb: turning a lobe
 // on through its section's check is one undo step that re-renders, shows the lobe's sliders and
-// undoes back (sliders hidden, frame as before); a slider drag is one undo step named by the
-// property registry's label; an undo of the document moves the sliders. A row per lobe and edit.
+// undoes back (sliders hidden, frame as before); a drag of any slider made from the property
+// registry is one undo step named by the row's label; an undo of the document moves the sliders. A
+// row per lobe and edit.
 
 #include "core/material/MaterialProperties.h"
 #include "ui/docks/MaterialDock.h"
@@ -10,6 +11,7 @@
 #include "TestSupport.h"
 #include "WindowTestSupport.h"
 
+#include <QDoubleSpinBox>
 #include <QGroupBox>
 #include <QSlider>
 #include <QStyle>
@@ -91,31 +93,41 @@ private Q_SLOTS:
         QVERIFY2(difference(before, frame()) < 0.5, qPrintable(QString::number(difference(before, frame()))));
     }
 
-    void aSliderDragIsOneStep_data()
+    // Every slider the Material dock makes from a registry row (the lobes' and the IOR and alpha
+    // cutoff): a drag is one undo step named by the row's label, within the row's range; an undo
+    // moves the slider back.
+    void aRegistrySliderDragIsOneStep_data()
     {
         QTest::addColumn<int>("property");
-        QTest::newRow("clearcoat strength") << int(MaterialProperty::Clearcoat);
-        QTest::newRow("clearcoat roughness") << int(MaterialProperty::ClearcoatRoughness);
+        QTest::addColumn<double>("start");
+        QTest::newRow("clearcoat strength") << int(MaterialProperty::Clearcoat) << 0.5;
+        QTest::newRow("clearcoat roughness") << int(MaterialProperty::ClearcoatRoughness) << 0.5;
+        QTest::newRow("ior (the slider ends at 3, the spin box at 5)") << int(MaterialProperty::Ior) << 2.0;
+        QTest::newRow("alpha cutoff (mask)") << int(MaterialProperty::AlphaCutoff) << 0.5;
     }
-    void aSliderDragIsOneStep()
+    void aRegistrySliderDragIsOneStep()
     {
         QFETCH(int, property);
+        QFETCH(double, start);
+        const MaterialPropertyInfo& info = infoOf(MaterialProperty(property));
         Material material = m_document->project().material();
         material.clearcoat = {0.5, 0.5};
+        material.alphaMode = AlphaMode::Mask;
+        setScalar(material, MaterialProperty(property), start);
         m_document->setMaterial(material, QStringLiteral("test setup"));
         m_document->undoStack()->clear();
         ValueSlider* slider = m_window->materialDock()->propertySlider(MaterialProperty(property));
-        QVERIFY(slider && slider->isVisible());
-        QCOMPARE(slider->value(), 0.5);
+        QVERIFY(slider && slider->isVisible() && slider->isEnabled());
+        QCOMPARE(slider->value(), start);
+        QCOMPARE(slider->spinBox()->maximum(), info.maximum); // typing reaches the whole range
         test::dragSlider(slider->slider(), slider->slider()->width() / 4);
         const double value = scalarOf(m_document->project().material(), MaterialProperty(property));
-        QVERIFY2(value > 0.6 && value <= 1.0, qPrintable(QString::number(value)));
+        QVERIFY2(value > start + 0.05 && value <= info.maximum, qPrintable(QString::number(value)));
         QCOMPARE(slider->value(), value);
         QCOMPARE(m_document->undoStack()->count(), 1); // a drag: one step
-        QCOMPARE(
-            m_document->undoStack()->undoText(), QString::fromUtf8(infoOf(MaterialProperty(property)).label));
+        QCOMPARE(m_document->undoStack()->undoText(), QString::fromUtf8(info.label));
         m_document->undoStack()->undo();
-        QCOMPARE(slider->value(), 0.5); // the document moved the slider back
+        QCOMPARE(slider->value(), start); // the document moved the slider back
     }
 
 private:

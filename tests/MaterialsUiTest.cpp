@@ -725,7 +725,7 @@ void MaterialsUiTest::emissiveAndAlphaEditsReachTheFrame_data()
     QTest::newRow("emissive strength (a slider drag)")
         << Edit::EmissiveStrength << QStringLiteral("Emissive Strength");
     QTest::newRow("alpha mode mask") << Edit::AlphaMask << QStringLiteral("Alpha Mode");
-    QTest::newRow("alpha cutoff (a slider drag)") << Edit::AlphaCutoff << QStringLiteral("Alpha Cutoff");
+    QTest::newRow("alpha cutoff (a slider drag)") << Edit::AlphaCutoff << QStringLiteral("Alpha cutoff");
     QTest::newRow("alpha mode blend") << Edit::AlphaBlend << QStringLiteral("Alpha Mode");
     QTest::newRow("double-sided") << Edit::DoubleSided << QStringLiteral("Double-sided");
     QTest::newRow("unlit") << Edit::Unlit << QStringLiteral("Unlit");

@@ -33,7 +33,7 @@ constexpr std::array<MaterialPropertyInfo, kMaterialPropertyCount> kProperties =
     {P::EmissiveStrength, "emissiveStrength", "emissiveStrength", "Emissive strength", V::Scalar, 0.0,
         Material::kMaxEmissiveStrength, std::nullopt, nullptr},
     {P::Ior, "ior", "ior", "Index of refraction", V::Scalar, Material::kMinIor, Material::kMaxIor,
-        std::nullopt, nullptr},
+        std::nullopt, nullptr, 3.0},
     {P::AlphaCutoff, "alphaCutoff", "alphaCutoff", "Alpha cutoff", V::Scalar, 0.0, 1.0, std::nullopt,
         nullptr},
     {P::Clearcoat, "clearcoat", "clearcoat.factor", "Clearcoat strength", V::Scalar, 0.0, 1.0, std::nullopt,

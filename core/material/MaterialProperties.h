@@ -3,11 +3,11 @@
 // what every part of Facet needs to know of it, so that each fact is written once. Today its
 // readers are Material::validate (the ranges and the fields its messages name), the wedge
 // (core/project/WedgeAxis: an axis of a material property takes its name, field, range and
-// setter from here) and the
-// command line's material flags (`facet render` and `facet sheet`: --base-color, --metallic,
-// --roughness; app/MaterialFlags). A property's default is the default Material's value, read
-// through the row (no second copy). docs/architecture.md, "The material property registry", says
-// how a new property joins.
+// setter from here), the command line's material flags (`facet render` and `facet sheet`:
+// --base-color, --metallic, --roughness, --clearcoat, --clearcoat-roughness; app/MaterialFlags)
+// and the Material dock's sliders (ui/docks/MaterialDock addPropertySlider). A property's default is the
+// default Material's value, read through the row (no second copy). docs/architecture.md, "The material
+// property registry", says how a new property joins.
 
 #include <optional>
 #include <span>
@@ -58,6 +58,9 @@ struct MaterialPropertyInfo {
     // The command-line flag of `facet render` and `facet sheet` ("base-color": --base-color
     // r,g,b), or null for none; it sets every material of the project.
     const char* flag;
+    // Where a slider of it ends when that is below `maximum` (the IOR's 3: every common material
+    // lies below, and the spin box beside it still takes up to 5); 0: at `maximum`.
+    double sliderMaximum = 0.0;
 };
 
 // Every property, in the order of the enum.

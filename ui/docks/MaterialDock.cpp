@@ -62,9 +62,7 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     : QDockWidget(tr("Material"), parent)
     , m_document(document)
     , m_name(new QLineEdit(this))
-    , m_ior(new ValueSlider(1.0, 3.0, 3, this))
     , m_f0(new QLabel(this))
-    , m_alphaCutoff(new ValueSlider(0.0, 1.0, 3, this))
     , m_doubleSided(new QCheckBox(tr("Double-sided"), this))
     , m_unlit(new QCheckBox(tr("Unlit"), this))
     , m_presets(new QListWidget(this))
@@ -90,8 +88,6 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
             {AlphaMode::Blend, tr("Blend (transparent)")}});
     m_alphaMode->setToolTip(tr("How the base colour's alpha is used (glTF alphaMode): ignored, a cut-out "
                                "below the cutoff, or blended over what is behind"));
-    m_alphaCutoff->setObjectName(QStringLiteral("alphaCutoffSlider"));
-    m_alphaCutoff->setToolTip(tr("Mask: texels whose alpha is below this are not drawn"));
     m_doubleSided->setObjectName(QStringLiteral("doubleSidedCheck"));
     m_doubleSided->setToolTip(
         tr("Draw faces seen from behind too (off: they are culled, as glTF's default)"));
@@ -102,21 +98,20 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
         tr("Multiple-scattering compensation: gives back the energy that single-scattering "
            "GGX loses at high roughness (docs/energy.md)"));
     m_name->setObjectName(QStringLiteral("materialName"));
-    m_ior->setObjectName(QStringLiteral("iorSlider"));
-    m_ior->setSpinRange(1.0, 5.0);
     m_f0->setObjectName(QStringLiteral("f0Label"));
 
     auto* content = new QWidget(this);
     auto* layout = new QVBoxLayout(content);
     auto* form = new QFormLayout;
     form->addRow(tr("Name"), m_name);
-    form->addRow(tr("IOR"), m_ior);
+    m_ior = addPropertySlider(MaterialProperty::Ior, form, tr("IOR"));
     form->addRow(tr("F0"), m_f0);
     layout->addLayout(form);
     auto* surfaceGroup = new QGroupBox(tr("Alpha and Sides"), content);
     auto* surfaceForm = new QFormLayout(surfaceGroup);
     surfaceForm->addRow(tr("Alpha"), m_alphaMode);
-    surfaceForm->addRow(tr("Cutoff"), m_alphaCutoff);
+    m_alphaCutoff = addPropertySlider(MaterialProperty::AlphaCutoff, surfaceForm, tr("Cutoff"));
+    m_alphaCutoff->setToolTip(tr("Mask: texels whose alpha is below this are not drawn"));
     surfaceForm->addRow(m_doubleSided); // spans the row: its text fits a narrow dock column
     m_unlit->setObjectName(QStringLiteral("unlitCheck"));
     m_unlit->setToolTip(tr("KHR_materials_unlit: the surface shows its base colour (factor, texture and "
@@ -249,24 +244,10 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
         material.name = name;
         m_document->setMaterial(material, tr("Rename Material"));
     });
-    connect(m_ior, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
-    connect(m_ior, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);
-    connect(m_ior, &ValueSlider::valueEdited, this, [this](double ior) {
-        Material material = m_document->project().material();
-        material.ior = ior;
-        m_document->setMaterial(material, tr("IOR"), MergeId::Ior);
-    });
     connect(m_alphaMode, &QComboBox::activated, this, [this] {
         Material material = m_document->project().material();
         material.alphaMode = AlphaMode(m_alphaMode->currentData().toInt());
         m_document->setMaterial(material, tr("Alpha Mode"));
-    });
-    connect(m_alphaCutoff, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
-    connect(m_alphaCutoff, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);
-    connect(m_alphaCutoff, &ValueSlider::valueEdited, this, [this](double cutoff) {
-        Material material = m_document->project().material();
-        material.alphaCutoff = cutoff;
-        m_document->setMaterial(material, tr("Alpha Cutoff"), MergeId::AlphaCutoff);
     });
     connect(m_doubleSided, &QCheckBox::clicked, this, [this](bool on) {
         Material material = m_document->project().material();
@@ -344,7 +325,10 @@ ValueSlider* MaterialDock::addPropertySlider(
     MaterialProperty property, QFormLayout* form, const QString& label)
 {
     const MaterialPropertyInfo& info = infoOf(property);
-    auto* slider = new ValueSlider(info.minimum, info.maximum, 3, form->parentWidget());
+    const double sliderMaximum = info.sliderMaximum > 0.0 ? info.sliderMaximum : info.maximum;
+    auto* slider = new ValueSlider(info.minimum, sliderMaximum, 3, this);
+    if (sliderMaximum < info.maximum)
+        slider->setSpinRange(info.minimum, info.maximum);
     slider->setObjectName(QLatin1String(info.name) + QLatin1String("Slider"));
     slider->setToolTip(QString::fromUtf8(info.label));
     form->addRow(label, slider);
@@ -450,7 +434,6 @@ void MaterialDock::onDocumentChanged(DocumentChanges changes)
     // must show that one's name, or finishing the edit would rename it.
     if (!m_name->hasFocus() || changes.testFlag(DocumentChange::CurrentMaterial))
         m_name->setText(QString::fromStdString(material.name));
-    m_ior->setValue(material.ior);
     m_f0->setText(QString::number(material.dielectricF0(), 'f', 4));
     select(m_composition, int(material.shading.composition));
     select(m_distribution, int(material.shading.distribution));
@@ -459,7 +442,6 @@ void MaterialDock::onDocumentChanged(DocumentChanges changes)
     select(m_coupling, int(material.shading.coupling));
     m_multiScatter->setChecked(material.shading.multiScatter);
     select(m_alphaMode, int(material.alphaMode));
-    m_alphaCutoff->setValue(material.alphaCutoff);
     m_alphaCutoff->setEnabled(material.alphaMode == AlphaMode::Mask);
     m_doubleSided->setChecked(material.doubleSided);
     m_unlit->setChecked(material.unlit);

@@ -119,10 +119,10 @@ private:
     QComboBox* m_fresnel;
     QComboBox* m_coupling;
     QCheckBox* m_multiScatter;
-    ValueSlider* m_ior;
+    ValueSlider* m_ior = nullptr; // the registry's rows (addPropertySlider)
     QLabel* m_f0;
     QComboBox* m_alphaMode;
-    ValueSlider* m_alphaCutoff;
+    ValueSlider* m_alphaCutoff = nullptr;
     QCheckBox* m_doubleSided;
     QCheckBox* m_unlit;
     QGroupBox* m_clearcoatGroup = nullptr;

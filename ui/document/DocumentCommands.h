@@ -28,7 +28,6 @@ enum : int {
     Roughness,
     Occlusion,
     NormalStrength,
-    Ior,
     UvTransform,
     EnvironmentRotation,
     EnvironmentIntensity,
@@ -44,7 +43,6 @@ enum : int {
     LightRange,
     LightCone,
     EmissiveStrength,
-    AlphaCutoff,
     // A slider made from a row of the material property registry (core/material/
     // MaterialProperties): MaterialProperty0 + int(MaterialProperty).
     MaterialProperty0 = 500,
