@@ -107,6 +107,17 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     m_ior = addPropertySlider(MaterialProperty::Ior, form, tr("IOR"));
     form->addRow(tr("F0"), m_f0);
     layout->addLayout(form);
+    // The layered lobes (docs/shading.md): a section each, open while the lobe is on, above the
+    // alpha and BRDF settings (what an artist reaches for first).
+    QFormLayout* clearcoatForm = nullptr;
+    m_clearcoatGroup
+        = addLobeSection(tr("Clearcoat"), MaterialProperty::Clearcoat, 1.0, content, &clearcoatForm);
+    m_clearcoatGroup->setObjectName(QStringLiteral("clearcoatGroup"));
+    m_clearcoatGroup->setToolTip(tr("KHR_materials_clearcoat: a clear lacquer (IOR 1.5) over the material, "
+                                    "with its own roughness: car paint, varnished wood, coated plastic"));
+    addPropertySlider(MaterialProperty::Clearcoat, clearcoatForm, tr("Strength"));
+    addPropertySlider(MaterialProperty::ClearcoatRoughness, clearcoatForm, tr("Roughness"));
+    layout->addWidget(m_clearcoatGroup);
     auto* surfaceGroup = new QGroupBox(tr("Alpha and Sides"), content);
     auto* surfaceForm = new QFormLayout(surfaceGroup);
     surfaceForm->addRow(tr("Alpha"), m_alphaMode);
@@ -128,17 +139,6 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     brdfForm->addRow(tr("Dielectric"), m_coupling);
     brdfForm->addRow(m_multiScatter); // spans the row: its text fits a narrow dock column
     layout->addWidget(brdfGroup);
-
-    // The layered lobes (docs/shading.md): a section each, open while the lobe is on.
-    QFormLayout* clearcoatForm = nullptr;
-    m_clearcoatGroup
-        = addLobeSection(tr("Clearcoat"), MaterialProperty::Clearcoat, 1.0, content, &clearcoatForm);
-    m_clearcoatGroup->setObjectName(QStringLiteral("clearcoatGroup"));
-    m_clearcoatGroup->setToolTip(tr("KHR_materials_clearcoat: a clear lacquer (IOR 1.5) over the material, "
-                                    "with its own roughness: car paint, varnished wood, coated plastic"));
-    addPropertySlider(MaterialProperty::Clearcoat, clearcoatForm, tr("Strength"));
-    addPropertySlider(MaterialProperty::ClearcoatRoughness, clearcoatForm, tr("Roughness"));
-    layout->addWidget(m_clearcoatGroup);
 
     auto* presetGroup = new QGroupBox(tr("Presets"), content);
     auto* presetLayout = new QVBoxLayout(presetGroup);
