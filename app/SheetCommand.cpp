@@ -351,6 +351,31 @@ SheetGrid sheetGrid(const SheetRequest& request)
     return grid;
 }
 
+std::vector<std::string> sheetWarnings(const SheetRequest& request, const SheetGrid& grid)
+{
+    std::vector<std::string> warnings;
+    // An axis that changes nothing in any cell (WedgeAxis::noEffectReason, asked of every cell:
+    // the other axis may set what this one needs, as --wedge2 clearcoat=0,1 does for
+    // --wedge clearcoatRoughness).
+    const auto check = [&](const char* option, const WedgeAxis* axis, bool rows) {
+        if (!axis)
+            return;
+        std::string reason;
+        const std::size_t others = rows ? grid.columns.size() : grid.rows.size();
+        for (std::size_t i = 0; i < others; ++i) {
+            reason = axis->noEffectReason(
+                rows ? grid.cellProject(request, 0, i) : grid.cellProject(request, i, 0));
+            if (reason.empty())
+                return;
+        }
+        warnings.push_back(
+            std::string(option) + " " + toString(axis->parameter) + " sweeps nothing: " + reason);
+    };
+    check("--wedge", request.wedge ? &*request.wedge : nullptr, true);
+    check("--wedge2", request.wedge2 ? &*request.wedge2 : nullptr, false);
+    return warnings;
+}
+
 Project SheetGrid::cellProject(const SheetRequest& request, std::size_t row, std::size_t column) const
 {
     Project project = request.project;
@@ -458,6 +483,8 @@ int SheetCommand::run(const SheetRequest& request)
         if (!request.project.save(request.saveProjectPath, &error))
             return fail("--save-project: " + error);
     }
+    for (const std::string& warning : sheetWarnings(request, grid))
+        std::fprintf(stderr, "facet sheet: %s\n", warning.c_str());
 
     // Every cell's assets before any rendering: a missing environment, mesh or map is named and
     // nothing is rendered or written. Environments and the mesh load once (AssetCache); maps once

@@ -55,6 +55,11 @@ struct SheetGrid {
         const WedgeAxis* axis = nullptr; // an axis value (env, a factor, exposure)
         std::size_t index = 0; // the value of `axis`
     };
+
+    // What `facet sheet` warns of before rendering: a wedge axis that sweeps nothing in any cell
+    // ("--wedge clearcoatRoughness sweeps nothing: clearcoatRoughness shapes the clear coat, and the
+    // material has none (clearcoat 0)"; WedgeAxis::noEffectReason).
+    std::vector<std::string> sheetWarnings(const SheetRequest& request, const SheetGrid& grid);
     std::vector<Line> rows;
     std::vector<Line> columns;
 

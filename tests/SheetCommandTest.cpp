@@ -335,6 +335,41 @@ private Q_SLOTS:
         QVERIFY2(r.out.contains(QStringLiteral("textures_uploaded: 3\n")), qPrintable(r.out));
     }
 
+    // A wedge axis that sweeps nothing in any cell is said before rendering (the sheet is still
+    // made); one that another axis makes matter is not. A row per reason and per rescue.
+    void axesThatSweepNothingAreNamed_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QString>("warning"); // in stderr; empty: no warning at all
+        QTest::newRow("coat roughness without a coat")
+            << strings({"--wedge", "clearcoatRoughness=0,1"})
+            << QStringLiteral(
+                   "--wedge clearcoatRoughness sweeps nothing: clearcoatRoughness shapes the clear coat");
+        QTest::newRow("coat roughness, the columns add a coat")
+            << strings({"--wedge", "clearcoatRoughness=0,1", "--wedge2", "clearcoat=0,1"}) << QString();
+        QTest::newRow("coat roughness, --clearcoat sets one")
+            << strings({"--wedge", "clearcoatRoughness=0,1", "--clearcoat", "1"}) << QString();
+        QTest::newRow("alpha cutoff on an opaque material (columns)")
+            << strings({"--wedge", "roughness=0.5", "--wedge2", "alphaCutoff=0.2,0.8"})
+            << QStringLiteral("--wedge2 alphaCutoff sweeps nothing: alphaCutoff is used only with alphaMode");
+        QTest::newRow("roughness") << strings({"--wedge", "roughness=0,1"}) << QString();
+    }
+    void axesThatSweepNothingAreNamed()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QString, warning);
+        const QString out = path(QStringLiteral("nothing.png"));
+        const Result r = runFacet(
+            QStringList {QStringLiteral("sheet"), QStringLiteral("--cell"), QStringLiteral("16x16"),
+                QStringLiteral("--ibl"), QStringLiteral("split-sum"), QStringLiteral("-o"), out}
+            + arguments);
+        QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+        if (warning.isEmpty())
+            QVERIFY2(!r.err.contains(QStringLiteral("sweeps nothing")), qPrintable(describe(r)));
+        else
+            QVERIFY2(r.err.contains(warning), qPrintable(describe(r)));
+    }
+
     void refusals_data()
     {
         QTest::addColumn<QStringList>("arguments");
