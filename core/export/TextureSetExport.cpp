@@ -18,11 +18,11 @@ namespace facet {
 
 namespace {
 
-// The map a source reads, or none (the base colour's for Constant; a clear coat's factors have no
-// map yet).
+// The map a source reads, or none (a constant; a clear coat's factors, which have no map yet).
 std::optional<MapSlot> slotOf(ExportSource source)
 {
     switch (source) {
+    case ExportSource::Constant:
     case ExportSource::Clearcoat:
     case ExportSource::ClearcoatRoughness:
         return std::nullopt;
@@ -184,11 +184,10 @@ bool usesSlot(const Material& material, MapSlot slot)
 
 bool usesSource(const Material& material, ExportSource source)
 {
-    if (source == ExportSource::Constant)
-        return false;
     if (source == ExportSource::Clearcoat || source == ExportSource::ClearcoatRoughness)
         return material.clearcoat.isOn();
-    return usesSlot(material, *slotOf(source));
+    const std::optional<MapSlot> slot = slotOf(source);
+    return slot && usesSlot(material, *slot);
 }
 
 std::optional<TextureSetPlan> planTextureSet(const ExportTemplate& exportTemplate, const Material& material,
@@ -287,8 +286,7 @@ std::vector<float> renderTexture(const PlannedTexture& texture, const TextureSet
     // the texels are evaluated from (an ORM file reads no base colour, normal or emissive).
     std::array<bool, kMapSlotCount> read {};
     for (const ExportChannel& channel : channels)
-        if (const std::optional<MapSlot> slot = slotOf(channel.source);
-            slot && channel.source != ExportSource::Constant)
+        if (const std::optional<MapSlot> slot = slotOf(channel.source))
             read[std::size_t(*slot)] = true;
     Material needed = material;
     for (const MapSlot slot : kAllMapSlots)
