@@ -25,21 +25,23 @@ namespace facet {
 
 namespace {
 
-// Texture units of the surface and background programs.
-constexpr int kMapUnit0 = 0; // 0..5: MapSlot order
-constexpr int kDfgUnit = kMapUnit0 + kMapSlotCount;
-constexpr int kPrefilteredUnit = kDfgUnit + 1;
-constexpr int kIrradianceUnit = kDfgUnit + 2;
-constexpr int kEnvironmentUnit = kDfgUnit + 3;
-// IblMethod::Reference: the source equirect and its sampling tables (units 10-13; GL 4.1
-// guarantees 16 in the fragment stage).
-constexpr int kSourceRadianceUnit = kDfgUnit + 4;
-constexpr int kSourceConditionalUnit = kDfgUnit + 5;
-constexpr int kSourceMarginalUnit = kDfgUnit + 6;
-constexpr int kSourcePdfUnit = kDfgUnit + 7;
+// Texture units of the surface and background programs: the lighting's first, then the maps the
+// variant samples, one unit each in MapSlot order (a variant samples only the slots it uses, so
+// the units stay within the 16 GL 4.1 guarantees unless a material textures every slot).
+constexpr int kDfgUnit = 0;
+constexpr int kPrefilteredUnit = 1;
+constexpr int kIrradianceUnit = 2;
+constexpr int kEnvironmentUnit = 3;
+// IblMethod::Reference: the source equirect and its sampling tables.
+constexpr int kSourceRadianceUnit = 4;
+constexpr int kSourceConditionalUnit = 5;
+constexpr int kSourceMarginalUnit = 6;
+constexpr int kSourcePdfUnit = 7;
+constexpr int kMapUnit0 = 8;
 
 constexpr std::array<const char*, kMapSlotCount> kMapSamplers
-    = {"uBaseColorMap", "uNormalMap", "uMetallicMap", "uRoughnessMap", "uOcclusionMap", "uEmissiveMap"};
+    = {"uBaseColorMap", "uNormalMap", "uMetallicMap", "uRoughnessMap", "uOcclusionMap", "uEmissiveMap",
+        "uClearcoatMap", "uClearcoatRoughnessMap", "uClearcoatNormalMap"};
 
 // World -> environment image frame: Environment::toImageFrame, rotateAboutY(d, -rotation), as a
 // matrix built by applying it to the basis (so the two cannot disagree on signs).
@@ -115,13 +117,18 @@ bool splitSumSharpLobes(const RenderScene& scene, const RenderMaterial& material
     if (scene.sampling.method != IblMethod::SplitSum || scene.sampling.sharpLobeSamples <= 0
         || env.environmentCubemap == 0 || env.prefilteredLevels < 2)
         return false;
-    double roughness = material.material.roughness();
-    const auto& image = material.maps[std::size_t(MapSlot::Roughness)].image;
-    if (image && !image->isEmpty())
-        roughness *= smallestScalarMapValue(material.material.map(MapSlot::Roughness), *image).value_or(0.0);
+    // A slot's smallest roughness: its factor times its map's smallest value (0 when not known).
+    const auto smallest = [&material](MapSlot slot) {
+        double roughness = material.material.map(slot).factor.x;
+        const auto& image = material.maps[std::size_t(slot)].image;
+        if (image && !image->isEmpty())
+            roughness *= smallestScalarMapValue(material.material.map(slot), *image).value_or(0.0);
+        return roughness;
+    };
+    double roughness = smallest(MapSlot::Roughness);
     // A coat is a lobe of its own, usually the sharpest of the material.
-    if (material.material.clearcoat.isOn() && !material.material.unlit)
-        roughness = std::min(roughness, material.material.clearcoat.roughness);
+    if (material.material.hasClearcoat() && !material.material.unlit)
+        roughness = std::min(roughness, smallest(MapSlot::ClearcoatRoughness));
     roughness = std::clamp(roughness, Material::kMinPerceptualRoughness, 1.0);
     return lodFromRoughness(float(roughness), float(env.prefilteredLevels)) < 1.0f;
 }
@@ -548,22 +555,26 @@ void Renderer::setMaterialUniforms(const ShaderProgram& program, const SurfaceVa
     program.setFloat("uDielectricAverageAlbedo", float(renderMaterial.dielectricAverageAlbedo));
     setVec3(program, "uEmissiveFactor", material.emissive());
     if (hasFeature(key.features, SurfaceFeature::Clearcoat)) {
-        program.setFloat("uClearcoatFactor", float(material.clearcoat.factor));
-        program.setFloat("uClearcoatRoughness", float(material.clearcoat.roughness));
+        program.setFloat("uClearcoatFactor", float(material.clearcoat()));
+        program.setFloat("uClearcoatRoughness", float(material.clearcoatRoughness()));
+        if (hasFeature(key.features, SurfaceFeature::HasClearcoatNormalMap))
+            program.setFloat(
+                "uClearcoatNormalStrength", float(material.map(MapSlot::ClearcoatNormal).factor.x));
     }
     if (hasFeature(key.features, SurfaceFeature::AlphaMask))
         program.setFloat("uAlphaCutoff", float(material.alphaCutoff));
-    program.setInt("uFlipGreen", material.map(MapSlot::Normal).flipGreen ? 1 : 0);
+    int unit = kMapUnit0;
     for (int i = 0; i < kMapSlotCount; ++i) {
         const MaterialMap& map = material.maps[std::size_t(i)];
         const glm::mat3 uv(map.uv.matrix());
         setMat3(program, IndexedName("uUvTransform", i).c_str(), uv);
         program.setInt(IndexedName("uChannel", i).c_str(), int(map.channel));
         program.setInt(IndexedName("uInvert", i).c_str(), map.invert ? 1 : 0);
+        program.setInt(IndexedName("uFlipGreen", i).c_str(), map.flipGreen ? 1 : 0);
         if (!samplesOwnTexture(key.features, MapSlot(i)))
             continue; // a constant, or the texel of an earlier slot's fetch
         const RenderMapImage& image = renderMaterial.maps[std::size_t(i)];
-        glActiveTexture(GLenum(GL_TEXTURE0 + kMapUnit0 + i));
+        glActiveTexture(GLenum(GL_TEXTURE0 + unit));
         bool uploaded = false;
         unsigned texture = 0;
         {
@@ -575,8 +586,9 @@ void Renderer::setMaterialUniforms(const ShaderProgram& program, const SurfaceVa
             ++m_frame.texturesUploaded;
         glBindTexture(GL_TEXTURE_2D, texture);
         // The map's wraps and filters (0, the texture's own state, for the default sampler).
-        glBindSampler(GLuint(kMapUnit0 + i), m_textures->samplerFor(map.sampler));
-        program.setInt(kMapSamplers[std::size_t(i)], kMapUnit0 + i);
+        glBindSampler(GLuint(unit), m_textures->samplerFor(map.sampler));
+        program.setInt(kMapSamplers[std::size_t(i)], unit);
+        ++unit;
         program.setInt(IndexedName("uTexCoord", i).c_str(), map.texCoord);
     }
     // The split-sum table of the material's own visibility term (render() checked it is there).
@@ -707,7 +719,7 @@ bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, con
     glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
     // A sampler object bound to a unit overrides the state of any texture bound there later: the
-    // map units are units 0-5, which the other passes use with their textures' own state.
+    // map units follow the lighting's, and the other passes use them with their textures' own state.
     for (int i = 0; i < kMapSlotCount; ++i)
         glBindSampler(GLuint(kMapUnit0 + i), 0);
     glActiveTexture(GL_TEXTURE0);

@@ -38,6 +38,10 @@ constexpr std::array<const char*, kSurfaceFeatureBits> kFeatureDefines = {
     "MATERIAL_UNLIT",
     "HAS_TEXCOORD_1",
     "MATERIAL_CLEARCOAT",
+    "HAS_CLEARCOAT_MAP",
+    "HAS_CLEARCOAT_ROUGHNESS_MAP",
+    "HAS_CLEARCOAT_NORMAL_MAP",
+    "CLEARCOAT_ROUGHNESS_TEXEL_FROM_CLEARCOAT",
 };
 
 } // namespace
@@ -58,6 +62,12 @@ SurfaceFeature mapFeature(MapSlot slot)
         return SurfaceFeature::HasRoughnessMap;
     case MapSlot::Occlusion:
         return SurfaceFeature::HasOcclusionMap;
+    case MapSlot::Clearcoat:
+        return SurfaceFeature::HasClearcoatMap;
+    case MapSlot::ClearcoatRoughness:
+        return SurfaceFeature::HasClearcoatRoughnessMap;
+    case MapSlot::ClearcoatNormal:
+        return SurfaceFeature::HasClearcoatNormalMap;
     case MapSlot::Emissive:
         break;
     }
@@ -89,11 +99,20 @@ namespace {
 
 // Whether a slot's texture can change the result: at factor 0 metallic, roughness and emission
 // are 0 whatever the texture says, occlusion at strength 0 is 1, and a normal map at strength 0
-// is the geometric normal. Such a map is not sampled (docs/architecture.md: a constant map samples no
+// is the geometric normal; a lobe's maps change nothing while the lobe is off or the material
+// unlit. Such a map is not sampled (docs/architecture.md: a constant map samples no
 // texture); the CPU twin gives the same values (core/shading/MaterialInputs.h).
 bool textureMatters(const Material& material, MapSlot slot)
 {
+    if (!material.usesSlot(slot) || (material.unlit && lobeOf(slot) != MaterialLobe::Core))
+        return false;
     switch (slot) {
+    case MapSlot::Clearcoat:
+        return true; // usesSlot: the factor is above 0
+    case MapSlot::ClearcoatRoughness:
+        return material.clearcoatRoughness() != 0.0;
+    case MapSlot::ClearcoatNormal:
+        return material.map(slot).factor.x != 0.0;
     case MapSlot::Metallic:
         return material.metallic() != 0.0;
     case MapSlot::Roughness:
@@ -129,7 +148,7 @@ SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMap
         f = f | SurfaceFeature::IrradianceSH;
     if (material.unlit)
         f = f | SurfaceFeature::Unlit;
-    else if (material.clearcoat.isOn())
+    else if (material.hasClearcoat())
         f = f | SurfaceFeature::Clearcoat;
     return f;
 }
@@ -154,6 +173,8 @@ SurfaceFeatures sharedTexelFeatures(const Material& material, SurfaceFeatures fe
         f = f | SurfaceFeature::OcclusionTexelFromMetallic;
     else if (same(MapSlot::Roughness, MapSlot::Occlusion))
         f = f | SurfaceFeature::OcclusionTexelFromRoughness;
+    if (same(MapSlot::Clearcoat, MapSlot::ClearcoatRoughness))
+        f = f | SurfaceFeature::ClearcoatRoughnessTexelFromClearcoat;
     return f;
 }
 
@@ -166,6 +187,8 @@ bool samplesOwnTexture(SurfaceFeatures features, MapSlot slot)
     if (slot == MapSlot::Occlusion)
         return !hasFeature(features, SurfaceFeature::OcclusionTexelFromMetallic)
             && !hasFeature(features, SurfaceFeature::OcclusionTexelFromRoughness);
+    if (slot == MapSlot::ClearcoatRoughness)
+        return !hasFeature(features, SurfaceFeature::ClearcoatRoughnessTexelFromClearcoat);
     return true;
 }
 
@@ -187,6 +210,17 @@ std::string debugViewDefine(DebugView view)
     return define;
 }
 
+std::string mapSlotDefine(MapSlot slot)
+{
+    std::string define = "SLOT_";
+    for (const char* c = toString(slot); *c; ++c) {
+        if (std::isupper(static_cast<unsigned char>(*c)))
+            define += '_';
+        define += char(std::toupper(static_cast<unsigned char>(*c)));
+    }
+    return define;
+}
+
 std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key)
 {
     std::vector<std::string> defines;
@@ -199,6 +233,14 @@ std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key)
         defines.push_back(debugViewDefine(DebugView(view)) + ' ' + std::to_string(view));
     defines.push_back("DEBUG_VIEW " + std::to_string(int(key.debugView)));
     defines.push_back("MAX_LIGHTS " + std::to_string(kMaxPunctualLights));
+    // The vertex tangent frame, for whichever normal map the variant samples.
+    if (hasFeature(key.features, SurfaceFeature::HasNormalMap)
+        || hasFeature(key.features, SurfaceFeature::HasClearcoatNormalMap))
+        defines.emplace_back("HAS_TANGENT_FRAME");
+    // The map slots' indices into material_inputs.glsl's per-slot uniform arrays, from MapSlot.
+    for (MapSlot slot : kAllMapSlots)
+        defines.push_back(mapSlotDefine(slot) + ' ' + std::to_string(int(slot)));
+    defines.push_back("MAP_SLOT_COUNT " + std::to_string(kMapSlotCount));
     return defines;
 }
 

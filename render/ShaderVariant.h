@@ -6,8 +6,8 @@
 //
 // What the flags remove (docs/architecture.md, "Shader permutations"): without a Has*Map bit the input is
 // the constant factor and the shader declares no sampler for it; without HasNormalMap there is no
-// tangent frame and surface.vert reads no tangent attribute; without HasPunctualLights there is
-// no light loop.
+// tangent frame and surface.vert reads no tangent attribute (nor without HasClearcoatNormalMap);
+// without HasPunctualLights there is no light loop. A lobe's maps come only with the lobe.
 
 #include <array>
 #include <cstdint>
@@ -79,8 +79,16 @@ enum class SurfaceFeature : uint64_t {
     // MATERIAL_CLEARCOAT: KHR_materials_clearcoat's coat lobe (Material::clearcoat factor > 0);
     // without it no coat code is compiled and the material pays nothing for the lobe.
     Clearcoat = 1ull << 27,
+    // The coat's maps (only with Clearcoat): HAS_CLEARCOAT_MAP, HAS_CLEARCOAT_ROUGHNESS_MAP,
+    // HAS_CLEARCOAT_NORMAL_MAP (which, like HasNormalMap, brings the tangent frame).
+    HasClearcoatMap = 1ull << 28,
+    HasClearcoatRoughnessMap = 1ull << 29,
+    HasClearcoatNormalMap = 1ull << 30,
+    // CLEARCOAT_ROUGHNESS_TEXEL_FROM_CLEARCOAT: the extension's packing (strength R, roughness G
+    // of one texture) read with one fetch, as the ORM slots are.
+    ClearcoatRoughnessTexelFromClearcoat = 1ull << 31,
 };
-inline constexpr int kSurfaceFeatureBits = 28;
+inline constexpr int kSurfaceFeatureBits = 32;
 static_assert(kSurfaceFeatureBits <= 64);
 
 using SurfaceFeatures = uint64_t;
@@ -106,7 +114,9 @@ struct SurfaceVariantKey {
 
 // The flags a material + scene need: map bits from the material's textures (only where an image
 // is given, and not where the factor makes the texture irrelevant: metallic, roughness or
-// emission at 0, occlusion or normal strength 0), model bits from its ShadingModel, the alpha mode, lights when any enabled light exists.
+// emission at 0, occlusion or normal strength 0, a lobe's maps while the lobe is off or the
+// material unlit), model bits from its ShadingModel, the alpha mode, the lobes, lights when any
+// enabled light exists.
 SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMapImage)[kMapSlotCount],
                                    bool hasPunctualLights, bool irradianceFromSH);
 SurfaceFeatures surfaceFeaturesFor(const ShadingModel& model);
@@ -127,9 +137,13 @@ SurfaceFeatures texCoordFeatures(const Material& material, SurfaceFeatures featu
 // The shader's name for a debug view's id: "DEBUG_" and its name upper-cased, '-' as '_'
 // (DebugView::BaseColor, "base-color": DEBUG_BASE_COLOR).
 std::string debugViewDefine(DebugView view);
+// The shader's name for a map slot's index: "SLOT_" and its name in upper snake case
+// (MapSlot::ClearcoatRoughness, "clearcoatRoughness": SLOT_CLEARCOAT_ROUGHNESS).
+std::string mapSlotDefine(MapSlot slot);
 // One "#define NAME" per set bit, in bit order, then "DEBUG_<VIEW> <n>" for every debug view (the
 // ids debug_views.glsl compares, made from core/shading/DebugView's table so the two cannot disagree),
-// "DEBUG_VIEW <n>" and "MAX_LIGHTS <n>".
+// "DEBUG_VIEW <n>", "MAX_LIGHTS <n>", HAS_TANGENT_FRAME with either normal map, "SLOT_<NAME> <n>"
+// for every map slot and "MAP_SLOT_COUNT <n>".
 std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key);
 inline constexpr int kMaxPunctualLights = kMaxLights; // core/project/Light.h
 

@@ -139,7 +139,7 @@ void DebugViewGoldenGLTest::matchesGolden()
     project.material().setFactor(MapSlot::Metallic, 1.0);
     project.material().setFactor(MapSlot::Roughness, 0.4);
     if (feature == QLatin1String("clearcoat"))
-        project.material().clearcoat = {1.0, 0.3};
+        project.material().setClearcoat(1.0, 0.3);
     std::string error;
     const auto rendered = m_gpu.render(project, "draft", kSize, &error);
     QVERIFY2(rendered, error.c_str());

@@ -126,11 +126,16 @@ std::vector<Row> rows()
     add(
         "material unlit", [](Project& p) { p.materials[1].unlit = true; }, material(1, MaterialField::Unlit));
     add(
-        "material clearcoat", [](Project& p) { p.materials[1].clearcoat.factor = 0.5; },
-        material(1, MaterialField::Clearcoat));
+        "material clearcoat", [](Project& p) { p.materials[1].setFactor(MapSlot::Clearcoat, 0.5); },
+        map(1, MapSlot::Clearcoat, MapProperty::Factor));
     add(
-        "material clearcoat roughness", [](Project& p) { p.materials[1].clearcoat.roughness = 0.2; },
-        material(1, MaterialField::Clearcoat));
+        "material clearcoat roughness",
+        [](Project& p) { p.materials[1].setFactor(MapSlot::ClearcoatRoughness, 0.2); },
+        map(1, MapSlot::ClearcoatRoughness, MapProperty::Factor));
+    add(
+        "material 0 clearcoat normal flip green",
+        [](Project& p) { p.materials[0].map(MapSlot::ClearcoatNormal).flipGreen = true; },
+        map(0, MapSlot::ClearcoatNormal, MapProperty::FlipGreen));
     add(
         "material shading", [](Project& p) { p.materials[1].shading.multiScatter = false; },
         material(1, MaterialField::Shading));

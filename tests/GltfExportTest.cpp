@@ -346,8 +346,9 @@ private Q_SLOTS:
         QTest::addColumn<QString>("feature");
         QTest::addColumn<bool>("binary");
         for (const char* feature : {"constants", "every map", "shared transform", "different transforms",
-                 "ior", "clearcoat", "clearcoat, smooth", "unlit, clearcoat", "mask", "blend", "single-sided",
-                 "unlit", "two of one name", "samplers", "second UV set", "second UV set, mesh without it"}) {
+                 "ior", "clearcoat", "clearcoat, smooth", "unlit, clearcoat", "clearcoat maps",
+                 "clearcoat maps, coat off", "mask", "blend", "single-sided", "unlit", "two of one name",
+                 "samplers", "second UV set", "second UV set, mesh without it"}) {
             QTest::newRow(qPrintable(QStringLiteral("%1, .gltf").arg(QLatin1String(feature))))
                 << QString::fromLatin1(feature) << false;
             QTest::newRow(qPrintable(QStringLiteral("%1, .glb").arg(QLatin1String(feature))))
@@ -380,8 +381,24 @@ private Q_SLOTS:
             if (feature == QStringLiteral("ior"))
                 m.ior = 1.45;
             if (feature.contains(QStringLiteral("clearcoat"))) {
-                m.clearcoat.factor = 0.7;
-                m.clearcoat.roughness = feature.contains(QStringLiteral("smooth")) ? 0.0 : 0.15;
+                m.setClearcoat(feature.contains(QStringLiteral("off")) ? 0.0 : 0.7,
+                    feature.contains(QStringLiteral("smooth")) ? 0.0 : 0.15);
+            }
+            if (feature.startsWith(QStringLiteral("clearcoat maps"))) {
+                // Strength and roughness from two files (baked into one texture, R and G), and the
+                // coat's own normal map with its scale.
+                writeVariedPng(dir.filePath(QStringLiteral("coat.png")), 5, 3);
+                writeVariedPng(dir.filePath(QStringLiteral("coatroughness.png")), 6, 1);
+                writeUnitNormalPng(dir.filePath(QStringLiteral("coatnormal.png")));
+                m.map(MapSlot::Clearcoat).path = dir.filePath(QStringLiteral("coat.png")).toStdString();
+                m.map(MapSlot::Clearcoat).channel = MapChannel::B;
+                m.map(MapSlot::ClearcoatRoughness).path
+                    = dir.filePath(QStringLiteral("coatroughness.png")).toStdString();
+                m.map(MapSlot::ClearcoatRoughness).channel = MapChannel::R;
+                m.setFactor(MapSlot::ClearcoatRoughness, 0.6);
+                m.map(MapSlot::ClearcoatNormal).path
+                    = dir.filePath(QStringLiteral("coatnormal.png")).toStdString();
+                m.setFactor(MapSlot::ClearcoatNormal, 0.5);
             }
             if (feature == QStringLiteral("mask")) {
                 m.alphaMode = AlphaMode::Mask;
@@ -456,8 +473,34 @@ private Q_SLOTS:
             QCOMPARE(used.contains(QStringLiteral("KHR_materials_unlit")),
                 feature.startsWith(QStringLiteral("unlit")));
             // The coat where it is on, and not on an unlit material (it would mean nothing).
-            QCOMPARE(used.contains(QStringLiteral("KHR_materials_clearcoat")),
-                feature.startsWith(QStringLiteral("clearcoat")));
+            const bool coated
+                = feature.startsWith(QStringLiteral("clearcoat")) && !feature.contains(QStringLiteral("off"));
+            QCOMPARE(used.contains(QStringLiteral("KHR_materials_clearcoat")), coated);
+            // The coat's textures: one for the strength (R) and roughness (G), one for its normal.
+            const QJsonObject coat = json.value(QStringLiteral("materials"))
+                                         .toArray()
+                                         .at(0)
+                                         .toObject()
+                                         .value(QStringLiteral("extensions"))
+                                         .toObject()
+                                         .value(QStringLiteral("KHR_materials_clearcoat"))
+                                         .toObject();
+            const bool coatMaps = coated && feature.contains(QStringLiteral("maps"));
+            for (const char* texture :
+                {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
+                QVERIFY2(coat.contains(QLatin1String(texture)) == coatMaps, texture);
+            if (coatMaps) {
+                QCOMPARE(
+                    coat.value(QStringLiteral("clearcoatTexture")).toObject().value(QStringLiteral("index")),
+                    coat.value(QStringLiteral("clearcoatRoughnessTexture"))
+                        .toObject()
+                        .value(QStringLiteral("index")));
+                QCOMPARE(coat.value(QStringLiteral("clearcoatNormalTexture"))
+                             .toObject()
+                             .value(QStringLiteral("scale"))
+                             .toDouble(),
+                    0.5);
+            }
         }
 
         const std::optional<Project> back = projectFromAsset(path.toStdString(), &error);
@@ -474,11 +517,24 @@ private Q_SLOTS:
             QCOMPARE(b.unlit, a.unlit);
             QVERIFY(std::abs(b.ior - a.ior) < 1e-9);
             QVERIFY(std::abs(b.emissiveStrength - a.emissiveStrength) < 1e-9);
-            const Material::Clearcoat coat = a.unlit ? Material::Clearcoat {} : a.clearcoat;
-            QVERIFY(std::abs(b.clearcoat.factor - coat.factor) < 1e-9);
-            QVERIFY(std::abs(b.clearcoat.roughness - coat.roughness) < 1e-9);
+            // The coat's factors as they were, or 1 where a baked texture holds factor x texture
+            // (compared texel by texel below); no coat on an unlit material or one whose coat is off.
+            const bool coated = !a.unlit && a.hasClearcoat();
+            const bool baked = coated
+                && (a.map(MapSlot::Clearcoat).hasTexture()
+                    || a.map(MapSlot::ClearcoatRoughness).hasTexture());
+            QVERIFY(std::abs(b.clearcoat() - (baked ? 1.0 : coated ? a.clearcoat() : 0.0)) < 1e-9);
+            QVERIFY(std::abs(b.clearcoatRoughness()
+                        - (baked         ? 1.0
+                                : coated ? a.clearcoatRoughness()
+                                         : 0.0))
+                < 1e-9);
             for (const MapSlot slot : kAllMapSlots) {
-                QCOMPARE(b.map(slot).hasTexture(), a.map(slot).hasTexture());
+                // A lobe that is off (or a lobe on an unlit material) writes none of its maps.
+                const bool exported = a.usesSlot(slot) && (lobeOf(slot) == MaterialLobe::Core || !a.unlit);
+                QCOMPARE(b.map(slot).hasTexture(), a.map(slot).hasTexture() && exported);
+                if (!exported)
+                    continue;
                 if (!a.map(slot).hasTexture())
                     continue;
                 // The sampler and the UV set come back (set 1 only where the mesh has one).
@@ -511,21 +567,27 @@ private Q_SLOTS:
                     worstScalar = std::max({worstScalar, std::abs(ia.metallic - ib.metallic),
                         std::abs(ia.perceptualRoughness - ib.perceptualRoughness),
                         std::abs(ia.occlusion - ib.occlusion), std::abs(ia.alpha - ib.alpha)});
+                    if (!a.unlit)
+                        worstScalar = std::max({worstScalar, std::abs(ia.clearcoat - ib.clearcoat),
+                            std::abs(ia.clearcoatRoughness - ib.clearcoatRoughness)});
                     for (int c = 0; c < 3; ++c)
                         worstColor = std::max({worstColor,
                             std::abs(tonemap::linearToSrgb(ia.baseColor[c])
                                 - tonemap::linearToSrgb(ib.baseColor[c])),
                             std::abs(tonemap::linearToSrgb(ia.emissive[c] / a.emissiveStrength)
                                 - tonemap::linearToSrgb(ib.emissive[c] / b.emissiveStrength))});
-                    if (a.map(MapSlot::Normal).hasTexture()) {
+                    for (const MapSlot slot : {MapSlot::Normal, MapSlot::ClearcoatNormal}) {
+                        if (!a.map(slot).hasTexture() || !a.usesSlot(slot)
+                            || (a.unlit && slot != MapSlot::Normal))
+                            continue;
                         const glm::dvec3 ng(0.0, 0.0, 1.0);
                         const glm::dvec4 tangent(1.0, 0.0, 0.0, 1.0);
                         const auto normal = [&](const Material& m, const Loaded& maps) {
-                            const MaterialMap& map = m.map(MapSlot::Normal);
+                            const MaterialMap& map = m.map(slot);
                             return shadingNormal(ng, tangent,
-                                sampleTexture(*maps.images[std::size_t(MapSlot::Normal)], map.colorSpace,
-                                    map.uv.apply(uv)),
-                                m.normalStrength(), map.flipGreen);
+                                sampleTexture(
+                                    *maps.images[std::size_t(slot)], map.colorSpace, map.uv.apply(uv)),
+                                map.factor.x, map.flipGreen);
                         };
                         worstNormal = std::max(worstNormal, glm::length(normal(a, mapsA) - normal(b, mapsB)));
                     }

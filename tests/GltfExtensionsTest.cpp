@@ -1,6 +1,6 @@
 // glTF material extensions as the importer reads them (core/gltf/GltfMaterials): a row per
-// extension, per field and per kind of bad value (out of range, the wrong type, a texture Facet
-// does not read yet): the material's value, and the warning that names the file, the material
+// extension, per field and per kind of bad value (out of range, the wrong type, a texture that is
+// not there): the material's value, and the warning that names the file, the material
 // and the field; the mesh import of the same file says nothing of the materials.
 
 #include "core/gltf/GltfImport.h"
@@ -9,6 +9,7 @@
 #include "GltfWriter.h"
 #include "TestSupport.h"
 
+#include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -22,6 +23,11 @@ using facet::test::GltfWriter;
 using Storage = GltfWriter::BufferStorage;
 
 namespace {
+
+bool contains(const std::string& text, const char* part)
+{
+    return text.find(part) != std::string::npos;
+}
 
 bool near(double a, double b, double tolerance = 1e-6)
 {
@@ -68,12 +74,16 @@ private Q_SLOTS:
             "KHR_materials_clearcoat.clearcoatRoughnessFactor -2 is outside Facet's [0, 1]: 0 used");
         row("clearcoat factor a string", R"({"KHR_materials_clearcoat": {"clearcoatFactor": "shiny"}})", 0.0,
             0.0, 1.5, "KHR_materials_clearcoat.clearcoatFactor is not a number: 0 used");
-        row("clearcoat texture",
-            R"({"KHR_materials_clearcoat": {"clearcoatFactor": 1, "clearcoatTexture": {"index": 0}}})", 1.0,
-            0.0, 1.5, "KHR_materials_clearcoat.clearcoatTexture is not read yet");
-        row("clearcoat normal texture",
-            R"({"KHR_materials_clearcoat": {"clearcoatFactor": 1, "clearcoatNormalTexture": {"index": 0}}})",
-            1.0, 0.0, 1.5, "KHR_materials_clearcoat.clearcoatNormalTexture is not read yet");
+        row("clearcoat texture that does not exist",
+            R"({"KHR_materials_clearcoat": {"clearcoatFactor": 1, "clearcoatTexture": {"index": 7}}})", 1.0,
+            0.0, 1.5, "KHR_materials_clearcoat.clearcoatTexture names texture 7, which does not exist");
+        row("clearcoat normal texture not a textureInfo",
+            R"({"KHR_materials_clearcoat": {"clearcoatFactor": 1, "clearcoatNormalTexture": 3}})", 1.0, 0.0,
+            1.5, "KHR_materials_clearcoat.clearcoatNormalTexture is not a textureInfo with an integer index");
+        row("clearcoat roughness texture index a string",
+            R"({"KHR_materials_clearcoat": {"clearcoatFactor": 1, "clearcoatRoughnessTexture": {"index": "a"}}})",
+            1.0, 0.0, 1.5,
+            "KHR_materials_clearcoat.clearcoatRoughnessTexture is not a textureInfo with an integer index");
         row("ior a string", R"({"KHR_materials_ior": {"ior": "glass"}})", 0.0, 0.0, 1.5,
             "KHR_materials_ior.ior is not a number: 1.5 used");
         row("ior and clearcoat",
@@ -106,8 +116,10 @@ private Q_SLOTS:
         const Material& m = asset->materials.at(0);
         std::string problem;
         QVERIFY2(m.validate(&problem), problem.c_str());
-        QVERIFY(near(m.clearcoat.factor, clearcoat));
-        QVERIFY(near(m.clearcoat.roughness, clearcoatRoughness));
+        QVERIFY(near(m.clearcoat(), clearcoat));
+        QVERIFY(near(m.clearcoatRoughness(), clearcoatRoughness));
+        for (MapSlot slot : {MapSlot::Clearcoat, MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal})
+            QVERIFY2(!m.map(slot).hasTexture(), toString(slot)); // a bad textureInfo leaves the factor alone
         QVERIFY(near(m.ior, ior));
         if (warning.isEmpty())
             QVERIFY2(warnings.empty(), warnings.c_str());
@@ -118,6 +130,101 @@ private Q_SLOTS:
         std::string meshWarnings;
         QVERIFY2(importMesh(file.toStdString(), &error, &meshWarnings), error.c_str());
         QVERIFY2(meshWarnings.empty(), meshWarnings.c_str());
+    }
+
+    // KHR_materials_clearcoat's three textures, each alone and all together (one packed texture
+    // for the strength and roughness, as the extension intends): which slot reads which file, in
+    // which channel (R strength, G roughness), colour space (data), UV set, transform and, for the
+    // normal, its scale.
+    void clearcoatTextures_data()
+    {
+        QTest::addColumn<QByteArray>("clearcoat"); // the extension's object
+        QTest::addColumn<QString>("strengthFile"); // the slot's file name, or empty for none
+        QTest::addColumn<QString>("roughnessFile");
+        QTest::addColumn<QString>("normalFile");
+        QTest::addColumn<double>("normalScale");
+        QTest::addColumn<int>("texCoord"); // of every textured slot
+        QTest::addColumn<double>("uvScale"); // KHR_texture_transform's scale, 1 for none
+        const QString none;
+        QTest::newRow("strength alone")
+            << QByteArray(R"({"clearcoatFactor": 1, "clearcoatTexture": {"index": 0}})")
+            << QStringLiteral("a.png") << none << none << 1.0 << 0 << 1.0;
+        QTest::newRow("roughness alone, UV set 1")
+            << QByteArray(R"({"clearcoatFactor": 1, "clearcoatRoughnessFactor": 1,
+                 "clearcoatRoughnessTexture": {"index": 1, "texCoord": 1}})")
+            << none << QStringLiteral("b.png") << none << 1.0 << 1 << 1.0;
+        QTest::newRow("normal alone, scale 0.5, transformed")
+            << QByteArray(R"({"clearcoatFactor": 1, "clearcoatNormalTexture": {"index": 2, "scale": 0.5,
+                 "extensions": {"KHR_texture_transform": {"scale": [4, 4]}}}})")
+            << none << none << QStringLiteral("c.png") << 0.5 << 0 << 4.0;
+        QTest::newRow("all three, strength and roughness packed in one")
+            << QByteArray(R"({"clearcoatFactor": 1, "clearcoatRoughnessFactor": 1,
+                 "clearcoatTexture": {"index": 0}, "clearcoatRoughnessTexture": {"index": 0},
+                 "clearcoatNormalTexture": {"index": 2}})")
+            << QStringLiteral("a.png") << QStringLiteral("a.png") << QStringLiteral("c.png") << 1.0 << 0
+            << 1.0;
+    }
+
+    void clearcoatTextures()
+    {
+        QFETCH(QByteArray, clearcoat);
+        QFETCH(QString, strengthFile);
+        QFETCH(QString, roughnessFile);
+        QFETCH(QString, normalFile);
+        QFETCH(double, normalScale);
+        QFETCH(int, texCoord);
+        QFETCH(double, uvScale);
+        GltfWriter w;
+        for (const char* name : {"a.png", "b.png", "c.png"}) {
+            QImage image(4, 4, QImage::Format_RGB888);
+            image.fill(Qt::gray);
+            QVERIFY(image.save(path(QLatin1String(name))));
+            w.addTexture(w.addImageUri(QLatin1String(name)));
+        }
+        QJsonObject material;
+        material[QLatin1String("name")] = QLatin1String("Coated");
+        material[QLatin1String("extensions")] = QJsonObject {
+            {QLatin1String("KHR_materials_clearcoat"), QJsonDocument::fromJson(clearcoat).object()}};
+        QVERIFY(!material[QLatin1String("extensions")]
+                     .toObject()[QLatin1String("KHR_materials_clearcoat")]
+                     .toObject()
+                     .isEmpty());
+        w.addNode(w.addQuad(w.addMaterial(material)));
+        w.json()[QLatin1String("extensionsUsed")]
+            = QJsonArray {QLatin1String("KHR_materials_clearcoat"), QLatin1String("KHR_texture_transform")};
+        const QString file = path(QStringLiteral("coat.gltf"));
+        QVERIFY(w.write(file, Storage::DataUri));
+        std::string error, warnings;
+        const auto asset = importGltf(file.toStdString(), &error, &warnings);
+        QVERIFY2(asset, error.c_str());
+        // The quad has one UV set: a map on the second is read on the first, and that is said.
+        if (texCoord == 1)
+            QVERIFY2(contains(warnings, "clearcoatRoughness reads TEXCOORD_1, which no primitive has"),
+                warnings.c_str());
+        else
+            QVERIFY2(warnings.empty(), warnings.c_str());
+        const Material& m = asset->materials.at(0);
+        std::string problem;
+        QVERIFY2(m.validate(&problem), problem.c_str());
+        const struct {
+            MapSlot slot;
+            QString file;
+            MapChannel channel;
+        } expected[] = {{MapSlot::Clearcoat, strengthFile, MapChannel::R},
+            {MapSlot::ClearcoatRoughness, roughnessFile, MapChannel::G},
+            {MapSlot::ClearcoatNormal, normalFile, MapChannel::Rgb}};
+        for (const auto& e : expected) {
+            const MaterialMap& map = m.map(e.slot);
+            QCOMPARE(QString::fromStdString(map.path), e.file.isEmpty() ? QString() : path(e.file));
+            QCOMPARE(map.channel, e.channel);
+            QCOMPARE(map.colorSpace, ColorEncoding::Linear);
+            if (e.file.isEmpty())
+                continue;
+            QCOMPARE(map.texCoord, texCoord);
+            QVERIFY(near(map.uv.scale.x, uvScale));
+        }
+        QVERIFY(near(m.map(MapSlot::ClearcoatNormal).factor.x, normalScale));
+        QVERIFY(m.hasClearcoat());
     }
 };
 

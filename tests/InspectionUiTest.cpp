@@ -242,7 +242,7 @@ void InspectionUiTest::valuePickerFollowsPinsAndStops()
     ValuesDock* values = m_window->valuesDock();
     QVERIFY2(
         values->valueOf(QStringLiteral("Material inputs/Clearcoat")).isEmpty(), qPrintable(values->text()));
-    material.clearcoat = {0.75, 0.25};
+    material.setClearcoat(0.75, 0.25);
     m_document->setMaterial(material, QStringLiteral("Coated"));
     QVERIFY(settledFrame());
     QVERIFY(QTest::qWaitFor(

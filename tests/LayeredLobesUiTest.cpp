@@ -55,7 +55,7 @@ private Q_SLOTS:
     {
         // The default material, lobes off, history empty; the Material dock in front.
         Material material = m_document->project().material();
-        material.clearcoat = {};
+        material.setClearcoat(0.0, 0.0);
         material.setBaseColor(glm::dvec3(0.6, 0.05, 0.02));
         material.setFactor(MapSlot::Roughness, 0.7);
         m_document->setMaterial(material, QStringLiteral("test setup"));
@@ -111,7 +111,7 @@ private Q_SLOTS:
         QFETCH(double, start);
         const MaterialPropertyInfo& info = infoOf(MaterialProperty(property));
         Material material = m_document->project().material();
-        material.clearcoat = {0.5, 0.5};
+        material.setClearcoat(0.5, 0.5);
         material.alphaMode = AlphaMode::Mask;
         setScalar(material, MaterialProperty(property), start);
         m_document->setMaterial(material, QStringLiteral("test setup"));

@@ -1,18 +1,18 @@
 // The material's texture maps on the GPU against their CPU twin (core/shading/MaterialInputs.h), one row
 // per map input and feature (Magnum's per-feature golden rows): each map alone, all five
-// together, a packed texture feeding three slots, every channel, inversion, colour space, normal
-// strength, the DirectX green flip, the UV transform, the UV set, each wrap mode and the nearest
-// filter, and each kind of file in its own GPU format (8-bit grey and grey + alpha, 16-bit PNG,
-// float EXR). Each row is a project with texture files
-// on disk, rendered the way `facet render --reference-view` renders it (core/project/ProjectAssets loads
-// the maps, render/SceneFromProject builds the scene, render/FrameRenderer draws and reads back
-// the RGBA16F target) by a fresh Renderer, so every map is uploaded in the row's first frame, as
-// after opening a project.
+// together, the clear coat's three (alone, packed, over a base normal map, off), a packed texture feeding
+// three slots, every channel, inversion, colour space, normal strength, the DirectX green flip, the UV
+// transform, the UV set, each wrap mode and the nearest filter, and each kind of file in its own GPU format
+// (8-bit grey and grey + alpha, 16-bit PNG, float EXR). Each row is a project with texture files on disk,
+// rendered the way `facet render --reference-view` renders it (core/project/ProjectAssets loads the maps,
+// render/SceneFromProject builds the scene, render/FrameRenderer draws and reads back the RGBA16F target) by
+// a fresh Renderer, so every map is uploaded in the row's first frame, as after opening a project.
 //
 // The GPU writes the inputs through debug views (base-color, metallic, roughness, occlusion,
-// shading-normal). The CPU evaluates the same inputs from the texture coordinate, the geometric
-// normal and the tangent that the GPU interpolated (the uv, geometric-normal and tangent debug
-// views), so the comparison isolates the material inputs from the tessellation.
+// shading-normal, and clearcoat, clearcoat-roughness, clearcoat-normal for rows with a coat). The CPU
+// evaluates the same inputs from the texture coordinate, the geometric normal and the tangent that the GPU
+// interpolated (the uv, geometric-normal and tangent debug views), so the comparison isolates the material
+// inputs from the tessellation.
 
 #include "core/image/Image.h"
 #include "core/project/Project.h"
@@ -390,6 +390,74 @@ const std::vector<Row>& rows()
                 useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
                 m.map(MapSlot::Emissive).factor = glm::dvec4(1.0);
             }},
+        // KHR_materials_clearcoat's maps (strength R and roughness G by the extension's packing).
+        {"clearcoat",
+            [](Material& m, const QString& f) {
+                m.setClearcoat(0.8, 0.3);
+                useScalar(m, MapSlot::Clearcoat, file(f, "grey.png"), MapChannel::R);
+            }},
+        {"clearcoat-roughness",
+            [](Material& m, const QString& f) {
+                m.setClearcoat(1.0, 0.9);
+                useScalar(m, MapSlot::ClearcoatRoughness, file(f, "packed.png"), MapChannel::G);
+            }},
+        {"clearcoat-packed-strength-and-roughness",
+            [](Material& m, const QString& f) {
+                m.setClearcoat(1.0, 1.0);
+                useScalar(m, MapSlot::Clearcoat, file(f, "packed.png"), MapChannel::R);
+                useScalar(m, MapSlot::ClearcoatRoughness, file(f, "packed.png"), MapChannel::G);
+            }},
+        {"clearcoat-roughness-invert",
+            [](Material& m, const QString& f) {
+                m.setClearcoat(1.0, 1.0);
+                useScalar(m, MapSlot::ClearcoatRoughness, file(f, "packed.png"), MapChannel::A);
+                m.map(MapSlot::ClearcoatRoughness).invert = true;
+            }},
+        {"clearcoat-normal",
+            [](Material& m, const QString& f) {
+                m.setClearcoat(1.0, 0.2);
+                useMap(m, MapSlot::ClearcoatNormal, file(f, "normal.png"), MapChannel::Rgb,
+                    ColorEncoding::Linear);
+            }},
+        {"clearcoat-normal-directx-strength-0.5-rotated",
+            [](Material& m, const QString& f) {
+                m.setClearcoat(1.0, 0.2);
+                useMap(m, MapSlot::ClearcoatNormal, file(f, "normal.png"), MapChannel::Rgb,
+                    ColorEncoding::Linear);
+                m.map(MapSlot::ClearcoatNormal).flipGreen = true;
+                m.map(MapSlot::ClearcoatNormal).uv.rotationDegrees = 60.0;
+                m.setFactor(MapSlot::ClearcoatNormal, 0.5);
+            }},
+        // The coat over a base normal map: each its own normal (the base's does not tilt the coat).
+        {"clearcoat-over-base-normal",
+            [](Material& m, const QString& f) {
+                useNormal(m, f);
+                m.setClearcoat(0.6, 0.4);
+            }},
+        // Coat maps while the coat is off: nothing of them is sampled, and nothing shows.
+        {"clearcoat-maps-while-off",
+            [](Material& m, const QString& f) {
+                useScalar(m, MapSlot::Clearcoat, file(f, "grey.png"), MapChannel::R);
+                useScalar(m, MapSlot::ClearcoatRoughness, file(f, "packed.png"), MapChannel::G);
+                useMap(m, MapSlot::ClearcoatNormal, file(f, "normal.png"), MapChannel::Rgb,
+                    ColorEncoding::Linear);
+            }},
+        {"all-nine",
+            [](Material& m, const QString& f) {
+                useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+                useNormal(m, f);
+                useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
+                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+                useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
+                useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+                m.map(MapSlot::Emissive).factor = glm::dvec4(1.0);
+                m.setClearcoat(0.9, 0.7);
+                useScalar(m, MapSlot::Clearcoat, file(f, "grey.png"), MapChannel::R);
+                useScalar(m, MapSlot::ClearcoatRoughness, file(f, "packed.png"), MapChannel::B);
+                useMap(m, MapSlot::ClearcoatNormal, file(f, "normal.png"), MapChannel::Rgb,
+                    ColorEncoding::Linear);
+                m.map(MapSlot::ClearcoatNormal).uv.scale = {2.0, 1.0};
+            }},
         {"all-five-transformed",
             [](Material& m, const QString& f) {
                 useBaseColor(m, f);
@@ -409,10 +477,13 @@ const std::vector<Row>& rows()
     return table;
 }
 
-// The views compared, and what each shows of the CPU twin's MaterialInfo.
+// The views compared, and what each shows of the CPU twin's MaterialInfo (its clearcoatNormal
+// set as the shader sets it: the coat's normal map's, or the geometric normal).
 struct ViewCheck {
     const char* view;
     std::function<glm::dvec3(const MaterialInfo&, const glm::dvec3& shadingNormal)> expected;
+    // A layered lobe's view: compared only for rows with the lobe or its maps (each costs a frame).
+    MaterialLobe lobe = MaterialLobe::Core;
 };
 const std::vector<ViewCheck>& viewChecks()
 {
@@ -421,13 +492,21 @@ const std::vector<ViewCheck>& viewChecks()
         {"metallic", [](const MaterialInfo& m, const glm::dvec3&) { return glm::dvec3(m.metallic); }},
         // The view shows the roughness used in shading, after the clamp to the minimum.
         {"roughness",
-         [](const MaterialInfo& m, const glm::dvec3&) {
-             return glm::dvec3(std::max(m.perceptualRoughness, Material::kMinPerceptualRoughness));
-         }},
+            [](const MaterialInfo& m, const glm::dvec3&) {
+                return glm::dvec3(std::max(m.perceptualRoughness, Material::kMinPerceptualRoughness));
+            }},
         {"occlusion", [](const MaterialInfo& m, const glm::dvec3&) { return glm::dvec3(m.occlusion); }},
         {"shading-normal", [](const MaterialInfo&, const glm::dvec3& n) { return n * 0.5 + 0.5; }},
         {"emissive", [](const MaterialInfo& m, const glm::dvec3&) { return m.emissive; }},
         {"alpha", [](const MaterialInfo& m, const glm::dvec3&) { return glm::dvec3(m.alpha); }},
+        {"clearcoat", [](const MaterialInfo& m, const glm::dvec3&) { return glm::dvec3(m.clearcoat); },
+            MaterialLobe::Clearcoat},
+        {"clearcoat-roughness",
+            [](const MaterialInfo& m, const glm::dvec3&) { return glm::dvec3(m.clearcoatRoughness); },
+            MaterialLobe::Clearcoat},
+        {"clearcoat-normal",
+            [](const MaterialInfo& m, const glm::dvec3&) { return m.clearcoatNormal * 0.5 + 0.5; },
+            MaterialLobe::Clearcoat},
     };
     return checks;
 }
@@ -591,7 +670,12 @@ void MaterialMapsGLTest::matchesCpuTwin()
     for (MapSlot slot : kAllMapSlots)
         images[std::size_t(slot)] = assets->maps[0][std::size_t(slot)].image.get();
 
+    bool hasCoat = material.hasClearcoat();
+    for (MapSlot slot : kAllMapSlots)
+        hasCoat = hasCoat || (lobeOf(slot) == MaterialLobe::Clearcoat && material.map(slot).hasTexture());
     for (const ViewCheck& check : viewChecks()) {
+        if (check.lobe == MaterialLobe::Clearcoat && !hasCoat)
+            continue;
         const auto gpu = render(project, check.view, &error);
         QVERIFY2(gpu, error.c_str());
         double maxError = 0.0;
@@ -603,14 +687,18 @@ void MaterialMapsGLTest::matchesCpuTwin()
             const glm::dvec2 uv(rgb(*m_uv, p.x, p.y));
             const glm::dvec3 ng = glm::normalize(rgb(*m_geometricNormal, p.x, p.y) * 2.0 - 1.0);
             const glm::dvec3 t = rgb(*m_tangent, p.x, p.y) * 2.0 - 1.0;
-            const MaterialInfo info = materialInputs(material, images, uv);
-            glm::dvec3 n = ng;
-            if (const MapImage* normalMap = images[std::size_t(MapSlot::Normal)]) {
-                const MaterialMap& map = material.map(MapSlot::Normal);
-                const glm::dvec4 texel = sampleMap(map, *normalMap, TexCoords {uv, uv});
+            MaterialInfo info = materialInputs(material, images, uv);
+            const auto mapped = [&](MapSlot slot) {
+                const MapImage* image = images[std::size_t(slot)];
+                if (!image || !material.usesSlot(slot))
+                    return ng;
+                const MaterialMap& map = material.map(slot);
+                const glm::dvec4 texel = sampleMap(map, *image, TexCoords {uv, uv});
                 // The sphere's tangents all have handedness +1 (core/mesh/MeshPrimitives).
-                n = shadingNormal(ng, glm::dvec4(t, 1.0), texel, map.factor.x, map.flipGreen);
-            }
+                return shadingNormal(ng, glm::dvec4(t, 1.0), texel, map.factor.x, map.flipGreen);
+            };
+            const glm::dvec3 n = mapped(MapSlot::Normal);
+            info.clearcoatNormal = mapped(MapSlot::ClearcoatNormal);
             const glm::dvec3 expected = check.expected(info, n);
             const glm::dvec3 actual = rgb(*gpu, p.x, p.y);
 

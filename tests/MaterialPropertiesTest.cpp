@@ -139,8 +139,10 @@ private Q_SLOTS:
         QTest::newRow("alpha cutoff") << P::AlphaCutoff << "alphaCutoff" << 0.0 << 1.0 << "";
         QTest::newRow("clearcoat") << P::Clearcoat << "clearcoat.factor" << 0.0 << 1.0 << "clearcoat";
         QTest::newRow("clearcoat roughness")
-            << P::ClearcoatRoughness << "clearcoat.roughness" << 0.0 << 1.0 << "clearcoat-roughness";
-        QCOMPARE(kMaterialPropertyCount, 12); // a new property adds its golden row here
+            << P::ClearcoatRoughness << "clearcoatRoughness.factor" << 0.0 << 1.0 << "clearcoat-roughness";
+        QTest::newRow("clearcoat normal")
+            << P::ClearcoatNormal << "clearcoatNormal.factor" << 0.0 << 10.0 << "";
+        QCOMPARE(kMaterialPropertyCount, 13); // a new property adds its golden row here
     }
 
     void goldenRows()

@@ -119,7 +119,7 @@ private Q_SLOTS:
         // A smooth clear coat over the rough one: the soft box's sharp highlight again, over the
         // rough base (the coat lit by its own prefiltered light).
         Material coated = rough;
-        coated.clearcoat = {1.0, 0.05};
+        coated.setClearcoat(1.0, 0.05);
         const Stats coatedStats = stats(renderer.render(coated, {}, kSize));
         qInfo("highlight: coated rough %.3f (mean %.3f)", coatedStats.largest, coatedStats.mean);
         QVERIFY(coatedStats.largest > roughStats.largest + 0.15);

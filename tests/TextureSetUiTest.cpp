@@ -303,6 +303,10 @@ void TextureSetUiTest::dockAssignsPackedChannels()
     QStringList got;
     for (MapSlot slot : kAllMapSlots) {
         const MaterialMap& map = m_document->project().material().map(slot);
+        if (lobeOf(slot) != MaterialLobe::Core) {
+            QVERIFY2(!map.hasTexture(), toString(slot)); // no coat file in these sets
+            continue;
+        }
         QVERIFY2(map.hasTexture(), toString(slot));
         QString entry = QStringLiteral("%1:%2").arg(
             QString::fromLatin1(toString(slot)), QString::fromLatin1(toString(map.channel)));
@@ -321,18 +325,23 @@ void TextureSetUiTest::dockAssignsPackedChannels()
 
 void TextureSetUiTest::assigningASetReplacesTheWholeSet()
 {
-    // Set A: six separate maps, through Assign Folder….
+    // Set A: nine separate maps, a clear coat's three among them, through Assign Folder….
     const QString a = m_dir.filePath(QStringLiteral("replace/a"));
     makeFiles(a,
         {QStringLiteral("a_basecolor.png"), QStringLiteral("a_normal.png"), QStringLiteral("a_metallic.png"),
-            QStringLiteral("a_roughness.png"), QStringLiteral("a_ao.png"), QStringLiteral("a_emissive.png")});
+            QStringLiteral("a_roughness.png"), QStringLiteral("a_ao.png"), QStringLiteral("a_emissive.png"),
+            QStringLiteral("a_clearcoat.png"), QStringLiteral("a_clearcoat_roughness.png"),
+            QStringLiteral("a_clearcoat_normal.png")});
     auto* button = m_dock->findChild<QPushButton*>(QStringLiteral("assignFolderButton"));
     QVERIFY(button);
     QVERIFY(clickAndAnswerFileDialog(button, a));
     const Material setA = m_document->project().material();
     for (MapSlot slot : kAllMapSlots)
-        QVERIFY(setA.map(slot).hasTexture());
+        QVERIFY2(setA.map(slot).hasTexture(), toString(slot));
     QCOMPARE(setA.metallic(), 1.0); // the texture shows as painted
+    QCOMPARE(setA.clearcoat(), 1.0); // a coat texture turns the coat on, as painted
+    QCOMPARE(setA.clearcoatRoughness(), 1.0);
+    QVERIFY(m_dock->lobeSlots(MaterialLobe::Clearcoat)->isVisibleTo(m_dock));
     const int steps = m_document->undoStack()->index();
     QSignalSpy rendered(m_window->viewport(), &ViewportWidget::frameRendered);
 
@@ -346,14 +355,19 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
         QStringLiteral("b_basecolor.png"));
     QCOMPARE(QFileInfo(QString::fromStdString(setB.map(MapSlot::Roughness).path)).fileName(),
         QStringLiteral("b_roughness.png"));
-    for (MapSlot slot : {MapSlot::Normal, MapSlot::Metallic, MapSlot::Occlusion, MapSlot::Emissive})
+    for (MapSlot slot : {MapSlot::Normal, MapSlot::Metallic, MapSlot::Occlusion, MapSlot::Emissive,
+             MapSlot::Clearcoat, MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal})
         QVERIFY2(!setB.map(slot).hasTexture(), toString(slot));
     QCOMPARE(setB.metallic(), 0.0); // a dielectric, not A's metallic factor of 1 alone
+    QVERIFY(!setB.hasClearcoat()); // and no coat: A's came with A's coat maps
+    QVERIFY(!m_dock->lobeSlots(MaterialLobe::Clearcoat)->isVisibleTo(m_dock));
     QCOMPARE(m_document->undoStack()->index(), steps + 1); // one step
     const QString message = m_dock->lastMessage();
     QVERIFY2(message.startsWith(QStringLiteral("Assigned 2 maps")), qPrintable(message));
-    QVERIFY2(message.contains(
-                 QStringLiteral("cleared (not in this set): Normal, Metallic (now 0), Ambient Occlusion, Emissive")),
+    QVERIFY2(
+        message.contains(QStringLiteral("cleared (not in this set): Normal, Metallic (now 0), Ambient "
+                                        "Occlusion, Emissive, Clearcoat (no coat now), Clearcoat Roughness, "
+                                        "Clearcoat Normal")),
         qPrintable(message));
     QCOMPARE(m_window->statusMessage(), message);
     // The slots say so too.

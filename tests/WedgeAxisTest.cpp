@@ -41,9 +41,9 @@ double valueIn(const Project& project, WedgeParameter parameter)
     case WedgeParameter::Alpha:
         return m.map(MapSlot::BaseColor).factor.w;
     case WedgeParameter::Clearcoat:
-        return m.clearcoat.factor;
+        return m.clearcoat();
     case WedgeParameter::ClearcoatRoughness:
-        return m.clearcoat.roughness;
+        return m.clearcoatRoughness();
     case WedgeParameter::Exposure:
         return project.view.exposureEV;
     case WedgeParameter::Environment:
@@ -470,7 +470,7 @@ private Q_SLOTS:
         if (setup == QLatin1String("metal"))
             m.setFactor(MapSlot::Metallic, 1.0);
         if (setup == QLatin1String("coat"))
-            m.clearcoat.factor = 1.0;
+            m.setFactor(MapSlot::Clearcoat, 1.0);
         std::string error;
         const std::optional<WedgeAxis> parsed = WedgeAxis::parse(axis.toStdString(), &error);
         QVERIFY2(parsed, error.c_str());

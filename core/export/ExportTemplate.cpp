@@ -17,7 +17,7 @@ using namespace jsonsupport;
 
 namespace {
 
-constexpr std::array<std::pair<ExportSource, const char*>, 16> kSources = {{
+constexpr std::array<std::pair<ExportSource, const char*>, 19> kSources = {{
     {ExportSource::Constant, "constant"},
     {ExportSource::BaseColorR, "baseColor.r"},
     {ExportSource::BaseColorG, "baseColor.g"},
@@ -34,6 +34,9 @@ constexpr std::array<std::pair<ExportSource, const char*>, 16> kSources = {{
     {ExportSource::EmissiveB, "emissive.b"},
     {ExportSource::Clearcoat, "clearcoat"},
     {ExportSource::ClearcoatRoughness, "clearcoatRoughness"},
+    {ExportSource::ClearcoatNormalX, "clearcoatNormal.x"},
+    {ExportSource::ClearcoatNormalY, "clearcoatNormal.y"},
+    {ExportSource::ClearcoatNormalZ, "clearcoatNormal.z"},
 }};
 
 constexpr std::array<std::pair<TextureFileFormat, const char*>, 4> kFormats = {{

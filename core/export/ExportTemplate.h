@@ -32,6 +32,7 @@
 //   metallic, roughness (perceptual), occlusion (strength applied)
 //   emissive.r/.g/.b   emissive colour (factor x texture, linear; the strength is a parameter)
 //   clearcoat, clearcoatRoughness   the clear coat's strength and perceptual roughness
+//   clearcoatNormal.x/.y/.z         the coat's tangent-space normal, as normal.x/.y/.z
 // Tokens of file names: {material} (its name, made safe for a file name), {map}, {size} (the
 // file's width, or WxH when it is not square), {template} (the template's file name stem).
 
@@ -63,6 +64,9 @@ enum class ExportSource {
     EmissiveB,
     Clearcoat, // KHR_materials_clearcoat's strength
     ClearcoatRoughness, // the coat's perceptual roughness
+    ClearcoatNormalX, // the coat's tangent-space normal, as NormalX/Y/Z
+    ClearcoatNormalY,
+    ClearcoatNormalZ,
 };
 const char* toString(ExportSource source); // "baseColor.r", ...; "constant"
 std::optional<ExportSource> exportSourceFromString(std::string_view name);

@@ -18,14 +18,20 @@ namespace facet {
 
 namespace {
 
-// The map a source reads, or none (a constant; a clear coat's factors, which have no map yet).
+// The map a source reads, or none (a constant).
 std::optional<MapSlot> slotOf(ExportSource source)
 {
     switch (source) {
     case ExportSource::Constant:
-    case ExportSource::Clearcoat:
-    case ExportSource::ClearcoatRoughness:
         return std::nullopt;
+    case ExportSource::Clearcoat:
+        return MapSlot::Clearcoat;
+    case ExportSource::ClearcoatRoughness:
+        return MapSlot::ClearcoatRoughness;
+    case ExportSource::ClearcoatNormalX:
+    case ExportSource::ClearcoatNormalY:
+    case ExportSource::ClearcoatNormalZ:
+        return MapSlot::ClearcoatNormal;
     case ExportSource::NormalX:
     case ExportSource::NormalY:
     case ExportSource::NormalZ:
@@ -104,10 +110,15 @@ ExportTexel exportTexel(const Material& material, const MaterialMapImages& image
             texel.emissive *= glm::dvec3(sampleMap(emissiveMap, *image, TexCoords {uv, uv}));
         texel.emissive = glm::max(texel.emissive, glm::dvec3(0.0));
     }
-    const MaterialMap& normalMap = material.map(MapSlot::Normal);
-    if (const MapImage* image = imageOf(material, images, MapSlot::Normal))
-        texel.normal = tangentSpaceNormal(
-            sampleMap(normalMap, *image, TexCoords {uv, uv}), material.normalStrength(), normalMap.flipGreen);
+    const auto normalOf = [&](MapSlot slot) {
+        const MaterialMap& map = material.map(slot);
+        const MapImage* image = material.usesSlot(slot) ? imageOf(material, images, slot) : nullptr;
+        return image
+            ? tangentSpaceNormal(sampleMap(map, *image, TexCoords {uv, uv}), map.factor.x, map.flipGreen)
+            : glm::dvec3(0.0, 0.0, 1.0);
+    };
+    texel.normal = normalOf(MapSlot::Normal);
+    texel.clearcoatNormal = normalOf(MapSlot::ClearcoatNormal);
     return texel;
 }
 
@@ -162,21 +173,35 @@ double channelValue(const ExportChannel& channel, const ExportTexel& texel)
     case ExportSource::ClearcoatRoughness:
         value = texel.clearcoatRoughness;
         break;
+    case ExportSource::ClearcoatNormalX:
+        value = texel.clearcoatNormal.x * 0.5 + 0.5;
+        break;
+    case ExportSource::ClearcoatNormalY:
+        value = texel.clearcoatNormal.y * 0.5 + 0.5;
+        break;
+    case ExportSource::ClearcoatNormalZ:
+        value = texel.clearcoatNormal.z * 0.5 + 0.5;
+        break;
     }
     return channel.invert ? 1.0 - value : value;
 }
 
-bool usesSlot(const Material& material, MapSlot slot)
+bool slotHasContent(const Material& material, MapSlot slot)
 {
+    if (!material.usesSlot(slot))
+        return false;
     switch (slot) {
     case MapSlot::BaseColor:
     case MapSlot::Metallic:
     case MapSlot::Roughness:
+    case MapSlot::Clearcoat: // in use: the coat is on
+    case MapSlot::ClearcoatRoughness:
         return true;
     case MapSlot::Emissive:
         return material.map(slot).hasTexture() || glm::dvec3(material.map(slot).factor) != glm::dvec3(0.0);
     case MapSlot::Normal:
     case MapSlot::Occlusion:
+    case MapSlot::ClearcoatNormal:
         break;
     }
     return material.map(slot).hasTexture();
@@ -184,10 +209,8 @@ bool usesSlot(const Material& material, MapSlot slot)
 
 bool usesSource(const Material& material, ExportSource source)
 {
-    if (source == ExportSource::Clearcoat || source == ExportSource::ClearcoatRoughness)
-        return material.clearcoat.isOn();
     const std::optional<MapSlot> slot = slotOf(source);
-    return slot && usesSlot(material, *slot);
+    return slot && slotHasContent(material, *slot);
 }
 
 std::optional<TextureSetPlan> planTextureSet(const ExportTemplate& exportTemplate, const Material& material,

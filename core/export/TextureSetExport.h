@@ -60,17 +60,19 @@ struct ExportTexel {
     glm::dvec3 emissive {0.0}; // factor x texture (without the strength)
     double clearcoat = 0.0;
     double clearcoatRoughness = 0.0; // perceptual
+    glm::dvec3 clearcoatNormal {0.0, 0.0, 1.0}; // as `normal`, from the coat's normal map
 };
 ExportTexel exportTexel(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv);
 // A source's value in a texel ([0, 1] for every source but emissive: the normal is stored as
 // n * 0.5 + 0.5). Constant: channel.constant; then inverted when channel.invert.
 double channelValue(const ExportChannel& channel, const ExportTexel& texel);
 
-// Whether the material uses `slot` beyond a neutral constant: a texture, and for emissive also a
-// colour other than black (ExportOutput::optional). Base colour, metallic and roughness always.
-bool usesSlot(const Material& material, MapSlot slot);
-// The same for a template's source: its map's usesSlot, or for the clear coat's sources whether
-// the coat is on. Constant: false.
+// Whether the material uses `slot` beyond a neutral constant (ExportOutput::optional): a
+// texture, and for emissive also a colour other than black. Base colour, metallic and roughness
+// always; the coat's strength and roughness while the coat is on (Material::usesSlot), its normal
+// map when it has a texture.
+bool slotHasContent(const Material& material, MapSlot slot);
+// The same for a template's source: its map's slotHasContent. Constant: false.
 bool usesSource(const Material& material, ExportSource source);
 
 // The files `exportTemplate` writes for `material` (file names expanded, sizes from the maps'):

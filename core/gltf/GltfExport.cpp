@@ -32,7 +32,7 @@ constexpr int kFloat = 5126;
 constexpr int kUnsignedInt = 5125;
 
 // The gltf-textures template's outputs, by the slots they serve.
-enum class Texture { BaseColor, Normal, Orm, Emissive };
+enum class Texture { BaseColor, Normal, Orm, Emissive, Clearcoat, ClearcoatNormal };
 const char* mapName(Texture texture)
 {
     switch (texture) {
@@ -42,6 +42,10 @@ const char* mapName(Texture texture)
         return "normal";
     case Texture::Orm:
         return "occlusionRoughnessMetallic";
+    case Texture::Clearcoat:
+        return "clearcoat";
+    case Texture::ClearcoatNormal:
+        return "clearcoatNormal";
     case Texture::Emissive:
         break;
     }
@@ -57,6 +61,10 @@ std::vector<MapSlot> slotsOf(const std::string& outputMap)
         return {MapSlot::Normal};
     if (outputMap == mapName(Texture::Emissive))
         return {MapSlot::Emissive};
+    if (outputMap == mapName(Texture::Clearcoat))
+        return {MapSlot::Clearcoat, MapSlot::ClearcoatRoughness};
+    if (outputMap == mapName(Texture::ClearcoatNormal))
+        return {MapSlot::ClearcoatNormal};
     return {MapSlot::BaseColor};
 }
 
@@ -79,6 +87,9 @@ TextureSampler samplerOf(const Material& material, const std::string& outputMap)
 // What one material becomes: which textures, the transform they share, the job that bakes them.
 struct MaterialPlan {
     bool base = false, normal = false, orm = false, emissive = false;
+    // KHR_materials_clearcoat: one texture for the strength (R) and roughness (G), and the coat's
+    // normal map; only for a lit material with a coat.
+    bool coat = false, coatNormal = false;
     std::optional<UvTransform> shared; // written as KHR_texture_transform
     int texCoord = 0; // the UV set every textured slot reads (textureInfo.texCoord)
     std::optional<TextureSetExport> job;
@@ -114,6 +125,11 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
         plan.orm = material.map(MapSlot::Occlusion).hasTexture()
             || material.map(MapSlot::Roughness).hasTexture() || material.map(MapSlot::Metallic).hasTexture();
         plan.emissive = material.map(MapSlot::Emissive).hasTexture();
+        const bool coated = material.hasClearcoat() && !material.unlit;
+        plan.coat = coated
+            && (material.map(MapSlot::Clearcoat).hasTexture()
+                || material.map(MapSlot::ClearcoatRoughness).hasTexture());
+        plan.coatNormal = coated && material.map(MapSlot::ClearcoatNormal).hasTexture();
 
         // One transform on every textured slot: kept as KHR_texture_transform; else baked. The
         // bake writes every map into one texture set, in one UV set: maps on different sets
@@ -124,7 +140,8 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
         bool same = true;
         for (const MapSlot slot : kAllMapSlots) {
             const MaterialMap& map = material.map(slot);
-            if (!map.hasTexture())
+            if (!map.hasTexture() || !material.usesSlot(slot)
+                || (material.unlit && lobeOf(slot) != MaterialLobe::Core))
                 continue;
             const int texCoord = secondSet ? map.texCoord : 0;
             if (set && *set != texCoord) {
@@ -149,6 +166,7 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
         // (occlusionTexture.strength) as parameters: kept as such, not baked (a baked strength
         // changes what filtering between texels gives: the normal is renormalised per texel).
         baked.setFactor(MapSlot::Normal, 1.0);
+        baked.setFactor(MapSlot::ClearcoatNormal, 1.0);
         baked.setFactor(MapSlot::Occlusion, 1.0);
         // File names: "<asset>_<material>_<map>.png", a material name used twice numbered.
         std::string name = fileNameSafe(material.name);
@@ -164,7 +182,9 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
             const bool wanted = (output.map == mapName(Texture::BaseColor) && plan.base)
                 || (output.map == mapName(Texture::Normal) && plan.normal)
                 || (output.map == mapName(Texture::Orm) && plan.orm)
-                || (output.map == mapName(Texture::Emissive) && plan.emissive);
+                || (output.map == mapName(Texture::Emissive) && plan.emissive)
+                || (output.map == mapName(Texture::Clearcoat) && plan.coat)
+                || (output.map == mapName(Texture::ClearcoatNormal) && plan.coatNormal);
             if (wanted) {
                 ExportOutput kept = output;
                 kept.optional = false;
@@ -513,10 +533,24 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
                 QJsonObject {{QStringLiteral("emissiveStrength"), material.emissiveStrength}});
             extensionsUsed.insert(QStringLiteral("KHR_materials_emissive_strength"));
         }
-        if (!material.unlit && material.clearcoat.isOn()) {
-            QJsonObject clearcoat {{QStringLiteral("clearcoatFactor"), material.clearcoat.factor}};
-            if (material.clearcoat.roughness != 0.0)
-                clearcoat.insert(QStringLiteral("clearcoatRoughnessFactor"), material.clearcoat.roughness);
+        if (!material.unlit && material.hasClearcoat()) {
+            // A baked coat texture holds factor x texture: its factors are 1.
+            QJsonObject clearcoat {
+                {QStringLiteral("clearcoatFactor"), plan.coat ? 1.0 : material.clearcoat()}};
+            const double coatRoughness = plan.coat ? 1.0 : material.clearcoatRoughness();
+            if (coatRoughness != 0.0)
+                clearcoat.insert(QStringLiteral("clearcoatRoughnessFactor"), coatRoughness);
+            if (plan.coat) {
+                clearcoat.insert(QStringLiteral("clearcoatTexture"),
+                    textureInfo(index(Texture::Clearcoat), plan, mesh.hasTexCoord1));
+                clearcoat.insert(QStringLiteral("clearcoatRoughnessTexture"),
+                    textureInfo(index(Texture::Clearcoat), plan, mesh.hasTexCoord1));
+            }
+            if (plan.coatNormal)
+                clearcoat.insert(QStringLiteral("clearcoatNormalTexture"),
+                    textureInfo(index(Texture::ClearcoatNormal), plan, mesh.hasTexCoord1,
+                        QJsonObject {
+                            {QStringLiteral("scale"), material.map(MapSlot::ClearcoatNormal).factor.x}}));
             extensions.insert(QStringLiteral("KHR_materials_clearcoat"), clearcoat);
             extensionsUsed.insert(QStringLiteral("KHR_materials_clearcoat"));
         }

@@ -163,6 +163,42 @@ bool readTexture(const tinygltf::Model& model, int textureIndex, int texCoord,
     return true;
 }
 
+// The textureInfo `field` of an extension's object (`extensionObject`, the extension
+// `extension`): index, texCoord, KHR_texture_transform and, for a normal texture, its scale into
+// the map's factor (the core normalTexture's rule). False when there is none or it is unusable,
+// with a note naming the field for what is wrong.
+bool readExtensionTexture(const tinygltf::Model& model, const tinygltf::Value& extensionObject,
+    const char* extension, const char* field, const std::string& assetPath, const std::string& where,
+    MaterialMap& map, Notes& notes)
+{
+    if (!extensionObject.Has(field))
+        return false;
+    const std::string at = where + " " + extension + "." + field;
+    const tinygltf::Value& info = extensionObject.Get(field);
+    if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt()) {
+        notes.add(at + " is not a textureInfo with an integer index: its factor is used alone");
+        return false;
+    }
+    int texCoord = 0;
+    if (info.Has("texCoord") && info.Get("texCoord").IsInt())
+        texCoord = info.Get("texCoord").GetNumberAsInt();
+    if (info.Has("scale")) {
+        if (info.Get("scale").IsNumber())
+            map.factor = glm::dvec4(clamped(info.Get("scale").GetNumberAsDouble(), 0.0,
+                Material::kMaxNormalStrength, at + ".scale", notes));
+        else
+            notes.add(at + ".scale is not a number: 1 used");
+    }
+    tinygltf::ExtensionMap extensions;
+    if (info.Has("extensions") && info.Get("extensions").IsObject()) {
+        const tinygltf::Value& object = info.Get("extensions");
+        for (const std::string& key : object.Keys())
+            extensions[key] = object.Get(key);
+    }
+    return readTexture(
+        model, info.Get("index").GetNumberAsInt(), texCoord, extensions, assetPath, at, map, notes);
+}
+
 } // namespace
 
 Material defaultGltfMaterial()
@@ -272,15 +308,23 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
             m.unlit = true; // an empty object: its presence is the whole extension
         } else if (name == "KHR_materials_clearcoat") {
             // Defaults 0 (the extension's): an object without clearcoatFactor has no coat.
-            m.clearcoat.factor
-                = extensionNumber(value, "KHR_materials_clearcoat", "clearcoatFactor", 0.0, 1.0, 0.0);
-            m.clearcoat.roughness = extensionNumber(
-                value, "KHR_materials_clearcoat", "clearcoatRoughnessFactor", 0.0, 1.0, 0.0);
-            for (const char* texture :
-                {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"})
-                if (value.Has(texture))
-                    notes.add(where + " KHR_materials_clearcoat." + texture
-                        + " is not read yet: the coat's factors alone are previewed");
+            const char* const extension = "KHR_materials_clearcoat";
+            m.setFactor(
+                MapSlot::Clearcoat, extensionNumber(value, extension, "clearcoatFactor", 0.0, 1.0, 0.0));
+            m.setFactor(MapSlot::ClearcoatRoughness,
+                extensionNumber(value, extension, "clearcoatRoughnessFactor", 0.0, 1.0, 0.0));
+            // The strength in R and the roughness in G (so one texture can hold both), the
+            // normal as the core normal texture with its scale; all linear.
+            const auto coatTexture = [&](const char* field, MapSlot slot) {
+                MaterialMap& map = m.map(slot);
+                map.colorSpace = ColorEncoding::Linear;
+                readExtensionTexture(model, value, extension, field, assetPath, where, map, notes);
+            };
+            coatTexture("clearcoatTexture", MapSlot::Clearcoat);
+            coatTexture("clearcoatRoughnessTexture", MapSlot::ClearcoatRoughness);
+            coatTexture("clearcoatNormalTexture", MapSlot::ClearcoatNormal);
+            m.map(MapSlot::Clearcoat).channel = MapChannel::R;
+            m.map(MapSlot::ClearcoatRoughness).channel = MapChannel::G;
         } else if (!kRead.count(name)) {
             notes.add(
                 "the material extension " + name + " is not supported: previewed as metallic-roughness");

@@ -74,7 +74,7 @@ std::vector<MapSlot> slotsReadingChannel(
         = channelCount(layout) - ((layout == MapLayout::GreyAlpha || layout == MapLayout::Rgba) ? 1 : 0);
     for (MapSlot slot : kAllMapSlots) {
         const MaterialMap& map = material.map(slot);
-        if (map.path != path)
+        if (map.path != path || !material.usesSlot(slot))
             continue;
         const bool reads = map.channel == MapChannel::Rgb ? channel < colourChannels
                                                           : storedChannelOf(map.channel, layout) == channel;

@@ -29,6 +29,10 @@ enum class Layout {
     Mra,
     Rma,
     Emissive,
+    Clearcoat,
+    ClearcoatRoughness,
+    ClearcoatNormal,
+    PackedClearcoat, // R the coat's strength, G its roughness (KHR_materials_clearcoat's channels)
 };
 
 MapRead scalar(MapSlot slot, MapChannel channel, bool invert = false)
@@ -92,6 +96,16 @@ TextureNaming namingOf(Layout layout)
             "RMA", {scalar(S::Roughness, C::R), scalar(S::Metallic, C::G), scalar(S::Occlusion, C::B)});
     case Layout::Emissive:
         return single(scalar(S::Emissive, C::Rgb));
+    case Layout::Clearcoat:
+        return single(scalar(S::Clearcoat, C::R));
+    case Layout::ClearcoatRoughness:
+        return single(scalar(S::ClearcoatRoughness, C::R));
+    case Layout::ClearcoatNormal:
+        return single(MapRead {S::ClearcoatNormal, C::Rgb, false, std::nullopt});
+    case Layout::PackedClearcoat:
+        // KHR_materials_clearcoat: "The clearcoat layer intensity ... sampled from the R channel",
+        // "roughness ... from the G channel"; Facet's Unreal export writes its T_*_CC so.
+        return packed("clear coat", {scalar(S::Clearcoat, C::R), scalar(S::ClearcoatRoughness, C::G)});
     }
     return {};
 }
@@ -119,60 +133,56 @@ constexpr NameRule kRules[] = {
 
     {"ambient_occlusion", Where::LastWords, Layout::Occlusion},
     {"metallic_smoothness", Where::LastWords, Layout::UnityMetallicSmoothness},
-    {"mask_map", Where::LastWords, Layout::UnityMaskMap},
-    {"base_color", Where::LastWords, Layout::BaseColor},
+    {"mask_map", Where::LastWords, Layout::UnityMaskMap}, {"base_color", Where::LastWords, Layout::BaseColor},
     {"base_colour", Where::LastWords, Layout::BaseColor},
     {"normal_gl", Where::LastWords, Layout::NormalOpenGl},
     {"normal_dx", Where::LastWords, Layout::NormalDirectX},
     {"nor_gl", Where::LastWords, Layout::NormalOpenGl}, // Poly Haven
     {"nor_dx", Where::LastWords, Layout::NormalDirectX}, // Poly Haven
+    {"clearcoat_roughness", Where::LastWords, Layout::ClearcoatRoughness},
+    {"clearcoat_normal", Where::LastWords, Layout::ClearcoatNormal},
+    {"coat_roughness", Where::LastWords, Layout::ClearcoatRoughness},
+    {"coat_normal", Where::LastWords, Layout::ClearcoatNormal},
+    {"clear_coat", Where::LastWords, Layout::Clearcoat},
+
+    {"clearcoatroughness", Where::LastWords, Layout::ClearcoatRoughness}, // glTF's clearcoatRoughnessTexture
+    {"clearcoatnormal", Where::LastWords, Layout::ClearcoatNormal}, // glTF's clearcoatNormalTexture
+    {"clearcoat", Where::LastWords, Layout::Clearcoat}, {"coat", Where::LastWords, Layout::Clearcoat},
 
     {"ambientocclusion", Where::LastWords, Layout::Occlusion}, // ambientCG
     {"metallicsmoothness", Where::LastWords, Layout::UnityMetallicSmoothness},
     {"maskmap", Where::LastWords, Layout::UnityMaskMap}, // Unity HDRP
-    {"basecolor", Where::LastWords, Layout::BaseColor},
-    {"basecolour", Where::LastWords, Layout::BaseColor},
+    {"basecolor", Where::LastWords, Layout::BaseColor}, {"basecolour", Where::LastWords, Layout::BaseColor},
     {"normalgl", Where::LastWords, Layout::NormalOpenGl}, // ambientCG
     {"normaldx", Where::LastWords, Layout::NormalDirectX}, // ambientCG
-    {"albedo", Where::LastWords, Layout::BaseColor},
-    {"diffuse", Where::LastWords, Layout::BaseColor},
+    {"albedo", Where::LastWords, Layout::BaseColor}, {"diffuse", Where::LastWords, Layout::BaseColor},
     {"diff", Where::LastWords, Layout::BaseColor}, // Poly Haven
-    {"color", Where::LastWords, Layout::BaseColor},
-    {"colour", Where::LastWords, Layout::BaseColor},
+    {"color", Where::LastWords, Layout::BaseColor}, {"colour", Where::LastWords, Layout::BaseColor},
     {"col", Where::LastWords, Layout::BaseColor}, // Poliigon
     {"bc", Where::LastWords, Layout::BaseColor}, // Unreal
-    {"normal", Where::LastWords, Layout::Normal},
-    {"nrm", Where::LastWords, Layout::Normal}, // Poliigon
-    {"nor", Where::LastWords, Layout::Normal},
-    {"metallic", Where::LastWords, Layout::Metallic},
+    {"normal", Where::LastWords, Layout::Normal}, {"nrm", Where::LastWords, Layout::Normal}, // Poliigon
+    {"nor", Where::LastWords, Layout::Normal}, {"metallic", Where::LastWords, Layout::Metallic},
     {"metalness", Where::LastWords, Layout::Metallic},
     {"metal", Where::LastWords, Layout::Metallic}, // Poly Haven
     {"roughness", Where::LastWords, Layout::Roughness},
     {"rough", Where::LastWords, Layout::Roughness}, // Poly Haven
-    {"glossiness", Where::LastWords, Layout::Gloss},
-    {"gloss", Where::LastWords, Layout::Gloss}, // Poliigon
-    {"smoothness", Where::LastWords, Layout::Gloss},
-    {"occlusion", Where::LastWords, Layout::Occlusion},
-    {"ao", Where::LastWords, Layout::Occlusion},
-    {"orm", Where::LastWords, Layout::Orm},
+    {"glossiness", Where::LastWords, Layout::Gloss}, {"gloss", Where::LastWords, Layout::Gloss}, // Poliigon
+    {"smoothness", Where::LastWords, Layout::Gloss}, {"occlusion", Where::LastWords, Layout::Occlusion},
+    {"ao", Where::LastWords, Layout::Occlusion}, {"orm", Where::LastWords, Layout::Orm},
     {"arm", Where::LastWords, Layout::Orm}, // Poly Haven: AO, roughness, metal
-    {"mra", Where::LastWords, Layout::Mra},
-    {"rma", Where::LastWords, Layout::Rma},
-    {"mr", Where::LastWords, Layout::GltfMetallicRoughness},
-    {"emissive", Where::LastWords, Layout::Emissive},
+    {"mra", Where::LastWords, Layout::Mra}, {"rma", Where::LastWords, Layout::Rma},
+    {"mr", Where::LastWords, Layout::GltfMetallicRoughness}, {"emissive", Where::LastWords, Layout::Emissive},
     {"emission", Where::LastWords, Layout::Emissive}, // Poly Haven, ambientCG
-    {"emit", Where::LastWords, Layout::Emissive},
-    {"glow", Where::LastWords, Layout::Emissive},
+    {"emit", Where::LastWords, Layout::Emissive}, {"glow", Where::LastWords, Layout::Emissive},
 
     // Unreal texture suffixes (Allar's / Gamemakin UE style guide, 1.2.6): only after a T_ prefix,
     // where a one-letter word is not something else. Unreal's normal maps are DirectX (Y-).
-    {"d", Where::Unreal, Layout::BaseColor},
-    {"n", Where::Unreal, Layout::NormalDirectX},
+    {"d", Where::Unreal, Layout::BaseColor}, {"n", Where::Unreal, Layout::NormalDirectX},
     {"r", Where::Unreal, Layout::Roughness},
     {"m", Where::Unreal, Layout::Metallic}, // "metallic or mask": read as metallic
-    {"mt", Where::Unreal, Layout::Metallic},
-    {"o", Where::Unreal, Layout::Occlusion},
+    {"mt", Where::Unreal, Layout::Metallic}, {"o", Where::Unreal, Layout::Occlusion},
     {"e", Where::Unreal, Layout::Emissive},
+    {"cc", Where::Unreal, Layout::PackedClearcoat}, // Facet's Unreal template writes T_<name>_CC
 };
 
 // The words of a file's base name, lower case, without trailing resolution words ("4k", "2048").
@@ -301,14 +311,19 @@ Material withAssignedMaps(Material material, const std::vector<MapAssignment>& a
         map.channel = assignment.channel;
         map.colorSpace = isColorSlot(assignment.slot) ? ColorEncoding::SRGB : ColorEncoding::Linear;
         map.invert = isScalarSlot(assignment.slot) && assignment.invert;
-        map.flipGreen = assignment.slot == MapSlot::Normal && assignment.flipGreen;
+        map.flipGreen = isNormalSlot(assignment.slot) && assignment.flipGreen;
         if (assignment.slot == MapSlot::BaseColor)
             map.factor = glm::dvec4(1.0, 1.0, 1.0, map.factor.w);
         else if (assignment.slot == MapSlot::Emissive)
             map.factor = glm::dvec4(1.0); // the default emissive factor, black, would hide the texture
-        else if (assignment.slot == MapSlot::Metallic || assignment.slot == MapSlot::Roughness)
-            material.setFactor(assignment.slot, 1.0);
+        else if (assignment.slot == MapSlot::Metallic || assignment.slot == MapSlot::Roughness
+            || assignment.slot == MapSlot::Clearcoat || assignment.slot == MapSlot::ClearcoatRoughness)
+            material.setFactor(assignment.slot, 1.0); // a coat texture turns the coat on, as painted
     }
+    // A coat normal or roughness map alone says there is a coat: a full one, shaped by the map.
+    for (const MapAssignment& assignment : assignments)
+        if (lobeOf(assignment.slot) == MaterialLobe::Clearcoat && !material.hasClearcoat())
+            material.setFactor(MapSlot::Clearcoat, 1.0);
     return material;
 }
 

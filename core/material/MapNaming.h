@@ -28,8 +28,14 @@
 //                          metallic_smoothness                   A smoothness
 //                          mra                                   R metallic, G roughness, B occlusion
 //                          rma                                   R roughness, G metallic, B occlusion
+//                          clearcoat, coat, clear_coat           the coat's strength R
+//                          clearcoat_roughness,
+//                          clearcoatroughness, coat_roughness    the coat's roughness R
+//                          clearcoat_normal, clearcoatnormal,
+//                          coat_normal                           the coat's normal
 //   Unreal, T_<name>_X     d (base colour), n (normal, DirectX), r (roughness), m, mt (metallic),
-//                          o (occlusion); the words above work after T_ too (T_Crate_BC, _AO, _ORM)
+//                          o (occlusion), cc (R coat, G coat roughness: Facet's Unreal export);
+//                          the words above work after T_ too (T_Crate_BC, _AO, _ORM)
 //
 // docs/app.md ("Texture Maps") has this table with its sources. A single-map name reads R for a
 // scalar slot: a greyscale file has the same value in every channel. The user can change any of
@@ -97,9 +103,9 @@ struct MapNamingResult {
 MapNamingResult assignMapsByName(const QStringList& paths);
 
 // The material with the assignments applied: the path, the channel, invert, the normal's green
-// flip and the colour space (base colour sRGB, the rest linear); a metallic or roughness factor
-// and the base colour factor become 1 so the texture shows as painted (glTF: the factor multiplies
-// the texture). Other slots are untouched.
+// flip and the colour space (base colour sRGB, the rest linear); a metallic, roughness or coat
+// factor and the base colour factor become 1 so the texture shows as painted (glTF: the factor
+// multiplies the texture), and any coat map turns a coat on (strength 1). Other slots are untouched.
 Material withAssignedMaps(Material material, const std::vector<MapAssignment>& assignments);
 
 // A texture set replacing the whole set: withAssignedMaps(), and every other slot that has a

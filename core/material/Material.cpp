@@ -16,7 +16,8 @@ namespace facet {
 namespace {
 constexpr std::pair<MapSlot, const char*> kSlots[] = {{MapSlot::BaseColor, "baseColor"},
     {MapSlot::Normal, "normal"}, {MapSlot::Metallic, "metallic"}, {MapSlot::Roughness, "roughness"},
-    {MapSlot::Occlusion, "occlusion"}, {MapSlot::Emissive, "emissive"}};
+    {MapSlot::Occlusion, "occlusion"}, {MapSlot::Emissive, "emissive"}, {MapSlot::Clearcoat, "clearcoat"},
+    {MapSlot::ClearcoatRoughness, "clearcoatRoughness"}, {MapSlot::ClearcoatNormal, "clearcoatNormal"}};
 constexpr std::pair<AlphaMode, const char*> kAlphaModes[]
     = {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}};
 constexpr std::pair<MapChannel, const char*> kChannels[] = {{MapChannel::Rgb, "rgb"}, {MapChannel::R, "r"},
@@ -52,18 +53,21 @@ bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
             return fail(key + ".factor: a scalar factor must have equal components (use Material::setFactor)",
                 problem);
     }
-    if ((slot == MapSlot::Normal || slot == MapSlot::Emissive) && map.channel != MapChannel::Rgb)
+    if ((isNormalSlot(slot) || slot == MapSlot::Emissive) && map.channel != MapChannel::Rgb)
         return fail(
-            key + ".channel: a" + (slot == MapSlot::Normal ? " normal" : "n emissive") + " map reads \"rgb\"",
+            key + ".channel: a" + (isNormalSlot(slot) ? " normal" : "n emissive") + " map reads \"rgb\"",
             problem);
     if (isScalarSlot(slot) && map.channel == MapChannel::Rgb)
         return fail(
             key + ".channel: a " + key + " map reads one channel (\"r\", \"g\", \"b\" or \"a\"), not \"rgb\"",
             problem);
     if (map.invert && !isScalarSlot(slot))
-        return fail(key + ".invert: only metallic, roughness and occlusion maps can be inverted", problem);
-    if (map.flipGreen && slot != MapSlot::Normal)
-        return fail(key + ".flipGreen: only the normal map has a green-channel convention", problem);
+        return fail(key
+                + ".invert: only scalar maps (metallic, roughness, occlusion, the coat's strength and "
+                  "roughness) can be inverted",
+            problem);
+    if (map.flipGreen && !isNormalSlot(slot))
+        return fail(key + ".flipGreen: only normal maps have a green-channel convention", problem);
     // A zero scale collapses the texture to one texel, which is never what was meant.
     for (int i = 0; i < 2; ++i) {
         const char* axis = i == 0 ? "u" : "v";
@@ -178,6 +182,13 @@ std::array<MaterialMap, kMapSlotCount> Material::defaultMaps()
     MaterialMap& emissive = maps[std::size_t(MapSlot::Emissive)];
     emissive.factor = glm::dvec4(0.0, 0.0, 0.0, 1.0);
     emissive.colorSpace = ColorEncoding::SRGB;
+    // KHR_materials_clearcoat: no coat; its textures' channels are the extension's (strength in
+    // R, roughness in G, so one packed texture can feed both).
+    maps[std::size_t(MapSlot::Clearcoat)].factor = glm::dvec4(0.0);
+    maps[std::size_t(MapSlot::Clearcoat)].channel = MapChannel::R;
+    maps[std::size_t(MapSlot::ClearcoatRoughness)].factor = glm::dvec4(0.0);
+    maps[std::size_t(MapSlot::ClearcoatRoughness)].channel = MapChannel::G;
+    maps[std::size_t(MapSlot::ClearcoatNormal)].factor = glm::dvec4(1.0);
     return maps;
 }
 

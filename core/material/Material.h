@@ -3,7 +3,7 @@
 // "Materials", and Appendix B for the BRDF) with Facet's per-map texture options.
 //
 // Every input is a MaterialMap: a constant factor, optionally multiplied by one texture (as glTF
-// does: "the factor multiplies the texture"). The five maps are addressed by MapSlot. The factor's
+// does: "the factor multiplies the texture"). The maps are addressed by MapSlot. The factor's
 // meaning depends on the slot:
 //   baseColor  linear RGBA (glTF baseColorFactor); alpha is carried but Facet renders opaque
 //   normal     strength in x (glTF normalTexture.scale: scales the tangent-space X and Y)
@@ -12,8 +12,11 @@
 //   occlusion  strength in x (glTF occlusionTexture.strength: mix(1, ao, strength), not a multiplier)
 //   emissive   linear RGB in [0, 1] (glTF emissiveFactor), alpha unused; the emitted radiance is
 //              factor x texture x Material::emissiveStrength (KHR_materials_emissive_strength)
-// For the four scalar slots the factor is kept as (v, v, v, v) (setFactor(slot, v) does that) so
-// that a vec4 uniform reads the same from any component and operator== compares what matters.
+//   clearcoat           scalar in x, [0, 1] (KHR_materials_clearcoat clearcoatFactor; texture R)
+//   clearcoatRoughness  perceptual roughness in x (clearcoatRoughnessFactor; texture G)
+//   clearcoatNormal     strength in x (clearcoatNormalTexture.scale), as the normal slot's
+// For the scalar slots (and the normal maps' strength) the factor is kept as (v, v, v, v) (setFactor(slot, v)
+// does that) so that a vec4 uniform reads the same from any component and operator== compares what matters.
 // docs/project-format.md lists every field with its unit and default.
 
 #include <array>
@@ -31,23 +34,56 @@
 
 namespace facet {
 
-enum class MapSlot { BaseColor, Normal, Metallic, Roughness, Occlusion, Emissive };
-inline constexpr int kMapSlotCount = 6;
-inline constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots = {MapSlot::BaseColor, MapSlot::Normal,
-    MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion, MapSlot::Emissive};
+enum class MapSlot {
+    BaseColor,
+    Normal,
+    Metallic,
+    Roughness,
+    Occlusion,
+    Emissive,
+    // KHR_materials_clearcoat's three textures (clearcoatTexture, clearcoatRoughnessTexture,
+    // clearcoatNormalTexture); they count only while the coat is on (Material::usesSlot).
+    Clearcoat,
+    ClearcoatRoughness,
+    ClearcoatNormal,
+};
+inline constexpr int kMapSlotCount = 9;
+inline constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots
+    = {MapSlot::BaseColor, MapSlot::Normal, MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion,
+        MapSlot::Emissive, MapSlot::Clearcoat, MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal};
 
-// "baseColor", "normal", "metallic", "roughness", "occlusion", "emissive" (the project file's keys).
+// "baseColor", "normal", "metallic", "roughness", "occlusion", "emissive", "clearcoat",
+// "clearcoatRoughness", "clearcoatNormal" (the project file's keys).
 const char* toString(MapSlot slot);
 std::optional<MapSlot> mapSlotFromString(std::string_view name);
-// Metallic, roughness and occlusion hold one number; base colour and normal hold a vector.
+// Metallic, roughness, occlusion and the coat's strength and roughness hold one number; the
+// colours and the normal maps hold a vector.
 inline bool isScalarSlot(MapSlot slot)
 {
-    return slot == MapSlot::Metallic || slot == MapSlot::Roughness || slot == MapSlot::Occlusion;
+    return slot == MapSlot::Metallic || slot == MapSlot::Roughness || slot == MapSlot::Occlusion
+        || slot == MapSlot::Clearcoat || slot == MapSlot::ClearcoatRoughness;
 }
 // Base colour and emissive hold colours: sRGB-encoded textures by default, an RGB factor.
 inline bool isColorSlot(MapSlot slot)
 {
     return slot == MapSlot::BaseColor || slot == MapSlot::Emissive;
+}
+// Tangent-space normal maps (the base's and the coat's): read "rgb", a strength as the factor
+// (glTF normalTexture.scale), a green-channel convention (MaterialMap::flipGreen).
+inline bool isNormalSlot(MapSlot slot)
+{
+    return slot == MapSlot::Normal || slot == MapSlot::ClearcoatNormal;
+}
+
+// The part of the material a slot belongs to: the glTF 2.0 core model, or a layered lobe whose
+// slots count only while the lobe is on (Material::usesSlot).
+enum class MaterialLobe { Core, Clearcoat };
+inline MaterialLobe lobeOf(MapSlot slot)
+{
+    return slot == MapSlot::Clearcoat || slot == MapSlot::ClearcoatRoughness
+            || slot == MapSlot::ClearcoatNormal
+        ? MaterialLobe::Clearcoat
+        : MaterialLobe::Core;
 }
 
 // How the base colour's alpha is used (glTF 2.0 material.alphaMode).
@@ -169,19 +205,10 @@ struct Material {
     // as radiance, with no light, environment or emission (the glTF Sample Viewer's
     // MATERIAL_UNLIT). For baked lighting, stylised assets and photogrammetry.
     bool unlit = false;
-    // KHR_materials_clearcoat: a clear dielectric coat (IOR 1.5) over the whole material, with its
-    // own GGX roughness; the base keeps what the coat's Fresnel lets through (docs/shading.md,
-    // "Clearcoat"). Factors only: the coat's textures are not read yet.
-    struct Clearcoat {
-        double factor = 0.0; // clearcoatFactor, [0, 1]; 0: no coat, and no shader cost
-        double roughness = 0.0; // clearcoatRoughnessFactor: perceptual, [0, 1]
-        bool isOn() const { return factor > 0.0; }
-        bool operator==(const Clearcoat&) const = default;
-    };
-    Clearcoat clearcoat;
     // Indexed by MapSlot. Defaults: base colour 0.8 grey (sRGB texture), metallic 0, roughness
-    // 0.5, occlusion 1, normal strength 1, emissive black. (glTF's defaults, metallic 1 and roughness 1,
-    // describe a rough white metal: fine as texture multipliers, poor as a starting material.)
+    // 0.5, occlusion 1, normal strength 1, emissive black, no coat (strength 0, roughness 0,
+    // coat normal strength 1). (glTF's defaults, metallic 1 and roughness 1, describe a rough white
+    // metal: fine as texture multipliers, poor as a starting material.)
     std::array<MaterialMap, kMapSlotCount> maps = defaultMaps();
 
     MaterialMap& map(MapSlot slot) { return maps[std::size_t(slot)]; }
@@ -194,6 +221,24 @@ struct Material {
     double normalStrength() const { return map(MapSlot::Normal).factor.x; }
     // Emitted radiance of an untextured point: the emissive factor times the strength.
     glm::dvec3 emissive() const { return glm::dvec3(map(MapSlot::Emissive).factor) * emissiveStrength; }
+    // KHR_materials_clearcoat: a clear dielectric coat (IOR 1.5) over the whole material, with its
+    // own GGX roughness and normal; the base keeps what the coat's Fresnel lets through
+    // (docs/shading.md, "Clearcoat"). Strength 0: no coat, and no shader cost.
+    double clearcoat() const { return map(MapSlot::Clearcoat).factor.x; }
+    double clearcoatRoughness() const { return map(MapSlot::ClearcoatRoughness).factor.x; } // perceptual
+    bool hasClearcoat() const { return clearcoat() > 0.0; }
+    void setClearcoat(double strength, double roughness)
+    {
+        setFactor(MapSlot::Clearcoat, strength);
+        setFactor(MapSlot::ClearcoatRoughness, roughness);
+    }
+    // Whether `slot` can change how the material looks: a core slot always, a lobe's slot while
+    // the lobe is on. Loading, binding, the Texture Maps dock and exports skip the others.
+    bool usesSlot(MapSlot slot) const
+    {
+        return lobeOf(slot) == MaterialLobe::Core
+            || (lobeOf(slot) == MaterialLobe::Clearcoat && hasClearcoat());
+    }
     // Scalar slots: stores (v, v, v, v). Base colour: use map(MapSlot::BaseColor).factor.
     void setFactor(MapSlot slot, double value) { map(slot).factor = glm::dvec4(value); }
     void setBaseColor(const glm::dvec3& linearRgb, double alpha = 1.0)

@@ -103,7 +103,7 @@ QJsonObject mapToJson(
     o[QLatin1String("colorSpace")] = QLatin1String(toString(map.colorSpace));
     if (isScalarSlot(slot))
         o[QLatin1String("invert")] = map.invert;
-    if (slot == MapSlot::Normal)
+    if (isNormalSlot(slot))
         o[QLatin1String("flipGreen")] = map.flipGreen;
     o[QLatin1String("uv")] = uvToJson(map.uv);
     // Written only where they say something: most maps read set 0 with the default sampler.
@@ -145,7 +145,7 @@ void readMap(Messages& messages, MapSlot slot, const QJsonObject& object, const 
     r.enumeration("colorSpace", map.colorSpace, kEncodingNames);
     if (isScalarSlot(slot))
         r.boolean("invert", map.invert);
-    if (slot == MapSlot::Normal)
+    if (isNormalSlot(slot))
         r.boolean("flipGreen", map.flipGreen);
     if (const std::optional<QJsonObject> uv = r.object("uv")) {
         ObjectReader u(messages, *uv, r.pathOf("uv"));
@@ -181,15 +181,25 @@ void readMaterial(Messages& messages, const QJsonObject& object, const std::stri
     r.boolean("unlit", material.unlit);
     if (const std::optional<QJsonObject> shading = r.object("shading"))
         readShading(messages, *shading, r.pathOf("shading"), material.shading);
-    if (const std::optional<QJsonObject> clearcoat = r.object("clearcoat")) {
-        ObjectReader c(messages, *clearcoat, r.pathOf("clearcoat"));
-        c.number("factor", material.clearcoat.factor);
-        c.number("roughness", material.clearcoat.roughness);
-        c.warnAboutUnknownKeys();
+    for (MapSlot slot : kAllMapSlots) {
+        const std::optional<QJsonObject> map = r.object(toString(slot));
+        if (!map)
+            continue;
+        if (slot == MapSlot::Clearcoat && map->contains(QLatin1String("roughness"))) {
+            // Project format 4 kept the coat's two factors together, {"factor", "roughness"};
+            // from version 5 each is its map's factor (docs/project-format.md).
+            ObjectReader c(messages, *map, r.pathOf(toString(slot)));
+            double factor = material.clearcoat();
+            double roughness = material.clearcoatRoughness();
+            c.number("factor", factor);
+            c.number("roughness", roughness);
+            c.warnAboutUnknownKeys();
+            material.setFactor(MapSlot::Clearcoat, factor);
+            material.setFactor(MapSlot::ClearcoatRoughness, roughness);
+            continue;
+        }
+        readMap(messages, slot, *map, r.pathOf(toString(slot)), baseDir, material.map(slot));
     }
-    for (MapSlot slot : kAllMapSlots)
-        if (const std::optional<QJsonObject> map = r.object(toString(slot)))
-            readMap(messages, slot, *map, r.pathOf(toString(slot)), baseDir, material.map(slot));
     r.warnAboutUnknownKeys();
 }
 
@@ -206,8 +216,6 @@ QJsonObject materialToJson(const Material& material, const std::string& baseDir,
     o[QLatin1String("doubleSided")] = material.doubleSided;
     o[QLatin1String("unlit")] = material.unlit;
     o[QLatin1String("shading")] = shadingToJson(material.shading);
-    o[QLatin1String("clearcoat")] = QJsonObject {{QLatin1String("factor"), material.clearcoat.factor},
-        {QLatin1String("roughness"), material.clearcoat.roughness}};
     for (MapSlot slot : kAllMapSlots)
         o[QLatin1String(toString(slot))] = mapToJson(slot, material.map(slot), baseDir, includeTexturePaths);
     return o;

@@ -94,9 +94,7 @@ enum class SlotKind { Color, Normal, Scalar };
 
 SlotKind kindOf(MapSlot slot)
 {
-    return isColorSlot(slot)      ? SlotKind::Color
-        : slot == MapSlot::Normal ? SlotKind::Normal
-                                  : SlotKind::Scalar;
+    return isColorSlot(slot) ? SlotKind::Color : isNormalSlot(slot) ? SlotKind::Normal : SlotKind::Scalar;
 }
 
 } // namespace
@@ -108,7 +106,7 @@ MaterialMap pastedMap(MapSlot from, const MaterialMap& copied, MapSlot to, const
         return map;
     map.factor = target.factor;
     map.colorSpace = Material::defaultMaps()[std::size_t(to)].colorSpace;
-    if (to == MapSlot::Normal || to == MapSlot::Emissive)
+    if (isNormalSlot(to) || to == MapSlot::Emissive)
         map.channel = MapChannel::Rgb;
     else if (isScalarSlot(to) && map.channel == MapChannel::Rgb)
         map.channel = MapChannel::R;

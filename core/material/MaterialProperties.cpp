@@ -36,10 +36,13 @@ constexpr std::array<MaterialPropertyInfo, kMaterialPropertyCount> kProperties =
         std::nullopt, nullptr, 3.0},
     {P::AlphaCutoff, "alphaCutoff", "alphaCutoff", "Alpha cutoff", V::Scalar, 0.0, 1.0, std::nullopt,
         nullptr},
-    {P::Clearcoat, "clearcoat", "clearcoat.factor", "Clearcoat strength", V::Scalar, 0.0, 1.0, std::nullopt,
-        "clearcoat"},
-    {P::ClearcoatRoughness, "clearcoatRoughness", "clearcoat.roughness", "Clearcoat roughness (perceptual)",
-        V::Scalar, 0.0, 1.0, std::nullopt, "clearcoat-roughness"},
+    {P::Clearcoat, "clearcoat", "clearcoat.factor", "Clearcoat strength", V::Scalar, 0.0, 1.0,
+        MapSlot::Clearcoat, "clearcoat"},
+    {P::ClearcoatRoughness, "clearcoatRoughness", "clearcoatRoughness.factor",
+        "Clearcoat roughness (perceptual)", V::Scalar, 0.0, 1.0, MapSlot::ClearcoatRoughness,
+        "clearcoat-roughness"},
+    {P::ClearcoatNormal, "clearcoatNormal", "clearcoatNormal.factor", "Clearcoat normal map strength",
+        V::Scalar, 0.0, Material::kMaxNormalStrength, MapSlot::ClearcoatNormal, nullptr},
 }};
 
 constexpr bool inEnumOrder()
@@ -82,10 +85,6 @@ double scalarOf(const Material& material, MaterialProperty property)
         return material.ior;
     case P::AlphaCutoff:
         return material.alphaCutoff;
-    case P::Clearcoat:
-        return material.clearcoat.factor;
-    case P::ClearcoatRoughness:
-        return material.clearcoat.roughness;
     case P::BaseColor:
     case P::Emissive:
         break;
@@ -110,12 +109,6 @@ void setScalar(Material& material, MaterialProperty property, double value)
         return;
     case P::AlphaCutoff:
         material.alphaCutoff = value;
-        return;
-    case P::Clearcoat:
-        material.clearcoat.factor = value;
-        return;
-    case P::ClearcoatRoughness:
-        material.clearcoat.roughness = value;
         return;
     case P::BaseColor:
     case P::Emissive:

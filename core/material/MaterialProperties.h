@@ -33,8 +33,9 @@ enum class MaterialProperty {
     AlphaCutoff,
     Clearcoat, // KHR_materials_clearcoat: the coat's strength
     ClearcoatRoughness, // the coat's perceptual roughness
+    ClearcoatNormal, // the coat's normal map strength
 };
-inline constexpr int kMaterialPropertyCount = 12;
+inline constexpr int kMaterialPropertyCount = 13;
 
 // What a property holds: one number, or a linear RGB colour whose components each lie in the range.
 enum class PropertyValue { Scalar, Color };

@@ -36,9 +36,15 @@ Image SwatchRenderer::render(const Material& material, const MaterialMapImages& 
     swatch.setEncoding(ColorEncoding::SRGB);
     const DfgTable& dfg = table(material.shading.visibility);
     const MaterialBrdf brdf(material.shading, dfg);
-    const MaterialMap& normalMap = material.map(MapSlot::Normal);
-    const MapImage* normalImage = images[std::size_t(MapSlot::Normal)];
-    const bool normalMapped = normalMap.hasTexture() && normalImage && !normalImage->isEmpty();
+    // The tangent-space normal maps that apply: the base's, and the coat's while there is a coat.
+    const auto normalImageOf = [&](MapSlot slot) -> const MapImage* {
+        const MapImage* image = images[std::size_t(slot)];
+        return material.usesSlot(slot) && material.map(slot).hasTexture() && image && !image->isEmpty()
+            ? image
+            : nullptr;
+    };
+    const MapImage* normalImage = normalImageOf(MapSlot::Normal);
+    const MapImage* coatNormalImage = normalImageOf(MapSlot::ClearcoatNormal);
     const glm::dvec3 v(0.0, 0.0, 1.0); // towards the viewer
 
     // Four samples a pixel (a rotated grid): the silhouette is anti-aliased.
@@ -61,13 +67,16 @@ Image SwatchRenderer::render(const Material& material, const MaterialMapImages& 
                 const double phi = std::atan2(ng.z, ng.x);
                 const glm::dvec2 uv((std::numbers::pi - phi) / (2.0 * std::numbers::pi),
                     std::asin(std::clamp(ng.y, -1.0, 1.0)) / std::numbers::pi + 0.5);
-                glm::dvec3 n = ng;
-                if (normalMapped) {
-                    const glm::dvec4 tangent(std::sin(phi), 0.0, -std::cos(phi), 1.0);
-                    n = shadingNormal(ng, tangent, sampleMap(normalMap, *normalImage, TexCoords {uv, uv}),
-                        material.normalStrength(), normalMap.flipGreen);
-                }
-                const MaterialInfo inputs = materialInputs(material, images, uv);
+                const glm::dvec4 tangent(std::sin(phi), 0.0, -std::cos(phi), 1.0);
+                const auto mapped = [&](MapSlot slot, const MapImage* image) {
+                    const MaterialMap& map = material.map(slot);
+                    return image ? shadingNormal(ng, tangent, sampleMap(map, *image, TexCoords {uv, uv}),
+                               map.factor.x, map.flipGreen)
+                                 : ng;
+                };
+                const glm::dvec3 n = mapped(MapSlot::Normal, normalImage);
+                MaterialInfo inputs = materialInputs(material, images, uv);
+                inputs.clearcoatNormal = mapped(MapSlot::ClearcoatNormal, coatNormalImage);
                 const double NoV = std::max(glm::dot(n, v), 1e-4);
                 const glm::dvec3 R = glm::reflect(-v, n);
                 SplitSumLighting lighting;
@@ -75,14 +84,17 @@ Image SwatchRenderer::render(const Material& material, const MaterialMapImages& 
                 lighting.prefilteredRadiance = prefilteredRadiance(m_environment,
                     specularDominantDirection(n, R, shading::alphaFromRoughness(inputs.perceptualRoughness)),
                     inputs.perceptualRoughness, m_prefilterSamples);
-                if (inputs.clearcoat > 0.0)
+                if (inputs.clearcoat > 0.0) {
+                    const glm::dvec3& nc = inputs.clearcoatNormal;
                     lighting.coatPrefilteredRadiance = prefilteredRadiance(m_environment,
                         specularDominantDirection(
-                            ng, glm::reflect(-v, ng), shading::alphaFromRoughness(inputs.clearcoatRoughness)),
+                            nc, glm::reflect(-v, nc), shading::alphaFromRoughness(inputs.clearcoatRoughness)),
                         inputs.clearcoatRoughness, m_prefilterSamples);
+                    lighting.coatNoV = std::max(glm::dot(nc, v), 1e-4);
+                }
                 const BrdfLobes lobes = splitSumRadiance(brdf, dfg, inputs, NoV, lighting);
                 sum += lobes.total() * inputs.occlusion
-                    + inputs.emissive * (1.0 - clearcoatWeight(inputs, NoV));
+                    + inputs.emissive * (1.0 - clearcoatWeight(inputs, lighting.coatNoV));
             }
             if (covered == 0)
                 continue;

@@ -56,7 +56,8 @@ SurfaceProbe probeSurface(const Mesh& mesh, const glm::dmat4& model, const MeshH
     for (MapSlot slot : kAllMapSlots) {
         const MapImage* image = images[std::size_t(slot)];
         const MaterialMap& map = material.map(slot);
-        if (!image || image->isEmpty() || !image->hasPixels() || !map.hasTexture())
+        if (!image || image->isEmpty() || !image->hasPixels() || !map.hasTexture()
+            || !material.usesSlot(slot))
             continue;
         MapProbe read;
         read.slot = slot;
@@ -77,16 +78,23 @@ SurfaceProbe probeSurface(const Mesh& mesh, const glm::dmat4& model, const MeshH
             image = nullptr;
     probe.inputs = materialInputs(material, readable, probe.uvs, probe.vertexColor);
 
-    glm::dvec3 shading = ng;
-    const MaterialMap& normalMap = material.map(MapSlot::Normal);
-    for (const MapProbe& read : probe.maps)
-        if (read.slot == MapSlot::Normal && mesh.hasTangents)
-            shading = shadingNormal(
-                ng, handedTangent, read.filtered, material.normalStrength(), normalMap.flipGreen);
+    // The base's normal map perturbs the shading normal; the coat's (while there is a coat) its own.
+    const auto mapped = [&](MapSlot slot) {
+        const MaterialMap& map = material.map(slot);
+        for (const MapProbe& read : probe.maps)
+            if (read.slot == slot && mesh.hasTangents)
+                return shadingNormal(ng, handedTangent, read.filtered, map.factor.x, map.flipGreen);
+        return ng;
+    };
+    const glm::dvec3 shading = mapped(MapSlot::Normal);
     // Normals to world space by the inverse transpose of the model's linear part.
     const glm::dmat3 normalMatrix = glm::transpose(glm::inverse(glm::dmat3(model)));
     probe.geometricNormal = unitOr(normalMatrix * ng, ng);
     probe.shadingNormal = unitOr(normalMatrix * shading, shading);
+    if (material.hasClearcoat()) {
+        const glm::dvec3 coat = mapped(MapSlot::ClearcoatNormal);
+        probe.inputs.clearcoatNormal = unitOr(normalMatrix * coat, coat);
+    }
     return probe;
 }
 

@@ -149,7 +149,10 @@ struct Project {
     // Version 4: the layered lobes (each material's "clearcoat"), which a version 3 Facet would
     // drop with a warning and then save the material without; version 1 to 3 files read with
     // the lobes off.
-    static constexpr int kFormatVersion = 4;
+    // Version 5: the coat's textures: "clearcoat", "clearcoatRoughness" and "clearcoatNormal" are
+    // maps like the core six (a version 4 Facet would read the coat's map as its {"factor",
+    // "roughness"} and drop its texture); version 4's {"factor", "roughness"} still reads.
+    static constexpr int kFormatVersion = 5;
     // More is refused when loading: far beyond any asset an artist previews, and each material
     // costs a shader variant and its textures.
     static constexpr int kMaxMaterials = 4096;

@@ -124,8 +124,8 @@ std::optional<ProjectAssets> loadProjectAssets(
     for (std::size_t m = 0; m < project.materials.size(); ++m) {
         for (MapSlot slot : kAllMapSlots) {
             const MaterialMap& map = project.materials[m].map(slot);
-            if (!map.hasTexture())
-                continue;
+            if (!map.hasTexture() || !project.materials[m].usesSlot(slot))
+                continue; // nothing, or a lobe that is off: not read (Material::usesSlot)
             std::shared_ptr<const MapImage>& image = decoded[map.path];
             if (!image) {
                 ImageLoadStats stats;

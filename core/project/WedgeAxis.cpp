@@ -314,7 +314,7 @@ std::string WedgeAxis::noEffectReason(const Project& project) const
             return "ior sets the dielectric's reflectance, and the material is a metal (metallic 1)";
         break;
     case WedgeParameter::ClearcoatRoughness:
-        if (!m.clearcoat.isOn())
+        if (!m.hasClearcoat())
             return "clearcoatRoughness shapes the clear coat, and the material has none (clearcoat 0)";
         break;
     default:

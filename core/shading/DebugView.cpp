@@ -39,6 +39,9 @@ constexpr std::array<DebugViewName, kDebugViewCount> kDebugViewNames = {{
     {"non-finite", "Invalid values (NaN, Inf, negative)", nullptr},
     {"uv-checker", "UV checker", nullptr},
     {"texel-density", "Texel density", nullptr},
+    {"clearcoat", "Clearcoat strength", nullptr},
+    {"clearcoat-roughness", "Clearcoat roughness", nullptr},
+    {"clearcoat-normal", "Clearcoat normal", nullptr},
 }};
 
 } // namespace

@@ -42,13 +42,16 @@ enum class DebugView : int {
     TexelDensity, // texels of the material's map per unit of surface (the source file's unit, a metre for
                   // glTF) against ViewSettings::texelDensityTarget: green on target, blue at 1/4 or less,
                   // red at 4x or more (log2 between), shaded by n.v (docs/rendering.md, "Texel density")
+    Clearcoat, // KHR_materials_clearcoat's strength (factor x texture); 0 without a coat
+    ClearcoatRoughness, // the coat's perceptual roughness (factor x texture); 0 without a coat
+    ClearcoatNormal, // the coat's normal * 0.5 + 0.5 (its normal map's, or the geometric normal)
 };
-inline constexpr int kDebugViewCount = 25;
+inline constexpr int kDebugViewCount = 28;
 // "none", "base-color", "shading-normal", "geometric-normal", "metallic", "roughness",
 // "occlusion", "distribution", "visibility", "fresnel", "irradiance", "ibl-diffuse",
 // "prefiltered-radiance", "brdf-lut", "ibl-specular", "ibl-total", "direct-light",
 // "white-furnace", "uv", "tangent", "emissive", "alpha", "non-finite", "uv-checker",
-// "texel-density" (ViewSettings::debugView,
+// "texel-density", "clearcoat", "clearcoat-roughness", "clearcoat-normal" (ViewSettings::debugView,
 // facet render --view).
 const char* toString(DebugView view);
 // What the window shows: "Off (shaded image)", "Base colour", ..., "Distribution D", ...

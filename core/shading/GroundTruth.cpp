@@ -282,7 +282,7 @@ std::optional<GroundTruthScene> groundTruthSceneFromProject(
 {
     const Material& material = project.material();
     for (MapSlot slot : kAllMapSlots) {
-        if (material.map(slot).hasTexture()) {
+        if (material.map(slot).hasTexture() && material.usesSlot(slot)) {
             if (error)
                 *error = std::string(
                              "groundTruthSceneFromProject: the ground truth renders constant materials only, "

@@ -159,13 +159,19 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
     if (material.clearcoat > 0.0) {
         // KHR_materials_clearcoat: mix(material, clearcoat_brdf, clearcoat x Fc(n.v)), the coat a
         // specular lobe of its own roughness with no Fresnel inside (docs/shading.md, "Clearcoat").
-        const double weight = clearcoatWeight(material, NoV);
-        const double coatRoughness = clampRoughness(material.clearcoatRoughness);
-        const double coatAlpha = coatRoughness * coatRoughness;
+        const glm::dvec3 nc = material.clearcoatNormal == glm::dvec3(0.0) ? n : material.clearcoatNormal;
+        const double NcoL = glm::dot(nc, l);
+        const double NcoV = std::clamp(glm::dot(nc, v), 0.0, 1.0);
+        const double weight = clearcoatWeight(material, NcoV);
         lobes.diffuse *= 1.0 - weight;
         lobes.specular *= 1.0 - weight;
-        lobes.coat = glm::dvec3(
-            weight * distribution(NoH, coatAlpha) * visibility(NoV, NoL, coatAlpha, coatRoughness, kind));
+        if (NcoL > 0.0) {
+            const double coatRoughness = clampRoughness(material.clearcoatRoughness);
+            const double coatAlpha = coatRoughness * coatRoughness;
+            const double NcoH = std::clamp(glm::dot(nc, h), 0.0, 1.0);
+            lobes.coat = glm::dvec3(weight * distribution(NcoH, coatAlpha)
+                * visibility(NcoV, std::min(NcoL, 1.0), coatAlpha, coatRoughness, kind));
+        }
     }
     return lobes;
 }

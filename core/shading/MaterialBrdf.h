@@ -29,10 +29,13 @@ struct MaterialInfo {
     glm::dvec3 emissive {0.0};
     // Coverage from the base colour's alpha (factor x texture); used by AlphaMode Mask and Blend.
     double alpha = 1.0;
-    // KHR_materials_clearcoat: the coat's strength and perceptual roughness. The coat's normal is
-    // the geometric one (the extension's rule without a clearcoat normal texture): evaluate()'s n.
+    // KHR_materials_clearcoat: the coat's strength, perceptual roughness and unit normal, in the
+    // space of evaluate()'s n; zero: n itself. The extension's coat normal is the geometric normal
+    // unless a clearcoat normal texture perturbs it (the shader's rule, surface.frag), so a caller
+    // with a base normal map sets it to the geometric or coat-mapped normal.
     double clearcoat = 0.0;
     double clearcoatRoughness = 0.0;
+    glm::dvec3 clearcoatNormal {0.0};
 };
 
 // The coat's IOR, fixed by KHR_materials_clearcoat: F0 = 0.04.

@@ -241,8 +241,18 @@ MaterialInfo materialInputs(const Material& material, const MaterialMapImages& i
     m.metallic = std::clamp(m.metallic, 0.0, 1.0);
     m.perceptualRoughness = std::clamp(m.perceptualRoughness, 0.0, 1.0);
     m.ior = material.ior;
-    m.clearcoat = material.clearcoat.factor;
-    m.clearcoatRoughness = material.clearcoat.roughness;
+    // KHR_materials_clearcoat: strength and roughness, each its factor times its texture's channel
+    // (GLSL under MATERIAL_CLEARCOAT); without a coat neither is read.
+    if (material.hasClearcoat()) {
+        m.clearcoat = material.clearcoat();
+        if (const auto texel = read(MapSlot::Clearcoat))
+            m.clearcoat *= scalarMapValue(material.map(MapSlot::Clearcoat), *texel);
+        m.clearcoatRoughness = material.clearcoatRoughness();
+        if (const auto texel = read(MapSlot::ClearcoatRoughness))
+            m.clearcoatRoughness *= scalarMapValue(material.map(MapSlot::ClearcoatRoughness), *texel);
+        m.clearcoat = std::clamp(m.clearcoat, 0.0, 1.0);
+        m.clearcoatRoughness = std::clamp(m.clearcoatRoughness, 0.0, 1.0);
+    }
     return m;
 }
 

@@ -78,11 +78,12 @@ BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, cons
         : gltfLobes(brdf, material, NoV, lighting, dfg);
     if (material.clearcoat > 0.0) {
         // The coat: its prefiltered light times its lobe's albedo with F = 1, weighted by w_c.
-        const double weight = clearcoatWeight(material, NoV);
+        const double coatNoV = std::clamp(lighting.coatNoV, 0.0, 1.0);
+        const double weight = clearcoatWeight(material, coatNoV);
         lobes.diffuse *= 1.0 - weight;
         lobes.specular *= 1.0 - weight;
         lobes.coat = lighting.coatPrefilteredRadiance
-            * (table.sample(NoV, clampRoughness(material.clearcoatRoughness)).albedo() * weight);
+            * (table.sample(coatNoV, clampRoughness(material.clearcoatRoughness)).albedo() * weight);
     }
     return lobes;
 }

@@ -15,8 +15,11 @@ namespace facet {
 struct SplitSumLighting {
     glm::dvec3 prefilteredRadiance {0.0}; // prefiltered(R, lodFromRoughness(r)), intensity applied
     glm::dvec3 irradiance {0.0}; // E(n), not divided by pi, intensity applied
-    // prefiltered(R_c, lod(r_c)) for the clear coat's roughness; read only when the material has a coat.
+    // The clear coat's, read only when the material has a coat: prefiltered(R_c, lod(r_c)) about
+    // the coat's normal n_c, and n_c.v (the geometric normal's unless a coat normal map perturbs
+    // it; the base's NoV may come from its own normal map).
     glm::dvec3 coatPrefilteredRadiance {0.0};
+    double coatNoV = 1.0;
 };
 
 // Outgoing radiance lobes towards a viewer at n.v = NoV (before ambient occlusion):

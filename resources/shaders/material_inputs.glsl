@@ -2,11 +2,11 @@
 // factors and, where the variant says HAS_*_MAP, one texture each. Twin of what core's
 // MaterialInfo holds after textures (core/material/Material.h explains every factor).
 //
-// Slots (core/material/Material.h MapSlot): 0 base colour, 1 normal, 2 metallic, 3 roughness, 4 occlusion,
-// 5 emissive.
+// Slots (core/material/Material.h MapSlot): SLOT_BASE_COLOR, SLOT_NORMAL, ..., SLOT_CLEARCOAT_NORMAL,
+// MAP_SLOT_COUNT of them, their numbers defined from MapSlot (render/ShaderVariant surfaceDefines).
 // Per slot: uUvTransform (KHR_texture_transform matrix, core UvTransform::matrix()), uChannel
 // (0 rgb, 1 r, 2 g, 3 b, 4 a: core MapChannel), uInvert (scalar maps: 1 - value), uTexCoord (the
-// UV set, 0 or 1: glTF textureInfo.texCoord). Wraps and filters are the unit's sampler object
+// UV set, 0 or 1: glTF textureInfo.texCoord), uFlipGreen (normal maps: DirectX convention). Wraps and filters are the unit's sampler object
 // (core TextureSampler, render/TextureCache samplerFor).
 // sRGB-encoded maps are uploaded as GL_SRGB8_ALPHA8, so texture() returns linear values
 // (decoded before filtering, as the sRGB specification intends); no decode happens here.
@@ -20,7 +20,8 @@ struct MaterialInfo {
     vec3 emissive;             // emitted radiance (factor x texture x strength)
     float alpha;               // base colour alpha (factor x texture), for ALPHA_MASK / ALPHA_BLEND
     // KHR_materials_clearcoat (MATERIAL_CLEARCOAT; 0 without it): strength, perceptual roughness
-    // and the coat's normal, the geometric one (surface.frag sets it; core's evaluate() uses n).
+    // and the coat's normal (surface.frag sets it: the geometric normal, or the coat's normal map's;
+    // core's MaterialInfo::clearcoatNormal).
     float clearcoat;
     float clearcoatRoughness;
     vec3 clearcoatNormal;
@@ -37,11 +38,11 @@ uniform vec3 uEmissiveFactor; // core Material::emissive(): factor x strength
 uniform float uClearcoatFactor;
 uniform float uClearcoatRoughness;
 #endif
-uniform mat3 uUvTransform[6];
-uniform int uChannel[6];
-uniform int uInvert[6];
-uniform int uTexCoord[6];
-uniform int uFlipGreen;
+uniform mat3 uUvTransform[MAP_SLOT_COUNT];
+uniform int uChannel[MAP_SLOT_COUNT];
+uniform int uInvert[MAP_SLOT_COUNT];
+uniform int uTexCoord[MAP_SLOT_COUNT];
+uniform int uFlipGreen[MAP_SLOT_COUNT];
 
 #ifdef HAS_BASE_COLOR_MAP
 uniform sampler2D uBaseColorMap;
@@ -62,6 +63,18 @@ uniform sampler2D uOcclusionMap;
 #endif
 #ifdef HAS_EMISSIVE_MAP
 uniform sampler2D uEmissiveMap;
+#endif
+#ifdef MATERIAL_CLEARCOAT
+#ifdef HAS_CLEARCOAT_MAP
+uniform sampler2D uClearcoatMap;
+#endif
+#if defined(HAS_CLEARCOAT_ROUGHNESS_MAP) && !defined(CLEARCOAT_ROUGHNESS_TEXEL_FROM_CLEARCOAT)
+uniform sampler2D uClearcoatRoughnessMap;
+#endif
+#ifdef HAS_CLEARCOAT_NORMAL_MAP
+uniform sampler2D uClearcoatNormalMap;
+uniform float uClearcoatNormalStrength;
+#endif
 #endif
 
 #ifdef HAS_TEXCOORD_1
@@ -106,10 +119,10 @@ MaterialInfo materialInputs(vec2 uv)
     m.baseColor = uBaseColorFactor.rgb;
     m.alpha = uBaseColorFactor.a;
 #ifdef HAS_BASE_COLOR_MAP
-    vec4 base = texture(uBaseColorMap, mapUv(0, uv));
-    m.baseColor *= uChannel[0] == 0 ? base.rgb : vec3(pickChannel(base, uChannel[0]));
+    vec4 base = texture(uBaseColorMap, mapUv(SLOT_BASE_COLOR, uv));
+    m.baseColor *= uChannel[SLOT_BASE_COLOR] == 0 ? base.rgb : vec3(pickChannel(base, uChannel[SLOT_BASE_COLOR]));
     // A single-channel pick is a greyscale colour without coverage of its own.
-    if (uChannel[0] == 0)
+    if (uChannel[SLOT_BASE_COLOR] == 0)
         m.alpha *= base.a;
 #endif
 #ifdef HAS_VERTEX_COLOR
@@ -119,21 +132,21 @@ MaterialInfo materialInputs(vec2 uv)
 #endif
     m.emissive = uEmissiveFactor;
 #ifdef HAS_EMISSIVE_MAP
-    m.emissive *= texture(uEmissiveMap, mapUv(5, uv)).rgb;
+    m.emissive *= texture(uEmissiveMap, mapUv(SLOT_EMISSIVE, uv)).rgb;
 #endif
     m.metallic = uMetallicFactor;
 #ifdef HAS_METALLIC_MAP
-    vec4 metallicTexel = texture(uMetallicMap, mapUv(2, uv));
-    m.metallic *= scalarMapValue(2, metallicTexel);
+    vec4 metallicTexel = texture(uMetallicMap, mapUv(SLOT_METALLIC, uv));
+    m.metallic *= scalarMapValue(SLOT_METALLIC, metallicTexel);
 #endif
     m.perceptualRoughness = uRoughnessFactor;
 #ifdef HAS_ROUGHNESS_MAP
 #ifdef ROUGHNESS_TEXEL_FROM_METALLIC
     vec4 roughnessTexel = metallicTexel;
 #else
-    vec4 roughnessTexel = texture(uRoughnessMap, mapUv(3, uv));
+    vec4 roughnessTexel = texture(uRoughnessMap, mapUv(SLOT_ROUGHNESS, uv));
 #endif
-    m.perceptualRoughness *= scalarMapValue(3, roughnessTexel);
+    m.perceptualRoughness *= scalarMapValue(SLOT_ROUGHNESS, roughnessTexel);
 #endif
     m.occlusion = 1.0;
 #ifdef HAS_OCCLUSION_MAP
@@ -142,10 +155,10 @@ MaterialInfo materialInputs(vec2 uv)
 #elif defined(OCCLUSION_TEXEL_FROM_ROUGHNESS)
     vec4 occlusionTexel = roughnessTexel;
 #else
-    vec4 occlusionTexel = texture(uOcclusionMap, mapUv(4, uv));
+    vec4 occlusionTexel = texture(uOcclusionMap, mapUv(SLOT_OCCLUSION, uv));
 #endif
     // glTF occlusionTexture.strength: mix(1, ao, strength).
-    m.occlusion = 1.0 + uOcclusionStrength * (scalarMapValue(4, occlusionTexel) - 1.0);
+    m.occlusion = 1.0 + uOcclusionStrength * (scalarMapValue(SLOT_OCCLUSION, occlusionTexel) - 1.0);
 #endif
     // Reflectances and occlusion are fractions: a float map beyond [0, 1] (an EXR of 5.0) must not
     // make light from nothing (issue 29: a white furnace sphere reflected 5x its light). Emission
@@ -158,8 +171,23 @@ MaterialInfo materialInputs(vec2 uv)
     m.perceptualRoughness = clamp(m.perceptualRoughness, 0.0, 1.0);
     m.ior = uIor;
 #ifdef MATERIAL_CLEARCOAT
-    m.clearcoat = clamp(uClearcoatFactor, 0.0, 1.0);
-    m.clearcoatRoughness = clamp(uClearcoatRoughness, 0.0, 1.0);
+    // Strength in R and roughness in G of the extension's textures (the slots' channels say).
+    m.clearcoat = uClearcoatFactor;
+#ifdef HAS_CLEARCOAT_MAP
+    vec4 clearcoatTexel = texture(uClearcoatMap, mapUv(SLOT_CLEARCOAT, uv));
+    m.clearcoat *= scalarMapValue(SLOT_CLEARCOAT, clearcoatTexel);
+#endif
+    m.clearcoatRoughness = uClearcoatRoughness;
+#ifdef HAS_CLEARCOAT_ROUGHNESS_MAP
+#ifdef CLEARCOAT_ROUGHNESS_TEXEL_FROM_CLEARCOAT
+    vec4 clearcoatRoughnessTexel = clearcoatTexel;
+#else
+    vec4 clearcoatRoughnessTexel = texture(uClearcoatRoughnessMap, mapUv(SLOT_CLEARCOAT_ROUGHNESS, uv));
+#endif
+    m.clearcoatRoughness *= scalarMapValue(SLOT_CLEARCOAT_ROUGHNESS, clearcoatRoughnessTexel);
+#endif
+    m.clearcoat = clamp(m.clearcoat, 0.0, 1.0);
+    m.clearcoatRoughness = clamp(m.clearcoatRoughness, 0.0, 1.0);
 #else
     m.clearcoat = 0.0;
     m.clearcoatRoughness = 0.0;
@@ -168,10 +196,11 @@ MaterialInfo materialInputs(vec2 uv)
     return m;
 }
 
-// The shading normal: the geometric normal ng (unit, facing the viewer), perturbed by the
+// The shading normal: the geometric normal ng (unit, facing the viewer), perturbed by a
 // tangent-space normal map (OpenGL convention, +Y green; uFlipGreen for DirectX maps) scaled in
-// X and Y by the strength (glTF normalTexture.scale).
-#ifdef HAS_NORMAL_MAP
+// X and Y by the strength (glTF normalTexture.scale): the base's (HAS_NORMAL_MAP) and the coat's
+// (HAS_CLEARCOAT_NORMAL_MAP, clearcoatNormalTexture). Twin of core's shadingNormal().
+#ifdef HAS_TANGENT_FRAME
 // The unit tangent perpendicular to ng (Gram-Schmidt: the interpolated tangent is neither), or
 // vec3(0) when the tangent is degenerate.
 vec3 surfaceTangent(vec3 ng, vec4 tangent)
@@ -181,18 +210,33 @@ vec3 surfaceTangent(vec3 ng, vec4 tangent)
     return tLength < 1e-8 ? vec3(0.0) : t / tLength;
 }
 
-vec3 shadingNormal(vec3 ng, vec4 tangent, vec2 uv)
+vec3 mappedNormal(vec3 ng, vec4 tangent, vec4 texel, int slot, float strength)
 {
     vec3 t = surfaceTangent(ng, tangent);
     if (t == vec3(0.0))
         return ng; // degenerate tangent: no frame to map in
     vec3 b = cross(ng, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
-    vec3 tn = texture(uNormalMap, mapUv(1, uv)).rgb * 2.0 - 1.0;
-    if (uFlipGreen != 0)
+    vec3 tn = texel.rgb * 2.0 - 1.0;
+    if (uFlipGreen[slot] != 0)
         tn.y = -tn.y;
-    tn.xy *= uNormalStrength;
+    tn.xy *= strength;
     vec3 n = t * tn.x + b * tn.y + ng * tn.z;
     float nLength = length(n);
     return nLength > 1e-8 ? n / nLength : ng;
+}
+#endif
+
+#ifdef HAS_NORMAL_MAP
+vec3 shadingNormal(vec3 ng, vec4 tangent, vec2 uv)
+{
+    return mappedNormal(ng, tangent, texture(uNormalMap, mapUv(SLOT_NORMAL, uv)), SLOT_NORMAL, uNormalStrength);
+}
+#endif
+
+#if defined(MATERIAL_CLEARCOAT) && defined(HAS_CLEARCOAT_NORMAL_MAP)
+vec3 clearcoatNormal(vec3 ng, vec4 tangent, vec2 uv)
+{
+    return mappedNormal(ng, tangent, texture(uClearcoatNormalMap, mapUv(SLOT_CLEARCOAT_NORMAL, uv)),
+                        SLOT_CLEARCOAT_NORMAL, uClearcoatNormalStrength);
 }
 #endif

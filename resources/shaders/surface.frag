@@ -12,7 +12,7 @@
 in vec3 vWorldPosition;
 in vec3 vNormal;
 in vec2 vUv;
-#ifdef HAS_NORMAL_MAP
+#ifdef HAS_TANGENT_FRAME
 in vec4 vTangent;
 #endif
 
@@ -48,7 +48,12 @@ void main()
     }
 #endif
     MaterialInfo m = materialInputs(vUv);
-    m.clearcoatNormal = ng; // KHR_materials_clearcoat without a coat normal texture: the geometric normal
+    // KHR_materials_clearcoat: the coat's own normal map, else the geometric normal.
+#if defined(MATERIAL_CLEARCOAT) && defined(HAS_CLEARCOAT_NORMAL_MAP)
+    m.clearcoatNormal = clearcoatNormal(ng, vTangent, vUv);
+#else
+    m.clearcoatNormal = ng;
+#endif
 #ifdef ALPHA_MASK
     // glTF alphaMode MASK: below the cutoff nothing is drawn, above it the surface is opaque.
     if (m.alpha < uAlphaCutoff)
@@ -121,6 +126,12 @@ void main()
     color = vec3(debugR);
 #elif DEBUG_VIEW == DEBUG_OCCLUSION
     color = vec3(m.occlusion);
+#elif DEBUG_VIEW == DEBUG_CLEARCOAT
+    color = vec3(m.clearcoat);
+#elif DEBUG_VIEW == DEBUG_CLEARCOAT_ROUGHNESS
+    color = vec3(m.clearcoatRoughness);
+#elif DEBUG_VIEW == DEBUG_CLEARCOAT_NORMAL
+    color = m.clearcoatNormal * 0.5 + 0.5;
 #elif DEBUG_VIEW == DEBUG_DISTRIBUTION
     color = vec3(distribution(saturate(dot(n, debugH)), debugR * debugR));
 #elif DEBUG_VIEW == DEBUG_VISIBILITY
@@ -158,7 +169,7 @@ void main()
 #elif DEBUG_VIEW == DEBUG_TEXEL_DENSITY
     color = texelDensityColor(texelDensity(vUv, vWorldPosition)) * (0.35 + 0.65 * debugNoV);
 #elif DEBUG_VIEW == DEBUG_TANGENT
-#ifdef HAS_NORMAL_MAP
+#ifdef HAS_TANGENT_FRAME
     color = surfaceTangent(ng, vTangent) * 0.5 + 0.5;
 #else
     color = vec3(0.5);

@@ -1,9 +1,10 @@
 // The surface pass's vertex stage. Attribute locations match render/GpuMesh (core/mesh/Mesh.h's
-// Vertex: position, normal, tangent, uv, color, uv1). Without HAS_NORMAL_MAP no tangent is read,
+// Vertex: position, normal, tangent, uv, color, uv1). Without HAS_TANGENT_FRAME (a normal map of
+// the base or the coat: render/ShaderVariant surfaceDefines) no tangent is read,
 // without HAS_TEXCOORD_1 no second UV, without HAS_VERTEX_COLOR no colour.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
-#ifdef HAS_NORMAL_MAP
+#ifdef HAS_TANGENT_FRAME
 layout(location = 2) in vec4 aTangent; // xyz along dP/du, w = handedness (glTF 2.0)
 out vec4 vTangent;
 #endif
@@ -37,7 +38,7 @@ void main()
 #ifdef HAS_VERTEX_COLOR
     vColor = aColor;
 #endif
-#ifdef HAS_NORMAL_MAP
+#ifdef HAS_TANGENT_FRAME
     vTangent = vec4(mat3(uModel) * aTangent.xyz, aTangent.w);
 #endif
     gl_Position = uViewProjection * world;

@@ -36,8 +36,8 @@ Project iblMethodCaseProject(const IblMethodCase& c, IblMethod method, int sampl
     m.shading.fresnel = c.fresnel;
     m.shading.coupling = c.coupling;
     m.shading.multiScatter = c.multiScatter;
-    m.clearcoat.factor = c.clearcoat;
-    m.clearcoat.roughness = c.clearcoatRoughness;
+    m.setFactor(MapSlot::Clearcoat, c.clearcoat);
+    m.setFactor(MapSlot::ClearcoatRoughness, c.clearcoatRoughness);
     return project;
 }
 

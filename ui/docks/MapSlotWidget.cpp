@@ -4,6 +4,7 @@
 #include "core/image/MapImageCache.h"
 #include "core/material/MapNaming.h"
 #include "core/material/MaterialList.h"
+#include "core/material/MaterialProperties.h"
 #include "ui/dialogs/MapInspectorDialog.h"
 #include "ui/document/Document.h"
 #include "ui/document/DocumentCommands.h"
@@ -56,6 +57,14 @@ int mergeIdFor(MapSlot slot)
         return MergeId::Roughness;
     case MapSlot::Occlusion:
         return MergeId::Occlusion;
+    case MapSlot::Clearcoat:
+    case MapSlot::ClearcoatRoughness:
+    case MapSlot::ClearcoatNormal:
+        // The registry's row of the slot's factor: the Material dock's slider of it merges alike.
+        for (const MaterialPropertyInfo& info : materialProperties())
+            if (info.slot == slot && info.value == PropertyValue::Scalar)
+                return MergeId::MaterialProperty0 + int(info.property);
+        break;
     case MapSlot::Emissive:
         break;
     }
@@ -69,6 +78,8 @@ QString factorName(MapSlot slot)
         return QObject::tr("Normal Strength");
     case MapSlot::Occlusion:
         return QObject::tr("Occlusion Strength");
+    case MapSlot::ClearcoatNormal:
+        return QObject::tr("Clearcoat Normal Strength");
     default:
         return MapSlotWidget::title(slot);
     }
@@ -91,6 +102,12 @@ QString MapSlotWidget::title(MapSlot slot)
         return tr("Ambient Occlusion");
     case MapSlot::Emissive:
         return tr("Emissive");
+    case MapSlot::Clearcoat:
+        return tr("Clearcoat");
+    case MapSlot::ClearcoatRoughness:
+        return tr("Clearcoat Roughness");
+    case MapSlot::ClearcoatNormal:
+        return tr("Clearcoat Normal");
     }
     return {};
 }
@@ -121,7 +138,7 @@ QString MapSlotWidget::readNote(
     }
     if (isScalarSlot(slot) && invert)
         parts.append(tr("inverted"));
-    if (slot == MapSlot::Normal && flipGreen)
+    if (isNormalSlot(slot) && flipGreen)
         parts.append(tr("DirectX"));
     return parts.isEmpty() ? QString() : QStringLiteral(" (%1)").arg(parts.join(QStringLiteral(", ")));
 }
@@ -195,7 +212,7 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
             });
         }
     } else {
-        const bool normal = slot == MapSlot::Normal;
+        const bool normal = isNormalSlot(slot);
         m_factor = new ValueSlider(0.0, normal ? 2.0 : 1.0, 3, this);
         m_factor->setObjectName(QStringLiteral("factorSlider_%1").arg(key));
         // The slider spans the usual 0-2; the field takes what the format allows (issue 30).
@@ -210,7 +227,7 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
             editMap(map, factorName(m_slot), mergeId);
         });
     }
-    if (slot != MapSlot::Normal && slot != MapSlot::Emissive) {
+    if (!isNormalSlot(slot) && slot != MapSlot::Emissive) {
         m_channel = new QComboBox(this);
         m_channel->setObjectName(QStringLiteral("mapChannel_%1").arg(key));
         if (slot == MapSlot::BaseColor)
@@ -249,14 +266,15 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
             editMap(map, tr("Invert %1").arg(title(m_slot)));
         });
     }
-    if (slot == MapSlot::Normal) {
+    if (isNormalSlot(slot)) {
         m_flipGreen = new QCheckBox(tr("DirectX (flip green)"), this);
-        m_flipGreen->setObjectName(QStringLiteral("mapFlipGreen"));
+        m_flipGreen->setObjectName(slot == MapSlot::Normal ? QStringLiteral("mapFlipGreen")
+                                                           : QStringLiteral("mapFlipGreen_%1").arg(key));
         form->addRow(QString(), m_flipGreen);
         connect(m_flipGreen, &QCheckBox::clicked, this, [this](bool on) {
             MaterialMap map = m_document->project().material().map(m_slot);
             map.flipGreen = on;
-            editMap(map, tr("Flip Normal Green"));
+            editMap(map, tr("Flip %1 Green").arg(title(m_slot)));
         });
     }
     m_texCoord = new QComboBox(this);

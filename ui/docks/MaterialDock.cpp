@@ -447,7 +447,7 @@ void MaterialDock::onDocumentChanged(DocumentChanges changes)
     m_unlit->setChecked(material.unlit);
     for (const auto& [property, slider] : m_propertySliders)
         slider->setValue(scalarOf(material, property));
-    m_clearcoatGroup->setChecked(material.clearcoat.isOn()); // toggled: the sliders show or hide
+    m_clearcoatGroup->setChecked(material.hasClearcoat()); // toggled: the sliders show or hide
 }
 
 void MaterialDock::editShading(const QString& undoText, const std::function<void(ShadingModel&)>& change)

@@ -71,7 +71,8 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     folderButton->setObjectName(QStringLiteral("assignFolderButton"));
     folderButton->setToolTip(tr("Assign a texture set by file names, replacing the current set: *_basecolor, "
                                 "*_normal, *_roughness, *_metallic, *_ao; packed *_orm, *_arm, "
-                                "*metallicRoughness*, *_MaskMap; Unreal T_*_D, _N, _R, _M. You can also drop "
+                                "*metallicRoughness*, *_MaskMap; Unreal T_*_D, _N, _R, _M; a clear coat's "
+                                "*_clearcoat, *_clearcoat_roughness, *_clearcoat_normal. You can also drop "
                                 "a folder or files here"));
     connect(folderButton, &QPushButton::clicked, this, &TextureMapsDock::assignFolder);
     layout->addWidget(folderButton);
@@ -82,18 +83,30 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     m_messageLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     m_messageLabel->hide();
     layout->addWidget(m_messageLabel);
+    // The core slots, then each layered lobe's under its heading (shown while the lobe is on: the
+    // Material dock's lobe section turns it on).
+    auto* clearcoat = new QGroupBox(tr("Clearcoat Maps"), content);
+    clearcoat->setObjectName(QStringLiteral("clearcoatMapsGroup"));
+    clearcoat->setToolTip(tr("KHR_materials_clearcoat's textures: the coat's strength (red), roughness "
+                             "(green) and normal map. Shown while the material has a clear coat "
+                             "(Material panel)."));
+    auto* clearcoatLayout = new QVBoxLayout(clearcoat);
+    clearcoatLayout->setContentsMargins(0, 0, 0, 0);
+    m_clearcoatSlots = clearcoat;
     for (MapSlot slot : kAllMapSlots) {
-        auto* widget = new MapSlotWidget(document, slot, content);
+        QWidget* owner = lobeOf(slot) == MaterialLobe::Core ? content : clearcoat;
+        auto* widget = new MapSlotWidget(document, slot, owner);
         m_slots[std::size_t(slot)] = widget;
         connect(widget, &MapSlotWidget::message, this, &TextureMapsDock::message);
         connect(widget, &MapSlotWidget::filesDropped, this, &TextureMapsDock::assignFiles);
-        auto* frame = new QFrame(content);
+        auto* frame = new QFrame(owner);
         frame->setFrameShape(QFrame::StyledPanel);
         auto* frameLayout = new QVBoxLayout(frame);
         frameLayout->setContentsMargins(0, 0, 0, 0);
         frameLayout->addWidget(widget);
-        layout->addWidget(frame);
+        (lobeOf(slot) == MaterialLobe::Core ? layout : clearcoatLayout)->addWidget(frame);
     }
+    layout->addWidget(clearcoat);
 
     // One UV transform for the whole set (each map has its own in the project; the common case,
     // tiling a texture set, edits them together).
@@ -192,6 +205,7 @@ void TextureMapsDock::onDocumentChanged(DocumentChanges changes)
             : tr("Material: %1").arg(QString::fromStdString(project.material().name)));
     for (MapSlotWidget* widget : m_slots)
         widget->refresh();
+    m_clearcoatSlots->setVisible(project.material().hasClearcoat());
     const UvTransform& uv = m_document->project().material().map(MapSlot::BaseColor).uv;
     m_uvScale->setValue(uv.scale.x);
     m_uvScaleV->setValue(uv.scale.y);
@@ -338,6 +352,8 @@ QString TextureMapsDock::assignFiles(const QStringList& paths)
             QString part = MapSlotWidget::title(slot);
             if (slot == MapSlot::Metallic || slot == MapSlot::Roughness)
                 part += tr(" (now %1)").arg(material.map(slot).factor.x);
+            else if (slot == MapSlot::Clearcoat && !material.hasClearcoat())
+                part += tr(" (no coat now)");
             clearedParts.append(part);
         }
         if (!clearedParts.isEmpty())

@@ -34,6 +34,12 @@ public:
     ~TextureMapsDock() override;
 
     MapSlotWidget* slotWidget(MapSlot slot) const { return m_slots[std::size_t(slot)]; }
+    // The box holding a lobe's slots (the clear coat's), hidden while the lobe is off
+    // (Material::usesSlot); null for the core slots.
+    QWidget* lobeSlots(MaterialLobe lobe) const
+    {
+        return lobe == MaterialLobe::Clearcoat ? m_clearcoatSlots : nullptr;
+    }
     // Assigns the files (folders are listed) by name as one undo step "Assign Maps" and returns
     // the message it also emits: what went where, what was cleared and what was not used. A
     // folder or several files is a texture set and replaces the whole set (core/material/MapNaming.h
@@ -65,6 +71,8 @@ private:
 
     Document* m_document;
     std::array<MapSlotWidget*, kMapSlotCount> m_slots {};
+    // The clear coat's slots, under their heading: shown while the material has a coat.
+    QWidget* m_clearcoatSlots = nullptr;
     ThumbnailLoader* m_thumbnails;
     QFileSystemWatcher* m_watcher;
     QTimer* m_reloadTimer;

@@ -182,7 +182,7 @@ void ValuesDock::showValue(const PickedValue& value)
         if (probe.maps.empty() && surface.mapsLoading.empty() && surface.mapProblems.empty())
             maps->setText(1, tr("none: factors only"));
         for (const MapProbe& read : probe.maps) {
-            const int channels = read.slot == MapSlot::Normal ? 3 : 4;
+            const int channels = isNormalSlot(read.slot) ? 3 : 4;
             QTreeWidgetItem* map = row(maps, MapSlotWidget::title(read.slot),
                 tr("texel %1, %2 of %3×%4")
                     .arg(read.texel.x)
@@ -213,6 +213,8 @@ void ValuesDock::showValue(const PickedValue& value)
         if (inputs.clearcoat > 0.0) {
             row(material, tr("Clearcoat"), number(inputs.clearcoat));
             row(material, tr("Clearcoat roughness"), number(inputs.clearcoatRoughness));
+            if (inputs.clearcoatNormal != glm::dvec3(0.0) && inputs.clearcoatNormal != probe.geometricNormal)
+                row(material, tr("Clearcoat normal"), components(inputs.clearcoatNormal));
         }
     }
     m_tree->expandAll();

@@ -71,8 +71,6 @@ MaterialChange materialChange(const Material& a, const Material& b)
         changed |= MaterialField::DoubleSided;
     if (a.unlit != b.unlit)
         changed |= MaterialField::Unlit;
-    if (a.clearcoat != b.clearcoat)
-        changed |= MaterialField::Clearcoat;
     if (a.shading != b.shading)
         changed |= MaterialField::Shading;
     if (change.isEmpty() && !(a == b))
@@ -231,8 +229,7 @@ std::string materialNames(const MaterialChange& change)
         {{MaterialField::Name, "name"}, {MaterialField::Ior, "ior"},
             {MaterialField::EmissiveStrength, "emissiveStrength"}, {MaterialField::AlphaMode, "alphaMode"},
             {MaterialField::AlphaCutoff, "alphaCutoff"}, {MaterialField::DoubleSided, "doubleSided"},
-            {MaterialField::Shading, "shading"}, {MaterialField::Unlit, "unlit"},
-            {MaterialField::Clearcoat, "clearcoat"}});
+            {MaterialField::Shading, "shading"}, {MaterialField::Unlit, "unlit"}});
     for (MapSlot slot : kAllMapSlots)
         if (change.map(slot)) {
             if (!text.empty())

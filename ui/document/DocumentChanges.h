@@ -86,8 +86,8 @@ enum class MaterialField : unsigned {
     DoubleSided = 1u << 5,
     Shading = 1u << 6, // Material::shading: kind Shading
     Unlit = 1u << 7,
-    Clearcoat = 1u << 8, // KHR_materials_clearcoat's factors
-    All = (1u << 9) - 1u,
+    // (The layered lobes' factors are their maps' factors: the map changes say them.)
+    All = (1u << 8) - 1u,
 };
 Q_DECLARE_FLAGS(MaterialFields, MaterialField)
 Q_DECLARE_OPERATORS_FOR_FLAGS(MaterialFields)

@@ -121,10 +121,14 @@ MaterialMapImages ValuePicker::imagesFor(
         m_failed.clear();
         m_imagesMaterial = material;
     }
+    const Project& project = m_scene->document()->project();
     for (MapSlot slot : kAllMapSlots) {
         const LoadedMapImage& map = assets.maps[std::size_t(material)][std::size_t(slot)];
         if (!map.image || map.image->isEmpty())
             continue; // the slot's factor alone, as the view draws it
+        if (std::size_t(material) < project.materials.size()
+            && !project.materials[std::size_t(material)].usesSlot(slot))
+            continue; // a lobe that is off: not drawn, not read
         if (map.image->hasPixels()) {
             images[std::size_t(slot)] = map.image.get();
             continue;

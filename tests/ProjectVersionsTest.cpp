@@ -1,0 +1,179 @@
+// Project files as older Facets wrote them still open, and mean what they meant
+// (docs/project-format.md, "Versioning"): tests/data/projects' version 1 and 2 files field for
+// field, and version 4's clear coat, whose two factors became two maps' factors in version 5.
+
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QtTest/QTest>
+
+#include "TestSupport.h"
+#include "core/project/Project.h"
+
+using namespace facet;
+
+namespace {
+QString qs(const std::string& s)
+{
+    return QString::fromStdString(s);
+}
+
+QByteArray readAll(const QString& path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+} // namespace
+
+class ProjectVersionsTest : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    // Files as older Facets wrote them (tests/data/projects: every field, keys in Qt's order)
+    // still open: version 1 with one "material", version 2 with "materials" and "parts". Neither
+    // has "compare": they open with the default layout for what they hold (the grid starts with
+    // the file's environment, B is a snapshot of the current material), and save as the current
+    // version, their materials without a coat.
+    void olderVersionsOpen_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("materialCount");
+        QTest::addColumn<int>("current");
+        QTest::addColumn<QString>("currentName");
+        QTest::addColumn<double>("currentRoughness");
+        QTest::addColumn<int>("partCount");
+        QTest::newRow("version 1") << "version1.json" << 1 << 0 << "Old" << 0.25 << 0;
+        QTest::newRow("version 2") << "version2.json" << 2 << 1 << "Visor" << 0.75 << 2;
+    }
+    void olderVersionsOpen()
+    {
+        QFETCH(QString, file);
+        QFETCH(int, materialCount);
+        QFETCH(int, current);
+        QFETCH(QString, currentName);
+        QFETCH(double, currentRoughness);
+        QFETCH(int, partCount);
+        const QString path = test::sourceDir() + QStringLiteral("/tests/data/projects/") + file;
+        std::string error;
+        std::string warning;
+        const auto project = Project::load(path.toStdString(), &error, &warning);
+        QVERIFY2(project, error.c_str());
+        QVERIFY2(warning.empty(), warning.c_str());
+        QCOMPARE(int(project->materials.size()), materialCount);
+        QCOMPARE(project->currentMaterial, current);
+        QCOMPARE(qs(project->material().name), currentName);
+        QCOMPARE(project->material().roughness(), currentRoughness);
+        QCOMPARE(int(project->parts.size()), partCount);
+        QCOMPARE(project->environment.source, std::string("sky"));
+        QCOMPARE(project->environment.rotationDegrees, 30.0);
+        QCOMPARE(project->view.exposureEV, 0.5);
+        QCOMPARE(project->lights.size(), std::size_t(1));
+
+        // The default layout for what the file holds.
+        QVERIFY(project->compare == CompareLayout::defaultFor(*project));
+        QCOMPARE(project->compare.mode, CompareMode::Single);
+        QCOMPARE(project->compare.environments.cells.size(), std::size_t(3));
+        QCOMPARE(project->compare.environments.cells[0].source, std::string("sky"));
+        QCOMPARE(project->compare.environments.cells[1].source, std::string("studio"));
+        QCOMPARE(project->compare.environments.cells[2].source, std::string("uniform:1"));
+        QVERIFY(project->compare.ab.snapshot == project->material());
+
+        QVERIFY(!project->material().hasClearcoat());
+        // Saved again, it is a current-version file that reads back the same.
+        const QJsonObject saved = project->toJson();
+        QCOMPARE(saved.value(QLatin1String("version")).toInt(), Project::kFormatVersion);
+        QVERIFY(saved.contains(QLatin1String("compare")) && !saved.contains(QLatin1String("material")));
+        const auto again = Project::fromJson(saved, {}, &error);
+        QVERIFY2(again, error.c_str());
+        QVERIFY(*again == *project);
+
+        // The version 2 file is what a version 2 Facet wrote: the version 3 writer's object
+        // without "compare", field for field (so no field of it was left to a default).
+        if (file == QLatin1String("version2.json")) {
+            QJsonObject v2 = saved;
+            v2.remove(QLatin1String("compare"));
+            v2[QLatin1String("version")] = 2;
+            // Optional fields added since, without a version (docs/project-format.md): "unlit",
+            // the view's "keepUnits" and "texelDensityTarget"; and the coat's maps (versions 4, 5).
+            QJsonObject view = v2[QLatin1String("view")].toObject();
+            view.remove(QLatin1String("keepUnits"));
+            view.remove(QLatin1String("texelDensityTarget"));
+            v2[QLatin1String("view")] = view;
+            QJsonArray materials = v2[QLatin1String("materials")].toArray();
+            for (QJsonValueRef each : materials) {
+                QJsonObject m = each.toObject();
+                m.remove(QLatin1String("unlit"));
+                for (const char* key : {"clearcoat", "clearcoatRoughness", "clearcoatNormal"})
+                    m.remove(QLatin1String(key));
+                each = m;
+            }
+            v2[QLatin1String("materials")] = materials;
+            QJsonObject onDisk = QJsonDocument::fromJson(readAll(path)).object();
+            onDisk.remove(QLatin1String("generator"));
+            v2.remove(QLatin1String("generator"));
+            QCOMPARE(v2, onDisk);
+        }
+    }
+
+    // Version 4 kept the coat's factors together, {"factor", "roughness"}; version 5 made them the
+    // factors of the coat's maps. A version 4 file reads them without a warning and saves as
+    // version 5's maps; a version 5 file with the old object is read the same way (a hand edit).
+    void version4ClearcoatReads_data()
+    {
+        QTest::addColumn<int>("version");
+        QTest::addColumn<QByteArray>("clearcoat"); // the material's "clearcoat" value
+        QTest::addColumn<double>("strength");
+        QTest::addColumn<double>("roughness");
+        QTest::addColumn<QString>("problem"); // part of the refusal, or empty
+        QTest::newRow("version 4 coat")
+            << 4 << QByteArray(R"({"factor": 0.75, "roughness": 0.125})") << 0.75 << 0.125 << QString();
+        QTest::newRow("version 4 coat, factor alone")
+            << 4 << QByteArray(R"({"factor": 0.5})") << 0.5 << 0.0 << QString();
+        QTest::newRow("version 5 coat map")
+            << 5 << QByteArray(R"({"factor": 0.25, "channel": "g"})") << 0.25 << 0.0 << QString();
+        QTest::newRow("version 4 coat out of range")
+            << 4 << QByteArray(R"({"factor": 1.5, "roughness": 0.1})") << 0.0 << 0.0
+            << QStringLiteral("materials[0].clearcoat.factor: 1.5 is outside [0, 1]");
+        QTest::newRow("version 4 coat roughness a string")
+            << 4 << QByteArray(R"({"factor": 1, "roughness": "soft"})") << 0.0 << 0.0
+            << QStringLiteral("materials[0].clearcoat.roughness");
+    }
+    void version4ClearcoatReads()
+    {
+        QFETCH(int, version);
+        QFETCH(QByteArray, clearcoat);
+        QFETCH(double, strength);
+        QFETCH(double, roughness);
+        QFETCH(QString, problem);
+        QJsonObject material {{QLatin1String("name"), QLatin1String("Lacquer")},
+            {QLatin1String("clearcoat"), QJsonDocument::fromJson(clearcoat).object()}};
+        const QJsonObject file {{QLatin1String("format"), QLatin1String("facet-project")},
+            {QLatin1String("version"), version}, {QLatin1String("materials"), QJsonArray {material}},
+            {QLatin1String("currentMaterial"), 0}};
+        std::string error, warning;
+        const auto project = Project::fromJson(file, {}, &error, &warning);
+        if (!problem.isEmpty()) {
+            QVERIFY(!project);
+            QVERIFY2(qs(error).contains(problem), error.c_str());
+            return;
+        }
+        QVERIFY2(project, error.c_str());
+        QVERIFY2(warning.empty(), warning.c_str());
+        QCOMPARE(project->material().clearcoat(), strength);
+        QCOMPARE(project->material().clearcoatRoughness(), roughness);
+        // Saved, the factors are the maps' (the old object is gone), and read back the same.
+        const QJsonObject saved = project->toJson();
+        const QJsonObject m = saved[QLatin1String("materials")].toArray().at(0).toObject();
+        QCOMPARE(m[QLatin1String("clearcoat")].toObject()[QLatin1String("factor")].toDouble(), strength);
+        QVERIFY(!m[QLatin1String("clearcoat")].toObject().contains(QLatin1String("roughness")));
+        QCOMPARE(
+            m[QLatin1String("clearcoatRoughness")].toObject()[QLatin1String("factor")].toDouble(), roughness);
+        const auto again = Project::fromJson(saved, {}, &error);
+        QVERIFY2(again, error.c_str());
+        QVERIFY(*again == *project);
+    }
+};
+
+QTEST_GUILESS_MAIN(ProjectVersionsTest)
+#include "ProjectVersionsTest.moc"
