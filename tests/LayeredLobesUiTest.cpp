@@ -1,11 +1,12 @@
 // The layered lobes in the window (Material dock, a section per lobe), under Xvfb: turning a lobe
 // on through its section's check is one undo step that re-renders, shows the lobe's sliders and
-// undoes back (sliders hidden, frame as before); a drag of any slider made from the property
-// registry is one undo step named by the row's label; an undo of the document moves the sliders. A
-// row per lobe and edit.
+// its maps in the Texture Maps dock and undoes back (sliders and maps hidden, frame as before); a drag of any
+// slider made from the property registry is one undo step named by the row's label; an undo of the document
+// moves the sliders. A row per lobe and edit.
 
 #include "core/material/MaterialProperties.h"
 #include "ui/docks/MaterialDock.h"
+#include "ui/docks/TextureMapsDock.h"
 #include "ui/widgets/ValueSlider.h"
 
 #include "TestSupport.h"
@@ -78,8 +79,13 @@ private Q_SLOTS:
         ValueSlider* slider = dock->propertySlider(MaterialProperty(strength));
         QVERIFY(group && slider);
         QVERIFY(!group->isChecked() && !slider->isVisible()); // off: the section shows its title only
+        // The lobe's maps in the Texture Maps dock come and go with it.
+        TextureMapsDock* maps = m_window->textureMapsDock();
+        QWidget* lobeMaps = maps->lobeSlots(MaterialLobe::Clearcoat);
+        QVERIFY(lobeMaps && !lobeMaps->isVisibleTo(maps));
         const QImage before = frame();
         clickGroupCheck(group);
+        QVERIFY(lobeMaps->isVisibleTo(maps));
         QCOMPARE(scalarOf(m_document->project().material(), MaterialProperty(strength)), 1.0);
         QCOMPARE(m_document->undoStack()->count(), 1);
         QCOMPARE(m_document->undoStack()->undoText(), undoText);
@@ -90,6 +96,7 @@ private Q_SLOTS:
         m_document->undoStack()->undo();
         QCOMPARE(scalarOf(m_document->project().material(), MaterialProperty(strength)), 0.0);
         QVERIFY(!group->isChecked() && !slider->isVisible());
+        QVERIFY(!lobeMaps->isVisibleTo(maps));
         QVERIFY2(difference(before, frame()) < 0.5, qPrintable(QString::number(difference(before, frame()))));
     }
 

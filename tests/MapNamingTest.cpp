@@ -180,6 +180,33 @@ void MapNamingTest::channelForSlot_data()
         << "Crate_MetallicSmoothness.png" << S::Occlusion << C::R << false << kUnknown << false
         << metallicSmoothness;
 
+    // KHR_materials_clearcoat's textures: glTF's own names, Substance-style words, and Facet's
+    // Unreal export (T_*_CC: R strength, G roughness). A coat normal is not the base's normal.
+    QTest::newRow("clearcoat") << "car_clearcoat.png" << S::Clearcoat << C::R << false << kUnknown << true
+                               << none;
+    QTest::newRow("coat") << "car_coat.png" << S::Clearcoat << C::R << false << kUnknown << true << none;
+    QTest::newRow("clear_coat") << "car_clear_coat.png" << S::Clearcoat << C::R << false << kUnknown << true
+                                << none;
+    QTest::newRow("clearcoatRoughness")
+        << "Car_clearcoatRoughness.png" << S::ClearcoatRoughness << C::R << false << kUnknown << true << none;
+    QTest::newRow("clearcoat_roughness 2k") << "car_clearcoat_roughness_2k.png" << S::ClearcoatRoughness
+                                            << C::R << false << kUnknown << true << none;
+    QTest::newRow("coat_roughness") << "car_coat_roughness.png" << S::ClearcoatRoughness << C::R << false
+                                    << kUnknown << true << none;
+    QTest::newRow("clearcoatNormal") << "Car_clearcoatNormal.png" << S::ClearcoatNormal << C::Rgb << false
+                                     << kUnknown << true << none;
+    QTest::newRow("coat_normal") << "car_coat_normal.png" << S::ClearcoatNormal << C::Rgb << false << kUnknown
+                                 << true << none;
+    QTest::newRow("coat_normal is not the base normal")
+        << "car_coat_normal.png" << S::Normal << C::Rgb << false << kUnknown << false << none;
+    QTest::newRow("clearcoat_roughness is not the base roughness")
+        << "car_clearcoat_roughness.png" << S::Roughness << C::R << false << kUnknown << false << none;
+    const QString clearCoat = QStringLiteral("clear coat");
+    QTest::newRow("Unreal CC strength")
+        << "T_Car_CC.png" << S::Clearcoat << C::R << false << kUnknown << true << clearCoat;
+    QTest::newRow("Unreal CC roughness")
+        << "T_Car_CC.png" << S::ClearcoatRoughness << C::G << false << kUnknown << true << clearCoat;
+
     // Unreal: T_<name>_<code>; normal maps are DirectX.
     QTest::newRow("Unreal BC") << "T_Crate_BC.png" << S::BaseColor << C::Rgb << false << kUnknown << true
                                << none;

@@ -222,18 +222,41 @@ void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem_data()
     QTest::addColumn<QString>("property"); // the registry's name of the lobe's strength
     QTest::addColumn<double>("value");
     QTest::addColumn<bool>("unlit");
+    QTest::addColumn<int>("mapSlot"); // a lobe's map with an image, or -1
+    QTest::addColumn<double>("coatRoughness"); // the coat roughness factor (0 hides its map)
     QTest::addColumn<SurfaceFeatures>("bit");
     QTest::addColumn<bool>("on");
     QTest::addColumn<QString>("uniform"); // a uniform only the lobe's code declares
-    const auto row = [](const char* name, const char* property, double value, bool unlit, SurfaceFeature bit,
-                         bool on, const char* uniform) {
-        QTest::newRow(name) << QString::fromLatin1(property) << value << unlit << SurfaceFeatures(bit) << on
-                            << QString::fromLatin1(uniform);
+    const auto row = [](const char* name, const char* property, double value, bool unlit, int mapSlot,
+                         double coatRoughness, SurfaceFeature bit, bool on, const char* uniform) {
+        QTest::newRow(name) << QString::fromLatin1(property) << value << unlit << mapSlot << coatRoughness
+                            << SurfaceFeatures(bit) << on << QString::fromLatin1(uniform);
     };
-    row("clearcoat 0 (default)", "clearcoat", 0.0, false, SurfaceFeature::Clearcoat, false,
+    const int none = -1;
+    row("clearcoat 0 (default)", "clearcoat", 0.0, false, none, 0.0, SurfaceFeature::Clearcoat, false,
         "uClearcoatFactor");
-    row("clearcoat 0.5", "clearcoat", 0.5, false, SurfaceFeature::Clearcoat, true, "uClearcoatFactor");
-    row("clearcoat 1, unlit", "clearcoat", 1.0, true, SurfaceFeature::Clearcoat, false, "uClearcoatFactor");
+    row("clearcoat 0.5", "clearcoat", 0.5, false, none, 0.0, SurfaceFeature::Clearcoat, true,
+        "uClearcoatFactor");
+    row("clearcoat 1, unlit", "clearcoat", 1.0, true, none, 0.0, SurfaceFeature::Clearcoat, false,
+        "uClearcoatFactor");
+    // The coat's maps: sampled only with the coat on, lit, and a factor that lets them show.
+    const int coat = int(MapSlot::Clearcoat);
+    const int coatRoughness = int(MapSlot::ClearcoatRoughness);
+    const int coatNormal = int(MapSlot::ClearcoatNormal);
+    row("clearcoat map, coat 0", "clearcoat", 0.0, false, coat, 0.0, SurfaceFeature::HasClearcoatMap, false,
+        "uClearcoatMap");
+    row("clearcoat map, coat 0.5", "clearcoat", 0.5, false, coat, 0.0, SurfaceFeature::HasClearcoatMap, true,
+        "uClearcoatMap");
+    row("clearcoat map, unlit", "clearcoat", 0.5, true, coat, 0.0, SurfaceFeature::HasClearcoatMap, false,
+        "uClearcoatMap");
+    row("clearcoat roughness map, roughness factor 0", "clearcoat", 1.0, false, coatRoughness, 0.0,
+        SurfaceFeature::HasClearcoatRoughnessMap, false, "uClearcoatRoughnessMap");
+    row("clearcoat roughness map, roughness factor 0.5", "clearcoat", 1.0, false, coatRoughness, 0.5,
+        SurfaceFeature::HasClearcoatRoughnessMap, true, "uClearcoatRoughnessMap");
+    row("clearcoat normal map, coat 0", "clearcoat", 0.0, false, coatNormal, 0.0,
+        SurfaceFeature::HasClearcoatNormalMap, false, "uClearcoatNormalMap");
+    row("clearcoat normal map, coat 1", "clearcoat", 1.0, false, coatNormal, 0.0,
+        SurfaceFeature::HasClearcoatNormalMap, true, "uClearcoatNormalMap");
 }
 
 void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem()
@@ -241,20 +264,33 @@ void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem()
     QFETCH(QString, property);
     QFETCH(double, value);
     QFETCH(bool, unlit);
+    QFETCH(int, mapSlot);
+    QFETCH(double, coatRoughness);
     QFETCH(SurfaceFeatures, bit);
     QFETCH(bool, on);
     QFETCH(QString, uniform);
     Material material;
     setScalar(material, *materialPropertyFromString(property.toStdString()), value);
+    material.setFactor(MapSlot::ClearcoatRoughness, coatRoughness);
     material.unlit = unlit;
-    const bool noImages[kMapSlotCount] = {};
-    const SurfaceFeatures features = surfaceFeaturesFor(material, noImages, false, false);
+    bool images[kMapSlotCount] = {};
+    if (mapSlot >= 0) {
+        material.maps[std::size_t(mapSlot)].path = "/textures/coat.png";
+        images[mapSlot] = true;
+    }
+    const SurfaceFeatures features = surfaceFeaturesFor(material, images, false, false);
     QCOMPARE((features & bit) != 0, on);
     SurfaceProgramCache programs;
     std::string error;
     const ShaderProgram* program = programs.get(SurfaceVariantKey {features, DebugView::None}, &error);
     QVERIFY2(program, error.c_str());
     QCOMPARE(program->uniformLocation(uniform.toLatin1().constData()) >= 0, on);
+    // A coat normal map brings the tangent frame (HAS_TANGENT_FRAME), as the base's does.
+    if (mapSlot == int(MapSlot::ClearcoatNormal)) {
+        const std::vector<std::string> defines
+            = surfaceDefines(SurfaceVariantKey {features, DebugView::None});
+        QCOMPARE(std::find(defines.begin(), defines.end(), "HAS_TANGENT_FRAME") != defines.end(), on);
+    }
 }
 
 QTEST_GUILESS_MAIN(ShaderVariantGLTest)

@@ -470,6 +470,11 @@ private Q_SLOTS:
         row("unity-hdrp, coated", "unity-hdrp", false, true, {"Emissive"});
         row("unity-urp, emitting and coated (no coat channel)", "unity-urp", true, true, {"Occlusion"});
         row("godot, coated (no coat channel)", "godot", false, true, {"emission"});
+        // glTF's coat textures: strength and roughness in one (R, G), and a coat normal map only
+        // where there is one to write.
+        row("gltf-textures, plain", "gltf-textures", false, false,
+            {"emissive", "clearcoat", "clearcoatNormal"});
+        row("gltf-textures, coated", "gltf-textures", false, true, {"emissive", "clearcoatNormal"});
     }
     void optionalOutputs()
     {

@@ -218,7 +218,9 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
         // The slider spans the usual 0-2; the field takes what the format allows (issue 30).
         if (normal)
             m_factor->setSpinRange(0.0, Material::kMaxNormalStrength);
-        form->addRow(normal || slot == MapSlot::Occlusion ? tr("Strength") : tr("Value"), m_factor);
+        form->addRow(
+            normal || slot == MapSlot::Occlusion || slot == MapSlot::Clearcoat ? tr("Strength") : tr("Value"),
+            m_factor);
         connect(m_factor, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
         connect(m_factor, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);
         connect(m_factor, &ValueSlider::valueEdited, this, [this, mergeId](double value) {
