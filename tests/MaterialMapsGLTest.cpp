@@ -147,6 +147,18 @@ void useScalar(Material& m, MapSlot slot, const QString& path, MapChannel channe
     useMap(m, slot, path, channel, ColorEncoding::Linear);
 }
 
+// Every core slot textured: the maps of all six at once, each from its own unit.
+void useAllSix(Material& m, const QString& f)
+{
+    useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+    useNormal(m, f);
+    useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
+    useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
+    useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
+    useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+    m.map(MapSlot::Emissive).factor = glm::dvec4(1.0);
+}
+
 const std::vector<Row>& rows()
 {
     static const std::vector<Row> table = {
@@ -380,16 +392,7 @@ const std::vector<Row>& rows()
                 useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
                 useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
             }},
-        {"all-six",
-            [](Material& m, const QString& f) {
-                useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::Rgb, ColorEncoding::SRGB);
-                useNormal(m, f);
-                useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
-                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
-                useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
-                useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
-                m.map(MapSlot::Emissive).factor = glm::dvec4(1.0);
-            }},
+        {"all-six", useAllSix},
         // KHR_materials_clearcoat's maps (strength R and roughness G by the extension's packing).
         {"clearcoat",
             [](Material& m, const QString& f) {
@@ -444,13 +447,7 @@ const std::vector<Row>& rows()
             }},
         {"all-nine",
             [](Material& m, const QString& f) {
-                useMap(m, MapSlot::BaseColor, file(f, "packed.png"), MapChannel::Rgb, ColorEncoding::SRGB);
-                useNormal(m, f);
-                useScalar(m, MapSlot::Metallic, file(f, "grey.png"), MapChannel::R);
-                useScalar(m, MapSlot::Roughness, file(f, "packed.png"), MapChannel::G);
-                useScalar(m, MapSlot::Occlusion, file(f, "packed.png"), MapChannel::R);
-                useMap(m, MapSlot::Emissive, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
-                m.map(MapSlot::Emissive).factor = glm::dvec4(1.0);
+                useAllSix(m, f);
                 m.setClearcoat(0.9, 0.7);
                 useScalar(m, MapSlot::Clearcoat, file(f, "grey.png"), MapChannel::R);
                 useScalar(m, MapSlot::ClearcoatRoughness, file(f, "packed.png"), MapChannel::B);

@@ -53,7 +53,7 @@ enum class ExportSource {
     BaseColorG,
     BaseColorB,
     BaseColorA,
-    NormalX,
+    NormalX, // x, y, z in order (channelValue counts on it)
     NormalY,
     NormalZ,
     Metallic,
@@ -64,7 +64,7 @@ enum class ExportSource {
     EmissiveB,
     Clearcoat, // KHR_materials_clearcoat's strength
     ClearcoatRoughness, // the coat's perceptual roughness
-    ClearcoatNormalX, // the coat's tangent-space normal, as NormalX/Y/Z
+    ClearcoatNormalX, // the coat's tangent-space normal, as NormalX/Y/Z (in order too)
     ClearcoatNormalY,
     ClearcoatNormalZ,
 };

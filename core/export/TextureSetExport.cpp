@@ -141,13 +141,10 @@ double channelValue(const ExportChannel& channel, const ExportTexel& texel)
         value = texel.baseColor.a;
         break;
     case ExportSource::NormalX:
-        value = texel.normal.x * 0.5 + 0.5;
-        break;
     case ExportSource::NormalY:
-        value = texel.normal.y * 0.5 + 0.5;
-        break;
     case ExportSource::NormalZ:
-        value = texel.normal.z * 0.5 + 0.5;
+        // Stored as n * 0.5 + 0.5; the sources are in x, y, z order.
+        value = texel.normal[int(channel.source) - int(ExportSource::NormalX)] * 0.5 + 0.5;
         break;
     case ExportSource::Metallic:
         value = texel.metallic;
@@ -174,13 +171,9 @@ double channelValue(const ExportChannel& channel, const ExportTexel& texel)
         value = texel.clearcoatRoughness;
         break;
     case ExportSource::ClearcoatNormalX:
-        value = texel.clearcoatNormal.x * 0.5 + 0.5;
-        break;
     case ExportSource::ClearcoatNormalY:
-        value = texel.clearcoatNormal.y * 0.5 + 0.5;
-        break;
     case ExportSource::ClearcoatNormalZ:
-        value = texel.clearcoatNormal.z * 0.5 + 0.5;
+        value = texel.clearcoatNormal[int(channel.source) - int(ExportSource::ClearcoatNormalX)] * 0.5 + 0.5;
         break;
     }
     return channel.invert ? 1.0 - value : value;
