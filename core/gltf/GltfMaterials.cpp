@@ -164,12 +164,13 @@ bool readTexture(const tinygltf::Model& model, int textureIndex, int texCoord,
 }
 
 // The textureInfo `field` of an extension's object (`extensionObject`, the extension
-// `extension`): index, texCoord, KHR_texture_transform and, for a normal texture, its scale into
-// the map's factor (the core normalTexture's rule). False when there is none or it is unusable,
-// with a note naming the field for what is wrong.
+// `extension`): index, texCoord, KHR_texture_transform and, for a normal texture
+// (`normalTexture`), its scale into the map's factor (the core normalTexture's rule; another
+// textureInfo has no scale, and a stray one must not replace the factor). False when there is none or it is
+// unusable, with a note naming the field for what is wrong.
 bool readExtensionTexture(const tinygltf::Model& model, const tinygltf::Value& extensionObject,
-    const char* extension, const char* field, const std::string& assetPath, const std::string& where,
-    MaterialMap& map, Notes& notes)
+    const char* extension, const char* field, bool normalTexture, const std::string& assetPath,
+    const std::string& where, MaterialMap& map, Notes& notes)
 {
     if (!extensionObject.Has(field))
         return false;
@@ -182,7 +183,7 @@ bool readExtensionTexture(const tinygltf::Model& model, const tinygltf::Value& e
     int texCoord = 0;
     if (info.Has("texCoord") && info.Get("texCoord").IsInt())
         texCoord = info.Get("texCoord").GetNumberAsInt();
-    if (info.Has("scale")) {
+    if (normalTexture && info.Has("scale")) {
         if (info.Get("scale").IsNumber())
             map.factor = glm::dvec4(clamped(info.Get("scale").GetNumberAsDouble(), 0.0,
                 Material::kMaxNormalStrength, at + ".scale", notes));
@@ -318,7 +319,8 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
             const auto coatTexture = [&](const char* field, MapSlot slot) {
                 MaterialMap& map = m.map(slot);
                 map.colorSpace = ColorEncoding::Linear;
-                readExtensionTexture(model, value, extension, field, assetPath, where, map, notes);
+                readExtensionTexture(
+                    model, value, extension, field, isNormalSlot(slot), assetPath, where, map, notes);
             };
             coatTexture("clearcoatTexture", MapSlot::Clearcoat);
             coatTexture("clearcoatRoughnessTexture", MapSlot::ClearcoatRoughness);

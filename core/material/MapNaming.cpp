@@ -125,6 +125,7 @@ struct NameRule {
 // Anywhere rules first, then the last-words rules with more words before those with fewer (so
 // "metallic_smoothness" is not read as "smoothness"), then Unreal's one- and two-letter codes.
 // docs/app.md lists the sources of each.
+// clang-format off: one rule a line
 constexpr NameRule kRules[] = {
     {"occlusionroughnessmetallic", Where::Anywhere, Layout::Orm}, // Substance "UE4 packed", glTF samples
     {"occlusionroughmetal", Where::Anywhere, Layout::Orm}, // glTF FlightHelmet
@@ -184,6 +185,7 @@ constexpr NameRule kRules[] = {
     {"e", Where::Unreal, Layout::Emissive},
     {"cc", Where::Unreal, Layout::PackedClearcoat}, // Facet's Unreal template writes T_<name>_CC
 };
+// clang-format on
 
 // The words of a file's base name, lower case, without trailing resolution words ("4k", "2048").
 QStringList nameWords(const QString& path)
