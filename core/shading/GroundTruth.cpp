@@ -55,7 +55,10 @@ LobeSelection lobeSelection(const MaterialInfo& m, double NoV, GroundTruthSettin
     const double metallic = std::clamp(m.metallic, 0.0, 1.0);
     const glm::dvec3 f0 = glm::mix(glm::dvec3(shading::f0FromIor(m.ior)), m.baseColor, metallic);
     const double specular = luminance(shading::F_Schlick(f0, 1.0, NoV));
-    const double diffuse = luminance(m.baseColor) * (1.0 - metallic) * (1.0 - specular);
+    // The cosine strategy also serves the sheen, a broad lobe (KHR_materials_sheen), which a
+    // metal would otherwise leave to the environment strategy alone.
+    const double sheen = m.hasSheen() ? luminance(glm::max(m.sheenColor, glm::dvec3(0.0))) : 0.0;
+    const double diffuse = luminance(m.baseColor) * (1.0 - metallic) * (1.0 - specular) + sheen;
     LobeSelection p;
     p.specular = diffuse <= 0.0 ? 1.0 : std::clamp(specular / (specular + diffuse), 0.1, 0.9);
     if (m.clearcoat > 0.0) {

@@ -9,6 +9,7 @@
 
 #include "core/shading/Brdf.h"
 #include "core/shading/Sampling.h"
+#include "core/shading/Sheen.h"
 
 namespace facet {
 
@@ -156,6 +157,17 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
             : glm::dvec3(couplingFactor(f0Dielectric, NoV, NoL, roughness) * (1.0 - metallic));
         lobes.diffuse = kD * lambert;
     }
+    if (material.hasSheen()) {
+        // KHR_materials_sheen: sheen_brdf + scaling x material, the scaling reciprocal (the min of
+        // its n.v and n.l terms); no Fresnel in the lobe (docs/shading.md, "Sheen").
+        const double scaling = sheenAlbedoScaling(material.sheenColor, material.sheenRoughness, NoV, NoL);
+        lobes.diffuse *= scaling;
+        lobes.specular *= scaling;
+        const double sheenRoughness = std::clamp(material.sheenRoughness, 0.0, 1.0);
+        const double sheenAlpha = sheenRoughness * sheenRoughness;
+        lobes.sheen = glm::max(material.sheenColor, glm::dvec3(0.0)) * D_Charlie(NoH, sheenAlpha)
+            * V_Charlie(NoV, std::min(NoL, 1.0), sheenAlpha);
+    }
     if (material.clearcoat > 0.0) {
         // KHR_materials_clearcoat: mix(material, clearcoat_brdf, clearcoat x Fc(n.v)), the coat a
         // specular lobe of its own roughness with no Fresnel inside (docs/shading.md, "Clearcoat").
@@ -165,6 +177,7 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
         const double weight = clearcoatWeight(material, NcoV);
         lobes.diffuse *= 1.0 - weight;
         lobes.specular *= 1.0 - weight;
+        lobes.sheen *= 1.0 - weight; // the coat lies over the sheen
         if (NcoL > 0.0) {
             const double coatRoughness = clampRoughness(material.clearcoatRoughness);
             const double coatAlpha = coatRoughness * coatRoughness;

@@ -36,6 +36,12 @@ struct MaterialInfo {
     double clearcoat = 0.0;
     double clearcoatRoughness = 0.0;
     glm::dvec3 clearcoatNormal {0.0};
+    // KHR_materials_sheen: the sheen's colour (linear; 0: no sheen) and its roughness (the
+    // Charlie distribution's, alpha = roughness^2). Under the coat, over the base
+    // (core/shading/Sheen.h; docs/shading.md, "Sheen").
+    glm::dvec3 sheenColor {0.0};
+    double sheenRoughness = 0.0;
+    bool hasSheen() const { return sheenColor.r > 0.0 || sheenColor.g > 0.0 || sheenColor.b > 0.0; }
 };
 
 // The coat's IOR, fixed by KHR_materials_clearcoat: F0 = 0.04.
@@ -50,13 +56,15 @@ double clearcoatWeight(const MaterialInfo& material, double NoV);
 // geometry uses k = (r + 1)^2 / 8 for punctual lights and k = alpha / 2 for image-based light.
 enum class LightingKind { Punctual, Environment };
 
-// The base's lobes already carry the coat's 1 - clearcoatWeight; `coat` is the coat's own
-// lobe, clearcoatWeight x D V (zero without a coat).
+// The base's lobes already carry the sheen's albedo scaling and the coat's 1 - clearcoatWeight;
+// `sheen` is the sheen's own lobe, sheenColor D_Charlie V_Charlie (times the coat's 1 - w_c);
+// `coat` the coat's, clearcoatWeight x D V (each zero without its layer).
 struct BrdfLobes {
     glm::dvec3 diffuse {0.0};
     glm::dvec3 specular {0.0};
+    glm::dvec3 sheen {0.0};
     glm::dvec3 coat {0.0};
-    glm::dvec3 total() const { return diffuse + specular + coat; }
+    glm::dvec3 total() const { return diffuse + specular + sheen + coat; }
 };
 
 class MaterialBrdf {

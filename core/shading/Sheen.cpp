@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/shading/Brdf.h"
+#include "core/support/Parallel.h"
 
 namespace facet::shading {
 
@@ -79,6 +80,52 @@ double sheenDirectionalAlbedo(double NoV, double sheenRoughness, SheenVisibility
         sum += ring * V * NoL * sinTheta;
     }
     return sum * dTheta * dPhi;
+}
+
+SheenAlbedoTable SheenAlbedoTable::compute(int size, int steps, SheenVisibility visibility)
+{
+    SheenAlbedoTable table;
+    table.m_size = std::max(size, 2);
+    table.m_texels.assign(std::size_t(table.m_size) * std::size_t(table.m_size), 0.0);
+    const double last = double(table.m_size - 1);
+    parallelFor(std::size_t(table.m_size), [&](std::size_t y) {
+        for (int x = 0; x < table.m_size; ++x)
+            table.m_texels[y * std::size_t(table.m_size) + std::size_t(x)]
+                = sheenDirectionalAlbedo(double(x) / last, double(y) / last, visibility, steps);
+    });
+    return table;
+}
+
+double SheenAlbedoTable::sample(double NoV, double sheenRoughness) const
+{
+    if (m_size == 0)
+        return 0.0;
+    const double last = double(m_size - 1);
+    const double fx = std::clamp(NoV, 0.0, 1.0) * last;
+    const double fy = std::clamp(sheenRoughness, 0.0, 1.0) * last;
+    const int x0 = std::min(int(fx), m_size - 2);
+    const int y0 = std::min(int(fy), m_size - 2);
+    const double tx = fx - x0;
+    const double ty = fy - y0;
+    const double bottom = texel(x0, y0) + (texel(x0 + 1, y0) - texel(x0, y0)) * tx;
+    const double top = texel(x0, y0 + 1) + (texel(x0 + 1, y0 + 1) - texel(x0, y0 + 1)) * tx;
+    return bottom + (top - bottom) * ty;
+}
+
+const SheenAlbedoTable& sheenAlbedoTable()
+{
+    static const SheenAlbedoTable table = SheenAlbedoTable::compute(64, 64, SheenVisibility::Charlie);
+    return table;
+}
+
+double sheenAlbedoScaling(const glm::dvec3& sheenColor, double sheenRoughness, double NoV, double NoL)
+{
+    const double strength = std::max({sheenColor.r, sheenColor.g, sheenColor.b, 0.0});
+    if (strength <= 0.0)
+        return 1.0;
+    const SheenAlbedoTable& table = sheenAlbedoTable();
+    const double e = std::max(table.sample(NoV, sheenRoughness), table.sample(NoL, sheenRoughness));
+    return std::max(1.0 - strength * e, 0.0);
 }
 
 } // namespace facet::shading

@@ -1,14 +1,21 @@
 #pragma once
 // KHR_materials_sheen's BRDF terms, in double: the first step of the sheen lobe, its CPU ground
 // truth (docs/shading.md, "Sheen"; docs/layered-lobes.md holds the extension's text and how other
-// renderers read it). Not a material property yet: no material, shader or file reads these.
+// renderers read it). The CPU material BRDF (core/shading/MaterialBrdf) evaluates the lobe and its
+// layering; no file, dock or shader sets it yet.
 //
 //   D_Charlie(n.h, a)  = (2 + 1/a) (1 - (n.h)^2)^(1 / (2a)) / (2 pi)       a = sheenRoughness^2
 //   V_Charlie          = 1 / ((1 + lambda(n.v) + lambda(n.l)) 4 n.v n.l)   (the extension's choice)
 //   V_Neubelt          = 1 / (4 (n.l + n.v - n.l n.v))                      (Filament's, "Ashikhmin")
 //   sheen_brdf         = sheenColor D V                                    (no Fresnel)
+//   scaling            = min(1 - max3(sheenColor) E(n.v), 1 - max3(sheenColor) E(n.l))
+//   f                  = sheen_brdf + scaling f_base                       (the extension's layering)
 //
 // [Estevez and Kulla 2017, "Production Friendly Microfacet Sheen BRDF"; Neubelt and Pettineo 2013]
+
+#include <vector>
+
+#include <glm/vec3.hpp>
 
 namespace facet::shading {
 
@@ -32,5 +39,35 @@ enum class SheenVisibility { Charlie, Neubelt };
 // integrand is smooth in both; 256 steps converge to 1e-4 for r >= 0.25). The extension's albedo
 // scaling of the base, 1 - max(sheenColor) E, reads it.
 double sheenDirectionalAlbedo(double NoV, double sheenRoughness, SheenVisibility visibility, int steps = 256);
+
+// E(n.v, r) tabulated on size x size texels, the DFG table's layout (core/shading/DfgTable.h):
+// x = n.v, y = sheen roughness, texel i at i / (size - 1), bilinear between texels.
+class SheenAlbedoTable {
+public:
+    SheenAlbedoTable() = default;
+    // Each texel by sheenDirectionalAlbedo with `steps`, on all cores.
+    static SheenAlbedoTable compute(
+        int size, int steps, SheenVisibility visibility = SheenVisibility::Charlie);
+    int size() const { return m_size; }
+    double texel(int x, int y) const
+    {
+        return m_texels[std::size_t(y) * std::size_t(m_size) + std::size_t(x)];
+    }
+    double sample(double NoV, double sheenRoughness) const;
+
+private:
+    int m_size = 0;
+    std::vector<double> m_texels;
+};
+
+// The table the material BRDF reads: V_Charlie (the extension's), 64 x 64 texels of a 64-step
+// quadrature (within 2.5e-3 of the 256-step E from sheen roughness 0.3, 0.015 at 0.1:
+// SheenLayeringTest); computed once, on first use (about 2 s on 2 cores).
+const SheenAlbedoTable& sheenAlbedoTable();
+
+// KHR_materials_sheen's layering: what the material under the sheen keeps towards v from l,
+// min(1 - max3(c) E(n.v, r), 1 - max3(c) E(n.l, r)) (the extension's "Sheen layering", its
+// reciprocal form; the README's simplified form is the n.v term alone). 1 without a sheen.
+double sheenAlbedoScaling(const glm::dvec3& sheenColor, double sheenRoughness, double NoV, double NoL);
 
 } // namespace facet::shading
