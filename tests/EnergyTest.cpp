@@ -7,6 +7,7 @@
 
 #include <QtTest/QTest>
 
+#include "TestSupport.h"
 #include "core/material/Material.h"
 #include "core/shading/Brdf.h"
 #include "core/shading/DfgTable.h"
@@ -26,15 +27,7 @@ const double kRoughness[] = {0.0, 0.05, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 
 // estimates converge to ~1e-4 here, far below the bounds checked.
 constexpr int kSamples = 4096;
 
-MaterialInfo white(double metallic, double roughness)
-{
-    MaterialInfo m;
-    m.baseColor = glm::dvec3(1.0);
-    m.metallic = metallic;
-    m.perceptualRoughness = roughness;
-    m.ior = 1.5;
-    return m;
-}
+using test::whiteMaterial;
 
 } // namespace
 
@@ -52,7 +45,7 @@ private Q_SLOTS:
         double lowest = 1.0;
         for (double r : kRoughness)
             for (double NoV : kNoV) {
-                const double albedo = directionalAlbedo(brdf, white(1.0, r), NoV, kSamples).x;
+                const double albedo = directionalAlbedo(brdf, whiteMaterial(1.0, r), NoV, kSamples).x;
                 QVERIFY2(albedo <= 1.0 + 1e-3, qPrintable(QStringLiteral("r %1 n.v %2: %3").arg(r).arg(NoV).arg(albedo)));
                 lowest = std::min(lowest, albedo);
             }
@@ -68,18 +61,19 @@ private Q_SLOTS:
         double worst = 0.0;
         for (double r : kRoughness)
             for (double NoV : kNoVResolved) {
-                const double albedo = directionalAlbedo(brdf, white(1.0, r), NoV, kSamples).x;
+                const double albedo = directionalAlbedo(brdf, whiteMaterial(1.0, r), NoV, kSamples).x;
                 worst = std::max(worst, std::abs(albedo - 1.0));
                 QVERIFY2(std::abs(albedo - 1.0) < 0.01, qPrintable(QStringLiteral("r %1 n.v %2: %3").arg(r).arg(NoV).arg(albedo)));
             }
         double grazing = 0.0;
         for (double r : kRoughness)
             for (double NoV : {1e-3, 0.01})
-                grazing = std::max(grazing, std::abs(directionalAlbedo(brdf, white(1.0, r), NoV, kSamples).x - 1.0));
+                grazing = std::max(
+                    grazing, std::abs(directionalAlbedo(brdf, whiteMaterial(1.0, r), NoV, kSamples).x - 1.0));
         qInfo("white metal with compensation: max |albedo - 1| = %.2e for n.v >= 0.02, %.2e below", worst, grazing);
         // Below the table's resolution it must still not gain energy.
         for (double r : kRoughness)
-            QVERIFY(directionalAlbedo(brdf, white(1.0, r), 1e-3, kSamples).x <= 1.0 + 1e-3);
+            QVERIFY(directionalAlbedo(brdf, whiteMaterial(1.0, r), 1e-3, kSamples).x <= 1.0 + 1e-3);
     }
 
     // The glTF 2.0 fresnel_mix of a white dielectric: diffuse (1 - F(v.h)) + specular F(v.h).
@@ -96,7 +90,7 @@ private Q_SLOTS:
             double highestRoughness = 0.0;
             for (double r : kRoughness)
                 for (double NoV : kNoV) {
-                    const double albedo = directionalAlbedo(brdf, white(0.0, r), NoV, kSamples).x;
+                    const double albedo = directionalAlbedo(brdf, whiteMaterial(0.0, r), NoV, kSamples).x;
                     if (albedo > highest) {
                         highest = albedo;
                         highestNoV = NoV;
@@ -107,7 +101,7 @@ private Q_SLOTS:
                   multiScatter ? "on" : "off", highest, highestNoV, highestRoughness);
             QVERIFY(highest > 1.3);
             // Head-on it is close to 1 (1 - F0 + F0).
-            const double headOn = directionalAlbedo(brdf, white(0.0, 0.5), 1.0, kSamples).x;
+            const double headOn = directionalAlbedo(brdf, whiteMaterial(0.0, 0.5), 1.0, kSamples).x;
             QVERIFY(std::abs(headOn - 1.0) < 0.05);
         }
     }
@@ -125,7 +119,7 @@ private Q_SLOTS:
                 double lowest = 2.0;
                 for (double r : kRoughness)
                     for (double NoV : kNoV) {
-                        const double albedo = directionalAlbedo(brdf, white(0.0, r), NoV, kSamples).x;
+                        const double albedo = directionalAlbedo(brdf, whiteMaterial(0.0, r), NoV, kSamples).x;
                         highest = std::max(highest, albedo);
                         if (NoV >= 0.02)
                             lowest = std::min(lowest, albedo);
@@ -152,11 +146,11 @@ private Q_SLOTS:
         double highest = 0.0;
         for (double r : kRoughness)
             for (double NoV : kNoV)
-                highest = std::max(highest, directionalAlbedo(brdf, white(0.0, r), NoV, kSamples).x);
+                highest = std::max(highest, directionalAlbedo(brdf, whiteMaterial(0.0, r), NoV, kSamples).x);
         qInfo("LearnOpenGL composition, white dielectric: max albedo %.3f", highest);
         QVERIFY(highest > 1.0);
         // Its metal, with the IBL remapping, still loses energy without compensation.
-        QVERIFY(directionalAlbedo(brdf, white(1.0, 1.0), 0.5, kSamples).x < 0.95);
+        QVERIFY(directionalAlbedo(brdf, whiteMaterial(1.0, 1.0), 0.5, kSamples).x < 0.95);
     }
 
     // KHR_materials_clearcoat: f = (1 - w) f_base + w D V with w = clearcoat F(n.v), so the coated
@@ -193,7 +187,7 @@ private Q_SLOTS:
         double largestLoss = 0.0;
         for (double r : {0.1, 0.5, 1.0})
             for (double NoV : kNoVResolved) {
-                MaterialInfo base = white(metallic, r);
+                MaterialInfo base = whiteMaterial(metallic, r);
                 MaterialInfo coated = base;
                 coated.clearcoat = clearcoat;
                 coated.clearcoatRoughness = coatRoughness;
@@ -225,7 +219,7 @@ private Q_SLOTS:
         ShadingModel model;
         model.multiScatter = false;
         const MaterialBrdf brdf(model, m_table);
-        MaterialInfo black = white(0.0, 0.0);
+        MaterialInfo black = whiteMaterial(0.0, 0.0);
         black.baseColor = glm::dvec3(0.0);
         const double albedo = directionalAlbedo(brdf, black, 1.0, kSamples).x;
         QVERIFY2(std::abs(albedo - 0.04) < 2e-3, qPrintable(QString::number(albedo)));

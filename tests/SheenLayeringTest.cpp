@@ -12,6 +12,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "TestSupport.h"
 #include "core/shading/Brdf.h"
 #include "core/shading/DfgTable.h"
 #include "core/shading/MaterialBrdf.h"
@@ -25,14 +26,7 @@ namespace {
 const double kNoV[] = {0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 1.0};
 constexpr int kSamples = 4096;
 
-MaterialInfo white(double metallic, double roughness)
-{
-    MaterialInfo m;
-    m.baseColor = glm::dvec3(1.0);
-    m.metallic = metallic;
-    m.perceptualRoughness = roughness;
-    return m;
-}
+using test::whiteMaterial;
 
 } // namespace
 
@@ -85,7 +79,7 @@ private Q_SLOTS:
         QFETCH(double, roughness);
         QFETCH(double, red);
         const MaterialBrdf brdf(ShadingModel {}, m_table);
-        MaterialInfo m = white(0.3, 0.5);
+        MaterialInfo m = whiteMaterial(0.3, 0.5);
         m.baseColor = glm::dvec3(0.2, 0.6, 0.9);
         m.sheenColor = glm::dvec3(red, 0.5, 0.25);
         m.sheenRoughness = roughness;
@@ -149,7 +143,7 @@ private Q_SLOTS:
         double largestLoss = 0.0;
         for (double r : {0.2, 0.6})
             for (double NoV : kNoV) {
-                MaterialInfo m = white(metallic, r);
+                MaterialInfo m = whiteMaterial(metallic, r);
                 m.sheenColor = glm::dvec3(1.0);
                 m.sheenRoughness = sheenRoughness;
                 m.clearcoat = clearcoat;
@@ -177,7 +171,7 @@ private Q_SLOTS:
     void noSheenChangesNothing()
     {
         const MaterialBrdf brdf(ShadingModel {}, m_table);
-        MaterialInfo m = white(0.3, 0.4);
+        MaterialInfo m = whiteMaterial(0.3, 0.4);
         m.baseColor = glm::dvec3(0.8, 0.3, 0.1);
         const glm::dvec3 v(0.6, 0.0, 0.8);
         const glm::dvec3 l(-0.3, 0.4, std::sqrt(1.0 - 0.25));

@@ -12,7 +12,21 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/shading/MaterialBrdf.h"
+
 namespace facet::test {
+
+// The white furnace's material: base colour 1, IOR 1.5, the given metallic and perceptual
+// roughness (its albedo is 1 where the model compensates multiple scattering).
+inline MaterialInfo whiteMaterial(double metallic, double roughness)
+{
+    MaterialInfo m;
+    m.baseColor = glm::dvec3(1.0);
+    m.metallic = metallic;
+    m.perceptualRoughness = roughness;
+    m.ior = 1.5;
+    return m;
+}
 
 // Root of the sample data fetched by packaging/fetch-assets.sh ($FACET_ASSETS_DIR overrides the
 // directory configured at build time).
