@@ -26,6 +26,7 @@
 #include "core/project/AssetCache.h"
 #include "core/project/AssetProject.h"
 #include "core/project/ProjectAssets.h"
+#include "core/project/WedgeSweep.h"
 #include "render/FrameRenderer.h"
 #include "render/HeadlessGLContext.h"
 #include "render/IblSettings.h"
@@ -354,22 +355,20 @@ SheetGrid sheetGrid(const SheetRequest& request)
 std::vector<std::string> sheetWarnings(const SheetRequest& request, const SheetGrid& grid)
 {
     std::vector<std::string> warnings;
-    // An axis that changes nothing in any cell (WedgeAxis::noEffectReason, asked of every cell:
+    // An axis that changes nothing in any cell (core/project/WedgeSweep, asked of every cell:
     // the other axis may set what this one needs, as --wedge2 clearcoat=0,1 does for
     // --wedge clearcoatRoughness).
     const auto check = [&](const char* option, const WedgeAxis* axis, bool rows) {
         if (!axis)
             return;
-        std::string reason;
+        std::vector<Project> cells;
         const std::size_t others = rows ? grid.columns.size() : grid.rows.size();
-        for (std::size_t i = 0; i < others; ++i) {
-            reason = axis->noEffectReason(
-                rows ? grid.cellProject(request, 0, i) : grid.cellProject(request, i, 0));
-            if (reason.empty())
-                return;
-        }
-        warnings.push_back(
-            std::string(option) + " " + toString(axis->parameter) + " sweeps nothing: " + reason);
+        for (std::size_t i = 0; i < others; ++i)
+            cells.push_back(rows ? grid.cellProject(request, 0, i) : grid.cellProject(request, i, 0));
+        const std::string reason = noEffectReasonInEvery(*axis, cells);
+        if (!reason.empty())
+            warnings.push_back(
+                std::string(option) + " " + toString(axis->parameter) + " sweeps nothing: " + reason);
     };
     check("--wedge", request.wedge ? &*request.wedge : nullptr, true);
     check("--wedge2", request.wedge2 ? &*request.wedge2 : nullptr, false);

@@ -125,6 +125,8 @@ private Q_SLOTS:
     void frameStatisticsDescribeTheShownView();
     void wedgeAxesDialog_data();
     void wedgeAxesDialog();
+    void wedgeAxesDialogNamesAnAxisThatSweepsNothing_data();
+    void wedgeAxesDialogNamesAnAxisThatSweepsNothing();
     void wedgeAxesFromTheCellMenu();
 
 private:
@@ -604,7 +606,7 @@ void CompareWindowUiTest::wedgeAxesDialog()
     Project project = baseProject();
     project.compare.mode = CompareMode::Wedge;
     setProject(project);
-    WedgeAxesDialog dialog(m_document->project().compare.wedge, m_window);
+    WedgeAxesDialog dialog(m_document->project(), m_window);
     dialog.show();
     QVERIFY(QTest::qWaitForWindowExposed(&dialog));
     QCOMPARE(dialog.rows()->parameterCombo()->currentText(), QStringLiteral("roughness"));
@@ -641,6 +643,53 @@ void CompareWindowUiTest::wedgeAxesDialog()
         m_document->undoStack()->undo();
         QCOMPARE(m_document->project().compare.wedge, project.compare.wedge);
     }
+}
+
+// An axis that changes nothing in any cell is named under the editors (as `facet sheet` warns
+// of it), and the dialog still accepts it; an axis that the other one makes count is not named.
+// The project's material has no coat and no normal map.
+void CompareWindowUiTest::wedgeAxesDialogNamesAnAxisThatSweepsNothing_data()
+{
+    QTest::addColumn<DialogEdit>("edit");
+    QTest::addColumn<QString>("warning"); // what the warning says, or empty: none shown
+    const auto rows = [](WedgeAxesDialog& d) { return d.rows(); };
+    const auto columns = [](WedgeAxesDialog& d) { return d.columns(); };
+    QTest::newRow("roughness x metallic") << DialogEdit([](WedgeAxesDialog&) {}) << QString();
+    QTest::newRow("coat roughness without a coat")
+        << DialogEdit([=](WedgeAxesDialog& d) {
+               chooseParameter(rows(d), QStringLiteral("clearcoatRoughness"));
+               typeValues(rows(d), QStringLiteral("0, 0.5"));
+           })
+        << QStringLiteral(
+               "Rows: clearcoatRoughness sweeps nothing: clearcoatRoughness shapes the clear coat, "
+               "and the material has none (clearcoat 0)");
+    QTest::newRow("coat roughness across a coat axis") << DialogEdit([=](WedgeAxesDialog& d) {
+        chooseParameter(rows(d), QStringLiteral("clearcoatRoughness"));
+        typeValues(rows(d), QStringLiteral("0, 0.5"));
+        chooseParameter(columns(d), QStringLiteral("clearcoat"));
+        typeValues(columns(d), QStringLiteral("0, 1"));
+    }) << QString();
+    QTest::newRow("normal strength without a normal map") << DialogEdit([=](WedgeAxesDialog& d) {
+        chooseParameter(columns(d), QStringLiteral("normal"));
+        typeValues(columns(d), QStringLiteral("0, 1"));
+    }) << QStringLiteral("Columns: normal sweeps nothing: normal strength scales a normal map");
+}
+
+void CompareWindowUiTest::wedgeAxesDialogNamesAnAxisThatSweepsNothing()
+{
+    QFETCH(DialogEdit, edit);
+    QFETCH(QString, warning);
+    Project project = baseProject();
+    project.compare.mode = CompareMode::Wedge;
+    setProject(project);
+    WedgeAxesDialog dialog(m_document->project(), m_window);
+    dialog.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dialog));
+    edit(dialog);
+    QVERIFY(dialog.okButton()->isEnabled());
+    QCOMPARE(dialog.warningLabel()->isVisibleTo(&dialog), !warning.isEmpty());
+    if (!warning.isEmpty())
+        QVERIFY2(dialog.warningLabel()->text().contains(warning), qPrintable(dialog.warningLabel()->text()));
 }
 
 void CompareWindowUiTest::wedgeAxesFromTheCellMenu()

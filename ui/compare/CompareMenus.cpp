@@ -124,9 +124,8 @@ void fillAB(QMenu& menu, CompareController& controller, const Project& project)
 
 void fillWedge(QMenu& menu, CompareController& controller, const Project& project, QWidget* dialogParent)
 {
-    const WedgeLayout wedge = project.compare.wedge;
     QAction* axes = menu.addAction(tr("Wedge &Axes…"), &controller,
-        [&controller, dialogParent, wedge] { WedgeAxesDialog::edit(controller, wedge, dialogParent); });
+        [&controller, dialogParent, project] { WedgeAxesDialog::edit(controller, project, dialogParent); });
     axes->setObjectName(QStringLiteral("wedgeAxesAction"));
 }
 

@@ -1,23 +1,28 @@
 #include "ui/compare/WedgeAxesDialog.h"
 
+#include "core/project/WedgeSweep.h"
 #include "ui/compare/CompareController.h"
 #include "ui/compare/WedgeAxisEditor.h"
 #include "ui/widgets/WindowMessages.h"
 
 #include <QDialogButtonBox>
 #include <QGroupBox>
+#include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QVBoxLayout>
 
 namespace facet {
 
-WedgeAxesDialog::WedgeAxesDialog(const WedgeLayout& wedge, QWidget* parent)
+WedgeAxesDialog::WedgeAxesDialog(const Project& project, QWidget* parent)
     : QDialog(parent)
     , m_rows(new WedgeAxisEditor(false, this))
     , m_columns(new WedgeAxisEditor(true, this))
+    , m_warning(new QLabel(this))
     , m_buttons(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this))
+    , m_project(project)
 {
+    const WedgeLayout& wedge = project.compare.wedge;
     setObjectName(QStringLiteral("wedgeAxesDialog"));
     setWindowTitle(tr("Wedge Axes"));
     m_rows->setObjectName(QStringLiteral("wedgeRowsEditor"));
@@ -34,6 +39,9 @@ WedgeAxesDialog::WedgeAxesDialog(const WedgeLayout& wedge, QWidget* parent)
     };
     group(tr("Rows"), m_rows);
     group(tr("Columns"), m_columns);
+    m_warning->setObjectName(QStringLiteral("wedgeWarning"));
+    m_warning->setWordWrap(true);
+    layout->addWidget(m_warning);
     layout->addWidget(m_buttons);
     connect(m_buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
     connect(m_buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
@@ -50,7 +58,33 @@ QPushButton* WedgeAxesDialog::okButton() const
 
 void WedgeAxesDialog::updateOk()
 {
-    okButton()->setEnabled(m_rows->isValid() && m_columns->isValid());
+    const bool valid = m_rows->isValid() && m_columns->isValid();
+    okButton()->setEnabled(valid);
+    // The axes as they would be, asked whether each sweeps something in some cell.
+    QStringList warnings;
+    if (valid) {
+        WedgeLayout wedge;
+        std::string problem;
+        const std::optional<WedgeAxis> rows = WedgeAxis::parse(m_rows->text(), &problem);
+        std::optional<WedgeAxis> columns;
+        if (!m_columns->text().empty())
+            columns = WedgeAxis::parse(m_columns->text(), &problem);
+        if (rows && (columns || m_columns->text().empty())) {
+            wedge.rows = *rows;
+            wedge.columns = columns;
+            for (const bool columnsAxis : {false, true}) {
+                const std::string reason = sweepsNothing(wedge, m_project, columnsAxis);
+                if (!reason.empty())
+                    warnings << (columnsAxis ? tr("Columns: %1 sweeps nothing: %2")
+                                             : tr("Rows: %1 sweeps nothing: %2"))
+                                    .arg(QString::fromLatin1(
+                                             toString((columnsAxis ? *columns : *rows).parameter)),
+                                        WindowMessages::fromCore(reason));
+            }
+        }
+    }
+    m_warning->setText(warnings.join(u'\n'));
+    m_warning->setVisible(!warnings.isEmpty());
 }
 
 bool WedgeAxesDialog::applyTo(CompareController& controller, QString* error) const
@@ -63,9 +97,9 @@ bool WedgeAxesDialog::applyTo(CompareController& controller, QString* error) con
     return false;
 }
 
-void WedgeAxesDialog::edit(CompareController& controller, const WedgeLayout& wedge, QWidget* parent)
+void WedgeAxesDialog::edit(CompareController& controller, const Project& project, QWidget* parent)
 {
-    WedgeAxesDialog dialog(wedge, parent);
+    WedgeAxesDialog dialog(project, parent);
     if (dialog.exec() != QDialog::Accepted)
         return;
     QString error;
