@@ -469,10 +469,11 @@ void MapLoadingUiTest::decodedMapsAreReleasedOnceOnTheGpu()
     QVERIFY(!MapImageCache::shared().isHeld(packed.toStdString()));
     // The scene decodes each file once: 2. The dock's thumbnails share that decode while it is
     // held; one the thumbnail loader reaches only after the release (its queue behind, as under
-    // the sanitizers, where this measured 3 in half the runs) decodes its file again: at most one
-    // more. (Coalescing of concurrent decodes is packedFileAndThumbnailsDecodeOnce's to hold.)
+    // the sanitizers, where this measured 3 in half the runs and 4 once, both thumbnails late)
+    // decodes its file again: at most one more per file. (Coalescing of concurrent decodes is
+    // packedFileAndThumbnailsDecodeOnce's to hold.)
     const std::uint64_t decoded = MapImage::loadCount() - loadsBefore;
-    QVERIFY2(decoded == 2 || decoded == 3, qPrintable(QString::number(decoded)));
+    QVERIFY2(decoded >= 2 && decoded <= 4, qPrintable(QString::number(decoded)));
 
     // Another frame (an orbit) draws from the GPU, decodes nothing.
     QSignalSpy frame(m_viewport, &ViewportWidget::frameRendered);
