@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "render/GLTexture.h"
 #include "render/RenderScene.h"
 #include "render/RenderStats.h"
 #include "render/ShaderVariant.h"
@@ -94,6 +95,7 @@ private:
     std::unique_ptr<GpuMesh> m_mesh;
     std::shared_ptr<TextureCache> m_textures;
     unsigned m_emptyVao = 0;
+    GLTexture m_sheenLut; // render/SheenLut.h: made when a sheen material is first drawn
     unsigned m_msaaFramebuffer = 0;
     unsigned m_msaaColor = 0;
     unsigned m_msaaDepth = 0;

@@ -42,12 +42,13 @@ constexpr std::array<const char*, kSurfaceFeatureBits> kFeatureDefines = {
     "HAS_CLEARCOAT_ROUGHNESS_MAP",
     "HAS_CLEARCOAT_NORMAL_MAP",
     "CLEARCOAT_ROUGHNESS_TEXEL_FROM_CLEARCOAT",
+    "MATERIAL_SHEEN",
+    "HAS_SHEEN_COLOR_MAP",
+    "HAS_SHEEN_ROUGHNESS_MAP",
+    "SHEEN_ROUGHNESS_TEXEL_FROM_SHEEN_COLOR",
 };
 
 } // namespace
-
-
-
 
 SurfaceFeature mapFeature(MapSlot slot)
 {
@@ -68,12 +69,15 @@ SurfaceFeature mapFeature(MapSlot slot)
         return SurfaceFeature::HasClearcoatRoughnessMap;
     case MapSlot::ClearcoatNormal:
         return SurfaceFeature::HasClearcoatNormalMap;
+    case MapSlot::SheenColor:
+        return SurfaceFeature::HasSheenColorMap;
+    case MapSlot::SheenRoughness:
+        return SurfaceFeature::HasSheenRoughnessMap;
     case MapSlot::Emissive:
         break;
     }
     return SurfaceFeature::HasEmissiveMap;
 }
-
 
 SurfaceFeatures surfaceFeaturesFor(const ShadingModel& model)
 {
@@ -108,7 +112,10 @@ bool textureMatters(const Material& material, MapSlot slot)
         return false;
     switch (slot) {
     case MapSlot::Clearcoat:
+    case MapSlot::SheenColor:
         return true; // usesSlot: the factor is above 0
+    case MapSlot::SheenRoughness:
+        return material.sheenRoughness() != 0.0;
     case MapSlot::ClearcoatRoughness:
         return material.clearcoatRoughness() != 0.0;
     case MapSlot::ClearcoatNormal:
@@ -148,8 +155,12 @@ SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMap
         f = f | SurfaceFeature::IrradianceSH;
     if (material.unlit)
         f = f | SurfaceFeature::Unlit;
-    else if (material.hasClearcoat())
-        f = f | SurfaceFeature::Clearcoat;
+    else {
+        if (material.hasClearcoat())
+            f = f | SurfaceFeature::Clearcoat;
+        if (material.hasSheen())
+            f = f | SurfaceFeature::Sheen;
+    }
     return f;
 }
 
@@ -159,9 +170,12 @@ SurfaceFeatures sharedTexelFeatures(const Material& material, SurfaceFeatures fe
     const auto same = [&](MapSlot earlier, MapSlot later) {
         const auto a = std::size_t(earlier);
         const auto b = std::size_t(later);
+        // An sRGB texture's alpha is linear (GL_SRGB8_ALPHA8), so a map that reads alpha can share
+        // the texel of one that reads the colour as sRGB (the sheen's packing).
+        const bool sameEncoding = material.maps[a].colorSpace == material.maps[b].colorSpace
+            || material.maps[b].channel == MapChannel::A;
         return hasFeature(features, mapFeature(earlier)) && hasFeature(features, mapFeature(later))
-            && textures[a] && textures[a] == textures[b]
-            && material.maps[a].colorSpace == material.maps[b].colorSpace
+            && textures[a] && textures[a] == textures[b] && sameEncoding
             && material.maps[a].uv == material.maps[b].uv
             && material.maps[a].texCoord == material.maps[b].texCoord
             && material.maps[a].sampler == material.maps[b].sampler;
@@ -175,6 +189,8 @@ SurfaceFeatures sharedTexelFeatures(const Material& material, SurfaceFeatures fe
         f = f | SurfaceFeature::OcclusionTexelFromRoughness;
     if (same(MapSlot::Clearcoat, MapSlot::ClearcoatRoughness))
         f = f | SurfaceFeature::ClearcoatRoughnessTexelFromClearcoat;
+    if (same(MapSlot::SheenColor, MapSlot::SheenRoughness))
+        f = f | SurfaceFeature::SheenRoughnessTexelFromSheenColor;
     return f;
 }
 
@@ -189,6 +205,8 @@ bool samplesOwnTexture(SurfaceFeatures features, MapSlot slot)
             && !hasFeature(features, SurfaceFeature::OcclusionTexelFromRoughness);
     if (slot == MapSlot::ClearcoatRoughness)
         return !hasFeature(features, SurfaceFeature::ClearcoatRoughnessTexelFromClearcoat);
+    if (slot == MapSlot::SheenRoughness)
+        return !hasFeature(features, SurfaceFeature::SheenRoughnessTexelFromSheenColor);
     return true;
 }
 

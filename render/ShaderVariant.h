@@ -87,8 +87,17 @@ enum class SurfaceFeature : uint64_t {
     // CLEARCOAT_ROUGHNESS_TEXEL_FROM_CLEARCOAT: the extension's packing (strength R, roughness G
     // of one texture) read with one fetch, as the ORM slots are.
     ClearcoatRoughnessTexelFromClearcoat = 1ull << 31,
+    // MATERIAL_SHEEN: KHR_materials_sheen's lobe (Material::hasSheen: a colour that is not black)
+    // and the base's albedo scaling under it; the sheen's albedo table is bound only with it.
+    Sheen = 1ull << 32,
+    // The sheen's maps (only with Sheen): HAS_SHEEN_COLOR_MAP, HAS_SHEEN_ROUGHNESS_MAP.
+    HasSheenColorMap = 1ull << 33,
+    HasSheenRoughnessMap = 1ull << 34,
+    // SHEEN_ROUGHNESS_TEXEL_FROM_SHEEN_COLOR: the extension's packing (colour RGB, roughness A of
+    // one texture) read with one fetch.
+    SheenRoughnessTexelFromSheenColor = 1ull << 35,
 };
-inline constexpr int kSurfaceFeatureBits = 32;
+inline constexpr int kSurfaceFeatureBits = 36;
 static_assert(kSurfaceFeatureBits <= 64);
 
 using SurfaceFeatures = uint64_t;

@@ -347,7 +347,8 @@ private Q_SLOTS:
         QTest::addColumn<bool>("binary");
         for (const char* feature : {"constants", "every map", "shared transform", "different transforms",
                  "ior", "clearcoat", "clearcoat, smooth", "unlit, clearcoat", "clearcoat maps",
-                 "clearcoat maps, coat off", "mask", "blend", "single-sided", "unlit", "two of one name",
+                 "clearcoat maps, coat off", "sheen", "sheen maps", "sheen maps, sheen off", "unlit, sheen",
+                 "clearcoat and sheen maps", "mask", "blend", "single-sided", "unlit", "two of one name",
                  "samplers", "second UV set", "second UV set, mesh without it"}) {
             QTest::newRow(qPrintable(QStringLiteral("%1, .gltf").arg(QLatin1String(feature))))
                 << QString::fromLatin1(feature) << false;
@@ -384,7 +385,22 @@ private Q_SLOTS:
                 m.setClearcoat(feature.contains(QStringLiteral("off")) ? 0.0 : 0.7,
                     feature.contains(QStringLiteral("smooth")) ? 0.0 : 0.15);
             }
-            if (feature.startsWith(QStringLiteral("clearcoat maps"))) {
+            if (feature.contains(QStringLiteral("sheen")))
+                m.setSheen(
+                    feature.contains(QStringLiteral("off")) ? glm::dvec3(0.0) : glm::dvec3(0.9, 0.4, 0.2),
+                    0.35);
+            if (feature.contains(QStringLiteral("sheen maps"))) {
+                // The colour (sRGB, RGB) from one file and the roughness from another's green:
+                // baked into one RGBA texture, the roughness in its alpha.
+                writeVariedPng(dir.filePath(QStringLiteral("sheen.png")), 7, 3);
+                writeVariedPng(dir.filePath(QStringLiteral("sheenroughness.png")), 8, 3);
+                m.map(MapSlot::SheenColor).path = dir.filePath(QStringLiteral("sheen.png")).toStdString();
+                m.map(MapSlot::SheenRoughness).path
+                    = dir.filePath(QStringLiteral("sheenroughness.png")).toStdString();
+                m.map(MapSlot::SheenRoughness).channel = MapChannel::G;
+            }
+            if (feature.startsWith(QStringLiteral("clearcoat maps"))
+                || feature == QStringLiteral("clearcoat and sheen maps")) {
                 // Strength and roughness from two files (baked into one texture, R and G), and the
                 // coat's own normal map with its scale.
                 writeVariedPng(dir.filePath(QStringLiteral("coat.png")), 5, 3);
@@ -476,6 +492,28 @@ private Q_SLOTS:
             const bool coated
                 = feature.startsWith(QStringLiteral("clearcoat")) && !feature.contains(QStringLiteral("off"));
             QCOMPARE(used.contains(QStringLiteral("KHR_materials_clearcoat")), coated);
+            const bool sheened = feature.contains(QStringLiteral("sheen"))
+                && !feature.contains(QStringLiteral("off")) && !feature.startsWith(QStringLiteral("unlit"));
+            QCOMPARE(used.contains(QStringLiteral("KHR_materials_sheen")), sheened);
+            // The sheen's one texture: colour and roughness read the same image.
+            const QJsonObject sheen = json.value(QStringLiteral("materials"))
+                                          .toArray()
+                                          .at(0)
+                                          .toObject()
+                                          .value(QStringLiteral("extensions"))
+                                          .toObject()
+                                          .value(QStringLiteral("KHR_materials_sheen"))
+                                          .toObject();
+            const bool sheenMaps = sheened && feature.contains(QStringLiteral("maps"));
+            QCOMPARE(sheen.contains(QStringLiteral("sheenColorTexture")), sheenMaps);
+            QCOMPARE(sheen.contains(QStringLiteral("sheenRoughnessTexture")), sheenMaps);
+            if (sheenMaps)
+                QCOMPARE(sheen.value(QStringLiteral("sheenColorTexture"))
+                             .toObject()
+                             .value(QStringLiteral("index")),
+                    sheen.value(QStringLiteral("sheenRoughnessTexture"))
+                        .toObject()
+                        .value(QStringLiteral("index")));
             // The coat's textures: one for the strength (R) and roughness (G), one for its normal.
             const QJsonObject coat = json.value(QStringLiteral("materials"))
                                          .toArray()
@@ -529,6 +567,20 @@ private Q_SLOTS:
                                 : coated ? a.clearcoatRoughness()
                                          : 0.0))
                 < 1e-9);
+            // The sheen likewise.
+            const bool sheened = !a.unlit && a.hasSheen();
+            const bool sheenBaked = sheened
+                && (a.map(MapSlot::SheenColor).hasTexture() || a.map(MapSlot::SheenRoughness).hasTexture());
+            QVERIFY(glm::length(b.sheenColor()
+                        - (sheenBaked     ? glm::dvec3(1.0)
+                                : sheened ? a.sheenColor()
+                                          : glm::dvec3(0.0)))
+                < 1e-9);
+            QVERIFY(std::abs(b.sheenRoughness()
+                        - (sheenBaked     ? 1.0
+                                : sheened ? a.sheenRoughness()
+                                          : 0.0))
+                < 1e-9);
             for (const MapSlot slot : kAllMapSlots) {
                 // A lobe that is off (or a lobe on an unlit material) writes none of its maps.
                 const bool exported = a.usesSlot(slot) && (lobeOf(slot) == MaterialLobe::Core || !a.unlit);
@@ -569,7 +621,13 @@ private Q_SLOTS:
                         std::abs(ia.occlusion - ib.occlusion), std::abs(ia.alpha - ib.alpha)});
                     if (!a.unlit)
                         worstScalar = std::max({worstScalar, std::abs(ia.clearcoat - ib.clearcoat),
-                            std::abs(ia.clearcoatRoughness - ib.clearcoatRoughness)});
+                            std::abs(ia.clearcoatRoughness - ib.clearcoatRoughness),
+                            std::abs(ia.sheenRoughness - ib.sheenRoughness)});
+                    if (!a.unlit)
+                        for (int c = 0; c < 3; ++c)
+                            worstColor = std::max(worstColor,
+                                std::abs(tonemap::linearToSrgb(ia.sheenColor[c])
+                                    - tonemap::linearToSrgb(ib.sheenColor[c])));
                     for (int c = 0; c < 3; ++c)
                         worstColor = std::max({worstColor,
                             std::abs(tonemap::linearToSrgb(ia.baseColor[c])

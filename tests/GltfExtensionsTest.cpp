@@ -41,6 +41,23 @@ class GltfExtensionsTest : public QObject {
 
     QTemporaryDir m_dir;
     QString path(const QString& name) const { return m_dir.filePath(name); }
+    // `w` (which may hold textures already) with a quad of one material, `name`, whose one
+    // extension is `extension` with the JSON `object`, written to `file` and imported.
+    std::optional<GltfAsset> importWithExtension(GltfWriter& w, const char* name, const char* extension,
+        const QByteArray& object, const QString& file, std::string* error, std::string* warnings) const
+    {
+        QJsonObject material;
+        material[QLatin1String("name")] = QLatin1String(name);
+        material[QLatin1String("extensions")]
+            = QJsonObject {{QLatin1String(extension), QJsonDocument::fromJson(object).object()}};
+        w.addNode(w.addQuad(w.addMaterial(material)));
+        w.json()[QLatin1String("extensionsUsed")] = QJsonArray {QLatin1String(extension)};
+        if (!w.write(path(file), Storage::DataUri)) {
+            *error = "could not write " + file.toStdString();
+            return std::nullopt;
+        }
+        return importGltf(path(file).toStdString(), error, warnings);
+    }
 
 private Q_SLOTS:
     // The extensions of the material model, a row per field and per kind of bad value: what is read,
@@ -226,6 +243,124 @@ private Q_SLOTS:
         }
         QVERIFY(near(m.map(MapSlot::ClearcoatNormal).factor.x, normalScale));
         QCOMPARE(m.clearcoat(), 1.0);
+    }
+
+    // KHR_materials_sheen's factors: the extension's defaults (black, 0: no sheen), values clamped
+    // with a note naming the field, fields of the wrong type refused with a note, nothing crashes.
+    void sheenFactors_data()
+    {
+        QTest::addColumn<QByteArray>("sheen"); // the extension's object
+        QTest::addColumn<double>("red"); // the colour's components read back
+        QTest::addColumn<double>("green");
+        QTest::addColumn<double>("blue");
+        QTest::addColumn<double>("roughness");
+        QTest::addColumn<QString>("warning"); // part of the notes, or empty for none
+        const auto row = [](const char* name, const char* json, glm::dvec3 color, double roughness,
+                             const char* warning) {
+            QTest::newRow(name) << QByteArray(json) << color.r << color.g << color.b << roughness
+                                << QString::fromLatin1(warning);
+        };
+        row("colour and roughness", R"({"sheenColorFactor": [0.9, 0.5, 0.1], "sheenRoughnessFactor": 0.6})",
+            {0.9, 0.5, 0.1}, 0.6, "");
+        row("empty (the extension's defaults: no sheen)", "{}", glm::dvec3(0.0), 0.0, "");
+        row("roughness only", R"({"sheenRoughnessFactor": 0.3})", glm::dvec3(0.0), 0.3, "");
+        row("colour above 1", R"({"sheenColorFactor": [2, 0.5, 0.5]})", {1.0, 0.5, 0.5}, 0.0,
+            "KHR_materials_sheen.sheenColorFactor 2 is outside Facet's [0, 1]: 1 used");
+        row("colour of two numbers", R"({"sheenColorFactor": [1, 1]})", glm::dvec3(0.0), 0.0,
+            "KHR_materials_sheen.sheenColorFactor is not an array of three numbers: black used");
+        row("colour a string", R"({"sheenColorFactor": "velvet"})", glm::dvec3(0.0), 0.0,
+            "KHR_materials_sheen.sheenColorFactor is not an array of three numbers");
+        row("roughness a string", R"({"sheenColorFactor": [1, 1, 1], "sheenRoughnessFactor": "soft"})",
+            glm::dvec3(1.0), 0.0, "KHR_materials_sheen.sheenRoughnessFactor is not a number: 0 used");
+        row("roughness negative", R"({"sheenColorFactor": [1, 1, 1], "sheenRoughnessFactor": -1})",
+            glm::dvec3(1.0), 0.0,
+            "KHR_materials_sheen.sheenRoughnessFactor -1 is outside Facet's [0, 1]: 0 used");
+        row("colour texture that does not exist",
+            R"({"sheenColorFactor": [1, 1, 1], "sheenColorTexture": {"index": 9}})", glm::dvec3(1.0), 0.0,
+            "KHR_materials_sheen.sheenColorTexture names texture 9, which does not exist");
+        row("roughness texture not a textureInfo",
+            R"({"sheenColorFactor": [1, 1, 1], "sheenRoughnessTexture": 2})", glm::dvec3(1.0), 0.0,
+            "KHR_materials_sheen.sheenRoughnessTexture is not a textureInfo with an integer index");
+    }
+    void sheenFactors()
+    {
+        QFETCH(QByteArray, sheen);
+        QFETCH(double, red);
+        QFETCH(double, green);
+        QFETCH(double, blue);
+        QFETCH(double, roughness);
+        QFETCH(QString, warning);
+        GltfWriter w;
+        std::string error, warnings;
+        const auto asset = importWithExtension(
+            w, "M", "KHR_materials_sheen", sheen, QStringLiteral("sheen.gltf"), &error, &warnings);
+        QVERIFY2(asset, error.c_str());
+        const Material& m = asset->materials.at(0);
+        std::string problem;
+        QVERIFY2(m.validate(&problem), problem.c_str());
+        QVERIFY(near(m.sheenColor().r, red));
+        QVERIFY(near(m.sheenColor().g, green));
+        QVERIFY(near(m.sheenColor().b, blue));
+        QVERIFY(near(m.sheenRoughness(), roughness));
+        QCOMPARE(m.hasSheen(), red + green + blue > 0.0);
+        for (MapSlot slot : {MapSlot::SheenColor, MapSlot::SheenRoughness})
+            QVERIFY2(!m.map(slot).hasTexture(), toString(slot));
+        if (warning.isEmpty())
+            QVERIFY2(warnings.empty(), warnings.c_str());
+        else
+            QVERIFY2(QString::fromStdString(warnings).contains(warning), warnings.c_str());
+    }
+
+    // KHR_materials_sheen's two textures, each alone and as one RGBA texture (the extension's
+    // packing: colour RGB in sRGB, roughness in A, linear).
+    void sheenTextures_data()
+    {
+        QTest::addColumn<QByteArray>("sheen");
+        QTest::addColumn<QString>("colorFile");
+        QTest::addColumn<QString>("roughnessFile");
+        const QString none;
+        QTest::newRow("colour alone") << QByteArray(R"({"sheenColorFactor": [1, 1, 1],
+                 "sheenColorTexture": {"index": 0}})")
+                                      << QStringLiteral("a.png") << none;
+        QTest::newRow("roughness alone")
+            << QByteArray(R"({"sheenColorFactor": [1, 1, 1], "sheenRoughnessFactor": 1,
+                 "sheenRoughnessTexture": {"index": 1}})")
+            << none << QStringLiteral("b.png");
+        QTest::newRow("one RGBA texture for both") << QByteArray(R"({"sheenColorFactor": [1, 1, 1],
+                 "sheenRoughnessFactor": 1, "sheenColorTexture": {"index": 0},
+                 "sheenRoughnessTexture": {"index": 0}})")
+                                                   << QStringLiteral("a.png") << QStringLiteral("a.png");
+    }
+    void sheenTextures()
+    {
+        QFETCH(QByteArray, sheen);
+        QFETCH(QString, colorFile);
+        QFETCH(QString, roughnessFile);
+        GltfWriter w;
+        for (const char* name : {"a.png", "b.png"}) {
+            QImage image(4, 4, QImage::Format_RGBA8888);
+            image.fill(QColor(200, 100, 50, 128));
+            QVERIFY(image.save(path(QLatin1String(name))));
+            w.addTexture(w.addImageUri(QLatin1String(name)));
+        }
+        std::string error, warnings;
+        const auto asset = importWithExtension(
+            w, "Velvet", "KHR_materials_sheen", sheen, QStringLiteral("velvet.gltf"), &error, &warnings);
+        QVERIFY2(asset, error.c_str());
+        QVERIFY2(warnings.empty(), warnings.c_str());
+        const Material& m = asset->materials.at(0);
+        std::string problem;
+        QVERIFY2(m.validate(&problem), problem.c_str());
+        const MaterialMap& color = m.map(MapSlot::SheenColor);
+        const MaterialMap& roughness = m.map(MapSlot::SheenRoughness);
+        QCOMPARE(QString::fromStdString(color.path), colorFile.isEmpty() ? QString() : path(colorFile));
+        QCOMPARE(QString::fromStdString(roughness.path),
+            roughnessFile.isEmpty() ? QString() : path(roughnessFile));
+        QCOMPARE(color.channel, MapChannel::Rgb);
+        QCOMPARE(color.colorSpace, ColorEncoding::SRGB);
+        QCOMPARE(roughness.channel, MapChannel::A);
+        QCOMPARE(roughness.colorSpace, ColorEncoding::Linear);
+        QVERIFY(m.hasSheen());
     }
 };
 

@@ -2,14 +2,16 @@
 // ground truth (core/shading/GroundTruth) in docs/architecture.md's reference view, through the
 // same FrameRenderer path as `facet render --reference-view`: a row per lobe, per parameter and
 // per IBL method (split sum, fis, reference), under the hard studio map, and a white furnace per
-// lobe and method in which no pixel may rise above 1.005. Today's lobe: KHR_materials_clearcoat.
+// lobe and method in which no pixel may rise above 1.005. Lobes: KHR_materials_clearcoat and
+// KHR_materials_sheen.
 //
 // Bounds, relative RMSE over the interior sphere pixels against the truth at 1024 samples: the
 // reference within 2% and fis within 5% (the targets). The split sum's error is mostly
 // its base's (up to 13% on studio for a rough metal, docs/accuracy.md): a lobe may add at most
 // 1% to the error of the same material without it, and a row whose coat is most of the light
 // (over black) holds the coat's own split sum to 8% (measured 6.0% at coat roughness 0.2: the
-// split sum's own error there, as for a bare lobe of that roughness). Each row prints what it measured, with
+// split sum's own error there, as for a bare lobe of that roughness); the sheen's rows have bounds of
+// their own (below). Each row prints what it measured, with
 // the same material's error without the lobe (docs/accuracy.md, "Layered lobes").
 
 #include "core/image/ImageMetrics.h"
@@ -37,16 +39,32 @@ constexpr int kSamples = 1024;
 
 using Row = facet::test::IblMethodCase;
 
-Row coated(const char* name, glm::dvec3 baseColor, double metallic, double roughness, double clearcoat,
-    double clearcoatRoughness, bool light = false)
+// A material of the base and one lobe: a coat of `coat` strength and `coatRoughness`, or a sheen.
+Row lobeRow(const char* name, glm::dvec3 baseColor, double metallic, double roughness, bool light)
 {
     Row row {name};
     row.light = light;
     row.baseColor = baseColor;
     row.metallic = metallic;
     row.roughness = roughness;
+    return row;
+}
+
+Row coated(const char* name, glm::dvec3 baseColor, double metallic, double roughness, double clearcoat,
+    double clearcoatRoughness, bool light = false)
+{
+    Row row = lobeRow(name, baseColor, metallic, roughness, light);
     row.clearcoat = clearcoat;
     row.clearcoatRoughness = clearcoatRoughness;
+    return row;
+}
+
+Row sheened(const char* name, glm::dvec3 baseColor, double metallic, double roughness, glm::dvec3 sheenColor,
+    double sheenRoughness, bool light = false)
+{
+    Row row = lobeRow(name, baseColor, metallic, roughness, light);
+    row.sheenColor = sheenColor;
+    row.sheenRoughness = sheenRoughness;
     return row;
 }
 
@@ -72,6 +90,19 @@ const LobeRow kRows[] = {
     {coated("clearcoat 1, 0.2, over black (1): the coat alone", glm::dvec3(0.0), 0.0, 1.0, 1.0, 0.2), 0.08},
     // A directional light besides the environment: the coat's punctual lobe.
     {coated("clearcoat 1, 0.2, over a red dielectric (0.5), a light", kRed, 0.0, 0.5, 1.0, 0.2, true)},
+    // The split sum's sheen adds up to 2 points to its error on the base (its specular scaling is
+    // the n.v term of the reciprocal one, its light 16 samples): bounds of their own, measured
+    // 4.61% and 12.2% (docs/accuracy.md, "Layered lobes").
+    {sheened("sheen white, 0.5, over a red dielectric (0.5)", kRed, 0.0, 0.5, glm::dvec3(1.0), 0.5), 0.06},
+    {sheened("sheen pink, 0.3, over a dark dielectric (0.8)", glm::dvec3(0.05), 0.0, 0.8,
+        glm::dvec3(1.0, 0.6, 0.7), 0.3)},
+    {sheened("sheen blue, 1, over gold (0.4)", kGold, 1.0, 0.4, glm::dvec3(0.2, 0.4, 1.0), 1.0)},
+    {sheened("sheen white, 0.6, over black (1): the sheen alone", glm::dvec3(0.0), 0.0, 1.0, glm::dvec3(1.0),
+         0.6),
+        0.14},
+    {sheened("sheen white, 0.4, over a red dielectric (0.5), a light", kRed, 0.0, 0.5, glm::dvec3(1.0), 0.4,
+         true),
+        0.05},
 };
 
 const IblMethod kMethods[] = {IblMethod::SplitSum, IblMethod::Fis, IblMethod::Reference};
@@ -128,6 +159,7 @@ private Q_SLOTS:
         // The same material without the lobe, for the method's error on the base alone.
         Row bare = lobeRow.row;
         bare.clearcoat = 0.0;
+        bare.sheenColor = glm::dvec3(0.0);
         const Project bareProject = facet::test::iblMethodCaseProject(bare, IblMethod(method), kSamples);
         const std::optional<Image> bareGpu = m_gpu.render(bareProject, "default", kSize, &error);
         QVERIFY2(bareGpu, error.c_str());
@@ -145,20 +177,28 @@ private Q_SLOTS:
     // Radiance 1 all around: each pixel is the coated BRDF's directional albedo. The coat's lobe
     // has no multiple-scattering compensation (the extension's), so the coat loses what its
     // single scattering loses; nothing may be gained. The lowest pixel is printed.
+    // A white sheen over the same white metal: the extension's layering takes more of the base
+    // than the sheen gives back, so it too only loses (docs/shading.md, "Sheen").
     void furnace_data()
     {
-        QTest::addColumn<double>("coatRoughness");
+        QTest::addColumn<QString>("lobe");
+        QTest::addColumn<double>("lobeRoughness");
         QTest::addColumn<int>("method");
-        for (double coatRoughness : {0.05, 0.5, 1.0})
-            for (IblMethod method : kMethods)
-                QTest::addRow("white metal under a coat of roughness %g, %s", coatRoughness, toString(method))
-                    << coatRoughness << int(method);
+        for (const char* lobe : {"coat", "sheen"})
+            for (double lobeRoughness : {0.05, 0.5, 1.0})
+                for (IblMethod method : kMethods)
+                    QTest::addRow(
+                        "white metal under a %s of roughness %g, %s", lobe, lobeRoughness, toString(method))
+                        << QString::fromLatin1(lobe) << lobeRoughness << int(method);
     }
     void furnace()
     {
-        QFETCH(double, coatRoughness);
+        QFETCH(QString, lobe);
+        QFETCH(double, lobeRoughness);
         QFETCH(int, method);
-        Row row = coated("furnace", glm::dvec3(1.0), 1.0, 0.6, 1.0, coatRoughness);
+        Row row = lobe == QLatin1String("coat")
+            ? coated("furnace", glm::dvec3(1.0), 1.0, 0.6, 1.0, lobeRoughness)
+            : sheened("furnace", glm::dvec3(1.0), 1.0, 0.6, glm::dvec3(1.0), lobeRoughness);
         row.environment = "uniform:1.0";
         std::string error;
         // The reference's own noise must sit well below the 0.5%: 4096 samples.
@@ -175,8 +215,8 @@ private Q_SLOTS:
                         highest = std::max(highest, gpu->at(x, y)[c]);
                         lowest = std::min(lowest, gpu->at(x, y)[c]);
                     }
-        std::printf("  furnace, coat roughness %.2f, %-9s: pixels in [%.4f, %.4f]\n", coatRoughness,
-            toString(IblMethod(method)), lowest, highest);
+        std::printf("  furnace, %s roughness %.2f, %-9s: pixels in [%.4f, %.4f]\n", qPrintable(lobe),
+            lobeRoughness, toString(IblMethod(method)), lowest, highest);
         QVERIFY2(highest <= 1.005f, qPrintable(QString::number(highest)));
     }
 

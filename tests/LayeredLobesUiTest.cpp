@@ -57,6 +57,7 @@ private Q_SLOTS:
         // The default material, lobes off, history empty; the Material dock in front.
         Material material = m_document->project().material();
         material.setClearcoat(0.0, 0.0);
+        material.setSheen(glm::dvec3(0.0), 0.0);
         material.setBaseColor(glm::dvec3(0.6, 0.05, 0.02));
         material.setFactor(MapSlot::Roughness, 0.7);
         m_document->setMaterial(material, QStringLiteral("test setup"));
@@ -66,35 +67,49 @@ private Q_SLOTS:
 
     void turningALobeOnIsOneStep_data()
     {
-        QTest::addColumn<int>("strength"); // the registry's property the section turns on
+        QTest::addColumn<int>("lobe");
+        QTest::addColumn<int>("control"); // a registry slider of the section, shown while the lobe is on
+        QTest::addColumn<double>("onValue"); // that slider's value once the section turns the lobe on
         QTest::addColumn<QString>("undoText");
-        QTest::newRow("clearcoat") << int(MaterialProperty::Clearcoat) << QStringLiteral("Clearcoat On");
+        QTest::newRow("clearcoat") << int(MaterialLobe::Clearcoat) << int(MaterialProperty::Clearcoat) << 1.0
+                                   << QStringLiteral("Clearcoat On");
+        // The sheen turns on white, at roughness 0.5 (0 would be a hairline at the silhouette).
+        QTest::newRow("sheen") << int(MaterialLobe::Sheen) << int(MaterialProperty::SheenRoughness) << 0.5
+                               << QStringLiteral("Sheen On");
     }
     void turningALobeOnIsOneStep()
     {
-        QFETCH(int, strength);
+        QFETCH(int, lobe);
+        QFETCH(int, control);
+        QFETCH(double, onValue);
         QFETCH(QString, undoText);
         MaterialDock* dock = m_window->materialDock();
-        QGroupBox* group = dock->clearcoatGroup();
-        ValueSlider* slider = dock->propertySlider(MaterialProperty(strength));
+        QGroupBox* group
+            = MaterialLobe(lobe) == MaterialLobe::Clearcoat ? dock->clearcoatGroup() : dock->sheenGroup();
+        ValueSlider* slider = dock->propertySlider(MaterialProperty(control));
         QVERIFY(group && slider);
+        QVERIFY(test::focusWidget(group));
         QVERIFY(!group->isChecked() && !slider->isVisible()); // off: the section shows its title only
         // The lobe's maps in the Texture Maps dock come and go with it.
         TextureMapsDock* maps = m_window->textureMapsDock();
-        QWidget* lobeMaps = maps->lobeSlots(MaterialLobe::Clearcoat);
+        QWidget* lobeMaps = maps->lobeSlots(MaterialLobe(lobe));
         QVERIFY(lobeMaps && !lobeMaps->isVisibleTo(maps));
         const QImage before = frame();
         clickGroupCheck(group);
+        const Material& on = m_document->project().material();
+        QVERIFY(on.hasLobe(MaterialLobe(lobe)));
         QVERIFY(lobeMaps->isVisibleTo(maps));
-        QCOMPARE(scalarOf(m_document->project().material(), MaterialProperty(strength)), 1.0);
+        QCOMPARE(scalarOf(on, MaterialProperty(control)), onValue);
+        if (MaterialLobe(lobe) == MaterialLobe::Sheen)
+            QCOMPARE(on.sheenColor(), glm::dvec3(1.0));
         QCOMPARE(m_document->undoStack()->count(), 1);
         QCOMPARE(m_document->undoStack()->undoText(), undoText);
         QVERIFY(group->isChecked() && slider->isVisible());
-        QCOMPARE(slider->value(), 1.0);
-        const QImage on = frame();
-        QVERIFY2(difference(before, on) > 2.0, qPrintable(QString::number(difference(before, on))));
+        QCOMPARE(slider->value(), onValue);
+        const QImage lit = frame();
+        QVERIFY2(difference(before, lit) > 2.0, qPrintable(QString::number(difference(before, lit))));
         m_document->undoStack()->undo();
-        QCOMPARE(scalarOf(m_document->project().material(), MaterialProperty(strength)), 0.0);
+        QVERIFY(!m_document->project().material().hasLobe(MaterialLobe(lobe)));
         QVERIFY(!group->isChecked() && !slider->isVisible());
         QVERIFY(!lobeMaps->isVisibleTo(maps));
         QVERIFY2(difference(before, frame()) < 0.5, qPrintable(QString::number(difference(before, frame()))));
@@ -109,6 +124,7 @@ private Q_SLOTS:
         QTest::addColumn<double>("start");
         QTest::newRow("clearcoat strength") << int(MaterialProperty::Clearcoat) << 0.5;
         QTest::newRow("clearcoat roughness") << int(MaterialProperty::ClearcoatRoughness) << 0.5;
+        QTest::newRow("sheen roughness") << int(MaterialProperty::SheenRoughness) << 0.5;
         QTest::newRow("ior (the slider ends at 3, the spin box at 5)") << int(MaterialProperty::Ior) << 2.0;
         QTest::newRow("alpha cutoff (mask)") << int(MaterialProperty::AlphaCutoff) << 0.5;
     }
@@ -119,6 +135,7 @@ private Q_SLOTS:
         const MaterialPropertyInfo& info = infoOf(MaterialProperty(property));
         Material material = m_document->project().material();
         material.setClearcoat(0.5, 0.5);
+        material.setSheen(glm::dvec3(0.5), 0.5);
         material.alphaMode = AlphaMode::Mask;
         setScalar(material, MaterialProperty(property), start);
         m_document->setMaterial(material, QStringLiteral("test setup"));

@@ -54,6 +54,8 @@ private Q_SLOTS:
     void folderPicksOneFilePerSlot_data();
     void folderPicksOneFilePerSlot();
     void assignedMapsTakeTheirRead();
+    void lobeMapsTurnTheirLobeOn_data();
+    void lobeMapsTurnTheirLobeOn();
     void textureSetReplacesTheWholeSet();
 };
 
@@ -201,6 +203,22 @@ void MapNamingTest::channelForSlot_data()
         << "car_coat_normal.png" << S::Normal << C::Rgb << false << kUnknown << false << none;
     QTest::newRow("clearcoat_roughness is not the base roughness")
         << "car_clearcoat_roughness.png" << S::Roughness << C::R << false << kUnknown << false << none;
+    // KHR_materials_sheen's textures: glTF's names and Substance-style words; a sheen colour is
+    // not the base colour, a sheen roughness not the base's roughness.
+    QTest::newRow("sheen") << "sofa_sheen.png" << S::SheenColor << C::Rgb << false << kUnknown << true
+                           << none;
+    QTest::newRow("sheenColor") << "Sofa_sheenColor.png" << S::SheenColor << C::Rgb << false << kUnknown
+                                << true << none;
+    QTest::newRow("sheen_color 4k") << "sofa_sheen_color_4k.png" << S::SheenColor << C::Rgb << false
+                                    << kUnknown << true << none;
+    QTest::newRow("sheenRoughness") << "Sofa_sheenRoughness.png" << S::SheenRoughness << C::R << false
+                                    << kUnknown << true << none;
+    QTest::newRow("sheen_roughness") << "sofa_sheen_roughness.png" << S::SheenRoughness << C::R << false
+                                     << kUnknown << true << none;
+    QTest::newRow("sheen_color is not the base colour")
+        << "sofa_sheen_color.png" << S::BaseColor << C::Rgb << false << kUnknown << false << none;
+    QTest::newRow("sheen_roughness is not the base roughness")
+        << "sofa_sheen_roughness.png" << S::Roughness << C::R << false << kUnknown << false << none;
     const QString clearCoat = QStringLiteral("clear coat");
     QTest::newRow("Unreal CC strength")
         << "T_Car_CC.png" << S::Clearcoat << C::R << false << kUnknown << true << clearCoat;
@@ -420,6 +438,39 @@ void MapNamingTest::assignedMapsTakeTheirRead()
     QVERIFY(!after.map(MapSlot::Normal).flipGreen);
     // Slots it does not name are untouched by withAssignedMaps.
     QCOMPARE(after.map(MapSlot::Metallic), material.map(MapSlot::Metallic));
+    std::string problem;
+    QVERIFY2(after.validate(&problem), problem.c_str());
+}
+
+// A layered lobe's map turns the lobe on as painted: a sheen colour map with a white factor (the
+// default black would hide it), a sheen roughness map alone a white sheen of that roughness; and a
+// coat's roughness alone a full coat. What the lobe had stays otherwise.
+void MapNamingTest::lobeMapsTurnTheirLobeOn_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<bool>("sheen");
+    QTest::addColumn<bool>("coat");
+    QTest::addColumn<double>("sheenRoughness");
+    QTest::newRow("sheen colour") << "/t/sofa_sheen.png" << true << false << 0.0;
+    QTest::newRow("sheen roughness alone") << "/t/sofa_sheen_roughness.png" << true << false << 1.0;
+    QTest::newRow("coat roughness alone") << "/t/car_coat_roughness.png" << false << true << 0.0;
+    QTest::newRow("base colour: no lobe") << "/t/sofa_basecolor.png" << false << false << 0.0;
+}
+
+void MapNamingTest::lobeMapsTurnTheirLobeOn()
+{
+    QFETCH(QString, file);
+    QFETCH(bool, sheen);
+    QFETCH(bool, coat);
+    QFETCH(double, sheenRoughness);
+    const MapNamingResult result = assignMapsByName({file});
+    QCOMPARE(result.assignments.size(), std::size_t(1));
+    const Material after = withAssignedMaps(Material {}, result.assignments);
+    QCOMPARE(after.hasSheen(), sheen);
+    QCOMPARE(after.hasClearcoat(), coat);
+    QCOMPARE(after.sheenRoughness(), sheenRoughness);
+    if (sheen)
+        QCOMPARE(after.sheenColor(), glm::dvec3(1.0));
     std::string problem;
     QVERIFY2(after.validate(&problem), problem.c_str());
 }

@@ -9,7 +9,8 @@
 // a fresh Renderer, so every map is uploaded in the row's first frame, as after opening a project.
 //
 // The GPU writes the inputs through debug views (base-color, metallic, roughness, occlusion,
-// shading-normal, and clearcoat, clearcoat-roughness, clearcoat-normal for rows with a coat). The CPU
+// shading-normal, and clearcoat, clearcoat-roughness, clearcoat-normal for rows with a coat,
+// sheen-color, sheen-roughness for rows with a sheen). The CPU
 // evaluates the same inputs from the texture coordinate, the geometric normal and the tangent that the GPU
 // interpolated (the uv, geometric-normal and tangent debug views), so the comparison isolates the material
 // inputs from the tessellation.
@@ -445,6 +446,31 @@ const std::vector<Row>& rows()
                 useMap(m, MapSlot::ClearcoatNormal, file(f, "normal.png"), MapChannel::Rgb,
                     ColorEncoding::Linear);
             }},
+        // KHR_materials_sheen's maps: the colour (sRGB RGB), the roughness (A), both from one RGBA
+        // texture (one fetch), and both while the sheen is off.
+        {"sheen-color",
+            [](Material& m, const QString& f) {
+                m.setSheen(glm::dvec3(1.0, 0.8, 0.6), 0.5);
+                useMap(
+                    m, MapSlot::SheenColor, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+            }},
+        {"sheen-roughness",
+            [](Material& m, const QString& f) {
+                m.setSheen(glm::dvec3(0.5), 0.9);
+                useScalar(m, MapSlot::SheenRoughness, file(f, "packed.png"), MapChannel::A);
+            }},
+        {"sheen-packed-rgba",
+            [](Material& m, const QString& f) {
+                m.setSheen(glm::dvec3(1.0), 1.0);
+                useMap(m, MapSlot::SheenColor, file(f, "packed.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+                useScalar(m, MapSlot::SheenRoughness, file(f, "packed.png"), MapChannel::A);
+            }},
+        {"sheen-maps-while-off",
+            [](Material& m, const QString& f) {
+                useMap(
+                    m, MapSlot::SheenColor, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+                useScalar(m, MapSlot::SheenRoughness, file(f, "packed.png"), MapChannel::A);
+            }},
         {"all-nine",
             [](Material& m, const QString& f) {
                 useAllSix(m, f);
@@ -504,6 +530,11 @@ const std::vector<ViewCheck>& viewChecks()
         {"clearcoat-normal",
             [](const MaterialInfo& m, const glm::dvec3&) { return m.clearcoatNormal * 0.5 + 0.5; },
             MaterialLobe::Clearcoat},
+        {"sheen-color", [](const MaterialInfo& m, const glm::dvec3&) { return m.sheenColor; },
+            MaterialLobe::Sheen},
+        {"sheen-roughness",
+            [](const MaterialInfo& m, const glm::dvec3&) { return glm::dvec3(m.sheenRoughness); },
+            MaterialLobe::Sheen},
     };
     return checks;
 }
@@ -667,11 +698,17 @@ void MaterialMapsGLTest::matchesCpuTwin()
     for (MapSlot slot : kAllMapSlots)
         images[std::size_t(slot)] = assets->maps[0][std::size_t(slot)].image.get();
 
-    bool hasCoat = material.hasClearcoat();
-    for (MapSlot slot : kAllMapSlots)
-        hasCoat = hasCoat || (lobeOf(slot) == MaterialLobe::Clearcoat && material.map(slot).hasTexture());
+    // A lobe's views only for rows with the lobe or its maps.
+    const auto involves = [&](MaterialLobe lobe) {
+        if (lobe == MaterialLobe::Core || material.hasLobe(lobe))
+            return true;
+        for (MapSlot slot : kAllMapSlots)
+            if (lobeOf(slot) == lobe && material.map(slot).hasTexture())
+                return true;
+        return false;
+    };
     for (const ViewCheck& check : viewChecks()) {
-        if (check.lobe == MaterialLobe::Clearcoat && !hasCoat)
+        if (!involves(check.lobe))
             continue;
         const auto gpu = render(project, check.view, &error);
         QVERIFY2(gpu, error.c_str());

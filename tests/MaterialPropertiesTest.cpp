@@ -142,7 +142,10 @@ private Q_SLOTS:
             << P::ClearcoatRoughness << "clearcoatRoughness.factor" << 0.0 << 1.0 << "clearcoat-roughness";
         QTest::newRow("clearcoat normal")
             << P::ClearcoatNormal << "clearcoatNormal.factor" << 0.0 << 10.0 << "";
-        QCOMPARE(kMaterialPropertyCount, 13); // a new property adds its golden row here
+        QTest::newRow("sheen colour") << P::SheenColor << "sheenColor.factor" << 0.0 << 1.0 << "sheen-color";
+        QTest::newRow("sheen roughness")
+            << P::SheenRoughness << "sheenRoughness.factor" << 0.0 << 1.0 << "sheen-roughness";
+        QCOMPARE(kMaterialPropertyCount, 15); // a new property adds its golden row here
     }
 
     void goldenRows()
@@ -199,7 +202,7 @@ private Q_SLOTS:
             QCOMPARE(scalarOf(project.material(), *axis.property), value);
             QVERIFY(project.material() == expected);
         }
-        QCOMPARE(materialAxes, 10);
+        QCOMPARE(materialAxes, 11);
     }
 };
 

@@ -124,6 +124,16 @@ private Q_SLOTS:
         qInfo("highlight: coated rough %.3f (mean %.3f)", coatedStats.largest, coatedStats.mean);
         QVERIFY(coatedStats.largest > roughStats.largest + 0.15);
 
+        // A pink sheen over the dark rough base: the sphere turns pink (the sheen's lobe lit by
+        // the irradiance), and brighter, since the dark base gives up little.
+        Material velvet = rough;
+        velvet.setSheen(glm::dvec3(1.0, 0.3, 0.6), 0.5);
+        const glm::dvec3 plain = meanColour(renderer.render(rough, {}, kSize));
+        const glm::dvec3 sheened = meanColour(renderer.render(velvet, {}, kSize));
+        qInfo("mean colour: rough (%.3f, %.3f, %.3f), with a pink sheen (%.3f, %.3f, %.3f)", plain.r, plain.g,
+            plain.b, sheened.r, sheened.g, sheened.b);
+        QVERIFY(sheened.r > plain.r + 0.05 && sheened.r > sheened.g + 0.05);
+
         Material lamp = rough;
         lamp.map(MapSlot::Emissive).factor = glm::dvec4(1.0, 0.3, 0.0, 1.0);
         lamp.emissiveStrength = 4.0;

@@ -78,7 +78,7 @@ private Q_SLOTS:
     void mapSlotNamesRoundTrip()
     {
         const char* const expected[] = {"baseColor", "normal", "metallic", "roughness", "occlusion",
-            "emissive", "clearcoat", "clearcoatRoughness", "clearcoatNormal"};
+            "emissive", "clearcoat", "clearcoatRoughness", "clearcoatNormal", "sheenColor", "sheenRoughness"};
         static_assert(std::size(expected) == kAllMapSlots.size());
         int i = 0;
         for (MapSlot slot : kAllMapSlots) {
@@ -127,10 +127,23 @@ private Q_SLOTS:
             if (!isColorSlot(slot))
                 QCOMPARE(m.map(slot).colorSpace, ColorEncoding::Linear);
         }
+        // KHR_materials_sheen: no sheen; the colour sRGB RGB, the roughness the texture's alpha.
+        QVERIFY(!m.hasSheen());
+        QCOMPARE(m.sheenColor(), glm::dvec3(0.0));
+        QCOMPARE(m.sheenRoughness(), 0.0);
+        QCOMPARE(m.map(MapSlot::SheenColor).colorSpace, ColorEncoding::SRGB);
+        QCOMPARE(m.map(MapSlot::SheenColor).channel, MapChannel::Rgb);
+        QCOMPARE(m.map(MapSlot::SheenRoughness).channel, MapChannel::A);
+        // Each lobe's slots count only while that lobe is on.
         Material coated = m;
         coated.setClearcoat(0.25, 0.5);
-        for (MapSlot slot : kAllMapSlots)
-            QVERIFY(coated.usesSlot(slot));
+        Material sheened = m;
+        sheened.setSheen(glm::dvec3(0.0, 0.0, 0.1), 0.0); // one component is enough
+        QVERIFY(sheened.hasSheen());
+        for (MapSlot slot : kAllMapSlots) {
+            QCOMPARE(coated.usesSlot(slot), lobeOf(slot) != MaterialLobe::Sheen);
+            QCOMPARE(sheened.usesSlot(slot), lobeOf(slot) != MaterialLobe::Clearcoat);
+        }
         QCOMPARE(m.ior, 1.5);
         QCOMPARE(m.shading, ShadingModel {});
         for (MapSlot slot : kAllMapSlots)
@@ -189,6 +202,15 @@ private Q_SLOTS:
                 [](Material& m) {
                     m.map(MapSlot::Emissive).sampler.magFilter = TextureFilter::LinearMipmapLinear;
                 }},
+            // KHR_materials_sheen's fields.
+            {"sheenColor.factor.b", [](Material& m) { m.map(MapSlot::SheenColor).factor.z = 1.5; }},
+            {"sheenColor.factor.a", [](Material& m) { m.map(MapSlot::SheenColor).factor.w = -1.0; }},
+            {"sheenRoughness.factor", [](Material& m) { m.setFactor(MapSlot::SheenRoughness, 2.0); }},
+            {"sheenRoughness.factor", [](Material& m) { m.map(MapSlot::SheenRoughness).factor.y = 0.5; }},
+            {"sheenColor.channel", [](Material& m) { m.map(MapSlot::SheenColor).channel = MapChannel::A; }},
+            {"sheenRoughness.channel",
+                [](Material& m) { m.map(MapSlot::SheenRoughness).channel = MapChannel::Rgb; }},
+            {"sheenColor.invert", [](Material& m) { m.map(MapSlot::SheenColor).invert = true; }},
         };
         for (const Case& c : cases) {
             Material m;

@@ -108,6 +108,11 @@ Project everythingChanged(const QString& root)
     coatNormal.path = under("textures/coat_normal.png");
     coatNormal.factor = glm::dvec4(0.5);
     coatNormal.flipGreen = true;
+    m.setSheen(glm::dvec3(0.9, 0.5, 0.25), 0.375);
+    m.map(MapSlot::SheenColor).path = under("textures/velvet.png");
+    m.map(MapSlot::SheenColor).uv.scale = {3.0, 3.0};
+    m.map(MapSlot::SheenRoughness).path = under("textures/velvet.png");
+    m.map(MapSlot::SheenRoughness).texCoord = 1;
     m.alphaMode = AlphaMode::Mask;
     m.alphaCutoff = 0.25;
     m.doubleSided = false;
@@ -351,7 +356,7 @@ private Q_SLOTS:
         const QJsonObject object = QJsonDocument::fromJson(readAll(qs(path))).object();
         QCOMPARE(object.value(QLatin1String("format")).toString(), QStringLiteral("facet-project"));
         QCOMPARE(object.value(QLatin1String("version")).toInt(), Project::kFormatVersion);
-        QCOMPARE(object.value(QLatin1String("version")).toInt(), 5);
+        QCOMPARE(object.value(QLatin1String("version")).toInt(), 6);
         // Paths inside the compare layout are stored relative to the project, as the others are.
         const QJsonObject compare = object.value(QLatin1String("compare")).toObject();
         QCOMPARE(compare.value(QLatin1String("environments"))
@@ -530,8 +535,8 @@ private Q_SLOTS:
                                     << QStringLiteral("\"version\" is missing");
         QTest::newRow("newer version")
             << QByteArray(
-                   R"({"format": "facet-project", "version": 6, "material": {"roughness": "new syntax"}})")
-            << QStringLiteral("written by a newer Facet (version 6); this Facet reads up to version 5");
+                   R"({"format": "facet-project", "version": 7, "material": {"roughness": "new syntax"}})")
+            << QStringLiteral("written by a newer Facet (version 7); this Facet reads up to version 6");
         // Version 3's compare layout (every refusal: tests/CompareLayoutTest.cpp); the path names it.
         QTest::newRow("compare: B names a material the project lacks")
             << QByteArray(R"({"format": "facet-project", "version": 3, "materials": [{}, {}],

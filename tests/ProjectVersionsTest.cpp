@@ -80,6 +80,7 @@ private Q_SLOTS:
         QVERIFY(project->compare.ab.snapshot == project->material());
 
         QVERIFY(!project->material().hasClearcoat());
+        QVERIFY(!project->material().hasSheen());
         // Saved again, it is a current-version file that reads back the same.
         const QJsonObject saved = project->toJson();
         QCOMPARE(saved.value(QLatin1String("version")).toInt(), Project::kFormatVersion);
@@ -95,7 +96,8 @@ private Q_SLOTS:
             v2.remove(QLatin1String("compare"));
             v2[QLatin1String("version")] = 2;
             // Optional fields added since, without a version (docs/project-format.md): "unlit",
-            // the view's "keepUnits" and "texelDensityTarget"; and the coat's maps (versions 4, 5).
+            // the view's "keepUnits" and "texelDensityTarget"; the coat's maps (versions 4, 5) and
+            // the sheen's (version 6).
             QJsonObject view = v2[QLatin1String("view")].toObject();
             view.remove(QLatin1String("keepUnits"));
             view.remove(QLatin1String("texelDensityTarget"));
@@ -104,7 +106,8 @@ private Q_SLOTS:
             for (QJsonValueRef each : materials) {
                 QJsonObject m = each.toObject();
                 m.remove(QLatin1String("unlit"));
-                for (const char* key : {"clearcoat", "clearcoatRoughness", "clearcoatNormal"})
+                for (const char* key :
+                    {"clearcoat", "clearcoatRoughness", "clearcoatNormal", "sheenColor", "sheenRoughness"})
                     m.remove(QLatin1String(key));
                 each = m;
             }
@@ -170,6 +173,72 @@ private Q_SLOTS:
         QCOMPARE(
             m[QLatin1String("clearcoatRoughness")].toObject()[QLatin1String("factor")].toDouble(), roughness);
         const auto again = Project::fromJson(saved, {}, &error);
+        QVERIFY2(again, error.c_str());
+        QVERIFY(*again == *project);
+    }
+
+    // Version 6: the sheen's two maps. They read and save back; a version 5 file has no sheen
+    // (its material reads black); values out of range, of the wrong type or channel are refused
+    // naming the field.
+    void version6Sheen_data()
+    {
+        QTest::addColumn<int>("version");
+        QTest::addColumn<QByteArray>("sheenColor"); // the material's "sheenColor" value, or empty
+        QTest::addColumn<QByteArray>("sheenRoughness");
+        QTest::addColumn<QString>("problem"); // part of the refusal, or empty
+        QTest::newRow("version 6 sheen") << 6 << QByteArray(R"({"factor": [0.8, 0.2, 0.4]})")
+                                         << QByteArray(R"({"factor": 0.5})") << QString();
+        QTest::newRow("version 6 sheen maps")
+            << 6 << QByteArray(R"({"factor": [1, 1, 1], "texture": "/t/velvet.png"})")
+            << QByteArray(R"({"factor": 1, "texture": "/t/velvet.png", "channel": "a"})") << QString();
+        QTest::newRow("version 5, no sheen") << 5 << QByteArray() << QByteArray() << QString();
+        QTest::newRow("sheen colour above 1")
+            << 6 << QByteArray(R"({"factor": [1.5, 0, 0]})") << QByteArray()
+            << QStringLiteral("materials[0].sheenColor.factor.r: 1.5 is outside [0, 1]");
+        QTest::newRow("sheen roughness negative")
+            << 6 << QByteArray() << QByteArray(R"({"factor": -0.5})")
+            << QStringLiteral("materials[0].sheenRoughness.factor: -0.5 is outside [0, 1]");
+        QTest::newRow("sheen colour a string") << 6 << QByteArray(R"({"factor": "white"})") << QByteArray()
+                                               << QStringLiteral("materials[0].sheenColor.factor");
+        QTest::newRow("sheen colour reads one channel")
+            << 6 << QByteArray(R"({"factor": [1, 1, 1], "channel": "r"})") << QByteArray()
+            << QStringLiteral("sheenColor.channel: the sheenColor map reads \"rgb\"");
+        QTest::newRow("sheen roughness reads rgb")
+            << 6 << QByteArray() << QByteArray(R"({"factor": 1, "channel": "rgb"})")
+            << QStringLiteral("sheenRoughness.channel");
+    }
+    void version6Sheen()
+    {
+        QFETCH(int, version);
+        QFETCH(QByteArray, sheenColor);
+        QFETCH(QByteArray, sheenRoughness);
+        QFETCH(QString, problem);
+        QJsonObject material {{QLatin1String("name"), QLatin1String("Velvet")}};
+        if (!sheenColor.isEmpty())
+            material[QLatin1String("sheenColor")] = QJsonDocument::fromJson(sheenColor).object();
+        if (!sheenRoughness.isEmpty())
+            material[QLatin1String("sheenRoughness")] = QJsonDocument::fromJson(sheenRoughness).object();
+        const QJsonObject file {{QLatin1String("format"), QLatin1String("facet-project")},
+            {QLatin1String("version"), version}, {QLatin1String("materials"), QJsonArray {material}},
+            {QLatin1String("currentMaterial"), 0}};
+        std::string error, warning;
+        const auto project = Project::fromJson(file, {}, &error, &warning);
+        if (!problem.isEmpty()) {
+            QVERIFY(!project);
+            QVERIFY2(qs(error).contains(problem), error.c_str());
+            return;
+        }
+        QVERIFY2(project, error.c_str());
+        QVERIFY2(warning.empty(), warning.c_str());
+        const Material& m = project->material();
+        QCOMPARE(m.hasSheen(), !sheenColor.isEmpty());
+        if (!sheenColor.isEmpty()) {
+            const QJsonArray factor
+                = QJsonDocument::fromJson(sheenColor).object()[QLatin1String("factor")].toArray();
+            for (int c = 0; c < 3; ++c)
+                QCOMPARE(m.sheenColor()[c], factor.at(c).toDouble());
+        }
+        const auto again = Project::fromJson(project->toJson(), {}, &error);
         QVERIFY2(again, error.c_str());
         QVERIFY(*again == *project);
     }

@@ -37,9 +37,11 @@ namespace {
 // Every writer of core, with an "old" (variant 0) and a "new" (variant 1) content for it.
 enum class Writer {
     Primitive, // writeFileAtomically itself
-    ProjectSmall, // Project::save, under QFileDevice's 16 KiB buffer (the case QSaveFile lost)
-    ProjectLarge, // Project::save, over it
-    Preset, // savePreset (ui/document/UserPresets)
+    ProjectSmall, // Project::save of the default project (17.7 KB since the sheen's maps)
+    ProjectLarge, // Project::save, of 25 materials
+    // savePreset (ui/document/UserPresets): under QFileDevice's 16 KiB buffer, the case QSaveFile
+    // lost (every project is over it since the material has eleven maps)
+    Preset,
     RecoveryFile, // json::writeObjectFile, as Document::writeRecoveryFile (the autosave) uses it
     IblCache, // IblDiskCache::store
     Image, // Image::save, by the file name's extension
@@ -237,13 +239,14 @@ void SafeWriteTest::fullDiskKeepsTheOldFile()
 
 void SafeWriteTest::projectRowsStraddleQtsBuffer()
 {
-    // The two project rows above must stay on both sides of the 16 KiB that decided whether
-    // QSaveFile lost the file; if the project format grows or shrinks, adjust the light count.
+    // The rows above must write files on both sides of the 16 KiB that decided whether QSaveFile
+    // lost the file: the preset below it, the large project above it (writeFileAtomically serves
+    // both). If the formats grow or shrink, adjust what they hold.
     QTemporaryDir dir;
     std::string error;
     const QString small = dir.filePath(QStringLiteral("small.json"));
     const QString large = dir.filePath(QStringLiteral("large.json"));
-    QVERIFY2(writeWith(Writer::ProjectSmall, small, 1, &error), error.c_str());
+    QVERIFY2(writeWith(Writer::Preset, small, 1, &error), error.c_str());
     QVERIFY2(writeWith(Writer::ProjectLarge, large, 1, &error), error.c_str());
     QVERIFY2(QFileInfo(small).size() < kQtWriteBuffer, qPrintable(QString::number(QFileInfo(small).size())));
     QVERIFY2(QFileInfo(large).size() > kQtWriteBuffer, qPrintable(QString::number(QFileInfo(large).size())));

@@ -40,6 +40,8 @@ private Q_SLOTS:
     void sharedTexels();
     void lobesOnlyWhereTheMaterialHasThem_data();
     void lobesOnlyWhereTheMaterialHasThem();
+    void sheenPackedTexture_data();
+    void sheenPackedTexture();
 
 private:
     std::optional<HeadlessGLContext> m_context; // sharedTexels compiles its variants
@@ -223,7 +225,8 @@ void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem_data()
     QTest::addColumn<double>("value");
     QTest::addColumn<bool>("unlit");
     QTest::addColumn<int>("mapSlot"); // a lobe's map with an image, or -1
-    QTest::addColumn<double>("coatRoughness"); // the coat roughness factor (0 hides its map)
+    QTest::addColumn<double>(
+        "lobeRoughness"); // the coat's and the sheen's roughness factors (0 hides their maps)
     QTest::addColumn<SurfaceFeatures>("bit");
     QTest::addColumn<bool>("on");
     QTest::addColumn<QString>("uniform"); // a uniform only the lobe's code declares
@@ -257,6 +260,28 @@ void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem_data()
         SurfaceFeature::HasClearcoatNormalMap, false, "uClearcoatNormalMap");
     row("clearcoat normal map, coat 1", "clearcoat", 1.0, false, coatNormal, 0.0,
         SurfaceFeature::HasClearcoatNormalMap, true, "uClearcoatNormalMap");
+    // The sheen: on while its colour is not black (the value sets all three components).
+    row("sheen black (default)", "sheenColor", 0.0, false, none, 0.0, SurfaceFeature::Sheen, false,
+        "uSheenColorFactor");
+    row("sheen 0.5", "sheenColor", 0.5, false, none, 0.0, SurfaceFeature::Sheen, true, "uSheenColorFactor");
+    row("sheen 0.5, its table", "sheenColor", 0.5, false, none, 0.0, SurfaceFeature::Sheen, true,
+        "uSheenLut");
+    row("sheen black, no table", "sheenColor", 0.0, false, none, 0.0, SurfaceFeature::Sheen, false,
+        "uSheenLut");
+    row("sheen 1, unlit", "sheenColor", 1.0, true, none, 0.0, SurfaceFeature::Sheen, false,
+        "uSheenColorFactor");
+    const int sheenColor = int(MapSlot::SheenColor);
+    const int sheenRoughness = int(MapSlot::SheenRoughness);
+    row("sheen colour map, sheen black", "sheenColor", 0.0, false, sheenColor, 0.0,
+        SurfaceFeature::HasSheenColorMap, false, "uSheenColorMap");
+    row("sheen colour map, sheen 0.5", "sheenColor", 0.5, false, sheenColor, 0.0,
+        SurfaceFeature::HasSheenColorMap, true, "uSheenColorMap");
+    row("sheen colour map, unlit", "sheenColor", 0.5, true, sheenColor, 0.0, SurfaceFeature::HasSheenColorMap,
+        false, "uSheenColorMap");
+    row("sheen roughness map, roughness factor 0", "sheenColor", 1.0, false, sheenRoughness, 0.0,
+        SurfaceFeature::HasSheenRoughnessMap, false, "uSheenRoughnessMap");
+    row("sheen roughness map, roughness factor 0.5", "sheenColor", 1.0, false, sheenRoughness, 0.5,
+        SurfaceFeature::HasSheenRoughnessMap, true, "uSheenRoughnessMap");
 }
 
 void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem()
@@ -265,13 +290,18 @@ void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem()
     QFETCH(double, value);
     QFETCH(bool, unlit);
     QFETCH(int, mapSlot);
-    QFETCH(double, coatRoughness);
+    QFETCH(double, lobeRoughness);
     QFETCH(SurfaceFeatures, bit);
     QFETCH(bool, on);
     QFETCH(QString, uniform);
     Material material;
-    setScalar(material, *materialPropertyFromString(property.toStdString()), value);
-    material.setFactor(MapSlot::ClearcoatRoughness, coatRoughness);
+    const MaterialProperty lobe = *materialPropertyFromString(property.toStdString());
+    if (infoOf(lobe).value == PropertyValue::Color)
+        setColor(material, lobe, glm::dvec3(value));
+    else
+        setScalar(material, lobe, value);
+    material.setFactor(MapSlot::ClearcoatRoughness, lobeRoughness);
+    material.setFactor(MapSlot::SheenRoughness, lobeRoughness);
     material.unlit = unlit;
     bool images[kMapSlotCount] = {};
     if (mapSlot >= 0) {
@@ -291,6 +321,49 @@ void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem()
             = surfaceDefines(SurfaceVariantKey {features, DebugView::None});
         QCOMPARE(std::find(defines.begin(), defines.end(), "HAS_TANGENT_FRAME") != defines.end(), on);
     }
+}
+
+// KHR_materials_sheen's packing: the colour in RGB (sRGB) and the roughness in A of one texture is
+// one fetch, since an sRGB texture's alpha is linear; a roughness read from a colour channel of
+// the sRGB texture is not (it would read the decoded colour).
+void ShaderVariantGLTest::sheenPackedTexture_data()
+{
+    QTest::addColumn<int>("roughnessChannel");
+    QTest::addColumn<bool>("sameFile");
+    QTest::addColumn<bool>("shared");
+    QTest::newRow("one RGBA texture, roughness in alpha") << int(MapChannel::A) << true << true;
+    QTest::newRow("one texture, roughness in red") << int(MapChannel::R) << true << false;
+    QTest::newRow("two files") << int(MapChannel::A) << false << false;
+}
+
+void ShaderVariantGLTest::sheenPackedTexture()
+{
+    QFETCH(int, roughnessChannel);
+    QFETCH(bool, sameFile);
+    QFETCH(bool, shared);
+    Material material;
+    material.setSheen(glm::dvec3(1.0), 1.0);
+    material.map(MapSlot::SheenColor).path = "/t/sheen.png";
+    material.map(MapSlot::SheenRoughness).path = sameFile ? "/t/sheen.png" : "/t/other.png";
+    material.map(MapSlot::SheenRoughness).channel = MapChannel(roughnessChannel);
+    const auto a = std::make_shared<const MapImage>(4, 4, MapLayout::Rgba, MapSampleType::UInt8);
+    const auto b = std::make_shared<const MapImage>(4, 4, MapLayout::Rgba, MapSampleType::UInt8);
+    bool hasImage[kMapSlotCount] = {};
+    std::array<const void*, kMapSlotCount> textures {};
+    hasImage[std::size_t(MapSlot::SheenColor)] = hasImage[std::size_t(MapSlot::SheenRoughness)] = true;
+    textures[std::size_t(MapSlot::SheenColor)] = a.get();
+    textures[std::size_t(MapSlot::SheenRoughness)] = sameFile ? a.get() : b.get();
+    const SurfaceFeatures features = surfaceFeaturesFor(material, hasImage, false, false);
+    QVERIFY(hasFeature(features, SurfaceFeature::HasSheenColorMap));
+    QVERIFY(hasFeature(features, SurfaceFeature::HasSheenRoughnessMap));
+    const SurfaceFeatures all = features | sharedTexelFeatures(material, features, textures);
+    QCOMPARE(hasFeature(all, SurfaceFeature::SheenRoughnessTexelFromSheenColor), shared);
+    QCOMPARE(samplesOwnTexture(all, MapSlot::SheenRoughness), !shared);
+    SurfaceProgramCache programs;
+    std::string error;
+    const ShaderProgram* program = programs.get(SurfaceVariantKey {all, DebugView::None}, &error);
+    QVERIFY2(program, error.c_str());
+    QCOMPARE(program->uniformLocation("uSheenRoughnessMap") >= 0, !shared);
 }
 
 QTEST_GUILESS_MAIN(ShaderVariantGLTest)

@@ -455,12 +455,13 @@ private Q_SLOTS:
         QTest::addColumn<bool>("emits");
         QTest::addColumn<bool>("coated");
         QTest::addColumn<QStringList>("skipped");
+        QTest::addColumn<bool>("sheen");
         const auto row = [](const char* name, const char* templateId, bool emits, bool coated,
-                             std::initializer_list<const char*> skipped) {
+                             std::initializer_list<const char*> skipped, bool sheen = false) {
             QStringList maps;
             for (const char* map : skipped)
                 maps.append(QString::fromLatin1(map));
-            QTest::newRow(name) << QString::fromLatin1(templateId) << emits << coated << maps;
+            QTest::newRow(name) << QString::fromLatin1(templateId) << emits << coated << maps << sheen;
         };
         row("unreal, plain", "unreal", false, false, {"E", "CC"});
         row("unreal, emitting", "unreal", true, false, {"CC"});
@@ -473,8 +474,12 @@ private Q_SLOTS:
         // glTF's coat textures: strength and roughness in one (R, G), and a coat normal map only
         // where there is one to write.
         row("gltf-textures, plain", "gltf-textures", false, false,
-            {"emissive", "clearcoat", "clearcoatNormal"});
-        row("gltf-textures, coated", "gltf-textures", false, true, {"emissive", "clearcoatNormal"});
+            {"emissive", "clearcoat", "clearcoatNormal", "sheen"});
+        row("gltf-textures, coated", "gltf-textures", false, true, {"emissive", "clearcoatNormal", "sheen"});
+        // The sheen's one texture (colour RGB, roughness A) only for a material with a sheen.
+        row("gltf-textures, sheen", "gltf-textures", false, false,
+            {"emissive", "clearcoat", "clearcoatNormal"}, true);
+        row("unreal, sheen (no sheen channel)", "unreal", false, false, {"E", "CC"}, true);
     }
     void optionalOutputs()
     {
@@ -482,12 +487,15 @@ private Q_SLOTS:
         QFETCH(bool, emits);
         QFETCH(bool, coated);
         QFETCH(QStringList, skipped);
+        QFETCH(bool, sheen);
         Material plain;
         plain.name = "Plain";
         if (emits)
             plain.map(MapSlot::Emissive).factor = glm::dvec4(0.0, 0.1, 0.0, 1.0); // no texture
         if (coated)
             plain.setClearcoat(0.75, 0.25);
+        if (sheen)
+            plain.setSheen(glm::dvec3(0.5, 0.25, 1.0), 0.6);
         const std::optional<ExportTemplate> exportTemplate
             = ExportTemplate::builtin(templateId.toStdString());
         QVERIFY(exportTemplate);
@@ -499,6 +507,19 @@ private Q_SLOTS:
             actual.append(QString::fromStdString(map));
         QCOMPARE(actual, skipped);
         QCOMPARE(plan->files.size() + plan->skipped.size(), exportTemplate->outputs.size());
+        if (sheen && templateId == QLatin1String("gltf-textures")) {
+            // The sheen texture: RGB the colour sRGB-encoded, A the roughness (linear).
+            TestMaterial test(false);
+            test.material = plain;
+            QTemporaryDir dir;
+            QVERIFY2(writeSet(*plan, test, dir.path(), &error), error.c_str());
+            const std::optional<ReadBack> file = readBack(dir.filePath(QStringLiteral("Plain_sheen.png")));
+            QVERIFY(file && file->channels == 4 && file->values.size() == 4);
+            const double expected[4] = {tonemap::linearToSrgb(0.5), tonemap::linearToSrgb(0.25), 1.0, 0.6};
+            for (int c = 0; c < 4; ++c)
+                QVERIFY2(std::abs(file->values[std::size_t(c)] - expected[c]) < 0.5 / 255.0 + 1e-6,
+                    qPrintable(QStringLiteral("channel %1: %2").arg(c).arg(file->values[std::size_t(c)])));
+        }
         if (templateId != QLatin1String("unreal") || !coated)
             return;
         // Unreal's CC: R the coat's strength, G its roughness, B 0 (a material of constants: 1x1).

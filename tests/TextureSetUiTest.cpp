@@ -325,13 +325,15 @@ void TextureSetUiTest::dockAssignsPackedChannels()
 
 void TextureSetUiTest::assigningASetReplacesTheWholeSet()
 {
-    // Set A: nine separate maps, a clear coat's three among them, through Assign Folder….
+    // Set A: eleven separate maps, a clear coat's three and a sheen's two among them, through
+    // Assign Folder….
     const QString a = m_dir.filePath(QStringLiteral("replace/a"));
     makeFiles(a,
         {QStringLiteral("a_basecolor.png"), QStringLiteral("a_normal.png"), QStringLiteral("a_metallic.png"),
             QStringLiteral("a_roughness.png"), QStringLiteral("a_ao.png"), QStringLiteral("a_emissive.png"),
             QStringLiteral("a_clearcoat.png"), QStringLiteral("a_clearcoat_roughness.png"),
-            QStringLiteral("a_clearcoat_normal.png")});
+            QStringLiteral("a_clearcoat_normal.png"), QStringLiteral("a_sheen.png"),
+            QStringLiteral("a_sheen_roughness.png")});
     auto* button = m_dock->findChild<QPushButton*>(QStringLiteral("assignFolderButton"));
     QVERIFY(button);
     QVERIFY(clickAndAnswerFileDialog(button, a));
@@ -342,6 +344,9 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
     QCOMPARE(setA.clearcoat(), 1.0); // a coat texture turns the coat on, as painted
     QCOMPARE(setA.clearcoatRoughness(), 1.0);
     QVERIFY(m_dock->lobeSlots(MaterialLobe::Clearcoat)->isVisibleTo(m_dock));
+    QCOMPARE(setA.sheenColor(), glm::dvec3(1.0)); // a sheen texture turns a white sheen on
+    QCOMPARE(setA.sheenRoughness(), 1.0);
+    QVERIFY(m_dock->lobeSlots(MaterialLobe::Sheen)->isVisibleTo(m_dock));
     const int steps = m_document->undoStack()->index();
     QSignalSpy rendered(m_window->viewport(), &ViewportWidget::frameRendered);
 
@@ -356,18 +361,21 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
     QCOMPARE(QFileInfo(QString::fromStdString(setB.map(MapSlot::Roughness).path)).fileName(),
         QStringLiteral("b_roughness.png"));
     for (MapSlot slot : {MapSlot::Normal, MapSlot::Metallic, MapSlot::Occlusion, MapSlot::Emissive,
-             MapSlot::Clearcoat, MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal})
+             MapSlot::Clearcoat, MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal, MapSlot::SheenColor,
+             MapSlot::SheenRoughness})
         QVERIFY2(!setB.map(slot).hasTexture(), toString(slot));
     QCOMPARE(setB.metallic(), 0.0); // a dielectric, not A's metallic factor of 1 alone
     QVERIFY(!setB.hasClearcoat()); // and no coat: A's came with A's coat maps
     QVERIFY(!m_dock->lobeSlots(MaterialLobe::Clearcoat)->isVisibleTo(m_dock));
+    QVERIFY(!setB.hasSheen());
+    QVERIFY(!m_dock->lobeSlots(MaterialLobe::Sheen)->isVisibleTo(m_dock));
     QCOMPARE(m_document->undoStack()->index(), steps + 1); // one step
     const QString message = m_dock->lastMessage();
     QVERIFY2(message.startsWith(QStringLiteral("Assigned 2 maps")), qPrintable(message));
     QVERIFY2(
         message.contains(QStringLiteral("cleared (not in this set): Normal, Metallic (now 0), Ambient "
                                         "Occlusion, Emissive, Clearcoat (no coat now), Clearcoat Roughness, "
-                                        "Clearcoat Normal")),
+                                        "Clearcoat Normal, Sheen Colour (no sheen now), Sheen Roughness")),
         qPrintable(message));
     QCOMPARE(m_window->statusMessage(), message);
     // The slots say so too.

@@ -44,6 +44,8 @@ double valueIn(const Project& project, WedgeParameter parameter)
         return m.clearcoat();
     case WedgeParameter::ClearcoatRoughness:
         return m.clearcoatRoughness();
+    case WedgeParameter::SheenRoughness:
+        return m.sheenRoughness();
     case WedgeParameter::Exposure:
         return project.view.exposureEV;
     case WedgeParameter::Environment:
@@ -74,7 +76,7 @@ private Q_SLOTS:
         QCOMPARE(wedgeParameterNameList(),
             std::string("metallic, roughness, occlusion, normal, ior, emissiveStrength, alphaCutoff, alpha, "
                         "clearcoat, "
-                        "clearcoatRoughness, env, exposure"));
+                        "clearcoatRoughness, sheenRoughness, env, exposure"));
         for (const WedgeParameterInfo& info : wedgeParameters()) {
             QCOMPARE(wedgeParameterFromString(info.name), std::optional(info.parameter));
             QCOMPARE(toString(info.parameter), info.name);
@@ -242,7 +244,8 @@ private Q_SLOTS:
         QTest::newRow("unknown parameter")
             << "rough=0,1"
             << "unknown parameter \"rough\" (known: metallic, roughness, occlusion, normal, ior, "
-               "emissiveStrength, alphaCutoff, alpha, clearcoat, clearcoatRoughness, env, exposure)";
+               "emissiveStrength, alphaCutoff, alpha, clearcoat, clearcoatRoughness, sheenRoughness, env, "
+               "exposure)";
         QTest::newRow("names are case-sensitive") << "Roughness=0,1"
                                                   << "unknown parameter \"Roughness\"";
         QTest::newRow("no name") << "=0,1"
@@ -443,6 +446,12 @@ private Q_SLOTS:
         QTest::newRow("clearcoatRoughness, coated") << "clearcoatRoughness=0,1"
                                                     << "coat"
                                                     << "";
+        QTest::newRow("sheenRoughness, no sheen") << "sheenRoughness=0,1"
+                                                  << ""
+                                                  << "has none (sheenColor black)";
+        QTest::newRow("sheenRoughness, a sheen") << "sheenRoughness=0,1"
+                                                 << "sheen"
+                                                 << "";
         QTest::newRow("env") << "env=studio,sky"
                              << ""
                              << "";
@@ -471,6 +480,8 @@ private Q_SLOTS:
             m.setFactor(MapSlot::Metallic, 1.0);
         if (setup == QLatin1String("coat"))
             m.setFactor(MapSlot::Clearcoat, 1.0);
+        if (setup == QLatin1String("sheen"))
+            m.setSheen(glm::dvec3(0.5), 0.0);
         std::string error;
         const std::optional<WedgeAxis> parsed = WedgeAxis::parse(axis.toStdString(), &error);
         QVERIFY2(parsed, error.c_str());

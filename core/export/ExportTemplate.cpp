@@ -17,7 +17,7 @@ using namespace jsonsupport;
 
 namespace {
 
-constexpr std::array<std::pair<ExportSource, const char*>, 19> kSources = {{
+constexpr std::array<std::pair<ExportSource, const char*>, 23> kSources = {{
     {ExportSource::Constant, "constant"},
     {ExportSource::BaseColorR, "baseColor.r"},
     {ExportSource::BaseColorG, "baseColor.g"},
@@ -37,6 +37,10 @@ constexpr std::array<std::pair<ExportSource, const char*>, 19> kSources = {{
     {ExportSource::ClearcoatNormalX, "clearcoatNormal.x"},
     {ExportSource::ClearcoatNormalY, "clearcoatNormal.y"},
     {ExportSource::ClearcoatNormalZ, "clearcoatNormal.z"},
+    {ExportSource::SheenColorR, "sheenColor.r"},
+    {ExportSource::SheenColorG, "sheenColor.g"},
+    {ExportSource::SheenColorB, "sheenColor.b"},
+    {ExportSource::SheenRoughness, "sheenRoughness"},
 }};
 
 constexpr std::array<std::pair<TextureFileFormat, const char*>, 4> kFormats = {{

@@ -33,6 +33,7 @@
 //   emissive.r/.g/.b   emissive colour (factor x texture, linear; the strength is a parameter)
 //   clearcoat, clearcoatRoughness   the clear coat's strength and perceptual roughness
 //   clearcoatNormal.x/.y/.z         the coat's tangent-space normal, as normal.x/.y/.z
+//   sheenColor.r/.g/.b, sheenRoughness   the sheen's colour (linear) and perceptual roughness
 // Tokens of file names: {material} (its name, made safe for a file name), {map}, {size} (the
 // file's width, or WxH when it is not square), {template} (the template's file name stem).
 
@@ -67,6 +68,10 @@ enum class ExportSource {
     ClearcoatNormalX, // the coat's tangent-space normal, as NormalX/Y/Z (in order too)
     ClearcoatNormalY,
     ClearcoatNormalZ,
+    SheenColorR, // KHR_materials_sheen's colour (linear)
+    SheenColorG,
+    SheenColorB,
+    SheenRoughness, // the sheen's perceptual roughness
 };
 const char* toString(ExportSource source); // "baseColor.r", ...; "constant"
 std::optional<ExportSource> exportSourceFromString(std::string_view name);

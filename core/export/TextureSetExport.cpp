@@ -32,6 +32,12 @@ std::optional<MapSlot> slotOf(ExportSource source)
     case ExportSource::ClearcoatNormalY:
     case ExportSource::ClearcoatNormalZ:
         return MapSlot::ClearcoatNormal;
+    case ExportSource::SheenColorR:
+    case ExportSource::SheenColorG:
+    case ExportSource::SheenColorB:
+        return MapSlot::SheenColor;
+    case ExportSource::SheenRoughness:
+        return MapSlot::SheenRoughness;
     case ExportSource::NormalX:
     case ExportSource::NormalY:
     case ExportSource::NormalZ:
@@ -100,6 +106,8 @@ ExportTexel exportTexel(const Material& material, const MaterialMapImages& image
     texel.occlusion = inputs.occlusion;
     texel.clearcoat = inputs.clearcoat;
     texel.clearcoatRoughness = inputs.clearcoatRoughness;
+    texel.sheenColor = inputs.sheenColor;
+    texel.sheenRoughness = inputs.sheenRoughness;
     // The emissive strength stays a parameter of the material, not a texel value.
     if (material.emissiveStrength > 0.0) {
         texel.emissive = inputs.emissive / material.emissiveStrength;
@@ -175,6 +183,14 @@ double channelValue(const ExportChannel& channel, const ExportTexel& texel)
     case ExportSource::ClearcoatNormalZ:
         value = texel.clearcoatNormal[int(channel.source) - int(ExportSource::ClearcoatNormalX)] * 0.5 + 0.5;
         break;
+    case ExportSource::SheenColorR:
+    case ExportSource::SheenColorG:
+    case ExportSource::SheenColorB:
+        value = texel.sheenColor[int(channel.source) - int(ExportSource::SheenColorR)];
+        break;
+    case ExportSource::SheenRoughness:
+        value = texel.sheenRoughness;
+        break;
     }
     return channel.invert ? 1.0 - value : value;
 }
@@ -189,6 +205,8 @@ bool slotHasContent(const Material& material, MapSlot slot)
     case MapSlot::Roughness:
     case MapSlot::Clearcoat: // in use: the coat is on
     case MapSlot::ClearcoatRoughness:
+    case MapSlot::SheenColor: // in use: the sheen is on
+    case MapSlot::SheenRoughness:
         return true;
     case MapSlot::Emissive:
         return material.map(slot).hasTexture() || glm::dvec3(material.map(slot).factor) != glm::dvec3(0.0);

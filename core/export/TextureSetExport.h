@@ -61,6 +61,8 @@ struct ExportTexel {
     double clearcoat = 0.0;
     double clearcoatRoughness = 0.0; // perceptual
     glm::dvec3 clearcoatNormal {0.0, 0.0, 1.0}; // as `normal`, from the coat's normal map
+    glm::dvec3 sheenColor {0.0}; // linear
+    double sheenRoughness = 0.0; // perceptual
 };
 ExportTexel exportTexel(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv);
 // A source's value in a texel ([0, 1] for every source but emissive: the normal is stored as

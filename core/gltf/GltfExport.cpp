@@ -32,7 +32,7 @@ constexpr int kFloat = 5126;
 constexpr int kUnsignedInt = 5125;
 
 // The gltf-textures template's outputs, by the slots they serve.
-enum class Texture { BaseColor, Normal, Orm, Emissive, Clearcoat, ClearcoatNormal };
+enum class Texture { BaseColor, Normal, Orm, Emissive, Clearcoat, ClearcoatNormal, Sheen };
 const char* mapName(Texture texture)
 {
     switch (texture) {
@@ -46,6 +46,8 @@ const char* mapName(Texture texture)
         return "clearcoat";
     case Texture::ClearcoatNormal:
         return "clearcoatNormal";
+    case Texture::Sheen:
+        return "sheen";
     case Texture::Emissive:
         break;
     }
@@ -65,6 +67,8 @@ std::vector<MapSlot> slotsOf(const std::string& outputMap)
         return {MapSlot::Clearcoat, MapSlot::ClearcoatRoughness};
     if (outputMap == mapName(Texture::ClearcoatNormal))
         return {MapSlot::ClearcoatNormal};
+    if (outputMap == mapName(Texture::Sheen))
+        return {MapSlot::SheenColor, MapSlot::SheenRoughness};
     return {MapSlot::BaseColor};
 }
 
@@ -90,6 +94,9 @@ struct MaterialPlan {
     // KHR_materials_clearcoat: one texture for the strength (R) and roughness (G), and the coat's
     // normal map; only for a lit material with a coat.
     bool coat = false, coatNormal = false;
+    // KHR_materials_sheen: one sRGB texture, the colour in RGB and the roughness in A (linear, as
+    // an sRGB texture's alpha is); only for a lit material with a sheen.
+    bool sheen = false;
     std::optional<UvTransform> shared; // written as KHR_texture_transform
     int texCoord = 0; // the UV set every textured slot reads (textureInfo.texCoord)
     std::optional<TextureSetExport> job;
@@ -130,6 +137,9 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
             && (material.map(MapSlot::Clearcoat).hasTexture()
                 || material.map(MapSlot::ClearcoatRoughness).hasTexture());
         plan.coatNormal = coated && material.map(MapSlot::ClearcoatNormal).hasTexture();
+        plan.sheen = material.hasSheen() && !material.unlit
+            && (material.map(MapSlot::SheenColor).hasTexture()
+                || material.map(MapSlot::SheenRoughness).hasTexture());
 
         // One transform on every textured slot: kept as KHR_texture_transform; else baked. The
         // bake writes every map into one texture set, in one UV set: maps on different sets
@@ -184,7 +194,8 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
                 || (output.map == mapName(Texture::Orm) && plan.orm)
                 || (output.map == mapName(Texture::Emissive) && plan.emissive)
                 || (output.map == mapName(Texture::Clearcoat) && plan.coat)
-                || (output.map == mapName(Texture::ClearcoatNormal) && plan.coatNormal);
+                || (output.map == mapName(Texture::ClearcoatNormal) && plan.coatNormal)
+                || (output.map == mapName(Texture::Sheen) && plan.sheen);
             if (wanted) {
                 ExportOutput kept = output;
                 kept.optional = false;
@@ -553,6 +564,22 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
                             {QStringLiteral("scale"), material.map(MapSlot::ClearcoatNormal).factor.x}}));
             extensions.insert(QStringLiteral("KHR_materials_clearcoat"), clearcoat);
             extensionsUsed.insert(QStringLiteral("KHR_materials_clearcoat"));
+        }
+        if (!material.unlit && material.hasSheen()) {
+            // A baked sheen texture holds factor x texture: its factors are 1.
+            const glm::dvec3 color = plan.sheen ? glm::dvec3(1.0) : material.sheenColor();
+            QJsonObject sheen {{QStringLiteral("sheenColorFactor"), QJsonArray {color.r, color.g, color.b}}};
+            const double sheenRoughness = plan.sheen ? 1.0 : material.sheenRoughness();
+            if (sheenRoughness != 0.0)
+                sheen.insert(QStringLiteral("sheenRoughnessFactor"), sheenRoughness);
+            if (plan.sheen) {
+                sheen.insert(QStringLiteral("sheenColorTexture"),
+                    textureInfo(index(Texture::Sheen), plan, mesh.hasTexCoord1));
+                sheen.insert(QStringLiteral("sheenRoughnessTexture"),
+                    textureInfo(index(Texture::Sheen), plan, mesh.hasTexCoord1));
+            }
+            extensions.insert(QStringLiteral("KHR_materials_sheen"), sheen);
+            extensionsUsed.insert(QStringLiteral("KHR_materials_sheen"));
         }
         if (material.unlit) {
             extensions.insert(QStringLiteral("KHR_materials_unlit"), QJsonObject {});

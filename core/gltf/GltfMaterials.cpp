@@ -284,7 +284,7 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
 
     // Extensions of the material model.
     static const std::set<std::string> kRead = {"KHR_materials_emissive_strength", "KHR_materials_ior",
-        "KHR_materials_unlit", "KHR_materials_clearcoat"};
+        "KHR_materials_unlit", "KHR_materials_clearcoat", "KHR_materials_sheen"};
     // A number of an extension's object: its value clamped to [lo, hi] (a note when it was not
     // there), or `otherwise` with a note naming the field when it is not a number.
     const auto extensionNumber = [&](const tinygltf::Value& object, const char* extension, const char* field,
@@ -297,6 +297,25 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
             return otherwise;
         }
         return clamped(object.Get(field).GetNumberAsDouble(), lo, hi, at, notes);
+    };
+    // An RGB array of an extension's object, each component clamped to [0, 1]; `otherwise` with a
+    // note naming the field when it is not three numbers.
+    const auto extensionColor = [&](const tinygltf::Value& object, const char* extension, const char* field,
+                                    const glm::dvec3& otherwise) {
+        if (!object.Has(field))
+            return otherwise;
+        const std::string at = where + " " + extension + "." + field;
+        const tinygltf::Value& array = object.Get(field);
+        const bool numbers = array.IsArray() && array.ArrayLen() == 3 && array.Get(0).IsNumber()
+            && array.Get(1).IsNumber() && array.Get(2).IsNumber();
+        if (!numbers) {
+            notes.add(at + " is not an array of three numbers: black used");
+            return otherwise;
+        }
+        glm::dvec3 color;
+        for (int c = 0; c < 3; ++c)
+            color[c] = clamped(array.Get(c).GetNumberAsDouble(), 0.0, 1.0, at, notes);
+        return color;
     };
     for (const auto& [name, value] : g.extensions) {
         if (name == "KHR_materials_emissive_strength") {
@@ -327,6 +346,23 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
             coatTexture("clearcoatNormalTexture", MapSlot::ClearcoatNormal);
             m.map(MapSlot::Clearcoat).channel = MapChannel::R;
             m.map(MapSlot::ClearcoatRoughness).channel = MapChannel::G;
+        } else if (name == "KHR_materials_sheen") {
+            // Defaults black and 0 (the extension's): an object without sheenColorFactor has no
+            // sheen. The colour texture is sRGB RGB, the roughness its own texture's alpha (often
+            // the same texture's).
+            const char* const extension = "KHR_materials_sheen";
+            m.setSheen(extensionColor(value, extension, "sheenColorFactor", glm::dvec3(0.0)),
+                extensionNumber(value, extension, "sheenRoughnessFactor", 0.0, 1.0, 0.0));
+            MaterialMap& color = m.map(MapSlot::SheenColor);
+            color.colorSpace = ColorEncoding::SRGB;
+            color.channel = MapChannel::Rgb;
+            readExtensionTexture(
+                model, value, extension, "sheenColorTexture", false, assetPath, where, color, notes);
+            MaterialMap& roughness = m.map(MapSlot::SheenRoughness);
+            roughness.colorSpace = ColorEncoding::Linear;
+            roughness.channel = MapChannel::A;
+            readExtensionTexture(
+                model, value, extension, "sheenRoughnessTexture", false, assetPath, where, roughness, notes);
         } else if (!kRead.count(name)) {
             notes.add(
                 "the material extension " + name + " is not supported: previewed as metallic-roughness");

@@ -33,6 +33,8 @@ enum class Layout {
     ClearcoatRoughness,
     ClearcoatNormal,
     PackedClearcoat, // R the coat's strength, G its roughness (KHR_materials_clearcoat's channels)
+    SheenColor,
+    SheenRoughness,
 };
 
 MapRead scalar(MapSlot slot, MapChannel channel, bool invert = false)
@@ -106,6 +108,10 @@ TextureNaming namingOf(Layout layout)
         // KHR_materials_clearcoat: "The clearcoat layer intensity ... sampled from the R channel",
         // "roughness ... from the G channel"; Facet's Unreal export writes its T_*_CC so.
         return packed("clear coat", {scalar(S::Clearcoat, C::R), scalar(S::ClearcoatRoughness, C::G)});
+    case Layout::SheenColor:
+        return single(MapRead {S::SheenColor, C::Rgb, false, std::nullopt});
+    case Layout::SheenRoughness:
+        return single(scalar(S::SheenRoughness, C::R));
     }
     return {};
 }
@@ -145,10 +151,16 @@ constexpr NameRule kRules[] = {
     {"coat_roughness", Where::LastWords, Layout::ClearcoatRoughness},
     {"coat_normal", Where::LastWords, Layout::ClearcoatNormal},
     {"clear_coat", Where::LastWords, Layout::Clearcoat},
+    {"sheen_roughness", Where::LastWords, Layout::SheenRoughness},
+    {"sheen_color", Where::LastWords, Layout::SheenColor},
+    {"sheen_colour", Where::LastWords, Layout::SheenColor},
 
     {"clearcoatroughness", Where::LastWords, Layout::ClearcoatRoughness}, // glTF's clearcoatRoughnessTexture
     {"clearcoatnormal", Where::LastWords, Layout::ClearcoatNormal}, // glTF's clearcoatNormalTexture
     {"clearcoat", Where::LastWords, Layout::Clearcoat}, {"coat", Where::LastWords, Layout::Clearcoat},
+    {"sheenroughness", Where::LastWords, Layout::SheenRoughness}, // glTF's sheenRoughnessTexture
+    {"sheencolor", Where::LastWords, Layout::SheenColor}, // glTF's sheenColorTexture
+    {"sheen", Where::LastWords, Layout::SheenColor},
 
     {"ambientocclusion", Where::LastWords, Layout::Occlusion}, // ambientCG
     {"metallicsmoothness", Where::LastWords, Layout::UnityMetallicSmoothness},
@@ -316,16 +328,21 @@ Material withAssignedMaps(Material material, const std::vector<MapAssignment>& a
         map.flipGreen = isNormalSlot(assignment.slot) && assignment.flipGreen;
         if (assignment.slot == MapSlot::BaseColor)
             map.factor = glm::dvec4(1.0, 1.0, 1.0, map.factor.w);
-        else if (assignment.slot == MapSlot::Emissive)
-            map.factor = glm::dvec4(1.0); // the default emissive factor, black, would hide the texture
+        else if (assignment.slot == MapSlot::Emissive || assignment.slot == MapSlot::SheenColor)
+            map.factor = glm::dvec4(1.0); // the default factor, black, would hide the texture
         else if (assignment.slot == MapSlot::Metallic || assignment.slot == MapSlot::Roughness
-            || assignment.slot == MapSlot::Clearcoat || assignment.slot == MapSlot::ClearcoatRoughness)
+            || assignment.slot == MapSlot::Clearcoat || assignment.slot == MapSlot::ClearcoatRoughness
+            || assignment.slot == MapSlot::SheenRoughness)
             material.setFactor(assignment.slot, 1.0); // a coat texture turns the coat on, as painted
     }
-    // A coat normal or roughness map alone says there is a coat: a full one, shaped by the map.
-    for (const MapAssignment& assignment : assignments)
+    // A coat normal or roughness map alone says there is a coat: a full one, shaped by the map;
+    // a sheen roughness map alone, a white sheen.
+    for (const MapAssignment& assignment : assignments) {
         if (lobeOf(assignment.slot) == MaterialLobe::Clearcoat && !material.hasClearcoat())
             material.setFactor(MapSlot::Clearcoat, 1.0);
+        if (lobeOf(assignment.slot) == MaterialLobe::Sheen && !material.hasSheen())
+            material.map(MapSlot::SheenColor).factor = glm::dvec4(1.0);
+    }
     return material;
 }
 

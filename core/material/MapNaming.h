@@ -33,6 +33,8 @@
 //                          clearcoatroughness, coat_roughness    the coat's roughness R
 //                          clearcoat_normal, clearcoatnormal,
 //                          coat_normal                           the coat's normal
+//                          sheen, sheencolor, sheen_color        the sheen's colour RGB (sRGB)
+//                          sheenroughness, sheen_roughness       the sheen's roughness R
 //   Unreal, T_<name>_X     d (base colour), n (normal, DirectX), r (roughness), m, mt (metallic),
 //                          o (occlusion), cc (R coat, G coat roughness: Facet's Unreal export);
 //                          the words above work after T_ too (T_Crate_BC, _AO, _ORM)

@@ -17,7 +17,8 @@ namespace {
 constexpr std::pair<MapSlot, const char*> kSlots[] = {{MapSlot::BaseColor, "baseColor"},
     {MapSlot::Normal, "normal"}, {MapSlot::Metallic, "metallic"}, {MapSlot::Roughness, "roughness"},
     {MapSlot::Occlusion, "occlusion"}, {MapSlot::Emissive, "emissive"}, {MapSlot::Clearcoat, "clearcoat"},
-    {MapSlot::ClearcoatRoughness, "clearcoatRoughness"}, {MapSlot::ClearcoatNormal, "clearcoatNormal"}};
+    {MapSlot::ClearcoatRoughness, "clearcoatRoughness"}, {MapSlot::ClearcoatNormal, "clearcoatNormal"},
+    {MapSlot::SheenColor, "sheenColor"}, {MapSlot::SheenRoughness, "sheenRoughness"}};
 constexpr std::pair<AlphaMode, const char*> kAlphaModes[]
     = {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}};
 constexpr std::pair<MapChannel, const char*> kChannels[] = {{MapChannel::Rgb, "rgb"}, {MapChannel::R, "r"},
@@ -44,7 +45,7 @@ bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
 {
     // The factors' ranges are the property registry's (Material::validate checks them first).
     const std::string key = toString(slot);
-    if (slot == MapSlot::Emissive) {
+    if (slot == MapSlot::Emissive || slot == MapSlot::SheenColor) {
         // Carried, never used: still a number a file can hold.
         if (!checkRange(map.factor.a, 0.0, 1.0, key + ".factor.a", problem))
             return false;
@@ -53,9 +54,9 @@ bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
             return fail(key + ".factor: a scalar factor must have equal components (use Material::setFactor)",
                 problem);
     }
-    if ((isNormalSlot(slot) || slot == MapSlot::Emissive) && map.channel != MapChannel::Rgb)
-        return fail(
-            key + ".channel: a" + (isNormalSlot(slot) ? " normal" : "n emissive") + " map reads \"rgb\"",
+    if (readsRgbOnly(slot) && map.channel != MapChannel::Rgb)
+        return fail(key + ".channel: " + (isNormalSlot(slot) ? "a normal map" : "the " + key + " map")
+                + " reads \"rgb\"",
             problem);
     if (isScalarSlot(slot) && map.channel == MapChannel::Rgb)
         return fail(
@@ -64,7 +65,7 @@ bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
     if (map.invert && !isScalarSlot(slot))
         return fail(key
                 + ".invert: only scalar maps (metallic, roughness, occlusion, the coat's strength and "
-                  "roughness) can be inverted",
+                  "roughness, the sheen's roughness) can be inverted",
             problem);
     if (map.flipGreen && !isNormalSlot(slot))
         return fail(key + ".flipGreen: only normal maps have a green-channel convention", problem);
@@ -189,6 +190,13 @@ std::array<MaterialMap, kMapSlotCount> Material::defaultMaps()
     maps[std::size_t(MapSlot::ClearcoatRoughness)].factor = glm::dvec4(0.0);
     maps[std::size_t(MapSlot::ClearcoatRoughness)].channel = MapChannel::G;
     maps[std::size_t(MapSlot::ClearcoatNormal)].factor = glm::dvec4(1.0);
+    // KHR_materials_sheen: no sheen; the colour texture is sRGB-encoded RGB, the roughness is its
+    // texture's alpha (the extension's channels: one RGBA texture can feed both).
+    MaterialMap& sheenColor = maps[std::size_t(MapSlot::SheenColor)];
+    sheenColor.factor = glm::dvec4(0.0, 0.0, 0.0, 1.0);
+    sheenColor.colorSpace = ColorEncoding::SRGB;
+    maps[std::size_t(MapSlot::SheenRoughness)].factor = glm::dvec4(0.0);
+    maps[std::size_t(MapSlot::SheenRoughness)].channel = MapChannel::A;
     return maps;
 }
 

@@ -15,6 +15,9 @@
 //   clearcoat           scalar in x, [0, 1] (KHR_materials_clearcoat clearcoatFactor; texture R)
 //   clearcoatRoughness  perceptual roughness in x (clearcoatRoughnessFactor; texture G)
 //   clearcoatNormal     strength in x (clearcoatNormalTexture.scale), as the normal slot's
+//   sheenColor          linear RGB in [0, 1] (KHR_materials_sheen sheenColorFactor; texture RGB,
+//                       sRGB), alpha unused; black: no sheen
+//   sheenRoughness      perceptual roughness in x (sheenRoughnessFactor; texture A)
 // For the scalar slots (and the normal maps' strength) the factor is kept as (v, v, v, v) (setFactor(slot, v)
 // does that) so that a vec4 uniform reads the same from any component and operator== compares what matters.
 // docs/project-format.md lists every field with its unit and default.
@@ -46,27 +49,33 @@ enum class MapSlot {
     Clearcoat,
     ClearcoatRoughness,
     ClearcoatNormal,
+    // KHR_materials_sheen's two textures (sheenColorTexture, sheenRoughnessTexture); they count
+    // only while the sheen is on (its colour is not black).
+    SheenColor,
+    SheenRoughness,
 };
-inline constexpr int kMapSlotCount = 9;
-inline constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots
-    = {MapSlot::BaseColor, MapSlot::Normal, MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion,
-        MapSlot::Emissive, MapSlot::Clearcoat, MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal};
+inline constexpr int kMapSlotCount = 11;
+inline constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots = {MapSlot::BaseColor, MapSlot::Normal,
+    MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion, MapSlot::Emissive, MapSlot::Clearcoat,
+    MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal, MapSlot::SheenColor, MapSlot::SheenRoughness};
 
 // "baseColor", "normal", "metallic", "roughness", "occlusion", "emissive", "clearcoat",
-// "clearcoatRoughness", "clearcoatNormal" (the project file's keys).
+// "clearcoatRoughness", "clearcoatNormal", "sheenColor", "sheenRoughness" (the project file's keys).
 const char* toString(MapSlot slot);
 std::optional<MapSlot> mapSlotFromString(std::string_view name);
-// Metallic, roughness, occlusion and the coat's strength and roughness hold one number; the
-// colours and the normal maps hold a vector.
+// Metallic, roughness, occlusion, the coat's strength and roughness and the sheen's roughness hold
+// one number; the colours and the normal maps hold a vector.
 inline bool isScalarSlot(MapSlot slot)
 {
     return slot == MapSlot::Metallic || slot == MapSlot::Roughness || slot == MapSlot::Occlusion
-        || slot == MapSlot::Clearcoat || slot == MapSlot::ClearcoatRoughness;
+        || slot == MapSlot::Clearcoat || slot == MapSlot::ClearcoatRoughness
+        || slot == MapSlot::SheenRoughness;
 }
-// Base colour and emissive hold colours: sRGB-encoded textures by default, an RGB factor.
+// Base colour, emissive and the sheen's colour hold colours: sRGB-encoded textures by default, an
+// RGB factor.
 inline bool isColorSlot(MapSlot slot)
 {
-    return slot == MapSlot::BaseColor || slot == MapSlot::Emissive;
+    return slot == MapSlot::BaseColor || slot == MapSlot::Emissive || slot == MapSlot::SheenColor;
 }
 // Tangent-space normal maps (the base's and the coat's): read "rgb", a strength as the factor
 // (glTF normalTexture.scale), a green-channel convention (MaterialMap::flipGreen).
@@ -75,15 +84,29 @@ inline bool isNormalSlot(MapSlot slot)
     return slot == MapSlot::Normal || slot == MapSlot::ClearcoatNormal;
 }
 
+// Slots whose texture is read as a whole colour or vector, channel "rgb": the normal maps, emissive
+// and the sheen's colour (base colour may also read one channel of a greyscale texture).
+inline bool readsRgbOnly(MapSlot slot)
+{
+    return isNormalSlot(slot) || slot == MapSlot::Emissive || slot == MapSlot::SheenColor;
+}
+
 // The part of the material a slot belongs to: the glTF 2.0 core model, or a layered lobe whose
 // slots count only while the lobe is on (Material::usesSlot).
-enum class MaterialLobe { Core, Clearcoat };
+enum class MaterialLobe { Core, Clearcoat, Sheen };
 inline MaterialLobe lobeOf(MapSlot slot)
 {
-    return slot == MapSlot::Clearcoat || slot == MapSlot::ClearcoatRoughness
-            || slot == MapSlot::ClearcoatNormal
-        ? MaterialLobe::Clearcoat
-        : MaterialLobe::Core;
+    switch (slot) {
+    case MapSlot::Clearcoat:
+    case MapSlot::ClearcoatRoughness:
+    case MapSlot::ClearcoatNormal:
+        return MaterialLobe::Clearcoat;
+    case MapSlot::SheenColor:
+    case MapSlot::SheenRoughness:
+        return MaterialLobe::Sheen;
+    default:
+        return MaterialLobe::Core;
+    }
 }
 
 // How the base colour's alpha is used (glTF 2.0 material.alphaMode).
@@ -207,8 +230,8 @@ struct Material {
     bool unlit = false;
     // Indexed by MapSlot. Defaults: base colour 0.8 grey (sRGB texture), metallic 0, roughness
     // 0.5, occlusion 1, normal strength 1, emissive black, no coat (strength 0, roughness 0,
-    // coat normal strength 1). (glTF's defaults, metallic 1 and roughness 1, describe a rough white
-    // metal: fine as texture multipliers, poor as a starting material.)
+    // coat normal strength 1), no sheen (black, roughness 0). (glTF's defaults, metallic 1 and roughness 1,
+    // describe a rough white metal: fine as texture multipliers, poor as a starting material.)
     std::array<MaterialMap, kMapSlotCount> maps = defaultMaps();
 
     MaterialMap& map(MapSlot slot) { return maps[std::size_t(slot)]; }
@@ -232,13 +255,37 @@ struct Material {
         setFactor(MapSlot::Clearcoat, strength);
         setFactor(MapSlot::ClearcoatRoughness, roughness);
     }
+    // KHR_materials_sheen: a Charlie microfacet lobe of its own colour and roughness over the
+    // material (cloth, velvet, dust), which keeps what the sheen's albedo leaves it
+    // (docs/shading.md, "Sheen"). Black: no sheen, and no shader cost.
+    glm::dvec3 sheenColor() const { return glm::dvec3(map(MapSlot::SheenColor).factor); }
+    double sheenRoughness() const { return map(MapSlot::SheenRoughness).factor.x; } // perceptual
+    bool hasSheen() const
+    {
+        const glm::dvec3 c = sheenColor();
+        return c.r > 0.0 || c.g > 0.0 || c.b > 0.0;
+    }
+    void setSheen(const glm::dvec3& linearRgb, double roughness)
+    {
+        map(MapSlot::SheenColor).factor = glm::dvec4(linearRgb, 1.0);
+        setFactor(MapSlot::SheenRoughness, roughness);
+    }
+    // Whether `lobe` is on: the core always, a layered lobe while its strength or colour is not 0.
+    bool hasLobe(MaterialLobe lobe) const
+    {
+        switch (lobe) {
+        case MaterialLobe::Clearcoat:
+            return hasClearcoat();
+        case MaterialLobe::Sheen:
+            return hasSheen();
+        case MaterialLobe::Core:
+            break;
+        }
+        return true;
+    }
     // Whether `slot` can change how the material looks: a core slot always, a lobe's slot while
     // the lobe is on. Loading, binding, the Texture Maps dock and exports skip the others.
-    bool usesSlot(MapSlot slot) const
-    {
-        return lobeOf(slot) == MaterialLobe::Core
-            || (lobeOf(slot) == MaterialLobe::Clearcoat && hasClearcoat());
-    }
+    bool usesSlot(MapSlot slot) const { return hasLobe(lobeOf(slot)); }
     // Scalar slots: stores (v, v, v, v). Base colour: use map(MapSlot::BaseColor).factor.
     void setFactor(MapSlot slot, double value) { map(slot).factor = glm::dvec4(value); }
     void setBaseColor(const glm::dvec3& linearRgb, double alpha = 1.0)

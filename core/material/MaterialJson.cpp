@@ -95,7 +95,7 @@ QJsonObject mapToJson(
         o[QLatin1String("texture")] = qs(json::storedPath(map.path, baseDir));
     if (slot == MapSlot::BaseColor)
         o[QLatin1String("factor")] = toArray(map.factor);
-    else if (slot == MapSlot::Emissive)
+    else if (isColorSlot(slot)) // emissive, the sheen's colour: RGB
         o[QLatin1String("factor")] = toArray(glm::dvec3(map.factor));
     else
         o[QLatin1String("factor")] = map.factor.x;

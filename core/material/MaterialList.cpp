@@ -102,16 +102,17 @@ SlotKind kindOf(MapSlot slot)
 MaterialMap pastedMap(MapSlot from, const MaterialMap& copied, MapSlot to, const MaterialMap& target)
 {
     MaterialMap map = copied;
-    if (kindOf(from) == kindOf(to))
-        return map;
-    map.factor = target.factor;
-    map.colorSpace = Material::defaultMaps()[std::size_t(to)].colorSpace;
-    if (isNormalSlot(to) || to == MapSlot::Emissive)
+    if (kindOf(from) != kindOf(to)) {
+        map.factor = target.factor;
+        map.colorSpace = Material::defaultMaps()[std::size_t(to)].colorSpace;
+        map.invert = false; // only between scalar slots, which are one kind
+        map.flipGreen = false; // only between normal maps
+    }
+    // Within a kind too: base colour may read one channel, emissive and the sheen's colour not.
+    if (readsRgbOnly(to))
         map.channel = MapChannel::Rgb;
     else if (isScalarSlot(to) && map.channel == MapChannel::Rgb)
         map.channel = MapChannel::R;
-    map.invert = false; // only between scalar slots, which are one kind
-    map.flipGreen = false; // only between normal maps
     return map;
 }
 

@@ -33,10 +33,11 @@ std::optional<Project> withMaterialRemoved(Project project, int index, std::stri
 
 // One map's copy pasted into another slot (the Texture Maps dock's Copy Map / Paste Map): the
 // file and how it is read (channel, UV transform, texture coordinates, sampler) and, between
-// slots of one kind (colour: base colour and emissive; normal; scalar: metallic, roughness,
-// occlusion), its factor, colour space, invert and green flip. Across kinds the target keeps its
-// factor and takes its own default colour space, and what the target cannot have is left out:
-// a normal or emissive map reads "rgb", a scalar one a single channel ("r" for a copied "rgb"),
+// slots of one kind (colour: base colour, emissive, sheen colour; normal; scalar: metallic,
+// roughness, occlusion, ...), its factor, colour space, invert and green flip. Across kinds the
+// target keeps its factor and takes its own default colour space, and what the target cannot have
+// is left out: a normal, emissive or sheen colour map reads "rgb" (readsRgbOnly), a scalar one a
+// single channel ("r" for a copied "rgb"),
 // invert only between scalar slots, the DirectX flip only between normal maps. The result
 // passes Material::validate.
 MaterialMap pastedMap(MapSlot from, const MaterialMap& copied, MapSlot to, const MaterialMap& target);

@@ -43,6 +43,10 @@ constexpr std::array<MaterialPropertyInfo, kMaterialPropertyCount> kProperties =
         "clearcoat-roughness"},
     {P::ClearcoatNormal, "clearcoatNormal", "clearcoatNormal.factor", "Clearcoat normal map strength",
         V::Scalar, 0.0, Material::kMaxNormalStrength, MapSlot::ClearcoatNormal, nullptr},
+    {P::SheenColor, "sheenColor", "sheenColor.factor", "Sheen colour (linear)", V::Color, 0.0, 1.0,
+        MapSlot::SheenColor, "sheen-color"},
+    {P::SheenRoughness, "sheenRoughness", "sheenRoughness.factor", "Sheen roughness (perceptual)", V::Scalar,
+        0.0, 1.0, MapSlot::SheenRoughness, "sheen-roughness"},
 }};
 
 constexpr bool inEnumOrder()
@@ -87,6 +91,7 @@ double scalarOf(const Material& material, MaterialProperty property)
         return material.alphaCutoff;
     case P::BaseColor:
     case P::Emissive:
+    case P::SheenColor:
         break;
     default:
         return material.map(*infoOf(property).slot).factor.x;
@@ -112,6 +117,7 @@ void setScalar(Material& material, MaterialProperty property, double value)
         return;
     case P::BaseColor:
     case P::Emissive:
+    case P::SheenColor:
         break;
     default:
         material.setFactor(*infoOf(property).slot, value);

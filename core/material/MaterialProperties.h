@@ -4,7 +4,8 @@
 // readers are Material::validate (the ranges and the fields its messages name), the wedge
 // (core/project/WedgeAxis: an axis of a material property takes its name, field, range and
 // setter from here), the command line's material flags (`facet render` and `facet sheet`:
-// --base-color, --metallic, --roughness, --clearcoat, --clearcoat-roughness; app/MaterialFlags)
+// --base-color, --metallic, --roughness, --clearcoat, --clearcoat-roughness, --sheen-color,
+// --sheen-roughness; app/MaterialFlags)
 // and the Material dock's sliders (ui/docks/MaterialDock addPropertySlider). A property's default is the
 // default Material's value, read through the row (no second copy). docs/architecture.md, "The material
 // property registry", says how a new property joins.
@@ -34,8 +35,10 @@ enum class MaterialProperty {
     Clearcoat, // KHR_materials_clearcoat: the coat's strength
     ClearcoatRoughness, // the coat's perceptual roughness
     ClearcoatNormal, // the coat's normal map strength
+    SheenColor, // KHR_materials_sheen: the sheen's colour (linear)
+    SheenRoughness, // the sheen's perceptual roughness
 };
-inline constexpr int kMaterialPropertyCount = 13;
+inline constexpr int kMaterialPropertyCount = 15;
 
 // What a property holds: one number, or a linear RGB colour whose components each lie in the range.
 enum class PropertyValue { Scalar, Color };

@@ -92,6 +92,11 @@ Image SwatchRenderer::render(const Material& material, const MaterialMapImages& 
                         inputs.clearcoatRoughness, m_prefilterSamples);
                     lighting.coatNoV = std::max(glm::dot(nc, v), 1e-4);
                 }
+                // The sheen's light: the irradiance's mean radiance, the better of the two lookups
+                // measured for the window's split sum (docs/shading.md, "Sheen"); a swatch has no
+                // environment cube to sample.
+                if (inputs.hasSheen())
+                    lighting.sheenRadiance = lighting.irradiance / std::numbers::pi;
                 const BrdfLobes lobes = splitSumRadiance(brdf, dfg, inputs, NoV, lighting);
                 sum += lobes.total() * inputs.occlusion
                     + inputs.emissive * (1.0 - clearcoatWeight(inputs, lighting.coatNoV));

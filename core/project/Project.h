@@ -152,7 +152,9 @@ struct Project {
     // Version 5: the coat's textures: "clearcoat", "clearcoatRoughness" and "clearcoatNormal" are
     // maps like the core six (a version 4 Facet would read the coat's map as its {"factor",
     // "roughness"} and drop its texture); version 4's {"factor", "roughness"} still reads.
-    static constexpr int kFormatVersion = 5;
+    // Version 6: KHR_materials_sheen, maps "sheenColor" and "sheenRoughness" (a version 5 Facet
+    // would drop them with a warning and save the material without its sheen).
+    static constexpr int kFormatVersion = 6;
     // More is refused when loading: far beyond any asset an artist previews, and each material
     // costs a shader variant and its textures.
     static constexpr int kMaxMaterials = 4096;

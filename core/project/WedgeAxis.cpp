@@ -25,9 +25,9 @@ WedgeParameterInfo materialAxis(WedgeParameter parameter, MaterialProperty prope
     return {parameter, info.name, info.field, info.minimum, info.maximum, property};
 }
 
-const std::array<WedgeParameterInfo, 12>& parameterTable()
+const std::array<WedgeParameterInfo, 13>& parameterTable()
 {
-    static const std::array<WedgeParameterInfo, 12> table = {{
+    static const std::array<WedgeParameterInfo, 13> table = {{
         materialAxis(WedgeParameter::Metallic, MaterialProperty::Metallic),
         materialAxis(WedgeParameter::Roughness, MaterialProperty::Roughness),
         materialAxis(WedgeParameter::Occlusion, MaterialProperty::Occlusion),
@@ -38,6 +38,7 @@ const std::array<WedgeParameterInfo, 12>& parameterTable()
         materialAxis(WedgeParameter::Alpha, MaterialProperty::Alpha),
         materialAxis(WedgeParameter::Clearcoat, MaterialProperty::Clearcoat),
         materialAxis(WedgeParameter::ClearcoatRoughness, MaterialProperty::ClearcoatRoughness),
+        materialAxis(WedgeParameter::SheenRoughness, MaterialProperty::SheenRoughness),
         {WedgeParameter::Environment, "env", "environment.source", 0.0, 0.0, std::nullopt},
         {WedgeParameter::Exposure, "exposure", "view.exposureEV", ViewSettings::kMinExposureEV,
             ViewSettings::kMaxExposureEV, std::nullopt},
@@ -316,6 +317,10 @@ std::string WedgeAxis::noEffectReason(const Project& project) const
     case WedgeParameter::ClearcoatRoughness:
         if (!m.hasClearcoat())
             return "clearcoatRoughness shapes the clear coat, and the material has none (clearcoat 0)";
+        break;
+    case WedgeParameter::SheenRoughness:
+        if (!m.hasSheen())
+            return "sheenRoughness shapes the sheen, and the material has none (sheenColor black)";
         break;
     default:
         break;

@@ -41,6 +41,7 @@ enum class WedgeParameter {
     Alpha,
     Clearcoat,
     ClearcoatRoughness,
+    SheenRoughness,
     Environment,
     Exposure,
 };

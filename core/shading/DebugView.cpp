@@ -42,6 +42,8 @@ constexpr std::array<DebugViewName, kDebugViewCount> kDebugViewNames = {{
     {"clearcoat", "Clearcoat strength", nullptr},
     {"clearcoat-roughness", "Clearcoat roughness", nullptr},
     {"clearcoat-normal", "Clearcoat normal", nullptr},
+    {"sheen-color", "Sheen colour", nullptr},
+    {"sheen-roughness", "Sheen roughness", nullptr},
 }};
 
 } // namespace

@@ -45,13 +45,16 @@ enum class DebugView : int {
     Clearcoat, // KHR_materials_clearcoat's strength (factor x texture); 0 without a coat
     ClearcoatRoughness, // the coat's perceptual roughness (factor x texture); 0 without a coat
     ClearcoatNormal, // the coat's normal * 0.5 + 0.5 (its normal map's, or the geometric normal)
+    SheenColor, // KHR_materials_sheen's colour (factor x texture, linear); black without a sheen
+    SheenRoughness, // the sheen's perceptual roughness (factor x texture); 0 without a sheen
 };
-inline constexpr int kDebugViewCount = 28;
+inline constexpr int kDebugViewCount = 30;
 // "none", "base-color", "shading-normal", "geometric-normal", "metallic", "roughness",
 // "occlusion", "distribution", "visibility", "fresnel", "irradiance", "ibl-diffuse",
 // "prefiltered-radiance", "brdf-lut", "ibl-specular", "ibl-total", "direct-light",
 // "white-furnace", "uv", "tangent", "emissive", "alpha", "non-finite", "uv-checker",
-// "texel-density", "clearcoat", "clearcoat-roughness", "clearcoat-normal" (ViewSettings::debugView,
+// "texel-density", "clearcoat", "clearcoat-roughness", "clearcoat-normal", "sheen-color",
+// "sheen-roughness" (ViewSettings::debugView,
 // facet render --view).
 const char* toString(DebugView view);
 // What the window shows: "Off (shaded image)", "Base colour", ..., "Distribution D", ...

@@ -253,6 +253,18 @@ MaterialInfo materialInputs(const Material& material, const MaterialMapImages& i
         m.clearcoat = std::clamp(m.clearcoat, 0.0, 1.0);
         m.clearcoatRoughness = std::clamp(m.clearcoatRoughness, 0.0, 1.0);
     }
+    // KHR_materials_sheen: colour (RGB) and roughness (A), each its factor times its texture (GLSL
+    // under MATERIAL_SHEEN); without a sheen neither is read.
+    if (material.hasSheen()) {
+        m.sheenColor = material.sheenColor();
+        if (const auto texel = read(MapSlot::SheenColor))
+            m.sheenColor *= glm::dvec3(*texel);
+        m.sheenRoughness = material.sheenRoughness();
+        if (const auto texel = read(MapSlot::SheenRoughness))
+            m.sheenRoughness *= scalarMapValue(material.map(MapSlot::SheenRoughness), *texel);
+        m.sheenColor = glm::clamp(m.sheenColor, glm::dvec3(0.0), glm::dvec3(1.0));
+        m.sheenRoughness = std::clamp(m.sheenRoughness, 0.0, 1.0);
+    }
     return m;
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <utility>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -93,13 +95,55 @@ SheenAlbedoTable SheenAlbedoTable::compute(int size, int steps, SheenVisibility 
             table.m_texels[y * std::size_t(table.m_size) + std::size_t(x)]
                 = sheenDirectionalAlbedo(double(x) / last, double(y) / last, visibility, steps);
     });
+    table.computeDiffuse();
+    return table;
+}
+
+void SheenAlbedoTable::computeDiffuse()
+{
+    // Emax(mu_v) = integral_0^1 max(E(mu_v), E(mu_l)) 2 mu_l dmu_l, the trapezoid rule over the
+    // n.l texels (the cosine-weighted hemisphere is 2 mu dmu in mu).
+    m_diffuse.assign(m_texels.size(), 0.0);
+    const double h = 1.0 / double(m_size - 1);
+    for (int y = 0; y < m_size; ++y)
+        for (int x = 0; x < m_size; ++x) {
+            double sum = 0.0;
+            for (int i = 0; i < m_size; ++i) {
+                const double mu = double(i) * h;
+                const double weight = (i == 0 || i == m_size - 1) ? 0.5 * h : h;
+                sum += std::max(texel(x, y), texel(i, y)) * 2.0 * mu * weight;
+            }
+            m_diffuse[std::size_t(y) * std::size_t(m_size) + std::size_t(x)] = sum;
+        }
+}
+
+SheenAlbedoTable SheenAlbedoTable::fromTexels(int size, std::vector<double> texels)
+{
+    SheenAlbedoTable table;
+    if (size >= 2 && texels.size() == std::size_t(size) * std::size_t(size)) {
+        table.m_size = size;
+        table.m_texels = std::move(texels);
+        table.computeDiffuse();
+    }
     return table;
 }
 
 double SheenAlbedoTable::sample(double NoV, double sheenRoughness) const
 {
+    return bilinear(m_texels, NoV, sheenRoughness);
+}
+
+double SheenAlbedoTable::sampleDiffuse(double NoV, double sheenRoughness) const
+{
+    return bilinear(m_diffuse, NoV, sheenRoughness);
+}
+
+double SheenAlbedoTable::bilinear(const std::vector<double>& texels, double NoV, double sheenRoughness) const
+{
     if (m_size == 0)
         return 0.0;
+    const auto at
+        = [&](int x, int y) { return texels[std::size_t(y) * std::size_t(m_size) + std::size_t(x)]; };
     const double last = double(m_size - 1);
     const double fx = std::clamp(NoV, 0.0, 1.0) * last;
     const double fy = std::clamp(sheenRoughness, 0.0, 1.0) * last;
@@ -107,14 +151,20 @@ double SheenAlbedoTable::sample(double NoV, double sheenRoughness) const
     const int y0 = std::min(int(fy), m_size - 2);
     const double tx = fx - x0;
     const double ty = fy - y0;
-    const double bottom = texel(x0, y0) + (texel(x0 + 1, y0) - texel(x0, y0)) * tx;
-    const double top = texel(x0, y0 + 1) + (texel(x0 + 1, y0 + 1) - texel(x0, y0 + 1)) * tx;
+    const double bottom = at(x0, y0) + (at(x0 + 1, y0) - at(x0, y0)) * tx;
+    const double top = at(x0, y0 + 1) + (at(x0 + 1, y0 + 1) - at(x0, y0 + 1)) * tx;
     return bottom + (top - bottom) * ty;
 }
 
+namespace {
+#include "core/shading/ShippedSheenTable.inc"
+static_assert(std::size(kShippedSheenTexels) == std::size_t(kShippedSheenTableSize * kShippedSheenTableSize));
+} // namespace
+
 const SheenAlbedoTable& sheenAlbedoTable()
 {
-    static const SheenAlbedoTable table = SheenAlbedoTable::compute(64, 64, SheenVisibility::Charlie);
+    static const SheenAlbedoTable table = SheenAlbedoTable::fromTexels(kShippedSheenTableSize,
+        std::vector<double>(std::begin(kShippedSheenTexels), std::end(kShippedSheenTexels)));
     return table;
 }
 

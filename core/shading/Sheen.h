@@ -48,21 +48,40 @@ public:
     // Each texel by sheenDirectionalAlbedo with `steps`, on all cores.
     static SheenAlbedoTable compute(
         int size, int steps, SheenVisibility visibility = SheenVisibility::Charlie);
+    // A table from its texels, row y = roughness (size x size of them; the shipped table).
+    static SheenAlbedoTable fromTexels(int size, std::vector<double> texels);
     int size() const { return m_size; }
     double texel(int x, int y) const
     {
         return m_texels[std::size_t(y) * std::size_t(m_size) + std::size_t(x)];
     }
     double sample(double NoV, double sheenRoughness) const;
+    // What the sheen's reciprocal scaling takes from a Lambertian base lit from every direction:
+    // Emax(n.v, r) = integral over the hemisphere of max(E(n.v, r), E(n.l, r)) (n.l) / pi dl, so
+    // that the base's cosine-weighted mean scaling is 1 - max3(sheenColor) Emax (the split sum's
+    // and fis's diffuse lobe; docs/shading.md, "Sheen"). Tabulated on the same texels from E (the
+    // trapezoid rule over its n.l texels), bilinear between them.
+    double diffuseTexel(int x, int y) const
+    {
+        return m_diffuse[std::size_t(y) * std::size_t(m_size) + std::size_t(x)];
+    }
+    double sampleDiffuse(double NoV, double sheenRoughness) const;
 
 private:
+    void computeDiffuse();
+    double bilinear(const std::vector<double>& texels, double NoV, double sheenRoughness) const;
+
     int m_size = 0;
     std::vector<double> m_texels;
+    std::vector<double> m_diffuse;
 };
 
-// The table the material BRDF reads: V_Charlie (the extension's), 64 x 64 texels of a 64-step
-// quadrature (within 2.5e-3 of the 256-step E from sheen roughness 0.3, 0.015 at 0.1:
-// SheenLayeringTest); computed once, on first use (about 2 s on 2 cores).
+// The table the material BRDF and the GPU's sheen read: V_Charlie (the extension's), 64 x 64
+// texels of a 512-step quadrature, shipped as data (core/shading/ShippedSheenTable.inc, written by
+// tests/tools/WriteSheenTable.cpp; SheenLayeringTest recomputes texels of it), so no frame or
+// ground truth waits the minutes it takes to integrate.
+inline constexpr int kShippedSheenTableSize = 64;
+inline constexpr int kShippedSheenTableSteps = 512;
 const SheenAlbedoTable& sheenAlbedoTable();
 
 // KHR_materials_sheen's layering: what the material under the sheen keeps towards v from l,

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/shading/Brdf.h"
+#include "core/shading/Sheen.h"
 
 namespace facet {
 
@@ -76,12 +77,25 @@ BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, cons
     BrdfLobes lobes = brdf.model().composition == BrdfComposition::LearnOpenGL
         ? learnOpenGlLobes(brdf, material, NoV, lighting, dfg)
         : gltfLobes(brdf, material, NoV, lighting, dfg);
+    if (material.hasSheen()) {
+        // The sheen: its albedo E(n.v, r_s) times its lobe's light; the base keeps its lobes' mean
+        // scaling: 1 - max3(c) E(n.v) for the specular, 1 - max3(c) Emax(n.v) for the diffuse.
+        const shading::SheenAlbedoTable& sheenTable = shading::sheenAlbedoTable();
+        const double r = std::clamp(material.sheenRoughness, 0.0, 1.0);
+        const double e = sheenTable.sample(NoV, r);
+        const glm::dvec3 color = glm::max(material.sheenColor, glm::dvec3(0.0));
+        const double strength = std::max({color.r, color.g, color.b});
+        lobes.diffuse *= std::max(1.0 - strength * sheenTable.sampleDiffuse(NoV, r), 0.0);
+        lobes.specular *= std::max(1.0 - strength * e, 0.0);
+        lobes.sheen = lighting.sheenRadiance * color * e;
+    }
     if (material.clearcoat > 0.0) {
         // The coat: its prefiltered light times its lobe's albedo with F = 1, weighted by w_c.
         const double coatNoV = std::clamp(lighting.coatNoV, 0.0, 1.0);
         const double weight = clearcoatWeight(material, coatNoV);
         lobes.diffuse *= 1.0 - weight;
         lobes.specular *= 1.0 - weight;
+        lobes.sheen *= 1.0 - weight;
         lobes.coat = lighting.coatPrefilteredRadiance
             * (table.sample(coatNoV, clampRoughness(material.clearcoatRoughness)).albedo() * weight);
     }

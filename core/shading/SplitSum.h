@@ -20,6 +20,10 @@ struct SplitSumLighting {
     // it; the base's NoV may come from its own normal map).
     glm::dvec3 coatPrefilteredRadiance {0.0};
     double coatNoV = 1.0;
+    // The sheen's, read only when the material has a sheen: the mean radiance under its lobe (the
+    // window's split sum averages filtered samples, resources/shaders/ibl_fis.glsl
+    // sheenLobeRadiance; a swatch takes the irradiance's mean).
+    glm::dvec3 sheenRadiance {0.0};
 };
 
 // Outgoing radiance lobes towards a viewer at n.v = NoV (before ambient occlusion):
@@ -30,6 +34,8 @@ struct SplitSumLighting {
 //     glTF, energy preserving   (1 - m) (1 - E_s(n.v))          E_s = dielectricSpecularAlbedo
 //     LearnOpenGL, fresnel_mix  (1 - m) (1 - F0) W(n.v)
 //     LearnOpenGL, energy pres. (1 - m) (1 - E_s(n.v))
+//   sheen    = sheenLight * sheenColor * E_sheen(n.v, r_s), and the base's lobes times
+//              1 - max3(sheenColor) E_sheen(n.v, r_s) (docs/shading.md, "Sheen")
 //   coat     = prefiltered_c * (scale_c + bias_c) * w_c, w_c = clearcoatWeight (the coat's lobe has
 //              no Fresnel inside: its DFG albedo with F = 1), and the lobes above times 1 - w_c
 // fresnel_mix's weights are the albedo of its base c / pi (1 - F(v.h)), the ground truth's model

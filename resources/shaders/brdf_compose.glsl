@@ -3,6 +3,7 @@
 // (uDfgLut, RGBA = scale, bias, E, W; core/shading/DfgTable.h) gives E for multi-scatter compensation.
 #include "brdf_ggx.glsl"
 #include "ibl_lookup.glsl"
+#include "brdf_sheen.glsl"
 
 uniform sampler2D uDfgLut;
 uniform float uDfgSize;
@@ -10,15 +11,17 @@ uniform float uDfgSize;
 // core's MaterialBrdf::dielectricSpecularAverageAlbedo (see docs/rendering.md).
 uniform float uDielectricAverageAlbedo;
 
-// The base's lobes carry the coat's 1 - clearcoatWeight; `coat` is the coat's own lobe (zero
-// without MATERIAL_CLEARCOAT). Twin of core's BrdfLobes.
+// The base's lobes carry the sheen's albedo scaling and the coat's 1 - clearcoatWeight; `sheen`
+// is the sheen's own lobe (times the coat's 1 - w_c), `coat` the coat's (each zero without
+// MATERIAL_SHEEN, MATERIAL_CLEARCOAT). Twin of core's BrdfLobes.
 struct BrdfLobes {
     vec3 diffuse;
     vec3 specular;
+    vec3 sheen;
     vec3 coat;
 };
 
-vec3 lobeTotal(BrdfLobes lobes) { return lobes.diffuse + lobes.specular + lobes.coat; }
+vec3 lobeTotal(BrdfLobes lobes) { return lobes.diffuse + lobes.specular + lobes.sheen + lobes.coat; }
 
 // KHR_materials_clearcoat's fresnel_coat weight at the coat's n.v: clearcoat x F_Schlick(0.04,
 // 1, n.v) (the coat's IOR is 1.5). Twin of core's clearcoatWeight.
@@ -101,6 +104,7 @@ BrdfLobes evaluateBrdf(MaterialInfo m, vec3 n, vec3 v, vec3 l, bool punctual)
     BrdfLobes lobes;
     lobes.diffuse = vec3(0.0);
     lobes.specular = vec3(0.0);
+    lobes.sheen = vec3(0.0);
     lobes.coat = vec3(0.0);
     float NoL = dot(n, l);
     float NoVraw = dot(n, v);
@@ -149,6 +153,15 @@ BrdfLobes evaluateBrdf(MaterialInfo m, vec3 n, vec3 v, vec3 l, bool punctual)
     lobes.diffuse = (1.0 - metallic) * dielectricDiffuse;
     lobes.specular = (1.0 - metallic) * dielectricSpecular + metallic * microfacet * fMetal * msMetal;
 #endif
+#ifdef MATERIAL_SHEEN
+    // sheen_brdf + scaling x material, the scaling reciprocal (the min of its n.v and n.l terms);
+    // no Fresnel in the lobe (docs/shading.md, "Sheen").
+    float sheenScaling = sheenAlbedoScaling(m.sheenColor, m.sheenRoughness, NoV, NoL);
+    lobes.diffuse *= sheenScaling;
+    lobes.specular *= sheenScaling;
+    float sheenAlpha = m.sheenRoughness * m.sheenRoughness;
+    lobes.sheen = max(m.sheenColor, vec3(0.0)) * (D_Charlie(NoH, sheenAlpha) * V_Charlie(NoV, min(NoL, 1.0), sheenAlpha));
+#endif
 #ifdef MATERIAL_CLEARCOAT
     // mix(material, clearcoat_brdf, clearcoat x Fc(nc.v)): the coat a GGX lobe of its own
     // roughness about its own normal, with no Fresnel inside (docs/shading.md, "Clearcoat").
@@ -158,6 +171,7 @@ BrdfLobes evaluateBrdf(MaterialInfo m, vec3 n, vec3 v, vec3 l, bool punctual)
     float weight = clearcoatWeight(m, NcoV);
     lobes.diffuse *= 1.0 - weight;
     lobes.specular *= 1.0 - weight;
+    lobes.sheen *= 1.0 - weight; // the coat lies over the sheen
     if (NcoL > 0.0) {
         float coatRoughness = clampRoughness(m.clearcoatRoughness);
         float coatAlpha = coatRoughness * coatRoughness;

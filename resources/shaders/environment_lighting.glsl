@@ -119,6 +119,8 @@ vec3 splitSumLobeRadiance(vec3 n, vec3 v, float roughness)
     return prefilteredRadiance(specularDominantDirection(n, reflect(-v, n), roughness * roughness), roughness);
 }
 
+uniform int uSheenSamples; // MATERIAL_SHEEN under the split sum: the sheen lobe's fis samples
+
 // Lobes sharper than level 1: the prefiltered map's level 0 is the environment resampled into a
 // small cube, and a mirror-like lobe read there is blurred and shifted by that resampling (20% at
 // roughness 0.05 on forest). Those pixels integrate their own lobe instead, by a few filtered
@@ -162,6 +164,18 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     lobes.specular = radiance * mix(specularDielectric, specularMetal, metallic);
 #endif
     lobes.diffuse = irradiance(n) * INV_PI * environmentDiffuseAlbedo(m, NoV, roughness);
+    lobes.sheen = vec3(0.0);
+#ifdef MATERIAL_SHEEN
+    // The sheen: its albedo E(n.v, r_s) times its lobe's light; the base keeps its lobes' mean
+    // scaling (docs/shading.md, "Sheen"). The Charlie lobe gathers light near the horizon of n
+    // for every view, a ring no prefiltered lookup about one direction resembles (for the sheen
+    // alone on studio the GGX map at R measured 145% relative RMSE, the irradiance 59%), so its
+    // light is a few filtered samples of the environment cube, averaged with the lobe's weights.
+    lobes.diffuse *= sheenDiffuseScaling(m.sheenColor, NoV, m.sheenRoughness);
+    lobes.specular *= sheenSpecularScaling(m.sheenColor, NoV, m.sheenRoughness);
+    lobes.sheen = m.sheenColor * sheenAlbedo(NoV, m.sheenRoughness)
+        * sheenLobeRadiance(m, facingNormal(n, v), v, uSheenSamples);
+#endif
     lobes.coat = vec3(0.0);
 #ifdef MATERIAL_CLEARCOAT
     // The coat: its prefiltered light times its lobe's albedo with F = 1 (the DFG table's scale +
@@ -172,6 +186,7 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     float coatWeight = clearcoatWeight(m, NcoV);
     lobes.diffuse *= 1.0 - coatWeight;
     lobes.specular *= 1.0 - coatWeight;
+    lobes.sheen *= 1.0 - coatWeight;
     vec4 coatDfg = dfgLookup(NcoV, coatRoughness);
     lobes.coat = withSharpLobe(splitSumLobeRadiance(nc, v, coatRoughness) * ((coatDfg.r + coatDfg.g) * coatWeight),
                                m, nc, v, LOBE_COAT, coatRoughness);

@@ -26,6 +26,10 @@ vec2 lobeSelection(MaterialInfo m, float NoV)
     const vec3 lum = vec3(0.2126, 0.7152, 0.0722);
     float specular = dot(F_Schlick(f0, 1.0, NoV), lum);
     float diffuse = dot(baseColor, lum) * (1.0 - metallic) * (1.0 - specular);
+#ifdef MATERIAL_SHEEN
+    // The cosine strategy also serves the sheen, a broad lobe.
+    diffuse += dot(max(m.sheenColor, vec3(0.0)), lum);
+#endif
     vec2 p = vec2(0.0, diffuse <= 0.0 ? 1.0 : clamp(specular / (specular + diffuse), 0.1, 0.9));
 #ifdef MATERIAL_CLEARCOAT
     if (m.clearcoat > 0.0) {
@@ -82,10 +86,12 @@ void addContribution(inout BrdfLobes sum, MaterialInfo m, vec3 n, vec3 v, vec3 l
     vec3 scale = radiance * (dot(n, l) * weightOverPdf);
     vec3 diffuse = f.diffuse * scale;
     vec3 specular = f.specular * scale;
+    vec3 sheen = f.sheen * scale;
     vec3 coat = f.coat * scale;
-    if (isUsable(diffuse) && isUsable(specular) && isUsable(coat)) {
+    if (isUsable(diffuse) && isUsable(specular) && isUsable(sheen) && isUsable(coat)) {
         sum.diffuse += diffuse;
         sum.specular += specular;
+        sum.sheen += sheen;
         sum.coat += coat;
     }
 }
@@ -96,6 +102,7 @@ BrdfLobes referenceEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     BrdfLobes sum;
     sum.diffuse = vec3(0.0);
     sum.specular = vec3(0.0);
+    sum.sheen = vec3(0.0);
     sum.coat = vec3(0.0);
     float NoV = dot(n, v);
     if (NoV < 0.0)
@@ -140,6 +147,7 @@ BrdfLobes referenceEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     }
     sum.diffuse /= float(count);
     sum.specular /= float(count);
+    sum.sheen /= float(count);
     sum.coat /= float(count);
     return sum;
 }

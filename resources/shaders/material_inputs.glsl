@@ -2,7 +2,7 @@
 // factors and, where the variant says HAS_*_MAP, one texture each. Twin of what core's
 // MaterialInfo holds after textures (core/material/Material.h explains every factor).
 //
-// Slots (core/material/Material.h MapSlot): SLOT_BASE_COLOR, SLOT_NORMAL, ..., SLOT_CLEARCOAT_NORMAL,
+// Slots (core/material/Material.h MapSlot): SLOT_BASE_COLOR, SLOT_NORMAL, ..., SLOT_SHEEN_ROUGHNESS,
 // MAP_SLOT_COUNT of them, their numbers defined from MapSlot (render/ShaderVariant surfaceDefines).
 // Per slot: uUvTransform (KHR_texture_transform matrix, core UvTransform::matrix()), uChannel
 // (0 rgb, 1 r, 2 g, 3 b, 4 a: core MapChannel), uInvert (scalar maps: 1 - value), uTexCoord (the
@@ -25,6 +25,10 @@ struct MaterialInfo {
     float clearcoat;
     float clearcoatRoughness;
     vec3 clearcoatNormal;
+    // KHR_materials_sheen (MATERIAL_SHEEN; black and 0 without it): colour (linear) and
+    // perceptual roughness (core's MaterialInfo::sheenColor, sheenRoughness).
+    vec3 sheenColor;
+    float sheenRoughness;
 };
 
 uniform vec4 uBaseColorFactor;
@@ -37,6 +41,10 @@ uniform vec3 uEmissiveFactor; // core Material::emissive(): factor x strength
 #ifdef MATERIAL_CLEARCOAT
 uniform float uClearcoatFactor;
 uniform float uClearcoatRoughness;
+#endif
+#ifdef MATERIAL_SHEEN
+uniform vec3 uSheenColorFactor;
+uniform float uSheenRoughness;
 #endif
 uniform mat3 uUvTransform[MAP_SLOT_COUNT];
 uniform int uChannel[MAP_SLOT_COUNT];
@@ -74,6 +82,14 @@ uniform sampler2D uClearcoatRoughnessMap;
 #ifdef HAS_CLEARCOAT_NORMAL_MAP
 uniform sampler2D uClearcoatNormalMap;
 uniform float uClearcoatNormalStrength;
+#endif
+#endif
+#ifdef MATERIAL_SHEEN
+#ifdef HAS_SHEEN_COLOR_MAP
+uniform sampler2D uSheenColorMap;
+#endif
+#if defined(HAS_SHEEN_ROUGHNESS_MAP) && !defined(SHEEN_ROUGHNESS_TEXEL_FROM_SHEEN_COLOR)
+uniform sampler2D uSheenRoughnessMap;
 #endif
 #endif
 
@@ -193,6 +209,29 @@ MaterialInfo materialInputs(vec2 uv)
     m.clearcoatRoughness = 0.0;
 #endif
     m.clearcoatNormal = vec3(0.0, 0.0, 1.0); // the caller's geometric normal replaces it
+#ifdef MATERIAL_SHEEN
+    // Colour in RGB (sRGB-decoded by the upload) and roughness in A of the extension's textures;
+    // an sRGB texture's alpha is linear, so one packed texture feeds both with one fetch.
+    m.sheenColor = uSheenColorFactor;
+#ifdef HAS_SHEEN_COLOR_MAP
+    vec4 sheenColorTexel = texture(uSheenColorMap, mapUv(SLOT_SHEEN_COLOR, uv));
+    m.sheenColor *= sheenColorTexel.rgb;
+#endif
+    m.sheenRoughness = uSheenRoughness;
+#ifdef HAS_SHEEN_ROUGHNESS_MAP
+#ifdef SHEEN_ROUGHNESS_TEXEL_FROM_SHEEN_COLOR
+    vec4 sheenRoughnessTexel = sheenColorTexel;
+#else
+    vec4 sheenRoughnessTexel = texture(uSheenRoughnessMap, mapUv(SLOT_SHEEN_ROUGHNESS, uv));
+#endif
+    m.sheenRoughness *= scalarMapValue(SLOT_SHEEN_ROUGHNESS, sheenRoughnessTexel);
+#endif
+    m.sheenColor = clamp(m.sheenColor, vec3(0.0), vec3(1.0));
+    m.sheenRoughness = clamp(m.sheenRoughness, 0.0, 1.0);
+#else
+    m.sheenColor = vec3(0.0);
+    m.sheenRoughness = 0.0;
+#endif
     return m;
 }
 

@@ -132,6 +132,10 @@ void main()
     color = vec3(m.clearcoatRoughness);
 #elif DEBUG_VIEW == DEBUG_CLEARCOAT_NORMAL
     color = m.clearcoatNormal * 0.5 + 0.5;
+#elif DEBUG_VIEW == DEBUG_SHEEN_COLOR
+    color = m.sheenColor;
+#elif DEBUG_VIEW == DEBUG_SHEEN_ROUGHNESS
+    color = vec3(m.sheenRoughness);
 #elif DEBUG_VIEW == DEBUG_DISTRIBUTION
     color = vec3(distribution(saturate(dot(n, debugH)), debugR * debugR));
 #elif DEBUG_VIEW == DEBUG_VISIBILITY
@@ -147,7 +151,7 @@ void main()
 #elif DEBUG_VIEW == DEBUG_BRDF_LUT
     color = dfgLookup(debugNoV, debugR).rgb;
 #elif DEBUG_VIEW == DEBUG_IBL_SPECULAR
-    color = (ibl.specular + ibl.coat) * m.occlusion;
+    color = (ibl.specular + ibl.sheen + ibl.coat) * m.occlusion;
 #elif DEBUG_VIEW == DEBUG_IBL_TOTAL
     color = indirect;
 #elif DEBUG_VIEW == DEBUG_DIRECT_LIGHT

@@ -38,6 +38,7 @@ Project iblMethodCaseProject(const IblMethodCase& c, IblMethod method, int sampl
     m.shading.multiScatter = c.multiScatter;
     m.setFactor(MapSlot::Clearcoat, c.clearcoat);
     m.setFactor(MapSlot::ClearcoatRoughness, c.clearcoatRoughness);
+    m.setSheen(c.sheenColor, c.sheenRoughness);
     return project;
 }
 

@@ -32,6 +32,9 @@ struct IblMethodCase {
     // KHR_materials_clearcoat: the coat's strength (0: none) and perceptual roughness.
     double clearcoat = 0.0;
     double clearcoatRoughness = 0.0;
+    // KHR_materials_sheen: the sheen's colour (black: none) and perceptual roughness.
+    glm::dvec3 sheenColor {0.0};
+    double sheenRoughness = 0.0;
 };
 
 // The default project with the case's environment, material and light, the sphere, no debug

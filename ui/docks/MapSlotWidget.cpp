@@ -60,9 +60,12 @@ int mergeIdFor(MapSlot slot)
     case MapSlot::Clearcoat:
     case MapSlot::ClearcoatRoughness:
     case MapSlot::ClearcoatNormal:
-        // The registry's row of the slot's factor: the Material dock's slider of it merges alike.
+    case MapSlot::SheenColor:
+    case MapSlot::SheenRoughness:
+        // The registry's row of the slot's factor: the Material dock's slider (or colour) of it
+        // merges alike. (Base colour's row also holds the alpha, a row of its own.)
         for (const MaterialPropertyInfo& info : materialProperties())
-            if (info.slot == slot && info.value == PropertyValue::Scalar)
+            if (info.slot == slot)
                 return MergeId::MaterialProperty0 + int(info.property);
         break;
     case MapSlot::Emissive:
@@ -108,6 +111,10 @@ QString MapSlotWidget::title(MapSlot slot)
         return tr("Clearcoat Roughness");
     case MapSlot::ClearcoatNormal:
         return tr("Clearcoat Normal");
+    case MapSlot::SheenColor:
+        return tr("Sheen Colour");
+    case MapSlot::SheenRoughness:
+        return tr("Sheen Roughness");
     }
     return {};
 }
@@ -182,16 +189,17 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     const int mergeId = mergeIdFor(slot);
     if (isColorSlot(slot)) {
-        // Base colour and emissive hold a linear RGB colour (the emissive one in [0, 1], its
-        // brightness in the strength below, as KHR_materials_emissive_strength splits them).
+        // Base colour, emissive and the sheen's colour hold a linear RGB colour (the emissive one
+        // in [0, 1], its brightness in the strength below, as KHR_materials_emissive_strength
+        // splits them).
         m_color = new ColorButton(this);
-        m_color->setObjectName(slot == MapSlot::BaseColor ? QStringLiteral("baseColorButton")
-                                                          : QStringLiteral("emissiveColorButton"));
+        m_color->setObjectName(slot == MapSlot::Emissive ? QStringLiteral("emissiveColorButton")
+                                                         : key + QStringLiteral("Button"));
         form->addRow(tr("Colour"), m_color);
         connect(m_color, &ColorButton::colorEdited, this, [this](const glm::dvec3& linear) {
             MaterialMap map = m_document->project().material().map(m_slot);
             map.factor = glm::dvec4(linear, map.factor.w);
-            editMap(map, m_slot == MapSlot::BaseColor ? tr("Base Colour") : tr("Emissive Colour"));
+            editMap(map, m_slot == MapSlot::Emissive ? tr("Emissive Colour") : title(m_slot));
         });
         if (slot == MapSlot::Emissive) {
             // 0 to 10000 spans six decades: a logarithmic slider (each step about 1.4% brighter),
@@ -229,7 +237,7 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
             editMap(map, factorName(m_slot), mergeId);
         });
     }
-    if (!isNormalSlot(slot) && slot != MapSlot::Emissive) {
+    if (!readsRgbOnly(slot)) {
         m_channel = new QComboBox(this);
         m_channel->setObjectName(QStringLiteral("mapChannel_%1").arg(key));
         if (slot == MapSlot::BaseColor)

@@ -5,6 +5,7 @@
 #include "ui/document/Document.h"
 #include "ui/document/DocumentCommands.h"
 #include "ui/document/MaterialTransfer.h"
+#include "ui/widgets/ColorButton.h"
 #include "ui/widgets/ValueSlider.h"
 
 #include <QCheckBox>
@@ -110,14 +111,39 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     // The layered lobes (docs/shading.md): a section each, open while the lobe is on, above the
     // alpha and BRDF settings (what an artist reaches for first).
     QFormLayout* clearcoatForm = nullptr;
-    m_clearcoatGroup
-        = addLobeSection(tr("Clearcoat"), MaterialProperty::Clearcoat, 1.0, content, &clearcoatForm);
+    m_clearcoatGroup = addLobeSection(
+        tr("Clearcoat"), [](Material& m, bool on) { m.setFactor(MapSlot::Clearcoat, on ? 1.0 : 0.0); },
+        content, &clearcoatForm);
     m_clearcoatGroup->setObjectName(QStringLiteral("clearcoatGroup"));
     m_clearcoatGroup->setToolTip(tr("KHR_materials_clearcoat: a clear lacquer (IOR 1.5) over the material, "
                                     "with its own roughness: car paint, varnished wood, coated plastic"));
     addPropertySlider(MaterialProperty::Clearcoat, clearcoatForm, tr("Strength"));
     addPropertySlider(MaterialProperty::ClearcoatRoughness, clearcoatForm, tr("Roughness"));
     layout->addWidget(m_clearcoatGroup);
+    QFormLayout* sheenForm = nullptr;
+    m_sheenGroup = addLobeSection(
+        tr("Sheen"),
+        [](Material& m, bool on) {
+            // On: a white sheen of middle roughness (a roughness-0 sheen is a hairline at the
+            // silhouette); off: black, the roughness kept for the next time.
+            m.setSheen(
+                glm::dvec3(on ? 1.0 : 0.0), on && m.sheenRoughness() == 0.0 ? 0.5 : m.sheenRoughness());
+        },
+        content, &sheenForm);
+    m_sheenGroup->setObjectName(QStringLiteral("sheenGroup"));
+    m_sheenGroup->setToolTip(tr("KHR_materials_sheen: a soft back-scattering layer of fibres over the "
+                                "material, brightest at grazing angles: cloth, velvet, dust, peach fuzz"));
+    m_sheenColor = new ColorButton(m_sheenGroup);
+    m_sheenColor->setObjectName(QStringLiteral("sheenColorDockButton"));
+    m_sheenColor->setToolTip(QString::fromUtf8(infoOf(MaterialProperty::SheenColor).label));
+    sheenForm->addRow(tr("Colour"), m_sheenColor);
+    connect(m_sheenColor, &ColorButton::colorEdited, this, [this](const glm::dvec3& linear) {
+        Material material = m_document->project().material();
+        setColor(material, MaterialProperty::SheenColor, linear);
+        m_document->setMaterial(material, tr("Sheen Colour"));
+    });
+    addPropertySlider(MaterialProperty::SheenRoughness, sheenForm, tr("Roughness"));
+    layout->addWidget(m_sheenGroup);
     auto* surfaceGroup = new QGroupBox(tr("Alpha and Sides"), content);
     auto* surfaceForm = new QFormLayout(surfaceGroup);
     surfaceForm->addRow(tr("Alpha"), m_alphaMode);
@@ -303,7 +329,7 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
 }
 
 QGroupBox* MaterialDock::addLobeSection(
-    const QString& title, MaterialProperty strength, double onValue, QWidget* parent, QFormLayout** form)
+    const QString& title, std::function<void(Material&, bool)> setOn, QWidget* parent, QFormLayout** form)
 {
     auto* group = new QGroupBox(title, parent);
     group->setCheckable(true);
@@ -313,9 +339,9 @@ QGroupBox* MaterialDock::addLobeSection(
     groupLayout->addWidget(body);
     *form = new QFormLayout(body);
     connect(group, &QGroupBox::toggled, body, &QWidget::setVisible);
-    connect(group, &QGroupBox::clicked, this, [this, strength, onValue, title](bool on) {
+    connect(group, &QGroupBox::clicked, this, [this, setOn = std::move(setOn), title](bool on) {
         Material material = m_document->project().material();
-        setScalar(material, strength, on ? onValue : 0.0);
+        setOn(material, on);
         m_document->setMaterial(material, on ? tr("%1 On").arg(title) : tr("%1 Off").arg(title));
     });
     return group;
@@ -448,6 +474,8 @@ void MaterialDock::onDocumentChanged(DocumentChanges changes)
     for (const auto& [property, slider] : m_propertySliders)
         slider->setValue(scalarOf(material, property));
     m_clearcoatGroup->setChecked(material.hasClearcoat()); // toggled: the sliders show or hide
+    m_sheenGroup->setChecked(material.hasSheen());
+    m_sheenColor->setLinearColor(material.sheenColor());
 }
 
 void MaterialDock::editShading(const QString& undoText, const std::function<void(ShadingModel&)>& change)

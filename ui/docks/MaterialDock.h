@@ -36,6 +36,7 @@ namespace facet {
 
 class ThumbnailLoader;
 
+class ColorButton;
 class Document;
 class ValueSlider;
 
@@ -54,6 +55,8 @@ public:
     // The Clearcoat section (KHR_materials_clearcoat): checked when the coat is on; its sliders
     // show only then.
     QGroupBox* clearcoatGroup() const { return m_clearcoatGroup; }
+    // The Sheen section (KHR_materials_sheen): checked while the sheen's colour is not black.
+    QGroupBox* sheenGroup() const { return m_sheenGroup; }
     // The slider of a registry property the dock shows (the lobes' sliders), or null.
     ValueSlider* propertySlider(MaterialProperty property) const;
     // Applies the selected preset (one undo step). False when none is selected.
@@ -106,10 +109,11 @@ private:
     // A slider for a registry row: its range, label and undo merge id from the row; an edit sets
     // the value on the current material as one undo step per drag.
     ValueSlider* addPropertySlider(MaterialProperty property, QFormLayout* form, const QString& label);
-    // A lobe's section: a checkable group whose check turns the lobe on (its strength to
-    // `onValue`) and off (0), and whose sliders show only while it is on.
-    QGroupBox* addLobeSection(
-        const QString& title, MaterialProperty strength, double onValue, QWidget* parent, QFormLayout** form);
+    // A lobe's section: a checkable group whose check turns the lobe on and off (`setOn` changes
+    // the material: a strength to 1 or 0, a colour to white or black), and whose controls show
+    // only while it is on.
+    QGroupBox* addLobeSection(const QString& title, std::function<void(Material&, bool)> setOn,
+        QWidget* parent, QFormLayout** form);
 
     Document* m_document;
     QLineEdit* m_name;
@@ -126,6 +130,8 @@ private:
     QCheckBox* m_doubleSided;
     QCheckBox* m_unlit;
     QGroupBox* m_clearcoatGroup = nullptr;
+    QGroupBox* m_sheenGroup = nullptr;
+    ColorButton* m_sheenColor = nullptr;
     std::vector<std::pair<MaterialProperty, ValueSlider*>> m_propertySliders;
     QListWidget* m_presets;
     QPushButton* m_apply;

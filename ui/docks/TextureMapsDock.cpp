@@ -72,8 +72,8 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     folderButton->setToolTip(tr("Assign a texture set by file names, replacing the current set: *_basecolor, "
                                 "*_normal, *_roughness, *_metallic, *_ao; packed *_orm, *_arm, "
                                 "*metallicRoughness*, *_MaskMap; Unreal T_*_D, _N, _R, _M; a clear coat's "
-                                "*_clearcoat, *_clearcoat_roughness, *_clearcoat_normal. You can also drop "
-                                "a folder or files here"));
+                                "*_clearcoat, *_clearcoat_roughness, *_clearcoat_normal; a sheen's *_sheen, "
+                                "*_sheen_roughness. You can also drop a folder or files here"));
     connect(folderButton, &QPushButton::clicked, this, &TextureMapsDock::assignFolder);
     layout->addWidget(folderButton);
     m_messageLabel->setObjectName(QStringLiteral("textureMapsMessage"));
@@ -85,16 +85,23 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     layout->addWidget(m_messageLabel);
     // The core slots, then each layered lobe's under its heading (shown while the lobe is on: the
     // Material dock's lobe section turns it on).
-    auto* clearcoat = new QGroupBox(tr("Clearcoat Maps"), content);
-    clearcoat->setObjectName(QStringLiteral("clearcoatMapsGroup"));
-    clearcoat->setToolTip(tr("KHR_materials_clearcoat's textures: the coat's strength (red), roughness "
-                             "(green) and normal map. Shown while the material has a clear coat "
-                             "(Material panel)."));
-    auto* clearcoatLayout = new QVBoxLayout(clearcoat);
-    clearcoatLayout->setContentsMargins(0, 0, 0, 0);
-    m_clearcoatSlots = clearcoat;
+    const auto lobeBox = [&](MaterialLobe lobe, const QString& title, const char* name, const QString& tip) {
+        auto* box = new QGroupBox(title, content);
+        box->setObjectName(QLatin1String(name));
+        box->setToolTip(tip);
+        auto* boxLayout = new QVBoxLayout(box);
+        boxLayout->setContentsMargins(0, 0, 0, 0);
+        m_lobeSlots[std::size_t(lobe)] = box;
+    };
+    lobeBox(MaterialLobe::Clearcoat, tr("Clearcoat Maps"), "clearcoatMapsGroup",
+        tr("KHR_materials_clearcoat's textures: the coat's strength (red), roughness (green) and normal map. "
+           "Shown while the material has a clear coat (Material panel)."));
+    lobeBox(MaterialLobe::Sheen, tr("Sheen Maps"), "sheenMapsGroup",
+        tr("KHR_materials_sheen's textures: the sheen's colour (RGB, sRGB) and roughness (alpha; often "
+           "one RGBA texture). Shown while the material has a sheen (Material panel)."));
     for (MapSlot slot : kAllMapSlots) {
-        QWidget* owner = lobeOf(slot) == MaterialLobe::Core ? content : clearcoat;
+        QWidget* box = m_lobeSlots[std::size_t(lobeOf(slot))];
+        QWidget* owner = box ? box : content;
         auto* widget = new MapSlotWidget(document, slot, owner);
         m_slots[std::size_t(slot)] = widget;
         connect(widget, &MapSlotWidget::message, this, &TextureMapsDock::message);
@@ -104,9 +111,11 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
         auto* frameLayout = new QVBoxLayout(frame);
         frameLayout->setContentsMargins(0, 0, 0, 0);
         frameLayout->addWidget(widget);
-        (lobeOf(slot) == MaterialLobe::Core ? layout : clearcoatLayout)->addWidget(frame);
+        (box ? box->layout() : layout)->addWidget(frame);
     }
-    layout->addWidget(clearcoat);
+    for (QWidget* box : m_lobeSlots)
+        if (box)
+            layout->addWidget(box);
 
     // One UV transform for the whole set (each map has its own in the project; the common case,
     // tiling a texture set, edits them together).
@@ -205,7 +214,9 @@ void TextureMapsDock::onDocumentChanged(DocumentChanges changes)
             : tr("Material: %1").arg(QString::fromStdString(project.material().name)));
     for (MapSlotWidget* widget : m_slots)
         widget->refresh();
-    m_clearcoatSlots->setVisible(project.material().hasClearcoat());
+    for (std::size_t lobe = 0; lobe < m_lobeSlots.size(); ++lobe)
+        if (m_lobeSlots[lobe])
+            m_lobeSlots[lobe]->setVisible(project.material().hasLobe(MaterialLobe(lobe)));
     const UvTransform& uv = m_document->project().material().map(MapSlot::BaseColor).uv;
     m_uvScale->setValue(uv.scale.x);
     m_uvScaleV->setValue(uv.scale.y);
@@ -354,6 +365,8 @@ QString TextureMapsDock::assignFiles(const QStringList& paths)
                 part += tr(" (now %1)").arg(material.map(slot).factor.x);
             else if (slot == MapSlot::Clearcoat && !material.hasClearcoat())
                 part += tr(" (no coat now)");
+            else if (slot == MapSlot::SheenColor && !material.hasSheen())
+                part += tr(" (no sheen now)");
             clearedParts.append(part);
         }
         if (!clearedParts.isEmpty())

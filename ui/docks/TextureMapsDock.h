@@ -34,12 +34,9 @@ public:
     ~TextureMapsDock() override;
 
     MapSlotWidget* slotWidget(MapSlot slot) const { return m_slots[std::size_t(slot)]; }
-    // The box holding a lobe's slots (the clear coat's), hidden while the lobe is off
-    // (Material::usesSlot); null for the core slots.
-    QWidget* lobeSlots(MaterialLobe lobe) const
-    {
-        return lobe == MaterialLobe::Clearcoat ? m_clearcoatSlots : nullptr;
-    }
+    // The box holding a lobe's slots (the clear coat's, the sheen's), hidden while the lobe is off
+    // (Material::hasLobe); null for the core slots.
+    QWidget* lobeSlots(MaterialLobe lobe) const { return m_lobeSlots[std::size_t(lobe)]; }
     // Assigns the files (folders are listed) by name as one undo step "Assign Maps" and returns
     // the message it also emits: what went where, what was cleared and what was not used. A
     // folder or several files is a texture set and replaces the whole set (core/material/MapNaming.h
@@ -71,8 +68,9 @@ private:
 
     Document* m_document;
     std::array<MapSlotWidget*, kMapSlotCount> m_slots {};
-    // The clear coat's slots, under their heading: shown while the material has a coat.
-    QWidget* m_clearcoatSlots = nullptr;
+    // Each layered lobe's slots, under their heading, by MaterialLobe: shown while the lobe is on
+    // (null for the core).
+    std::array<QWidget*, 3> m_lobeSlots {};
     ThumbnailLoader* m_thumbnails;
     QFileSystemWatcher* m_watcher;
     QTimer* m_reloadTimer;

@@ -216,6 +216,10 @@ void ValuesDock::showValue(const PickedValue& value)
             if (inputs.clearcoatNormal != glm::dvec3(0.0) && inputs.clearcoatNormal != probe.geometricNormal)
                 row(material, tr("Clearcoat normal"), components(inputs.clearcoatNormal));
         }
+        if (inputs.hasSheen()) {
+            row(material, tr("Sheen colour (linear)"), components(inputs.sheenColor));
+            row(material, tr("Sheen roughness"), number(inputs.sheenRoughness));
+        }
     }
     m_tree->expandAll();
     for (int i = 0; i < m_tree->topLevelItemCount(); ++i)
