@@ -24,6 +24,14 @@ QByteArray readAll(const QString& path)
     QFile file(path);
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
+
+// A project file of `version` holding the one `material`.
+QJsonObject fileOf(int version, const QJsonObject& material)
+{
+    return QJsonObject {{QLatin1String("format"), QLatin1String("facet-project")},
+        {QLatin1String("version"), version}, {QLatin1String("materials"), QJsonArray {material}},
+        {QLatin1String("currentMaterial"), 0}};
+}
 } // namespace
 
 class ProjectVersionsTest : public QObject {
@@ -149,13 +157,10 @@ private Q_SLOTS:
         QFETCH(double, strength);
         QFETCH(double, roughness);
         QFETCH(QString, problem);
-        QJsonObject material {{QLatin1String("name"), QLatin1String("Lacquer")},
+        const QJsonObject material {{QLatin1String("name"), QLatin1String("Lacquer")},
             {QLatin1String("clearcoat"), QJsonDocument::fromJson(clearcoat).object()}};
-        const QJsonObject file {{QLatin1String("format"), QLatin1String("facet-project")},
-            {QLatin1String("version"), version}, {QLatin1String("materials"), QJsonArray {material}},
-            {QLatin1String("currentMaterial"), 0}};
         std::string error, warning;
-        const auto project = Project::fromJson(file, {}, &error, &warning);
+        const auto project = Project::fromJson(fileOf(version, material), {}, &error, &warning);
         if (!problem.isEmpty()) {
             QVERIFY(!project);
             QVERIFY2(qs(error).contains(problem), error.c_str());
@@ -218,11 +223,8 @@ private Q_SLOTS:
             material[QLatin1String("sheenColor")] = QJsonDocument::fromJson(sheenColor).object();
         if (!sheenRoughness.isEmpty())
             material[QLatin1String("sheenRoughness")] = QJsonDocument::fromJson(sheenRoughness).object();
-        const QJsonObject file {{QLatin1String("format"), QLatin1String("facet-project")},
-            {QLatin1String("version"), version}, {QLatin1String("materials"), QJsonArray {material}},
-            {QLatin1String("currentMaterial"), 0}};
         std::string error, warning;
-        const auto project = Project::fromJson(file, {}, &error, &warning);
+        const auto project = Project::fromJson(fileOf(version, material), {}, &error, &warning);
         if (!problem.isEmpty()) {
             QVERIFY(!project);
             QVERIFY2(qs(error).contains(problem), error.c_str());
