@@ -1,8 +1,9 @@
 #pragma once
-// KHR_materials_sheen's BRDF terms, in double: the first step of the sheen lobe, its CPU ground
-// truth (docs/shading.md, "Sheen"; docs/layered-lobes.md holds the extension's text and how other
-// renderers read it). The CPU material BRDF (core/shading/MaterialBrdf) evaluates the lobe and its
-// layering; no file, dock or shader sets it yet.
+// KHR_materials_sheen's BRDF terms, in double: the sheen lobe's CPU ground truth and the albedo
+// table every method reads (docs/shading.md, "Sheen"; docs/layered-lobes.md holds the extension's
+// text and how other renderers read it). The CPU material BRDF (core/shading/MaterialBrdf)
+// evaluates the lobe and its layering; resources/shaders/brdf_sheen.glsl is the GLSL twin, and
+// render/SheenLut uploads the table.
 //
 //   D_Charlie(n.h, a)  = (2 + 1/a) (1 - (n.h)^2)^(1 / (2a)) / (2 pi)       a = sheenRoughness^2
 //   V_Charlie          = 1 / ((1 + lambda(n.v) + lambda(n.l)) 4 n.v n.l)   (the extension's choice)
