@@ -45,9 +45,10 @@ constexpr int kMapUnit0 = 8;
 // 16, 450 ms at 32. The split sum is the window's preview while the view moves: 16.
 constexpr int kSplitSumSheenSamples = 16;
 
-constexpr std::array<const char*, kMapSlotCount> kMapSamplers = {"uBaseColorMap", "uNormalMap",
-    "uMetallicMap", "uRoughnessMap", "uOcclusionMap", "uEmissiveMap", "uClearcoatMap",
-    "uClearcoatRoughnessMap", "uClearcoatNormalMap", "uSheenColorMap", "uSheenRoughnessMap"};
+constexpr std::array<const char*, kMapSlotCount> kMapSamplers
+    = {"uBaseColorMap", "uNormalMap", "uMetallicMap", "uRoughnessMap", "uOcclusionMap", "uEmissiveMap",
+        "uClearcoatMap", "uClearcoatRoughnessMap", "uClearcoatNormalMap", "uSheenColorMap",
+        "uSheenRoughnessMap", "uSpecularMap", "uSpecularColorMap"};
 
 // World -> environment image frame: Environment::toImageFrame, rotateAboutY(d, -rotation), as a
 // matrix built by applying it to the basis (so the two cannot disagree on signs).
@@ -575,6 +576,10 @@ void Renderer::setMaterialUniforms(const ShaderProgram& program, const SurfaceVa
     if (hasFeature(key.features, SurfaceFeature::Sheen)) {
         setVec3(program, "uSheenColorFactor", material.sheenColor());
         program.setFloat("uSheenRoughness", float(material.sheenRoughness()));
+    }
+    if (hasFeature(key.features, SurfaceFeature::Specular)) {
+        program.setFloat("uSpecularFactor", float(material.specular()));
+        setVec3(program, "uSpecularColorFactor", material.specularColor());
     }
     if (hasFeature(key.features, SurfaceFeature::AlphaMask))
         program.setFloat("uAlphaCutoff", float(material.alphaCutoff));

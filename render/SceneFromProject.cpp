@@ -15,6 +15,22 @@
 
 namespace facet {
 
+namespace {
+
+// E_s,avg of the material's constant dielectric layer (its IOR and KHR_materials_specular factors
+// at its roughness factor), as MaterialBrdf's coupling takes it.
+double averageAlbedo(const MaterialBrdf& brdf, const Material& material)
+{
+    MaterialInfo info;
+    info.ior = material.ior;
+    info.specular = material.specular();
+    info.specularColor = material.specularColor();
+    const DielectricReflectance layer = dielectricReflectance(info);
+    return brdf.dielectricSpecularAverageAlbedo(layer.maxF0(), material.roughness(), layer.f90);
+}
+
+} // namespace
+
 double dielectricAverageAlbedoFor(const Material& material, IblMethod method)
 {
     const ShadingModel& shading = material.shading;
@@ -25,7 +41,7 @@ double dielectricAverageAlbedoFor(const Material& material, IblMethod method)
         // integrates the same BRDF as `facet render --spp`.
         const GroundTruthSettings truth;
         const MaterialBrdf brdf(shading, *albedoTable(truth.albedoTableSize, truth.albedoTableSamples, shading.visibility));
-        return brdf.dielectricSpecularAverageAlbedo(shading::f0FromIor(material.ior), material.roughness());
+        return averageAlbedo(brdf, material);
     }
     // One 32 x 32 table per visibility term for the process: E_s,avg is an integral over n.v, so
     // the table's resolution is ample (docs/energy.md).
@@ -40,7 +56,7 @@ double dielectricAverageAlbedoFor(const Material& material, IblMethod method)
         table = slot;
     }
     const MaterialBrdf brdf(shading, *table);
-    return brdf.dielectricSpecularAverageAlbedo(shading::f0FromIor(material.ior), material.roughness());
+    return averageAlbedo(brdf, material);
 }
 
 IblSettings dfgSettingsFor(const IblSettings& settings, IblMethod method)

@@ -46,6 +46,10 @@ constexpr std::array<const char*, kSurfaceFeatureBits> kFeatureDefines = {
     "HAS_SHEEN_COLOR_MAP",
     "HAS_SHEEN_ROUGHNESS_MAP",
     "SHEEN_ROUGHNESS_TEXEL_FROM_SHEEN_COLOR",
+    "MATERIAL_SPECULAR",
+    "HAS_SPECULAR_MAP",
+    "HAS_SPECULAR_COLOR_MAP",
+    "SPECULAR_TEXEL_FROM_SPECULAR_COLOR",
 };
 
 } // namespace
@@ -73,6 +77,10 @@ SurfaceFeature mapFeature(MapSlot slot)
         return SurfaceFeature::HasSheenColorMap;
     case MapSlot::SheenRoughness:
         return SurfaceFeature::HasSheenRoughnessMap;
+    case MapSlot::Specular:
+        return SurfaceFeature::HasSpecularMap;
+    case MapSlot::SpecularColor:
+        return SurfaceFeature::HasSpecularColorMap;
     case MapSlot::Emissive:
         break;
     }
@@ -113,7 +121,10 @@ bool textureMatters(const Material& material, MapSlot slot)
     switch (slot) {
     case MapSlot::Clearcoat:
     case MapSlot::SheenColor:
-        return true; // usesSlot: the factor is above 0
+    case MapSlot::Specular:
+        return true; // usesSlot: the factor is above 0 (the specular layer: it is on)
+    case MapSlot::SpecularColor:
+        return material.specular() != 0.0; // a tint of no reflection is none
     case MapSlot::SheenRoughness:
         return material.sheenRoughness() != 0.0;
     case MapSlot::ClearcoatRoughness:
@@ -160,6 +171,8 @@ SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMap
             f = f | SurfaceFeature::Clearcoat;
         if (material.hasSheen())
             f = f | SurfaceFeature::Sheen;
+        if (material.hasSpecular())
+            f = f | SurfaceFeature::Specular;
     }
     return f;
 }
@@ -191,6 +204,8 @@ SurfaceFeatures sharedTexelFeatures(const Material& material, SurfaceFeatures fe
         f = f | SurfaceFeature::ClearcoatRoughnessTexelFromClearcoat;
     if (same(MapSlot::SheenColor, MapSlot::SheenRoughness))
         f = f | SurfaceFeature::SheenRoughnessTexelFromSheenColor;
+    if (same(MapSlot::SpecularColor, MapSlot::Specular))
+        f = f | SurfaceFeature::SpecularTexelFromSpecularColor;
     return f;
 }
 
@@ -207,6 +222,8 @@ bool samplesOwnTexture(SurfaceFeatures features, MapSlot slot)
         return !hasFeature(features, SurfaceFeature::ClearcoatRoughnessTexelFromClearcoat);
     if (slot == MapSlot::SheenRoughness)
         return !hasFeature(features, SurfaceFeature::SheenRoughnessTexelFromSheenColor);
+    if (slot == MapSlot::Specular)
+        return !hasFeature(features, SurfaceFeature::SpecularTexelFromSpecularColor);
     return true;
 }
 

@@ -96,8 +96,17 @@ enum class SurfaceFeature : uint64_t {
     // SHEEN_ROUGHNESS_TEXEL_FROM_SHEEN_COLOR: the extension's packing (colour RGB, roughness A of
     // one texture) read with one fetch.
     SheenRoughnessTexelFromSheenColor = 1ull << 35,
+    // MATERIAL_SPECULAR: KHR_materials_specular's strength and F0 tint of the dielectric layer
+    // (Material::hasSpecular: not the default layer); without it the layer is (F0(ior), 1).
+    Specular = 1ull << 36,
+    // Its maps (only with Specular): HAS_SPECULAR_MAP, HAS_SPECULAR_COLOR_MAP.
+    HasSpecularMap = 1ull << 37,
+    HasSpecularColorMap = 1ull << 38,
+    // SPECULAR_TEXEL_FROM_SPECULAR_COLOR: the extension's packing (colour RGB, strength A of one
+    // texture) read with one fetch.
+    SpecularTexelFromSpecularColor = 1ull << 39,
 };
-inline constexpr int kSurfaceFeatureBits = 36;
+inline constexpr int kSurfaceFeatureBits = 40;
 static_assert(kSurfaceFeatureBits <= 64);
 
 using SurfaceFeatures = uint64_t;

@@ -348,8 +348,8 @@ private Q_SLOTS:
         for (const char* feature : {"constants", "every map", "shared transform", "different transforms",
                  "ior", "clearcoat", "clearcoat, smooth", "unlit, clearcoat", "clearcoat maps",
                  "clearcoat maps, coat off", "sheen", "sheen maps", "sheen maps, sheen off", "unlit, sheen",
-                 "clearcoat and sheen maps", "mask", "blend", "single-sided", "unlit", "two of one name",
-                 "samplers", "second UV set", "second UV set, mesh without it"}) {
+                 "clearcoat and sheen maps", "specular", "specular maps", "mask", "blend", "single-sided",
+                 "unlit", "two of one name", "samplers", "second UV set", "second UV set, mesh without it"}) {
             QTest::newRow(qPrintable(QStringLiteral("%1, .gltf").arg(QLatin1String(feature))))
                 << QString::fromLatin1(feature) << false;
             QTest::newRow(qPrintable(QStringLiteral("%1, .glb").arg(QLatin1String(feature))))
@@ -398,6 +398,17 @@ private Q_SLOTS:
                 m.map(MapSlot::SheenRoughness).path
                     = dir.filePath(QStringLiteral("sheenroughness.png")).toStdString();
                 m.map(MapSlot::SheenRoughness).channel = MapChannel::G;
+            }
+            if (feature.startsWith(QStringLiteral("specular")))
+                m.setSpecular(0.6, glm::dvec3(3.0, 1.0, 0.5)); // a tint above 1: the file holds it over 3
+            if (feature == QStringLiteral("specular maps")) {
+                // The colour (sRGB) from one file, the strength from another's red: one RGBA texture.
+                writeVariedPng(dir.filePath(QStringLiteral("specularcolor.png")), 9, 3);
+                writeVariedPng(dir.filePath(QStringLiteral("specular.png")), 10, 3);
+                m.map(MapSlot::SpecularColor).path
+                    = dir.filePath(QStringLiteral("specularcolor.png")).toStdString();
+                m.map(MapSlot::Specular).path = dir.filePath(QStringLiteral("specular.png")).toStdString();
+                m.map(MapSlot::Specular).channel = MapChannel::R;
             }
             if (feature.startsWith(QStringLiteral("clearcoat maps"))
                 || feature == QStringLiteral("clearcoat and sheen maps")) {
@@ -495,6 +506,8 @@ private Q_SLOTS:
             const bool sheened = feature.contains(QStringLiteral("sheen"))
                 && !feature.contains(QStringLiteral("off")) && !feature.startsWith(QStringLiteral("unlit"));
             QCOMPARE(used.contains(QStringLiteral("KHR_materials_sheen")), sheened);
+            QCOMPARE(used.contains(QStringLiteral("KHR_materials_specular")),
+                feature.startsWith(QStringLiteral("specular")));
             // The sheen's one texture: colour and roughness read the same image.
             const QJsonObject sheen = json.value(QStringLiteral("materials"))
                                           .toArray()
@@ -567,6 +580,13 @@ private Q_SLOTS:
                                 : coated ? a.clearcoatRoughness()
                                          : 0.0))
                 < 1e-9);
+            // The specular layer: a baked texture's strength factor is 1, its colour factor the
+            // tint's largest component (3), which the texture was divided by.
+            const bool specularBaked = !a.unlit
+                && (a.map(MapSlot::Specular).hasTexture() || a.map(MapSlot::SpecularColor).hasTexture());
+            QVERIFY(std::abs(b.specular() - (specularBaked ? 1.0 : a.specular())) < 1e-9);
+            QVERIFY(glm::length(b.specularColor() - (specularBaked ? glm::dvec3(3.0) : a.specularColor()))
+                < 1e-9);
             // The sheen likewise.
             const bool sheened = !a.unlit && a.hasSheen();
             const bool sheenBaked = sheened
@@ -622,12 +642,18 @@ private Q_SLOTS:
                     if (!a.unlit)
                         worstScalar = std::max({worstScalar, std::abs(ia.clearcoat - ib.clearcoat),
                             std::abs(ia.clearcoatRoughness - ib.clearcoatRoughness),
-                            std::abs(ia.sheenRoughness - ib.sheenRoughness)});
+                            std::abs(ia.sheenRoughness - ib.sheenRoughness),
+                            std::abs(ia.specular - ib.specular)});
+                    // The specular colour as the file holds it: over the tint's largest component.
+                    const double tintScale
+                        = std::max({1.0, a.specularColor().r, a.specularColor().g, a.specularColor().b});
                     if (!a.unlit)
                         for (int c = 0; c < 3; ++c)
-                            worstColor = std::max(worstColor,
+                            worstColor = std::max({worstColor,
                                 std::abs(tonemap::linearToSrgb(ia.sheenColor[c])
-                                    - tonemap::linearToSrgb(ib.sheenColor[c])));
+                                    - tonemap::linearToSrgb(ib.sheenColor[c])),
+                                std::abs(tonemap::linearToSrgb(ia.specularColor[c] / tintScale)
+                                    - tonemap::linearToSrgb(ib.specularColor[c] / tintScale))});
                     for (int c = 0; c < 3; ++c)
                         worstColor = std::max({worstColor,
                             std::abs(tonemap::linearToSrgb(ia.baseColor[c])

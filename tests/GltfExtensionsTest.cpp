@@ -355,6 +355,115 @@ private Q_SLOTS:
         QCOMPARE(roughness.colorSpace, ColorEncoding::Linear);
         QVERIFY(m.hasSheen());
     }
+
+    // KHR_materials_specular's factors: the extension's defaults (1, white: the core's layer, no
+    // shader cost), a colour above 1 kept (the extension allows it) up to Facet's 100, values
+    // beyond clamped and fields of the wrong type refused, each with a note naming the field.
+    void specularFactors_data()
+    {
+        QTest::addColumn<QByteArray>("specular"); // the extension's object
+        QTest::addColumn<double>("strength");
+        QTest::addColumn<glm::dvec3>("color");
+        QTest::addColumn<QString>("warning"); // part of the notes, or empty for none
+        const auto row = [](const char* name, const char* json, double strength, glm::dvec3 color,
+                             const char* warning) {
+            QTest::newRow(name) << QByteArray(json) << strength << color << QString::fromLatin1(warning);
+        };
+        row("strength and colour", R"({"specularFactor": 0.4, "specularColorFactor": [1, 0.5, 0.25]})", 0.4,
+            {1.0, 0.5, 0.25}, "");
+        row("empty (the extension's defaults)", "{}", 1.0, glm::dvec3(1.0), "");
+        row("strength 0 (a purely diffuse dielectric)", R"({"specularFactor": 0})", 0.0, glm::dvec3(1.0), "");
+        row("colour above 1 (allowed)", R"({"specularColorFactor": [25, 2, 1]})", 1.0, {25.0, 2.0, 1.0}, "");
+        row("colour above Facet's 100", R"({"specularColorFactor": [1000, 1, 1]})", 1.0, {100.0, 1.0, 1.0},
+            "KHR_materials_specular.specularColorFactor 1000 is outside Facet's [0, 100]: 100 used");
+        row("colour negative", R"({"specularColorFactor": [-1, 1, 1]})", 1.0, {0.0, 1.0, 1.0},
+            "KHR_materials_specular.specularColorFactor -1 is outside Facet's [0, 100]: 0 used");
+        row("colour of two numbers", R"({"specularColorFactor": [1, 1]})", 1.0, glm::dvec3(1.0),
+            "KHR_materials_specular.specularColorFactor is not an array of three numbers: white used");
+        row("strength a string", R"({"specularFactor": "shiny"})", 1.0, glm::dvec3(1.0),
+            "KHR_materials_specular.specularFactor is not a number: 1 used");
+        row("strength above 1", R"({"specularFactor": 3})", 1.0, glm::dvec3(1.0),
+            "KHR_materials_specular.specularFactor 3 is outside Facet's [0, 1]: 1 used");
+        row("texture that does not exist", R"({"specularTexture": {"index": 9}})", 1.0, glm::dvec3(1.0),
+            "KHR_materials_specular.specularTexture names texture 9, which does not exist");
+        row("colour texture not a textureInfo", R"({"specularColorTexture": 2})", 1.0, glm::dvec3(1.0),
+            "KHR_materials_specular.specularColorTexture is not a textureInfo with an integer index");
+    }
+    void specularFactors()
+    {
+        QFETCH(QByteArray, specular);
+        QFETCH(double, strength);
+        QFETCH(glm::dvec3, color);
+        QFETCH(QString, warning);
+        GltfWriter w;
+        std::string error, warnings;
+        const auto asset = importWithExtension(
+            w, "M", "KHR_materials_specular", specular, QStringLiteral("specular.gltf"), &error, &warnings);
+        QVERIFY2(asset, error.c_str());
+        const Material& m = asset->materials.at(0);
+        std::string problem;
+        QVERIFY2(m.validate(&problem), problem.c_str());
+        QVERIFY(near(m.specular(), strength));
+        for (int c = 0; c < 3; ++c)
+            QVERIFY2(near(m.specularColor()[c], color[c]), qPrintable(QString::number(m.specularColor()[c])));
+        QCOMPARE(m.hasSpecular(), strength != 1.0 || color != glm::dvec3(1.0));
+        for (MapSlot slot : {MapSlot::Specular, MapSlot::SpecularColor})
+            QVERIFY2(!m.map(slot).hasTexture(), toString(slot));
+        if (warning.isEmpty())
+            QVERIFY2(warnings.empty(), warnings.c_str());
+        else
+            QVERIFY2(QString::fromStdString(warnings).contains(warning), warnings.c_str());
+    }
+
+    // KHR_materials_specular's two textures, each alone and as one RGBA texture (the extension's
+    // packing: colour RGB in sRGB, strength in A, linear). A texture with the default factors still
+    // turns the layer on: it modulates them.
+    void specularTextures_data()
+    {
+        QTest::addColumn<QByteArray>("specular");
+        QTest::addColumn<QString>("strengthFile");
+        QTest::addColumn<QString>("colorFile");
+        const QString none;
+        QTest::newRow("strength alone")
+            << QByteArray(R"({"specularTexture": {"index": 0}})") << QStringLiteral("a.png") << none;
+        QTest::newRow("colour alone")
+            << QByteArray(R"({"specularColorTexture": {"index": 1}})") << none << QStringLiteral("b.png");
+        QTest::newRow("one RGBA texture for both")
+            << QByteArray(R"({"specularFactor": 0.5, "specularTexture": {"index": 0},
+                 "specularColorTexture": {"index": 0}})")
+            << QStringLiteral("a.png") << QStringLiteral("a.png");
+    }
+    void specularTextures()
+    {
+        QFETCH(QByteArray, specular);
+        QFETCH(QString, strengthFile);
+        QFETCH(QString, colorFile);
+        GltfWriter w;
+        for (const char* name : {"a.png", "b.png"}) {
+            QImage image(4, 4, QImage::Format_RGBA8888);
+            image.fill(QColor(200, 100, 50, 128));
+            QVERIFY(image.save(path(QLatin1String(name))));
+            w.addTexture(w.addImageUri(QLatin1String(name)));
+        }
+        std::string error, warnings;
+        const auto asset = importWithExtension(
+            w, "Lens", "KHR_materials_specular", specular, QStringLiteral("lens.gltf"), &error, &warnings);
+        QVERIFY2(asset, error.c_str());
+        QVERIFY2(warnings.empty(), warnings.c_str());
+        const Material& m = asset->materials.at(0);
+        std::string problem;
+        QVERIFY2(m.validate(&problem), problem.c_str());
+        const MaterialMap& strength = m.map(MapSlot::Specular);
+        const MaterialMap& color = m.map(MapSlot::SpecularColor);
+        QCOMPARE(
+            QString::fromStdString(strength.path), strengthFile.isEmpty() ? QString() : path(strengthFile));
+        QCOMPARE(QString::fromStdString(color.path), colorFile.isEmpty() ? QString() : path(colorFile));
+        QCOMPARE(strength.channel, MapChannel::A);
+        QCOMPARE(strength.colorSpace, ColorEncoding::Linear);
+        QCOMPARE(color.channel, MapChannel::Rgb);
+        QCOMPARE(color.colorSpace, ColorEncoding::SRGB);
+        QVERIFY(m.hasSpecular());
+    }
 };
 
 QTEST_GUILESS_MAIN(GltfExtensionsTest)

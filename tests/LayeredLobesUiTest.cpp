@@ -58,6 +58,7 @@ private Q_SLOTS:
         Material material = m_document->project().material();
         material.setClearcoat(0.0, 0.0);
         material.setSheen(glm::dvec3(0.0), 0.0);
+        material.setSpecular(1.0, glm::dvec3(1.0));
         material.setBaseColor(glm::dvec3(0.6, 0.05, 0.02));
         material.setFactor(MapSlot::Roughness, 0.7);
         m_document->setMaterial(material, QStringLiteral("test setup"));
@@ -125,6 +126,7 @@ private Q_SLOTS:
         QTest::newRow("clearcoat strength") << int(MaterialProperty::Clearcoat) << 0.5;
         QTest::newRow("clearcoat roughness") << int(MaterialProperty::ClearcoatRoughness) << 0.5;
         QTest::newRow("sheen roughness") << int(MaterialProperty::SheenRoughness) << 0.5;
+        QTest::newRow("specular strength") << int(MaterialProperty::Specular) << 0.5;
         QTest::newRow("ior (the slider ends at 3, the spin box at 5)") << int(MaterialProperty::Ior) << 2.0;
         QTest::newRow("alpha cutoff (mask)") << int(MaterialProperty::AlphaCutoff) << 0.5;
     }
@@ -152,6 +154,45 @@ private Q_SLOTS:
         QCOMPARE(m_document->undoStack()->undoText(), QString::fromUtf8(info.label));
         m_document->undoStack()->undo();
         QCOMPARE(slider->value(), start); // the document moved the slider back
+    }
+
+    // KHR_materials_specular's section is the dielectric's own reflectance, always shown (as its
+    // Texture Maps box): its strength and colour change the frame, each as one undo step; a metal
+    // does not change at all.
+    void specularLayerChangesTheDielectric_data()
+    {
+        QTest::addColumn<double>("strength");
+        QTest::addColumn<glm::dvec3>("color");
+        QTest::addColumn<double>("metallic");
+        QTest::addColumn<bool>("changes");
+        QTest::newRow("strength 0: no reflection") << 0.0 << glm::dvec3(1.0) << 0.0 << true;
+        QTest::newRow("colour 25: F0 1, a mirror") << 1.0 << glm::dvec3(25.0) << 0.0 << true;
+        QTest::newRow("a metal ignores it") << 0.0 << glm::dvec3(25.0) << 1.0 << false;
+    }
+    void specularLayerChangesTheDielectric()
+    {
+        QFETCH(double, strength);
+        QFETCH(glm::dvec3, color);
+        QFETCH(double, metallic);
+        QFETCH(bool, changes);
+        MaterialDock* dock = m_window->materialDock();
+        QWidget* section = dock->findChild<QWidget*>(QStringLiteral("specularGroup"));
+        ValueSlider* strengthSlider = dock->propertySlider(MaterialProperty::Specular);
+        QVERIFY(section && strengthSlider && test::focusWidget(strengthSlider->slider()));
+        QVERIFY(section->isVisible() && strengthSlider->isVisible());
+        TextureMapsDock* maps = m_window->textureMapsDock();
+        QVERIFY(maps->lobeSlots(MaterialLobe::Specular)->isVisibleTo(maps)); // shown at the defaults too
+        Material material = m_document->project().material();
+        material.setFactor(MapSlot::Metallic, metallic);
+        m_document->setMaterial(material, QStringLiteral("test setup"));
+        const QImage before = frame();
+        material.setSpecular(strength, color);
+        m_document->setMaterial(material, QStringLiteral("Specular"));
+        QCOMPARE(dock->propertySlider(MaterialProperty::Specular)->value(), strength);
+        const double changed = difference(before, frame());
+        QVERIFY2(changes ? changed > 2.0 : changed < 0.5, qPrintable(QString::number(changed)));
+        m_document->undoStack()->undo();
+        QCOMPARE(dock->propertySlider(MaterialProperty::Specular)->value(), 1.0);
     }
 
 private:

@@ -219,6 +219,16 @@ void MapNamingTest::channelForSlot_data()
         << "sofa_sheen_color.png" << S::BaseColor << C::Rgb << false << kUnknown << false << none;
     QTest::newRow("sheen_roughness is not the base roughness")
         << "sofa_sheen_roughness.png" << S::Roughness << C::R << false << kUnknown << false << none;
+    // KHR_materials_specular's colour: glTF's name and words; a bare "specular" (a specular-
+    // glossiness set's F0 map, metals' colour included) is neither it nor the base colour.
+    QTest::newRow("specularColor") << "Lens_specularColor.png" << S::SpecularColor << C::Rgb << false
+                                   << kUnknown << true << none;
+    QTest::newRow("specular_color 2k")
+        << "lens_specular_color_2k.png" << S::SpecularColor << C::Rgb << false << kUnknown << true << none;
+    QTest::newRow("specular is not the specular colour")
+        << "crate_specular.png" << S::SpecularColor << C::Rgb << false << kUnknown << false << none;
+    QTest::newRow("specular is not the base colour")
+        << "crate_specular.png" << S::BaseColor << C::Rgb << false << kUnknown << false << none;
     const QString clearCoat = QStringLiteral("clear coat");
     QTest::newRow("Unreal CC strength")
         << "T_Car_CC.png" << S::Clearcoat << C::R << false << kUnknown << true << clearCoat;

@@ -10,7 +10,8 @@
 //
 // The GPU writes the inputs through debug views (base-color, metallic, roughness, occlusion,
 // shading-normal, and clearcoat, clearcoat-roughness, clearcoat-normal for rows with a coat,
-// sheen-color, sheen-roughness for rows with a sheen). The CPU
+// sheen-color, sheen-roughness for rows with a sheen, specular, specular-color for rows with a
+// specular layer). The CPU
 // evaluates the same inputs from the texture coordinate, the geometric normal and the tangent that the GPU
 // interpolated (the uv, geometric-normal and tangent debug views), so the comparison isolates the material
 // inputs from the tessellation.
@@ -471,6 +472,31 @@ const std::vector<Row>& rows()
                     m, MapSlot::SheenColor, file(f, "basecolor.png"), MapChannel::Rgb, ColorEncoding::SRGB);
                 useScalar(m, MapSlot::SheenRoughness, file(f, "packed.png"), MapChannel::A);
             }},
+        // KHR_materials_specular's maps: the colour (sRGB RGB, its factor above 1), the strength
+        // (A), both from one RGBA texture (one fetch), and a colour map under strength 0 (not read).
+        {"specular-color",
+            [](Material& m, const QString& f) {
+                m.setSpecular(1.0, glm::dvec3(2.0, 1.0, 0.5));
+                useMap(m, MapSlot::SpecularColor, file(f, "basecolor.png"), MapChannel::Rgb,
+                    ColorEncoding::SRGB);
+            }},
+        {"specular-strength",
+            [](Material& m, const QString& f) {
+                m.setSpecular(0.8, glm::dvec3(1.0));
+                useScalar(m, MapSlot::Specular, file(f, "packed.png"), MapChannel::A);
+            }},
+        {"specular-packed-rgba",
+            [](Material& m, const QString& f) {
+                useMap(
+                    m, MapSlot::SpecularColor, file(f, "packed.png"), MapChannel::Rgb, ColorEncoding::SRGB);
+                useScalar(m, MapSlot::Specular, file(f, "packed.png"), MapChannel::A);
+            }},
+        {"specular-color-map-under-strength-0",
+            [](Material& m, const QString& f) {
+                m.setSpecular(0.0, glm::dvec3(1.0));
+                useMap(m, MapSlot::SpecularColor, file(f, "basecolor.png"), MapChannel::Rgb,
+                    ColorEncoding::SRGB);
+            }},
         {"all-nine",
             [](Material& m, const QString& f) {
                 useAllSix(m, f);
@@ -535,6 +561,10 @@ const std::vector<ViewCheck>& viewChecks()
         {"sheen-roughness",
             [](const MaterialInfo& m, const glm::dvec3&) { return glm::dvec3(m.sheenRoughness); },
             MaterialLobe::Sheen},
+        {"specular", [](const MaterialInfo& m, const glm::dvec3&) { return glm::dvec3(m.specular); },
+            MaterialLobe::Specular},
+        {"specular-color", [](const MaterialInfo& m, const glm::dvec3&) { return m.specularColor; },
+            MaterialLobe::Specular},
     };
     return checks;
 }

@@ -145,7 +145,10 @@ private Q_SLOTS:
         QTest::newRow("sheen colour") << P::SheenColor << "sheenColor.factor" << 0.0 << 1.0 << "sheen-color";
         QTest::newRow("sheen roughness")
             << P::SheenRoughness << "sheenRoughness.factor" << 0.0 << 1.0 << "sheen-roughness";
-        QCOMPARE(kMaterialPropertyCount, 15); // a new property adds its golden row here
+        QTest::newRow("specular") << P::Specular << "specular.factor" << 0.0 << 1.0 << "specular";
+        QTest::newRow("specular colour")
+            << P::SpecularColor << "specularColor.factor" << 0.0 << 100.0 << "specular-color";
+        QCOMPARE(kMaterialPropertyCount, 17); // a new property adds its golden row here
     }
 
     void goldenRows()
@@ -202,7 +205,7 @@ private Q_SLOTS:
             QCOMPARE(scalarOf(project.material(), *axis.property), value);
             QVERIFY(project.material() == expected);
         }
-        QCOMPARE(materialAxes, 11);
+        QCOMPARE(materialAxes, 12);
     }
 };
 

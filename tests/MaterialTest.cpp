@@ -78,7 +78,8 @@ private Q_SLOTS:
     void mapSlotNamesRoundTrip()
     {
         const char* const expected[] = {"baseColor", "normal", "metallic", "roughness", "occlusion",
-            "emissive", "clearcoat", "clearcoatRoughness", "clearcoatNormal", "sheenColor", "sheenRoughness"};
+            "emissive", "clearcoat", "clearcoatRoughness", "clearcoatNormal", "sheenColor", "sheenRoughness",
+            "specular", "specularColor"};
         static_assert(std::size(expected) == kAllMapSlots.size());
         int i = 0;
         for (MapSlot slot : kAllMapSlots) {
@@ -134,15 +135,37 @@ private Q_SLOTS:
         QCOMPARE(m.map(MapSlot::SheenColor).colorSpace, ColorEncoding::SRGB);
         QCOMPARE(m.map(MapSlot::SheenColor).channel, MapChannel::Rgb);
         QCOMPARE(m.map(MapSlot::SheenRoughness).channel, MapChannel::A);
+        // KHR_materials_specular: the default layer (strength 1, white), which is "off"; the
+        // strength the texture's alpha, the colour sRGB RGB.
+        QVERIFY(!m.hasSpecular());
+        QCOMPARE(m.specular(), 1.0);
+        QCOMPARE(m.specularColor(), glm::dvec3(1.0));
+        QCOMPARE(m.map(MapSlot::Specular).channel, MapChannel::A);
+        QCOMPARE(m.map(MapSlot::SpecularColor).colorSpace, ColorEncoding::SRGB);
+        QCOMPARE(m.map(MapSlot::SpecularColor).channel, MapChannel::Rgb);
         // Each lobe's slots count only while that lobe is on.
         Material coated = m;
         coated.setClearcoat(0.25, 0.5);
         Material sheened = m;
         sheened.setSheen(glm::dvec3(0.0, 0.0, 0.1), 0.0); // one component is enough
         QVERIFY(sheened.hasSheen());
+        // The specular layer is on when any of its factors differs from the default, or a texture
+        // modulates it (factor 1 times a texture is not 1).
+        Material weaker = m;
+        weaker.setSpecular(0.5, glm::dvec3(1.0));
+        Material tinted = m;
+        tinted.setSpecular(1.0, glm::dvec3(1.0, 1.0, 2.0));
+        Material textured = m;
+        textured.map(MapSlot::SpecularColor).path = "/textures/tint.png";
+        for (const Material* on : {&weaker, &tinted, &textured})
+            QVERIFY(on->hasSpecular());
         for (MapSlot slot : kAllMapSlots) {
-            QCOMPARE(coated.usesSlot(slot), lobeOf(slot) != MaterialLobe::Sheen);
-            QCOMPARE(sheened.usesSlot(slot), lobeOf(slot) != MaterialLobe::Clearcoat);
+            QCOMPARE(coated.usesSlot(slot),
+                lobeOf(slot) == MaterialLobe::Core || lobeOf(slot) == MaterialLobe::Clearcoat);
+            QCOMPARE(sheened.usesSlot(slot),
+                lobeOf(slot) == MaterialLobe::Core || lobeOf(slot) == MaterialLobe::Sheen);
+            QCOMPARE(weaker.usesSlot(slot),
+                lobeOf(slot) == MaterialLobe::Core || lobeOf(slot) == MaterialLobe::Specular);
         }
         QCOMPARE(m.ior, 1.5);
         QCOMPARE(m.shading, ShadingModel {});
@@ -211,6 +234,14 @@ private Q_SLOTS:
             {"sheenRoughness.channel",
                 [](Material& m) { m.map(MapSlot::SheenRoughness).channel = MapChannel::Rgb; }},
             {"sheenColor.invert", [](Material& m) { m.map(MapSlot::SheenColor).invert = true; }},
+            // KHR_materials_specular's fields: a colour above 1 is allowed up to 100.
+            {"specular.factor", [](Material& m) { m.setFactor(MapSlot::Specular, 1.5); }},
+            {"specularColor.factor.g", [](Material& m) { m.map(MapSlot::SpecularColor).factor.y = 100.5; }},
+            {"specularColor.factor.r", [](Material& m) { m.map(MapSlot::SpecularColor).factor.x = -0.5; }},
+            {"specularColor.factor.a", [](Material& m) { m.map(MapSlot::SpecularColor).factor.w = 2.0; }},
+            {"specularColor.channel",
+                [](Material& m) { m.map(MapSlot::SpecularColor).channel = MapChannel::R; }},
+            {"specular.channel", [](Material& m) { m.map(MapSlot::Specular).channel = MapChannel::Rgb; }},
         };
         for (const Case& c : cases) {
             Material m;

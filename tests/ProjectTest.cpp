@@ -113,6 +113,10 @@ Project everythingChanged(const QString& root)
     m.map(MapSlot::SheenColor).uv.scale = {3.0, 3.0};
     m.map(MapSlot::SheenRoughness).path = under("textures/velvet.png");
     m.map(MapSlot::SheenRoughness).texCoord = 1;
+    m.setSpecular(0.625, glm::dvec3(2.5, 1.0, 0.75));
+    m.map(MapSlot::SpecularColor).path = under("textures/tint.png");
+    m.map(MapSlot::Specular).path = under("textures/tint.png");
+    m.map(MapSlot::Specular).uv.rotationDegrees = 30.0;
     m.alphaMode = AlphaMode::Mask;
     m.alphaCutoff = 0.25;
     m.doubleSided = false;
@@ -356,7 +360,7 @@ private Q_SLOTS:
         const QJsonObject object = QJsonDocument::fromJson(readAll(qs(path))).object();
         QCOMPARE(object.value(QLatin1String("format")).toString(), QStringLiteral("facet-project"));
         QCOMPARE(object.value(QLatin1String("version")).toInt(), Project::kFormatVersion);
-        QCOMPARE(object.value(QLatin1String("version")).toInt(), 6);
+        QCOMPARE(object.value(QLatin1String("version")).toInt(), 7);
         // Paths inside the compare layout are stored relative to the project, as the others are.
         const QJsonObject compare = object.value(QLatin1String("compare")).toObject();
         QCOMPARE(compare.value(QLatin1String("environments"))
@@ -535,8 +539,8 @@ private Q_SLOTS:
                                     << QStringLiteral("\"version\" is missing");
         QTest::newRow("newer version")
             << QByteArray(
-                   R"({"format": "facet-project", "version": 7, "material": {"roughness": "new syntax"}})")
-            << QStringLiteral("written by a newer Facet (version 7); this Facet reads up to version 6");
+                   R"({"format": "facet-project", "version": 8, "material": {"roughness": "new syntax"}})")
+            << QStringLiteral("written by a newer Facet (version 8); this Facet reads up to version 7");
         // Version 3's compare layout (every refusal: tests/CompareLayoutTest.cpp); the path names it.
         QTest::newRow("compare: B names a material the project lacks")
             << QByteArray(R"({"format": "facet-project", "version": 3, "materials": [{}, {}],

@@ -105,7 +105,7 @@ private Q_SLOTS:
             v2[QLatin1String("version")] = 2;
             // Optional fields added since, without a version (docs/project-format.md): "unlit",
             // the view's "keepUnits" and "texelDensityTarget"; the coat's maps (versions 4, 5) and
-            // the sheen's (version 6).
+            // the sheen's (version 6) and the specular layer's (version 7).
             QJsonObject view = v2[QLatin1String("view")].toObject();
             view.remove(QLatin1String("keepUnits"));
             view.remove(QLatin1String("texelDensityTarget"));
@@ -114,8 +114,8 @@ private Q_SLOTS:
             for (QJsonValueRef each : materials) {
                 QJsonObject m = each.toObject();
                 m.remove(QLatin1String("unlit"));
-                for (const char* key :
-                    {"clearcoat", "clearcoatRoughness", "clearcoatNormal", "sheenColor", "sheenRoughness"})
+                for (const char* key : {"clearcoat", "clearcoatRoughness", "clearcoatNormal", "sheenColor",
+                         "sheenRoughness", "specular", "specularColor"})
                     m.remove(QLatin1String(key));
                 each = m;
             }
@@ -182,47 +182,64 @@ private Q_SLOTS:
         QVERIFY(*again == *project);
     }
 
-    // Version 6: the sheen's two maps. They read and save back; a version 5 file has no sheen
-    // (its material reads black); values out of range, of the wrong type or channel are refused
-    // naming the field.
-    void version6Sheen_data()
+    // Version 6: the sheen's two maps; version 7: the specular layer's two. They read and save
+    // back; a file of the version before has neither (its material reads the default: no sheen,
+    // the core's specular layer); values out of range, of the wrong type or channel are refused
+    // naming the field. `fields` holds the material's keys for the lobe's maps.
+    void lobeMaps_data()
     {
         QTest::addColumn<int>("version");
-        QTest::addColumn<QByteArray>("sheenColor"); // the material's "sheenColor" value, or empty
-        QTest::addColumn<QByteArray>("sheenRoughness");
+        QTest::addColumn<QString>("lobe"); // "sheen" or "specular"
+        QTest::addColumn<QByteArray>("fields");
         QTest::addColumn<QString>("problem"); // part of the refusal, or empty
-        QTest::newRow("version 6 sheen") << 6 << QByteArray(R"({"factor": [0.8, 0.2, 0.4]})")
-                                         << QByteArray(R"({"factor": 0.5})") << QString();
-        QTest::newRow("version 6 sheen maps")
-            << 6 << QByteArray(R"({"factor": [1, 1, 1], "texture": "/t/velvet.png"})")
-            << QByteArray(R"({"factor": 1, "texture": "/t/velvet.png", "channel": "a"})") << QString();
-        QTest::newRow("version 5, no sheen") << 5 << QByteArray() << QByteArray() << QString();
-        QTest::newRow("sheen colour above 1")
-            << 6 << QByteArray(R"({"factor": [1.5, 0, 0]})") << QByteArray()
-            << QStringLiteral("materials[0].sheenColor.factor.r: 1.5 is outside [0, 1]");
-        QTest::newRow("sheen roughness negative")
-            << 6 << QByteArray() << QByteArray(R"({"factor": -0.5})")
-            << QStringLiteral("materials[0].sheenRoughness.factor: -0.5 is outside [0, 1]");
-        QTest::newRow("sheen colour a string") << 6 << QByteArray(R"({"factor": "white"})") << QByteArray()
-                                               << QStringLiteral("materials[0].sheenColor.factor");
-        QTest::newRow("sheen colour reads one channel")
-            << 6 << QByteArray(R"({"factor": [1, 1, 1], "channel": "r"})") << QByteArray()
-            << QStringLiteral("sheenColor.channel: the sheenColor map reads \"rgb\"");
-        QTest::newRow("sheen roughness reads rgb")
-            << 6 << QByteArray() << QByteArray(R"({"factor": 1, "channel": "rgb"})")
-            << QStringLiteral("sheenRoughness.channel");
+        const auto row
+            = [](const char* name, int version, const char* lobe, const char* fields, const char* problem) {
+                  QTest::newRow(name) << version << QString::fromLatin1(lobe) << QByteArray(fields)
+                                      << QString::fromLatin1(problem);
+              };
+        row("version 6 sheen", 6, "sheen",
+            R"({"sheenColor": {"factor": [0.8, 0.2, 0.4]}, "sheenRoughness": {"factor": 0.5}})", "");
+        row("version 6 sheen maps", 6, "sheen",
+            R"({"sheenColor": {"factor": [1, 1, 1], "texture": "/t/velvet.png"},
+                "sheenRoughness": {"factor": 1, "texture": "/t/velvet.png", "channel": "a"}})",
+            "");
+        row("version 5, no sheen", 5, "sheen", "{}", "");
+        row("sheen colour above 1", 6, "sheen", R"({"sheenColor": {"factor": [1.5, 0, 0]}})",
+            "materials[0].sheenColor.factor.r: 1.5 is outside [0, 1]");
+        row("sheen roughness negative", 6, "sheen", R"({"sheenRoughness": {"factor": -0.5}})",
+            "materials[0].sheenRoughness.factor: -0.5 is outside [0, 1]");
+        row("sheen colour a string", 6, "sheen", R"({"sheenColor": {"factor": "white"}})",
+            "materials[0].sheenColor.factor");
+        row("sheen colour reads one channel", 6, "sheen",
+            R"({"sheenColor": {"factor": [1, 1, 1], "channel": "r"}})",
+            "sheenColor.channel: the sheenColor map reads \"rgb\"");
+        row("sheen roughness reads rgb", 6, "sheen", R"({"sheenRoughness": {"factor": 1, "channel": "rgb"}})",
+            "sheenRoughness.channel");
+        row("version 7 specular", 7, "specular",
+            R"({"specular": {"factor": 0.5}, "specularColor": {"factor": [2.5, 1, 0.25]}})", "");
+        row("version 7 specular maps", 7, "specular",
+            R"({"specular": {"factor": 1, "texture": "/t/tint.png", "channel": "a"},
+                "specularColor": {"factor": [1, 1, 1], "texture": "/t/tint.png"}})",
+            "");
+        row("version 6, the default specular layer", 6, "specular", "{}", "");
+        row("specular above 1", 7, "specular", R"({"specular": {"factor": 1.5}})",
+            "materials[0].specular.factor: 1.5 is outside [0, 1]");
+        row("specular colour above 100", 7, "specular", R"({"specularColor": {"factor": [1, 101, 1]}})",
+            "materials[0].specularColor.factor.g: 101 is outside [0, 100]");
+        row("specular colour reads one channel", 7, "specular",
+            R"({"specularColor": {"factor": [1, 1, 1], "channel": "g"}})",
+            "specularColor.channel: the specularColor map reads \"rgb\"");
+        row("specular a string", 7, "specular", R"({"specular": {"factor": "shiny"}})",
+            "materials[0].specular.factor");
     }
-    void version6Sheen()
+    void lobeMaps()
     {
         QFETCH(int, version);
-        QFETCH(QByteArray, sheenColor);
-        QFETCH(QByteArray, sheenRoughness);
+        QFETCH(QString, lobe);
+        QFETCH(QByteArray, fields);
         QFETCH(QString, problem);
-        QJsonObject material {{QLatin1String("name"), QLatin1String("Velvet")}};
-        if (!sheenColor.isEmpty())
-            material[QLatin1String("sheenColor")] = QJsonDocument::fromJson(sheenColor).object();
-        if (!sheenRoughness.isEmpty())
-            material[QLatin1String("sheenRoughness")] = QJsonDocument::fromJson(sheenRoughness).object();
+        QJsonObject material = QJsonDocument::fromJson(fields).object();
+        material[QLatin1String("name")] = QLatin1String("Layered");
         std::string error, warning;
         const auto project = Project::fromJson(fileOf(version, material), {}, &error, &warning);
         if (!problem.isEmpty()) {
@@ -233,12 +250,14 @@ private Q_SLOTS:
         QVERIFY2(project, error.c_str());
         QVERIFY2(warning.empty(), warning.c_str());
         const Material& m = project->material();
-        QCOMPARE(m.hasSheen(), !sheenColor.isEmpty());
-        if (!sheenColor.isEmpty()) {
-            const QJsonArray factor
-                = QJsonDocument::fromJson(sheenColor).object()[QLatin1String("factor")].toArray();
+        const bool written = material.size() > 1;
+        const QString colorKey = lobe + QLatin1String("Color");
+        QCOMPARE(lobe == QLatin1String("sheen") ? m.hasSheen() : m.hasSpecular(), written);
+        if (written) {
+            const QJsonArray factor = material[colorKey].toObject()[QLatin1String("factor")].toArray();
+            const glm::dvec3 color = lobe == QLatin1String("sheen") ? m.sheenColor() : m.specularColor();
             for (int c = 0; c < 3; ++c)
-                QCOMPARE(m.sheenColor()[c], factor.at(c).toDouble());
+                QCOMPARE(color[c], factor.at(c).toDouble());
         }
         const auto again = Project::fromJson(project->toJson(), {}, &error);
         QVERIFY2(again, error.c_str());

@@ -40,8 +40,8 @@ private Q_SLOTS:
     void sharedTexels();
     void lobesOnlyWhereTheMaterialHasThem_data();
     void lobesOnlyWhereTheMaterialHasThem();
-    void sheenPackedTexture_data();
-    void sheenPackedTexture();
+    void packedLobeTexture_data();
+    void packedLobeTexture();
 
 private:
     std::optional<HeadlessGLContext> m_context; // sharedTexels compiles its variants
@@ -282,6 +282,26 @@ void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem_data()
         SurfaceFeature::HasSheenRoughnessMap, false, "uSheenRoughnessMap");
     row("sheen roughness map, roughness factor 0.5", "sheenColor", 1.0, false, sheenRoughness, 0.5,
         SurfaceFeature::HasSheenRoughnessMap, true, "uSheenRoughnessMap");
+    // The specular layer: on while it is not the default (strength 1, white) or a map modulates it.
+    row("specular 1 (default)", "specular", 1.0, false, none, 0.0, SurfaceFeature::Specular, false,
+        "uSpecularFactor");
+    row("specular 0.5", "specular", 0.5, false, none, 0.0, SurfaceFeature::Specular, true, "uSpecularFactor");
+    row("specular 0", "specular", 0.0, false, none, 0.0, SurfaceFeature::Specular, true,
+        "uSpecularColorFactor");
+    row("specular 0.5, unlit", "specular", 0.5, true, none, 0.0, SurfaceFeature::Specular, false,
+        "uSpecularFactor");
+    row("specular colour 2", "specularColor", 2.0, false, none, 0.0, SurfaceFeature::Specular, true,
+        "uSpecularColorFactor");
+    const int specular = int(MapSlot::Specular);
+    const int specularColor = int(MapSlot::SpecularColor);
+    row("specular map, factors the default's (the map turns the layer on)", "specular", 1.0, false, specular,
+        0.0, SurfaceFeature::HasSpecularMap, true, "uSpecularMap");
+    row("specular colour map, factors the default's", "specular", 1.0, false, specularColor, 0.0,
+        SurfaceFeature::HasSpecularColorMap, true, "uSpecularColorMap");
+    row("specular colour map, strength 0 (a tint of nothing)", "specular", 0.0, false, specularColor, 0.0,
+        SurfaceFeature::HasSpecularColorMap, false, "uSpecularColorMap");
+    row("specular map, unlit", "specular", 0.5, true, specular, 0.0, SurfaceFeature::HasSpecularMap, false,
+        "uSpecularMap");
 }
 
 void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem()
@@ -323,47 +343,75 @@ void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem()
     }
 }
 
-// KHR_materials_sheen's packing: the colour in RGB (sRGB) and the roughness in A of one texture is
-// one fetch, since an sRGB texture's alpha is linear; a roughness read from a colour channel of
-// the sRGB texture is not (it would read the decoded colour).
-void ShaderVariantGLTest::sheenPackedTexture_data()
+// KHR_materials_sheen's and KHR_materials_specular's packing: the colour in RGB (sRGB) and a
+// scalar (the sheen's roughness, the specular strength) in A of one texture is one fetch, since
+// an sRGB texture's alpha is linear; a scalar read from a colour channel of the sRGB texture is
+// not (it would read the decoded colour).
+void ShaderVariantGLTest::packedLobeTexture_data()
 {
-    QTest::addColumn<int>("roughnessChannel");
+    QTest::addColumn<int>("colorSlot");
+    QTest::addColumn<int>("scalarSlot");
+    QTest::addColumn<int>("scalarChannel");
     QTest::addColumn<bool>("sameFile");
     QTest::addColumn<bool>("shared");
-    QTest::newRow("one RGBA texture, roughness in alpha") << int(MapChannel::A) << true << true;
-    QTest::newRow("one texture, roughness in red") << int(MapChannel::R) << true << false;
-    QTest::newRow("two files") << int(MapChannel::A) << false << false;
+    QTest::addColumn<SurfaceFeatures>("bit");
+    QTest::addColumn<QString>("sampler"); // the scalar's own sampler, declared only when not shared
+    const struct {
+        const char* lobe;
+        MapSlot color, scalar;
+        SurfaceFeature bit;
+        const char* sampler;
+    } lobes[] = {{"sheen", MapSlot::SheenColor, MapSlot::SheenRoughness,
+                     SurfaceFeature::SheenRoughnessTexelFromSheenColor, "uSheenRoughnessMap"},
+        {"specular", MapSlot::SpecularColor, MapSlot::Specular,
+            SurfaceFeature::SpecularTexelFromSpecularColor, "uSpecularMap"}};
+    for (const auto& lobe : lobes) {
+        const auto row = [&](const char* name, MapChannel channel, bool sameFile, bool shared) {
+            QTest::addRow("%s: %s", lobe.lobe, name)
+                << int(lobe.color) << int(lobe.scalar) << int(channel) << sameFile << shared
+                << SurfaceFeatures(lobe.bit) << QString::fromLatin1(lobe.sampler);
+        };
+        row("one RGBA texture, the scalar in alpha", MapChannel::A, true, true);
+        row("one texture, the scalar in red", MapChannel::R, true, false);
+        row("two files", MapChannel::A, false, false);
+    }
 }
 
-void ShaderVariantGLTest::sheenPackedTexture()
+void ShaderVariantGLTest::packedLobeTexture()
 {
-    QFETCH(int, roughnessChannel);
+    QFETCH(int, colorSlot);
+    QFETCH(int, scalarSlot);
+    QFETCH(int, scalarChannel);
     QFETCH(bool, sameFile);
     QFETCH(bool, shared);
+    QFETCH(SurfaceFeatures, bit);
+    QFETCH(QString, sampler);
     Material material;
     material.setSheen(glm::dvec3(1.0), 1.0);
-    material.map(MapSlot::SheenColor).path = "/t/sheen.png";
-    material.map(MapSlot::SheenRoughness).path = sameFile ? "/t/sheen.png" : "/t/other.png";
-    material.map(MapSlot::SheenRoughness).channel = MapChannel(roughnessChannel);
+    material.setSpecular(0.5, glm::dvec3(1.0));
+    const auto color = std::size_t(colorSlot);
+    const auto scalar = std::size_t(scalarSlot);
+    material.maps[color].path = "/t/packed.png";
+    material.maps[scalar].path = sameFile ? "/t/packed.png" : "/t/other.png";
+    material.maps[scalar].channel = MapChannel(scalarChannel);
     const auto a = std::make_shared<const MapImage>(4, 4, MapLayout::Rgba, MapSampleType::UInt8);
     const auto b = std::make_shared<const MapImage>(4, 4, MapLayout::Rgba, MapSampleType::UInt8);
     bool hasImage[kMapSlotCount] = {};
     std::array<const void*, kMapSlotCount> textures {};
-    hasImage[std::size_t(MapSlot::SheenColor)] = hasImage[std::size_t(MapSlot::SheenRoughness)] = true;
-    textures[std::size_t(MapSlot::SheenColor)] = a.get();
-    textures[std::size_t(MapSlot::SheenRoughness)] = sameFile ? a.get() : b.get();
+    hasImage[color] = hasImage[scalar] = true;
+    textures[color] = a.get();
+    textures[scalar] = sameFile ? a.get() : b.get();
     const SurfaceFeatures features = surfaceFeaturesFor(material, hasImage, false, false);
-    QVERIFY(hasFeature(features, SurfaceFeature::HasSheenColorMap));
-    QVERIFY(hasFeature(features, SurfaceFeature::HasSheenRoughnessMap));
+    QVERIFY(hasFeature(features, mapFeature(MapSlot(colorSlot))));
+    QVERIFY(hasFeature(features, mapFeature(MapSlot(scalarSlot))));
     const SurfaceFeatures all = features | sharedTexelFeatures(material, features, textures);
-    QCOMPARE(hasFeature(all, SurfaceFeature::SheenRoughnessTexelFromSheenColor), shared);
-    QCOMPARE(samplesOwnTexture(all, MapSlot::SheenRoughness), !shared);
+    QCOMPARE((all & bit) != 0, shared);
+    QCOMPARE(samplesOwnTexture(all, MapSlot(scalarSlot)), !shared);
     SurfaceProgramCache programs;
     std::string error;
     const ShaderProgram* program = programs.get(SurfaceVariantKey {all, DebugView::None}, &error);
     QVERIFY2(program, error.c_str());
-    QCOMPARE(program->uniformLocation("uSheenRoughnessMap") >= 0, !shared);
+    QCOMPARE(program->uniformLocation(sampler.toLatin1().constData()) >= 0, !shared);
 }
 
 QTEST_GUILESS_MAIN(ShaderVariantGLTest)

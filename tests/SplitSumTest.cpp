@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <QtTest/QTest>
 
@@ -46,6 +47,8 @@ private Q_SLOTS:
         QTest::addColumn<bool>("multiScatter");
         QTest::addColumn<double>("metallic");
         QTest::addColumn<glm::dvec3>("baseColor");
+        QTest::addColumn<double>("specular");
+        QTest::addColumn<glm::dvec3>("specularColor");
         const glm::dvec3 white(1.0);
         const glm::dvec3 tinted(0.9, 0.5, 0.2);
         for (BrdfComposition composition : {BrdfComposition::Gltf, BrdfComposition::LearnOpenGL})
@@ -57,10 +60,28 @@ private Q_SLOTS:
                                                  .arg(QLatin1String(coupling == DielectricCoupling::FresnelMix ? "fresnel-mix" : "energy-preserving"))
                                                  .arg(QLatin1String(multiScatter ? "ms" : "ss"))
                                                  .arg(metallic);
-                        QTest::newRow(qPrintable(name + QLatin1String(" white"))) << int(composition) << int(coupling) << multiScatter
-                                                                   << metallic << white;
-                        QTest::newRow(qPrintable(name + QLatin1String(" tinted"))) << int(composition) << int(coupling) << multiScatter
-                                                                    << metallic << tinted;
+                        QTest::newRow(qPrintable(name + QLatin1String(" white")))
+                            << int(composition) << int(coupling) << multiScatter << metallic << white << 1.0
+                            << white;
+                        QTest::newRow(qPrintable(name + QLatin1String(" tinted")))
+                            << int(composition) << int(coupling) << multiScatter << metallic << tinted << 1.0
+                            << white;
+                        if (metallic == 1.0)
+                            continue; // metals ignore KHR_materials_specular
+                        // The layer's F0 and F90 through the table (F0 scale + F90 bias) and the
+                        // diffuse weight (1 - F90) + (F90 - max F0) W: strength, tint, a tint
+                        // clamped to F0 = 1, no reflection at all.
+                        const std::pair<double, glm::dvec3> layers[] = {{0.5, white}, {1.0, {4.0, 2.0, 0.8}},
+                            {0.7, {0.3, 1.0, 2.0}}, {1.0, glm::dvec3(25.0)}, {0.0, white}};
+                        for (const auto& [specular, specularColor] : layers)
+                            QTest::newRow(qPrintable(name
+                                + QStringLiteral(" tinted, specular %1 (%2, %3, %4)")
+                                      .arg(specular)
+                                      .arg(specularColor.r)
+                                      .arg(specularColor.g)
+                                      .arg(specularColor.b)))
+                                << int(composition) << int(coupling) << multiScatter << metallic << tinted
+                                << specular << specularColor;
                     }
     }
 
@@ -75,6 +96,8 @@ private Q_SLOTS:
         QFETCH(bool, multiScatter);
         QFETCH(double, metallic);
         QFETCH(glm::dvec3, baseColor);
+        QFETCH(double, specular);
+        QFETCH(glm::dvec3, specularColor);
         ShadingModel model;
         model.composition = BrdfComposition(composition);
         model.coupling = DielectricCoupling(coupling);
@@ -94,6 +117,8 @@ private Q_SLOTS:
                 m.metallic = metallic;
                 m.perceptualRoughness = r;
                 m.ior = 1.5;
+                m.specular = specular;
+                m.specularColor = specularColor;
                 const glm::dvec3 expected = directionalAlbedo(brdf, m, NoV, 4096);
                 const glm::dvec3 actual = splitSumRadiance(brdf, table(), m, NoV, furnace).total();
                 for (int c = 0; c < 3; ++c) {

@@ -455,13 +455,14 @@ private Q_SLOTS:
         QTest::addColumn<bool>("emits");
         QTest::addColumn<bool>("coated");
         QTest::addColumn<QStringList>("skipped");
-        QTest::addColumn<bool>("sheen");
+        QTest::addColumn<QString>("lobe"); // "sheen", "specular" or none
         const auto row = [](const char* name, const char* templateId, bool emits, bool coated,
-                             std::initializer_list<const char*> skipped, bool sheen = false) {
+                             std::initializer_list<const char*> skipped, const char* lobe = "") {
             QStringList maps;
             for (const char* map : skipped)
                 maps.append(QString::fromLatin1(map));
-            QTest::newRow(name) << QString::fromLatin1(templateId) << emits << coated << maps << sheen;
+            QTest::newRow(name) << QString::fromLatin1(templateId) << emits << coated << maps
+                                << QString::fromLatin1(lobe);
         };
         row("unreal, plain", "unreal", false, false, {"E", "CC"});
         row("unreal, emitting", "unreal", true, false, {"CC"});
@@ -474,12 +475,17 @@ private Q_SLOTS:
         // glTF's coat textures: strength and roughness in one (R, G), and a coat normal map only
         // where there is one to write.
         row("gltf-textures, plain", "gltf-textures", false, false,
-            {"emissive", "clearcoat", "clearcoatNormal", "sheen"});
-        row("gltf-textures, coated", "gltf-textures", false, true, {"emissive", "clearcoatNormal", "sheen"});
-        // The sheen's one texture (colour RGB, roughness A) only for a material with a sheen.
+            {"emissive", "clearcoat", "clearcoatNormal", "sheen", "specular"});
+        row("gltf-textures, coated", "gltf-textures", false, true,
+            {"emissive", "clearcoatNormal", "sheen", "specular"});
+        // The sheen's one texture (colour RGB, roughness A) only for a material with a sheen; the
+        // specular layer's (colour RGB, strength A) only for one that is not the default.
         row("gltf-textures, sheen", "gltf-textures", false, false,
-            {"emissive", "clearcoat", "clearcoatNormal"}, true);
-        row("unreal, sheen (no sheen channel)", "unreal", false, false, {"E", "CC"}, true);
+            {"emissive", "clearcoat", "clearcoatNormal", "specular"}, "sheen");
+        row("unreal, sheen (no sheen channel)", "unreal", false, false, {"E", "CC"}, "sheen");
+        row("gltf-textures, specular", "gltf-textures", false, false,
+            {"emissive", "clearcoat", "clearcoatNormal", "sheen"}, "specular");
+        row("unreal, specular (no specular colour channel)", "unreal", false, false, {"E", "CC"}, "specular");
     }
     void optionalOutputs()
     {
@@ -487,15 +493,17 @@ private Q_SLOTS:
         QFETCH(bool, emits);
         QFETCH(bool, coated);
         QFETCH(QStringList, skipped);
-        QFETCH(bool, sheen);
+        QFETCH(QString, lobe);
         Material plain;
         plain.name = "Plain";
         if (emits)
             plain.map(MapSlot::Emissive).factor = glm::dvec4(0.0, 0.1, 0.0, 1.0); // no texture
         if (coated)
             plain.setClearcoat(0.75, 0.25);
-        if (sheen)
+        if (lobe == QLatin1String("sheen"))
             plain.setSheen(glm::dvec3(0.5, 0.25, 1.0), 0.6);
+        if (lobe == QLatin1String("specular"))
+            plain.setSpecular(0.6, glm::dvec3(0.5, 0.25, 1.0));
         const std::optional<ExportTemplate> exportTemplate
             = ExportTemplate::builtin(templateId.toStdString());
         QVERIFY(exportTemplate);
@@ -507,13 +515,14 @@ private Q_SLOTS:
             actual.append(QString::fromStdString(map));
         QCOMPARE(actual, skipped);
         QCOMPARE(plan->files.size() + plan->skipped.size(), exportTemplate->outputs.size());
-        if (sheen && templateId == QLatin1String("gltf-textures")) {
-            // The sheen texture: RGB the colour sRGB-encoded, A the roughness (linear).
+        if (!lobe.isEmpty() && templateId == QLatin1String("gltf-textures")) {
+            // The lobe's texture: RGB the colour sRGB-encoded, A the scalar (linear).
             TestMaterial test(false);
             test.material = plain;
             QTemporaryDir dir;
             QVERIFY2(writeSet(*plan, test, dir.path(), &error), error.c_str());
-            const std::optional<ReadBack> file = readBack(dir.filePath(QStringLiteral("Plain_sheen.png")));
+            const std::optional<ReadBack> file
+                = readBack(dir.filePath(QStringLiteral("Plain_%1.png").arg(lobe)));
             QVERIFY(file && file->channels == 4 && file->values.size() == 4);
             const double expected[4] = {tonemap::linearToSrgb(0.5), tonemap::linearToSrgb(0.25), 1.0, 0.6};
             for (int c = 0; c < 4; ++c)

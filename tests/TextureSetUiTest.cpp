@@ -325,21 +325,23 @@ void TextureSetUiTest::dockAssignsPackedChannels()
 
 void TextureSetUiTest::assigningASetReplacesTheWholeSet()
 {
-    // Set A: eleven separate maps, a clear coat's three and a sheen's two among them, through
-    // Assign Folder….
+    // Set A: twelve separate maps, a clear coat's three, a sheen's two and a specular colour among
+    // them, through Assign Folder… (the specular strength has no file name of its own: a bare
+    // "specular" is a specular-glossiness map, core/material/MapNaming.h).
     const QString a = m_dir.filePath(QStringLiteral("replace/a"));
     makeFiles(a,
         {QStringLiteral("a_basecolor.png"), QStringLiteral("a_normal.png"), QStringLiteral("a_metallic.png"),
             QStringLiteral("a_roughness.png"), QStringLiteral("a_ao.png"), QStringLiteral("a_emissive.png"),
             QStringLiteral("a_clearcoat.png"), QStringLiteral("a_clearcoat_roughness.png"),
             QStringLiteral("a_clearcoat_normal.png"), QStringLiteral("a_sheen.png"),
-            QStringLiteral("a_sheen_roughness.png")});
+            QStringLiteral("a_sheen_roughness.png"), QStringLiteral("a_specular_color.png")});
     auto* button = m_dock->findChild<QPushButton*>(QStringLiteral("assignFolderButton"));
     QVERIFY(button);
     QVERIFY(clickAndAnswerFileDialog(button, a));
     const Material setA = m_document->project().material();
     for (MapSlot slot : kAllMapSlots)
-        QVERIFY2(setA.map(slot).hasTexture(), toString(slot));
+        QVERIFY2(setA.map(slot).hasTexture() == (slot != MapSlot::Specular), toString(slot));
+    QVERIFY(setA.hasSpecular()); // the colour texture modulates the layer
     QCOMPARE(setA.metallic(), 1.0); // the texture shows as painted
     QCOMPARE(setA.clearcoat(), 1.0); // a coat texture turns the coat on, as painted
     QCOMPARE(setA.clearcoatRoughness(), 1.0);
@@ -362,8 +364,9 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
         QStringLiteral("b_roughness.png"));
     for (MapSlot slot : {MapSlot::Normal, MapSlot::Metallic, MapSlot::Occlusion, MapSlot::Emissive,
              MapSlot::Clearcoat, MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal, MapSlot::SheenColor,
-             MapSlot::SheenRoughness})
+             MapSlot::SheenRoughness, MapSlot::SpecularColor})
         QVERIFY2(!setB.map(slot).hasTexture(), toString(slot));
+    QVERIFY(!setB.hasSpecular()); // back to the core's layer
     QCOMPARE(setB.metallic(), 0.0); // a dielectric, not A's metallic factor of 1 alone
     QVERIFY(!setB.hasClearcoat()); // and no coat: A's came with A's coat maps
     QVERIFY(!m_dock->lobeSlots(MaterialLobe::Clearcoat)->isVisibleTo(m_dock));
@@ -372,10 +375,10 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
     QCOMPARE(m_document->undoStack()->index(), steps + 1); // one step
     const QString message = m_dock->lastMessage();
     QVERIFY2(message.startsWith(QStringLiteral("Assigned 2 maps")), qPrintable(message));
-    QVERIFY2(
-        message.contains(QStringLiteral("cleared (not in this set): Normal, Metallic (now 0), Ambient "
-                                        "Occlusion, Emissive, Clearcoat (no coat now), Clearcoat Roughness, "
-                                        "Clearcoat Normal, Sheen Colour (no sheen now), Sheen Roughness")),
+    QVERIFY2(message.contains(QStringLiteral(
+                 "cleared (not in this set): Normal, Metallic (now 0), Ambient "
+                 "Occlusion, Emissive, Clearcoat (no coat now), Clearcoat Roughness, "
+                 "Clearcoat Normal, Sheen Colour (no sheen now), Sheen Roughness, Specular Colour")),
         qPrintable(message));
     QCOMPARE(m_window->statusMessage(), message);
     // The slots say so too.

@@ -46,6 +46,8 @@ double valueIn(const Project& project, WedgeParameter parameter)
         return m.clearcoatRoughness();
     case WedgeParameter::SheenRoughness:
         return m.sheenRoughness();
+    case WedgeParameter::Specular:
+        return m.specular();
     case WedgeParameter::Exposure:
         return project.view.exposureEV;
     case WedgeParameter::Environment:
@@ -76,7 +78,7 @@ private Q_SLOTS:
         QCOMPARE(wedgeParameterNameList(),
             std::string("metallic, roughness, occlusion, normal, ior, emissiveStrength, alphaCutoff, alpha, "
                         "clearcoat, "
-                        "clearcoatRoughness, sheenRoughness, env, exposure"));
+                        "clearcoatRoughness, sheenRoughness, specular, env, exposure"));
         for (const WedgeParameterInfo& info : wedgeParameters()) {
             QCOMPARE(wedgeParameterFromString(info.name), std::optional(info.parameter));
             QCOMPARE(toString(info.parameter), info.name);
@@ -244,7 +246,8 @@ private Q_SLOTS:
         QTest::newRow("unknown parameter")
             << "rough=0,1"
             << "unknown parameter \"rough\" (known: metallic, roughness, occlusion, normal, ior, "
-               "emissiveStrength, alphaCutoff, alpha, clearcoat, clearcoatRoughness, sheenRoughness, env, "
+               "emissiveStrength, alphaCutoff, alpha, clearcoat, clearcoatRoughness, sheenRoughness, "
+               "specular, env, "
                "exposure)";
         QTest::newRow("names are case-sensitive") << "Roughness=0,1"
                                                   << "unknown parameter \"Roughness\"";
@@ -452,6 +455,12 @@ private Q_SLOTS:
         QTest::newRow("sheenRoughness, a sheen") << "sheenRoughness=0,1"
                                                  << "sheen"
                                                  << "";
+        QTest::newRow("specular, a metal") << "specular=0,1"
+                                           << "metal"
+                                           << "and the material is a metal (metallic 1)";
+        QTest::newRow("specular, a dielectric") << "specular=0,1"
+                                                << ""
+                                                << "";
         QTest::newRow("env") << "env=studio,sky"
                              << ""
                              << "";

@@ -17,7 +17,7 @@ using namespace jsonsupport;
 
 namespace {
 
-constexpr std::array<std::pair<ExportSource, const char*>, 23> kSources = {{
+constexpr std::array<std::pair<ExportSource, const char*>, 27> kSources = {{
     {ExportSource::Constant, "constant"},
     {ExportSource::BaseColorR, "baseColor.r"},
     {ExportSource::BaseColorG, "baseColor.g"},
@@ -41,6 +41,10 @@ constexpr std::array<std::pair<ExportSource, const char*>, 23> kSources = {{
     {ExportSource::SheenColorG, "sheenColor.g"},
     {ExportSource::SheenColorB, "sheenColor.b"},
     {ExportSource::SheenRoughness, "sheenRoughness"},
+    {ExportSource::Specular, "specular"},
+    {ExportSource::SpecularColorR, "specularColor.r"},
+    {ExportSource::SpecularColorG, "specularColor.g"},
+    {ExportSource::SpecularColorB, "specularColor.b"},
 }};
 
 constexpr std::array<std::pair<TextureFileFormat, const char*>, 4> kFormats = {{

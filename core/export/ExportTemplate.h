@@ -34,6 +34,8 @@
 //   clearcoat, clearcoatRoughness   the clear coat's strength and perceptual roughness
 //   clearcoatNormal.x/.y/.z         the coat's tangent-space normal, as normal.x/.y/.z
 //   sheenColor.r/.g/.b, sheenRoughness   the sheen's colour (linear) and perceptual roughness
+//   specular, specularColor.r/.g/.b      KHR_materials_specular's strength and F0 tint (linear;
+//                                        a tint above 1 is clamped by the file)
 // Tokens of file names: {material} (its name, made safe for a file name), {map}, {size} (the
 // file's width, or WxH when it is not square), {template} (the template's file name stem).
 
@@ -72,6 +74,10 @@ enum class ExportSource {
     SheenColorG,
     SheenColorB,
     SheenRoughness, // the sheen's perceptual roughness
+    Specular, // KHR_materials_specular's strength
+    SpecularColorR, // its F0 tint (linear)
+    SpecularColorG,
+    SpecularColorB,
 };
 const char* toString(ExportSource source); // "baseColor.r", ...; "constant"
 std::optional<ExportSource> exportSourceFromString(std::string_view name);

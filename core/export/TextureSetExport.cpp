@@ -38,6 +38,12 @@ std::optional<MapSlot> slotOf(ExportSource source)
         return MapSlot::SheenColor;
     case ExportSource::SheenRoughness:
         return MapSlot::SheenRoughness;
+    case ExportSource::Specular:
+        return MapSlot::Specular;
+    case ExportSource::SpecularColorR:
+    case ExportSource::SpecularColorG:
+    case ExportSource::SpecularColorB:
+        return MapSlot::SpecularColor;
     case ExportSource::NormalX:
     case ExportSource::NormalY:
     case ExportSource::NormalZ:
@@ -108,6 +114,8 @@ ExportTexel exportTexel(const Material& material, const MaterialMapImages& image
     texel.clearcoatRoughness = inputs.clearcoatRoughness;
     texel.sheenColor = inputs.sheenColor;
     texel.sheenRoughness = inputs.sheenRoughness;
+    texel.specular = inputs.specular;
+    texel.specularColor = inputs.specularColor;
     // The emissive strength stays a parameter of the material, not a texel value.
     if (material.emissiveStrength > 0.0) {
         texel.emissive = inputs.emissive / material.emissiveStrength;
@@ -191,6 +199,14 @@ double channelValue(const ExportChannel& channel, const ExportTexel& texel)
     case ExportSource::SheenRoughness:
         value = texel.sheenRoughness;
         break;
+    case ExportSource::Specular:
+        value = texel.specular;
+        break;
+    case ExportSource::SpecularColorR:
+    case ExportSource::SpecularColorG:
+    case ExportSource::SpecularColorB:
+        value = texel.specularColor[int(channel.source) - int(ExportSource::SpecularColorR)];
+        break;
     }
     return channel.invert ? 1.0 - value : value;
 }
@@ -207,6 +223,8 @@ bool slotHasContent(const Material& material, MapSlot slot)
     case MapSlot::ClearcoatRoughness:
     case MapSlot::SheenColor: // in use: the sheen is on
     case MapSlot::SheenRoughness:
+    case MapSlot::Specular: // in use: the layer is not the default
+    case MapSlot::SpecularColor:
         return true;
     case MapSlot::Emissive:
         return material.map(slot).hasTexture() || glm::dvec3(material.map(slot).factor) != glm::dvec3(0.0);

@@ -63,6 +63,8 @@ struct ExportTexel {
     glm::dvec3 clearcoatNormal {0.0, 0.0, 1.0}; // as `normal`, from the coat's normal map
     glm::dvec3 sheenColor {0.0}; // linear
     double sheenRoughness = 0.0; // perceptual
+    double specular = 1.0; // KHR_materials_specular's strength
+    glm::dvec3 specularColor {1.0}; // linear, may exceed 1
 };
 ExportTexel exportTexel(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv);
 // A source's value in a texel ([0, 1] for every source but emissive: the normal is stored as

@@ -32,7 +32,7 @@ constexpr int kFloat = 5126;
 constexpr int kUnsignedInt = 5125;
 
 // The gltf-textures template's outputs, by the slots they serve.
-enum class Texture { BaseColor, Normal, Orm, Emissive, Clearcoat, ClearcoatNormal, Sheen };
+enum class Texture { BaseColor, Normal, Orm, Emissive, Clearcoat, ClearcoatNormal, Sheen, Specular };
 const char* mapName(Texture texture)
 {
     switch (texture) {
@@ -48,6 +48,8 @@ const char* mapName(Texture texture)
         return "clearcoatNormal";
     case Texture::Sheen:
         return "sheen";
+    case Texture::Specular:
+        return "specular";
     case Texture::Emissive:
         break;
     }
@@ -69,6 +71,8 @@ std::vector<MapSlot> slotsOf(const std::string& outputMap)
         return {MapSlot::ClearcoatNormal};
     if (outputMap == mapName(Texture::Sheen))
         return {MapSlot::SheenColor, MapSlot::SheenRoughness};
+    if (outputMap == mapName(Texture::Specular))
+        return {MapSlot::SpecularColor, MapSlot::Specular};
     return {MapSlot::BaseColor};
 }
 
@@ -97,6 +101,11 @@ struct MaterialPlan {
     // KHR_materials_sheen: one sRGB texture, the colour in RGB and the roughness in A (linear, as
     // an sRGB texture's alpha is); only for a lit material with a sheen.
     bool sheen = false;
+    // KHR_materials_specular: one sRGB texture, the colour in RGB and the strength in A; the colour
+    // divided by `specularColorScale` (its factor's largest component when above 1, which the
+    // written factor carries) so that a tint above 1 fits the file.
+    bool specular = false;
+    double specularColorScale = 1.0;
     std::optional<UvTransform> shared; // written as KHR_texture_transform
     int texCoord = 0; // the UV set every textured slot reads (textureInfo.texCoord)
     std::optional<TextureSetExport> job;
@@ -140,6 +149,13 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
         plan.sheen = material.hasSheen() && !material.unlit
             && (material.map(MapSlot::SheenColor).hasTexture()
                 || material.map(MapSlot::SheenRoughness).hasTexture());
+        plan.specular = material.hasSpecular() && !material.unlit
+            && (material.map(MapSlot::Specular).hasTexture()
+                || material.map(MapSlot::SpecularColor).hasTexture());
+        if (plan.specular) {
+            const glm::dvec3 tint = material.specularColor();
+            plan.specularColorScale = std::max({1.0, tint.r, tint.g, tint.b});
+        }
 
         // One transform on every textured slot: kept as KHR_texture_transform; else baked. The
         // bake writes every map into one texture set, in one UV set: maps on different sets
@@ -178,6 +194,7 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
         baked.setFactor(MapSlot::Normal, 1.0);
         baked.setFactor(MapSlot::ClearcoatNormal, 1.0);
         baked.setFactor(MapSlot::Occlusion, 1.0);
+        baked.map(MapSlot::SpecularColor).factor /= plan.specularColorScale;
         // File names: "<asset>_<material>_<map>.png", a material name used twice numbered.
         std::string name = fileNameSafe(material.name);
         for (int n = 2; !usedNames.insert(name).second; ++n)
@@ -195,7 +212,8 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
                 || (output.map == mapName(Texture::Emissive) && plan.emissive)
                 || (output.map == mapName(Texture::Clearcoat) && plan.coat)
                 || (output.map == mapName(Texture::ClearcoatNormal) && plan.coatNormal)
-                || (output.map == mapName(Texture::Sheen) && plan.sheen);
+                || (output.map == mapName(Texture::Sheen) && plan.sheen)
+                || (output.map == mapName(Texture::Specular) && plan.specular);
             if (wanted) {
                 ExportOutput kept = output;
                 kept.optional = false;
@@ -580,6 +598,26 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
             }
             extensions.insert(QStringLiteral("KHR_materials_sheen"), sheen);
             extensionsUsed.insert(QStringLiteral("KHR_materials_sheen"));
+        }
+        if (!material.unlit && material.hasSpecular()) {
+            // A baked texture holds factor x texture (the colour over specularColorScale): the
+            // strength's factor is 1, the colour's the scale. The defaults, 1 and white, are left out.
+            const double strength = plan.specular ? 1.0 : material.specular();
+            const glm::dvec3 tint
+                = plan.specular ? glm::dvec3(plan.specularColorScale) : material.specularColor();
+            QJsonObject specular;
+            if (strength != 1.0)
+                specular.insert(QStringLiteral("specularFactor"), strength);
+            if (tint != glm::dvec3(1.0))
+                specular.insert(QStringLiteral("specularColorFactor"), QJsonArray {tint.r, tint.g, tint.b});
+            if (plan.specular) {
+                specular.insert(QStringLiteral("specularTexture"),
+                    textureInfo(index(Texture::Specular), plan, mesh.hasTexCoord1));
+                specular.insert(QStringLiteral("specularColorTexture"),
+                    textureInfo(index(Texture::Specular), plan, mesh.hasTexCoord1));
+            }
+            extensions.insert(QStringLiteral("KHR_materials_specular"), specular);
+            extensionsUsed.insert(QStringLiteral("KHR_materials_specular"));
         }
         if (material.unlit) {
             extensions.insert(QStringLiteral("KHR_materials_unlit"), QJsonObject {});

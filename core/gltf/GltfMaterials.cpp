@@ -284,7 +284,7 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
 
     // Extensions of the material model.
     static const std::set<std::string> kRead = {"KHR_materials_emissive_strength", "KHR_materials_ior",
-        "KHR_materials_unlit", "KHR_materials_clearcoat", "KHR_materials_sheen"};
+        "KHR_materials_unlit", "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular"};
     // A number of an extension's object: its value clamped to [lo, hi] (a note when it was not
     // there), or `otherwise` with a note naming the field when it is not a number.
     const auto extensionNumber = [&](const tinygltf::Value& object, const char* extension, const char* field,
@@ -298,10 +298,10 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
         }
         return clamped(object.Get(field).GetNumberAsDouble(), lo, hi, at, notes);
     };
-    // An RGB array of an extension's object, each component clamped to [0, 1]; `otherwise` with a
-    // note naming the field when it is not three numbers.
+    // An RGB array of an extension's object, each component clamped to [0, hi]; `otherwise` (the
+    // extension's default, black or white) with a note naming the field when it is not three numbers.
     const auto extensionColor = [&](const tinygltf::Value& object, const char* extension, const char* field,
-                                    const glm::dvec3& otherwise) {
+                                    const glm::dvec3& otherwise, double hi) {
         if (!object.Has(field))
             return otherwise;
         const std::string at = where + " " + extension + "." + field;
@@ -309,12 +309,13 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
         const bool numbers = array.IsArray() && array.ArrayLen() == 3 && array.Get(0).IsNumber()
             && array.Get(1).IsNumber() && array.Get(2).IsNumber();
         if (!numbers) {
-            notes.add(at + " is not an array of three numbers: black used");
+            notes.add(at + " is not an array of three numbers: "
+                + (otherwise == glm::dvec3(0.0) ? "black" : "white") + " used");
             return otherwise;
         }
         glm::dvec3 color;
         for (int c = 0; c < 3; ++c)
-            color[c] = clamped(array.Get(c).GetNumberAsDouble(), 0.0, 1.0, at, notes);
+            color[c] = clamped(array.Get(c).GetNumberAsDouble(), 0.0, hi, at, notes);
         return color;
     };
     for (const auto& [name, value] : g.extensions) {
@@ -351,7 +352,7 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
             // sheen. The colour texture is sRGB RGB, the roughness its own texture's alpha (often
             // the same texture's).
             const char* const extension = "KHR_materials_sheen";
-            m.setSheen(extensionColor(value, extension, "sheenColorFactor", glm::dvec3(0.0)),
+            m.setSheen(extensionColor(value, extension, "sheenColorFactor", glm::dvec3(0.0), 1.0),
                 extensionNumber(value, extension, "sheenRoughnessFactor", 0.0, 1.0, 0.0));
             MaterialMap& color = m.map(MapSlot::SheenColor);
             color.colorSpace = ColorEncoding::SRGB;
@@ -363,6 +364,24 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
             roughness.channel = MapChannel::A;
             readExtensionTexture(
                 model, value, extension, "sheenRoughnessTexture", false, assetPath, where, roughness, notes);
+        } else if (name == "KHR_materials_specular") {
+            // Defaults 1 and white (the extension's: the layer of glTF 2.0's core). The strength is
+            // its texture's alpha, the colour its own texture's sRGB RGB (often one file); the
+            // colour factor may exceed 1 (docs/gltf.md).
+            const char* const extension = "KHR_materials_specular";
+            m.setSpecular(extensionNumber(value, extension, "specularFactor", 0.0, 1.0, 1.0),
+                extensionColor(
+                    value, extension, "specularColorFactor", glm::dvec3(1.0), Material::kMaxSpecularColor));
+            MaterialMap& strength = m.map(MapSlot::Specular);
+            strength.colorSpace = ColorEncoding::Linear;
+            strength.channel = MapChannel::A;
+            readExtensionTexture(
+                model, value, extension, "specularTexture", false, assetPath, where, strength, notes);
+            MaterialMap& color = m.map(MapSlot::SpecularColor);
+            color.colorSpace = ColorEncoding::SRGB;
+            color.channel = MapChannel::Rgb;
+            readExtensionTexture(
+                model, value, extension, "specularColorTexture", false, assetPath, where, color, notes);
         } else if (!kRead.count(name)) {
             notes.add(
                 "the material extension " + name + " is not supported: previewed as metallic-roughness");

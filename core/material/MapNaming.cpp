@@ -35,6 +35,7 @@ enum class Layout {
     PackedClearcoat, // R the coat's strength, G its roughness (KHR_materials_clearcoat's channels)
     SheenColor,
     SheenRoughness,
+    SpecularColor,
 };
 
 MapRead scalar(MapSlot slot, MapChannel channel, bool invert = false)
@@ -112,6 +113,8 @@ TextureNaming namingOf(Layout layout)
         return single(MapRead {S::SheenColor, C::Rgb, false, std::nullopt});
     case Layout::SheenRoughness:
         return single(scalar(S::SheenRoughness, C::R));
+    case Layout::SpecularColor:
+        return single(MapRead {S::SpecularColor, C::Rgb, false, std::nullopt});
     }
     return {};
 }
@@ -154,6 +157,8 @@ constexpr NameRule kRules[] = {
     {"sheen_roughness", Where::LastWords, Layout::SheenRoughness},
     {"sheen_color", Where::LastWords, Layout::SheenColor},
     {"sheen_colour", Where::LastWords, Layout::SheenColor},
+    {"specular_color", Where::LastWords, Layout::SpecularColor},
+    {"specular_colour", Where::LastWords, Layout::SpecularColor},
 
     {"clearcoatroughness", Where::LastWords, Layout::ClearcoatRoughness}, // glTF's clearcoatRoughnessTexture
     {"clearcoatnormal", Where::LastWords, Layout::ClearcoatNormal}, // glTF's clearcoatNormalTexture
@@ -161,6 +166,7 @@ constexpr NameRule kRules[] = {
     {"sheenroughness", Where::LastWords, Layout::SheenRoughness}, // glTF's sheenRoughnessTexture
     {"sheencolor", Where::LastWords, Layout::SheenColor}, // glTF's sheenColorTexture
     {"sheen", Where::LastWords, Layout::SheenColor},
+    {"specularcolor", Where::LastWords, Layout::SpecularColor}, // glTF's specularColorTexture
 
     {"ambientocclusion", Where::LastWords, Layout::Occlusion}, // ambientCG
     {"metallicsmoothness", Where::LastWords, Layout::UnityMetallicSmoothness},

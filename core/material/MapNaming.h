@@ -35,6 +35,10 @@
 //                          coat_normal                           the coat's normal
 //                          sheen, sheencolor, sheen_color        the sheen's colour RGB (sRGB)
 //                          sheenroughness, sheen_roughness       the sheen's roughness R
+//                          specularcolor, specular_color         the specular colour RGB (sRGB); a
+//                                                                bare "specular" is left alone: in a
+//                                                                specular-glossiness set it is the F0
+//                                                                of metals too, which this is not
 //   Unreal, T_<name>_X     d (base colour), n (normal, DirectX), r (roughness), m, mt (metallic),
 //                          o (occlusion), cc (R coat, G coat roughness: Facet's Unreal export);
 //                          the words above work after T_ too (T_Crate_BC, _AO, _ORM)

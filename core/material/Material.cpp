@@ -18,7 +18,8 @@ constexpr std::pair<MapSlot, const char*> kSlots[] = {{MapSlot::BaseColor, "base
     {MapSlot::Normal, "normal"}, {MapSlot::Metallic, "metallic"}, {MapSlot::Roughness, "roughness"},
     {MapSlot::Occlusion, "occlusion"}, {MapSlot::Emissive, "emissive"}, {MapSlot::Clearcoat, "clearcoat"},
     {MapSlot::ClearcoatRoughness, "clearcoatRoughness"}, {MapSlot::ClearcoatNormal, "clearcoatNormal"},
-    {MapSlot::SheenColor, "sheenColor"}, {MapSlot::SheenRoughness, "sheenRoughness"}};
+    {MapSlot::SheenColor, "sheenColor"}, {MapSlot::SheenRoughness, "sheenRoughness"},
+    {MapSlot::Specular, "specular"}, {MapSlot::SpecularColor, "specularColor"}};
 constexpr std::pair<AlphaMode, const char*> kAlphaModes[]
     = {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}};
 constexpr std::pair<MapChannel, const char*> kChannels[] = {{MapChannel::Rgb, "rgb"}, {MapChannel::R, "r"},
@@ -45,7 +46,7 @@ bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
 {
     // The factors' ranges are the property registry's (Material::validate checks them first).
     const std::string key = toString(slot);
-    if (slot == MapSlot::Emissive || slot == MapSlot::SheenColor) {
+    if (isColorSlot(slot) && slot != MapSlot::BaseColor) { // emissive, the sheen's and specular colour
         // Carried, never used: still a number a file can hold.
         if (!checkRange(map.factor.a, 0.0, 1.0, key + ".factor.a", problem))
             return false;
@@ -65,7 +66,7 @@ bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
     if (map.invert && !isScalarSlot(slot))
         return fail(key
                 + ".invert: only scalar maps (metallic, roughness, occlusion, the coat's strength and "
-                  "roughness, the sheen's roughness) can be inverted",
+                  "roughness, the sheen's roughness, specular) can be inverted",
             problem);
     if (map.flipGreen && !isNormalSlot(slot))
         return fail(key + ".flipGreen: only normal maps have a green-channel convention", problem);
@@ -197,6 +198,13 @@ std::array<MaterialMap, kMapSlotCount> Material::defaultMaps()
     sheenColor.colorSpace = ColorEncoding::SRGB;
     maps[std::size_t(MapSlot::SheenRoughness)].factor = glm::dvec4(0.0);
     maps[std::size_t(MapSlot::SheenRoughness)].channel = MapChannel::A;
+    // KHR_materials_specular: the default layer (strength 1, white); the strength is its
+    // texture's alpha, the colour the sRGB RGB of its own (the extension's channels).
+    maps[std::size_t(MapSlot::Specular)].factor = glm::dvec4(1.0);
+    maps[std::size_t(MapSlot::Specular)].channel = MapChannel::A;
+    MaterialMap& specularColor = maps[std::size_t(MapSlot::SpecularColor)];
+    specularColor.factor = glm::dvec4(1.0);
+    specularColor.colorSpace = ColorEncoding::SRGB;
     return maps;
 }
 

@@ -18,6 +18,9 @@
 //   sheenColor          linear RGB in [0, 1] (KHR_materials_sheen sheenColorFactor; texture RGB,
 //                       sRGB), alpha unused; black: no sheen
 //   sheenRoughness      perceptual roughness in x (sheenRoughnessFactor; texture A)
+//   specular            scalar in x, [0, 1] (KHR_materials_specular specularFactor; texture A)
+//   specularColor       linear RGB in [0, kMaxSpecularColor] (specularColorFactor; texture RGB,
+//                       sRGB), alpha unused; a tint of the dielectric F0 (values above 1 allowed)
 // For the scalar slots (and the normal maps' strength) the factor is kept as (v, v, v, v) (setFactor(slot, v)
 // does that) so that a vec4 uniform reads the same from any component and operator== compares what matters.
 // docs/project-format.md lists every field with its unit and default.
@@ -53,29 +56,36 @@ enum class MapSlot {
     // only while the sheen is on (its colour is not black).
     SheenColor,
     SheenRoughness,
+    // KHR_materials_specular's two textures (specularTexture, specularColorTexture); they count
+    // only while the specular layer differs from the glTF default (Material::hasSpecular).
+    Specular,
+    SpecularColor,
 };
-inline constexpr int kMapSlotCount = 11;
-inline constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots = {MapSlot::BaseColor, MapSlot::Normal,
-    MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion, MapSlot::Emissive, MapSlot::Clearcoat,
-    MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal, MapSlot::SheenColor, MapSlot::SheenRoughness};
+inline constexpr int kMapSlotCount = 13;
+inline constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots
+    = {MapSlot::BaseColor, MapSlot::Normal, MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion,
+        MapSlot::Emissive, MapSlot::Clearcoat, MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal,
+        MapSlot::SheenColor, MapSlot::SheenRoughness, MapSlot::Specular, MapSlot::SpecularColor};
 
 // "baseColor", "normal", "metallic", "roughness", "occlusion", "emissive", "clearcoat",
-// "clearcoatRoughness", "clearcoatNormal", "sheenColor", "sheenRoughness" (the project file's keys).
+// "clearcoatRoughness", "clearcoatNormal", "sheenColor", "sheenRoughness", "specular",
+// "specularColor" (the project file's keys).
 const char* toString(MapSlot slot);
 std::optional<MapSlot> mapSlotFromString(std::string_view name);
-// Metallic, roughness, occlusion, the coat's strength and roughness and the sheen's roughness hold
-// one number; the colours and the normal maps hold a vector.
+// Metallic, roughness, occlusion, the coat's strength and roughness, the sheen's roughness and the
+// specular strength hold one number; the colours and the normal maps hold a vector.
 inline bool isScalarSlot(MapSlot slot)
 {
     return slot == MapSlot::Metallic || slot == MapSlot::Roughness || slot == MapSlot::Occlusion
         || slot == MapSlot::Clearcoat || slot == MapSlot::ClearcoatRoughness
-        || slot == MapSlot::SheenRoughness;
+        || slot == MapSlot::SheenRoughness || slot == MapSlot::Specular;
 }
-// Base colour, emissive and the sheen's colour hold colours: sRGB-encoded textures by default, an
-// RGB factor.
+// Base colour, emissive, the sheen's colour and the specular colour hold colours: sRGB-encoded
+// textures by default, an RGB factor.
 inline bool isColorSlot(MapSlot slot)
 {
-    return slot == MapSlot::BaseColor || slot == MapSlot::Emissive || slot == MapSlot::SheenColor;
+    return slot == MapSlot::BaseColor || slot == MapSlot::Emissive || slot == MapSlot::SheenColor
+        || slot == MapSlot::SpecularColor;
 }
 // Tangent-space normal maps (the base's and the coat's): read "rgb", a strength as the factor
 // (glTF normalTexture.scale), a green-channel convention (MaterialMap::flipGreen).
@@ -84,16 +94,16 @@ inline bool isNormalSlot(MapSlot slot)
     return slot == MapSlot::Normal || slot == MapSlot::ClearcoatNormal;
 }
 
-// Slots whose texture is read as a whole colour or vector, channel "rgb": the normal maps, emissive
-// and the sheen's colour (base colour may also read one channel of a greyscale texture).
+// Slots whose texture is read as a whole colour or vector, channel "rgb": the normal maps, emissive,
+// the sheen's and the specular colour (base colour may also read one channel of a greyscale texture).
 inline bool readsRgbOnly(MapSlot slot)
 {
-    return isNormalSlot(slot) || slot == MapSlot::Emissive || slot == MapSlot::SheenColor;
+    return isNormalSlot(slot) || (isColorSlot(slot) && slot != MapSlot::BaseColor);
 }
 
 // The part of the material a slot belongs to: the glTF 2.0 core model, or a layered lobe whose
 // slots count only while the lobe is on (Material::usesSlot).
-enum class MaterialLobe { Core, Clearcoat, Sheen };
+enum class MaterialLobe { Core, Clearcoat, Sheen, Specular };
 inline MaterialLobe lobeOf(MapSlot slot)
 {
     switch (slot) {
@@ -104,6 +114,9 @@ inline MaterialLobe lobeOf(MapSlot slot)
     case MapSlot::SheenColor:
     case MapSlot::SheenRoughness:
         return MaterialLobe::Sheen;
+    case MapSlot::Specular:
+    case MapSlot::SpecularColor:
+        return MaterialLobe::Specular;
     default:
         return MaterialLobe::Core;
     }
@@ -209,6 +222,10 @@ struct Material {
     // Normal strength scales tangent-space X and Y; beyond 10 the map is noise, below 0 it would
     // flip both axes, which flipGreen and the texture itself express better.
     static constexpr double kMaxNormalStrength = 10.0;
+    // KHR_materials_specular's colour may exceed 1 (it scales F0 = ((n - 1) / (n + 1))^2, and the
+    // product is clamped to 1): at IOR 1.5 a colour of 25 already reaches F0 = 1, and 100 covers an
+    // IOR down to 1.22. The extension sets no bound; beyond this a file is refused with its field named.
+    static constexpr double kMaxSpecularColor = 100.0;
 
     std::string name = "Material";
     // Index of refraction of the dielectric layer (KHR_materials_ior); metals ignore it and take
@@ -230,8 +247,9 @@ struct Material {
     bool unlit = false;
     // Indexed by MapSlot. Defaults: base colour 0.8 grey (sRGB texture), metallic 0, roughness
     // 0.5, occlusion 1, normal strength 1, emissive black, no coat (strength 0, roughness 0,
-    // coat normal strength 1), no sheen (black, roughness 0). (glTF's defaults, metallic 1 and roughness 1,
-    // describe a rough white metal: fine as texture multipliers, poor as a starting material.)
+    // coat normal strength 1), no sheen (black, roughness 0), specular 1 and white (the default layer).
+    // (glTF's defaults, metallic 1 and roughness 1, describe a rough white metal: fine as texture
+    // multipliers, poor as a starting material.)
     std::array<MaterialMap, kMapSlotCount> maps = defaultMaps();
 
     MaterialMap& map(MapSlot slot) { return maps[std::size_t(slot)]; }
@@ -270,7 +288,25 @@ struct Material {
         map(MapSlot::SheenColor).factor = glm::dvec4(linearRgb, 1.0);
         setFactor(MapSlot::SheenRoughness, roughness);
     }
-    // Whether `lobe` is on: the core always, a layered lobe while its strength or colour is not 0.
+    // KHR_materials_specular: the strength of the dielectric's specular reflection (0: none, a
+    // purely diffuse dielectric) and a tint of its F0; metals ignore both (docs/shading.md,
+    // "Specular"). The glTF defaults, 1 and white, change nothing and cost no shader code.
+    double specular() const { return map(MapSlot::Specular).factor.x; }
+    glm::dvec3 specularColor() const { return glm::dvec3(map(MapSlot::SpecularColor).factor); }
+    // Whether the layer differs from the default: a factor other than 1 or a texture on either slot
+    // (a texture with factor 1 still modulates).
+    bool hasSpecular() const
+    {
+        return specular() != 1.0 || specularColor() != glm::dvec3(1.0) || map(MapSlot::Specular).hasTexture()
+            || map(MapSlot::SpecularColor).hasTexture();
+    }
+    void setSpecular(double strength, const glm::dvec3& linearRgb)
+    {
+        setFactor(MapSlot::Specular, strength);
+        map(MapSlot::SpecularColor).factor = glm::dvec4(linearRgb, 1.0);
+    }
+    // Whether `lobe` is on: the core always, a layered lobe while its strength or colour is not 0
+    // (the specular layer: while it differs from the default).
     bool hasLobe(MaterialLobe lobe) const
     {
         switch (lobe) {
@@ -278,6 +314,8 @@ struct Material {
             return hasClearcoat();
         case MaterialLobe::Sheen:
             return hasSheen();
+        case MaterialLobe::Specular:
+            return hasSpecular();
         case MaterialLobe::Core:
             break;
         }

@@ -47,6 +47,11 @@ constexpr std::array<MaterialPropertyInfo, kMaterialPropertyCount> kProperties =
         MapSlot::SheenColor, "sheen-color"},
     {P::SheenRoughness, "sheenRoughness", "sheenRoughness.factor", "Sheen roughness (perceptual)", V::Scalar,
         0.0, 1.0, MapSlot::SheenRoughness, "sheen-roughness"},
+    {P::Specular, "specular", "specular.factor", "Specular strength (dielectric)", V::Scalar, 0.0, 1.0,
+        MapSlot::Specular, "specular"},
+    // A colour above 1 raises F0 beyond the IOR's (clamped to 1): the slider ends at 1, typed values go on.
+    {P::SpecularColor, "specularColor", "specularColor.factor", "Specular colour (linear F0 tint)", V::Color,
+        0.0, Material::kMaxSpecularColor, MapSlot::SpecularColor, "specular-color", 1.0},
 }};
 
 constexpr bool inEnumOrder()
@@ -92,6 +97,7 @@ double scalarOf(const Material& material, MaterialProperty property)
     case P::BaseColor:
     case P::Emissive:
     case P::SheenColor:
+    case P::SpecularColor:
         break;
     default:
         return material.map(*infoOf(property).slot).factor.x;
@@ -118,6 +124,7 @@ void setScalar(Material& material, MaterialProperty property, double value)
     case P::BaseColor:
     case P::Emissive:
     case P::SheenColor:
+    case P::SpecularColor:
         break;
     default:
         material.setFactor(*infoOf(property).slot, value);

@@ -5,7 +5,7 @@
 // (core/project/WedgeAxis: an axis of a material property takes its name, field, range and
 // setter from here), the command line's material flags (`facet render` and `facet sheet`:
 // --base-color, --metallic, --roughness, --clearcoat, --clearcoat-roughness, --sheen-color,
-// --sheen-roughness; app/MaterialFlags)
+// --sheen-roughness, --specular, --specular-color; app/MaterialFlags)
 // and the Material dock's sliders (ui/docks/MaterialDock addPropertySlider). A property's default is the
 // default Material's value, read through the row (no second copy). docs/architecture.md, "The material
 // property registry", says how a new property joins.
@@ -37,8 +37,10 @@ enum class MaterialProperty {
     ClearcoatNormal, // the coat's normal map strength
     SheenColor, // KHR_materials_sheen: the sheen's colour (linear)
     SheenRoughness, // the sheen's perceptual roughness
+    Specular, // KHR_materials_specular: the dielectric's specular strength
+    SpecularColor, // its F0 tint (linear; above 1 allowed)
 };
-inline constexpr int kMaterialPropertyCount = 15;
+inline constexpr int kMaterialPropertyCount = 17;
 
 // What a property holds: one number, or a linear RGB colour whose components each lie in the range.
 enum class PropertyValue { Scalar, Color };

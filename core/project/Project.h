@@ -154,7 +154,9 @@ struct Project {
     // "roughness"} and drop its texture); version 4's {"factor", "roughness"} still reads.
     // Version 6: KHR_materials_sheen, maps "sheenColor" and "sheenRoughness" (a version 5 Facet
     // would drop them with a warning and save the material without its sheen).
-    static constexpr int kFormatVersion = 6;
+    // Version 7: KHR_materials_specular, maps "specular" and "specularColor" (a version 6 Facet
+    // would drop them with a warning and save the material with the default layer).
+    static constexpr int kFormatVersion = 7;
     // More is refused when loading: far beyond any asset an artist previews, and each material
     // costs a shader variant and its textures.
     static constexpr int kMaxMaterials = 4096;

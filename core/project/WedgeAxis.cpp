@@ -25,9 +25,9 @@ WedgeParameterInfo materialAxis(WedgeParameter parameter, MaterialProperty prope
     return {parameter, info.name, info.field, info.minimum, info.maximum, property};
 }
 
-const std::array<WedgeParameterInfo, 13>& parameterTable()
+const std::array<WedgeParameterInfo, 14>& parameterTable()
 {
-    static const std::array<WedgeParameterInfo, 13> table = {{
+    static const std::array<WedgeParameterInfo, 14> table = {{
         materialAxis(WedgeParameter::Metallic, MaterialProperty::Metallic),
         materialAxis(WedgeParameter::Roughness, MaterialProperty::Roughness),
         materialAxis(WedgeParameter::Occlusion, MaterialProperty::Occlusion),
@@ -39,6 +39,7 @@ const std::array<WedgeParameterInfo, 13>& parameterTable()
         materialAxis(WedgeParameter::Clearcoat, MaterialProperty::Clearcoat),
         materialAxis(WedgeParameter::ClearcoatRoughness, MaterialProperty::ClearcoatRoughness),
         materialAxis(WedgeParameter::SheenRoughness, MaterialProperty::SheenRoughness),
+        materialAxis(WedgeParameter::Specular, MaterialProperty::Specular),
         {WedgeParameter::Environment, "env", "environment.source", 0.0, 0.0, std::nullopt},
         {WedgeParameter::Exposure, "exposure", "view.exposureEV", ViewSettings::kMinExposureEV,
             ViewSettings::kMaxExposureEV, std::nullopt},
@@ -313,6 +314,10 @@ std::string WedgeAxis::noEffectReason(const Project& project) const
     case WedgeParameter::Ior:
         if (m.metallic() == 1.0 && !m.map(MapSlot::Metallic).hasTexture())
             return "ior sets the dielectric's reflectance, and the material is a metal (metallic 1)";
+        break;
+    case WedgeParameter::Specular:
+        if (m.metallic() == 1.0 && !m.map(MapSlot::Metallic).hasTexture())
+            return "specular scales the dielectric's reflection, and the material is a metal (metallic 1)";
         break;
     case WedgeParameter::ClearcoatRoughness:
         if (!m.hasClearcoat())

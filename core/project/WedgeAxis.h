@@ -42,6 +42,7 @@ enum class WedgeParameter {
     Clearcoat,
     ClearcoatRoughness,
     SheenRoughness,
+    Specular,
     Environment,
     Exposure,
 };

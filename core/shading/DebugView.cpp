@@ -44,6 +44,8 @@ constexpr std::array<DebugViewName, kDebugViewCount> kDebugViewNames = {{
     {"clearcoat-normal", "Clearcoat normal", nullptr},
     {"sheen-color", "Sheen colour", nullptr},
     {"sheen-roughness", "Sheen roughness", nullptr},
+    {"specular", "Specular strength", nullptr},
+    {"specular-color", "Specular colour", nullptr},
 }};
 
 } // namespace

@@ -53,8 +53,9 @@ LobeSelection lobeSelection(const MaterialInfo& m, double NoV, GroundTruthSettin
     if (lobes == GroundTruthSettings::Lobes::LambertOnly)
         return {};
     const double metallic = std::clamp(m.metallic, 0.0, 1.0);
-    const glm::dvec3 f0 = glm::mix(glm::dvec3(shading::f0FromIor(m.ior)), m.baseColor, metallic);
-    const double specular = luminance(shading::F_Schlick(f0, 1.0, NoV));
+    const DielectricReflectance layer = dielectricReflectance(m);
+    const glm::dvec3 f0 = glm::mix(layer.f0, m.baseColor, metallic);
+    const double specular = luminance(shading::F_Schlick(f0, glm::mix(layer.f90, 1.0, metallic), NoV));
     // The cosine strategy also serves the sheen, a broad lobe (KHR_materials_sheen), which a
     // metal would otherwise leave to the environment strategy alone.
     const double sheen = m.hasSheen() ? luminance(glm::max(m.sheenColor, glm::dvec3(0.0))) : 0.0;

@@ -78,26 +78,27 @@ glm::dvec3 MaterialBrdf::multiScatterFactor(
     return glm::dvec3(1.0) + f0 * ((1.0 - e) / e);
 }
 
-double MaterialBrdf::dielectricSpecularAlbedo(double f0, double NoV, double perceptualRoughness) const
+double MaterialBrdf::dielectricSpecularAlbedo(
+    double f0, double NoV, double perceptualRoughness, double f90) const
 {
     const DfgValue t = m_table->sample(NoV, clampRoughness(perceptualRoughness));
-    return (f0 * t.scale + t.bias) * multiScatterFactor(glm::dvec3(f0), NoV, perceptualRoughness).x;
+    return (f0 * t.scale + f90 * t.bias) * multiScatterFactor(glm::dvec3(f0), NoV, perceptualRoughness).x;
 }
 
-double MaterialBrdf::dielectricSpecularAverageAlbedo(double f0, double perceptualRoughness) const
+double MaterialBrdf::dielectricSpecularAverageAlbedo(double f0, double perceptualRoughness, double f90) const
 {
-    // E_s = (f0 A + B)(1 + f0 (1 - E) / E) = f0 A + B + f0^2 A (1 - E)/E + f0 B (1 - E)/E, so its
-    // average is a quadratic in f0 whose coefficients are per-row moments, interpolated between
-    // rows as sample() interpolates the table.
+    // E_s = (f0 A + f90 B)(1 + f0 (1 - E) / E) = f0 A + f90 B + f0^2 A (1 - E)/E + f0 f90 B (1 - E)/E,
+    // so its average is a quadratic in f0 whose coefficients are per-row moments, interpolated
+    // between rows as sample() interpolates the table.
     const int size = m_table->size();
     const double fy = clampRoughness(perceptualRoughness) * double(size - 1);
     const auto y0 = std::size_t(fy);
     const std::size_t y1 = std::min<std::size_t>(y0 + 1, std::size_t(size - 1));
     const double t = fy - double(y0);
     auto at = [&](const RowMoments& m) {
-        double avg = f0 * m.scale + m.bias;
+        double avg = f0 * m.scale + f90 * m.bias;
         if (m_model.multiScatter)
-            avg += f0 * f0 * m.scaleGain + f0 * m.biasGain;
+            avg += f0 * f0 * m.scaleGain + f0 * f90 * m.biasGain;
         return avg;
     };
     return at(m_moments[y0]) * (1.0 - t) + at(m_moments[y1]) * t;
@@ -123,7 +124,7 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
     const double metallic = std::clamp(material.metallic, 0.0, 1.0);
     const glm::dvec3 baseColor = glm::max(material.baseColor, glm::dvec3(0.0));
     const double microfacet = distribution(NoH, alpha) * visibility(NoV, NoL, alpha, roughness, kind);
-    const double f0Dielectric = f0FromIor(material.ior);
+    const DielectricReflectance layer = dielectricReflectance(material);
 
     // Diffuse of the dielectric base, before coupling with the specular layer.
     const glm::dvec3 lambert = baseColor * Fd_Lambert();
@@ -131,30 +132,31 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
     BrdfLobes lobes;
     if (m_model.composition == BrdfComposition::Gltf) {
         // glTF 2.0 Appendix B: material = mix(dielectric_brdf, metal_brdf, metallic).
-        const double fDielectric = m_model.fresnel == Fresnel::Dielectric ? F_Dielectric(VoH, material.ior)
-                                                                          : F_Schlick(f0Dielectric, 1.0, VoH);
+        const glm::dvec3 fDielectric = dielectricFresnel(material, layer, VoH);
         const glm::dvec3 fMetal = F_Schlick(baseColor, 1.0, VoH);
-        const glm::dvec3 msDielectric = multiScatterFactor(glm::dvec3(f0Dielectric), NoV, roughness);
+        const glm::dvec3 msDielectric = multiScatterFactor(layer.f0, NoV, roughness);
         const glm::dvec3 msMetal = multiScatterFactor(baseColor, NoV, roughness);
 
         const glm::dvec3 dielectricSpecular = microfacet * fDielectric * msDielectric;
         glm::dvec3 dielectricDiffuse;
         if (m_model.coupling == DielectricCoupling::FresnelMix) {
-            // fresnel_mix(ior, base, layer) = mix(base, layer, F): the base keeps (1 - F(v.h)).
-            dielectricDiffuse = lambert * (1.0 - fDielectric);
+            // fresnel_mix(ior, base, layer): the base keeps 1 - max_value(F(v.h)) (one number for
+            // all channels: KHR_materials_specular's rule; 1 - F without a tint).
+            dielectricDiffuse = lambert * (1.0 - std::max({fDielectric.r, fDielectric.g, fDielectric.b}));
         } else {
-            dielectricDiffuse = lambert * couplingFactor(f0Dielectric, NoV, NoL, roughness);
+            dielectricDiffuse = lambert * couplingFactor(layer, NoV, NoL, roughness);
         }
         lobes.diffuse = (1.0 - metallic) * dielectricDiffuse;
         lobes.specular = (1.0 - metallic) * dielectricSpecular + metallic * microfacet * fMetal * msMetal;
     } else {
-        // LearnOpenGL / UE4: F0 = mix(0.04, albedo, metallic), kS = F, kD = (1 - kS)(1 - metallic).
-        const glm::dvec3 f0 = glm::mix(glm::dvec3(f0Dielectric), baseColor, metallic);
-        const glm::dvec3 F = F_Schlick(f0, 1.0, VoH);
+        // LearnOpenGL / UE4: F0 = mix(0.04, albedo, metallic), kS = F, kD = (1 - kS)(1 - metallic);
+        // the specular layer's F0 and F90 mixed as the dielectric's.
+        const glm::dvec3 f0 = glm::mix(layer.f0, baseColor, metallic);
+        const glm::dvec3 F = F_Schlick(f0, layer.f90 + (1.0 - layer.f90) * metallic, VoH);
         lobes.specular = microfacet * F * multiScatterFactor(f0, NoV, roughness);
         const glm::dvec3 kD = m_model.coupling == DielectricCoupling::FresnelMix
             ? (glm::dvec3(1.0) - F) * (1.0 - metallic)
-            : glm::dvec3(couplingFactor(f0Dielectric, NoV, NoL, roughness) * (1.0 - metallic));
+            : glm::dvec3(couplingFactor(layer, NoV, NoL, roughness) * (1.0 - metallic));
         lobes.diffuse = kD * lambert;
     }
     if (material.hasSheen()) {
@@ -189,22 +191,52 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
     return lobes;
 }
 
+double DielectricReflectance::maxF0() const
+{
+    return std::max({f0.r, f0.g, f0.b});
+}
+
+DielectricReflectance dielectricReflectance(const MaterialInfo& material)
+{
+    const double specular = std::clamp(material.specular, 0.0, 1.0);
+    const glm::dvec3 tinted = glm::min(
+        f0FromIor(material.ior) * glm::max(material.specularColor, glm::dvec3(0.0)), glm::dvec3(1.0));
+    return {tinted * specular, specular};
+}
+
+glm::dvec3 MaterialBrdf::dielectricFresnel(
+    const MaterialInfo& material, const DielectricReflectance& layer, double VoH) const
+{
+    if (m_model.fresnel != Fresnel::Dielectric)
+        return F_Schlick(layer.f0, layer.f90, VoH);
+    // The exact curve, shifted by the tint's change of F0 with Schlick's weight and scaled by the
+    // strength: F_Dielectric itself for the default layer (docs/shading.md, "Specular").
+    const double specular = layer.f90;
+    const double f0 = f0FromIor(material.ior);
+    const glm::dvec3 tinted = specular > 0.0 ? layer.f0 / specular : glm::dvec3(f0);
+    const double weight = 1.0 - std::pow(1.0 - std::clamp(VoH, 0.0, 1.0), 5.0);
+    return glm::clamp(specular * (F_Dielectric(VoH, material.ior) + (tinted - f0) * weight), 0.0, 1.0);
+}
+
 double clearcoatWeight(const MaterialInfo& material, double NoV)
 {
     const double clearcoat = std::clamp(material.clearcoat, 0.0, 1.0);
     return clearcoat * F_Schlick(f0FromIor(kClearcoatIor), 1.0, std::clamp(NoV, 0.0, 1.0));
 }
 
-double MaterialBrdf::couplingFactor(double f0, double NoV, double NoL, double perceptualRoughness) const
+double MaterialBrdf::couplingFactor(
+    const DielectricReflectance& layer, double NoV, double NoL, double perceptualRoughness) const
 {
     // Energy-preserving coupling [Kelemen & Szirmay-Kalos 2001; Kulla & Conty 2017]: the diffuse
     // base sees what the specular layer leaves on the way in and on the way out,
     //     f_d = c / pi * (1 - E_s(mu_o)) (1 - E_s(mu_i)) / (1 - E_s,avg),
     // which is reciprocal and whose albedo is exactly c (1 - E_s(mu_o)): a white material's
-    // albedo is E_s + (1 - E_s) = 1.
-    const double avg = dielectricSpecularAverageAlbedo(f0, perceptualRoughness);
-    const double eo = dielectricSpecularAlbedo(f0, NoV, perceptualRoughness);
-    const double ei = dielectricSpecularAlbedo(f0, NoL, perceptualRoughness);
+    // albedo is E_s + (1 - E_s) = 1. A tinted layer (KHR_materials_specular) couples through its
+    // largest channel, as fresnel_mix's max_value does.
+    const double f0 = layer.maxF0();
+    const double avg = dielectricSpecularAverageAlbedo(f0, perceptualRoughness, layer.f90);
+    const double eo = dielectricSpecularAlbedo(f0, NoV, perceptualRoughness, layer.f90);
+    const double ei = dielectricSpecularAlbedo(f0, NoL, perceptualRoughness, layer.f90);
     return std::max(0.0, (1.0 - eo)) * std::max(0.0, (1.0 - ei)) / std::max(1.0 - avg, 1e-6);
 }
 

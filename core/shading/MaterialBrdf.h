@@ -42,7 +42,23 @@ struct MaterialInfo {
     glm::dvec3 sheenColor {0.0};
     double sheenRoughness = 0.0;
     bool hasSheen() const { return sheenColor.r > 0.0 || sheenColor.g > 0.0 || sheenColor.b > 0.0; }
+    // KHR_materials_specular: the dielectric's specular strength ([0, 1]) and F0 tint (linear,
+    // >= 0, above 1 allowed); 1 and white are the glTF default, which changes nothing.
+    double specular = 1.0;
+    glm::dvec3 specularColor {1.0};
 };
+
+// The dielectric layer's Schlick reflectance (KHR_materials_specular, "Implementation"):
+//     f0  = min(((n - 1) / (n + 1))^2 specularColor, 1) specular,    f90 = specular
+// which is (F0(n), 1) without the extension. Metals ignore it (their F0 is the base colour).
+struct DielectricReflectance {
+    glm::dvec3 f0 {0.04};
+    double f90 = 1.0;
+    // The largest channel of f0: the scalar the diffuse weight and the energy-preserving
+    // coupling take (the extension's max_value(F)).
+    double maxF0() const;
+};
+DielectricReflectance dielectricReflectance(const MaterialInfo& material);
 
 // The coat's IOR, fixed by KHR_materials_clearcoat: F0 = 0.04.
 inline constexpr double kClearcoatIor = 1.5;
@@ -86,18 +102,25 @@ public:
     // microfacet models"; Kulla & Conty 2017]. 1 when the model turns compensation off.
     glm::dvec3 multiScatterFactor(const glm::dvec3& f0, double NoV, double perceptualRoughness) const;
 
-    // Directional albedo of the dielectric specular layer (Schlick, F90 = 1) including
-    // compensation, E_s(mu) = (f0 scale + bias) * (1 + f0 (1 - E) / E): what the layer reflects.
-    double dielectricSpecularAlbedo(double f0, double NoV, double perceptualRoughness) const;
+    // Directional albedo of the dielectric specular layer (Schlick from f0 to f90) including
+    // compensation, E_s(mu) = (f0 scale + f90 bias) * (1 + f0 (1 - E) / E): what the layer reflects.
+    double dielectricSpecularAlbedo(
+        double f0, double NoV, double perceptualRoughness, double f90 = 1.0) const;
     // Its cosine-weighted average 2 * integral E_s(mu) mu dmu (trapezoid rule over the table's n.v texels).
-    double dielectricSpecularAverageAlbedo(double f0, double perceptualRoughness) const;
+    double dielectricSpecularAverageAlbedo(double f0, double perceptualRoughness, double f90 = 1.0) const;
+    // The exact dielectric Fresnel (ShadingModel Fresnel::Dielectric) of the layer at v.h with
+    // KHR_materials_specular applied as the extension applies it to Schlick's: the F0 shift and the
+    // strength, specular (F_Dielectric(v.h, n) + (f0_tinted - F0(n)) (1 - (1 - v.h)^5)).
+    glm::dvec3 dielectricFresnel(
+        const MaterialInfo& material, const DielectricReflectance& layer, double VoH) const;
 
 private:
     double visibility(
         double NoV, double NoL, double alpha, double perceptualRoughness, LightingKind kind) const;
     double distribution(double NoH, double alpha) const;
     // The energy-preserving coupling's scale of the dielectric diffuse lobe.
-    double couplingFactor(double f0, double NoV, double NoL, double perceptualRoughness) const;
+    double couplingFactor(
+        const DielectricReflectance& layer, double NoV, double NoL, double perceptualRoughness) const;
 
     // Per roughness row of the table, the cosine-weighted moments that make the average albedo
     // of the compensated dielectric layer a quadratic in f0 (see dielectricSpecularAverageAlbedo).

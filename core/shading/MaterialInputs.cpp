@@ -265,6 +265,20 @@ MaterialInfo materialInputs(const Material& material, const MaterialMapImages& i
         m.sheenColor = glm::clamp(m.sheenColor, glm::dvec3(0.0), glm::dvec3(1.0));
         m.sheenRoughness = std::clamp(m.sheenRoughness, 0.0, 1.0);
     }
+    // KHR_materials_specular: strength (A) and colour (RGB), each its factor times its texture (GLSL
+    // under MATERIAL_SPECULAR); the default layer reads neither. The colour may exceed 1.
+    if (material.hasSpecular()) {
+        m.specular = material.specular();
+        if (const auto texel = read(MapSlot::Specular))
+            m.specular *= scalarMapValue(material.map(MapSlot::Specular), *texel);
+        m.specularColor = material.specularColor();
+        // Under strength 0 the tint tints nothing, and the shader samples no colour map
+        // (render/ShaderVariant textureMatters): the factor alone, as there.
+        if (const auto texel = material.specular() != 0.0 ? read(MapSlot::SpecularColor) : std::nullopt)
+            m.specularColor *= glm::dvec3(*texel);
+        m.specular = std::clamp(m.specular, 0.0, 1.0);
+        m.specularColor = glm::max(m.specularColor, glm::dvec3(0.0));
+    }
     return m;
 }
 

@@ -22,7 +22,9 @@ glm::dvec3 specularDominantDirection(const glm::dvec3& n, const glm::dvec3& R, d
 
 namespace {
 
-// The glTF composition's lobes: (1 - m) spec(F0_d) + m spec(c), and the diffuse weight.
+// The glTF composition's lobes: (1 - m) spec(F0_d, F90_d) + m spec(c), and the diffuse weight.
+// Without KHR_materials_specular F90_d = 1 and the weight is (1 - F0_d) W; with it the base keeps
+// 1 - max_value(F(v.h)), whose mean over the cosine lobe is (1 - F90) + (F90 - max F0) W.
 BrdfLobes gltfLobes(const MaterialBrdf& brdf, const MaterialInfo& material, double NoV,
     const SplitSumLighting& lighting, const DfgValue& dfg)
 {
@@ -30,37 +32,38 @@ BrdfLobes gltfLobes(const MaterialBrdf& brdf, const MaterialInfo& material, doub
     const double roughness = clampRoughness(material.perceptualRoughness);
     const double metallic = std::clamp(material.metallic, 0.0, 1.0);
     const glm::dvec3 baseColor = glm::max(material.baseColor, glm::dvec3(0.0));
-    const auto albedoSingleScatter = [&dfg](const glm::dvec3& f0) { return f0 * dfg.scale + dfg.bias; };
-    const double f0Dielectric = f0FromIor(material.ior);
+    const DielectricReflectance layer = dielectricReflectance(material);
     BrdfLobes lobes;
-    const double specularDielectric = albedoSingleScatter(glm::dvec3(f0Dielectric)).x
-        * brdf.multiScatterFactor(glm::dvec3(f0Dielectric), NoV, roughness).x;
+    const glm::dvec3 specularDielectric
+        = (layer.f0 * dfg.scale + layer.f90 * dfg.bias) * brdf.multiScatterFactor(layer.f0, NoV, roughness);
     const glm::dvec3 specularMetal
-        = albedoSingleScatter(baseColor) * brdf.multiScatterFactor(baseColor, NoV, roughness);
-    lobes.specular
-        = lighting.prefilteredRadiance * glm::mix(glm::dvec3(specularDielectric), specularMetal, metallic);
+        = (baseColor * dfg.scale + dfg.bias) * brdf.multiScatterFactor(baseColor, NoV, roughness);
+    lobes.specular = lighting.prefilteredRadiance * glm::mix(specularDielectric, specularMetal, metallic);
+    const double f0 = layer.maxF0();
     const double diffuseWeight = model.coupling == DielectricCoupling::EnergyPreserving
-        ? std::max(0.0, 1.0 - brdf.dielectricSpecularAlbedo(f0Dielectric, NoV, roughness))
-        : (1.0 - f0Dielectric) * dfg.diffuseFresnelWeight;
+        ? std::max(0.0, 1.0 - brdf.dielectricSpecularAlbedo(f0, NoV, roughness, layer.f90))
+        : (1.0 - layer.f90) + (layer.f90 - f0) * dfg.diffuseFresnelWeight;
     lobes.diffuse = lighting.irradiance * kInvPi * baseColor * (diffuseWeight * (1.0 - metallic));
     return lobes;
 }
 
-// LearnOpenGL's: F0 = mix(F0_d, c, m), spec(F0), kD from F0 or E_s.
+// LearnOpenGL's: F0 = mix(F0_d, c, m), F90 = mix(F90_d, 1, m), spec(F0, F90), kD from F or E_s.
 BrdfLobes learnOpenGlLobes(const MaterialBrdf& brdf, const MaterialInfo& material, double NoV,
     const SplitSumLighting& lighting, const DfgValue& dfg)
 {
     const double roughness = clampRoughness(material.perceptualRoughness);
     const double metallic = std::clamp(material.metallic, 0.0, 1.0);
     const glm::dvec3 baseColor = glm::max(material.baseColor, glm::dvec3(0.0));
-    const double f0Dielectric = f0FromIor(material.ior);
-    const glm::dvec3 f0 = glm::mix(glm::dvec3(f0Dielectric), baseColor, metallic);
+    const DielectricReflectance layer = dielectricReflectance(material);
+    const glm::dvec3 f0 = glm::mix(layer.f0, baseColor, metallic);
+    const double f90 = layer.f90 + (1.0 - layer.f90) * metallic;
     BrdfLobes lobes;
-    lobes.specular = lighting.prefilteredRadiance * (f0 * dfg.scale + dfg.bias)
+    lobes.specular = lighting.prefilteredRadiance * (f0 * dfg.scale + f90 * dfg.bias)
         * brdf.multiScatterFactor(f0, NoV, roughness);
     const glm::dvec3 kD = brdf.model().coupling == DielectricCoupling::EnergyPreserving
-        ? glm::dvec3((1.0 - brdf.dielectricSpecularAlbedo(f0Dielectric, NoV, roughness)) * (1.0 - metallic))
-        : (glm::dvec3(1.0) - f0) * (dfg.diffuseFresnelWeight * (1.0 - metallic));
+        ? glm::dvec3((1.0 - brdf.dielectricSpecularAlbedo(layer.maxF0(), NoV, roughness, layer.f90))
+            * (1.0 - metallic))
+        : ((1.0 - f90) + (f90 - f0) * dfg.diffuseFresnelWeight) * (1.0 - metallic);
     lobes.diffuse = lighting.irradiance * kInvPi * baseColor * kD;
     return lobes;
 }

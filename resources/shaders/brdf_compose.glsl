@@ -68,34 +68,72 @@ vec3 multiScatterFactor(vec3 f0, float NoV, float perceptualRoughness)
 #endif
 }
 
-// E_s(mu) = (f0 scale + bias) M(f0): what the dielectric specular layer reflects.
-float dielectricSpecularAlbedo(float f0, float NoV, float perceptualRoughness)
+// E_s(mu) = (f0 scale + f90 bias) M(f0): what the dielectric specular layer reflects.
+float dielectricSpecularAlbedo(float f0, float f90, float NoV, float perceptualRoughness)
 {
     vec4 t = dfgLookup(NoV, perceptualRoughness);
-    return (f0 * t.r + t.g) * multiScatterFactor(vec3(f0), NoV, perceptualRoughness).x;
+    return (f0 * t.r + f90 * t.g) * multiScatterFactor(vec3(f0), NoV, perceptualRoughness).x;
 }
 
-// Kelemen & Szirmay-Kalos 2001: (1 - E_s(n.v)) (1 - E_s(n.l)) / (1 - E_s,avg).
-float couplingFactor(float f0, float NoV, float NoL, float perceptualRoughness)
+// The dielectric layer's Schlick reflectance at normal and grazing incidence; with
+// KHR_materials_specular (MATERIAL_SPECULAR) f0 = min(F0(n) specularColor, 1) specular and
+// f90 = specular, else (F0(n), 1). Twin of core's DielectricReflectance.
+struct DielectricReflectance {
+    vec3 f0;
+    float f90;
+};
+
+DielectricReflectance dielectricReflectance(MaterialInfo m)
 {
-    float eo = dielectricSpecularAlbedo(f0, NoV, perceptualRoughness);
-    float ei = dielectricSpecularAlbedo(f0, NoL, perceptualRoughness);
+    DielectricReflectance layer;
+#ifdef MATERIAL_SPECULAR
+    float specular = saturate(m.specular);
+    layer.f0 = min(f0FromIor(m.ior) * max(m.specularColor, vec3(0.0)), vec3(1.0)) * specular;
+    layer.f90 = specular;
+#else
+    layer.f0 = vec3(f0FromIor(m.ior));
+    layer.f90 = 1.0;
+#endif
+    return layer;
+}
+
+// The layer's Fresnel at v.h: Schlick from f0 to f90, or (FRESNEL_DIELECTRIC) the exact curve
+// shifted by the tint's change of F0 and scaled by the strength. Twin of core's
+// MaterialBrdf::dielectricFresnel.
+vec3 dielectricFresnel(MaterialInfo m, DielectricReflectance layer, float VoH)
+{
+#ifdef FRESNEL_DIELECTRIC
+#ifdef MATERIAL_SPECULAR
+    float f0 = f0FromIor(m.ior);
+    vec3 tinted = layer.f90 > 0.0 ? layer.f0 / layer.f90 : vec3(f0);
+    float weight = 1.0 - pow5(1.0 - saturate(VoH));
+    return saturate(layer.f90 * (vec3(F_Dielectric(VoH, m.ior)) + (tinted - f0) * weight));
+#else
+    return vec3(F_Dielectric(VoH, m.ior));
+#endif
+#else
+    return F_Schlick(layer.f0, layer.f90, VoH);
+#endif
+}
+
+// Kelemen & Szirmay-Kalos 2001: (1 - E_s(n.v)) (1 - E_s(n.l)) / (1 - E_s,avg), a tinted layer
+// through its largest channel.
+float couplingFactor(DielectricReflectance layer, float NoV, float NoL, float perceptualRoughness)
+{
+    float f0 = max3(layer.f0);
+    float eo = dielectricSpecularAlbedo(f0, layer.f90, NoV, perceptualRoughness);
+    float ei = dielectricSpecularAlbedo(f0, layer.f90, NoL, perceptualRoughness);
     return max(0.0, 1.0 - eo) * max(0.0, 1.0 - ei) / max(1.0 - uDielectricAverageAlbedo, 1e-6);
 }
 
 // The Fresnel of the composition at v.h (the F debug view).
 vec3 compositionFresnel(MaterialInfo m, float VoH)
 {
-    float f0Dielectric = f0FromIor(m.ior);
+    DielectricReflectance layer = dielectricReflectance(m);
 #ifdef COMPOSITION_LEARNOPENGL
-    return F_Schlick(mix(vec3(f0Dielectric), m.baseColor, m.metallic), 1.0, VoH);
+    return F_Schlick(mix(layer.f0, m.baseColor, m.metallic), mix(layer.f90, 1.0, m.metallic), VoH);
 #else
-#ifdef FRESNEL_DIELECTRIC
-    float fDielectric = F_Dielectric(VoH, m.ior);
-#else
-    float fDielectric = F_Schlick(f0Dielectric, 1.0, VoH);
-#endif
-    return mix(vec3(fDielectric), F_Schlick(m.baseColor, 1.0, VoH), m.metallic);
+    return mix(dielectricFresnel(m, layer, VoH), F_Schlick(m.baseColor, 1.0, VoH), m.metallic);
 #endif
 }
 
@@ -122,33 +160,30 @@ BrdfLobes evaluateBrdf(MaterialInfo m, vec3 n, vec3 v, vec3 l, bool punctual)
     float metallic = saturate(m.metallic);
     vec3 baseColor = max(m.baseColor, vec3(0.0));
     float microfacet = distribution(NoH, alpha) * visibility(NoV, NoL, alpha, roughness, punctual);
-    float f0Dielectric = f0FromIor(m.ior);
+    DielectricReflectance layer = dielectricReflectance(m);
     vec3 lambert = baseColor * Fd_Lambert();
 
 #ifdef COMPOSITION_LEARNOPENGL
-    vec3 f0 = mix(vec3(f0Dielectric), baseColor, metallic);
-    vec3 F = F_Schlick(f0, 1.0, VoH);
+    vec3 f0 = mix(layer.f0, baseColor, metallic);
+    vec3 F = F_Schlick(f0, mix(layer.f90, 1.0, metallic), VoH);
     lobes.specular = microfacet * F * multiScatterFactor(f0, NoV, roughness);
 #ifdef COUPLING_ENERGY_PRESERVING
-    vec3 kD = vec3(couplingFactor(f0Dielectric, NoV, NoL, roughness) * (1.0 - metallic));
+    vec3 kD = vec3(couplingFactor(layer, NoV, NoL, roughness) * (1.0 - metallic));
 #else
     vec3 kD = (vec3(1.0) - F) * (1.0 - metallic);
 #endif
     lobes.diffuse = kD * lambert;
 #else
-#ifdef FRESNEL_DIELECTRIC
-    float fDielectric = F_Dielectric(VoH, m.ior);
-#else
-    float fDielectric = F_Schlick(f0Dielectric, 1.0, VoH);
-#endif
+    vec3 fDielectric = dielectricFresnel(m, layer, VoH);
     vec3 fMetal = F_Schlick(baseColor, 1.0, VoH);
-    vec3 msDielectric = multiScatterFactor(vec3(f0Dielectric), NoV, roughness);
+    vec3 msDielectric = multiScatterFactor(layer.f0, NoV, roughness);
     vec3 msMetal = multiScatterFactor(baseColor, NoV, roughness);
     vec3 dielectricSpecular = microfacet * fDielectric * msDielectric;
 #ifdef COUPLING_ENERGY_PRESERVING
-    vec3 dielectricDiffuse = lambert * couplingFactor(f0Dielectric, NoV, NoL, roughness);
+    vec3 dielectricDiffuse = lambert * couplingFactor(layer, NoV, NoL, roughness);
 #else
-    vec3 dielectricDiffuse = lambert * (1.0 - fDielectric);
+    // The base keeps 1 - max_value(F(v.h)) (KHR_materials_specular; 1 - F without a tint).
+    vec3 dielectricDiffuse = lambert * (1.0 - max3(fDielectric));
 #endif
     lobes.diffuse = (1.0 - metallic) * dielectricDiffuse;
     lobes.specular = (1.0 - metallic) * dielectricSpecular + metallic * microfacet * fMetal * msMetal;

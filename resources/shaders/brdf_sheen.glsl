@@ -50,8 +50,6 @@ float sheenAlbedo(float NoV, float sheenRoughness)
     return texture(uSheenLut, dfgTexCoord(NoV, sheenRoughness, uSheenLutSize)).r;
 }
 
-float max3(vec3 c) { return max(c.r, max(c.g, c.b)); }
-
 // The scaling of the base's image-based lobes (the split sum's and fis's): the specular lobe's
 // light arrives near the mirror direction, where n.l ~ n.v, so it keeps 1 - max3(c) E(n.v); the
 // diffuse lobe's arrives from the whole hemisphere, and keeps its cosine-weighted mean of the

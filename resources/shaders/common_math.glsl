@@ -11,3 +11,6 @@ float pow5(float x)
     float x2 = x * x;
     return x2 * x2 * x;
 }
+
+// The largest channel (the glTF extensions' max_value).
+float max3(vec3 c) { return max(c.r, max(c.g, c.b)); }

@@ -61,24 +61,26 @@ vec3 irradiance(vec3 n)
 }
 
 // The diffuse lobe's albedo c w_d under uniform light of radiance 1, per composition (what the
-// irradiance E(n) / pi is multiplied by):
-// glTF:  w_d = (1 - m) (1 - F0_d) W(n.v) for fresnel_mix (the albedo of its base
-//        c / pi (1 - F(v.h)): the ground truth's model), (1 - m) (1 - E_s(n.v)) for the
-//        energy-preserving coupling.
-// LearnOpenGL: w_d = (1 - F0) W(n.v) (1 - m) with F0 = mix(F0_d, c, m) (kD = (1 - F(v.h)) (1 - m)
-//        per direction), or (1 - E_s(n.v)) (1 - m) (energy preserving).
-// W(n.v) is the DFG table's alpha (core/shading/DfgTable.h).
+// irradiance E(n) / pi is multiplied by), with the dielectric layer's (F0_d, F90_d)
+// (dielectricReflectance: (F0(n), 1) without KHR_materials_specular):
+// glTF:  w_d = (1 - m) ((1 - F90_d) + (F90_d - max F0_d) W(n.v)) for fresnel_mix (the albedo of
+//        its base c / pi (1 - max_value(F(v.h))): the ground truth's model; (1 - F0_d) W without
+//        the extension), (1 - m) (1 - E_s(n.v)) for the energy-preserving coupling.
+// LearnOpenGL: w_d = ((1 - F90) + (F90 - F0) W(n.v)) (1 - m) with F0 = mix(F0_d, c, m), F90 =
+//        mix(F90_d, 1, m) (kD = (1 - F(v.h)) (1 - m) per direction), or (1 - E_s(n.v)) (1 - m).
+// W(n.v) is the DFG table's alpha (core/shading/DfgTable.h). Twin: core/shading/SplitSum.cpp.
 vec3 environmentDiffuseAlbedo(MaterialInfo m, float NoV, float roughness)
 {
     float metallic = saturate(m.metallic);
     vec3 baseColor = max(m.baseColor, vec3(0.0));
-    float f0Dielectric = f0FromIor(m.ior);
+    DielectricReflectance layer = dielectricReflectance(m);
 #ifdef COUPLING_ENERGY_PRESERVING
-    vec3 weight = vec3(max(0.0, 1.0 - dielectricSpecularAlbedo(f0Dielectric, NoV, roughness)));
+    vec3 weight = vec3(max(0.0, 1.0 - dielectricSpecularAlbedo(max3(layer.f0), layer.f90, NoV, roughness)));
 #elif defined(COMPOSITION_LEARNOPENGL)
-    vec3 weight = (vec3(1.0) - mix(vec3(f0Dielectric), baseColor, metallic)) * dfgLookup(NoV, roughness).a;
+    float f90 = mix(layer.f90, 1.0, metallic);
+    vec3 weight = (1.0 - f90) + (f90 - mix(layer.f0, baseColor, metallic)) * dfgLookup(NoV, roughness).a;
 #else
-    vec3 weight = vec3((1.0 - f0Dielectric) * dfgLookup(NoV, roughness).a);
+    vec3 weight = vec3((1.0 - layer.f90) + (layer.f90 - max3(layer.f0)) * dfgLookup(NoV, roughness).a);
 #endif
     return baseColor * weight * (1.0 - metallic);
 }
@@ -141,7 +143,7 @@ vec3 withSharpLobe(vec3 splitSum, MaterialInfo m, vec3 n, vec3 v, int lobe, floa
 }
 
 // The split-sum lobes for the view direction v (unit, towards the viewer) at normal n:
-//   specular = prefiltered(R, lod(r)) * (F0 scale + bias) * M(F0)             (per lobe F0)
+//   specular = prefiltered(R, lod(r)) * (F0 scale + F90 bias) * M(F0)         (per lobe F0, F90)
 //   diffuse  = E(n) / pi * environmentDiffuseAlbedo
 //   coat     = prefiltered(R_c, lod(r_c)) * (scale_c + bias_c) * w_c, the others times 1 - w_c
 // glTF:  specular = (1 - m) spec(F0_d) + m spec(c);  LearnOpenGL: F0 = mix(F0_d, c, m), spec(F0).
@@ -154,12 +156,12 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     vec3 baseColor = max(m.baseColor, vec3(0.0));
     vec3 radiance = splitSumLobeRadiance(n, v, roughness);
     vec4 dfg = dfgLookup(NoV, roughness);
-    float f0Dielectric = f0FromIor(m.ior);
+    DielectricReflectance layer = dielectricReflectance(m);
 #ifdef COMPOSITION_LEARNOPENGL
-    vec3 f0 = mix(vec3(f0Dielectric), baseColor, metallic);
-    lobes.specular = radiance * (f0 * dfg.r + dfg.g) * multiScatterFactor(f0, NoV, roughness);
+    vec3 f0 = mix(layer.f0, baseColor, metallic);
+    lobes.specular = radiance * (f0 * dfg.r + mix(layer.f90, 1.0, metallic) * dfg.g) * multiScatterFactor(f0, NoV, roughness);
 #else
-    vec3 specularDielectric = vec3((f0Dielectric * dfg.r + dfg.g) * multiScatterFactor(vec3(f0Dielectric), NoV, roughness).x);
+    vec3 specularDielectric = (layer.f0 * dfg.r + layer.f90 * dfg.g) * multiScatterFactor(layer.f0, NoV, roughness);
     vec3 specularMetal = (baseColor * dfg.r + dfg.g) * multiScatterFactor(baseColor, NoV, roughness);
     lobes.specular = radiance * mix(specularDielectric, specularMetal, metallic);
 #endif

@@ -22,9 +22,10 @@ vec2 lobeSelection(MaterialInfo m, float NoV)
 {
     float metallic = saturate(m.metallic);
     vec3 baseColor = max(m.baseColor, vec3(0.0));
-    vec3 f0 = mix(vec3(f0FromIor(m.ior)), baseColor, metallic);
+    DielectricReflectance layer = dielectricReflectance(m);
+    vec3 f0 = mix(layer.f0, baseColor, metallic);
     const vec3 lum = vec3(0.2126, 0.7152, 0.0722);
-    float specular = dot(F_Schlick(f0, 1.0, NoV), lum);
+    float specular = dot(F_Schlick(f0, mix(layer.f90, 1.0, metallic), NoV), lum);
     float diffuse = dot(baseColor, lum) * (1.0 - metallic) * (1.0 - specular);
 #ifdef MATERIAL_SHEEN
     // The cosine strategy also serves the sheen, a broad lobe.

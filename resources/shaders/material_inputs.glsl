@@ -29,6 +29,11 @@ struct MaterialInfo {
     // perceptual roughness (core's MaterialInfo::sheenColor, sheenRoughness).
     vec3 sheenColor;
     float sheenRoughness;
+    // KHR_materials_specular (MATERIAL_SPECULAR; 1 and white without it): the dielectric's
+    // specular strength and F0 tint (linear, may exceed 1; core's MaterialInfo::specular,
+    // specularColor).
+    float specular;
+    vec3 specularColor;
 };
 
 uniform vec4 uBaseColorFactor;
@@ -45,6 +50,10 @@ uniform float uClearcoatRoughness;
 #ifdef MATERIAL_SHEEN
 uniform vec3 uSheenColorFactor;
 uniform float uSheenRoughness;
+#endif
+#ifdef MATERIAL_SPECULAR
+uniform float uSpecularFactor;
+uniform vec3 uSpecularColorFactor;
 #endif
 uniform mat3 uUvTransform[MAP_SLOT_COUNT];
 uniform int uChannel[MAP_SLOT_COUNT];
@@ -90,6 +99,14 @@ uniform sampler2D uSheenColorMap;
 #endif
 #if defined(HAS_SHEEN_ROUGHNESS_MAP) && !defined(SHEEN_ROUGHNESS_TEXEL_FROM_SHEEN_COLOR)
 uniform sampler2D uSheenRoughnessMap;
+#endif
+#endif
+#ifdef MATERIAL_SPECULAR
+#ifdef HAS_SPECULAR_COLOR_MAP
+uniform sampler2D uSpecularColorMap;
+#endif
+#if defined(HAS_SPECULAR_MAP) && !defined(SPECULAR_TEXEL_FROM_SPECULAR_COLOR)
+uniform sampler2D uSpecularMap;
 #endif
 #endif
 
@@ -231,6 +248,30 @@ MaterialInfo materialInputs(vec2 uv)
 #else
     m.sheenColor = vec3(0.0);
     m.sheenRoughness = 0.0;
+#endif
+#ifdef MATERIAL_SPECULAR
+    // Colour in RGB (sRGB-decoded by the upload) and strength in A of the extension's textures
+    // (specularColorTexture, specularTexture; often one file): the colour read first, so the
+    // strength can reuse its texel. The colour may exceed 1 (its factor may).
+    m.specularColor = uSpecularColorFactor;
+#ifdef HAS_SPECULAR_COLOR_MAP
+    vec4 specularColorTexel = texture(uSpecularColorMap, mapUv(SLOT_SPECULAR_COLOR, uv));
+    m.specularColor *= specularColorTexel.rgb;
+#endif
+    m.specular = uSpecularFactor;
+#ifdef HAS_SPECULAR_MAP
+#ifdef SPECULAR_TEXEL_FROM_SPECULAR_COLOR
+    vec4 specularTexel = specularColorTexel;
+#else
+    vec4 specularTexel = texture(uSpecularMap, mapUv(SLOT_SPECULAR, uv));
+#endif
+    m.specular *= scalarMapValue(SLOT_SPECULAR, specularTexel);
+#endif
+    m.specular = clamp(m.specular, 0.0, 1.0);
+    m.specularColor = max(m.specularColor, vec3(0.0));
+#else
+    m.specular = 1.0;
+    m.specularColor = vec3(1.0);
 #endif
     return m;
 }

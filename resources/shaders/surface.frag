@@ -136,6 +136,10 @@ void main()
     color = m.sheenColor;
 #elif DEBUG_VIEW == DEBUG_SHEEN_ROUGHNESS
     color = vec3(m.sheenRoughness);
+#elif DEBUG_VIEW == DEBUG_SPECULAR
+    color = vec3(m.specular);
+#elif DEBUG_VIEW == DEBUG_SPECULAR_COLOR
+    color = m.specularColor;
 #elif DEBUG_VIEW == DEBUG_DISTRIBUTION
     color = vec3(distribution(saturate(dot(n, debugH)), debugR * debugR));
 #elif DEBUG_VIEW == DEBUG_VISIBILITY

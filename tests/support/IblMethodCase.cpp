@@ -39,6 +39,7 @@ Project iblMethodCaseProject(const IblMethodCase& c, IblMethod method, int sampl
     m.setFactor(MapSlot::Clearcoat, c.clearcoat);
     m.setFactor(MapSlot::ClearcoatRoughness, c.clearcoatRoughness);
     m.setSheen(c.sheenColor, c.sheenRoughness);
+    m.setSpecular(c.specular, c.specularColor);
     return project;
 }
 

@@ -35,6 +35,9 @@ struct IblMethodCase {
     // KHR_materials_sheen: the sheen's colour (black: none) and perceptual roughness.
     glm::dvec3 sheenColor {0.0};
     double sheenRoughness = 0.0;
+    // KHR_materials_specular: the dielectric's specular strength and F0 tint (1 and white: none).
+    double specular = 1.0;
+    glm::dvec3 specularColor {1.0};
 };
 
 // The default project with the case's environment, material and light, the sphere, no debug

@@ -62,6 +62,8 @@ int mergeIdFor(MapSlot slot)
     case MapSlot::ClearcoatNormal:
     case MapSlot::SheenColor:
     case MapSlot::SheenRoughness:
+    case MapSlot::Specular:
+    case MapSlot::SpecularColor:
         // The registry's row of the slot's factor: the Material dock's slider (or colour) of it
         // merges alike. (Base colour's row also holds the alpha, a row of its own.)
         for (const MaterialPropertyInfo& info : materialProperties())
@@ -115,6 +117,10 @@ QString MapSlotWidget::title(MapSlot slot)
         return tr("Sheen Colour");
     case MapSlot::SheenRoughness:
         return tr("Sheen Roughness");
+    case MapSlot::Specular:
+        return tr("Specular Strength");
+    case MapSlot::SpecularColor:
+        return tr("Specular Colour");
     }
     return {};
 }

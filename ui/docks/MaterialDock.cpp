@@ -2,6 +2,7 @@
 #include "ui/viewport/ThumbnailLoader.h"
 
 #include "core/material/MaterialPresets.h"
+#include "core/shading/MaterialBrdf.h"
 #include "ui/document/Document.h"
 #include "ui/document/DocumentCommands.h"
 #include "ui/document/MaterialTransfer.h"
@@ -108,6 +109,24 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     m_ior = addPropertySlider(MaterialProperty::Ior, form, tr("IOR"));
     form->addRow(tr("F0"), m_f0);
     layout->addLayout(form);
+    // KHR_materials_specular is the dielectric's own reflectance, not a layer over it: its defaults
+    // (strength 1, white) are the glTF core's, so the section is always open, beside the IOR.
+    auto* specularGroup = new QGroupBox(tr("Specular"), content);
+    specularGroup->setObjectName(QStringLiteral("specularGroup"));
+    specularGroup->setToolTip(tr("KHR_materials_specular: the strength of the dielectric's reflection (0: "
+                                 "purely diffuse) and a tint of its F0 (values above 1 raise it beyond the "
+                                 "IOR's); metals ignore both"));
+    auto* specularForm = new QFormLayout(specularGroup);
+    addPropertySlider(MaterialProperty::Specular, specularForm, tr("Strength"));
+    m_specularColor = new ColorButton(specularGroup);
+    m_specularColor->setObjectName(QStringLiteral("specularColorDockButton"));
+    specularForm->addRow(tr("Colour"), m_specularColor);
+    connect(m_specularColor, &ColorButton::colorEdited, this, [this](const glm::dvec3& linear) {
+        Material material = m_document->project().material();
+        setColor(material, MaterialProperty::SpecularColor, linear);
+        m_document->setMaterial(material, tr("Specular Colour"));
+    });
+    layout->addWidget(specularGroup);
     // The layered lobes (docs/shading.md): a section each, open while the lobe is on, above the
     // alpha and BRDF settings (what an artist reaches for first).
     QFormLayout* clearcoatForm = nullptr;
@@ -460,7 +479,23 @@ void MaterialDock::onDocumentChanged(DocumentChanges changes)
     // must show that one's name, or finishing the edit would rename it.
     if (!m_name->hasFocus() || changes.testFlag(DocumentChange::CurrentMaterial))
         m_name->setText(QString::fromStdString(material.name));
-    m_f0->setText(QString::number(material.dielectricF0(), 'f', 4));
+    // The dielectric's F0 as shaded: the IOR's, tinted and scaled by KHR_materials_specular.
+    MaterialInfo layerInputs;
+    layerInputs.ior = material.ior;
+    layerInputs.specular = material.specular();
+    layerInputs.specularColor = material.specularColor();
+    const glm::dvec3 f0 = dielectricReflectance(layerInputs).f0;
+    m_f0->setText(f0.r == f0.g && f0.g == f0.b
+            ? QString::number(f0.r, 'f', 4)
+            : QStringLiteral("%1, %2, %3").arg(f0.r, 0, 'f', 4).arg(f0.g, 0, 'f', 4).arg(f0.b, 0, 'f', 4));
+    m_specularColor->setLinearColor(material.specularColor());
+    // The button shows a colour in [0, 1]; a tint above 1 (imported, typed with --set) is said in numbers.
+    const glm::dvec3 tint = material.specularColor();
+    m_specularColor->setToolTip(tr("%1: %2, %3, %4")
+                                    .arg(QString::fromUtf8(infoOf(MaterialProperty::SpecularColor).label))
+                                    .arg(tint.r)
+                                    .arg(tint.g)
+                                    .arg(tint.b));
     select(m_composition, int(material.shading.composition));
     select(m_distribution, int(material.shading.distribution));
     select(m_visibility, int(material.shading.visibility));

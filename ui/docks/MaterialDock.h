@@ -132,6 +132,7 @@ private:
     QGroupBox* m_clearcoatGroup = nullptr;
     QGroupBox* m_sheenGroup = nullptr;
     ColorButton* m_sheenColor = nullptr;
+    ColorButton* m_specularColor = nullptr;
     std::vector<std::pair<MaterialProperty, ValueSlider*>> m_propertySliders;
     QListWidget* m_presets;
     QPushButton* m_apply;

@@ -99,6 +99,9 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     lobeBox(MaterialLobe::Sheen, tr("Sheen Maps"), "sheenMapsGroup",
         tr("KHR_materials_sheen's textures: the sheen's colour (RGB, sRGB) and roughness (alpha; often "
            "one RGBA texture). Shown while the material has a sheen (Material panel)."));
+    lobeBox(MaterialLobe::Specular, tr("Specular Maps"), "specularMapsGroup",
+        tr("KHR_materials_specular's textures: the dielectric's F0 tint (RGB, sRGB) and specular strength "
+           "(alpha; often one RGBA texture). Always shown: the dielectric's own reflectance."));
     for (MapSlot slot : kAllMapSlots) {
         QWidget* box = m_lobeSlots[std::size_t(lobeOf(slot))];
         QWidget* owner = box ? box : content;
@@ -216,7 +219,8 @@ void TextureMapsDock::onDocumentChanged(DocumentChanges changes)
         widget->refresh();
     for (std::size_t lobe = 0; lobe < m_lobeSlots.size(); ++lobe)
         if (m_lobeSlots[lobe])
-            m_lobeSlots[lobe]->setVisible(project.material().hasLobe(MaterialLobe(lobe)));
+            m_lobeSlots[lobe]->setVisible(MaterialLobe(lobe) == MaterialLobe::Specular
+                || project.material().hasLobe(MaterialLobe(lobe)));
     const UvTransform& uv = m_document->project().material().map(MapSlot::BaseColor).uv;
     m_uvScale->setValue(uv.scale.x);
     m_uvScaleV->setValue(uv.scale.y);

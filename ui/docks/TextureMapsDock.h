@@ -34,8 +34,9 @@ public:
     ~TextureMapsDock() override;
 
     MapSlotWidget* slotWidget(MapSlot slot) const { return m_slots[std::size_t(slot)]; }
-    // The box holding a lobe's slots (the clear coat's, the sheen's), hidden while the lobe is off
-    // (Material::hasLobe); null for the core slots.
+    // The box holding a lobe's slots (the clear coat's, the sheen's, the specular layer's), hidden
+    // while the lobe is off (Material::hasLobe; the specular layer's always shown: its defaults are
+    // the core's); null for the core slots.
     QWidget* lobeSlots(MaterialLobe lobe) const { return m_lobeSlots[std::size_t(lobe)]; }
     // Assigns the files (folders are listed) by name as one undo step "Assign Maps" and returns
     // the message it also emits: what went where, what was cleared and what was not used. A
@@ -70,7 +71,7 @@ private:
     std::array<MapSlotWidget*, kMapSlotCount> m_slots {};
     // Each layered lobe's slots, under their heading, by MaterialLobe: shown while the lobe is on
     // (null for the core).
-    std::array<QWidget*, 3> m_lobeSlots {};
+    std::array<QWidget*, 4> m_lobeSlots {};
     ThumbnailLoader* m_thumbnails;
     QFileSystemWatcher* m_watcher;
     QTimer* m_reloadTimer;

@@ -220,6 +220,10 @@ void ValuesDock::showValue(const PickedValue& value)
             row(material, tr("Sheen colour (linear)"), components(inputs.sheenColor));
             row(material, tr("Sheen roughness"), number(inputs.sheenRoughness));
         }
+        if (inputs.specular != 1.0 || inputs.specularColor != glm::dvec3(1.0)) {
+            row(material, tr("Specular strength"), number(inputs.specular));
+            row(material, tr("Specular colour (linear)"), components(inputs.specularColor));
+        }
     }
     m_tree->expandAll();
     for (int i = 0; i < m_tree->topLevelItemCount(); ++i)
