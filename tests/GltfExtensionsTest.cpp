@@ -41,6 +41,19 @@ class GltfExtensionsTest : public QObject {
 
     QTemporaryDir m_dir;
     QString path(const QString& name) const { return m_dir.filePath(name); }
+    // Textures 0 and 1 of `w`: files a.png and b.png, 4 x 4 RGBA with alpha 128 (a lobe's packing
+    // reads the colour from RGB and a number from A).
+    bool addTwoRgbaTextures(GltfWriter& w)
+    {
+        for (const char* name : {"a.png", "b.png"}) {
+            QImage image(4, 4, QImage::Format_RGBA8888);
+            image.fill(QColor(200, 100, 50, 128));
+            if (!image.save(path(QLatin1String(name))))
+                return false;
+            w.addTexture(w.addImageUri(QLatin1String(name)));
+        }
+        return true;
+    }
     // `w` (which may hold textures already) with a quad of one material, `name`, whose one
     // extension is `extension` with the JSON `object` (KHR_texture_transform also listed as used
     // when the object holds one), written to `file` and imported.
@@ -330,12 +343,7 @@ private Q_SLOTS:
         QFETCH(QString, colorFile);
         QFETCH(QString, roughnessFile);
         GltfWriter w;
-        for (const char* name : {"a.png", "b.png"}) {
-            QImage image(4, 4, QImage::Format_RGBA8888);
-            image.fill(QColor(200, 100, 50, 128));
-            QVERIFY(image.save(path(QLatin1String(name))));
-            w.addTexture(w.addImageUri(QLatin1String(name)));
-        }
+        QVERIFY(addTwoRgbaTextures(w));
         std::string error, warnings;
         const auto asset = importWithExtension(
             w, "Velvet", "KHR_materials_sheen", sheen, QStringLiteral("velvet.gltf"), &error, &warnings);
@@ -439,12 +447,7 @@ private Q_SLOTS:
         QFETCH(QString, strengthFile);
         QFETCH(QString, colorFile);
         GltfWriter w;
-        for (const char* name : {"a.png", "b.png"}) {
-            QImage image(4, 4, QImage::Format_RGBA8888);
-            image.fill(QColor(200, 100, 50, 128));
-            QVERIFY(image.save(path(QLatin1String(name))));
-            w.addTexture(w.addImageUri(QLatin1String(name)));
-        }
+        QVERIFY(addTwoRgbaTextures(w));
         std::string error, warnings;
         const auto asset = importWithExtension(
             w, "Lens", "KHR_materials_specular", specular, QStringLiteral("lens.gltf"), &error, &warnings);

@@ -507,6 +507,14 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
         const Material& material = materials[m];
         const MaterialPlan& plan = (*plans)[m];
         const auto index = [&](Texture texture) { return textureIndex[m].at(mapName(texture)); };
+        // One baked texture that two textureInfos of an extension name (the coat's strength and
+        // roughness, the sheen's colour and roughness, the specular colour and strength).
+        const auto packedTexture
+            = [&](QJsonObject& extension, Texture texture, const char* first, const char* second) {
+                  const QJsonObject info = textureInfo(index(texture), plan, mesh.hasTexCoord1);
+                  extension.insert(QLatin1String(first), info);
+                  extension.insert(QLatin1String(second), info);
+              };
         if (plan.shared)
             extensionsUsed.insert(QStringLiteral("KHR_texture_transform"));
         QJsonObject pbr;
@@ -569,12 +577,8 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
             const double coatRoughness = plan.coat ? 1.0 : material.clearcoatRoughness();
             if (coatRoughness != 0.0)
                 clearcoat.insert(QStringLiteral("clearcoatRoughnessFactor"), coatRoughness);
-            if (plan.coat) {
-                clearcoat.insert(QStringLiteral("clearcoatTexture"),
-                    textureInfo(index(Texture::Clearcoat), plan, mesh.hasTexCoord1));
-                clearcoat.insert(QStringLiteral("clearcoatRoughnessTexture"),
-                    textureInfo(index(Texture::Clearcoat), plan, mesh.hasTexCoord1));
-            }
+            if (plan.coat)
+                packedTexture(clearcoat, Texture::Clearcoat, "clearcoatTexture", "clearcoatRoughnessTexture");
             if (plan.coatNormal)
                 clearcoat.insert(QStringLiteral("clearcoatNormalTexture"),
                     textureInfo(index(Texture::ClearcoatNormal), plan, mesh.hasTexCoord1,
@@ -590,12 +594,8 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
             const double sheenRoughness = plan.sheen ? 1.0 : material.sheenRoughness();
             if (sheenRoughness != 0.0)
                 sheen.insert(QStringLiteral("sheenRoughnessFactor"), sheenRoughness);
-            if (plan.sheen) {
-                sheen.insert(QStringLiteral("sheenColorTexture"),
-                    textureInfo(index(Texture::Sheen), plan, mesh.hasTexCoord1));
-                sheen.insert(QStringLiteral("sheenRoughnessTexture"),
-                    textureInfo(index(Texture::Sheen), plan, mesh.hasTexCoord1));
-            }
+            if (plan.sheen)
+                packedTexture(sheen, Texture::Sheen, "sheenColorTexture", "sheenRoughnessTexture");
             extensions.insert(QStringLiteral("KHR_materials_sheen"), sheen);
             extensionsUsed.insert(QStringLiteral("KHR_materials_sheen"));
         }
@@ -610,12 +610,8 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
                 specular.insert(QStringLiteral("specularFactor"), strength);
             if (tint != glm::dvec3(1.0))
                 specular.insert(QStringLiteral("specularColorFactor"), QJsonArray {tint.r, tint.g, tint.b});
-            if (plan.specular) {
-                specular.insert(QStringLiteral("specularTexture"),
-                    textureInfo(index(Texture::Specular), plan, mesh.hasTexCoord1));
-                specular.insert(QStringLiteral("specularColorTexture"),
-                    textureInfo(index(Texture::Specular), plan, mesh.hasTexCoord1));
-            }
+            if (plan.specular)
+                packedTexture(specular, Texture::Specular, "specularColorTexture", "specularTexture");
             extensions.insert(QStringLiteral("KHR_materials_specular"), specular);
             extensionsUsed.insert(QStringLiteral("KHR_materials_specular"));
         }

@@ -318,6 +318,21 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
             color[c] = clamped(array.Get(c).GetNumberAsDouble(), 0.0, hi, at, notes);
         return color;
     };
+    // A colour texture (sRGB RGB) and a number in a texture's alpha (linear; often the same file):
+    // the packing of KHR_materials_sheen (colour, roughness) and KHR_materials_specular (colour,
+    // strength).
+    const auto colorAndAlphaTextures = [&](const tinygltf::Value& object, const char* extension,
+                                           const char* colorField, MapSlot colorSlot, const char* alphaField,
+                                           MapSlot alphaSlot) {
+        MaterialMap& color = m.map(colorSlot);
+        color.colorSpace = ColorEncoding::SRGB;
+        color.channel = MapChannel::Rgb;
+        readExtensionTexture(model, object, extension, colorField, false, assetPath, where, color, notes);
+        MaterialMap& scalar = m.map(alphaSlot);
+        scalar.colorSpace = ColorEncoding::Linear;
+        scalar.channel = MapChannel::A;
+        readExtensionTexture(model, object, extension, alphaField, false, assetPath, where, scalar, notes);
+    };
     for (const auto& [name, value] : g.extensions) {
         if (name == "KHR_materials_emissive_strength") {
             m.emissiveStrength = extensionNumber(value, "KHR_materials_emissive_strength", "emissiveStrength",
@@ -354,16 +369,8 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
             const char* const extension = "KHR_materials_sheen";
             m.setSheen(extensionColor(value, extension, "sheenColorFactor", glm::dvec3(0.0), 1.0),
                 extensionNumber(value, extension, "sheenRoughnessFactor", 0.0, 1.0, 0.0));
-            MaterialMap& color = m.map(MapSlot::SheenColor);
-            color.colorSpace = ColorEncoding::SRGB;
-            color.channel = MapChannel::Rgb;
-            readExtensionTexture(
-                model, value, extension, "sheenColorTexture", false, assetPath, where, color, notes);
-            MaterialMap& roughness = m.map(MapSlot::SheenRoughness);
-            roughness.colorSpace = ColorEncoding::Linear;
-            roughness.channel = MapChannel::A;
-            readExtensionTexture(
-                model, value, extension, "sheenRoughnessTexture", false, assetPath, where, roughness, notes);
+            colorAndAlphaTextures(value, extension, "sheenColorTexture", MapSlot::SheenColor,
+                "sheenRoughnessTexture", MapSlot::SheenRoughness);
         } else if (name == "KHR_materials_specular") {
             // Defaults 1 and white (the extension's: the layer of glTF 2.0's core). The strength is
             // its texture's alpha, the colour its own texture's sRGB RGB (often one file); the
@@ -372,16 +379,8 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
             m.setSpecular(extensionNumber(value, extension, "specularFactor", 0.0, 1.0, 1.0),
                 extensionColor(
                     value, extension, "specularColorFactor", glm::dvec3(1.0), Material::kMaxSpecularColor));
-            MaterialMap& strength = m.map(MapSlot::Specular);
-            strength.colorSpace = ColorEncoding::Linear;
-            strength.channel = MapChannel::A;
-            readExtensionTexture(
-                model, value, extension, "specularTexture", false, assetPath, where, strength, notes);
-            MaterialMap& color = m.map(MapSlot::SpecularColor);
-            color.colorSpace = ColorEncoding::SRGB;
-            color.channel = MapChannel::Rgb;
-            readExtensionTexture(
-                model, value, extension, "specularColorTexture", false, assetPath, where, color, notes);
+            colorAndAlphaTextures(value, extension, "specularColorTexture", MapSlot::SpecularColor,
+                "specularTexture", MapSlot::Specular);
         } else if (!kRead.count(name)) {
             notes.add(
                 "the material extension " + name + " is not supported: previewed as metallic-roughness");
