@@ -49,9 +49,10 @@ constexpr std::array<MaterialPropertyInfo, kMaterialPropertyCount> kProperties =
         0.0, 1.0, MapSlot::SheenRoughness, "sheen-roughness"},
     {P::Specular, "specular", "specular.factor", "Specular strength (dielectric)", V::Scalar, 0.0, 1.0,
         MapSlot::Specular, "specular"},
-    // A colour above 1 raises F0 beyond the IOR's (clamped to 1): the slider ends at 1, typed values go on.
+    // A colour above 1 raises F0 beyond the IOR's (the product clamped to 1): the extension allows
+    // it, so the range goes on to Material::kMaxSpecularColor (the dock's colour button shows [0, 1]).
     {P::SpecularColor, "specularColor", "specularColor.factor", "Specular colour (linear F0 tint)", V::Color,
-        0.0, Material::kMaxSpecularColor, MapSlot::SpecularColor, "specular-color", 1.0},
+        0.0, Material::kMaxSpecularColor, MapSlot::SpecularColor, "specular-color"},
 }};
 
 constexpr bool inEnumOrder()
