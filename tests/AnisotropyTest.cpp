@@ -14,6 +14,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "TestSupport.h"
 #include "core/shading/Anisotropy.h"
 #include "core/shading/Brdf.h"
 #include "core/shading/Sampling.h"
@@ -23,11 +24,7 @@ using namespace facet::shading;
 
 namespace {
 
-glm::dvec3 direction(double cosTheta, double phi)
-{
-    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
-}
+using test::direction;
 
 // Pairs of roughnesses: isotropic, stretched along t, the extension's strongest (alpha_t 1).
 const AnisotropicAlpha kAlphas[] = {{0.25, 0.25}, {0.6, 0.1}, {1.0, 0.05}, {0.3, 0.9}, {0.02, 0.5}};

@@ -23,11 +23,7 @@ using namespace facet::shading;
 
 namespace {
 
-glm::dvec3 direction(double cosTheta, double phi)
-{
-    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
-}
+using test::direction;
 
 MaterialInfo layered(double specular, const glm::dvec3& specularColor, double metallic = 0.0)
 {

@@ -52,21 +52,7 @@ double V_GGXAnisotropic(const glm::dvec3& v, const glm::dvec3& l, const Anisotro
 glm::dvec3 importanceSampleVNDFAnisotropic(
     const glm::dvec2& u, const glm::dvec3& v, const AnisotropicAlpha& alpha)
 {
-    // Heitz 2018, listing 1: stretch the view to the hemisphere configuration (one roughness per
-    // axis), sample the projected disk, warp the half of the disk hidden by the view, unstretch.
-    const glm::dvec3 vh = glm::normalize(glm::dvec3(alpha.t * v.x, alpha.b * v.y, v.z));
-    const double lensq = vh.x * vh.x + vh.y * vh.y;
-    const glm::dvec3 t1
-        = lensq > 0.0 ? glm::dvec3(-vh.y, vh.x, 0.0) / std::sqrt(lensq) : glm::dvec3(1.0, 0.0, 0.0);
-    const glm::dvec3 t2 = glm::cross(vh, t1);
-    const double r = std::sqrt(u.x);
-    const double phi = 2.0 * kPi * u.y;
-    const double p1 = r * std::cos(phi);
-    double p2 = r * std::sin(phi);
-    const double s = 0.5 * (1.0 + vh.z);
-    p2 = (1.0 - s) * std::sqrt(std::max(0.0, 1.0 - p1 * p1)) + s * p2;
-    const glm::dvec3 nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
-    return glm::normalize(glm::dvec3(alpha.t * nh.x, alpha.b * nh.y, std::max(0.0, nh.z)));
+    return sampling::importanceSampleVNDF(u, v, alpha.t, alpha.b);
 }
 
 double pdfVNDFReflectionAnisotropic(const glm::dvec3& v, const glm::dvec3& h, const AnisotropicAlpha& alpha)

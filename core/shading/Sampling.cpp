@@ -194,9 +194,14 @@ double G1_SmithGGX(double NoX, double alpha)
 
 glm::dvec3 importanceSampleVNDF(const glm::dvec2& u, const glm::dvec3& v, double alpha)
 {
+    return importanceSampleVNDF(u, v, alpha, alpha);
+}
+
+glm::dvec3 importanceSampleVNDF(const glm::dvec2& u, const glm::dvec3& v, double alphaX, double alphaY)
+{
     // Heitz 2018, listing 1: stretch the view to the hemisphere configuration, sample the
     // projected disk, warp the half of the disk hidden by the view, unstretch.
-    const glm::dvec3 vh = glm::normalize(glm::dvec3(alpha * v.x, alpha * v.y, v.z));
+    const glm::dvec3 vh = glm::normalize(glm::dvec3(alphaX * v.x, alphaY * v.y, v.z));
     const double lensq = vh.x * vh.x + vh.y * vh.y;
     const glm::dvec3 t1
         = lensq > 0.0 ? glm::dvec3(-vh.y, vh.x, 0.0) / std::sqrt(lensq) : glm::dvec3(1.0, 0.0, 0.0);
@@ -208,7 +213,7 @@ glm::dvec3 importanceSampleVNDF(const glm::dvec2& u, const glm::dvec3& v, double
     const double s = 0.5 * (1.0 + vh.z);
     p2 = (1.0 - s) * std::sqrt(std::max(0.0, 1.0 - p1 * p1)) + s * p2;
     const glm::dvec3 nh = p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
-    return glm::normalize(glm::dvec3(alpha * nh.x, alpha * nh.y, std::max(0.0, nh.z)));
+    return glm::normalize(glm::dvec3(alphaX * nh.x, alphaY * nh.y, std::max(0.0, nh.z)));
 }
 
 glm::dvec3 importanceSampleVNDFSphericalCap(const glm::dvec2& u, const glm::dvec3& v, double alpha)

@@ -103,6 +103,9 @@ double pdfGGXReflection(double NoH, double VoH, double alpha);
 // Normals", JCGT 7(4)]. The reflected direction has pdf_l = G1(v) D(h) / (4 n.v): no sample is
 // wasted below the horizon or on back-facing microfacets, which matters at grazing angles.
 glm::dvec3 importanceSampleVNDF(const glm::dvec2& u, const glm::dvec3& v, double alpha);
+// The same with a roughness per tangent axis (alphaX along x, alphaY along y): the anisotropic
+// GGX's visible normals (core/shading/Anisotropy.h); the stretch takes one alpha per axis.
+glm::dvec3 importanceSampleVNDF(const glm::dvec2& u, const glm::dvec3& v, double alphaX, double alphaY);
 // The same distribution by spherical caps [Dupuy and Benyoub 2023, "Sampling Visible GGX Normals
 // with Spherical Caps", HPG, listing 3]: a point of the cap of the unit sphere below the stretched
 // view's horizon, added to the view, is the stretched visible normal. No frame is built around

@@ -1,6 +1,8 @@
 #pragma once
 // Helpers shared by the test executables: where the CC0 sample data and the test artefacts are.
 
+#include <algorithm>
+#include <cmath>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -26,6 +28,14 @@ inline MaterialInfo whiteMaterial(double metallic, double roughness)
     m.perceptualRoughness = roughness;
     m.ior = 1.5;
     return m;
+}
+
+// The unit direction at polar cosine `cosTheta` from +Z and azimuth `phi` from +X (a tangent frame's
+// view or light direction).
+inline glm::dvec3 direction(double cosTheta, double phi)
+{
+    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+    return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta};
 }
 
 // Root of the sample data fetched by packaging/fetch-assets.sh ($FACET_ASSETS_DIR overrides the
