@@ -214,7 +214,7 @@ glm::dvec3 MaterialBrdf::dielectricFresnel(
     const double specular = layer.f90;
     const double f0 = f0FromIor(material.ior);
     const glm::dvec3 tinted = specular > 0.0 ? layer.f0 / specular : glm::dvec3(f0);
-    const double weight = 1.0 - std::pow(1.0 - std::clamp(VoH, 0.0, 1.0), 5.0);
+    const double weight = 1.0 - pow5(1.0 - std::clamp(VoH, 0.0, 1.0));
     return glm::clamp(specular * (F_Dielectric(VoH, material.ior) + (tinted - f0) * weight), 0.0, 1.0);
 }
 
