@@ -50,6 +50,8 @@ constexpr std::array<const char*, kSurfaceFeatureBits> kFeatureDefines = {
     "HAS_SPECULAR_MAP",
     "HAS_SPECULAR_COLOR_MAP",
     "SPECULAR_TEXEL_FROM_SPECULAR_COLOR",
+    "MATERIAL_ANISOTROPY",
+    "HAS_ANISOTROPY_MAP",
 };
 
 } // namespace
@@ -81,6 +83,8 @@ SurfaceFeature mapFeature(MapSlot slot)
         return SurfaceFeature::HasSpecularMap;
     case MapSlot::SpecularColor:
         return SurfaceFeature::HasSpecularColorMap;
+    case MapSlot::Anisotropy:
+        return SurfaceFeature::HasAnisotropyMap;
     case MapSlot::Emissive:
         break;
     }
@@ -122,6 +126,7 @@ bool textureMatters(const Material& material, MapSlot slot)
     case MapSlot::Clearcoat:
     case MapSlot::SheenColor:
     case MapSlot::Specular:
+    case MapSlot::Anisotropy:
         return true; // usesSlot: the factor is above 0 (the specular layer: it is on)
     case MapSlot::SpecularColor:
         return material.specular() != 0.0; // a tint of no reflection is none
@@ -173,6 +178,8 @@ SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMap
             f = f | SurfaceFeature::Sheen;
         if (material.hasSpecular())
             f = f | SurfaceFeature::Specular;
+        if (material.hasAnisotropy())
+            f = f | SurfaceFeature::Anisotropy;
     }
     return f;
 }
@@ -270,7 +277,8 @@ std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key)
     defines.push_back("MAX_LIGHTS " + std::to_string(kMaxPunctualLights));
     // The vertex tangent frame, for whichever normal map the variant samples.
     if (hasFeature(key.features, SurfaceFeature::HasNormalMap)
-        || hasFeature(key.features, SurfaceFeature::HasClearcoatNormalMap))
+        || hasFeature(key.features, SurfaceFeature::HasClearcoatNormalMap)
+        || hasFeature(key.features, SurfaceFeature::Anisotropy))
         defines.emplace_back("HAS_TANGENT_FRAME");
     // The map slots' indices into material_inputs.glsl's per-slot uniform arrays, from MapSlot.
     for (MapSlot slot : kAllMapSlots)

@@ -6,7 +6,8 @@
 //
 // What the flags remove (docs/architecture.md, "Shader permutations"): without a Has*Map bit the input is
 // the constant factor and the shader declares no sampler for it; without HasNormalMap there is no
-// tangent frame and surface.vert reads no tangent attribute (nor without HasClearcoatNormalMap);
+// tangent frame and surface.vert reads no tangent attribute (nor without HasClearcoatNormalMap or
+// Anisotropy);
 // without HasPunctualLights there is no light loop. A lobe's maps come only with the lobe.
 
 #include <array>
@@ -105,8 +106,13 @@ enum class SurfaceFeature : uint64_t {
     // SPECULAR_TEXEL_FROM_SPECULAR_COLOR: the extension's packing (colour RGB, strength A of one
     // texture) read with one fetch.
     SpecularTexelFromSpecularColor = 1ull << 39,
+    // MATERIAL_ANISOTROPY: KHR_materials_anisotropy's stretched specular lobes of the base
+    // (Material::hasAnisotropy: a strength above 0); it brings the tangent frame, as a normal map does.
+    Anisotropy = 1ull << 40,
+    // HAS_ANISOTROPY_MAP: its texture (direction RG, strength B), only with Anisotropy.
+    HasAnisotropyMap = 1ull << 41,
 };
-inline constexpr int kSurfaceFeatureBits = 40;
+inline constexpr int kSurfaceFeatureBits = 42;
 static_assert(kSurfaceFeatureBits <= 64);
 
 using SurfaceFeatures = uint64_t;
@@ -160,7 +166,7 @@ std::string debugViewDefine(DebugView view);
 std::string mapSlotDefine(MapSlot slot);
 // One "#define NAME" per set bit, in bit order, then "DEBUG_<VIEW> <n>" for every debug view (the
 // ids debug_views.glsl compares, made from core/shading/DebugView's table so the two cannot disagree),
-// "DEBUG_VIEW <n>", "MAX_LIGHTS <n>", HAS_TANGENT_FRAME with either normal map, "SLOT_<NAME> <n>"
+// "DEBUG_VIEW <n>", "MAX_LIGHTS <n>", HAS_TANGENT_FRAME with either normal map or anisotropy, "SLOT_<NAME> <n>"
 // for every map slot and "MAP_SLOT_COUNT <n>".
 std::vector<std::string> surfaceDefines(const SurfaceVariantKey& key);
 inline constexpr int kMaxPunctualLights = kMaxLights; // core/project/Light.h

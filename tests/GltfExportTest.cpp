@@ -173,7 +173,8 @@ private Q_SLOTS:
         for (const char* feature : {"constants", "every map", "shared transform", "different transforms",
                  "ior", "clearcoat", "clearcoat, smooth", "unlit, clearcoat", "clearcoat maps",
                  "clearcoat maps, coat off", "sheen", "sheen maps", "sheen maps, sheen off", "unlit, sheen",
-                 "clearcoat and sheen maps", "specular", "specular maps", "mask", "blend", "single-sided",
+                 "clearcoat and sheen maps", "specular", "specular maps", "anisotropy", "anisotropy map", "mask",
+                 "blend", "single-sided",
                  "unlit", "two of one name", "samplers", "second UV set", "second UV set, mesh without it"}) {
             QTest::newRow(qPrintable(QStringLiteral("%1, .gltf").arg(QLatin1String(feature))))
                 << QString::fromLatin1(feature) << false;
@@ -234,6 +235,14 @@ private Q_SLOTS:
                     = dir.filePath(QStringLiteral("specularcolor.png")).toStdString();
                 m.map(MapSlot::Specular).path = dir.filePath(QStringLiteral("specular.png")).toStdString();
                 m.map(MapSlot::Specular).channel = MapChannel::R;
+            }
+            if (feature.startsWith(QStringLiteral("anisotropy")))
+                m.setAnisotropy(0.7, 35.0);
+            if (feature == QStringLiteral("anisotropy map")) {
+                // A direction texture (RG) with its strength in B: baked without the factor and the
+                // rotation, which the extension keeps.
+                writeVariedPng(dir.filePath(QStringLiteral("anisotropy.png")), 11, 3);
+                m.map(MapSlot::Anisotropy).path = dir.filePath(QStringLiteral("anisotropy.png")).toStdString();
             }
             if (feature.startsWith(QStringLiteral("clearcoat maps"))
                 || feature == QStringLiteral("clearcoat and sheen maps")) {
@@ -333,6 +342,8 @@ private Q_SLOTS:
             QCOMPARE(used.contains(QStringLiteral("KHR_materials_sheen")), sheened);
             QCOMPARE(used.contains(QStringLiteral("KHR_materials_specular")),
                 feature.startsWith(QStringLiteral("specular")));
+            QCOMPARE(used.contains(QStringLiteral("KHR_materials_anisotropy")),
+                feature.startsWith(QStringLiteral("anisotropy")));
             // The sheen's one texture: colour and roughness read the same image.
             const QJsonObject sheen = json.value(QStringLiteral("materials"))
                                           .toArray()
@@ -412,6 +423,9 @@ private Q_SLOTS:
             QVERIFY(std::abs(b.specular() - (specularBaked ? 1.0 : a.specular())) < 1e-9);
             QVERIFY(glm::length(b.specularColor() - (specularBaked ? glm::dvec3(3.0) : a.specularColor()))
                 < 1e-9);
+            // The anisotropy's strength and rotation stay parameters, baked texture or not.
+            QVERIFY(std::abs(b.anisotropy() - (a.unlit ? 0.0 : a.anisotropy())) < 1e-9);
+            QVERIFY(std::abs(b.anisotropyRotationDegrees - (a.unlit ? 0.0 : a.anisotropyRotationDegrees)) < 1e-9);
             // The sheen likewise.
             const bool sheened = !a.unlit && a.hasSheen();
             const bool sheenBaked = sheened
@@ -468,7 +482,11 @@ private Q_SLOTS:
                         worstScalar = std::max({worstScalar, std::abs(ia.clearcoat - ib.clearcoat),
                             std::abs(ia.clearcoatRoughness - ib.clearcoatRoughness),
                             std::abs(ia.sheenRoughness - ib.sheenRoughness),
-                            std::abs(ia.specular - ib.specular)});
+                            std::abs(ia.specular - ib.specular), std::abs(ia.anisotropy - ib.anisotropy)});
+                    // The anisotropy direction, a unit vector stored as d x 0.5 + 0.5 in 8 bits.
+                    if (!a.unlit)
+                        worstNormal = std::max(
+                            worstNormal, glm::length(ia.anisotropyTangentDirection - ib.anisotropyTangentDirection));
                     // The specular colour as the file holds it: over the tint's largest component.
                     const double tintScale
                         = std::max({1.0, a.specularColor().r, a.specularColor().g, a.specularColor().b});

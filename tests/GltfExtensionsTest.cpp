@@ -467,6 +467,68 @@ private Q_SLOTS:
         QCOMPARE(color.colorSpace, ColorEncoding::SRGB);
         QVERIFY(m.hasSpecular());
     }
+
+    // KHR_materials_anisotropy: strength (default 0: isotropic) and rotation, radians in the file
+    // and degrees in Facet, wrapped to [-180, 180] (a whole turn is the same direction); the
+    // texture linear RGB (direction RG, strength B); values beyond the ranges clamped and fields of
+    // the wrong type refused, each with a note naming the field.
+    void anisotropy_data()
+    {
+        QTest::addColumn<QByteArray>("anisotropy"); // the extension's object
+        QTest::addColumn<double>("strength");
+        QTest::addColumn<double>("degrees");
+        QTest::addColumn<QString>("file"); // the texture's, or empty
+        QTest::addColumn<QString>("warning"); // part of the notes, or empty for none
+        const auto row = [](const char* name, const char* json, double strength, double degrees,
+                             const char* file, const char* warning) {
+            QTest::newRow(name) << QByteArray(json) << strength << degrees << QString::fromLatin1(file)
+                                << QString::fromLatin1(warning);
+        };
+        row("strength and a quarter turn", R"({"anisotropyStrength": 0.6, "anisotropyRotation": 1.5707963267948966})",
+            0.6, 90.0, "", "");
+        row("empty (the extension's defaults)", "{}", 0.0, 0.0, "", "");
+        row("a turn and a half radian", R"({"anisotropyStrength": 1, "anisotropyRotation": 6.783185307179586})", 1.0,
+            0.5 * 180.0 / 3.141592653589793, "", "");
+        row("minus four radians", R"({"anisotropyStrength": 1, "anisotropyRotation": -4})", 1.0,
+            360.0 - 4.0 * 180.0 / 3.141592653589793, "", "");
+        row("a texture", R"({"anisotropyStrength": 0.8, "anisotropyTexture": {"index": 0}})", 0.8, 0.0, "a.png", "");
+        row("strength a string", R"({"anisotropyStrength": "brushed"})", 0.0, 0.0, "",
+            "KHR_materials_anisotropy.anisotropyStrength is not a number: 0 used");
+        row("strength above 1", R"({"anisotropyStrength": 3})", 1.0, 0.0, "",
+            "KHR_materials_anisotropy.anisotropyStrength 3 is outside Facet's [0, 1]: 1 used");
+        row("rotation a string", R"({"anisotropyStrength": 1, "anisotropyRotation": "left"})", 1.0, 0.0, "",
+            "KHR_materials_anisotropy.anisotropyRotation is not a number: 0 used");
+        row("texture that does not exist", R"({"anisotropyStrength": 1, "anisotropyTexture": {"index": 9}})", 1.0,
+            0.0, "", "KHR_materials_anisotropy.anisotropyTexture names texture 9, which does not exist");
+    }
+    void anisotropy()
+    {
+        QFETCH(QByteArray, anisotropy);
+        QFETCH(double, strength);
+        QFETCH(double, degrees);
+        QFETCH(QString, file);
+        QFETCH(QString, warning);
+        GltfWriter w;
+        QVERIFY(addTwoRgbaTextures(w));
+        std::string error, warnings;
+        const auto asset = importWithExtension(
+            w, "Brushed", "KHR_materials_anisotropy", anisotropy, QStringLiteral("brushed.gltf"), &error, &warnings);
+        QVERIFY2(asset, error.c_str());
+        const Material& m = asset->materials.at(0);
+        std::string problem;
+        QVERIFY2(m.validate(&problem), problem.c_str());
+        QVERIFY2(near(m.anisotropy(), strength), qPrintable(QString::number(m.anisotropy())));
+        QVERIFY2(near(m.anisotropyRotationDegrees, degrees, 1e-9),
+            qPrintable(QString::number(m.anisotropyRotationDegrees, 'g', 17)));
+        const MaterialMap& map = m.map(MapSlot::Anisotropy);
+        QCOMPARE(QString::fromStdString(map.path), file.isEmpty() ? QString() : path(file));
+        QCOMPARE(map.channel, MapChannel::Rgb);
+        QCOMPARE(map.colorSpace, ColorEncoding::Linear);
+        if (warning.isEmpty())
+            QVERIFY2(warnings.empty(), warnings.c_str());
+        else
+            QVERIFY2(QString::fromStdString(warnings).contains(warning), warnings.c_str());
+    }
 };
 
 QTEST_GUILESS_MAIN(GltfExtensionsTest)

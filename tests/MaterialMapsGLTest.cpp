@@ -11,7 +11,7 @@
 // The GPU writes the inputs through debug views (base-color, metallic, roughness, occlusion,
 // shading-normal, and clearcoat, clearcoat-roughness, clearcoat-normal for rows with a coat,
 // sheen-color, sheen-roughness for rows with a sheen, specular, specular-color for rows with a
-// specular layer). The CPU
+// specular layer, anisotropy, anisotropy-direction for anisotropic rows). The CPU
 // evaluates the same inputs from the texture coordinate, the geometric normal and the tangent that the GPU
 // interpolated (the uv, geometric-normal and tangent debug views), so the comparison isolates the material
 // inputs from the tessellation.
@@ -497,6 +497,16 @@ const std::vector<Row>& rows()
                 useMap(m, MapSlot::SpecularColor, file(f, "basecolor.png"), MapChannel::Rgb,
                     ColorEncoding::SRGB);
             }},
+        // KHR_materials_anisotropy: the factor and rotation alone, and its texture (linear RGB:
+        // direction RG, strength B) turned by the rotation; the direction in world space through
+        // the reference sphere's tangent frame.
+        {"anisotropy-rotation",
+            [](Material& m, const QString&) { m.setAnisotropy(0.7, 50.0); }},
+        {"anisotropy-map",
+            [](Material& m, const QString& f) {
+                m.setAnisotropy(0.9, -25.0);
+                useMap(m, MapSlot::Anisotropy, file(f, "direction.png"), MapChannel::Rgb, ColorEncoding::Linear);
+            }},
         {"all-nine",
             [](Material& m, const QString& f) {
                 useAllSix(m, f);
@@ -565,6 +575,11 @@ const std::vector<ViewCheck>& viewChecks()
             MaterialLobe::Specular},
         {"specular-color", [](const MaterialInfo& m, const glm::dvec3&) { return m.specularColor; },
             MaterialLobe::Specular},
+        {"anisotropy", [](const MaterialInfo& m, const glm::dvec3&) { return glm::dvec3(m.anisotropy); },
+            MaterialLobe::Anisotropy},
+        {"anisotropy-direction",
+            [](const MaterialInfo& m, const glm::dvec3&) { return m.anisotropyDirection * 0.5 + 0.5; },
+            MaterialLobe::Anisotropy},
     };
     return checks;
 }
@@ -625,6 +640,14 @@ void MaterialMapsGLTest::initTestCase()
     QVERIFY(writePng(file(folder, "packed.png"), 4, [](int x, int y) {
         return glm::dvec4(0.5 + 0.45 * wave(x), 0.5 + 0.45 * wave(y, 0.7), 0.5 + 0.45 * wave(x - y, 2.0),
                           0.5 + 0.45 * wave(x, 1.9));
+    }));
+    // direction: a unit direction field turning smoothly (RG = d x 0.5 + 0.5) and a strength in B, as
+    // KHR_materials_anisotropy's texture holds them (a direction near zero length would turn on a
+    // filtering difference, which no real direction map has).
+    QVERIFY(writePng(file(folder, "direction.png"), 3, [](int x, int y) {
+        const double angle = 1.5 * wave(x) + wave(y, 0.7);
+        return glm::dvec4(
+            0.5 + 0.5 * std::cos(angle), 0.5 + 0.5 * std::sin(angle), 0.5 + 0.45 * wave(x + y, 1.3), 1.0);
     }));
     QVERIFY(writePng(file(folder, "grey.png"), 1, [](int x, int y) {
         return glm::dvec4(0.5 + 0.45 * wave(x + y, 0.3));
@@ -763,6 +786,10 @@ void MaterialMapsGLTest::matchesCpuTwin()
             };
             const glm::dvec3 n = mapped(MapSlot::Normal);
             info.clearcoatNormal = mapped(MapSlot::ClearcoatNormal);
+            // The reference view shades the analytic sphere, whose tangent the GPU takes analytically too.
+            if (info.anisotropy > 0.0)
+                info.anisotropyDirection = surfaceAnisotropyDirection(
+                    ng, referenceview::sphereTangent(ng), info.anisotropyTangentDirection);
             const glm::dvec3 expected = check.expected(info, n);
             const glm::dvec3 actual = rgb(*gpu, p.x, p.y);
 

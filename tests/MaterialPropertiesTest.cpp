@@ -148,7 +148,10 @@ private Q_SLOTS:
         QTest::newRow("specular") << P::Specular << "specular.factor" << 0.0 << 1.0 << "specular";
         QTest::newRow("specular colour")
             << P::SpecularColor << "specularColor.factor" << 0.0 << 100.0 << "specular-color";
-        QCOMPARE(kMaterialPropertyCount, 17); // a new property adds its golden row here
+        QTest::newRow("anisotropy") << P::Anisotropy << "anisotropy.factor" << 0.0 << 1.0 << "anisotropy";
+        QTest::newRow("anisotropy rotation") << P::AnisotropyRotation << "anisotropyRotationDegrees" << -180.0
+                                             << 180.0 << "anisotropy-rotation";
+        QCOMPARE(kMaterialPropertyCount, 19); // a new property adds its golden row here
     }
 
     void goldenRows()
@@ -205,7 +208,7 @@ private Q_SLOTS:
             QCOMPARE(scalarOf(project.material(), *axis.property), value);
             QVERIFY(project.material() == expected);
         }
-        QCOMPARE(materialAxes, 12);
+        QCOMPARE(materialAxes, 14);
     }
 };
 

@@ -117,6 +117,8 @@ Project everythingChanged(const QString& root)
     m.map(MapSlot::SpecularColor).path = under("textures/tint.png");
     m.map(MapSlot::Specular).path = under("textures/tint.png");
     m.map(MapSlot::Specular).uv.rotationDegrees = 30.0;
+    m.setAnisotropy(0.75, -40.0);
+    m.map(MapSlot::Anisotropy).path = under("textures/brushed.png");
     m.alphaMode = AlphaMode::Mask;
     m.alphaCutoff = 0.25;
     m.doubleSided = false;
@@ -360,7 +362,7 @@ private Q_SLOTS:
         const QJsonObject object = QJsonDocument::fromJson(readAll(qs(path))).object();
         QCOMPARE(object.value(QLatin1String("format")).toString(), QStringLiteral("facet-project"));
         QCOMPARE(object.value(QLatin1String("version")).toInt(), Project::kFormatVersion);
-        QCOMPARE(object.value(QLatin1String("version")).toInt(), 7);
+        QCOMPARE(object.value(QLatin1String("version")).toInt(), 8);
         // Paths inside the compare layout are stored relative to the project, as the others are.
         const QJsonObject compare = object.value(QLatin1String("compare")).toObject();
         QCOMPARE(compare.value(QLatin1String("environments"))
@@ -539,8 +541,8 @@ private Q_SLOTS:
                                     << QStringLiteral("\"version\" is missing");
         QTest::newRow("newer version")
             << QByteArray(
-                   R"({"format": "facet-project", "version": 8, "material": {"roughness": "new syntax"}})")
-            << QStringLiteral("written by a newer Facet (version 8); this Facet reads up to version 7");
+                   R"({"format": "facet-project", "version": 9, "material": {"roughness": "new syntax"}})")
+            << QStringLiteral("written by a newer Facet (version 9); this Facet reads up to version 8");
         // Version 3's compare layout (every refusal: tests/CompareLayoutTest.cpp); the path names it.
         QTest::newRow("compare: B names a material the project lacks")
             << QByteArray(R"({"format": "facet-project", "version": 3, "materials": [{}, {}],

@@ -302,6 +302,22 @@ void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem_data()
         SurfaceFeature::HasSpecularColorMap, false, "uSpecularColorMap");
     row("specular map, unlit", "specular", 0.5, true, specular, 0.0, SurfaceFeature::HasSpecularMap, false,
         "uSpecularMap");
+    // Anisotropy: on while its strength is above 0, with the tangent frame; its map only then.
+    row("anisotropy 0 (default)", "anisotropy", 0.0, false, none, 0.0, SurfaceFeature::Anisotropy, false,
+        "uAnisotropyFactor");
+    row("anisotropy 0.5", "anisotropy", 0.5, false, none, 0.0, SurfaceFeature::Anisotropy, true,
+        "uAnisotropyFactor");
+    row("anisotropy 0.5, its rotation", "anisotropy", 0.5, false, none, 0.0, SurfaceFeature::Anisotropy, true,
+        "uAnisotropyRotation");
+    row("anisotropy 1, unlit", "anisotropy", 1.0, true, none, 0.0, SurfaceFeature::Anisotropy, false,
+        "uAnisotropyFactor");
+    const int anisotropy = int(MapSlot::Anisotropy);
+    row("anisotropy map, strength 0", "anisotropy", 0.0, false, anisotropy, 0.0, SurfaceFeature::HasAnisotropyMap,
+        false, "uAnisotropyMap");
+    row("anisotropy map, strength 0.5", "anisotropy", 0.5, false, anisotropy, 0.0,
+        SurfaceFeature::HasAnisotropyMap, true, "uAnisotropyMap");
+    row("anisotropy map, unlit", "anisotropy", 0.5, true, anisotropy, 0.0, SurfaceFeature::HasAnisotropyMap,
+        false, "uAnisotropyMap");
 }
 
 void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem()
@@ -335,8 +351,9 @@ void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem()
     const ShaderProgram* program = programs.get(SurfaceVariantKey {features, DebugView::None}, &error);
     QVERIFY2(program, error.c_str());
     QCOMPARE(program->uniformLocation(uniform.toLatin1().constData()) >= 0, on);
-    // A coat normal map brings the tangent frame (HAS_TANGENT_FRAME), as the base's does.
-    if (mapSlot == int(MapSlot::ClearcoatNormal)) {
+    // A coat normal map brings the tangent frame (HAS_TANGENT_FRAME), as the base's does, and so
+    // does anisotropy.
+    if (mapSlot == int(MapSlot::ClearcoatNormal) || bit == SurfaceFeatures(SurfaceFeature::Anisotropy)) {
         const std::vector<std::string> defines
             = surfaceDefines(SurfaceVariantKey {features, DebugView::None});
         QCOMPARE(std::find(defines.begin(), defines.end(), "HAS_TANGENT_FRAME") != defines.end(), on);

@@ -475,16 +475,19 @@ private Q_SLOTS:
         // glTF's coat textures: strength and roughness in one (R, G), and a coat normal map only
         // where there is one to write.
         row("gltf-textures, plain", "gltf-textures", false, false,
-            {"emissive", "clearcoat", "clearcoatNormal", "sheen", "specular"});
+            {"emissive", "clearcoat", "clearcoatNormal", "sheen", "specular", "anisotropy"});
         row("gltf-textures, coated", "gltf-textures", false, true,
-            {"emissive", "clearcoatNormal", "sheen", "specular"});
+            {"emissive", "clearcoatNormal", "sheen", "specular", "anisotropy"});
         // The sheen's one texture (colour RGB, roughness A) only for a material with a sheen; the
         // specular layer's (colour RGB, strength A) only for one that is not the default.
         row("gltf-textures, sheen", "gltf-textures", false, false,
-            {"emissive", "clearcoat", "clearcoatNormal", "specular"}, "sheen");
+            {"emissive", "clearcoat", "clearcoatNormal", "specular", "anisotropy"}, "sheen");
         row("unreal, sheen (no sheen channel)", "unreal", false, false, {"E", "CC"}, "sheen");
         row("gltf-textures, specular", "gltf-textures", false, false,
-            {"emissive", "clearcoat", "clearcoatNormal", "sheen"}, "specular");
+            {"emissive", "clearcoat", "clearcoatNormal", "sheen", "anisotropy"}, "specular");
+        // The anisotropy's (direction RG, strength B, linear) only for an anisotropic material.
+        row("gltf-textures, anisotropy", "gltf-textures", false, false,
+            {"emissive", "clearcoat", "clearcoatNormal", "sheen", "specular"}, "anisotropy");
         row("unreal, specular (no specular colour channel)", "unreal", false, false, {"E", "CC"}, "specular");
     }
     void optionalOutputs()
@@ -504,6 +507,8 @@ private Q_SLOTS:
             plain.setSheen(glm::dvec3(0.5, 0.25, 1.0), 0.6);
         if (lobe == QLatin1String("specular"))
             plain.setSpecular(0.6, glm::dvec3(0.5, 0.25, 1.0));
+        if (lobe == QLatin1String("anisotropy"))
+            plain.setAnisotropy(0.6, 60.0);
         const std::optional<ExportTemplate> exportTemplate
             = ExportTemplate::builtin(templateId.toStdString());
         QVERIFY(exportTemplate);
@@ -515,6 +520,20 @@ private Q_SLOTS:
             actual.append(QString::fromStdString(map));
         QCOMPARE(actual, skipped);
         QCOMPARE(plan->files.size() + plan->skipped.size(), exportTemplate->outputs.size());
+        if (lobe == QLatin1String("anisotropy")) {
+            // RG the direction turned 60 degrees (x 0.5 + 0.5), B the strength; all linear.
+            TestMaterial test(false);
+            test.material = plain;
+            QTemporaryDir dir;
+            QVERIFY2(writeSet(*plan, test, dir.path(), &error), error.c_str());
+            const std::optional<ReadBack> file = readBack(dir.filePath(QStringLiteral("Plain_anisotropy.png")));
+            QVERIFY(file && file->channels == 3 && file->values.size() == 3);
+            const double expected[3] = {0.5 * 0.5 + 0.5, std::sqrt(0.75) * 0.5 + 0.5, 0.6};
+            for (int c = 0; c < 3; ++c)
+                QVERIFY2(std::abs(file->values[std::size_t(c)] - expected[c]) < 0.5 / 255.0 + 1e-6,
+                    qPrintable(QStringLiteral("channel %1: %2").arg(c).arg(file->values[std::size_t(c)])));
+            return;
+        }
         if (!lobe.isEmpty() && templateId == QLatin1String("gltf-textures")) {
             // The lobe's texture: RGB the colour sRGB-encoded, A the scalar (linear).
             TestMaterial test(false);

@@ -325,8 +325,8 @@ void TextureSetUiTest::dockAssignsPackedChannels()
 
 void TextureSetUiTest::assigningASetReplacesTheWholeSet()
 {
-    // Set A: twelve separate maps, a clear coat's three, a sheen's two and a specular colour among
-    // them, through Assign Folder… (the specular strength has no file name of its own: a bare
+    // Set A: thirteen separate maps, a clear coat's three, a sheen's two, a specular colour and an
+    // anisotropy direction map among them, through Assign Folder… (the specular strength has no file name of its own: a bare
     // "specular" is a specular-glossiness map, core/material/MapNaming.h).
     const QString a = m_dir.filePath(QStringLiteral("replace/a"));
     makeFiles(a,
@@ -334,7 +334,8 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
             QStringLiteral("a_roughness.png"), QStringLiteral("a_ao.png"), QStringLiteral("a_emissive.png"),
             QStringLiteral("a_clearcoat.png"), QStringLiteral("a_clearcoat_roughness.png"),
             QStringLiteral("a_clearcoat_normal.png"), QStringLiteral("a_sheen.png"),
-            QStringLiteral("a_sheen_roughness.png"), QStringLiteral("a_specular_color.png")});
+            QStringLiteral("a_sheen_roughness.png"), QStringLiteral("a_specular_color.png"),
+            QStringLiteral("a_anisotropy.png")});
     auto* button = m_dock->findChild<QPushButton*>(QStringLiteral("assignFolderButton"));
     QVERIFY(button);
     QVERIFY(clickAndAnswerFileDialog(button, a));
@@ -349,6 +350,8 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
     QCOMPARE(setA.sheenColor(), glm::dvec3(1.0)); // a sheen texture turns a white sheen on
     QCOMPARE(setA.sheenRoughness(), 1.0);
     QVERIFY(m_dock->lobeSlots(MaterialLobe::Sheen)->isVisibleTo(m_dock));
+    QCOMPARE(setA.anisotropy(), 1.0); // a direction map turns anisotropy on, shaped by the map
+    QVERIFY(m_dock->lobeSlots(MaterialLobe::Anisotropy)->isVisibleTo(m_dock));
     const int steps = m_document->undoStack()->index();
     QSignalSpy rendered(m_window->viewport(), &ViewportWidget::frameRendered);
 
@@ -364,8 +367,10 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
         QStringLiteral("b_roughness.png"));
     for (MapSlot slot : {MapSlot::Normal, MapSlot::Metallic, MapSlot::Occlusion, MapSlot::Emissive,
              MapSlot::Clearcoat, MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal, MapSlot::SheenColor,
-             MapSlot::SheenRoughness, MapSlot::SpecularColor})
+             MapSlot::SheenRoughness, MapSlot::SpecularColor, MapSlot::Anisotropy})
         QVERIFY2(!setB.map(slot).hasTexture(), toString(slot));
+    QVERIFY(!setB.hasAnisotropy());
+    QVERIFY(!m_dock->lobeSlots(MaterialLobe::Anisotropy)->isVisibleTo(m_dock));
     QVERIFY(!setB.hasSpecular()); // back to the core's layer
     QCOMPARE(setB.metallic(), 0.0); // a dielectric, not A's metallic factor of 1 alone
     QVERIFY(!setB.hasClearcoat()); // and no coat: A's came with A's coat maps
@@ -378,7 +383,8 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
     QVERIFY2(message.contains(QStringLiteral(
                  "cleared (not in this set): Normal, Metallic (now 0), Ambient "
                  "Occlusion, Emissive, Clearcoat (no coat now), Clearcoat Roughness, "
-                 "Clearcoat Normal, Sheen Colour (no sheen now), Sheen Roughness, Specular Colour")),
+                 "Clearcoat Normal, Sheen Colour (no sheen now), Sheen Roughness, Specular Colour, "
+                 "Anisotropy (isotropic now)")),
         qPrintable(message));
     QCOMPARE(m_window->statusMessage(), message);
     // The slots say so too.

@@ -48,6 +48,10 @@ double valueIn(const Project& project, WedgeParameter parameter)
         return m.sheenRoughness();
     case WedgeParameter::Specular:
         return m.specular();
+    case WedgeParameter::Anisotropy:
+        return m.anisotropy();
+    case WedgeParameter::AnisotropyRotation:
+        return m.anisotropyRotationDegrees;
     case WedgeParameter::Exposure:
         return project.view.exposureEV;
     case WedgeParameter::Environment:
@@ -78,7 +82,8 @@ private Q_SLOTS:
         QCOMPARE(wedgeParameterNameList(),
             std::string("metallic, roughness, occlusion, normal, ior, emissiveStrength, alphaCutoff, alpha, "
                         "clearcoat, "
-                        "clearcoatRoughness, sheenRoughness, specular, env, exposure"));
+                        "clearcoatRoughness, sheenRoughness, specular, anisotropy, anisotropyRotation, env, "
+                        "exposure"));
         for (const WedgeParameterInfo& info : wedgeParameters()) {
             QCOMPARE(wedgeParameterFromString(info.name), std::optional(info.parameter));
             QCOMPARE(toString(info.parameter), info.name);
@@ -104,6 +109,8 @@ private Q_SLOTS:
         QTest::newRow("emissiveStrength") << int(WedgeParameter::EmissiveStrength) << 0.0 << 10000.0;
         QTest::newRow("alphaCutoff") << int(WedgeParameter::AlphaCutoff) << 0.0 << 1.0;
         QTest::newRow("alpha") << int(WedgeParameter::Alpha) << 0.0 << 1.0;
+        QTest::newRow("anisotropy") << int(WedgeParameter::Anisotropy) << 0.0 << 1.0;
+        QTest::newRow("anisotropyRotation") << int(WedgeParameter::AnisotropyRotation) << -180.0 << 180.0;
         QTest::newRow("exposure") << int(WedgeParameter::Exposure) << -20.0 << 20.0;
     }
     void rangesAgreeWithProjectValidation()
@@ -247,7 +254,7 @@ private Q_SLOTS:
             << "rough=0,1"
             << "unknown parameter \"rough\" (known: metallic, roughness, occlusion, normal, ior, "
                "emissiveStrength, alphaCutoff, alpha, clearcoat, clearcoatRoughness, sheenRoughness, "
-               "specular, env, "
+               "specular, anisotropy, anisotropyRotation, env, "
                "exposure)";
         QTest::newRow("names are case-sensitive") << "Roughness=0,1"
                                                   << "unknown parameter \"Roughness\"";
@@ -461,6 +468,15 @@ private Q_SLOTS:
         QTest::newRow("specular, a dielectric") << "specular=0,1"
                                                 << ""
                                                 << "";
+        QTest::newRow("anisotropy, isotropic") << "anisotropy=0,1"
+                                               << ""
+                                               << "";
+        QTest::newRow("anisotropyRotation, isotropic") << "anisotropyRotation=0,90"
+                                                       << ""
+                                                       << "has none (anisotropy 0)";
+        QTest::newRow("anisotropyRotation, brushed") << "anisotropyRotation=0,90"
+                                                     << "brushed"
+                                                     << "";
         QTest::newRow("env") << "env=studio,sky"
                              << ""
                              << "";
@@ -491,6 +507,8 @@ private Q_SLOTS:
             m.setFactor(MapSlot::Clearcoat, 1.0);
         if (setup == QLatin1String("sheen"))
             m.setSheen(glm::dvec3(0.5), 0.0);
+        if (setup == QLatin1String("brushed"))
+            m.setAnisotropy(0.8, 0.0);
         std::string error;
         const std::optional<WedgeAxis> parsed = WedgeAxis::parse(axis.toStdString(), &error);
         QVERIFY2(parsed, error.c_str());

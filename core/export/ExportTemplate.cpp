@@ -17,7 +17,7 @@ using namespace jsonsupport;
 
 namespace {
 
-constexpr std::array<std::pair<ExportSource, const char*>, 27> kSources = {{
+constexpr std::array<std::pair<ExportSource, const char*>, 30> kSources = {{
     {ExportSource::Constant, "constant"},
     {ExportSource::BaseColorR, "baseColor.r"},
     {ExportSource::BaseColorG, "baseColor.g"},
@@ -45,6 +45,9 @@ constexpr std::array<std::pair<ExportSource, const char*>, 27> kSources = {{
     {ExportSource::SpecularColorR, "specularColor.r"},
     {ExportSource::SpecularColorG, "specularColor.g"},
     {ExportSource::SpecularColorB, "specularColor.b"},
+    {ExportSource::Anisotropy, "anisotropy"},
+    {ExportSource::AnisotropyDirectionX, "anisotropyDirection.x"},
+    {ExportSource::AnisotropyDirectionY, "anisotropyDirection.y"},
 }};
 
 constexpr std::array<std::pair<TextureFileFormat, const char*>, 4> kFormats = {{

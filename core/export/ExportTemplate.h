@@ -36,6 +36,9 @@
 //   sheenColor.r/.g/.b, sheenRoughness   the sheen's colour (linear) and perceptual roughness
 //   specular, specularColor.r/.g/.b      KHR_materials_specular's strength and F0 tint (linear;
 //                                        a tint above 1 is clamped by the file)
+//   anisotropy                           KHR_materials_anisotropy's strength
+//   anisotropyDirection.x/.y             its direction in the tangent plane (rotation applied),
+//                                        unit, stored as d * 0.5 + 0.5 (the extension's RG)
 // Tokens of file names: {material} (its name, made safe for a file name), {map}, {size} (the
 // file's width, or WxH when it is not square), {template} (the template's file name stem).
 
@@ -78,6 +81,9 @@ enum class ExportSource {
     SpecularColorR, // its F0 tint (linear)
     SpecularColorG,
     SpecularColorB,
+    Anisotropy, // KHR_materials_anisotropy's strength
+    AnisotropyDirectionX, // its tangent-plane direction, x then y (in order)
+    AnisotropyDirectionY,
 };
 const char* toString(ExportSource source); // "baseColor.r", ...; "constant"
 std::optional<ExportSource> exportSourceFromString(std::string_view name);

@@ -44,6 +44,10 @@ std::optional<MapSlot> slotOf(ExportSource source)
     case ExportSource::SpecularColorG:
     case ExportSource::SpecularColorB:
         return MapSlot::SpecularColor;
+    case ExportSource::Anisotropy:
+    case ExportSource::AnisotropyDirectionX:
+    case ExportSource::AnisotropyDirectionY:
+        return MapSlot::Anisotropy;
     case ExportSource::NormalX:
     case ExportSource::NormalY:
     case ExportSource::NormalZ:
@@ -116,6 +120,8 @@ ExportTexel exportTexel(const Material& material, const MaterialMapImages& image
     texel.sheenRoughness = inputs.sheenRoughness;
     texel.specular = inputs.specular;
     texel.specularColor = inputs.specularColor;
+    texel.anisotropy = inputs.anisotropy;
+    texel.anisotropyDirection = inputs.anisotropyTangentDirection;
     // The emissive strength stays a parameter of the material, not a texel value.
     if (material.emissiveStrength > 0.0) {
         texel.emissive = inputs.emissive / material.emissiveStrength;
@@ -207,6 +213,14 @@ double channelValue(const ExportChannel& channel, const ExportTexel& texel)
     case ExportSource::SpecularColorB:
         value = texel.specularColor[int(channel.source) - int(ExportSource::SpecularColorR)];
         break;
+    case ExportSource::Anisotropy:
+        value = texel.anisotropy;
+        break;
+    case ExportSource::AnisotropyDirectionX:
+    case ExportSource::AnisotropyDirectionY:
+        value = texel.anisotropyDirection[int(channel.source) - int(ExportSource::AnisotropyDirectionX)] * 0.5
+            + 0.5;
+        break;
     }
     return channel.invert ? 1.0 - value : value;
 }
@@ -225,6 +239,7 @@ bool slotHasContent(const Material& material, MapSlot slot)
     case MapSlot::SheenRoughness:
     case MapSlot::Specular: // in use: the layer is not the default
     case MapSlot::SpecularColor:
+    case MapSlot::Anisotropy: // in use: the strength is above 0
         return true;
     case MapSlot::Emissive:
         return material.map(slot).hasTexture() || glm::dvec3(material.map(slot).factor) != glm::dvec3(0.0);

@@ -32,7 +32,7 @@ constexpr int kFloat = 5126;
 constexpr int kUnsignedInt = 5125;
 
 // The gltf-textures template's outputs, by the slots they serve.
-enum class Texture { BaseColor, Normal, Orm, Emissive, Clearcoat, ClearcoatNormal, Sheen, Specular };
+enum class Texture { BaseColor, Normal, Orm, Emissive, Clearcoat, ClearcoatNormal, Sheen, Specular, Anisotropy };
 const char* mapName(Texture texture)
 {
     switch (texture) {
@@ -50,6 +50,8 @@ const char* mapName(Texture texture)
         return "sheen";
     case Texture::Specular:
         return "specular";
+    case Texture::Anisotropy:
+        return "anisotropy";
     case Texture::Emissive:
         break;
     }
@@ -73,6 +75,8 @@ std::vector<MapSlot> slotsOf(const std::string& outputMap)
         return {MapSlot::SheenColor, MapSlot::SheenRoughness};
     if (outputMap == mapName(Texture::Specular))
         return {MapSlot::SpecularColor, MapSlot::Specular};
+    if (outputMap == mapName(Texture::Anisotropy))
+        return {MapSlot::Anisotropy};
     return {MapSlot::BaseColor};
 }
 
@@ -106,6 +110,9 @@ struct MaterialPlan {
     // written factor carries) so that a tint above 1 fits the file.
     bool specular = false;
     double specularColorScale = 1.0;
+    // KHR_materials_anisotropy: the texture as the extension packs it (direction RG, strength B),
+    // baked without the strength factor and the rotation, which stay parameters.
+    bool anisotropy = false;
     std::optional<UvTransform> shared; // written as KHR_texture_transform
     int texCoord = 0; // the UV set every textured slot reads (textureInfo.texCoord)
     std::optional<TextureSetExport> job;
@@ -156,6 +163,8 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
             const glm::dvec3 tint = material.specularColor();
             plan.specularColorScale = std::max({1.0, tint.r, tint.g, tint.b});
         }
+        plan.anisotropy
+            = material.hasAnisotropy() && !material.unlit && material.map(MapSlot::Anisotropy).hasTexture();
 
         // One transform on every textured slot: kept as KHR_texture_transform; else baked. The
         // bake writes every map into one texture set, in one UV set: maps on different sets
@@ -195,6 +204,10 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
         baked.setFactor(MapSlot::ClearcoatNormal, 1.0);
         baked.setFactor(MapSlot::Occlusion, 1.0);
         baked.map(MapSlot::SpecularColor).factor /= plan.specularColorScale;
+        // The anisotropy's strength and rotation are the extension's parameters too: the texture
+        // holds the file's own direction and strength multiplier.
+        if (plan.anisotropy)
+            baked.setAnisotropy(1.0, 0.0);
         // File names: "<asset>_<material>_<map>.png", a material name used twice numbered.
         std::string name = fileNameSafe(material.name);
         for (int n = 2; !usedNames.insert(name).second; ++n)
@@ -213,7 +226,8 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
                 || (output.map == mapName(Texture::Clearcoat) && plan.coat)
                 || (output.map == mapName(Texture::ClearcoatNormal) && plan.coatNormal)
                 || (output.map == mapName(Texture::Sheen) && plan.sheen)
-                || (output.map == mapName(Texture::Specular) && plan.specular);
+                || (output.map == mapName(Texture::Specular) && plan.specular)
+                || (output.map == mapName(Texture::Anisotropy) && plan.anisotropy);
             if (wanted) {
                 ExportOutput kept = output;
                 kept.optional = false;
@@ -614,6 +628,19 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
                 packedTexture(specular, Texture::Specular, "specularColorTexture", "specularTexture");
             extensions.insert(QStringLiteral("KHR_materials_specular"), specular);
             extensionsUsed.insert(QStringLiteral("KHR_materials_specular"));
+        }
+        if (!material.unlit && material.hasAnisotropy()) {
+            // Strength and rotation (radians in the file) as they are; the texture is baked
+            // without them. The default rotation, 0, is left out.
+            QJsonObject anisotropy {{QStringLiteral("anisotropyStrength"), material.anisotropy()}};
+            if (material.anisotropyRotationDegrees != 0.0)
+                anisotropy.insert(QStringLiteral("anisotropyRotation"),
+                    material.anisotropyRotationDegrees * std::numbers::pi / 180.0);
+            if (plan.anisotropy)
+                anisotropy.insert(QStringLiteral("anisotropyTexture"),
+                    textureInfo(index(Texture::Anisotropy), plan, mesh.hasTexCoord1));
+            extensions.insert(QStringLiteral("KHR_materials_anisotropy"), anisotropy);
+            extensionsUsed.insert(QStringLiteral("KHR_materials_anisotropy"));
         }
         if (material.unlit) {
             extensions.insert(QStringLiteral("KHR_materials_unlit"), QJsonObject {});

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <set>
 
 #include <QDir>
@@ -284,7 +285,8 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
 
     // Extensions of the material model.
     static const std::set<std::string> kRead = {"KHR_materials_emissive_strength", "KHR_materials_ior",
-        "KHR_materials_unlit", "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular"};
+        "KHR_materials_unlit", "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular",
+        "KHR_materials_anisotropy"};
     // A number of an extension's object: its value clamped to [lo, hi] (a note when it was not
     // there), or `otherwise` with a note naming the field when it is not a number.
     const auto extensionNumber = [&](const tinygltf::Value& object, const char* extension, const char* field,
@@ -381,6 +383,19 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
                     value, extension, "specularColorFactor", glm::dvec3(1.0), Material::kMaxSpecularColor));
             colorAndAlphaTextures(value, extension, "specularColorTexture", MapSlot::SpecularColor,
                 "specularTexture", MapSlot::Specular);
+        } else if (name == "KHR_materials_anisotropy") {
+            // Defaults 0 (the extension's): an object without anisotropyStrength is isotropic. The
+            // rotation is in radians, any number (whole turns change nothing): Facet keeps it in
+            // degrees, wrapped to [-180, 180]. The texture is linear RGB (direction RG, strength B).
+            const char* const extension = "KHR_materials_anisotropy";
+            const double radians = extensionNumber(value, extension, "anisotropyRotation", -1e6, 1e6, 0.0);
+            m.setAnisotropy(extensionNumber(value, extension, "anisotropyStrength", 0.0, 1.0, 0.0),
+                std::remainder(radians * 180.0 / std::numbers::pi, 360.0));
+            MaterialMap& map = m.map(MapSlot::Anisotropy);
+            map.colorSpace = ColorEncoding::Linear;
+            map.channel = MapChannel::Rgb;
+            readExtensionTexture(
+                model, value, extension, "anisotropyTexture", false, assetPath, where, map, notes);
         } else if (!kRead.count(name)) {
             notes.add(
                 "the material extension " + name + " is not supported: previewed as metallic-roughness");

@@ -36,6 +36,7 @@ enum class Layout {
     SheenColor,
     SheenRoughness,
     SpecularColor,
+    Anisotropy, // KHR_materials_anisotropy's texture: direction RG, strength B
 };
 
 MapRead scalar(MapSlot slot, MapChannel channel, bool invert = false)
@@ -115,6 +116,8 @@ TextureNaming namingOf(Layout layout)
         return single(scalar(S::SheenRoughness, C::R));
     case Layout::SpecularColor:
         return single(MapRead {S::SpecularColor, C::Rgb, false, std::nullopt});
+    case Layout::Anisotropy:
+        return single(MapRead {S::Anisotropy, C::Rgb, false, std::nullopt});
     }
     return {};
 }
@@ -167,6 +170,7 @@ constexpr NameRule kRules[] = {
     {"sheencolor", Where::LastWords, Layout::SheenColor}, // glTF's sheenColorTexture
     {"sheen", Where::LastWords, Layout::SheenColor},
     {"specularcolor", Where::LastWords, Layout::SpecularColor}, // glTF's specularColorTexture
+    {"anisotropy", Where::LastWords, Layout::Anisotropy}, // glTF's anisotropyTexture
 
     {"ambientocclusion", Where::LastWords, Layout::Occlusion}, // ambientCG
     {"metallicsmoothness", Where::LastWords, Layout::UnityMetallicSmoothness},
@@ -338,7 +342,7 @@ Material withAssignedMaps(Material material, const std::vector<MapAssignment>& a
             map.factor = glm::dvec4(1.0); // the default factor, black, would hide the texture
         else if (assignment.slot == MapSlot::Metallic || assignment.slot == MapSlot::Roughness
             || assignment.slot == MapSlot::Clearcoat || assignment.slot == MapSlot::ClearcoatRoughness
-            || assignment.slot == MapSlot::SheenRoughness)
+            || assignment.slot == MapSlot::SheenRoughness || assignment.slot == MapSlot::Anisotropy)
             material.setFactor(assignment.slot, 1.0); // a coat texture turns the coat on, as painted
     }
     // A coat normal or roughness map alone says there is a coat: a full one, shaped by the map;

@@ -19,7 +19,8 @@ constexpr std::pair<MapSlot, const char*> kSlots[] = {{MapSlot::BaseColor, "base
     {MapSlot::Occlusion, "occlusion"}, {MapSlot::Emissive, "emissive"}, {MapSlot::Clearcoat, "clearcoat"},
     {MapSlot::ClearcoatRoughness, "clearcoatRoughness"}, {MapSlot::ClearcoatNormal, "clearcoatNormal"},
     {MapSlot::SheenColor, "sheenColor"}, {MapSlot::SheenRoughness, "sheenRoughness"},
-    {MapSlot::Specular, "specular"}, {MapSlot::SpecularColor, "specularColor"}};
+    {MapSlot::Specular, "specular"}, {MapSlot::SpecularColor, "specularColor"},
+    {MapSlot::Anisotropy, "anisotropy"}};
 constexpr std::pair<AlphaMode, const char*> kAlphaModes[]
     = {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}};
 constexpr std::pair<MapChannel, const char*> kChannels[] = {{MapChannel::Rgb, "rgb"}, {MapChannel::R, "r"},
@@ -205,6 +206,8 @@ std::array<MaterialMap, kMapSlotCount> Material::defaultMaps()
     MaterialMap& specularColor = maps[std::size_t(MapSlot::SpecularColor)];
     specularColor.factor = glm::dvec4(1.0);
     specularColor.colorSpace = ColorEncoding::SRGB;
+    // KHR_materials_anisotropy: none; its texture is linear RGB (direction RG, strength B).
+    maps[std::size_t(MapSlot::Anisotropy)].factor = glm::dvec4(0.0);
     return maps;
 }
 

@@ -21,6 +21,9 @@
 //   specular            scalar in x, [0, 1] (KHR_materials_specular specularFactor; texture A)
 //   specularColor       linear RGB in [0, kMaxSpecularColor] (specularColorFactor; texture RGB,
 //                       sRGB), alpha unused; a tint of the dielectric F0 (values above 1 allowed)
+//   anisotropy          strength in x, [0, 1] (KHR_materials_anisotropy anisotropyStrength);
+//                       texture RGB, linear: RG the direction in the tangent plane (x 2 - 1), B
+//                       the strength's multiplier; the rotation is Material::anisotropyRotationDegrees
 // For the scalar slots (and the normal maps' strength) the factor is kept as (v, v, v, v) (setFactor(slot, v)
 // does that) so that a vec4 uniform reads the same from any component and operator== compares what matters.
 // docs/project-format.md lists every field with its unit and default.
@@ -60,20 +63,25 @@ enum class MapSlot {
     // only while the specular layer differs from the glTF default (Material::hasSpecular).
     Specular,
     SpecularColor,
+    // KHR_materials_anisotropy's texture (anisotropyTexture: direction RG, strength B); it counts
+    // only while the strength is not 0.
+    Anisotropy,
 };
-inline constexpr int kMapSlotCount = 13;
+inline constexpr int kMapSlotCount = 14;
 inline constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots
     = {MapSlot::BaseColor, MapSlot::Normal, MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion,
         MapSlot::Emissive, MapSlot::Clearcoat, MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal,
-        MapSlot::SheenColor, MapSlot::SheenRoughness, MapSlot::Specular, MapSlot::SpecularColor};
+        MapSlot::SheenColor, MapSlot::SheenRoughness, MapSlot::Specular, MapSlot::SpecularColor,
+        MapSlot::Anisotropy};
 
 // "baseColor", "normal", "metallic", "roughness", "occlusion", "emissive", "clearcoat",
 // "clearcoatRoughness", "clearcoatNormal", "sheenColor", "sheenRoughness", "specular",
-// "specularColor" (the project file's keys).
+// "specularColor", "anisotropy" (the project file's keys).
 const char* toString(MapSlot slot);
 std::optional<MapSlot> mapSlotFromString(std::string_view name);
 // Metallic, roughness, occlusion, the coat's strength and roughness, the sheen's roughness and the
-// specular strength hold one number; the colours and the normal maps hold a vector.
+// specular strength hold one number; the colours, the normal maps and the anisotropy map (direction
+// and strength) hold a vector.
 inline bool isScalarSlot(MapSlot slot)
 {
     return slot == MapSlot::Metallic || slot == MapSlot::Roughness || slot == MapSlot::Occlusion
@@ -95,15 +103,16 @@ inline bool isNormalSlot(MapSlot slot)
 }
 
 // Slots whose texture is read as a whole colour or vector, channel "rgb": the normal maps, emissive,
-// the sheen's and the specular colour (base colour may also read one channel of a greyscale texture).
+// the sheen's and the specular colour, the anisotropy map (base colour may also read one channel of
+// a greyscale texture).
 inline bool readsRgbOnly(MapSlot slot)
 {
-    return isNormalSlot(slot) || (isColorSlot(slot) && slot != MapSlot::BaseColor);
+    return isNormalSlot(slot) || (isColorSlot(slot) && slot != MapSlot::BaseColor) || slot == MapSlot::Anisotropy;
 }
 
 // The part of the material a slot belongs to: the glTF 2.0 core model, or a layered lobe whose
 // slots count only while the lobe is on (Material::usesSlot).
-enum class MaterialLobe { Core, Clearcoat, Sheen, Specular };
+enum class MaterialLobe { Core, Clearcoat, Sheen, Specular, Anisotropy };
 inline MaterialLobe lobeOf(MapSlot slot)
 {
     switch (slot) {
@@ -117,6 +126,8 @@ inline MaterialLobe lobeOf(MapSlot slot)
     case MapSlot::Specular:
     case MapSlot::SpecularColor:
         return MaterialLobe::Specular;
+    case MapSlot::Anisotropy:
+        return MaterialLobe::Anisotropy;
     default:
         return MaterialLobe::Core;
     }
@@ -226,6 +237,9 @@ struct Material {
     // product is clamped to 1): at IOR 1.5 a colour of 25 already reaches F0 = 1, and 100 covers an
     // IOR down to 1.22. The extension sets no bound; beyond this a file is refused with its field named.
     static constexpr double kMaxSpecularColor = 100.0;
+    // KHR_materials_anisotropy's rotation, in degrees here (the extension's radians, converted on
+    // import and export): one turn either way covers every direction.
+    static constexpr double kMaxAnisotropyRotationDegrees = 180.0;
 
     std::string name = "Material";
     // Index of refraction of the dielectric layer (KHR_materials_ior); metals ignore it and take
@@ -245,9 +259,13 @@ struct Material {
     // as radiance, with no light, environment or emission (the glTF Sample Viewer's
     // MATERIAL_UNLIT). For baked lighting, stylised assets and photogrammetry.
     bool unlit = false;
+    // KHR_materials_anisotropy: the anisotropy direction's turn from the tangent (counter-clockwise
+    // in the tangent plane, towards the bitangent), in degrees, [-180, 180].
+    double anisotropyRotationDegrees = 0.0;
     // Indexed by MapSlot. Defaults: base colour 0.8 grey (sRGB texture), metallic 0, roughness
     // 0.5, occlusion 1, normal strength 1, emissive black, no coat (strength 0, roughness 0,
-    // coat normal strength 1), no sheen (black, roughness 0), specular 1 and white (the default layer).
+    // coat normal strength 1), no sheen (black, roughness 0), specular 1 and white (the default layer),
+    // no anisotropy (strength 0).
     // (glTF's defaults, metallic 1 and roughness 1, describe a rough white metal: fine as texture
     // multipliers, poor as a starting material.)
     std::array<MaterialMap, kMapSlotCount> maps = defaultMaps();
@@ -305,6 +323,16 @@ struct Material {
         setFactor(MapSlot::Specular, strength);
         map(MapSlot::SpecularColor).factor = glm::dvec4(linearRgb, 1.0);
     }
+    // KHR_materials_anisotropy: the base's specular highlight stretched along a direction in the
+    // tangent plane (brushed metal), the texture's turned by the rotation (docs/shading.md,
+    // "Anisotropy"). Strength 0: isotropic, and no shader cost.
+    double anisotropy() const { return map(MapSlot::Anisotropy).factor.x; }
+    bool hasAnisotropy() const { return anisotropy() > 0.0; }
+    void setAnisotropy(double strength, double rotationDegrees)
+    {
+        setFactor(MapSlot::Anisotropy, strength);
+        anisotropyRotationDegrees = rotationDegrees;
+    }
     // Whether `lobe` is on: the core always, a layered lobe while its strength or colour is not 0
     // (the specular layer: while it differs from the default).
     bool hasLobe(MaterialLobe lobe) const
@@ -316,6 +344,8 @@ struct Material {
             return hasSheen();
         case MaterialLobe::Specular:
             return hasSpecular();
+        case MaterialLobe::Anisotropy:
+            return hasAnisotropy();
         case MaterialLobe::Core:
             break;
         }

@@ -53,6 +53,12 @@ constexpr std::array<MaterialPropertyInfo, kMaterialPropertyCount> kProperties =
     // it, so the range goes on to Material::kMaxSpecularColor (the dock's colour button shows [0, 1]).
     {P::SpecularColor, "specularColor", "specularColor.factor", "Specular colour (linear F0 tint)", V::Color,
         0.0, Material::kMaxSpecularColor, MapSlot::SpecularColor, "specular-color"},
+    {P::Anisotropy, "anisotropy", "anisotropy.factor", "Anisotropy strength", V::Scalar, 0.0, 1.0,
+        MapSlot::Anisotropy, "anisotropy"},
+    {P::AnisotropyRotation, "anisotropyRotation", "anisotropyRotationDegrees",
+        "Anisotropy rotation (degrees, counter-clockwise from the tangent)", V::Scalar,
+        -Material::kMaxAnisotropyRotationDegrees, Material::kMaxAnisotropyRotationDegrees, std::nullopt,
+        "anisotropy-rotation"},
 }};
 
 constexpr bool inEnumOrder()
@@ -95,6 +101,8 @@ double scalarOf(const Material& material, MaterialProperty property)
         return material.ior;
     case P::AlphaCutoff:
         return material.alphaCutoff;
+    case P::AnisotropyRotation:
+        return material.anisotropyRotationDegrees;
     case P::BaseColor:
     case P::Emissive:
     case P::SheenColor:
@@ -121,6 +129,9 @@ void setScalar(Material& material, MaterialProperty property, double value)
         return;
     case P::AlphaCutoff:
         material.alphaCutoff = value;
+        return;
+    case P::AnisotropyRotation:
+        material.anisotropyRotationDegrees = value;
         return;
     case P::BaseColor:
     case P::Emissive:

@@ -5,7 +5,7 @@
 // (core/project/WedgeAxis: an axis of a material property takes its name, field, range and
 // setter from here), the command line's material flags (`facet render` and `facet sheet`:
 // --base-color, --metallic, --roughness, --clearcoat, --clearcoat-roughness, --sheen-color,
-// --sheen-roughness, --specular, --specular-color; app/MaterialFlags)
+// --sheen-roughness, --specular, --specular-color, --anisotropy, --anisotropy-rotation; app/MaterialFlags)
 // and the Material dock's sliders (ui/docks/MaterialDock addPropertySlider). A property's default is the
 // default Material's value, read through the row (no second copy). docs/architecture.md, "The material
 // property registry", says how a new property joins.
@@ -39,8 +39,10 @@ enum class MaterialProperty {
     SheenRoughness, // the sheen's perceptual roughness
     Specular, // KHR_materials_specular: the dielectric's specular strength
     SpecularColor, // its F0 tint (linear; above 1 allowed)
+    Anisotropy, // KHR_materials_anisotropy: the strength
+    AnisotropyRotation, // its direction's turn from the tangent, in degrees
 };
-inline constexpr int kMaterialPropertyCount = 17;
+inline constexpr int kMaterialPropertyCount = 19;
 
 // What a property holds: one number, or a linear RGB colour whose components each lie in the range.
 enum class PropertyValue { Scalar, Color };

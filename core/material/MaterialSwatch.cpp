@@ -8,6 +8,7 @@
 
 #include "core/ibl/Prefilter.h"
 #include "core/image/ToneMap.h"
+#include "core/shading/Anisotropy.h"
 #include "core/shading/MaterialBrdf.h"
 #include "core/shading/SplitSum.h"
 
@@ -78,11 +79,24 @@ Image SwatchRenderer::render(const Material& material, const MaterialMapImages& 
                 MaterialInfo inputs = materialInputs(material, images, uv);
                 inputs.clearcoatNormal = mapped(MapSlot::ClearcoatNormal, coatNormalImage);
                 const double NoV = std::max(glm::dot(n, v), 1e-4);
-                const glm::dvec3 R = glm::reflect(-v, n);
+                // An anisotropic lobe's light about the Sample Viewer's bent normal, with the
+                // lobe's own compensation: a swatch has no environment cube to sample the
+                // stretched lobe from, as the window does (docs/shading.md, "Anisotropy").
+                glm::dvec3 specularNormal = n;
                 SplitSumLighting lighting;
+                if (inputs.anisotropy > 0.0)
+                    if (const auto frame = shading::anisotropyFrame(
+                            n, surfaceAnisotropyDirection(ng, tangent, inputs.anisotropyTangentDirection))) {
+                        specularNormal = shading::anisotropicBentNormal(
+                            n, v, frame->t, inputs.perceptualRoughness, inputs.anisotropy);
+                        lighting.anisotropicCompensation = shading::anisotropicCompensation(
+                            frame->toLocal(v), inputs.perceptualRoughness, inputs.anisotropy);
+                    }
+                const glm::dvec3 R = glm::reflect(-v, specularNormal);
                 lighting.irradiance = irradianceSH(m_irradiance, n);
                 lighting.prefilteredRadiance = prefilteredRadiance(m_environment,
-                    specularDominantDirection(n, R, shading::alphaFromRoughness(inputs.perceptualRoughness)),
+                    specularDominantDirection(
+                        specularNormal, R, shading::alphaFromRoughness(inputs.perceptualRoughness)),
                     inputs.perceptualRoughness, m_prefilterSamples);
                 if (inputs.clearcoat > 0.0) {
                     const glm::dvec3& nc = inputs.clearcoatNormal;

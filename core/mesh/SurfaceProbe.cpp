@@ -95,6 +95,13 @@ SurfaceProbe probeSurface(const Mesh& mesh, const glm::dmat4& model, const MeshH
         const glm::dvec3 coat = mapped(MapSlot::ClearcoatNormal);
         probe.inputs.clearcoatNormal = unitOr(normalMatrix * coat, coat);
     }
+    // The anisotropy direction, a tangent, goes to world space by the model's linear part itself.
+    if (material.hasAnisotropy() && mesh.hasTangents) {
+        const glm::dvec3 direction
+            = surfaceAnisotropyDirection(ng, handedTangent, probe.inputs.anisotropyTangentDirection);
+        if (direction != glm::dvec3(0.0))
+            probe.inputs.anisotropyDirection = unitOr(glm::dmat3(model) * direction, direction);
+    }
     return probe;
 }
 

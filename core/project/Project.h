@@ -156,7 +156,10 @@ struct Project {
     // would drop them with a warning and save the material without its sheen).
     // Version 7: KHR_materials_specular, maps "specular" and "specularColor" (a version 6 Facet
     // would drop them with a warning and save the material with the default layer).
-    static constexpr int kFormatVersion = 7;
+    // Version 8: KHR_materials_anisotropy, the map "anisotropy" and the material's
+    // "anisotropyRotationDegrees" (a version 7 Facet would drop both with a warning and save the
+    // material isotropic).
+    static constexpr int kFormatVersion = 8;
     // More is refused when loading: far beyond any asset an artist previews, and each material
     // costs a shader variant and its textures.
     static constexpr int kMaxMaterials = 4096;

@@ -25,9 +25,9 @@ WedgeParameterInfo materialAxis(WedgeParameter parameter, MaterialProperty prope
     return {parameter, info.name, info.field, info.minimum, info.maximum, property};
 }
 
-const std::array<WedgeParameterInfo, 14>& parameterTable()
+const std::array<WedgeParameterInfo, 16>& parameterTable()
 {
-    static const std::array<WedgeParameterInfo, 14> table = {{
+    static const std::array<WedgeParameterInfo, 16> table = {{
         materialAxis(WedgeParameter::Metallic, MaterialProperty::Metallic),
         materialAxis(WedgeParameter::Roughness, MaterialProperty::Roughness),
         materialAxis(WedgeParameter::Occlusion, MaterialProperty::Occlusion),
@@ -40,6 +40,8 @@ const std::array<WedgeParameterInfo, 14>& parameterTable()
         materialAxis(WedgeParameter::ClearcoatRoughness, MaterialProperty::ClearcoatRoughness),
         materialAxis(WedgeParameter::SheenRoughness, MaterialProperty::SheenRoughness),
         materialAxis(WedgeParameter::Specular, MaterialProperty::Specular),
+        materialAxis(WedgeParameter::Anisotropy, MaterialProperty::Anisotropy),
+        materialAxis(WedgeParameter::AnisotropyRotation, MaterialProperty::AnisotropyRotation),
         {WedgeParameter::Environment, "env", "environment.source", 0.0, 0.0, std::nullopt},
         {WedgeParameter::Exposure, "exposure", "view.exposureEV", ViewSettings::kMinExposureEV,
             ViewSettings::kMaxExposureEV, std::nullopt},
@@ -326,6 +328,10 @@ std::string WedgeAxis::noEffectReason(const Project& project) const
     case WedgeParameter::SheenRoughness:
         if (!m.hasSheen())
             return "sheenRoughness shapes the sheen, and the material has none (sheenColor black)";
+        break;
+    case WedgeParameter::AnisotropyRotation:
+        if (!m.hasAnisotropy())
+            return "anisotropyRotation turns the anisotropy, and the material has none (anisotropy 0)";
         break;
     default:
         break;

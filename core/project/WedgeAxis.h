@@ -43,6 +43,8 @@ enum class WedgeParameter {
     ClearcoatRoughness,
     SheenRoughness,
     Specular,
+    Anisotropy,
+    AnisotropyRotation,
     Environment,
     Exposure,
 };

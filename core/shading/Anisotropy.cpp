@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "core/shading/Brdf.h"
@@ -69,6 +70,84 @@ glm::dvec2 anisotropyDirection(const glm::dvec2& textureDirection, double rotati
     const double c = std::cos(rotation);
     const double s = std::sin(rotation);
     return {c * d.x - s * d.y, s * d.x + c * d.y};
+}
+
+glm::dvec3 AnisotropyFrame::toLocal(const glm::dvec3& w) const
+{
+    return {glm::dot(w, t), glm::dot(w, b), glm::dot(w, n)};
+}
+
+glm::dvec3 AnisotropyFrame::toWorld(const glm::dvec3& w) const
+{
+    return w.x * t + w.y * b + w.z * n;
+}
+
+std::optional<AnisotropyFrame> anisotropyFrame(const glm::dvec3& n, const glm::dvec3& direction)
+{
+    const glm::dvec3 inPlane = direction - n * glm::dot(n, direction);
+    const double length = glm::length(inPlane);
+    if (!(length > 1e-9))
+        return std::nullopt;
+    AnisotropyFrame frame;
+    frame.n = n;
+    frame.t = inPlane / length;
+    frame.b = glm::cross(n, frame.t);
+    return frame;
+}
+
+SpecularLobeSampler::SpecularLobeSampler(const glm::dvec3& n, const glm::dvec3& v, double perceptualRoughness,
+    double anisotropy, const glm::dvec3& direction)
+    : m_v(v)
+{
+    const std::optional<AnisotropyFrame> frame
+        = anisotropy > 0.0 ? anisotropyFrame(n, direction) : std::optional<AnisotropyFrame>();
+    m_anisotropic = frame.has_value();
+    if (m_anisotropic) {
+        m_frame = *frame;
+        m_alpha = anisotropicAlpha(perceptualRoughness, anisotropy);
+    } else {
+        m_frame.n = n;
+        sampling::buildOrthonormalBasis(n, m_frame.t, m_frame.b);
+        const double alpha = alphaFromRoughness(perceptualRoughness);
+        m_alpha = {alpha, alpha};
+    }
+    m_vLocal = m_frame.toLocal(v);
+}
+
+glm::dvec3 SpecularLobeSampler::sample(const glm::dvec2& u) const
+{
+    const glm::dvec3 h = sampling::importanceSampleVNDF(u, m_vLocal, m_alpha.t, m_alpha.b);
+    return m_frame.toWorld(sampling::reflectAbout(m_vLocal, h));
+}
+
+double SpecularLobeSampler::pdf(const glm::dvec3& l) const
+{
+    const glm::dvec3 h = glm::normalize(m_v + l);
+    if (!m_anisotropic)
+        return sampling::pdfVNDFReflection(m_vLocal.z, glm::dot(m_frame.n, h), m_alpha.b);
+    return pdfVNDFReflectionAnisotropic(m_vLocal, m_frame.toLocal(h), m_alpha);
+}
+
+AnisotropicCompensation anisotropicCompensation(
+    const glm::dvec3& vLocal, double perceptualRoughness, double strength)
+{
+    const AnisotropicAlpha alpha = anisotropicAlpha(perceptualRoughness, strength);
+    const double tv2 = std::min(vLocal.x * vLocal.x, 1.0);
+    const double alphaV = std::sqrt(alpha.t * alpha.t * tv2 + alpha.b * alpha.b * (1.0 - tv2));
+    const double fade = 1.0 - std::clamp(strength, 0.0, 1.0);
+    return {std::sqrt(alphaV), fade * fade};
+}
+
+glm::dvec3 anisotropicBentNormal(const glm::dvec3& n, const glm::dvec3& v, const glm::dvec3& t,
+    double perceptualRoughness, double strength)
+{
+    const glm::dvec3 b = glm::cross(n, t);
+    const glm::dvec3 across = glm::cross(glm::cross(b, v), b);
+    double bend = 1.0 - std::clamp(strength, 0.0, 1.0) * (1.0 - clampRoughness(perceptualRoughness));
+    bend *= bend;
+    const glm::dvec3 bent = glm::mix(across, n, bend * bend);
+    const double length = glm::length(bent);
+    return length > 1e-6 ? bent / length : n;
 }
 
 double anisotropicDirectionalAlbedo(const glm::dvec3& v, const AnisotropicAlpha& alpha, int sampleCount)

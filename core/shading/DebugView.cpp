@@ -46,6 +46,8 @@ constexpr std::array<DebugViewName, kDebugViewCount> kDebugViewNames = {{
     {"sheen-roughness", "Sheen roughness", nullptr},
     {"specular", "Specular strength", nullptr},
     {"specular-color", "Specular colour", nullptr},
+    {"anisotropy", "Anisotropy strength", nullptr},
+    {"anisotropy-direction", "Anisotropy direction", nullptr},
 }};
 
 } // namespace

@@ -49,14 +49,17 @@ enum class DebugView : int {
     SheenRoughness, // the sheen's perceptual roughness (factor x texture); 0 without a sheen
     Specular, // KHR_materials_specular's strength (factor x texture); 1 without the extension
     SpecularColor, // its F0 tint (factor x texture, linear, may exceed 1); white without it
+    Anisotropy, // KHR_materials_anisotropy's strength (factor x texture B); 0 without it
+    AnisotropyDirection, // its direction in world space * 0.5 + 0.5; 0.5 grey without it
 };
-inline constexpr int kDebugViewCount = 32;
+inline constexpr int kDebugViewCount = 34;
 // "none", "base-color", "shading-normal", "geometric-normal", "metallic", "roughness",
 // "occlusion", "distribution", "visibility", "fresnel", "irradiance", "ibl-diffuse",
 // "prefiltered-radiance", "brdf-lut", "ibl-specular", "ibl-total", "direct-light",
 // "white-furnace", "uv", "tangent", "emissive", "alpha", "non-finite", "uv-checker",
 // "texel-density", "clearcoat", "clearcoat-roughness", "clearcoat-normal", "sheen-color",
-// "sheen-roughness", "specular", "specular-color" (ViewSettings::debugView,
+// "sheen-roughness", "specular", "specular-color", "anisotropy", "anisotropy-direction"
+// (ViewSettings::debugView,
 // facet render --view).
 const char* toString(DebugView view);
 // What the window shows: "Off (shaded image)", "Base colour", ..., "Distribution D", ...

@@ -11,6 +11,7 @@
 
 #include "core/ibl/EnvironmentSampler.h"
 #include "core/project/Project.h"
+#include "core/shading/Anisotropy.h"
 #include "core/shading/Brdf.h"
 #include "core/shading/MaterialInputs.h"
 #include "core/shading/Punctual.h"
@@ -116,16 +117,23 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
     const EnvironmentSampler& sampler, const glm::dvec3& n, const glm::dvec3& v, int samples,
     std::uint64_t seed, std::uint64_t stream, GroundTruthSettings::Lobes lobes)
 {
-    const MaterialInfo& material = scene.material;
     if (scene.unlit)
-        return material.baseColor;
+        return scene.material.baseColor;
+    // An anisotropic material without a direction of its own takes the sphere's tangent frame,
+    // the mesh's the real-time renderer draws (ReferenceView.h sphereTangent).
+    MaterialInfo material = scene.material;
+    if (material.anisotropy > 0.0 && material.anisotropyDirection == glm::dvec3(0.0))
+        material.anisotropyDirection = surfaceAnisotropyDirection(
+            n, referenceview::sphereTangent(n), material.anisotropyTangentDirection);
     const Environment& environment = scene.environment;
     const bool lambertOnly = lobes == GroundTruthSettings::Lobes::LambertOnly;
     const double NoV = std::clamp(glm::dot(n, v), 0.0, 1.0);
-    const double alpha = shading::alphaFromRoughness(material.perceptualRoughness);
-    glm::dvec3 t;
-    glm::dvec3 b;
-    sampling::buildOrthonormalBasis(n, t, b);
+    // The specular lobe's strategy (anisotropic in its frame where the material is); the coat's
+    // and the cosine strategy draw in the same frame.
+    const shading::SpecularLobeSampler specularSampler(
+        n, v, material.perceptualRoughness, material.anisotropy, material.anisotropyDirection);
+    const glm::dvec3 t = specularSampler.frame().t;
+    const glm::dvec3 b = specularSampler.frame().b;
     const glm::dvec3 vLocal = sampling::worldToTangent(v, t, b, n);
     const LobeSelection p = lobeSelection(material, NoV, lobes);
     const double coatAlpha = shading::alphaFromRoughness(material.clearcoatRoughness);
@@ -143,7 +151,7 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
         double pdf = (1.0 - p.specular - p.coat) * sampling::pdfCosineHemisphere(NoL);
         const double NoH = glm::dot(n, glm::normalize(v + l));
         if (p.specular > 0.0)
-            pdf += p.specular * sampling::pdfVNDFReflection(NoV, NoH, alpha);
+            pdf += p.specular * specularSampler.pdf(l);
         if (p.coat > 0.0)
             pdf += p.coat * sampling::pdfVNDFReflection(NoV, NoH, coatAlpha);
         return pdf;
@@ -175,8 +183,7 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
                 l = sampling::tangentToWorld(sampling::reflectAbout(vLocal, h), t, b, n);
             } else if (u.x < p.coat + p.specular) {
                 u.x = std::min((u.x - p.coat) / p.specular, belowOne);
-                const glm::dvec3 h = sampling::importanceSampleVNDF(u, vLocal, alpha);
-                l = sampling::tangentToWorld(sampling::reflectAbout(vLocal, h), t, b, n);
+                l = specularSampler.sample(u);
             } else {
                 const double pDiffuse = 1.0 - p.coat - p.specular;
                 u.x = std::min((u.x - p.coat - p.specular) / pDiffuse, belowOne);

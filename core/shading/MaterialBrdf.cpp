@@ -7,6 +7,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "core/shading/Anisotropy.h"
 #include "core/shading/Brdf.h"
 #include "core/shading/Sampling.h"
 #include "core/shading/Sheen.h"
@@ -68,14 +69,14 @@ double MaterialBrdf::visibility(
 }
 
 glm::dvec3 MaterialBrdf::multiScatterFactor(
-    const glm::dvec3& f0, double NoV, double perceptualRoughness) const
+    const glm::dvec3& f0, double NoV, double perceptualRoughness, double weight) const
 {
     if (!m_model.multiScatter)
         return glm::dvec3(1.0);
     // E is the albedo of the lobe with F = 1; a lobe of reflectance f0 loses f0 (1 - E) of the
     // light to paths of more than one bounce, which the factor adds back in proportion.
     const double e = std::max(m_table->sample(NoV, clampRoughness(perceptualRoughness)).albedo(), 1e-6);
-    return glm::dvec3(1.0) + f0 * ((1.0 - e) / e);
+    return glm::dvec3(1.0) + f0 * (weight * (1.0 - e) / e);
 }
 
 double MaterialBrdf::dielectricSpecularAlbedo(
@@ -120,10 +121,13 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
     const double VoH = std::clamp(glm::dot(v, h), 0.0, 1.0);
 
     const double roughness = clampRoughness(material.perceptualRoughness);
-    const double alpha = roughness * roughness;
     const double metallic = std::clamp(material.metallic, 0.0, 1.0);
     const glm::dvec3 baseColor = glm::max(material.baseColor, glm::dvec3(0.0));
-    const double microfacet = distribution(NoH, alpha) * visibility(NoV, NoL, alpha, roughness, kind);
+    const SpecularShape shape = specularShape(material, n, v, l, h, NoV, NoL, NoH, kind);
+    const double microfacet = shape.microfacet;
+    const auto compensation = [&](const glm::dvec3& f0) {
+        return multiScatterFactor(f0, NoV, shape.compensationRoughness, shape.compensationWeight);
+    };
     const DielectricReflectance layer = dielectricReflectance(material);
 
     // Diffuse of the dielectric base, before coupling with the specular layer.
@@ -134,8 +138,8 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
         // glTF 2.0 Appendix B: material = mix(dielectric_brdf, metal_brdf, metallic).
         const glm::dvec3 fDielectric = dielectricFresnel(material, layer, VoH);
         const glm::dvec3 fMetal = F_Schlick(baseColor, 1.0, VoH);
-        const glm::dvec3 msDielectric = multiScatterFactor(layer.f0, NoV, roughness);
-        const glm::dvec3 msMetal = multiScatterFactor(baseColor, NoV, roughness);
+        const glm::dvec3 msDielectric = compensation(layer.f0);
+        const glm::dvec3 msMetal = compensation(baseColor);
 
         const glm::dvec3 dielectricSpecular = microfacet * fDielectric * msDielectric;
         glm::dvec3 dielectricDiffuse;
@@ -153,7 +157,7 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
         // the specular layer's F0 and F90 mixed as the dielectric's.
         const glm::dvec3 f0 = glm::mix(layer.f0, baseColor, metallic);
         const glm::dvec3 F = F_Schlick(f0, layer.f90 + (1.0 - layer.f90) * metallic, VoH);
-        lobes.specular = microfacet * F * multiScatterFactor(f0, NoV, roughness);
+        lobes.specular = microfacet * F * compensation(f0);
         const glm::dvec3 kD = m_model.coupling == DielectricCoupling::FresnelMix
             ? (glm::dvec3(1.0) - F) * (1.0 - metallic)
             : glm::dvec3(couplingFactor(layer, NoV, NoL, roughness) * (1.0 - metallic));
@@ -189,6 +193,27 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
         }
     }
     return lobes;
+}
+
+MaterialBrdf::SpecularShape MaterialBrdf::specularShape(const MaterialInfo& material, const glm::dvec3& n,
+    const glm::dvec3& v, const glm::dvec3& l, const glm::dvec3& h, double NoV, double NoL, double NoH,
+    LightingKind kind) const
+{
+    const double roughness = clampRoughness(material.perceptualRoughness);
+    // KHR_materials_anisotropy: the base's specular lobes (dielectric and metal) take the
+    // extension's anisotropic GGX D and its height-correlated Smith V, whatever the model's D and V,
+    // and a compensation of their own (docs/shading.md, "Anisotropy"); no frame (no direction):
+    // the isotropic lobe.
+    if (material.anisotropy > 0.0)
+        if (const std::optional<AnisotropyFrame> frame = anisotropyFrame(n, material.anisotropyDirection)) {
+            const AnisotropicAlpha alpha = anisotropicAlpha(roughness, material.anisotropy);
+            const glm::dvec3 vLocal = frame->toLocal(v);
+            const AnisotropicCompensation c = anisotropicCompensation(vLocal, roughness, material.anisotropy);
+            return {D_GGXAnisotropic(frame->toLocal(h), alpha) * V_GGXAnisotropic(vLocal, frame->toLocal(l), alpha),
+                c.perceptualRoughness, c.weight};
+        }
+    const double alpha = roughness * roughness;
+    return {distribution(NoH, alpha) * visibility(NoV, NoL, alpha, roughness, kind), roughness, 1.0};
 }
 
 double DielectricReflectance::maxF0() const
@@ -250,14 +275,17 @@ glm::dvec3 directionalAlbedo(
     NoV = std::clamp(NoV, 1e-6, 1.0);
     const glm::dvec3 n(0.0, 0.0, 1.0);
     const glm::dvec3 v(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
-    const double alpha = alphaFromRoughness(material.perceptualRoughness);
+    // The specular strategy is the anisotropic lobe's where the material is (its direction in
+    // the space of n = +Z).
+    const SpecularLobeSampler specular(
+        n, v, material.perceptualRoughness, material.anisotropy, material.anisotropyDirection);
     // A coat adds its own lobe as a third strategy (the balance heuristic over all three).
     const bool coated = material.clearcoat > 0.0;
     const double coatAlpha = alphaFromRoughness(material.clearcoatRoughness);
     const auto count = std::uint32_t(std::max(sampleCount, 1));
     auto mixturePdf = [&](const glm::dvec3& l) {
         const glm::dvec3 h = glm::normalize(v + l);
-        double pdf = sampling::pdfCosineHemisphere(l.z) + sampling::pdfVNDFReflection(NoV, h.z, alpha);
+        double pdf = sampling::pdfCosineHemisphere(l.z) + specular.pdf(l);
         if (coated)
             pdf += sampling::pdfVNDFReflection(NoV, h.z, coatAlpha);
         return pdf;
@@ -267,7 +295,7 @@ glm::dvec3 directionalAlbedo(
         const glm::dvec2 u = sampling::hammersley(i, count);
         const glm::dvec3 candidates[3] = {
             sampling::sampleCosineHemisphere(u),
-            sampling::reflectAbout(v, sampling::importanceSampleVNDF(u, v, alpha)),
+            specular.sample(u),
             coated ? sampling::reflectAbout(v, sampling::importanceSampleVNDF(u, v, coatAlpha))
                    : glm::dvec3(0.0, 0.0, -1.0),
         };

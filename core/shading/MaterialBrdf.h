@@ -6,8 +6,10 @@
 // f excludes the cosine n.l. Lobes are kept apart (as the glTF Sample Viewer's pbr.frag does) so
 // that debug views and tests can look at each.
 
+#include <optional>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/shading/DfgTable.h"
@@ -46,6 +48,17 @@ struct MaterialInfo {
     // >= 0, above 1 allowed); 1 and white are the glTF default, which changes nothing.
     double specular = 1.0;
     glm::dvec3 specularColor {1.0};
+    // KHR_materials_anisotropy: the strength ([0, 1], factor x texture B) and the direction the
+    // base's specular highlight stretches along. materialInputs() gives the direction in the
+    // tangent plane (x along the mesh's tangent, y along its bitangent: the texture's RG turned by
+    // the rotation, core/shading/Anisotropy.h anisotropyDirection); a caller with a tangent frame
+    // sets `anisotropyDirection`, unit and in the space of evaluate()'s n
+    // (surfaceAnisotropyDirection, core/shading/MaterialInputs.h). Zero: no direction, the lobe
+    // stays isotropic. The coat and the sheen are never anisotropic (docs/shading.md, "Anisotropy").
+    double anisotropy = 0.0;
+    glm::dvec2 anisotropyTangentDirection {1.0, 0.0};
+    glm::dvec3 anisotropyDirection {0.0};
+    bool hasAnisotropy() const { return anisotropy > 0.0 && anisotropyDirection != glm::dvec3(0.0); }
 };
 
 // The dielectric layer's Schlick reflectance (KHR_materials_specular, "Implementation"):
@@ -99,8 +112,10 @@ public:
 
     // Multiple-scattering compensation factor for the specular lobe of reflectance f0 at n.v:
     // 1 + f0 (1 - E) / E [Turquin 2019, "Practical multiple scattering compensation for
-    // microfacet models"; Kulla & Conty 2017]. 1 when the model turns compensation off.
-    glm::dvec3 multiScatterFactor(const glm::dvec3& f0, double NoV, double perceptualRoughness) const;
+    // microfacet models"; Kulla & Conty 2017], the added part times `weight` (an anisotropic
+    // lobe's fade, shading::anisotropicCompensation). 1 when the model turns compensation off.
+    glm::dvec3 multiScatterFactor(
+        const glm::dvec3& f0, double NoV, double perceptualRoughness, double weight = 1.0) const;
 
     // Directional albedo of the dielectric specular layer (Schlick from f0 to f90) including
     // compensation, E_s(mu) = (f0 scale + f90 bias) * (1 + f0 (1 - E) / E): what the layer reflects.
@@ -118,6 +133,15 @@ private:
     double visibility(
         double NoV, double NoL, double alpha, double perceptualRoughness, LightingKind kind) const;
     double distribution(double NoH, double alpha) const;
+    // The base's specular lobe's D V and where its compensation reads the table: the model's
+    // pair at the material's roughness, or the anisotropic lobe's in its frame.
+    struct SpecularShape {
+        double microfacet = 0.0;
+        double compensationRoughness = 0.5;
+        double compensationWeight = 1.0;
+    };
+    SpecularShape specularShape(const MaterialInfo& material, const glm::dvec3& n, const glm::dvec3& v,
+        const glm::dvec3& l, const glm::dvec3& h, double NoV, double NoL, double NoH, LightingKind kind) const;
     // The energy-preserving coupling's scale of the dielectric diffuse lobe.
     double couplingFactor(
         const DielectricReflectance& layer, double NoV, double NoL, double perceptualRoughness) const;

@@ -7,8 +7,10 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "core/image/ToneMap.h"
+#include "core/shading/Anisotropy.h"
 
 namespace facet {
 
@@ -71,20 +73,46 @@ glm::dvec3 tangentSpaceNormal(const glm::dvec4& normalTexel, double strength, bo
     return length > 1e-8 ? tn / length : glm::dvec3(0.0, 0.0, 1.0);
 }
 
+namespace {
+
+// The surface's tangent and bitangent: the interpolated tangent made unit and perpendicular to ng
+// (Gram-Schmidt), b = cross(ng, t) times the handedness; false where the tangent is along ng.
+bool tangentFrame(const glm::dvec3& ng, const glm::dvec4& tangent, glm::dvec3* t, glm::dvec3* b)
+{
+    const glm::dvec3 inPlane = glm::dvec3(tangent) - ng * glm::dot(ng, glm::dvec3(tangent));
+    const double length = glm::length(inPlane);
+    if (length < 1e-8)
+        return false;
+    *t = inPlane / length;
+    *b = glm::cross(ng, *t) * (tangent.w < 0.0 ? -1.0 : 1.0);
+    return true;
+}
+
+} // namespace
+
 glm::dvec3 shadingNormal(const glm::dvec3& ng, const glm::dvec4& tangent, const glm::dvec4& normalTexel,
     double strength, bool flipGreen)
 {
-    // Gram-Schmidt: the interpolated tangent is neither unit nor perpendicular to ng.
-    glm::dvec3 t = glm::dvec3(tangent) - ng * glm::dot(ng, glm::dvec3(tangent));
-    const double tLength = glm::length(t);
-    if (tLength < 1e-8)
+    glm::dvec3 t;
+    glm::dvec3 b;
+    if (!tangentFrame(ng, tangent, &t, &b))
         return ng;
-    t /= tLength;
-    const glm::dvec3 b = glm::cross(ng, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
     const glm::dvec3 tn = scaledTangentNormal(normalTexel, strength, flipGreen);
     const glm::dvec3 n = t * tn.x + b * tn.y + ng * tn.z;
     const double nLength = glm::length(n);
     return nLength > 1e-8 ? n / nLength : ng;
+}
+
+glm::dvec3 surfaceAnisotropyDirection(
+    const glm::dvec3& ng, const glm::dvec4& tangent, const glm::dvec2& tangentDirection)
+{
+    glm::dvec3 t;
+    glm::dvec3 b;
+    if (!tangentFrame(ng, tangent, &t, &b))
+        return glm::dvec3(0.0);
+    const glm::dvec3 d = t * tangentDirection.x + b * tangentDirection.y;
+    const double length = glm::length(d);
+    return length > 1e-8 ? d / length : glm::dvec3(0.0);
 }
 
 glm::dvec4 texelValue(const MapImage& image, int x, int rowFromBottom, ColorEncoding colorSpace)
@@ -278,6 +306,20 @@ MaterialInfo materialInputs(const Material& material, const MaterialMapImages& i
             m.specularColor *= glm::dvec3(*texel);
         m.specular = std::clamp(m.specular, 0.0, 1.0);
         m.specularColor = glm::max(m.specularColor, glm::dvec3(0.0));
+    }
+    // KHR_materials_anisotropy: the strength (factor x texture B) and the direction in the tangent
+    // plane, the texture's RG (x 2 - 1; (1, 0) without one) turned by the rotation (GLSL under
+    // MATERIAL_ANISOTROPY). A caller with a tangent frame maps it (surfaceAnisotropyDirection).
+    if (material.hasAnisotropy()) {
+        m.anisotropy = material.anisotropy();
+        glm::dvec2 direction(1.0, 0.0);
+        if (const auto texel = read(MapSlot::Anisotropy)) {
+            direction = glm::dvec2(*texel) * 2.0 - 1.0;
+            m.anisotropy *= texel->b;
+        }
+        m.anisotropy = std::clamp(m.anisotropy, 0.0, 1.0);
+        m.anisotropyTangentDirection = shading::anisotropyDirection(
+            direction, glm::radians(material.anisotropyRotationDegrees));
     }
     return m;
 }

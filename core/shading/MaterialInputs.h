@@ -56,6 +56,14 @@ glm::dvec3 tangentSpaceNormal(const glm::dvec4& normalTexel, double strength, bo
 glm::dvec3 shadingNormal(const glm::dvec3& ng, const glm::dvec4& tangent, const glm::dvec4& normalTexel,
     double strength, bool flipGreen);
 
+// The anisotropy direction in world space (MaterialInfo::anisotropyDirection) from the unit
+// geometric normal, the vertex tangent (as shadingNormal takes it) and the direction in the tangent
+// plane (MaterialInfo::anisotropyTangentDirection): tangentDirection.x t + tangentDirection.y b,
+// unit. Zero where the tangent frame degenerates (the lobe is then isotropic). GLSL
+// anisotropyDirection in material_inputs.glsl.
+glm::dvec3 surfaceAnisotropyDirection(
+    const glm::dvec3& ng, const glm::dvec4& tangent, const glm::dvec2& tangentDirection);
+
 // One texel (x, row from the bottom) as the GPU's texture holds it for `colorSpace`: linear RGB
 // and alpha (see the top of this file).
 glm::dvec4 texelValue(const MapImage& image, int x, int rowFromBottom, ColorEncoding colorSpace);

@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace facet::referenceview {
 
@@ -41,6 +42,17 @@ inline std::optional<glm::dvec3> intersectSphere(const glm::dvec3& direction)
     if (t <= 0.0)
         return std::nullopt;
     return glm::normalize(kEye + t * direction);
+}
+
+// The glTF tangent (xyz along dP/du, w = +1) of the sphere mesh the real-time renderer draws
+// (core/mesh/MeshPrimitives.h makeSphere: u = 0.5 - atan2(z, x) / (2 pi)) at the unit point p:
+// (z, 0, -x) normalised, +X at the front. The ground truth's tangent frame (anisotropy); zero at
+// the poles, which the reference view does not see.
+inline glm::dvec4 sphereTangent(const glm::dvec3& p)
+{
+    const glm::dvec3 t(p.z, 0.0, -p.x);
+    const double length = glm::length(t);
+    return length > 0.0 ? glm::dvec4(t / length, 1.0) : glm::dvec4(0.0, 0.0, 0.0, 1.0);
 }
 
 // True when pixel (x, y) sees the sphere and none of its neighbours sees the background: the

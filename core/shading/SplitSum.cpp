@@ -22,6 +22,16 @@ glm::dvec3 specularDominantDirection(const glm::dvec3& n, const glm::dvec3& R, d
 
 namespace {
 
+// The specular lobe's multiple-scattering factor: the isotropic lobe's, or where the lighting says
+// the lobe is anisotropic, its compensation's (shading::anisotropicCompensation).
+glm::dvec3 compensation(const MaterialBrdf& brdf, const glm::dvec3& f0, double NoV, double roughness,
+    const SplitSumLighting& lighting)
+{
+    if (const auto& c = lighting.anisotropicCompensation)
+        return brdf.multiScatterFactor(f0, NoV, c->perceptualRoughness, c->weight);
+    return brdf.multiScatterFactor(f0, NoV, roughness);
+}
+
 // The glTF composition's lobes: (1 - m) spec(F0_d, F90_d) + m spec(c), and the diffuse weight.
 // Without KHR_materials_specular F90_d = 1 and the weight is (1 - F0_d) W; with it the base keeps
 // 1 - max_value(F(v.h)), whose mean over the cosine lobe is (1 - F90) + (F90 - max F0) W.
@@ -35,9 +45,9 @@ BrdfLobes gltfLobes(const MaterialBrdf& brdf, const MaterialInfo& material, doub
     const DielectricReflectance layer = dielectricReflectance(material);
     BrdfLobes lobes;
     const glm::dvec3 specularDielectric
-        = (layer.f0 * dfg.scale + layer.f90 * dfg.bias) * brdf.multiScatterFactor(layer.f0, NoV, roughness);
+        = (layer.f0 * dfg.scale + layer.f90 * dfg.bias) * compensation(brdf, layer.f0, NoV, roughness, lighting);
     const glm::dvec3 specularMetal
-        = (baseColor * dfg.scale + dfg.bias) * brdf.multiScatterFactor(baseColor, NoV, roughness);
+        = (baseColor * dfg.scale + dfg.bias) * compensation(brdf, baseColor, NoV, roughness, lighting);
     lobes.specular = lighting.prefilteredRadiance * glm::mix(specularDielectric, specularMetal, metallic);
     const double f0 = layer.maxF0();
     const double diffuseWeight = model.coupling == DielectricCoupling::EnergyPreserving
@@ -59,7 +69,7 @@ BrdfLobes learnOpenGlLobes(const MaterialBrdf& brdf, const MaterialInfo& materia
     const double f90 = layer.f90 + (1.0 - layer.f90) * metallic;
     BrdfLobes lobes;
     lobes.specular = lighting.prefilteredRadiance * (f0 * dfg.scale + f90 * dfg.bias)
-        * brdf.multiScatterFactor(f0, NoV, roughness);
+        * compensation(brdf, f0, NoV, roughness, lighting);
     const glm::dvec3 kD = brdf.model().coupling == DielectricCoupling::EnergyPreserving
         ? glm::dvec3((1.0 - brdf.dielectricSpecularAlbedo(layer.maxF0(), NoV, roughness, layer.f90))
             * (1.0 - metallic))

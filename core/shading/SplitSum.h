@@ -6,8 +6,11 @@
 // (L and pi L), so the only approximations left are the split sum's own (see
 // docs/rendering.md, "Image-based lighting").
 
+#include <optional>
+
 #include <glm/vec3.hpp>
 
+#include "core/shading/Anisotropy.h"
 #include "core/shading/MaterialBrdf.h"
 
 namespace facet {
@@ -24,6 +27,10 @@ struct SplitSumLighting {
     // window's split sum averages filtered samples, resources/shaders/ibl_fis.glsl
     // sheenLobeRadiance; a swatch takes the irradiance's mean).
     glm::dvec3 sheenRadiance {0.0};
+    // KHR_materials_anisotropy: where the specular lobe's compensation reads the table, for an
+    // anisotropic material (its frame and view: shading::anisotropicCompensation); the isotropic
+    // lobe's otherwise. The caller also reads prefilteredRadiance about the bent normal.
+    std::optional<shading::AnisotropicCompensation> anisotropicCompensation;
 };
 
 // Outgoing radiance lobes towards a viewer at n.v = NoV (before ambient occlusion):

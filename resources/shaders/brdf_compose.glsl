@@ -4,6 +4,7 @@
 #include "brdf_ggx.glsl"
 #include "ibl_lookup.glsl"
 #include "brdf_sheen.glsl"
+#include "brdf_anisotropy.glsl"
 
 uniform sampler2D uDfgLut;
 uniform float uDfgSize;
@@ -57,15 +58,32 @@ float visibility(float NoV, float NoL, float alpha, float perceptualRoughness, b
 #endif
 }
 
-// 1 + f0 (1 - E) / E [Turquin 2019; Kulla & Conty 2017]; 1 without MULTI_SCATTER.
-vec3 multiScatterFactor(vec3 f0, float NoV, float perceptualRoughness)
+// 1 + f0 (1 - E) / E [Turquin 2019; Kulla & Conty 2017], the added part times `weight` (an
+// anisotropic lobe's fade); 1 without MULTI_SCATTER.
+vec3 multiScatterFactor(vec3 f0, float NoV, float perceptualRoughness, float weight)
 {
 #ifdef MULTI_SCATTER
     float e = max(dfgLookup(NoV, perceptualRoughness).b, 1e-6);
-    return vec3(1.0) + f0 * ((1.0 - e) / e);
+    return vec3(1.0) + f0 * (weight * (1.0 - e) / e);
 #else
     return vec3(1.0);
 #endif
+}
+vec3 multiScatterFactor(vec3 f0, float NoV, float perceptualRoughness)
+{
+    return multiScatterFactor(f0, NoV, perceptualRoughness, 1.0);
+}
+
+// The base's specular lobe's compensation, (roughness, weight): the isotropic lobe's (r, 1), or
+// (MATERIAL_ANISOTROPY, with a frame t about n) the anisotropic lobe's.
+vec2 specularCompensation(MaterialInfo m, vec3 n, vec3 v, vec3 anisotropyT)
+{
+#ifdef MATERIAL_ANISOTROPY
+    if (anisotropyT != vec3(0.0))
+        return anisotropicCompensation(vec3(dot(anisotropyT, v), dot(cross(n, anisotropyT), v), dot(n, v)),
+                                       m.perceptualRoughness, m.anisotropy);
+#endif
+    return vec2(clampRoughness(m.perceptualRoughness), 1.0);
 }
 
 // E_s(mu) = (f0 scale + f90 bias) M(f0): what the dielectric specular layer reflects.
@@ -160,13 +178,28 @@ BrdfLobes evaluateBrdf(MaterialInfo m, vec3 n, vec3 v, vec3 l, bool punctual)
     float metallic = saturate(m.metallic);
     vec3 baseColor = max(m.baseColor, vec3(0.0));
     float microfacet = distribution(NoH, alpha) * visibility(NoV, NoL, alpha, roughness, punctual);
+    vec3 anisotropyT = vec3(0.0);
+#ifdef MATERIAL_ANISOTROPY
+    // The base's specular lobes (dielectric and metal) take the extension's anisotropic D and V,
+    // whatever the model's pair, and a compensation of their own (docs/shading.md, "Anisotropy");
+    // without a frame, the isotropic lobe.
+    anisotropyT = m.anisotropy > 0.0 ? anisotropyTangent(n, m.anisotropyDirection) : vec3(0.0);
+    if (anisotropyT != vec3(0.0)) {
+        vec3 anisotropyB = cross(n, anisotropyT);
+        vec2 anisotropyAlpha = anisotropicAlpha(m.perceptualRoughness, m.anisotropy);
+        microfacet = D_GGXAnisotropic(vec3(dot(anisotropyT, h), dot(anisotropyB, h), NoH), anisotropyAlpha)
+            * V_GGXAnisotropic(vec3(dot(anisotropyT, v), dot(anisotropyB, v), NoV),
+                               vec3(dot(anisotropyT, l), dot(anisotropyB, l), NoL), anisotropyAlpha);
+    }
+#endif
+    vec2 compensation = specularCompensation(m, n, v, anisotropyT);
     DielectricReflectance layer = dielectricReflectance(m);
     vec3 lambert = baseColor * Fd_Lambert();
 
 #ifdef COMPOSITION_LEARNOPENGL
     vec3 f0 = mix(layer.f0, baseColor, metallic);
     vec3 F = F_Schlick(f0, mix(layer.f90, 1.0, metallic), VoH);
-    lobes.specular = microfacet * F * multiScatterFactor(f0, NoV, roughness);
+    lobes.specular = microfacet * F * multiScatterFactor(f0, NoV, compensation.x, compensation.y);
 #ifdef COUPLING_ENERGY_PRESERVING
     vec3 kD = vec3(couplingFactor(layer, NoV, NoL, roughness) * (1.0 - metallic));
 #else
@@ -176,8 +209,8 @@ BrdfLobes evaluateBrdf(MaterialInfo m, vec3 n, vec3 v, vec3 l, bool punctual)
 #else
     vec3 fDielectric = dielectricFresnel(m, layer, VoH);
     vec3 fMetal = F_Schlick(baseColor, 1.0, VoH);
-    vec3 msDielectric = multiScatterFactor(layer.f0, NoV, roughness);
-    vec3 msMetal = multiScatterFactor(baseColor, NoV, roughness);
+    vec3 msDielectric = multiScatterFactor(layer.f0, NoV, compensation.x, compensation.y);
+    vec3 msMetal = multiScatterFactor(baseColor, NoV, compensation.x, compensation.y);
     vec3 dielectricSpecular = microfacet * fDielectric * msDielectric;
 #ifdef COUPLING_ENERGY_PRESERVING
     vec3 dielectricDiffuse = lambert * couplingFactor(layer, NoV, NoL, roughness);

@@ -120,10 +120,12 @@ float G1_SmithGGX(float NoX, float alpha)
     return 2.0 * NoX / (NoX + sqrt(a2 + (1.0 - a2) * NoX * NoX));
 }
 
-// Visible-normal sampling [Heitz 2018, "Sampling the GGX Distribution of Visible Normals", listing 1].
-vec3 importanceSampleVNDF(vec2 u, vec3 v, float alpha)
+// Visible-normal sampling [Heitz 2018, "Sampling the GGX Distribution of Visible Normals", listing 1],
+// with a roughness per axis (alpha.x along the frame's x, alpha.y along y: KHR_materials_anisotropy's
+// alpha_t, alpha_b); twin of core's sampling::importanceSampleVNDF.
+vec3 importanceSampleVNDF(vec2 u, vec3 v, vec2 alpha)
 {
-    vec3 vh = normalize(vec3(alpha * v.x, alpha * v.y, v.z));
+    vec3 vh = normalize(vec3(alpha.x * v.x, alpha.y * v.y, v.z));
     float lensq = vh.x * vh.x + vh.y * vh.y;
     vec3 t1 = lensq > 0.0 ? vec3(-vh.y, vh.x, 0.0) * inversesqrt(lensq) : vec3(1.0, 0.0, 0.0);
     vec3 t2 = cross(vh, t1);
@@ -134,18 +136,24 @@ vec3 importanceSampleVNDF(vec2 u, vec3 v, float alpha)
     float s = 0.5 * (1.0 + vh.z);
     p2 = (1.0 - s) * sqrt(max(0.0, 1.0 - p1 * p1)) + s * p2;
     vec3 nh = p1 * t1 + p2 * t2 + sqrt(max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;
-    return normalize(vec3(alpha * nh.x, alpha * nh.y, max(0.0, nh.z)));
+    return normalize(vec3(alpha.x * nh.x, alpha.y * nh.y, max(0.0, nh.z)));
 }
+vec3 importanceSampleVNDF(vec2 u, vec3 v, float alpha) { return importanceSampleVNDF(u, v, vec2(alpha)); }
 
 // The same distribution by spherical caps [Dupuy and Benyoub 2023, HPG, listing 3]: no frame is
 // built around v, so a fixed set of points u moves continuously with v (Heitz's frame turns with
 // v's azimuth and drew a pinch where n = v in FIS's structured error). core/shading/Sampling.h has the why.
-vec3 importanceSampleVNDFSphericalCap(vec2 u, vec3 v, float alpha)
+// The stretch takes a roughness per axis as Heitz's does.
+vec3 importanceSampleVNDFSphericalCap(vec2 u, vec3 v, vec2 alpha)
 {
-    vec3 vh = normalize(vec3(alpha * v.x, alpha * v.y, v.z));
+    vec3 vh = normalize(vec3(alpha.x * v.x, alpha.y * v.y, v.z));
     float phi = TWO_PI * u.x;
     float z = (1.0 - u.y) * (1.0 + vh.z) - vh.z;
     float sinTheta = sqrt(clamp(1.0 - z * z, 0.0, 1.0));
     vec3 h = vec3(sinTheta * cos(phi), sinTheta * sin(phi), z) + vh;
-    return normalize(vec3(alpha * h.x, alpha * h.y, max(0.0, h.z)));
+    return normalize(vec3(alpha.x * h.x, alpha.y * h.y, max(0.0, h.z)));
+}
+vec3 importanceSampleVNDFSphericalCap(vec2 u, vec3 v, float alpha)
+{
+    return importanceSampleVNDFSphericalCap(u, v, vec2(alpha));
 }

@@ -74,17 +74,31 @@ vec3 fisLobe(MaterialInfo m, vec3 n, vec3 v, int lobe, int base, int count, uint
     NoV = min(NoV, 1.0);
     float roughness = clampRoughness(lobe == LOBE_COAT ? m.clearcoatRoughness : m.perceptualRoughness);
     float alpha = roughness * roughness;
-    vec3 t;
+    vec3 t = vec3(0.0);
     vec3 b;
-    buildOrthonormalBasis(n, t, b);
+    vec2 lobeAlpha = vec2(alpha);
+#ifdef MATERIAL_ANISOTROPY
+    // KHR_materials_anisotropy: the base's lobe is drawn from its own stretched visible normals,
+    // in the anisotropy frame (alpha_t along t, alpha_b across).
+    if (lobe == LOBE_SPECULAR && m.anisotropy > 0.0)
+        t = anisotropyTangent(n, m.anisotropyDirection);
+#endif
+    bool anisotropic = t != vec3(0.0);
+    if (anisotropic) {
+        b = cross(n, t);
+        lobeAlpha = anisotropicAlpha(m.perceptualRoughness, m.anisotropy);
+    } else {
+        buildOrthonormalBasis(n, t, b);
+    }
     vec3 vLocal = vec3(dot(v, t), dot(v, b), NoV);
     // The VNDF reflection density G1(v) D(h) / (4 n.v), with n.v kept off 0 (its samples then
     // graze the surface: the density is large and the footprint a texel).
-    float densityScale = G1_SmithGGX(NoV, alpha) / (4.0 * max(NoV, 1e-6));
+    float densityScale = (anisotropic ? G1_GGXAnisotropic(vLocal, lobeAlpha) : G1_SmithGGX(NoV, alpha))
+        / (4.0 * max(NoV, 1e-6));
     count = max(count, 1);
     vec3 specular = vec3(0.0);
     for (int i = 0; i < count; ++i) {
-        vec3 h = importanceSampleVNDFSphericalCap(hammersley(uint(base + i), total), vLocal, alpha);
+        vec3 h = importanceSampleVNDFSphericalCap(hammersley(uint(base + i), total), vLocal, lobeAlpha);
         vec3 lLocal = reflectAbout(vLocal, h);
         if (lLocal.z <= 0.0)
             continue; // below the horizon: no light, still one of the N
@@ -93,8 +107,11 @@ vec3 fisLobe(MaterialInfo m, vec3 n, vec3 v, int lobe, int base, int count, uint
         // smooth lobe 1 - (n.h)^2 is near float's resolution, and the two D's must cancel
         // exactly (a white metal at roughness 0.05 read 1.6% off in a furnace from the sampled one).
         vec3 hSum = v + l;
-        float NoH = saturate(dot(n, hSum / length(hSum)));
-        float pdf = D_GGX(NoH, alpha) * densityScale;
+        vec3 hRebuilt = hSum / length(hSum);
+        float NoH = saturate(dot(n, hRebuilt));
+        float pdf = (anisotropic ? D_GGXAnisotropic(vec3(dot(t, hRebuilt), dot(b, hRebuilt), NoH), lobeAlpha)
+                                 : D_GGX(NoH, alpha))
+            * densityScale;
         if (!(pdf > 0.0))
             continue;
         BrdfLobes f = evaluateBrdf(m, n, v, l, false);

@@ -55,9 +55,51 @@ float pdfVndfReflection(float NoV, float NoH, float alpha)
     return NoH > 0.0 ? G1_SmithGGX(NoV, alpha) * D_GGX(NoH, alpha) / (4.0 * NoV) : 0.0;
 }
 
+// The specular strategy's frame (t, b about n) and roughness per axis: the anisotropy frame and
+// (alpha_t, alpha_b) where the material has one (MATERIAL_ANISOTROPY), else buildOrthonormalBasis's
+// frame and alpha on both axes. The coat's and the cosine strategy draw in the same frame. Twin
+// of core's shading::SpecularLobeSampler.
+struct SpecularStrategy {
+    vec3 t;
+    vec3 b;
+    vec2 alpha;
+    bool anisotropic;
+};
+
+SpecularStrategy specularStrategy(MaterialInfo m, vec3 n)
+{
+    SpecularStrategy s;
+    s.anisotropic = false;
+#ifdef MATERIAL_ANISOTROPY
+    vec3 t = m.anisotropy > 0.0 ? anisotropyTangent(n, m.anisotropyDirection) : vec3(0.0);
+    if (t != vec3(0.0)) {
+        s.t = t;
+        s.b = cross(n, t);
+        s.alpha = anisotropicAlpha(m.perceptualRoughness, m.anisotropy);
+        s.anisotropic = true;
+        return s;
+    }
+#endif
+    buildOrthonormalBasis(n, s.t, s.b);
+    s.alpha = vec2(alphaFromRoughness(m.perceptualRoughness));
+    return s;
+}
+
+// The specular strategy's density of world direction l (n.l > 0, n.v > 0).
+float specularStrategyPdf(SpecularStrategy s, vec3 n, vec3 v, vec3 l, float NoV)
+{
+    vec3 h = normalize(v + l);
+    if (!s.anisotropic)
+        return pdfVndfReflection(NoV, dot(n, h), s.alpha.y);
+    vec3 hLocal = vec3(dot(h, s.t), dot(h, s.b), dot(h, n));
+    vec3 vLocal = vec3(dot(v, s.t), dot(v, s.b), NoV);
+    return hLocal.z > 0.0 ? G1_GGXAnisotropic(vLocal, s.alpha) * D_GGXAnisotropic(hLocal, s.alpha) / (4.0 * NoV)
+                          : 0.0;
+}
+
 // The BRDF strategy's density for world direction l: the lobe mixture (p: lobeSelection; the
 // coat's visible normals are drawn about n too).
-float brdfSamplingPdf(vec3 n, vec3 v, vec3 l, float NoV, float alpha, float coatAlpha, vec2 p)
+float brdfSamplingPdf(vec3 n, vec3 v, vec3 l, float NoV, SpecularStrategy specular, float coatAlpha, vec2 p)
 {
     float NoL = dot(n, l);
     if (NoL <= 0.0)
@@ -66,7 +108,7 @@ float brdfSamplingPdf(vec3 n, vec3 v, vec3 l, float NoV, float alpha, float coat
     if (NoV > 0.0) {
         float NoH = dot(n, normalize(v + l));
         if (p.y > 0.0)
-            pdf += p.y * pdfVndfReflection(NoV, NoH, alpha);
+            pdf += p.y * specularStrategyPdf(specular, n, v, l, NoV);
         if (p.x > 0.0)
             pdf += p.x * pdfVndfReflection(NoV, NoH, coatAlpha);
     }
@@ -108,12 +150,11 @@ BrdfLobes referenceEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     float NoV = dot(n, v);
     if (NoV < 0.0)
         return sum; // evaluateBrdf's rule: nothing is seen from below the surface
-    float alpha = alphaFromRoughness(m.perceptualRoughness);
+    SpecularStrategy specular = specularStrategy(m, n);
     float coatAlpha = alphaFromRoughness(m.clearcoatRoughness);
     vec2 p = lobeSelection(m, min(NoV, 1.0));
-    vec3 t;
-    vec3 b;
-    buildOrthonormalBasis(n, t, b);
+    vec3 t = specular.t;
+    vec3 b = specular.b;
     vec3 vLocal = vec3(dot(v, t), dot(v, b), NoV);
     uvec2 pixel = uvec2(gl_FragCoord.xy);
     uvec2 brdfShift = cranleyPattersonShift(pixel.x, pixel.y, uint(uIblSeed), kStrategyBrdf);
@@ -130,12 +171,12 @@ BrdfLobes referenceEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
             l = tangentToWorld(reflectAbout(vLocal, importanceSampleVNDF(u, vLocal, coatAlpha)), t, b, n);
         } else if (u.x < p.x + p.y) {
             u.x = min((u.x - p.x) / p.y, belowOne);
-            l = tangentToWorld(reflectAbout(vLocal, importanceSampleVNDF(u, vLocal, alpha)), t, b, n);
+            l = tangentToWorld(reflectAbout(vLocal, importanceSampleVNDF(u, vLocal, specular.alpha)), t, b, n);
         } else {
             u.x = min((u.x - p.x - p.y) / (1.0 - p.x - p.y), belowOne);
             l = tangentToWorld(sampleCosineHemisphere(u), t, b, n);
         }
-        float pdf = brdfSamplingPdf(n, v, l, NoV, alpha, coatAlpha, p);
+        float pdf = brdfSamplingPdf(n, v, l, NoV, specular, coatAlpha, p);
         if (dot(n, l) > 0.0 && pdf > 0.0)
             addContribution(sum, m, n, v, l, powerHeuristic(pdf, environmentPdf(l)) / pdf);
         // Environment strategy.
@@ -143,7 +184,7 @@ BrdfLobes referenceEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
         l = sampleEnvironment(shiftedSobol2D(s, environmentShift), environmentDensity);
         if (dot(n, l) > 0.0 && environmentDensity > 0.0)
             addContribution(sum, m, n, v, l,
-                            powerHeuristic(environmentDensity, brdfSamplingPdf(n, v, l, NoV, alpha, coatAlpha, p))
+                            powerHeuristic(environmentDensity, brdfSamplingPdf(n, v, l, NoV, specular, coatAlpha, p))
                                 / environmentDensity);
     }
     sum.diffuse /= float(count);

@@ -34,6 +34,13 @@ struct MaterialInfo {
     // specularColor).
     float specular;
     vec3 specularColor;
+    // KHR_materials_anisotropy (MATERIAL_ANISOTROPY; 0 without it): the strength, the direction in
+    // the tangent plane (x along the tangent, y the bitangent) and, set by surface.frag from the
+    // tangent frame, the direction in world space (vec3(0): none, isotropic); core's
+    // MaterialInfo::anisotropy, anisotropyTangentDirection, anisotropyDirection.
+    float anisotropy;
+    vec2 anisotropyTangentDirection;
+    vec3 anisotropyDirection;
 };
 
 uniform vec4 uBaseColorFactor;
@@ -54,6 +61,13 @@ uniform float uSheenRoughness;
 #ifdef MATERIAL_SPECULAR
 uniform float uSpecularFactor;
 uniform vec3 uSpecularColorFactor;
+#endif
+#ifdef MATERIAL_ANISOTROPY
+uniform float uAnisotropyFactor;
+uniform vec2 uAnisotropyRotation; // (cos, sin) of Material::anisotropyRotationDegrees
+#ifdef HAS_ANISOTROPY_MAP
+uniform sampler2D uAnisotropyMap;
+#endif
 #endif
 uniform mat3 uUvTransform[MAP_SLOT_COUNT];
 uniform int uChannel[MAP_SLOT_COUNT];
@@ -273,6 +287,27 @@ MaterialInfo materialInputs(vec2 uv)
     m.specular = 1.0;
     m.specularColor = vec3(1.0);
 #endif
+#ifdef MATERIAL_ANISOTROPY
+    // The extension's texture: RG the direction (x 2 - 1), B the strength's multiplier; without it
+    // the direction is the tangent. The rotation turns it counter-clockwise (core
+    // shading::anisotropyDirection; a zero-length direction is taken as the tangent).
+    m.anisotropy = uAnisotropyFactor;
+    vec2 direction = vec2(1.0, 0.0);
+#ifdef HAS_ANISOTROPY_MAP
+    vec3 anisotropyTexel = texture(uAnisotropyMap, mapUv(SLOT_ANISOTROPY, uv)).rgb;
+    direction = anisotropyTexel.rg * 2.0 - 1.0;
+    m.anisotropy *= anisotropyTexel.b;
+    float directionLength = length(direction);
+    direction = directionLength > 1e-12 ? direction / directionLength : vec2(1.0, 0.0);
+#endif
+    m.anisotropy = clamp(m.anisotropy, 0.0, 1.0);
+    m.anisotropyTangentDirection = mat2(uAnisotropyRotation.x, uAnisotropyRotation.y, -uAnisotropyRotation.y,
+                                        uAnisotropyRotation.x) * direction;
+#else
+    m.anisotropy = 0.0;
+    m.anisotropyTangentDirection = vec2(1.0, 0.0);
+#endif
+    m.anisotropyDirection = vec3(0.0); // surface.frag maps the tangent-plane direction
     return m;
 }
 
@@ -303,6 +338,22 @@ vec3 mappedNormal(vec3 ng, vec4 tangent, vec4 texel, int slot, float strength)
     vec3 n = t * tn.x + b * tn.y + ng * tn.z;
     float nLength = length(n);
     return nLength > 1e-8 ? n / nLength : ng;
+}
+#endif
+
+#ifdef MATERIAL_ANISOTROPY
+// The anisotropy direction in world space: the tangent-plane direction through the frame
+// (t, b = cross(ng, t) w), unit; vec3(0) where the frame degenerates. Twin of core's
+// surfaceAnisotropyDirection.
+vec3 anisotropyDirection(vec3 ng, vec4 tangent, vec2 tangentDirection)
+{
+    vec3 t = surfaceTangent(ng, tangent);
+    if (t == vec3(0.0))
+        return vec3(0.0);
+    vec3 b = cross(ng, t) * (tangent.w < 0.0 ? -1.0 : 1.0);
+    vec3 d = t * tangentDirection.x + b * tangentDirection.y;
+    float dLength = length(d);
+    return dLength > 1e-8 ? d / dLength : vec3(0.0);
 }
 #endif
 

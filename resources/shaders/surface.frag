@@ -68,6 +68,17 @@ void main()
 #else
     vec3 n = ng;
 #endif
+#ifdef MATERIAL_ANISOTROPY
+    // KHR_materials_anisotropy: the tangent-plane direction through the surface's tangent frame;
+    // the reference view's analytic sphere takes its own tangent, the sphere mesh's dP/du, as the
+    // ground truth does (core/shading/ReferenceView.h sphereTangent).
+#ifdef ANALYTIC_SPHERE_NORMAL
+    vec4 anisotropyFrameTangent = vec4(ng.z, 0.0, -ng.x, 1.0);
+#else
+    vec4 anisotropyFrameTangent = vTangent;
+#endif
+    m.anisotropyDirection = anisotropyDirection(ng, anisotropyFrameTangent, m.anisotropyTangentDirection);
+#endif
     // Normal-mapped normals may face away from the viewer: keep n.v >= 0 consistent with core's
     // evaluate(), which returns zero below the surface.
 
@@ -140,6 +151,10 @@ void main()
     color = vec3(m.specular);
 #elif DEBUG_VIEW == DEBUG_SPECULAR_COLOR
     color = m.specularColor;
+#elif DEBUG_VIEW == DEBUG_ANISOTROPY
+    color = vec3(m.anisotropy);
+#elif DEBUG_VIEW == DEBUG_ANISOTROPY_DIRECTION
+    color = m.anisotropyDirection * 0.5 + 0.5;
 #elif DEBUG_VIEW == DEBUG_DISTRIBUTION
     color = vec3(distribution(saturate(dot(n, debugH)), debugR * debugR));
 #elif DEBUG_VIEW == DEBUG_VISIBILITY

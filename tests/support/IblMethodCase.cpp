@@ -40,6 +40,7 @@ Project iblMethodCaseProject(const IblMethodCase& c, IblMethod method, int sampl
     m.setFactor(MapSlot::ClearcoatRoughness, c.clearcoatRoughness);
     m.setSheen(c.sheenColor, c.sheenRoughness);
     m.setSpecular(c.specular, c.specularColor);
+    m.setAnisotropy(c.anisotropy, c.anisotropyRotationDegrees);
     return project;
 }
 

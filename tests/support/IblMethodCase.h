@@ -38,6 +38,9 @@ struct IblMethodCase {
     // KHR_materials_specular: the dielectric's specular strength and F0 tint (1 and white: none).
     double specular = 1.0;
     glm::dvec3 specularColor {1.0};
+    // KHR_materials_anisotropy: the strength (0: none) and the direction's turn in degrees.
+    double anisotropy = 0.0;
+    double anisotropyRotationDegrees = 0.0;
 };
 
 // The default project with the case's environment, material and light, the sphere, no debug

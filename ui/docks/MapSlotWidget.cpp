@@ -64,6 +64,7 @@ int mergeIdFor(MapSlot slot)
     case MapSlot::SheenRoughness:
     case MapSlot::Specular:
     case MapSlot::SpecularColor:
+    case MapSlot::Anisotropy:
         // The registry's row of the slot's factor: the Material dock's slider (or colour) of it
         // merges alike. (Base colour's row also holds the alpha, a row of its own.)
         for (const MaterialPropertyInfo& info : materialProperties())
@@ -121,6 +122,8 @@ QString MapSlotWidget::title(MapSlot slot)
         return tr("Specular Strength");
     case MapSlot::SpecularColor:
         return tr("Specular Colour");
+    case MapSlot::Anisotropy:
+        return tr("Anisotropy");
     }
     return {};
 }

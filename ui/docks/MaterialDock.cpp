@@ -163,6 +163,18 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     });
     addPropertySlider(MaterialProperty::SheenRoughness, sheenForm, tr("Roughness"));
     layout->addWidget(m_sheenGroup);
+    QFormLayout* anisotropyForm = nullptr;
+    m_anisotropyGroup = addLobeSection(
+        tr("Anisotropy"),
+        // On: the strength 0.5 of a lightly brushed metal; off: 0, the rotation kept.
+        [](Material& m, bool on) { m.setFactor(MapSlot::Anisotropy, on ? 0.5 : 0.0); }, content, &anisotropyForm);
+    m_anisotropyGroup->setObjectName(QStringLiteral("anisotropyGroup"));
+    m_anisotropyGroup->setToolTip(tr("KHR_materials_anisotropy: the highlight stretched along a direction of "
+                                     "the surface (the mesh's tangent, turned by the rotation, or a direction "
+                                     "texture): brushed metal, hair, satin, a vinyl record"));
+    addPropertySlider(MaterialProperty::Anisotropy, anisotropyForm, tr("Strength"));
+    addPropertySlider(MaterialProperty::AnisotropyRotation, anisotropyForm, tr("Rotation"));
+    layout->addWidget(m_anisotropyGroup);
     auto* surfaceGroup = new QGroupBox(tr("Alpha and Sides"), content);
     auto* surfaceForm = new QFormLayout(surfaceGroup);
     surfaceForm->addRow(tr("Alpha"), m_alphaMode);
@@ -511,6 +523,7 @@ void MaterialDock::onDocumentChanged(DocumentChanges changes)
     m_clearcoatGroup->setChecked(material.hasClearcoat()); // toggled: the sliders show or hide
     m_sheenGroup->setChecked(material.hasSheen());
     m_sheenColor->setLinearColor(material.sheenColor());
+    m_anisotropyGroup->setChecked(material.hasAnisotropy());
 }
 
 void MaterialDock::editShading(const QString& undoText, const std::function<void(ShadingModel&)>& change)

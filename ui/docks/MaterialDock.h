@@ -57,6 +57,7 @@ public:
     QGroupBox* clearcoatGroup() const { return m_clearcoatGroup; }
     // The Sheen section (KHR_materials_sheen): checked while the sheen's colour is not black.
     QGroupBox* sheenGroup() const { return m_sheenGroup; }
+    QGroupBox* anisotropyGroup() const { return m_anisotropyGroup; }
     // The slider of a registry property the dock shows (the lobes' sliders), or null.
     ValueSlider* propertySlider(MaterialProperty property) const;
     // Applies the selected preset (one undo step). False when none is selected.
@@ -131,6 +132,7 @@ private:
     QCheckBox* m_unlit;
     QGroupBox* m_clearcoatGroup = nullptr;
     QGroupBox* m_sheenGroup = nullptr;
+    QGroupBox* m_anisotropyGroup = nullptr;
     ColorButton* m_sheenColor = nullptr;
     ColorButton* m_specularColor = nullptr;
     std::vector<std::pair<MaterialProperty, ValueSlider*>> m_propertySliders;

@@ -102,6 +102,9 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     lobeBox(MaterialLobe::Specular, tr("Specular Maps"), "specularMapsGroup",
         tr("KHR_materials_specular's textures: the dielectric's F0 tint (RGB, sRGB) and specular strength "
            "(alpha; often one RGBA texture). Always shown: the dielectric's own reflectance."));
+    lobeBox(MaterialLobe::Anisotropy, tr("Anisotropy Map"), "anisotropyMapsGroup",
+        tr("KHR_materials_anisotropy's texture (linear): the direction in the tangent plane (red, green: "
+           "x 2 - 1) and the strength (blue). Shown while the material is anisotropic (Material panel)."));
     for (MapSlot slot : kAllMapSlots) {
         QWidget* box = m_lobeSlots[std::size_t(lobeOf(slot))];
         QWidget* owner = box ? box : content;
@@ -371,6 +374,8 @@ QString TextureMapsDock::assignFiles(const QStringList& paths)
                 part += tr(" (no coat now)");
             else if (slot == MapSlot::SheenColor && !material.hasSheen())
                 part += tr(" (no sheen now)");
+            else if (slot == MapSlot::Anisotropy && !material.hasAnisotropy())
+                part += tr(" (isotropic now)");
             clearedParts.append(part);
         }
         if (!clearedParts.isEmpty())

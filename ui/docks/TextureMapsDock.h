@@ -71,7 +71,7 @@ private:
     std::array<MapSlotWidget*, kMapSlotCount> m_slots {};
     // Each layered lobe's slots, under their heading, by MaterialLobe: shown while the lobe is on
     // (null for the core).
-    std::array<QWidget*, 4> m_lobeSlots {};
+    std::array<QWidget*, 5> m_lobeSlots {};
     ThumbnailLoader* m_thumbnails;
     QFileSystemWatcher* m_watcher;
     QTimer* m_reloadTimer;

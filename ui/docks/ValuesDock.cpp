@@ -224,6 +224,12 @@ void ValuesDock::showValue(const PickedValue& value)
             row(material, tr("Specular strength"), number(inputs.specular));
             row(material, tr("Specular colour (linear)"), components(inputs.specularColor));
         }
+        if (inputs.anisotropy > 0.0) {
+            row(material, tr("Anisotropy strength"), number(inputs.anisotropy));
+            row(material, tr("Anisotropy direction (tangent plane)"), components(inputs.anisotropyTangentDirection));
+            if (inputs.anisotropyDirection != glm::dvec3(0.0))
+                row(material, tr("Anisotropy direction (world)"), components(inputs.anisotropyDirection));
+        }
     }
     m_tree->expandAll();
     for (int i = 0; i < m_tree->topLevelItemCount(); ++i)
