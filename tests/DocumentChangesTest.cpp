@@ -126,6 +126,12 @@ std::vector<Row> rows()
     add(
         "material unlit", [](Project& p) { p.materials[1].unlit = true; }, material(1, MaterialField::Unlit));
     add(
+        "material anisotropy rotation", [](Project& p) { p.materials[1].anisotropyRotationDegrees = 45.0; },
+        material(1, MaterialField::AnisotropyRotation));
+    add(
+        "material anisotropy", [](Project& p) { p.materials[1].setFactor(MapSlot::Anisotropy, 0.5); },
+        map(1, MapSlot::Anisotropy, MapProperty::Factor));
+    add(
         "material clearcoat", [](Project& p) { p.materials[1].setFactor(MapSlot::Clearcoat, 0.5); },
         map(1, MapSlot::Clearcoat, MapProperty::Factor));
     add(

@@ -2,6 +2,8 @@
 // (docs/project-format.md, "Versioning"): tests/data/projects' version 1 and 2 files field for
 // field, and version 4's clear coat, whose two factors became two maps' factors in version 5.
 
+#include <optional>
+
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -31,6 +33,21 @@ QJsonObject fileOf(int version, const QJsonObject& material)
     return QJsonObject {{QLatin1String("format"), QLatin1String("facet-project")},
         {QLatin1String("version"), version}, {QLatin1String("materials"), QJsonArray {material}},
         {QLatin1String("currentMaterial"), 0}};
+}
+// The project of a `version` file holding `material`: where `problem` is given, the file is
+// refused with a message containing it (and *project stays empty); else it loads without a warning.
+void loadOneMaterial(
+    int version, const QJsonObject& material, const QString& problem, std::optional<Project>* project)
+{
+    std::string error, warning;
+    *project = Project::fromJson(fileOf(version, material), {}, &error, &warning);
+    if (!problem.isEmpty()) {
+        QVERIFY(!*project);
+        QVERIFY2(QString::fromStdString(error).contains(problem), error.c_str());
+        return;
+    }
+    QVERIFY2(*project, error.c_str());
+    QVERIFY2(warning.empty(), warning.c_str());
 }
 } // namespace
 
@@ -240,15 +257,10 @@ private Q_SLOTS:
         QFETCH(QString, problem);
         QJsonObject material = QJsonDocument::fromJson(fields).object();
         material[QLatin1String("name")] = QLatin1String("Layered");
-        std::string error, warning;
-        const auto project = Project::fromJson(fileOf(version, material), {}, &error, &warning);
-        if (!problem.isEmpty()) {
-            QVERIFY(!project);
-            QVERIFY2(qs(error).contains(problem), error.c_str());
+        std::optional<Project> project;
+        loadOneMaterial(version, material, problem, &project);
+        if (QTest::currentTestFailed() || !project)
             return;
-        }
-        QVERIFY2(project, error.c_str());
-        QVERIFY2(warning.empty(), warning.c_str());
         const Material& m = project->material();
         const bool written = material.size() > 1;
         const QString colorKey = lobe + QLatin1String("Color");
@@ -259,6 +271,7 @@ private Q_SLOTS:
             for (int c = 0; c < 3; ++c)
                 QCOMPARE(color[c], factor.at(c).toDouble());
         }
+        std::string error;
         const auto again = Project::fromJson(project->toJson(), {}, &error);
         QVERIFY2(again, error.c_str());
         QVERIFY(*again == *project);
@@ -301,19 +314,15 @@ private Q_SLOTS:
         QFETCH(QString, problem);
         QJsonObject material = QJsonDocument::fromJson(fields).object();
         material[QLatin1String("name")] = QLatin1String("Brushed");
-        std::string error, warning;
-        const auto project = Project::fromJson(fileOf(version, material), {}, &error, &warning);
-        if (!problem.isEmpty()) {
-            QVERIFY(!project);
-            QVERIFY2(qs(error).contains(problem), error.c_str());
+        std::optional<Project> project;
+        loadOneMaterial(version, material, problem, &project);
+        if (QTest::currentTestFailed() || !project)
             return;
-        }
-        QVERIFY2(project, error.c_str());
-        QVERIFY2(warning.empty(), warning.c_str());
         const Material& m = project->material();
         QCOMPARE(m.anisotropy(), strength);
         QCOMPARE(m.anisotropyRotationDegrees, degrees);
         QCOMPARE(m.hasAnisotropy(), strength > 0.0);
+        std::string error;
         const auto again = Project::fromJson(project->toJson(), {}, &error);
         QVERIFY2(again, error.c_str());
         QVERIFY(*again == *project);

@@ -71,6 +71,8 @@ MaterialChange materialChange(const Material& a, const Material& b)
         changed |= MaterialField::DoubleSided;
     if (a.unlit != b.unlit)
         changed |= MaterialField::Unlit;
+    if (a.anisotropyRotationDegrees != b.anisotropyRotationDegrees)
+        changed |= MaterialField::AnisotropyRotation;
     if (a.shading != b.shading)
         changed |= MaterialField::Shading;
     if (change.isEmpty() && !(a == b))
@@ -229,7 +231,8 @@ std::string materialNames(const MaterialChange& change)
         {{MaterialField::Name, "name"}, {MaterialField::Ior, "ior"},
             {MaterialField::EmissiveStrength, "emissiveStrength"}, {MaterialField::AlphaMode, "alphaMode"},
             {MaterialField::AlphaCutoff, "alphaCutoff"}, {MaterialField::DoubleSided, "doubleSided"},
-            {MaterialField::Shading, "shading"}, {MaterialField::Unlit, "unlit"}});
+            {MaterialField::Shading, "shading"}, {MaterialField::Unlit, "unlit"},
+            {MaterialField::AnisotropyRotation, "anisotropyRotationDegrees"}});
     for (MapSlot slot : kAllMapSlots)
         if (change.map(slot)) {
             if (!text.empty())
