@@ -64,17 +64,6 @@ glm::dvec3 scaledTangentNormal(const glm::dvec4& normalTexel, double strength, b
     return tn;
 }
 
-} // namespace
-
-glm::dvec3 tangentSpaceNormal(const glm::dvec4& normalTexel, double strength, bool flipGreen)
-{
-    const glm::dvec3 tn = scaledTangentNormal(normalTexel, strength, flipGreen);
-    const double length = glm::length(tn);
-    return length > 1e-8 ? tn / length : glm::dvec3(0.0, 0.0, 1.0);
-}
-
-namespace {
-
 // The surface's tangent and bitangent: the interpolated tangent made unit and perpendicular to ng
 // (Gram-Schmidt), b = cross(ng, t) times the handedness; false where the tangent is along ng.
 bool tangentFrame(const glm::dvec3& ng, const glm::dvec4& tangent, glm::dvec3* t, glm::dvec3* b)
@@ -89,6 +78,13 @@ bool tangentFrame(const glm::dvec3& ng, const glm::dvec4& tangent, glm::dvec3* t
 }
 
 } // namespace
+
+glm::dvec3 tangentSpaceNormal(const glm::dvec4& normalTexel, double strength, bool flipGreen)
+{
+    const glm::dvec3 tn = scaledTangentNormal(normalTexel, strength, flipGreen);
+    const double length = glm::length(tn);
+    return length > 1e-8 ? tn / length : glm::dvec3(0.0, 0.0, 1.0);
+}
 
 glm::dvec3 shadingNormal(const glm::dvec3& ng, const glm::dvec4& tangent, const glm::dvec4& normalTexel,
     double strength, bool flipGreen)
