@@ -10,7 +10,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <QDir>
@@ -464,12 +466,12 @@ private Q_SLOTS:
             QTest::newRow(name) << QString::fromLatin1(templateId) << emits << coated << maps
                                 << QString::fromLatin1(lobe);
         };
-        row("unreal, plain", "unreal", false, false, {"E", "CC"});
-        row("unreal, emitting", "unreal", true, false, {"CC"});
-        row("unreal, coated", "unreal", false, true, {"E"});
-        row("unreal, both", "unreal", true, true, {});
-        row("unity-hdrp, plain", "unity-hdrp", false, false, {"Emissive", "CoatMask"});
-        row("unity-hdrp, coated", "unity-hdrp", false, true, {"Emissive"});
+        row("unreal, plain", "unreal", false, false, {"E", "CC", "ANI"});
+        row("unreal, emitting", "unreal", true, false, {"CC", "ANI"});
+        row("unreal, coated", "unreal", false, true, {"E", "ANI"});
+        row("unreal, both", "unreal", true, true, {"ANI"});
+        row("unity-hdrp, plain", "unity-hdrp", false, false, {"Emissive", "CoatMask", "AnisotropyMap", "TangentMap"});
+        row("unity-hdrp, coated", "unity-hdrp", false, true, {"Emissive", "AnisotropyMap", "TangentMap"});
         row("unity-urp, emitting and coated (no coat channel)", "unity-urp", true, true, {"Occlusion"});
         row("godot, coated (no coat channel)", "godot", false, true, {"emission"});
         // glTF's coat textures: strength and roughness in one (R, G), and a coat normal map only
@@ -482,13 +484,20 @@ private Q_SLOTS:
         // specular layer's (colour RGB, strength A) only for one that is not the default.
         row("gltf-textures, sheen", "gltf-textures", false, false,
             {"emissive", "clearcoat", "clearcoatNormal", "specular", "anisotropy"}, "sheen");
-        row("unreal, sheen (no sheen channel)", "unreal", false, false, {"E", "CC"}, "sheen");
+        row("unreal, sheen (no sheen channel)", "unreal", false, false, {"E", "CC", "ANI"}, "sheen");
         row("gltf-textures, specular", "gltf-textures", false, false,
             {"emissive", "clearcoat", "clearcoatNormal", "sheen", "anisotropy"}, "specular");
         // The anisotropy's (direction RG, strength B, linear) only for an anisotropic material.
         row("gltf-textures, anisotropy", "gltf-textures", false, false,
             {"emissive", "clearcoat", "clearcoatNormal", "sheen", "specular"}, "anisotropy");
-        row("unreal, specular (no specular colour channel)", "unreal", false, false, {"E", "CC"}, "specular");
+        row("unreal, specular (no specular colour channel)", "unreal", false, false, {"E", "CC", "ANI"}, "specular");
+        // The engines' anisotropy: Unreal's one texture (direction RG, G flipped; strength B), HDRP's
+        // Anisotropy Map (strength) and Tangent Map (direction, z 0); URP and Godot have none.
+        row("unreal, anisotropy", "unreal", false, false, {"E", "CC"}, "anisotropy");
+        row("unity-hdrp, anisotropy", "unity-hdrp", false, false, {"Emissive", "CoatMask"}, "anisotropy");
+        row("unity-urp, anisotropy (no anisotropy channel)", "unity-urp", false, false, {"Occlusion", "Emission"},
+            "anisotropy");
+        row("godot, anisotropy (no anisotropy channel)", "godot", false, false, {"emission"}, "anisotropy");
     }
     void optionalOutputs()
     {
@@ -521,17 +530,31 @@ private Q_SLOTS:
         QCOMPARE(actual, skipped);
         QCOMPARE(plan->files.size() + plan->skipped.size(), exportTemplate->outputs.size());
         if (lobe == QLatin1String("anisotropy")) {
-            // RG the direction turned 60 degrees (x 0.5 + 0.5), B the strength; all linear.
+            // The direction turned 60 degrees, (0.5, 0.866) x 0.5 + 0.5, and the strength 0.6; all
+            // linear, per template.
+            const double x = 0.5 * 0.5 + 0.5;
+            const double y = std::sqrt(0.75) * 0.5 + 0.5;
+            const std::map<QString, std::vector<std::pair<QString, std::vector<double>>>> expected = {
+                {QStringLiteral("gltf-textures"), {{QStringLiteral("Plain_anisotropy.png"), {x, y, 0.6}}}},
+                {QStringLiteral("unreal"), {{QStringLiteral("T_Plain_ANI.png"), {x, 1.0 - y, 0.6}}}},
+                {QStringLiteral("unity-hdrp"),
+                    {{QStringLiteral("Plain_AnisotropyMap.png"), {0.6}},
+                        {QStringLiteral("Plain_TangentMap.png"), {x, y, 0.5}}}},
+            };
+            const auto files = expected.find(templateId);
+            if (files == expected.end())
+                return;
             TestMaterial test(false);
             test.material = plain;
             QTemporaryDir dir;
             QVERIFY2(writeSet(*plan, test, dir.path(), &error), error.c_str());
-            const std::optional<ReadBack> file = readBack(dir.filePath(QStringLiteral("Plain_anisotropy.png")));
-            QVERIFY(file && file->channels == 3 && file->values.size() == 3);
-            const double expected[3] = {0.5 * 0.5 + 0.5, std::sqrt(0.75) * 0.5 + 0.5, 0.6};
-            for (int c = 0; c < 3; ++c)
-                QVERIFY2(std::abs(file->values[std::size_t(c)] - expected[c]) < 0.5 / 255.0 + 1e-6,
-                    qPrintable(QStringLiteral("channel %1: %2").arg(c).arg(file->values[std::size_t(c)])));
+            for (const auto& [name, values] : files->second) {
+                const std::optional<ReadBack> file = readBack(dir.filePath(name));
+                QVERIFY2(file && file->values.size() == values.size(), qPrintable(name));
+                for (std::size_t c = 0; c < values.size(); ++c)
+                    QVERIFY2(std::abs(file->values[c] - values[c]) < 0.5 / 255.0 + 1e-6,
+                        qPrintable(QStringLiteral("%1 channel %2: %3").arg(name).arg(c).arg(file->values[c])));
+            }
             return;
         }
         if (!lobe.isEmpty() && templateId == QLatin1String("gltf-textures")) {
