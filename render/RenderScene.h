@@ -134,13 +134,21 @@ inline EnvironmentLighting environmentLighting(const std::shared_ptr<const IblTe
     return lighting;
 }
 
+// The average albedos E_s,avg (MaterialBrdf::dielectricSpecularAverageAlbedo) of the compensated
+// dielectric layer and of the film's Schlick layer (KHR_materials_iridescence, filmLayer), for the
+// energy-preserving coupling; 0 where unused.
+struct CouplingAlbedos {
+    double dielectric = 0.0;
+    double film = 0.0;
+};
+
 // One material of the scene with the images of its maps.
 struct RenderMaterial {
     Material material;
     std::array<RenderMapImage, kMapSlotCount> maps {}; // indexed by MapSlot
-    // E_s,avg of the compensated dielectric layer at the material's constant roughness
-    // (MaterialBrdf::dielectricSpecularAverageAlbedo): used by the energy-preserving coupling.
-    double dielectricAverageAlbedo = 0.0;
+    // E_s,avg at the material's constant roughness of the layers the energy-preserving coupling
+    // couples the base to (render/SceneFromProject couplingAlbedosFor).
+    CouplingAlbedos couplingAlbedos;
 };
 
 // What one sub-mesh of the scene's mesh shows (core/project/Project.h MeshPart).

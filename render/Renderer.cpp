@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -18,43 +17,16 @@
 #include "core/shading/MaterialInputs.h"
 #include "render/Framebuffer.h"
 #include "render/GpuMesh.h"
+#include "render/RendererDetail.h"
 #include "render/ShaderProgram.h"
-#include "render/SheenLut.h"
 #include "render/TextureCache.h"
 #include "render/ToneMapping.h"
 
 namespace facet {
 
+using namespace rendererdetail;
+
 namespace {
-
-// Texture units of the surface and background programs: the lighting's first, then the maps the
-// variant samples, one unit each in MapSlot order (a variant samples only the slots it uses, so
-// the units stay within the 16 GL 4.1 guarantees unless a material textures every slot).
-constexpr int kDfgUnit = 0;
-constexpr int kPrefilteredUnit = 1;
-constexpr int kIrradianceUnit = 2;
-constexpr int kEnvironmentUnit = 3;
-// IblMethod::Reference: the source equirect and its sampling tables.
-constexpr int kSourceRadianceUnit = 4;
-constexpr int kSourceConditionalUnit = 5;
-constexpr int kSourceMarginalUnit = 6;
-constexpr int kSourcePdfUnit = 7;
-constexpr int kMapUnit0 = 8;
-// The split sum's sheen lobe: samples of the environment cube per pixel (ibl_fis.glsl
-// sheenLobeRadiance). Measured (docs/shading.md, "Sheen"): the sheen alone on studio 12.2% relative
-// RMSE at 16, 7.8% at 32; a 1280 x 720 surface pass on llvmpipe 55 ms without a sheen, 260 ms at
-// 16, 450 ms at 32. The split sum is the window's preview while the view moves: 16.
-constexpr int kSplitSumSheenSamples = 16;
-// The split sum's anisotropic lobe: filtered samples of its own visible normals per pixel
-// (environment_lighting.glsl). Measured on studio (docs/accuracy.md, "Layered lobes"): 16 samples
-// left the split sum up to 9 points above its error on the bare base (21.5% against 12.3%), 32 at
-// or below it on every row.
-constexpr int kSplitSumAnisotropySamples = 32;
-
-constexpr std::array<const char*, kMapSlotCount> kMapSamplers
-    = {"uBaseColorMap", "uNormalMap", "uMetallicMap", "uRoughnessMap", "uOcclusionMap", "uEmissiveMap",
-        "uClearcoatMap", "uClearcoatRoughnessMap", "uClearcoatNormalMap", "uSheenColorMap",
-        "uSheenRoughnessMap", "uSpecularMap", "uSpecularColorMap", "uAnisotropyMap"};
 
 // World -> environment image frame: Environment::toImageFrame, rotateAboutY(d, -rotation), as a
 // matrix built by applying it to the basis (so the two cannot disagree on signs).
@@ -67,58 +39,6 @@ glm::mat3 environmentRotation(double rotationDegrees)
     return glm::mat3(glm::vec3(rotate({1.0, 0.0, 0.0})), glm::vec3(rotate({0.0, 1.0, 0.0})),
                      glm::vec3(rotate({0.0, 0.0, 1.0})));
 }
-
-void setMat4(const ShaderProgram& program, const char* name, const glm::dmat4& m)
-{
-    const glm::mat4 f(m);
-    program.setMat4(name, glm::value_ptr(f));
-}
-
-void setMat3(const ShaderProgram& program, const char* name, const glm::mat3& m)
-{
-    program.setMat3(name, glm::value_ptr(m));
-}
-
-void setVec3(const ShaderProgram& program, const char* name, const glm::dvec3& v)
-{
-    program.setVec3(name, float(v.x), float(v.y), float(v.z));
-}
-
-// Times one step with glFinish() on both sides when enabled.
-class StepTimer {
-public:
-    StepTimer(bool enabled, double* milliseconds)
-        : m_enabled(enabled)
-        , m_milliseconds(milliseconds)
-    {
-        if (m_enabled) {
-            glFinish();
-            m_start = std::chrono::steady_clock::now();
-        }
-    }
-    ~StepTimer()
-    {
-        if (m_enabled) {
-            glFinish();
-            *m_milliseconds
-                += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - m_start).count();
-        }
-    }
-    StepTimer(const StepTimer&) = delete;
-    StepTimer& operator=(const StepTimer&) = delete;
-
-private:
-    bool m_enabled;
-    double* m_milliseconds;
-    std::chrono::steady_clock::time_point m_start;
-};
-
-// "name[i]" without std::string concatenation (GCC 12's -Wrestrict false positive at -O3).
-struct IndexedName {
-    char text[64];
-    IndexedName(const char* name, int index) { std::snprintf(text, sizeof text, "%s[%d]", name, index); }
-    const char* c_str() const { return text; }
-};
 
 // Whether the split sum integrates `material`'s sharp lobes (environment_lighting.glsl): the
 // scene asks for them, its lighting has the cube they read and a level 1, and the material's
@@ -543,115 +463,6 @@ void Renderer::setFrameUniforms(const ShaderProgram& program, const SurfaceVaria
             ++count;
         }
         program.setInt("uLightCount", count);
-    }
-}
-
-// The material's factors, per-map options and textures (core/material/Material.h: what each slot's factor
-// means), and its face culling.
-void Renderer::setMaterialUniforms(const ShaderProgram& program, const SurfaceVariantKey& key,
-                                   const RenderMaterial& renderMaterial, const EnvironmentLighting& env)
-{
-    const Material& material = renderMaterial.material;
-    if (key.debugView == DebugView::TexelDensity) {
-        // The base colour map's size, else the largest map's; 1024 x 1024 for a material without
-        // maps (what a texture of that common size would give).
-        const auto& maps = renderMaterial.maps;
-        const MapImage* measured = maps[std::size_t(MapSlot::BaseColor)].image.get();
-        if (!measured)
-            for (const RenderMapImage& map : maps)
-                if (map.image
-                    && (!measured
-                        || double(map.image->width()) * map.image->height()
-                            > double(measured->width()) * measured->height()))
-                    measured = map.image.get();
-        program.setVec2("uTexelDensityMapSize", measured ? float(measured->width()) : 1024.0f,
-            measured ? float(measured->height()) : 1024.0f);
-    }
-    const glm::dvec4 base = material.baseColorFactor();
-    program.setVec4("uBaseColorFactor", float(base.r), float(base.g), float(base.b), float(base.a));
-    program.setFloat("uMetallicFactor", float(material.metallic()));
-    program.setFloat("uRoughnessFactor", float(material.roughness()));
-    program.setFloat("uOcclusionStrength", float(material.occlusionStrength()));
-    program.setFloat("uNormalStrength", float(material.normalStrength()));
-    program.setFloat("uIor", float(material.ior));
-    program.setFloat("uDielectricAverageAlbedo", float(renderMaterial.dielectricAverageAlbedo));
-    setVec3(program, "uEmissiveFactor", material.emissive());
-    if (hasFeature(key.features, SurfaceFeature::Clearcoat)) {
-        program.setFloat("uClearcoatFactor", float(material.clearcoat()));
-        program.setFloat("uClearcoatRoughness", float(material.clearcoatRoughness()));
-        if (hasFeature(key.features, SurfaceFeature::HasClearcoatNormalMap))
-            program.setFloat(
-                "uClearcoatNormalStrength", float(material.map(MapSlot::ClearcoatNormal).factor.x));
-    }
-    if (hasFeature(key.features, SurfaceFeature::Sheen)) {
-        setVec3(program, "uSheenColorFactor", material.sheenColor());
-        program.setFloat("uSheenRoughness", float(material.sheenRoughness()));
-    }
-    if (hasFeature(key.features, SurfaceFeature::Specular)) {
-        program.setFloat("uSpecularFactor", float(material.specular()));
-        setVec3(program, "uSpecularColorFactor", material.specularColor());
-    }
-    if (hasFeature(key.features, SurfaceFeature::Anisotropy)) {
-        program.setFloat("uAnisotropyFactor", float(material.anisotropy()));
-        const double rotation = glm::radians(material.anisotropyRotationDegrees);
-        program.setVec2("uAnisotropyRotation", float(std::cos(rotation)), float(std::sin(rotation)));
-    }
-    if (hasFeature(key.features, SurfaceFeature::AlphaMask))
-        program.setFloat("uAlphaCutoff", float(material.alphaCutoff));
-    int unit = kMapUnit0;
-    for (int i = 0; i < kMapSlotCount; ++i) {
-        const MaterialMap& map = material.maps[std::size_t(i)];
-        const glm::mat3 uv(map.uv.matrix());
-        setMat3(program, IndexedName("uUvTransform", i).c_str(), uv);
-        program.setInt(IndexedName("uChannel", i).c_str(), int(map.channel));
-        program.setInt(IndexedName("uInvert", i).c_str(), map.invert ? 1 : 0);
-        program.setInt(IndexedName("uFlipGreen", i).c_str(), map.flipGreen ? 1 : 0);
-        if (!samplesOwnTexture(key.features, MapSlot(i)))
-            continue; // a constant, or the texel of an earlier slot's fetch
-        const RenderMapImage& image = renderMaterial.maps[std::size_t(i)];
-        glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-        bool uploaded = false;
-        unsigned texture = 0;
-        {
-            StepTimer timer(m_timing, &m_frame.uploadMs);
-            texture = m_textures->get(image.image, image.path.empty() ? map.path : image.path, image.timestamp,
-                                      map.colorSpace, &uploaded);
-        }
-        if (uploaded)
-            ++m_frame.texturesUploaded;
-        glBindTexture(GL_TEXTURE_2D, texture);
-        // The map's wraps and filters (0, the texture's own state, for the default sampler).
-        glBindSampler(GLuint(unit), m_textures->samplerFor(map.sampler));
-        program.setInt(kMapSamplers[std::size_t(i)], unit);
-        ++unit;
-        program.setInt(IndexedName("uTexCoord", i).c_str(), map.texCoord);
-    }
-    if (hasFeature(key.features, SurfaceFeature::Sheen)) {
-        // The sheen's albedo table takes the unit after the maps' (the default sampler: its own
-        // LINEAR, CLAMP_TO_EDGE state).
-        glActiveTexture(GLenum(GL_TEXTURE0 + unit));
-        if (!m_sheenLut.isValid())
-            m_sheenLut = makeSheenLut();
-        glBindTexture(GL_TEXTURE_2D, m_sheenLut.id());
-        glBindSampler(GLuint(unit), 0);
-        program.setInt("uSheenLut", unit);
-        program.setFloat("uSheenLutSize", float(sheenLutSize()));
-        ++unit;
-    }
-    // The split-sum table of the material's own visibility term (render() checked it is there).
-    const DfgLutBinding* dfg = env.dfgLutFor(material.shading.visibility);
-    glActiveTexture(GL_TEXTURE0 + kDfgUnit);
-    glBindTexture(GL_TEXTURE_2D, dfg ? dfg->texture : 0);
-    program.setInt("uDfgLut", kDfgUnit);
-    program.setFloat("uDfgSize", float(std::max(dfg ? dfg->size : 1, 1)));
-    // Two-sided materials show the inside of open meshes (the shader flips the normal); glTF's
-    // single-sided ones cull the faces seen from behind (counter-clockwise is the front).
-    if (material.doubleSided) {
-        glDisable(GL_CULL_FACE);
-    } else {
-        glEnable(GL_CULL_FACE);
-        glCullFace(GL_BACK);
-        glFrontFace(GL_CCW);
     }
 }
 

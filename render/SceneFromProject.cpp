@@ -18,30 +18,40 @@ namespace facet {
 namespace {
 
 // E_s,avg of the material's constant dielectric layer (its IOR and KHR_materials_specular factors
-// at its roughness factor), as MaterialBrdf's coupling takes it.
-double averageAlbedo(const MaterialBrdf& brdf, const Material& material)
+// at its roughness factor) and of its film's Schlick layer (the film's index and thickness without
+// a texture), as MaterialBrdf's coupling takes them.
+CouplingAlbedos averageAlbedos(const MaterialBrdf& brdf, const Material& material)
 {
     MaterialInfo info;
     info.ior = material.ior;
     info.specular = material.specular();
     info.specularColor = material.specularColor();
+    info.iridescence = material.iridescence();
+    info.iridescenceIor = material.iridescenceIor;
+    info.iridescenceThickness = material.iridescenceThicknessMaximum();
     const DielectricReflectance layer = dielectricReflectance(info);
-    return brdf.dielectricSpecularAverageAlbedo(layer.maxF0(), material.roughness(), layer.f90);
+    CouplingAlbedos albedos;
+    albedos.dielectric = brdf.dielectricSpecularAverageAlbedo(layer.maxF0(), material.roughness(), layer.f90);
+    if (material.hasIridescence()) {
+        const DielectricReflectance film = filmLayer(info, layer.f0);
+        albedos.film = brdf.dielectricSpecularAverageAlbedo(film.maxF0(), material.roughness(), film.f90);
+    }
+    return albedos;
 }
 
 } // namespace
 
-double dielectricAverageAlbedoFor(const Material& material, IblMethod method)
+CouplingAlbedos couplingAlbedosFor(const Material& material, IblMethod method)
 {
     const ShadingModel& shading = material.shading;
     if (shading.coupling != DielectricCoupling::EnergyPreserving)
-        return 0.0;
+        return {};
     if (method == IblMethod::Reference) {
         // The ground truth's own albedo table (core/shading/GroundTruth), so the reference method
         // integrates the same BRDF as `facet render --spp`.
         const GroundTruthSettings truth;
         const MaterialBrdf brdf(shading, *albedoTable(truth.albedoTableSize, truth.albedoTableSamples, shading.visibility));
-        return averageAlbedo(brdf, material);
+        return averageAlbedos(brdf, material);
     }
     // One 32 x 32 table per visibility term for the process: E_s,avg is an integral over n.v, so
     // the table's resolution is ample (docs/energy.md).
@@ -56,7 +66,7 @@ double dielectricAverageAlbedoFor(const Material& material, IblMethod method)
         table = slot;
     }
     const MaterialBrdf brdf(shading, *table);
-    return averageAlbedo(brdf, material);
+    return averageAlbedos(brdf, material);
 }
 
 IblSettings dfgSettingsFor(const IblSettings& settings, IblMethod method)
@@ -94,7 +104,7 @@ RenderScene sceneFromProject(const Project& project, const ProjectAssets& assets
     for (std::size_t m = 0; m < project.materials.size(); ++m) {
         RenderMaterial& material = scene.materials[m];
         material.material = project.materials[m];
-        material.dielectricAverageAlbedo = dielectricAverageAlbedoFor(material.material, method);
+        material.couplingAlbedos = couplingAlbedosFor(material.material, method);
         if (m >= assets.maps.size())
             continue; // not loaded (yet): the factors alone
         for (MapSlot slot : kAllMapSlots) {

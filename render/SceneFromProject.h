@@ -66,9 +66,9 @@ IblSettings dfgSettingsFor(const IblSettings& settings, IblMethod method);
 bool addDfgTables(IblPrecompute& precompute, const IblSettings& settings, RenderScene& scene, IblStats* stats,
     std::string* error);
 
-// The dielectric layer's average albedo E_s,avg of `material` (0 unless it uses the
-// energy-preserving coupling); cheap after the first call per visibility term. Reference frames
-// take it from the ground truth's albedo table, the others from a 32^2 x 512 one.
-double dielectricAverageAlbedoFor(const Material& material, IblMethod method = IblMethod::SplitSum);
+// The average albedos E_s,avg of the layers `material`'s energy-preserving coupling couples its
+// base to (zero unless it uses that coupling); cheap after the first call per visibility term.
+// Reference frames take them from the ground truth's albedo table, the others from a 32^2 x 512 one.
+CouplingAlbedos couplingAlbedosFor(const Material& material, IblMethod method = IblMethod::SplitSum);
 
 } // namespace facet

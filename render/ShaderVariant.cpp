@@ -52,6 +52,10 @@ constexpr std::array<const char*, kSurfaceFeatureBits> kFeatureDefines = {
     "SPECULAR_TEXEL_FROM_SPECULAR_COLOR",
     "MATERIAL_ANISOTROPY",
     "HAS_ANISOTROPY_MAP",
+    "MATERIAL_IRIDESCENCE",
+    "HAS_IRIDESCENCE_MAP",
+    "HAS_IRIDESCENCE_THICKNESS_MAP",
+    "IRIDESCENCE_THICKNESS_TEXEL_FROM_IRIDESCENCE",
 };
 
 } // namespace
@@ -85,6 +89,10 @@ SurfaceFeature mapFeature(MapSlot slot)
         return SurfaceFeature::HasSpecularColorMap;
     case MapSlot::Anisotropy:
         return SurfaceFeature::HasAnisotropyMap;
+    case MapSlot::Iridescence:
+        return SurfaceFeature::HasIridescenceMap;
+    case MapSlot::IridescenceThickness:
+        return SurfaceFeature::HasIridescenceThicknessMap;
     case MapSlot::Emissive:
         break;
     }
@@ -127,7 +135,10 @@ bool textureMatters(const Material& material, MapSlot slot)
     case MapSlot::SheenColor:
     case MapSlot::Specular:
     case MapSlot::Anisotropy:
+    case MapSlot::Iridescence:
         return true; // usesSlot: the factor is above 0 (the specular layer: it is on)
+    case MapSlot::IridescenceThickness: // mix(minimum, maximum, texel): nothing to pick between
+        return material.iridescenceThicknessMinimum != material.iridescenceThicknessMaximum();
     case MapSlot::SpecularColor:
         return material.specular() != 0.0; // a tint of no reflection is none
     case MapSlot::SheenRoughness:
@@ -180,6 +191,8 @@ SurfaceFeatures surfaceFeaturesFor(const Material& material, const bool (&hasMap
             f = f | SurfaceFeature::Specular;
         if (material.hasAnisotropy())
             f = f | SurfaceFeature::Anisotropy;
+        if (material.hasIridescence())
+            f = f | SurfaceFeature::Iridescence;
     }
     return f;
 }
@@ -213,6 +226,8 @@ SurfaceFeatures sharedTexelFeatures(const Material& material, SurfaceFeatures fe
         f = f | SurfaceFeature::SheenRoughnessTexelFromSheenColor;
     if (same(MapSlot::SpecularColor, MapSlot::Specular))
         f = f | SurfaceFeature::SpecularTexelFromSpecularColor;
+    if (same(MapSlot::Iridescence, MapSlot::IridescenceThickness))
+        f = f | SurfaceFeature::IridescenceThicknessTexelFromIridescence;
     return f;
 }
 
@@ -231,6 +246,8 @@ bool samplesOwnTexture(SurfaceFeatures features, MapSlot slot)
         return !hasFeature(features, SurfaceFeature::SheenRoughnessTexelFromSheenColor);
     if (slot == MapSlot::Specular)
         return !hasFeature(features, SurfaceFeature::SpecularTexelFromSpecularColor);
+    if (slot == MapSlot::IridescenceThickness)
+        return !hasFeature(features, SurfaceFeature::IridescenceThicknessTexelFromIridescence);
     return true;
 }
 

@@ -111,8 +111,17 @@ enum class SurfaceFeature : uint64_t {
     Anisotropy = 1ull << 40,
     // HAS_ANISOTROPY_MAP: its texture (direction RG, strength B), only with Anisotropy.
     HasAnisotropyMap = 1ull << 41,
+    // MATERIAL_IRIDESCENCE: KHR_materials_iridescence's thin film over the base's specular Fresnel
+    // (Material::hasIridescence: a factor above 0).
+    Iridescence = 1ull << 42,
+    // Its maps (only with Iridescence): HAS_IRIDESCENCE_MAP (R), HAS_IRIDESCENCE_THICKNESS_MAP (G).
+    HasIridescenceMap = 1ull << 43,
+    HasIridescenceThicknessMap = 1ull << 44,
+    // IRIDESCENCE_THICKNESS_TEXEL_FROM_IRIDESCENCE: the extension's packing (strength R, thickness
+    // G of one texture) read with one fetch.
+    IridescenceThicknessTexelFromIridescence = 1ull << 45,
 };
-inline constexpr int kSurfaceFeatureBits = 42;
+inline constexpr int kSurfaceFeatureBits = 46;
 static_assert(kSurfaceFeatureBits <= 64);
 
 using SurfaceFeatures = uint64_t;

@@ -132,6 +132,17 @@ std::vector<Row> rows()
         "material anisotropy", [](Project& p) { p.materials[1].setFactor(MapSlot::Anisotropy, 0.5); },
         map(1, MapSlot::Anisotropy, MapProperty::Factor));
     add(
+        "material iridescence ior", [](Project& p) { p.materials[1].iridescenceIor = 1.8; },
+        material(1, MaterialField::IridescenceIor));
+    add(
+        "material iridescence thickness minimum",
+        [](Project& p) { p.materials[1].iridescenceThicknessMinimum = 250.0; },
+        material(1, MaterialField::IridescenceThicknessMinimum));
+    add(
+        "material iridescence thickness (the map's factor)",
+        [](Project& p) { p.materials[1].setFactor(MapSlot::IridescenceThickness, 650.0); },
+        map(1, MapSlot::IridescenceThickness, MapProperty::Factor));
+    add(
         "material clearcoat", [](Project& p) { p.materials[1].setFactor(MapSlot::Clearcoat, 0.5); },
         map(1, MapSlot::Clearcoat, MapProperty::Factor));
     add(

@@ -173,7 +173,8 @@ private Q_SLOTS:
         for (const char* feature : {"constants", "every map", "shared transform", "different transforms",
                  "ior", "clearcoat", "clearcoat, smooth", "unlit, clearcoat", "clearcoat maps",
                  "clearcoat maps, coat off", "sheen", "sheen maps", "sheen maps, sheen off", "unlit, sheen",
-                 "clearcoat and sheen maps", "specular", "specular maps", "anisotropy", "anisotropy map", "mask",
+                 "clearcoat and sheen maps", "specular", "specular maps", "anisotropy", "anisotropy map", "iridescence",
+                 "iridescence maps", "mask",
                  "blend", "single-sided",
                  "unlit", "two of one name", "samplers", "second UV set", "second UV set, mesh without it"}) {
             QTest::newRow(qPrintable(QStringLiteral("%1, .gltf").arg(QLatin1String(feature))))
@@ -243,6 +244,17 @@ private Q_SLOTS:
                 // rotation, which the extension keeps.
                 writeVariedPng(dir.filePath(QStringLiteral("anisotropy.png")), 11, 3);
                 m.map(MapSlot::Anisotropy).path = dir.filePath(QStringLiteral("anisotropy.png")).toStdString();
+            }
+            if (feature.startsWith(QStringLiteral("iridescence")))
+                m.setIridescence(0.8, 1.6, 150.0, 550.0);
+            if (feature == QStringLiteral("iridescence maps")) {
+                // The strength from one file's red and the thickness from another's green: baked
+                // into one texture (R, G), the factor 1, the index and thickness range kept.
+                writeVariedPng(dir.filePath(QStringLiteral("iridescence.png")), 12, 3);
+                writeVariedPng(dir.filePath(QStringLiteral("iridescencethickness.png")), 13, 3);
+                m.map(MapSlot::Iridescence).path = dir.filePath(QStringLiteral("iridescence.png")).toStdString();
+                m.map(MapSlot::IridescenceThickness).path
+                    = dir.filePath(QStringLiteral("iridescencethickness.png")).toStdString();
             }
             if (feature.startsWith(QStringLiteral("clearcoat maps"))
                 || feature == QStringLiteral("clearcoat and sheen maps")) {
@@ -344,6 +356,8 @@ private Q_SLOTS:
                 feature.startsWith(QStringLiteral("specular")));
             QCOMPARE(used.contains(QStringLiteral("KHR_materials_anisotropy")),
                 feature.startsWith(QStringLiteral("anisotropy")));
+            QCOMPARE(used.contains(QStringLiteral("KHR_materials_iridescence")),
+                feature.startsWith(QStringLiteral("iridescence")));
             // The sheen's one texture: colour and roughness read the same image.
             const QJsonObject sheen = json.value(QStringLiteral("materials"))
                                           .toArray()
@@ -426,6 +440,13 @@ private Q_SLOTS:
             // The anisotropy's strength and rotation stay parameters, baked texture or not.
             QVERIFY(std::abs(b.anisotropy() - (a.unlit ? 0.0 : a.anisotropy())) < 1e-9);
             QVERIFY(std::abs(b.anisotropyRotationDegrees - (a.unlit ? 0.0 : a.anisotropyRotationDegrees)) < 1e-9);
+            // The film's factor, index and range stay parameters, baked texture or not.
+            if (!a.unlit && a.hasIridescence()) {
+                QCOMPARE(b.iridescence(), a.iridescence());
+                QCOMPARE(b.iridescenceIor, a.iridescenceIor);
+                QCOMPARE(b.iridescenceThicknessMinimum, a.iridescenceThicknessMinimum);
+                QCOMPARE(b.iridescenceThicknessMaximum(), a.iridescenceThicknessMaximum());
+            }
             // The sheen likewise.
             const bool sheened = !a.unlit && a.hasSheen();
             const bool sheenBaked = sheened
@@ -482,7 +503,12 @@ private Q_SLOTS:
                         worstScalar = std::max({worstScalar, std::abs(ia.clearcoat - ib.clearcoat),
                             std::abs(ia.clearcoatRoughness - ib.clearcoatRoughness),
                             std::abs(ia.sheenRoughness - ib.sheenRoughness),
-                            std::abs(ia.specular - ib.specular), std::abs(ia.anisotropy - ib.anisotropy)});
+                            std::abs(ia.specular - ib.specular), std::abs(ia.anisotropy - ib.anisotropy),
+                            std::abs(ia.iridescence - ib.iridescence),
+                            // the thickness as its texture holds it: a fraction of the range
+                            std::abs(ia.iridescenceThickness - ib.iridescenceThickness)
+                                / std::max(std::abs(a.iridescenceThicknessMaximum() - a.iridescenceThicknessMinimum),
+                                    1.0)});
                     // The anisotropy direction, a unit vector stored as d x 0.5 + 0.5 in 8 bits.
                     if (!a.unlit)
                         worstNormal = std::max(

@@ -529,6 +529,89 @@ private Q_SLOTS:
         else
             QVERIFY2(QString::fromStdString(warnings).contains(warning), warnings.c_str());
     }
+
+    // KHR_materials_iridescence: factor (default 0: no film), index (1.3) and thickness range
+    // (100 to 400 nm; the minimum may exceed the maximum); the strength its texture's R, the
+    // thickness its own texture's G, both linear; values beyond the ranges clamped and fields of the
+    // wrong type refused, each with a note naming the field.
+    void iridescence_data()
+    {
+        QTest::addColumn<QByteArray>("iridescence"); // the extension's object
+        QTest::addColumn<double>("factor");
+        QTest::addColumn<double>("ior");
+        QTest::addColumn<double>("minimum");
+        QTest::addColumn<double>("maximum");
+        QTest::addColumn<QString>("strengthFile"); // the textures', or empty
+        QTest::addColumn<QString>("thicknessFile");
+        QTest::addColumn<QString>("warning"); // part of the notes, or empty for none
+        const auto row = [](const char* name, const char* json, double factor, double ior, double minimum,
+                             double maximum, const char* strengthFile, const char* thicknessFile,
+                             const char* warning) {
+            QTest::newRow(name) << QByteArray(json) << factor << ior << minimum << maximum
+                                << QString::fromLatin1(strengthFile) << QString::fromLatin1(thicknessFile)
+                                << QString::fromLatin1(warning);
+        };
+        row("every field", R"({"iridescenceFactor": 0.7, "iridescenceIor": 1.8, "iridescenceThicknessMinimum": 200,
+            "iridescenceThicknessMaximum": 650})",
+            0.7, 1.8, 200.0, 650.0, "", "", "");
+        row("empty (the extension's defaults)", "{}", 0.0, 1.3, 100.0, 400.0, "", "", "");
+        row("minimum above the maximum", R"({"iridescenceFactor": 1, "iridescenceThicknessMinimum": 900,
+            "iridescenceThicknessMaximum": 300})",
+            1.0, 1.3, 900.0, 300.0, "", "", "");
+        row("one texture for both", R"({"iridescenceFactor": 1, "iridescenceTexture": {"index": 0},
+            "iridescenceThicknessTexture": {"index": 0}})",
+            1.0, 1.3, 100.0, 400.0, "a.png", "a.png", "");
+        row("a thickness texture alone", R"({"iridescenceFactor": 0.5, "iridescenceThicknessTexture": {"index": 1}})",
+            0.5, 1.3, 100.0, 400.0, "", "b.png", "");
+        row("factor a string", R"({"iridescenceFactor": "oily"})", 0.0, 1.3, 100.0, 400.0, "", "",
+            "KHR_materials_iridescence.iridescenceFactor is not a number: 0 used");
+        row("factor above 1", R"({"iridescenceFactor": 2})", 1.0, 1.3, 100.0, 400.0, "", "",
+            "KHR_materials_iridescence.iridescenceFactor 2 is outside Facet's [0, 1]: 1 used");
+        row("index below 1", R"({"iridescenceFactor": 1, "iridescenceIor": 0.5})", 1.0, 1.0, 100.0, 400.0, "", "",
+            "KHR_materials_iridescence.iridescenceIor 0.5 is outside Facet's [1, 5]: 1 used");
+        row("negative thickness", R"({"iridescenceFactor": 1, "iridescenceThicknessMaximum": -5})", 1.0, 1.3, 100.0,
+            0.0, "", "", "KHR_materials_iridescence.iridescenceThicknessMaximum -5 is outside Facet's");
+        row("thickness texture that does not exist",
+            R"({"iridescenceFactor": 1, "iridescenceThicknessTexture": {"index": 9}})", 1.0, 1.3, 100.0, 400.0, "",
+            "", "KHR_materials_iridescence.iridescenceThicknessTexture names texture 9, which does not exist");
+    }
+    void iridescence()
+    {
+        QFETCH(QByteArray, iridescence);
+        QFETCH(double, factor);
+        QFETCH(double, ior);
+        QFETCH(double, minimum);
+        QFETCH(double, maximum);
+        QFETCH(QString, strengthFile);
+        QFETCH(QString, thicknessFile);
+        QFETCH(QString, warning);
+        GltfWriter w;
+        QVERIFY(addTwoRgbaTextures(w));
+        std::string error, warnings;
+        const auto asset = importWithExtension(
+            w, "Film", "KHR_materials_iridescence", iridescence, QStringLiteral("film.gltf"), &error, &warnings);
+        QVERIFY2(asset, error.c_str());
+        const Material& m = asset->materials.at(0);
+        std::string problem;
+        QVERIFY2(m.validate(&problem), problem.c_str());
+        QVERIFY2(near(m.iridescence(), factor), qPrintable(QString::number(m.iridescence())));
+        QVERIFY2(near(m.iridescenceIor, ior), qPrintable(QString::number(m.iridescenceIor)));
+        QVERIFY2(near(m.iridescenceThicknessMinimum, minimum), qPrintable(QString::number(m.iridescenceThicknessMinimum)));
+        QVERIFY2(near(m.iridescenceThicknessMaximum(), maximum),
+            qPrintable(QString::number(m.iridescenceThicknessMaximum())));
+        const MaterialMap& strength = m.map(MapSlot::Iridescence);
+        const MaterialMap& thickness = m.map(MapSlot::IridescenceThickness);
+        QCOMPARE(QString::fromStdString(strength.path), strengthFile.isEmpty() ? QString() : path(strengthFile));
+        QCOMPARE(QString::fromStdString(thickness.path), thicknessFile.isEmpty() ? QString() : path(thicknessFile));
+        QCOMPARE(strength.channel, MapChannel::R);
+        QCOMPARE(thickness.channel, MapChannel::G);
+        QCOMPARE(strength.colorSpace, ColorEncoding::Linear);
+        QCOMPARE(thickness.colorSpace, ColorEncoding::Linear);
+        if (warning.isEmpty())
+            QVERIFY2(warnings.empty(), warnings.c_str());
+        else
+            QVERIFY2(QString::fromStdString(warnings).contains(warning), warnings.c_str());
+    }
 };
 
 QTEST_GUILESS_MAIN(GltfExtensionsTest)

@@ -58,6 +58,8 @@ private Q_SLOTS:
         Material material = m_document->project().material();
         material.setClearcoat(0.0, 0.0);
         material.setSheen(glm::dvec3(0.0), 0.0);
+        material.setFactor(MapSlot::Anisotropy, 0.0);
+        material.setFactor(MapSlot::Iridescence, 0.0);
         material.setSpecular(1.0, glm::dvec3(1.0));
         material.setBaseColor(glm::dvec3(0.6, 0.05, 0.02));
         material.setFactor(MapSlot::Roughness, 0.7);
@@ -82,6 +84,10 @@ private Q_SLOTS:
         // dielectric's few percent of the light (measured 0.88 of 255 on average).
         QTest::newRow("anisotropy") << int(MaterialLobe::Anisotropy) << int(MaterialProperty::Anisotropy) << 0.5
                                     << QStringLiteral("Anisotropy On") << 0.5;
+        // Iridescence turns a full film on (1.3, 400 nm): the plastic's reflection takes the film's
+        // colours.
+        QTest::newRow("iridescence") << int(MaterialLobe::Iridescence) << int(MaterialProperty::Iridescence) << 1.0
+                                     << QStringLiteral("Iridescence On") << 0.5;
     }
     void turningALobeOnIsOneStep()
     {
@@ -93,6 +99,7 @@ private Q_SLOTS:
         MaterialDock* dock = m_window->materialDock();
         QGroupBox* group = MaterialLobe(lobe) == MaterialLobe::Clearcoat ? dock->clearcoatGroup()
             : MaterialLobe(lobe) == MaterialLobe::Sheen                  ? dock->sheenGroup()
+            : MaterialLobe(lobe) == MaterialLobe::Iridescence            ? dock->iridescenceGroup()
                                                                          : dock->anisotropyGroup();
         ValueSlider* slider = dock->propertySlider(MaterialProperty(control));
         QVERIFY(group && slider);
@@ -136,6 +143,12 @@ private Q_SLOTS:
         QTest::newRow("specular strength") << int(MaterialProperty::Specular) << 0.5;
         QTest::newRow("anisotropy strength") << int(MaterialProperty::Anisotropy) << 0.5;
         QTest::newRow("anisotropy rotation (degrees)") << int(MaterialProperty::AnisotropyRotation) << 0.0;
+        QTest::newRow("iridescence strength") << int(MaterialProperty::Iridescence) << 0.5;
+        QTest::newRow("iridescence film ior") << int(MaterialProperty::IridescenceIor) << 1.3;
+        QTest::newRow("iridescence thickness (nm; the slider ends at 1200)")
+            << int(MaterialProperty::IridescenceThickness) << 400.0;
+        QTest::newRow("iridescence thickness minimum (nm)") << int(MaterialProperty::IridescenceThicknessMinimum)
+                                                            << 100.0;
         QTest::newRow("ior (the slider ends at 3, the spin box at 5)") << int(MaterialProperty::Ior) << 2.0;
         QTest::newRow("alpha cutoff (mask)") << int(MaterialProperty::AlphaCutoff) << 0.5;
     }
@@ -148,6 +161,7 @@ private Q_SLOTS:
         material.setClearcoat(0.5, 0.5);
         material.setSheen(glm::dvec3(0.5), 0.5);
         material.setAnisotropy(0.5, 0.0);
+        material.setIridescence(0.5, 1.3, 100.0, 400.0);
         material.alphaMode = AlphaMode::Mask;
         setScalar(material, MaterialProperty(property), start);
         m_document->setMaterial(material, QStringLiteral("test setup"));

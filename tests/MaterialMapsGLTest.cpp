@@ -100,6 +100,14 @@ const std::vector<ViewCheck>& viewChecks()
         {"anisotropy-direction",
             [](const MaterialInfo& m, const glm::dvec3&) { return m.anisotropyDirection * 0.5 + 0.5; },
             MaterialLobe::Anisotropy},
+        {"iridescence", [](const MaterialInfo& m, const glm::dvec3&) { return glm::dvec3(m.iridescence); },
+            MaterialLobe::Iridescence},
+        // The film's thickness / 1000 nm (0 without a film).
+        {"iridescence-thickness",
+            [](const MaterialInfo& m, const glm::dvec3&) {
+                return glm::dvec3(m.iridescence > 0.0 ? m.iridescenceThickness / 1000.0 : 0.0);
+            },
+            MaterialLobe::Iridescence},
     };
     return checks;
 }

@@ -151,7 +151,14 @@ private Q_SLOTS:
         QTest::newRow("anisotropy") << P::Anisotropy << "anisotropy.factor" << 0.0 << 1.0 << "anisotropy";
         QTest::newRow("anisotropy rotation") << P::AnisotropyRotation << "anisotropyRotationDegrees" << -180.0
                                              << 180.0 << "anisotropy-rotation";
-        QCOMPARE(kMaterialPropertyCount, 19); // a new property adds its golden row here
+        QTest::newRow("iridescence") << P::Iridescence << "iridescence.factor" << 0.0 << 1.0 << "iridescence";
+        QTest::newRow("iridescence ior") << P::IridescenceIor << "iridescenceIor" << 1.0 << 5.0 << "iridescence-ior";
+        QTest::newRow("iridescence thickness") << P::IridescenceThickness << "iridescenceThickness.factor" << 0.0
+                                               << 100000.0 << "iridescence-thickness";
+        QTest::newRow("iridescence thickness minimum") << P::IridescenceThicknessMinimum
+                                                       << "iridescenceThicknessMinimum" << 0.0 << 100000.0
+                                                       << "iridescence-thickness-minimum";
+        QCOMPARE(kMaterialPropertyCount, 23); // a new property adds its golden row here
     }
 
     void goldenRows()
@@ -208,7 +215,7 @@ private Q_SLOTS:
             QCOMPARE(scalarOf(project.material(), *axis.property), value);
             QVERIFY(project.material() == expected);
         }
-        QCOMPARE(materialAxes, 14);
+        QCOMPARE(materialAxes, 17);
     }
 };
 

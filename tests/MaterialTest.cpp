@@ -79,7 +79,7 @@ private Q_SLOTS:
     {
         const char* const expected[] = {"baseColor", "normal", "metallic", "roughness", "occlusion",
             "emissive", "clearcoat", "clearcoatRoughness", "clearcoatNormal", "sheenColor", "sheenRoughness",
-            "specular", "specularColor", "anisotropy"};
+            "specular", "specularColor", "anisotropy", "iridescence", "iridescenceThickness"};
         static_assert(std::size(expected) == kAllMapSlots.size());
         int i = 0;
         for (MapSlot slot : kAllMapSlots) {

@@ -122,7 +122,8 @@ private Q_SLOTS:
             v2[QLatin1String("version")] = 2;
             // Optional fields added since, without a version (docs/project-format.md): "unlit",
             // the view's "keepUnits" and "texelDensityTarget"; the coat's maps (versions 4, 5) and
-            // the sheen's (version 6), the specular layer's (version 7) and the anisotropy's (version 8).
+            // the sheen's (version 6), the specular layer's (version 7), the anisotropy's (version 8)
+            // and the film's (version 9).
             QJsonObject view = v2[QLatin1String("view")].toObject();
             view.remove(QLatin1String("keepUnits"));
             view.remove(QLatin1String("texelDensityTarget"));
@@ -132,7 +133,8 @@ private Q_SLOTS:
                 QJsonObject m = each.toObject();
                 m.remove(QLatin1String("unlit"));
                 for (const char* key : {"clearcoat", "clearcoatRoughness", "clearcoatNormal", "sheenColor",
-                         "sheenRoughness", "specular", "specularColor", "anisotropy", "anisotropyRotationDegrees"})
+                         "sheenRoughness", "specular", "specularColor", "anisotropy", "anisotropyRotationDegrees",
+                         "iridescence", "iridescenceThickness", "iridescenceIor", "iridescenceThicknessMinimum"})
                     m.remove(QLatin1String(key));
                 each = m;
             }
@@ -322,6 +324,68 @@ private Q_SLOTS:
         QCOMPARE(m.anisotropy(), strength);
         QCOMPARE(m.anisotropyRotationDegrees, degrees);
         QCOMPARE(m.hasAnisotropy(), strength > 0.0);
+        std::string error;
+        const auto again = Project::fromJson(project->toJson(), {}, &error);
+        QVERIFY2(again, error.c_str());
+        QVERIFY(*again == *project);
+    }
+
+    // Version 9: the film's maps and the material's index and minimum thickness. They read and
+    // save back; a version 8 file has none (no film); values out of range, of the wrong type or
+    // channel are refused naming the field.
+    void iridescence_data()
+    {
+        QTest::addColumn<int>("version");
+        QTest::addColumn<QByteArray>("fields");
+        QTest::addColumn<double>("strength");
+        QTest::addColumn<double>("ior");
+        QTest::addColumn<double>("minimum");
+        QTest::addColumn<double>("maximum");
+        QTest::addColumn<QString>("problem"); // part of the refusal, or empty
+        const auto row = [](const char* name, int version, const char* fields, double strength, double ior,
+                             double minimum, double maximum, const char* problem) {
+            QTest::newRow(name) << version << QByteArray(fields) << strength << ior << minimum << maximum
+                                << QString::fromLatin1(problem);
+        };
+        row("version 9 film", 9, R"({"iridescence": {"factor": 0.8}, "iridescenceIor": 1.8,
+            "iridescenceThicknessMinimum": 250, "iridescenceThickness": {"factor": 650}})",
+            0.8, 1.8, 250.0, 650.0, "");
+        row("version 9 film maps", 9, R"({"iridescence": {"factor": 1, "texture": "/t/film.png"},
+            "iridescenceThickness": {"factor": 500, "texture": "/t/film.png"}})",
+            1.0, 1.3, 100.0, 500.0, "");
+        row("version 8, no film", 8, "{}", 0.0, 1.3, 100.0, 400.0, "");
+        row("strength above 1", 9, R"({"iridescence": {"factor": 1.5}})", 0.0, 0.0, 0.0, 0.0,
+            "materials[0].iridescence.factor: 1.5 is outside [0, 1]");
+        row("index below 1", 9, R"({"iridescenceIor": 0.5})", 0.0, 0.0, 0.0, 0.0,
+            "materials[0].iridescenceIor: 0.5 is outside [1, 5]");
+        row("negative minimum", 9, R"({"iridescenceThicknessMinimum": -1})", 0.0, 0.0, 0.0, 0.0,
+            "materials[0].iridescenceThicknessMinimum: -1 is outside [0, 100000]");
+        row("thickness a string", 9, R"({"iridescenceThickness": {"factor": "thin"}})", 0.0, 0.0, 0.0, 0.0,
+            "materials[0].iridescenceThickness.factor");
+        row("the thickness map reads one channel", 9, R"({"iridescenceThickness": {"factor": 400, "channel": "rgb"}})",
+            0.0, 0.0, 0.0, 0.0, "iridescenceThickness.channel: a iridescenceThickness map reads one channel");
+    }
+    void iridescence()
+    {
+        QFETCH(int, version);
+        QFETCH(QByteArray, fields);
+        QFETCH(double, strength);
+        QFETCH(double, ior);
+        QFETCH(double, minimum);
+        QFETCH(double, maximum);
+        QFETCH(QString, problem);
+        QJsonObject material = QJsonDocument::fromJson(fields).object();
+        material[QLatin1String("name")] = QLatin1String("Film");
+        std::optional<Project> project;
+        loadOneMaterial(version, material, problem, &project);
+        if (QTest::currentTestFailed() || !project)
+            return;
+        const Material& m = project->material();
+        QCOMPARE(m.iridescence(), strength);
+        QCOMPARE(m.iridescenceIor, ior);
+        QCOMPARE(m.iridescenceThicknessMinimum, minimum);
+        QCOMPARE(m.iridescenceThicknessMaximum(), maximum);
+        QCOMPARE(m.hasIridescence(), strength > 0.0);
         std::string error;
         const auto again = Project::fromJson(project->toJson(), {}, &error);
         QVERIFY2(again, error.c_str());

@@ -318,6 +318,27 @@ void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem_data()
         SurfaceFeature::HasAnisotropyMap, true, "uAnisotropyMap");
     row("anisotropy map, unlit", "anisotropy", 0.5, true, anisotropy, 0.0, SurfaceFeature::HasAnisotropyMap,
         false, "uAnisotropyMap");
+    // Iridescence: on while its strength is above 0; its maps only then.
+    row("iridescence 0 (default)", "iridescence", 0.0, false, none, 0.0, SurfaceFeature::Iridescence, false,
+        "uIridescenceFactor");
+    row("iridescence 1", "iridescence", 1.0, false, none, 0.0, SurfaceFeature::Iridescence, true,
+        "uIridescenceFactor");
+    row("iridescence 1, its thickness range", "iridescence", 1.0, false, none, 0.0, SurfaceFeature::Iridescence,
+        true, "uIridescenceThickness");
+    row("iridescence 1, unlit", "iridescence", 1.0, true, none, 0.0, SurfaceFeature::Iridescence, false,
+        "uIridescenceFactor");
+    const int iridescence = int(MapSlot::Iridescence);
+    const int iridescenceThickness = int(MapSlot::IridescenceThickness);
+    row("iridescence map, strength 0", "iridescence", 0.0, false, iridescence, 0.0,
+        SurfaceFeature::HasIridescenceMap, false, "uIridescenceMap");
+    row("iridescence map, strength 1", "iridescence", 1.0, false, iridescence, 0.0,
+        SurfaceFeature::HasIridescenceMap, true, "uIridescenceMap");
+    row("iridescence thickness map, strength 0", "iridescence", 0.0, false, iridescenceThickness, 0.0,
+        SurfaceFeature::HasIridescenceThicknessMap, false, "uIridescenceThicknessMap");
+    row("iridescence thickness map, strength 1", "iridescence", 1.0, false, iridescenceThickness, 0.0,
+        SurfaceFeature::HasIridescenceThicknessMap, true, "uIridescenceThicknessMap");
+    row("iridescence thickness map, unlit", "iridescence", 1.0, true, iridescenceThickness, 0.0,
+        SurfaceFeature::HasIridescenceThicknessMap, false, "uIridescenceThicknessMap");
 }
 
 void ShaderVariantGLTest::lobesOnlyWhereTheMaterialHasThem()

@@ -325,8 +325,8 @@ void TextureSetUiTest::dockAssignsPackedChannels()
 
 void TextureSetUiTest::assigningASetReplacesTheWholeSet()
 {
-    // Set A: thirteen separate maps, a clear coat's three, a sheen's two, a specular colour and an
-    // anisotropy direction map among them, through Assign Folder… (the specular strength has no file name of its own: a bare
+    // Set A: fourteen separate maps, a clear coat's three, a sheen's two, a specular colour, an
+    // anisotropy direction map and a film's packed strength and thickness among them, through Assign Folder… (the specular strength has no file name of its own: a bare
     // "specular" is a specular-glossiness map, core/material/MapNaming.h).
     const QString a = m_dir.filePath(QStringLiteral("replace/a"));
     makeFiles(a,
@@ -335,7 +335,7 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
             QStringLiteral("a_clearcoat.png"), QStringLiteral("a_clearcoat_roughness.png"),
             QStringLiteral("a_clearcoat_normal.png"), QStringLiteral("a_sheen.png"),
             QStringLiteral("a_sheen_roughness.png"), QStringLiteral("a_specular_color.png"),
-            QStringLiteral("a_anisotropy.png")});
+            QStringLiteral("a_anisotropy.png"), QStringLiteral("a_iridescence.png")});
     auto* button = m_dock->findChild<QPushButton*>(QStringLiteral("assignFolderButton"));
     QVERIFY(button);
     QVERIFY(clickAndAnswerFileDialog(button, a));
@@ -352,6 +352,9 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
     QVERIFY(m_dock->lobeSlots(MaterialLobe::Sheen)->isVisibleTo(m_dock));
     QCOMPARE(setA.anisotropy(), 1.0); // a direction map turns anisotropy on, shaped by the map
     QVERIFY(m_dock->lobeSlots(MaterialLobe::Anisotropy)->isVisibleTo(m_dock));
+    QCOMPARE(setA.iridescence(), 1.0); // a film texture turns a full film on, shaped by the map
+    QCOMPARE(setA.map(MapSlot::Iridescence).path, setA.map(MapSlot::IridescenceThickness).path); // R and G
+    QVERIFY(m_dock->lobeSlots(MaterialLobe::Iridescence)->isVisibleTo(m_dock));
     const int steps = m_document->undoStack()->index();
     QSignalSpy rendered(m_window->viewport(), &ViewportWidget::frameRendered);
 
@@ -367,8 +370,11 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
         QStringLiteral("b_roughness.png"));
     for (MapSlot slot : {MapSlot::Normal, MapSlot::Metallic, MapSlot::Occlusion, MapSlot::Emissive,
              MapSlot::Clearcoat, MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal, MapSlot::SheenColor,
-             MapSlot::SheenRoughness, MapSlot::SpecularColor, MapSlot::Anisotropy})
+             MapSlot::SheenRoughness, MapSlot::SpecularColor, MapSlot::Anisotropy, MapSlot::Iridescence,
+             MapSlot::IridescenceThickness})
         QVERIFY2(!setB.map(slot).hasTexture(), toString(slot));
+    QVERIFY(!setB.hasIridescence());
+    QVERIFY(!m_dock->lobeSlots(MaterialLobe::Iridescence)->isVisibleTo(m_dock));
     QVERIFY(!setB.hasAnisotropy());
     QVERIFY(!m_dock->lobeSlots(MaterialLobe::Anisotropy)->isVisibleTo(m_dock));
     QVERIFY(!setB.hasSpecular()); // back to the core's layer
@@ -384,7 +390,7 @@ void TextureSetUiTest::assigningASetReplacesTheWholeSet()
                  "cleared (not in this set): Normal, Metallic (now 0), Ambient "
                  "Occlusion, Emissive, Clearcoat (no coat now), Clearcoat Roughness, "
                  "Clearcoat Normal, Sheen Colour (no sheen now), Sheen Roughness, Specular Colour, "
-                 "Anisotropy (isotropic now)")),
+                 "Anisotropy (isotropic now), Iridescence (no film now), Iridescence Thickness")),
         qPrintable(message));
     QCOMPARE(m_window->statusMessage(), message);
     // The slots say so too.

@@ -219,6 +219,22 @@ private Q_SLOTS:
         }
     }
 
+    // A film of the base's own index (1.5 over the default dielectric, F0 0.04): the extension's
+    // test eta3 < eta2 flips with rounding there, and with it the phase of a reflection Schlick
+    // does not let vanish. Facet takes the base as denser down to eta2 - 1e-4, in double and float
+    // alike: the film over an index of exactly 1.5 reads as over 1.5001, not as over 1.4998.
+    void equalIndicesDecideOneWay()
+    {
+        const ThinFilm film {1.5, 400.0};
+        for (const double cosTheta : {1.0, 0.6, 0.3}) {
+            const glm::dvec3 equal = iridescenceFresnel(film, glm::dvec3(f0FromIor(1.5)), cosTheta);
+            const glm::dvec3 above = iridescenceFresnel(film, glm::dvec3(f0FromIor(1.5001)), cosTheta);
+            const glm::dvec3 below = iridescenceFresnel(film, glm::dvec3(f0FromIor(1.4998)), cosTheta);
+            QVERIFY2(maxAbs(equal - above) < 1e-3, qPrintable(text(equal) + QStringLiteral(" ") + text(above)));
+            QVERIFY2(maxAbs(equal - below) > maxAbs(equal - above), qPrintable(text(below)));
+        }
+    }
+
     // Firid over the extension's whole domain (film index 1 to 2.5, thickness 0 to 2000 nm, base
     // F0 0 to 1, every angle): never below 0 (clamped), and how far above 1 its unbalanced colour
     // conversion takes it, printed and bounded (the material's layering clamps it: shading.md).

@@ -52,6 +52,12 @@ double valueIn(const Project& project, WedgeParameter parameter)
         return m.anisotropy();
     case WedgeParameter::AnisotropyRotation:
         return m.anisotropyRotationDegrees;
+    case WedgeParameter::Iridescence:
+        return m.iridescence();
+    case WedgeParameter::IridescenceIor:
+        return m.iridescenceIor;
+    case WedgeParameter::IridescenceThickness:
+        return m.iridescenceThicknessMaximum();
     case WedgeParameter::Exposure:
         return project.view.exposureEV;
     case WedgeParameter::Environment:
@@ -82,8 +88,8 @@ private Q_SLOTS:
         QCOMPARE(wedgeParameterNameList(),
             std::string("metallic, roughness, occlusion, normal, ior, emissiveStrength, alphaCutoff, alpha, "
                         "clearcoat, "
-                        "clearcoatRoughness, sheenRoughness, specular, anisotropy, anisotropyRotation, env, "
-                        "exposure"));
+                        "clearcoatRoughness, sheenRoughness, specular, anisotropy, anisotropyRotation, "
+                        "iridescence, iridescenceIor, iridescenceThickness, env, exposure"));
         for (const WedgeParameterInfo& info : wedgeParameters()) {
             QCOMPARE(wedgeParameterFromString(info.name), std::optional(info.parameter));
             QCOMPARE(toString(info.parameter), info.name);
@@ -111,6 +117,9 @@ private Q_SLOTS:
         QTest::newRow("alpha") << int(WedgeParameter::Alpha) << 0.0 << 1.0;
         QTest::newRow("anisotropy") << int(WedgeParameter::Anisotropy) << 0.0 << 1.0;
         QTest::newRow("anisotropyRotation") << int(WedgeParameter::AnisotropyRotation) << -180.0 << 180.0;
+        QTest::newRow("iridescence") << int(WedgeParameter::Iridescence) << 0.0 << 1.0;
+        QTest::newRow("iridescenceIor") << int(WedgeParameter::IridescenceIor) << 1.0 << 5.0;
+        QTest::newRow("iridescenceThickness") << int(WedgeParameter::IridescenceThickness) << 0.0 << 100000.0;
         QTest::newRow("exposure") << int(WedgeParameter::Exposure) << -20.0 << 20.0;
     }
     void rangesAgreeWithProjectValidation()
@@ -254,7 +263,7 @@ private Q_SLOTS:
             << "rough=0,1"
             << "unknown parameter \"rough\" (known: metallic, roughness, occlusion, normal, ior, "
                "emissiveStrength, alphaCutoff, alpha, clearcoat, clearcoatRoughness, sheenRoughness, "
-               "specular, anisotropy, anisotropyRotation, env, "
+               "specular, anisotropy, anisotropyRotation, iridescence, iridescenceIor, iridescenceThickness, env, "
                "exposure)";
         QTest::newRow("names are case-sensitive") << "Roughness=0,1"
                                                   << "unknown parameter \"Roughness\"";
@@ -477,6 +486,15 @@ private Q_SLOTS:
         QTest::newRow("anisotropyRotation, brushed") << "anisotropyRotation=0,90"
                                                      << "brushed"
                                                      << "";
+        QTest::newRow("iridescenceThickness, no film") << "iridescenceThickness=100,400"
+                                                       << ""
+                                                       << "has none (iridescence 0)";
+        QTest::newRow("iridescenceIor, no film") << "iridescenceIor=1.3,2"
+                                                 << ""
+                                                 << "has none (iridescence 0)";
+        QTest::newRow("iridescenceThickness, a film") << "iridescenceThickness=100,400"
+                                                      << "film"
+                                                      << "";
         QTest::newRow("env") << "env=studio,sky"
                              << ""
                              << "";
@@ -509,6 +527,8 @@ private Q_SLOTS:
             m.setSheen(glm::dvec3(0.5), 0.0);
         if (setup == QLatin1String("brushed"))
             m.setAnisotropy(0.8, 0.0);
+        if (setup == QLatin1String("film"))
+            m.setFactor(MapSlot::Iridescence, 1.0);
         std::string error;
         const std::optional<WedgeAxis> parsed = WedgeAxis::parse(axis.toStdString(), &error);
         QVERIFY2(parsed, error.c_str());

@@ -17,7 +17,7 @@ using namespace jsonsupport;
 
 namespace {
 
-constexpr std::array<std::pair<ExportSource, const char*>, 30> kSources = {{
+constexpr std::array<std::pair<ExportSource, const char*>, 32> kSources = {{
     {ExportSource::Constant, "constant"},
     {ExportSource::BaseColorR, "baseColor.r"},
     {ExportSource::BaseColorG, "baseColor.g"},
@@ -48,6 +48,8 @@ constexpr std::array<std::pair<ExportSource, const char*>, 30> kSources = {{
     {ExportSource::Anisotropy, "anisotropy"},
     {ExportSource::AnisotropyDirectionX, "anisotropyDirection.x"},
     {ExportSource::AnisotropyDirectionY, "anisotropyDirection.y"},
+    {ExportSource::Iridescence, "iridescence"},
+    {ExportSource::IridescenceThickness, "iridescenceThickness"},
 }};
 
 constexpr std::array<std::pair<TextureFileFormat, const char*>, 4> kFormats = {{

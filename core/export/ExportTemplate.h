@@ -39,6 +39,9 @@
 //   anisotropy                           KHR_materials_anisotropy's strength
 //   anisotropyDirection.x/.y             its direction in the tangent plane (rotation applied),
 //                                        unit, stored as d * 0.5 + 0.5 (the extension's RG)
+//   iridescence                          KHR_materials_iridescence's strength
+//   iridescenceThickness                 where the film's thickness lies between the material's
+//                                        minimum (0) and maximum (1): the thickness texture's G
 // Tokens of file names: {material} (its name, made safe for a file name), {map}, {size} (the
 // file's width, or WxH when it is not square), {template} (the template's file name stem).
 
@@ -84,6 +87,8 @@ enum class ExportSource {
     Anisotropy, // KHR_materials_anisotropy's strength
     AnisotropyDirectionX, // its tangent-plane direction, x then y (in order)
     AnisotropyDirectionY,
+    Iridescence, // KHR_materials_iridescence's strength
+    IridescenceThickness, // where its thickness lies between the minimum (0) and the maximum (1)
 };
 const char* toString(ExportSource source); // "baseColor.r", ...; "constant"
 std::optional<ExportSource> exportSourceFromString(std::string_view name);

@@ -48,6 +48,10 @@ std::optional<MapSlot> slotOf(ExportSource source)
     case ExportSource::AnisotropyDirectionX:
     case ExportSource::AnisotropyDirectionY:
         return MapSlot::Anisotropy;
+    case ExportSource::Iridescence:
+        return MapSlot::Iridescence;
+    case ExportSource::IridescenceThickness:
+        return MapSlot::IridescenceThickness;
     case ExportSource::NormalX:
     case ExportSource::NormalY:
     case ExportSource::NormalZ:
@@ -122,6 +126,12 @@ ExportTexel exportTexel(const Material& material, const MaterialMapImages& image
     texel.specularColor = inputs.specularColor;
     texel.anisotropy = inputs.anisotropy;
     texel.anisotropyDirection = inputs.anisotropyTangentDirection;
+    texel.iridescence = inputs.iridescence;
+    // The thickness texture's value back from the thickness it made (mix(minimum, maximum, g)).
+    const double thicknessSpan = material.iridescenceThicknessMaximum() - material.iridescenceThicknessMinimum;
+    if (material.hasIridescence() && thicknessSpan != 0.0)
+        texel.iridescenceThickness = std::clamp(
+            (inputs.iridescenceThickness - material.iridescenceThicknessMinimum) / thicknessSpan, 0.0, 1.0);
     // The emissive strength stays a parameter of the material, not a texel value.
     if (material.emissiveStrength > 0.0) {
         texel.emissive = inputs.emissive / material.emissiveStrength;
@@ -221,6 +231,12 @@ double channelValue(const ExportChannel& channel, const ExportTexel& texel)
         value = texel.anisotropyDirection[int(channel.source) - int(ExportSource::AnisotropyDirectionX)] * 0.5
             + 0.5;
         break;
+    case ExportSource::Iridescence:
+        value = texel.iridescence;
+        break;
+    case ExportSource::IridescenceThickness:
+        value = texel.iridescenceThickness;
+        break;
     }
     return channel.invert ? 1.0 - value : value;
 }
@@ -240,7 +256,10 @@ bool slotHasContent(const Material& material, MapSlot slot)
     case MapSlot::Specular: // in use: the layer is not the default
     case MapSlot::SpecularColor:
     case MapSlot::Anisotropy: // in use: the strength is above 0
+    case MapSlot::Iridescence:
         return true;
+    case MapSlot::IridescenceThickness: // a thickness of its own only with a texture
+        break;
     case MapSlot::Emissive:
         return material.map(slot).hasTexture() || glm::dvec3(material.map(slot).factor) != glm::dvec3(0.0);
     case MapSlot::Normal:

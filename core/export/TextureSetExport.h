@@ -67,6 +67,8 @@ struct ExportTexel {
     glm::dvec3 specularColor {1.0}; // linear, may exceed 1
     double anisotropy = 0.0; // KHR_materials_anisotropy's strength
     glm::dvec2 anisotropyDirection {1.0, 0.0}; // tangent plane, unit, rotation applied
+    double iridescence = 0.0; // KHR_materials_iridescence's strength
+    double iridescenceThickness = 1.0; // (d - minimum) / (maximum - minimum); 1 where they are equal
 };
 ExportTexel exportTexel(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv);
 // A source's value in a texel ([0, 1] for every source but emissive: the normal is stored as

@@ -32,7 +32,18 @@ constexpr int kFloat = 5126;
 constexpr int kUnsignedInt = 5125;
 
 // The gltf-textures template's outputs, by the slots they serve.
-enum class Texture { BaseColor, Normal, Orm, Emissive, Clearcoat, ClearcoatNormal, Sheen, Specular, Anisotropy };
+enum class Texture {
+    BaseColor,
+    Normal,
+    Orm,
+    Emissive,
+    Clearcoat,
+    ClearcoatNormal,
+    Sheen,
+    Specular,
+    Anisotropy,
+    Iridescence
+};
 const char* mapName(Texture texture)
 {
     switch (texture) {
@@ -52,6 +63,8 @@ const char* mapName(Texture texture)
         return "specular";
     case Texture::Anisotropy:
         return "anisotropy";
+    case Texture::Iridescence:
+        return "iridescence";
     case Texture::Emissive:
         break;
     }
@@ -77,6 +90,8 @@ std::vector<MapSlot> slotsOf(const std::string& outputMap)
         return {MapSlot::SpecularColor, MapSlot::Specular};
     if (outputMap == mapName(Texture::Anisotropy))
         return {MapSlot::Anisotropy};
+    if (outputMap == mapName(Texture::Iridescence))
+        return {MapSlot::Iridescence, MapSlot::IridescenceThickness};
     return {MapSlot::BaseColor};
 }
 
@@ -113,6 +128,10 @@ struct MaterialPlan {
     // KHR_materials_anisotropy: the texture as the extension packs it (direction RG, strength B),
     // baked without the strength factor and the rotation, which stay parameters.
     bool anisotropy = false;
+    // KHR_materials_iridescence: one linear texture, the strength in R (baked without the factor,
+    // which stays a parameter) and the thickness in G (between the minimum and maximum, which stay
+    // parameters); each textureInfo written only for a slot with a texture.
+    bool iridescence = false;
     std::optional<UvTransform> shared; // written as KHR_texture_transform
     int texCoord = 0; // the UV set every textured slot reads (textureInfo.texCoord)
     std::optional<TextureSetExport> job;
@@ -165,6 +184,9 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
         }
         plan.anisotropy
             = material.hasAnisotropy() && !material.unlit && material.map(MapSlot::Anisotropy).hasTexture();
+        plan.iridescence = material.hasIridescence() && !material.unlit
+            && (material.map(MapSlot::Iridescence).hasTexture()
+                || material.map(MapSlot::IridescenceThickness).hasTexture());
 
         // One transform on every textured slot: kept as KHR_texture_transform; else baked. The
         // bake writes every map into one texture set, in one UV set: maps on different sets
@@ -208,6 +230,8 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
         // holds the file's own direction and strength multiplier.
         if (plan.anisotropy)
             baked.setAnisotropy(1.0, 0.0);
+        if (plan.iridescence && material.map(MapSlot::Iridescence).hasTexture())
+            baked.setFactor(MapSlot::Iridescence, 1.0);
         // File names: "<asset>_<material>_<map>.png", a material name used twice numbered.
         std::string name = fileNameSafe(material.name);
         for (int n = 2; !usedNames.insert(name).second; ++n)
@@ -227,7 +251,8 @@ std::optional<std::vector<MaterialPlan>> planMaterials(const std::string& path,
                 || (output.map == mapName(Texture::ClearcoatNormal) && plan.coatNormal)
                 || (output.map == mapName(Texture::Sheen) && plan.sheen)
                 || (output.map == mapName(Texture::Specular) && plan.specular)
-                || (output.map == mapName(Texture::Anisotropy) && plan.anisotropy);
+                || (output.map == mapName(Texture::Anisotropy) && plan.anisotropy)
+                || (output.map == mapName(Texture::Iridescence) && plan.iridescence);
             if (wanted) {
                 ExportOutput kept = output;
                 kept.optional = false;
@@ -641,6 +666,29 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
                     textureInfo(index(Texture::Anisotropy), plan, mesh.hasTexCoord1));
             extensions.insert(QStringLiteral("KHR_materials_anisotropy"), anisotropy);
             extensionsUsed.insert(QStringLiteral("KHR_materials_anisotropy"));
+        }
+        if (!material.unlit && material.hasIridescence()) {
+            // The factor, the film's index and thickness range as they are (the texture is baked
+            // without them); the extension's defaults (1.3, 100, 400 nm) are left out.
+            const bool strengthTexture = plan.iridescence && material.map(MapSlot::Iridescence).hasTexture();
+            QJsonObject iridescence {{QStringLiteral("iridescenceFactor"), material.iridescence()}};
+            if (material.iridescenceIor != shading::kDefaultIridescenceIor)
+                iridescence.insert(QStringLiteral("iridescenceIor"), material.iridescenceIor);
+            if (material.iridescenceThicknessMinimum != shading::kDefaultIridescenceThicknessMinimum)
+                iridescence.insert(
+                    QStringLiteral("iridescenceThicknessMinimum"), material.iridescenceThicknessMinimum);
+            if (material.iridescenceThicknessMaximum() != shading::kDefaultIridescenceThicknessMaximum)
+                iridescence.insert(
+                    QStringLiteral("iridescenceThicknessMaximum"), material.iridescenceThicknessMaximum());
+            const QJsonObject info = plan.iridescence
+                ? textureInfo(index(Texture::Iridescence), plan, mesh.hasTexCoord1)
+                : QJsonObject {};
+            if (strengthTexture)
+                iridescence.insert(QStringLiteral("iridescenceTexture"), info);
+            if (plan.iridescence && material.map(MapSlot::IridescenceThickness).hasTexture())
+                iridescence.insert(QStringLiteral("iridescenceThicknessTexture"), info);
+            extensions.insert(QStringLiteral("KHR_materials_iridescence"), iridescence);
+            extensionsUsed.insert(QStringLiteral("KHR_materials_iridescence"));
         }
         if (material.unlit) {
             extensions.insert(QStringLiteral("KHR_materials_unlit"), QJsonObject {});

@@ -286,7 +286,7 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
     // Extensions of the material model.
     static const std::set<std::string> kRead = {"KHR_materials_emissive_strength", "KHR_materials_ior",
         "KHR_materials_unlit", "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular",
-        "KHR_materials_anisotropy"};
+        "KHR_materials_anisotropy", "KHR_materials_iridescence"};
     // A number of an extension's object: its value clamped to [lo, hi] (a note when it was not
     // there), or `otherwise` with a note naming the field when it is not a number.
     const auto extensionNumber = [&](const tinygltf::Value& object, const char* extension, const char* field,
@@ -396,6 +396,26 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
             map.channel = MapChannel::Rgb;
             readExtensionTexture(
                 model, value, extension, "anisotropyTexture", false, assetPath, where, map, notes);
+        } else if (name == "KHR_materials_iridescence") {
+            // Defaults (the extension's): factor 0 (no film), index 1.3, thickness 100 to 400 nm; the
+            // minimum may exceed the maximum (a texture then runs the other way). The strength is
+            // its texture's R, the thickness its own texture's G (often one file), both linear.
+            const char* const extension = "KHR_materials_iridescence";
+            m.setIridescence(extensionNumber(value, extension, "iridescenceFactor", 0.0, 1.0, 0.0),
+                extensionNumber(value, extension, "iridescenceIor", Material::kMinIor, Material::kMaxIor,
+                    shading::kDefaultIridescenceIor),
+                extensionNumber(value, extension, "iridescenceThicknessMinimum", 0.0,
+                    Material::kMaxIridescenceThickness, shading::kDefaultIridescenceThicknessMinimum),
+                extensionNumber(value, extension, "iridescenceThicknessMaximum", 0.0,
+                    Material::kMaxIridescenceThickness, shading::kDefaultIridescenceThicknessMaximum));
+            const auto filmTexture = [&](const char* field, MapSlot slot, MapChannel channel) {
+                MaterialMap& map = m.map(slot);
+                map.colorSpace = ColorEncoding::Linear;
+                map.channel = channel;
+                readExtensionTexture(model, value, extension, field, false, assetPath, where, map, notes);
+            };
+            filmTexture("iridescenceTexture", MapSlot::Iridescence, MapChannel::R);
+            filmTexture("iridescenceThicknessTexture", MapSlot::IridescenceThickness, MapChannel::G);
         } else if (!kRead.count(name)) {
             notes.add(
                 "the material extension " + name + " is not supported: previewed as metallic-roughness");

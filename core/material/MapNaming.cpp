@@ -37,6 +37,8 @@ enum class Layout {
     SheenRoughness,
     SpecularColor,
     Anisotropy, // KHR_materials_anisotropy's texture: direction RG, strength B
+    Iridescence, // R the film's strength, G its thickness (KHR_materials_iridescence's channels)
+    IridescenceThickness, // the film's thickness alone (G)
 };
 
 MapRead scalar(MapSlot slot, MapChannel channel, bool invert = false)
@@ -118,6 +120,12 @@ TextureNaming namingOf(Layout layout)
         return single(MapRead {S::SpecularColor, C::Rgb, false, std::nullopt});
     case Layout::Anisotropy:
         return single(MapRead {S::Anisotropy, C::Rgb, false, std::nullopt});
+    case Layout::Iridescence:
+        // KHR_materials_iridescence: the strength "in the R channel", the thickness "in the G
+        // channel"; Facet's glTF textures write <material>_iridescence.png so.
+        return packed("iridescence", {scalar(S::Iridescence, C::R), scalar(S::IridescenceThickness, C::G)});
+    case Layout::IridescenceThickness:
+        return single(scalar(S::IridescenceThickness, C::G));
     }
     return {};
 }
@@ -162,6 +170,7 @@ constexpr NameRule kRules[] = {
     {"sheen_colour", Where::LastWords, Layout::SheenColor},
     {"specular_color", Where::LastWords, Layout::SpecularColor},
     {"specular_colour", Where::LastWords, Layout::SpecularColor},
+    {"iridescence_thickness", Where::LastWords, Layout::IridescenceThickness},
 
     {"clearcoatroughness", Where::LastWords, Layout::ClearcoatRoughness}, // glTF's clearcoatRoughnessTexture
     {"clearcoatnormal", Where::LastWords, Layout::ClearcoatNormal}, // glTF's clearcoatNormalTexture
@@ -171,6 +180,8 @@ constexpr NameRule kRules[] = {
     {"sheen", Where::LastWords, Layout::SheenColor},
     {"specularcolor", Where::LastWords, Layout::SpecularColor}, // glTF's specularColorTexture
     {"anisotropy", Where::LastWords, Layout::Anisotropy}, // glTF's anisotropyTexture
+    {"iridescencethickness", Where::LastWords, Layout::IridescenceThickness}, // glTF's iridescenceThicknessTexture
+    {"iridescence", Where::LastWords, Layout::Iridescence}, // glTF's iridescenceTexture
 
     {"ambientocclusion", Where::LastWords, Layout::Occlusion}, // ambientCG
     {"metallicsmoothness", Where::LastWords, Layout::UnityMetallicSmoothness},
@@ -342,7 +353,8 @@ Material withAssignedMaps(Material material, const std::vector<MapAssignment>& a
             map.factor = glm::dvec4(1.0); // the default factor, black, would hide the texture
         else if (assignment.slot == MapSlot::Metallic || assignment.slot == MapSlot::Roughness
             || assignment.slot == MapSlot::Clearcoat || assignment.slot == MapSlot::ClearcoatRoughness
-            || assignment.slot == MapSlot::SheenRoughness || assignment.slot == MapSlot::Anisotropy)
+            || assignment.slot == MapSlot::SheenRoughness || assignment.slot == MapSlot::Anisotropy
+            || assignment.slot == MapSlot::Iridescence)
             material.setFactor(assignment.slot, 1.0); // a coat texture turns the coat on, as painted
     }
     // A coat normal or roughness map alone says there is a coat: a full one, shaped by the map;
@@ -352,6 +364,9 @@ Material withAssignedMaps(Material material, const std::vector<MapAssignment>& a
             material.setFactor(MapSlot::Clearcoat, 1.0);
         if (lobeOf(assignment.slot) == MaterialLobe::Sheen && !material.hasSheen())
             material.map(MapSlot::SheenColor).factor = glm::dvec4(1.0);
+        // A film thickness map alone says there is a film (its strength 1).
+        if (lobeOf(assignment.slot) == MaterialLobe::Iridescence && !material.hasIridescence())
+            material.setFactor(MapSlot::Iridescence, 1.0);
     }
     return material;
 }

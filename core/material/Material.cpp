@@ -20,7 +20,8 @@ constexpr std::pair<MapSlot, const char*> kSlots[] = {{MapSlot::BaseColor, "base
     {MapSlot::ClearcoatRoughness, "clearcoatRoughness"}, {MapSlot::ClearcoatNormal, "clearcoatNormal"},
     {MapSlot::SheenColor, "sheenColor"}, {MapSlot::SheenRoughness, "sheenRoughness"},
     {MapSlot::Specular, "specular"}, {MapSlot::SpecularColor, "specularColor"},
-    {MapSlot::Anisotropy, "anisotropy"}};
+    {MapSlot::Anisotropy, "anisotropy"}, {MapSlot::Iridescence, "iridescence"},
+    {MapSlot::IridescenceThickness, "iridescenceThickness"}};
 constexpr std::pair<AlphaMode, const char*> kAlphaModes[]
     = {{AlphaMode::Opaque, "opaque"}, {AlphaMode::Mask, "mask"}, {AlphaMode::Blend, "blend"}};
 constexpr std::pair<MapChannel, const char*> kChannels[] = {{MapChannel::Rgb, "rgb"}, {MapChannel::R, "r"},
@@ -67,7 +68,8 @@ bool validateMap(MapSlot slot, const MaterialMap& map, std::string* problem)
     if (map.invert && !isScalarSlot(slot))
         return fail(key
                 + ".invert: only scalar maps (metallic, roughness, occlusion, the coat's strength and "
-                  "roughness, the sheen's roughness, specular) can be inverted",
+                  "roughness, the sheen's roughness, specular, the iridescence's factor and thickness) can be "
+                  "inverted",
             problem);
     if (map.flipGreen && !isNormalSlot(slot))
         return fail(key + ".flipGreen: only normal maps have a green-channel convention", problem);
@@ -208,6 +210,13 @@ std::array<MaterialMap, kMapSlotCount> Material::defaultMaps()
     specularColor.colorSpace = ColorEncoding::SRGB;
     // KHR_materials_anisotropy: none; its texture is linear RGB (direction RG, strength B).
     maps[std::size_t(MapSlot::Anisotropy)].factor = glm::dvec4(0.0);
+    // KHR_materials_iridescence: none; the factor's texture is R, the thickness's G (the
+    // extension's channels: one texture can feed both), the thickness the extension's maximum.
+    maps[std::size_t(MapSlot::Iridescence)].factor = glm::dvec4(0.0);
+    maps[std::size_t(MapSlot::Iridescence)].channel = MapChannel::R;
+    maps[std::size_t(MapSlot::IridescenceThickness)].factor
+        = glm::dvec4(shading::kDefaultIridescenceThicknessMaximum);
+    maps[std::size_t(MapSlot::IridescenceThickness)].channel = MapChannel::G;
     return maps;
 }
 

@@ -24,6 +24,10 @@
 //   anisotropy          strength in x, [0, 1] (KHR_materials_anisotropy anisotropyStrength);
 //                       texture RGB, linear: RG the direction in the tangent plane (x 2 - 1), B
 //                       the strength's multiplier; the rotation is Material::anisotropyRotationDegrees
+//   iridescence         scalar in x, [0, 1] (KHR_materials_iridescence iridescenceFactor; texture R)
+//   iridescenceThickness the film's thickness in nanometres in x (iridescenceThicknessMaximum), not a
+//                       multiplier: the texture (G) picks mix(Material::iridescenceThicknessMinimum,
+//                       factor, texel); without a texture the film is this thick
 // For the scalar slots (and the normal maps' strength) the factor is kept as (v, v, v, v) (setFactor(slot, v)
 // does that) so that a vec4 uniform reads the same from any component and operator== compares what matters.
 // docs/project-format.md lists every field with its unit and default.
@@ -40,6 +44,7 @@
 #include "core/image/Image.h" // ColorEncoding
 #include "core/shading/Brdf.h"
 #include "core/shading/ShadingModel.h"
+#include "core/shading/ThinFilm.h"
 
 namespace facet {
 
@@ -66,27 +71,32 @@ enum class MapSlot {
     // KHR_materials_anisotropy's texture (anisotropyTexture: direction RG, strength B); it counts
     // only while the strength is not 0.
     Anisotropy,
+    // KHR_materials_iridescence's two textures (iridescenceTexture R, iridescenceThicknessTexture
+    // G); they count only while the factor is not 0.
+    Iridescence,
+    IridescenceThickness,
 };
-inline constexpr int kMapSlotCount = 14;
+inline constexpr int kMapSlotCount = 16;
 inline constexpr std::array<MapSlot, kMapSlotCount> kAllMapSlots
     = {MapSlot::BaseColor, MapSlot::Normal, MapSlot::Metallic, MapSlot::Roughness, MapSlot::Occlusion,
         MapSlot::Emissive, MapSlot::Clearcoat, MapSlot::ClearcoatRoughness, MapSlot::ClearcoatNormal,
         MapSlot::SheenColor, MapSlot::SheenRoughness, MapSlot::Specular, MapSlot::SpecularColor,
-        MapSlot::Anisotropy};
+        MapSlot::Anisotropy, MapSlot::Iridescence, MapSlot::IridescenceThickness};
 
 // "baseColor", "normal", "metallic", "roughness", "occlusion", "emissive", "clearcoat",
 // "clearcoatRoughness", "clearcoatNormal", "sheenColor", "sheenRoughness", "specular",
-// "specularColor", "anisotropy" (the project file's keys).
+// "specularColor", "anisotropy", "iridescence", "iridescenceThickness" (the project file's keys).
 const char* toString(MapSlot slot);
 std::optional<MapSlot> mapSlotFromString(std::string_view name);
-// Metallic, roughness, occlusion, the coat's strength and roughness, the sheen's roughness and the
-// specular strength hold one number; the colours, the normal maps and the anisotropy map (direction
-// and strength) hold a vector.
+// Metallic, roughness, occlusion, the coat's strength and roughness, the sheen's roughness, the
+// specular strength and the iridescence's factor and thickness hold one number; the colours, the
+// normal maps and the anisotropy map (direction and strength) hold a vector.
 inline bool isScalarSlot(MapSlot slot)
 {
     return slot == MapSlot::Metallic || slot == MapSlot::Roughness || slot == MapSlot::Occlusion
         || slot == MapSlot::Clearcoat || slot == MapSlot::ClearcoatRoughness
-        || slot == MapSlot::SheenRoughness || slot == MapSlot::Specular;
+        || slot == MapSlot::SheenRoughness || slot == MapSlot::Specular || slot == MapSlot::Iridescence
+        || slot == MapSlot::IridescenceThickness;
 }
 // Base colour, emissive, the sheen's colour and the specular colour hold colours: sRGB-encoded
 // textures by default, an RGB factor.
@@ -112,7 +122,7 @@ inline bool readsRgbOnly(MapSlot slot)
 
 // The part of the material a slot belongs to: the glTF 2.0 core model, or a layered lobe whose
 // slots count only while the lobe is on (Material::usesSlot).
-enum class MaterialLobe { Core, Clearcoat, Sheen, Specular, Anisotropy };
+enum class MaterialLobe { Core, Clearcoat, Sheen, Specular, Anisotropy, Iridescence };
 inline MaterialLobe lobeOf(MapSlot slot)
 {
     switch (slot) {
@@ -128,6 +138,9 @@ inline MaterialLobe lobeOf(MapSlot slot)
         return MaterialLobe::Specular;
     case MapSlot::Anisotropy:
         return MaterialLobe::Anisotropy;
+    case MapSlot::Iridescence:
+    case MapSlot::IridescenceThickness:
+        return MaterialLobe::Iridescence;
     default:
         return MaterialLobe::Core;
     }
@@ -240,6 +253,11 @@ struct Material {
     // KHR_materials_anisotropy's rotation, in degrees here (the extension's radians, converted on
     // import and export): one turn either way covers every direction.
     static constexpr double kMaxAnisotropyRotationDegrees = 180.0;
+    // KHR_materials_iridescence's film thickness, in nanometres (the extension's unit), any
+    // value >= 0 there: beyond a few micrometres the film's interference averages out over the
+    // visible band (its reflectance is then the incoherent one, core/shading/ThinFilm.h), and a
+    // file beyond 100 micrometres is refused with its field named.
+    static constexpr double kMaxIridescenceThickness = 100000.0;
 
     std::string name = "Material";
     // Index of refraction of the dielectric layer (KHR_materials_ior); metals ignore it and take
@@ -262,10 +280,16 @@ struct Material {
     // KHR_materials_anisotropy: the anisotropy direction's turn from the tangent (counter-clockwise
     // in the tangent plane, towards the bitangent), in degrees, [-180, 180].
     double anisotropyRotationDegrees = 0.0;
+    // KHR_materials_iridescence: the film's index of refraction (iridescenceIor, [kMinIor,
+    // kMaxIor]) and its thickness where the thickness texture reads 0
+    // (iridescenceThicknessMinimum, nanometres); the thickness where it reads 1, and without a
+    // texture, is the IridescenceThickness slot's factor.
+    double iridescenceIor = shading::kDefaultIridescenceIor;
+    double iridescenceThicknessMinimum = shading::kDefaultIridescenceThicknessMinimum;
     // Indexed by MapSlot. Defaults: base colour 0.8 grey (sRGB texture), metallic 0, roughness
     // 0.5, occlusion 1, normal strength 1, emissive black, no coat (strength 0, roughness 0,
     // coat normal strength 1), no sheen (black, roughness 0), specular 1 and white (the default layer),
-    // no anisotropy (strength 0).
+    // no anisotropy (strength 0), no iridescence (factor 0; thickness 400 nm).
     // (glTF's defaults, metallic 1 and roughness 1, describe a rough white metal: fine as texture
     // multipliers, poor as a starting material.)
     std::array<MaterialMap, kMapSlotCount> maps = defaultMaps();
@@ -333,6 +357,19 @@ struct Material {
         setFactor(MapSlot::Anisotropy, strength);
         anisotropyRotationDegrees = rotationDegrees;
     }
+    // KHR_materials_iridescence: a thin film over the base (soap bubbles, oil, coated lenses,
+    // heat-tinted metal) whose interference colours the base's specular reflection by angle and
+    // thickness (docs/shading.md, "Iridescence"). Factor 0: none, and no shader cost.
+    double iridescence() const { return map(MapSlot::Iridescence).factor.x; }
+    double iridescenceThicknessMaximum() const { return map(MapSlot::IridescenceThickness).factor.x; } // nm
+    bool hasIridescence() const { return iridescence() > 0.0; }
+    void setIridescence(double factor, double filmIor, double thicknessMinimum, double thicknessMaximum)
+    {
+        setFactor(MapSlot::Iridescence, factor);
+        iridescenceIor = filmIor;
+        iridescenceThicknessMinimum = thicknessMinimum;
+        setFactor(MapSlot::IridescenceThickness, thicknessMaximum);
+    }
     // Whether `lobe` is on: the core always, a layered lobe while its strength or colour is not 0
     // (the specular layer: while it differs from the default).
     bool hasLobe(MaterialLobe lobe) const
@@ -346,6 +383,8 @@ struct Material {
             return hasSpecular();
         case MaterialLobe::Anisotropy:
             return hasAnisotropy();
+        case MaterialLobe::Iridescence:
+            return hasIridescence();
         case MaterialLobe::Core:
             break;
         }

@@ -180,6 +180,8 @@ void readMaterial(Messages& messages, const QJsonObject& object, const std::stri
     r.boolean("doubleSided", material.doubleSided);
     r.boolean("unlit", material.unlit);
     r.number("anisotropyRotationDegrees", material.anisotropyRotationDegrees);
+    r.number("iridescenceIor", material.iridescenceIor);
+    r.number("iridescenceThicknessMinimum", material.iridescenceThicknessMinimum);
     if (const std::optional<QJsonObject> shading = r.object("shading"))
         readShading(messages, *shading, r.pathOf("shading"), material.shading);
     for (MapSlot slot : kAllMapSlots) {
@@ -217,6 +219,8 @@ QJsonObject materialToJson(const Material& material, const std::string& baseDir,
     o[QLatin1String("doubleSided")] = material.doubleSided;
     o[QLatin1String("unlit")] = material.unlit;
     o[QLatin1String("anisotropyRotationDegrees")] = material.anisotropyRotationDegrees;
+    o[QLatin1String("iridescenceIor")] = material.iridescenceIor;
+    o[QLatin1String("iridescenceThicknessMinimum")] = material.iridescenceThicknessMinimum;
     o[QLatin1String("shading")] = shadingToJson(material.shading);
     for (MapSlot slot : kAllMapSlots)
         o[QLatin1String(toString(slot))] = mapToJson(slot, material.map(slot), baseDir, includeTexturePaths);

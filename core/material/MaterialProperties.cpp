@@ -59,6 +59,18 @@ constexpr std::array<MaterialPropertyInfo, kMaterialPropertyCount> kProperties =
         "Anisotropy rotation (degrees, counter-clockwise from the tangent)", V::Scalar,
         -Material::kMaxAnisotropyRotationDegrees, Material::kMaxAnisotropyRotationDegrees, std::nullopt,
         "anisotropy-rotation"},
+    {P::Iridescence, "iridescence", "iridescence.factor", "Iridescence (thin film) strength", V::Scalar, 0.0,
+        1.0, MapSlot::Iridescence, "iridescence"},
+    {P::IridescenceIor, "iridescenceIor", "iridescenceIor", "Iridescence film's index of refraction",
+        V::Scalar, Material::kMinIor, Material::kMaxIor, std::nullopt, "iridescence-ior", 3.0},
+    // The thickness without a texture, and where a thickness texture reads 1 (the extension's
+    // maximum); sliders stop at 1200 nm, past the last visible interference colours.
+    {P::IridescenceThickness, "iridescenceThickness", "iridescenceThickness.factor",
+        "Iridescence film thickness (nm; a thickness texture's 1)", V::Scalar, 0.0,
+        Material::kMaxIridescenceThickness, MapSlot::IridescenceThickness, "iridescence-thickness", 1200.0},
+    {P::IridescenceThicknessMinimum, "iridescenceThicknessMinimum", "iridescenceThicknessMinimum",
+        "Iridescence film thickness where a thickness texture reads 0 (nm)", V::Scalar, 0.0,
+        Material::kMaxIridescenceThickness, std::nullopt, "iridescence-thickness-minimum", 1200.0},
 }};
 
 constexpr bool inEnumOrder()
@@ -103,6 +115,10 @@ double scalarOf(const Material& material, MaterialProperty property)
         return material.alphaCutoff;
     case P::AnisotropyRotation:
         return material.anisotropyRotationDegrees;
+    case P::IridescenceIor:
+        return material.iridescenceIor;
+    case P::IridescenceThicknessMinimum:
+        return material.iridescenceThicknessMinimum;
     case P::BaseColor:
     case P::Emissive:
     case P::SheenColor:
@@ -132,6 +148,12 @@ void setScalar(Material& material, MaterialProperty property, double value)
         return;
     case P::AnisotropyRotation:
         material.anisotropyRotationDegrees = value;
+        return;
+    case P::IridescenceIor:
+        material.iridescenceIor = value;
+        return;
+    case P::IridescenceThicknessMinimum:
+        material.iridescenceThicknessMinimum = value;
         return;
     case P::BaseColor:
     case P::Emissive:

@@ -5,7 +5,8 @@
 // (core/project/WedgeAxis: an axis of a material property takes its name, field, range and
 // setter from here), the command line's material flags (`facet render` and `facet sheet`:
 // --base-color, --metallic, --roughness, --clearcoat, --clearcoat-roughness, --sheen-color,
-// --sheen-roughness, --specular, --specular-color, --anisotropy, --anisotropy-rotation; app/MaterialFlags)
+// --sheen-roughness, --specular, --specular-color, --anisotropy, --anisotropy-rotation, --iridescence,
+// --iridescence-ior, --iridescence-thickness, --iridescence-thickness-minimum; app/MaterialFlags)
 // and the Material dock's sliders (ui/docks/MaterialDock addPropertySlider). A property's default is the
 // default Material's value, read through the row (no second copy). docs/architecture.md, "The material
 // property registry", says how a new property joins.
@@ -41,8 +42,12 @@ enum class MaterialProperty {
     SpecularColor, // its F0 tint (linear; above 1 allowed)
     Anisotropy, // KHR_materials_anisotropy: the strength
     AnisotropyRotation, // its direction's turn from the tangent, in degrees
+    Iridescence, // KHR_materials_iridescence: the film's strength
+    IridescenceIor, // the film's index of refraction
+    IridescenceThickness, // its thickness in nm (the thickness texture's 1; without one, the thickness)
+    IridescenceThicknessMinimum, // the thickness texture's 0, nm
 };
-inline constexpr int kMaterialPropertyCount = 19;
+inline constexpr int kMaterialPropertyCount = 23;
 
 // What a property holds: one number, or a linear RGB colour whose components each lie in the range.
 enum class PropertyValue { Scalar, Color };

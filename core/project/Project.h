@@ -159,7 +159,10 @@ struct Project {
     // Version 8: KHR_materials_anisotropy, the map "anisotropy" and the material's
     // "anisotropyRotationDegrees" (a version 7 Facet would drop both with a warning and save the
     // material isotropic).
-    static constexpr int kFormatVersion = 8;
+    // Version 9: KHR_materials_iridescence, the maps "iridescence" and "iridescenceThickness" and
+    // the material's "iridescenceIor" and "iridescenceThicknessMinimum" (a version 8 Facet would
+    // drop them with a warning and save the material without its film).
+    static constexpr int kFormatVersion = 9;
     // More is refused when loading: far beyond any asset an artist previews, and each material
     // costs a shader variant and its textures.
     static constexpr int kMaxMaterials = 4096;

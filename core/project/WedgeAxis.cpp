@@ -25,9 +25,9 @@ WedgeParameterInfo materialAxis(WedgeParameter parameter, MaterialProperty prope
     return {parameter, info.name, info.field, info.minimum, info.maximum, property};
 }
 
-const std::array<WedgeParameterInfo, 16>& parameterTable()
+const std::array<WedgeParameterInfo, 19>& parameterTable()
 {
-    static const std::array<WedgeParameterInfo, 16> table = {{
+    static const std::array<WedgeParameterInfo, 19> table = {{
         materialAxis(WedgeParameter::Metallic, MaterialProperty::Metallic),
         materialAxis(WedgeParameter::Roughness, MaterialProperty::Roughness),
         materialAxis(WedgeParameter::Occlusion, MaterialProperty::Occlusion),
@@ -42,6 +42,9 @@ const std::array<WedgeParameterInfo, 16>& parameterTable()
         materialAxis(WedgeParameter::Specular, MaterialProperty::Specular),
         materialAxis(WedgeParameter::Anisotropy, MaterialProperty::Anisotropy),
         materialAxis(WedgeParameter::AnisotropyRotation, MaterialProperty::AnisotropyRotation),
+        materialAxis(WedgeParameter::Iridescence, MaterialProperty::Iridescence),
+        materialAxis(WedgeParameter::IridescenceIor, MaterialProperty::IridescenceIor),
+        materialAxis(WedgeParameter::IridescenceThickness, MaterialProperty::IridescenceThickness),
         {WedgeParameter::Environment, "env", "environment.source", 0.0, 0.0, std::nullopt},
         {WedgeParameter::Exposure, "exposure", "view.exposureEV", ViewSettings::kMinExposureEV,
             ViewSettings::kMaxExposureEV, std::nullopt},
@@ -332,6 +335,12 @@ std::string WedgeAxis::noEffectReason(const Project& project) const
     case WedgeParameter::AnisotropyRotation:
         if (!m.hasAnisotropy())
             return "anisotropyRotation turns the anisotropy, and the material has none (anisotropy 0)";
+        break;
+    case WedgeParameter::IridescenceIor:
+    case WedgeParameter::IridescenceThickness:
+        if (!m.hasIridescence())
+            return std::string(facet::toString(parameter))
+                + " shapes the iridescent film, and the material has none (iridescence 0)";
         break;
     default:
         break;

@@ -45,6 +45,9 @@ enum class WedgeParameter {
     Specular,
     Anisotropy,
     AnisotropyRotation,
+    Iridescence,
+    IridescenceIor,
+    IridescenceThickness,
     Environment,
     Exposure,
 };

@@ -48,6 +48,9 @@ constexpr std::array<DebugViewName, kDebugViewCount> kDebugViewNames = {{
     {"specular-color", "Specular colour", nullptr},
     {"anisotropy", "Anisotropy strength", nullptr},
     {"anisotropy-direction", "Anisotropy direction", nullptr},
+    {"iridescence", "Iridescence strength", nullptr},
+    {"iridescence-thickness", "Iridescence thickness (white: 1000 nm)", nullptr},
+    {"iridescence-fresnel", "Iridescence Fresnel (film at n.v)", nullptr},
 }};
 
 } // namespace

@@ -51,14 +51,19 @@ enum class DebugView : int {
     SpecularColor, // its F0 tint (factor x texture, linear, may exceed 1); white without it
     Anisotropy, // KHR_materials_anisotropy's strength (factor x texture B); 0 without it
     AnisotropyDirection, // its direction in world space * 0.5 + 0.5; 0.5 grey without it
+    Iridescence, // KHR_materials_iridescence's strength (factor x texture R); 0 without it
+    IridescenceThickness, // the film's thickness / 1000 nm (white: 1 micrometre); 0 without it
+    IridescenceFresnel, // the film's Fresnel Firid at n.v over the base's F0 (the dielectric's and the
+                        // metal's mixed by metallic); 0 without it
 };
-inline constexpr int kDebugViewCount = 34;
+inline constexpr int kDebugViewCount = 37;
 // "none", "base-color", "shading-normal", "geometric-normal", "metallic", "roughness",
 // "occlusion", "distribution", "visibility", "fresnel", "irradiance", "ibl-diffuse",
 // "prefiltered-radiance", "brdf-lut", "ibl-specular", "ibl-total", "direct-light",
 // "white-furnace", "uv", "tangent", "emissive", "alpha", "non-finite", "uv-checker",
 // "texel-density", "clearcoat", "clearcoat-roughness", "clearcoat-normal", "sheen-color",
-// "sheen-roughness", "specular", "specular-color", "anisotropy", "anisotropy-direction"
+// "sheen-roughness", "specular", "specular-color", "anisotropy", "anisotropy-direction",
+// "iridescence", "iridescence-thickness", "iridescence-fresnel"
 // (ViewSettings::debugView,
 // facet render --view).
 const char* toString(DebugView view);

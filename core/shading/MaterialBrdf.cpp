@@ -133,30 +133,51 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
     // Diffuse of the dielectric base, before coupling with the specular layer.
     const glm::dvec3 lambert = baseColor * Fd_Lambert();
 
+    // KHR_materials_iridescence: the film's Fresnel seen at v.h (docs/shading.md, "Iridescence").
+    const double iridescence = std::clamp(material.iridescence, 0.0, 1.0);
+    const auto maxValue = [](const glm::dvec3& c) { return std::max({c.r, c.g, c.b}); };
+
     BrdfLobes lobes;
     if (m_model.composition == BrdfComposition::Gltf) {
         // glTF 2.0 Appendix B: material = mix(dielectric_brdf, metal_brdf, metallic).
-        const glm::dvec3 fDielectric = dielectricFresnel(material, layer, VoH);
-        const glm::dvec3 fMetal = F_Schlick(baseColor, 1.0, VoH);
+        glm::dvec3 fDielectric = dielectricFresnel(material, layer, VoH);
+        glm::dvec3 fMetal = F_Schlick(baseColor, 1.0, VoH);
         const glm::dvec3 msDielectric = compensation(layer.f0);
         const glm::dvec3 msMetal = compensation(baseColor);
 
-        const glm::dvec3 dielectricSpecular = microfacet * fDielectric * msDielectric;
-        glm::dvec3 dielectricDiffuse;
-        if (m_model.coupling == DielectricCoupling::FresnelMix) {
-            // fresnel_mix(ior, base, layer): the base keeps 1 - max_value(F(v.h)) (one number for
-            // all channels: KHR_materials_specular's rule; 1 - F without a tint).
-            dielectricDiffuse = lambert * (1.0 - std::max({fDielectric.r, fDielectric.g, fDielectric.b}));
-        } else {
-            dielectricDiffuse = lambert * couplingFactor(layer, NoV, NoL, roughness);
+        // fresnel_mix(ior, base, layer): the base keeps 1 - max_value(F(v.h)) (one number for all
+        // channels: KHR_materials_specular's rule; 1 - F without a tint). The energy-preserving
+        // coupling scales it by what the layer's albedo leaves instead.
+        double diffuseWeight = m_model.coupling == DielectricCoupling::FresnelMix
+            ? 1.0 - maxValue(fDielectric)
+            : couplingFactor(layer, NoV, NoL, roughness);
+        if (iridescence > 0.0) {
+            // dielectric_brdf = mix(fresnel_mix(...), rgb_mix(diffuse, specular, Firid(f0)),
+            // iridescence), metal_brdf = specular mix(F(baseColor), Firid(baseColor), iridescence).
+            if (metallic < 1.0) {
+                const glm::dvec3 firid = filmFresnel(material, layer.f0, VoH);
+                // The energy-preserving coupling couples the base to the film as to a Schlick
+                // layer of the film's normal-incidence reflectance (docs/shading.md).
+                const double filmWeight = m_model.coupling == DielectricCoupling::FresnelMix
+                    ? 1.0 - maxValue(firid)
+                    : couplingFactor(filmLayer(material, layer.f0), NoV, NoL, roughness);
+                diffuseWeight = glm::mix(diffuseWeight, filmWeight, iridescence);
+                fDielectric = glm::mix(fDielectric, firid, iridescence);
+            }
+            if (metallic > 0.0)
+                fMetal = glm::mix(fMetal, filmFresnel(material, baseColor, VoH), iridescence);
         }
-        lobes.diffuse = (1.0 - metallic) * dielectricDiffuse;
-        lobes.specular = (1.0 - metallic) * dielectricSpecular + metallic * microfacet * fMetal * msMetal;
+        lobes.diffuse = (1.0 - metallic) * lambert * diffuseWeight;
+        lobes.specular
+            = (1.0 - metallic) * microfacet * fDielectric * msDielectric + metallic * microfacet * fMetal * msMetal;
     } else {
         // LearnOpenGL / UE4: F0 = mix(0.04, albedo, metallic), kS = F, kD = (1 - kS)(1 - metallic);
-        // the specular layer's F0 and F90 mixed as the dielectric's.
+        // the specular layer's F0 and F90 mixed as the dielectric's, the film's Fresnel mixed in by
+        // its strength.
         const glm::dvec3 f0 = glm::mix(layer.f0, baseColor, metallic);
-        const glm::dvec3 F = F_Schlick(f0, layer.f90 + (1.0 - layer.f90) * metallic, VoH);
+        glm::dvec3 F = F_Schlick(f0, layer.f90 + (1.0 - layer.f90) * metallic, VoH);
+        if (iridescence > 0.0)
+            F = glm::mix(F, filmFresnel(material, f0, VoH), iridescence);
         lobes.specular = microfacet * F * compensation(f0);
         const glm::dvec3 kD = m_model.coupling == DielectricCoupling::FresnelMix
             ? (glm::dvec3(1.0) - F) * (1.0 - metallic)
@@ -241,6 +262,25 @@ glm::dvec3 MaterialBrdf::dielectricFresnel(
     const glm::dvec3 tinted = specular > 0.0 ? layer.f0 / specular : glm::dvec3(f0);
     const double weight = 1.0 - pow5(1.0 - std::clamp(VoH, 0.0, 1.0));
     return glm::clamp(specular * (F_Dielectric(VoH, material.ior) + (tinted - f0) * weight), 0.0, 1.0);
+}
+
+glm::dvec3 filmFresnel(const MaterialInfo& material, const glm::dvec3& f0, double cosTheta)
+{
+    const ThinFilm film {material.iridescenceIor, material.iridescenceThickness};
+    return glm::clamp(iridescenceFresnel(film, f0, cosTheta), 0.0, 1.0);
+}
+
+DielectricReflectance filmLayer(const MaterialInfo& material, const glm::dvec3& f0)
+{
+    // The smallest Schlick F0 whose curve lies on or above the film's Fresnel at these angles (its
+    // interference peaks may lie away from normal incidence).
+    double envelope = 0.0;
+    for (const double cosTheta : kFilmLayerAngles) {
+        const glm::dvec3 firid = filmFresnel(material, f0, cosTheta);
+        const double weight = pow5(1.0 - cosTheta);
+        envelope = std::max(envelope, (std::max({firid.r, firid.g, firid.b}) - weight) / (1.0 - weight));
+    }
+    return {glm::dvec3(std::clamp(envelope, 0.0, 1.0)), 1.0};
 }
 
 double clearcoatWeight(const MaterialInfo& material, double NoV)

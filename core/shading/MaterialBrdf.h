@@ -14,6 +14,7 @@
 
 #include "core/shading/DfgTable.h"
 #include "core/shading/ShadingModel.h"
+#include "core/shading/ThinFilm.h"
 
 namespace facet {
 
@@ -59,6 +60,13 @@ struct MaterialInfo {
     glm::dvec2 anisotropyTangentDirection {1.0, 0.0};
     glm::dvec3 anisotropyDirection {0.0};
     bool hasAnisotropy() const { return anisotropy > 0.0 && anisotropyDirection != glm::dvec3(0.0); }
+    // KHR_materials_iridescence: the film's strength ([0, 1], factor x texture R), index and
+    // thickness (nm; the texture's G between the minimum and the maximum). Strength 0: no film.
+    // The film colours the base's specular Fresnel (dielectric and metal), seen at the microfacet's
+    // v.h; not the coat's, not the sheen (docs/shading.md, "Iridescence").
+    double iridescence = 0.0;
+    double iridescenceIor = shading::kDefaultIridescenceIor;
+    double iridescenceThickness = shading::kDefaultIridescenceThicknessMaximum;
 };
 
 // The dielectric layer's Schlick reflectance (KHR_materials_specular, "Implementation"):
@@ -72,6 +80,16 @@ struct DielectricReflectance {
     double maxF0() const;
 };
 DielectricReflectance dielectricReflectance(const MaterialInfo& material);
+
+// KHR_materials_iridescence: the material's film over a base of normal-incidence reflectance f0
+// (the dielectric layer's f0, or the metal's base colour) seen at cos(theta1) = cosTheta: the
+// extension's Firid (core/shading/ThinFilm.h) clamped to [0, 1], a reflectance (Firid alone
+// reaches 1.27: docs/shading.md, "Iridescence"). evaluate() takes it at v.h, the split sum at n.v.
+glm::dvec3 filmFresnel(const MaterialInfo& material, const glm::dvec3& f0, double cosTheta);
+// The Schlick layer the energy-preserving coupling takes the film for: F0 the smallest whose curve
+// lies on or above the film's Fresnel (largest channel) at kFilmLayerAngles, F90 1.
+inline constexpr double kFilmLayerAngles[] = {1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05};
+DielectricReflectance filmLayer(const MaterialInfo& material, const glm::dvec3& f0);
 
 // The coat's IOR, fixed by KHR_materials_clearcoat: F0 = 0.04.
 inline constexpr double kClearcoatIor = 1.5;

@@ -317,6 +317,21 @@ MaterialInfo materialInputs(const Material& material, const MaterialMapImages& i
         m.anisotropyTangentDirection = shading::anisotropyDirection(
             direction, glm::radians(material.anisotropyRotationDegrees));
     }
+    // KHR_materials_iridescence: the strength (factor x texture R), the film's index and its
+    // thickness, mix(minimum, maximum, texture G) or the maximum without a texture (GLSL under
+    // MATERIAL_IRIDESCENCE).
+    if (material.hasIridescence()) {
+        m.iridescence = material.iridescence();
+        if (const auto texel = read(MapSlot::Iridescence))
+            m.iridescence *= scalarMapValue(material.map(MapSlot::Iridescence), *texel);
+        m.iridescence = std::clamp(m.iridescence, 0.0, 1.0);
+        m.iridescenceIor = material.iridescenceIor;
+        m.iridescenceThickness = material.iridescenceThicknessMaximum();
+        if (const auto texel = read(MapSlot::IridescenceThickness))
+            m.iridescenceThickness = glm::mix(material.iridescenceThicknessMinimum, m.iridescenceThickness,
+                scalarMapValue(material.map(MapSlot::IridescenceThickness), *texel));
+        m.iridescenceThickness = std::max(m.iridescenceThickness, 0.0);
+    }
     return m;
 }
 

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "core/shading/Brdf.h"
+#include "core/shading/Sampling.h"
 #include "core/shading/Sheen.h"
 
 namespace facet {
@@ -44,15 +46,35 @@ BrdfLobes gltfLobes(const MaterialBrdf& brdf, const MaterialInfo& material, doub
     const glm::dvec3 baseColor = glm::max(material.baseColor, glm::dvec3(0.0));
     const DielectricReflectance layer = dielectricReflectance(material);
     BrdfLobes lobes;
-    const glm::dvec3 specularDielectric
-        = (layer.f0 * dfg.scale + layer.f90 * dfg.bias) * compensation(brdf, layer.f0, NoV, roughness, lighting);
-    const glm::dvec3 specularMetal
-        = (baseColor * dfg.scale + dfg.bias) * compensation(brdf, baseColor, NoV, roughness, lighting);
-    lobes.specular = lighting.prefilteredRadiance * glm::mix(specularDielectric, specularMetal, metallic);
+    const glm::dvec3 msDielectric = compensation(brdf, layer.f0, NoV, roughness, lighting);
+    const glm::dvec3 msMetal = compensation(brdf, baseColor, NoV, roughness, lighting);
+    glm::dvec3 specularDielectric = (layer.f0 * dfg.scale + layer.f90 * dfg.bias) * msDielectric;
+    glm::dvec3 specularMetal = (baseColor * dfg.scale + dfg.bias) * msMetal;
     const double f0 = layer.maxF0();
-    const double diffuseWeight = model.coupling == DielectricCoupling::EnergyPreserving
+    double diffuseWeight = model.coupling == DielectricCoupling::EnergyPreserving
         ? std::max(0.0, 1.0 - brdf.dielectricSpecularAlbedo(f0, NoV, roughness, layer.f90))
         : (1.0 - layer.f90) + (layer.f90 - f0) * dfg.diffuseFresnelWeight;
+    const double iridescence = std::clamp(material.iridescence, 0.0, 1.0);
+    if (iridescence > 0.0) {
+        // KHR_materials_iridescence: the film's Fresnel averaged over the lobe times the lobe's
+        // albedo with F = 1, mixed in by its strength; the base keeps the mean of rgb_mix's
+        // 1 - max_value(Firid) over the cosine lobe, or (energy-preserving) what the film's Schlick
+        // layer leaves (docs/shading.md, "Iridescence").
+        const double lobeAlbedo = dfg.scale + dfg.bias;
+        if (metallic < 1.0) {
+            specularDielectric = glm::mix(specularDielectric,
+                filmLobeFresnel(material, layer.f0, NoV, roughness) * lobeAlbedo * msDielectric, iridescence);
+            const DielectricReflectance film = filmLayer(material, layer.f0);
+            const double filmWeight = model.coupling == DielectricCoupling::EnergyPreserving
+                ? std::max(0.0, 1.0 - brdf.dielectricSpecularAlbedo(film.maxF0(), NoV, roughness, film.f90))
+                : 1.0 - filmDiffuseFresnel(material, layer.f0, NoV).meanMax;
+            diffuseWeight = glm::mix(diffuseWeight, filmWeight, iridescence);
+        }
+        if (metallic > 0.0)
+            specularMetal = glm::mix(specularMetal,
+                filmLobeFresnel(material, baseColor, NoV, roughness) * lobeAlbedo * msMetal, iridescence);
+    }
+    lobes.specular = lighting.prefilteredRadiance * glm::mix(specularDielectric, specularMetal, metallic);
     lobes.diffuse = lighting.irradiance * kInvPi * baseColor * (diffuseWeight * (1.0 - metallic));
     return lobes;
 }
@@ -68,17 +90,69 @@ BrdfLobes learnOpenGlLobes(const MaterialBrdf& brdf, const MaterialInfo& materia
     const glm::dvec3 f0 = glm::mix(layer.f0, baseColor, metallic);
     const double f90 = layer.f90 + (1.0 - layer.f90) * metallic;
     BrdfLobes lobes;
-    lobes.specular = lighting.prefilteredRadiance * (f0 * dfg.scale + f90 * dfg.bias)
-        * compensation(brdf, f0, NoV, roughness, lighting);
-    const glm::dvec3 kD = brdf.model().coupling == DielectricCoupling::EnergyPreserving
+    const glm::dvec3 ms = compensation(brdf, f0, NoV, roughness, lighting);
+    glm::dvec3 specular = (f0 * dfg.scale + f90 * dfg.bias) * ms;
+    const bool energyPreserving = brdf.model().coupling == DielectricCoupling::EnergyPreserving;
+    glm::dvec3 kD = energyPreserving
         ? glm::dvec3((1.0 - brdf.dielectricSpecularAlbedo(layer.maxF0(), NoV, roughness, layer.f90))
             * (1.0 - metallic))
         : ((1.0 - f90) + (f90 - f0) * dfg.diffuseFresnelWeight) * (1.0 - metallic);
+    const double iridescence = std::clamp(material.iridescence, 0.0, 1.0);
+    if (iridescence > 0.0) {
+        // The film's Fresnel mixed into F (and so into kD = (1 - F)(1 - m)), each averaged over its
+        // lobe.
+        specular = glm::mix(
+            specular, filmLobeFresnel(material, f0, NoV, roughness) * (dfg.scale + dfg.bias) * ms, iridescence);
+        if (!energyPreserving)
+            kD = glm::mix(kD, (1.0 - filmDiffuseFresnel(material, f0, NoV).mean) * (1.0 - metallic), iridescence);
+    }
+    lobes.specular = lighting.prefilteredRadiance * specular;
     lobes.diffuse = lighting.irradiance * kInvPi * baseColor * kD;
     return lobes;
 }
 
 } // namespace
+
+glm::dvec3 filmLobeFresnel(
+    const MaterialInfo& material, const glm::dvec3& f0, double NoV, double perceptualRoughness, int samples)
+{
+    NoV = std::clamp(NoV, 1e-4, 1.0);
+    const double alpha = alphaFromRoughness(perceptualRoughness);
+    const glm::dvec3 v(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
+    const double lambdaV = 1.0 / sampling::G1_SmithGGX(NoV, alpha) - 1.0;
+    const auto count = std::uint32_t(std::max(samples, 1));
+    glm::dvec3 sum(0.0);
+    double weights = 0.0;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const glm::dvec3 h = sampling::importanceSampleVNDF(sampling::hammersley(i, count), v, alpha);
+        const glm::dvec3 l = sampling::reflectAbout(v, h);
+        if (l.z <= 0.0)
+            continue;
+        // G2 / G1(v) of the height-correlated Smith: (1 + Lambda_v) / (1 + Lambda_v + Lambda_l).
+        const double lambdaL = 1.0 / sampling::G1_SmithGGX(l.z, alpha) - 1.0;
+        const double weight = (1.0 + lambdaV) / (1.0 + lambdaV + lambdaL);
+        sum += weight * filmFresnel(material, f0, glm::dot(v, h));
+        weights += weight;
+    }
+    return weights > 0.0 ? sum / weights : filmFresnel(material, f0, NoV);
+}
+
+FilmDiffuseFresnel filmDiffuseFresnel(const MaterialInfo& material, const glm::dvec3& f0, double NoV, int samples)
+{
+    NoV = std::clamp(NoV, 1e-4, 1.0);
+    const glm::dvec3 v(std::sqrt(1.0 - NoV * NoV), 0.0, NoV);
+    const auto count = std::uint32_t(std::max(samples, 1));
+    FilmDiffuseFresnel result;
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const glm::dvec3 l = sampling::sampleCosineHemisphere(sampling::hammersley(i, count));
+        const glm::dvec3 firid = filmFresnel(material, f0, glm::dot(v, glm::normalize(v + l)));
+        result.mean += firid;
+        result.meanMax += std::max({firid.r, firid.g, firid.b});
+    }
+    result.mean /= double(count);
+    result.meanMax /= double(count);
+    return result;
+}
 
 BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, const MaterialInfo& material,
     double NoV, const SplitSumLighting& lighting)

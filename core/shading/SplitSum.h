@@ -60,4 +60,25 @@ glm::dvec3 specularDominantDirection(const glm::dvec3& n, const glm::dvec3& R, d
 BrdfLobes splitSumRadiance(const MaterialBrdf& brdf, const DfgTable& table, const MaterialInfo& material,
     double NoV, const SplitSumLighting& lighting);
 
+// KHR_materials_iridescence under the split sum (docs/shading.md, "Iridescence"). The film's
+// Fresnel swings with the angle, so one value at n.v stands poorly for a lobe (measured up to 47%
+// under uniform light): the split sum averages it over the lobe instead, with a few fixed points
+// (deterministic: no noise), GLSL twins in environment_lighting.glsl.
+inline constexpr int kSplitSumFilmSamples = 8;
+// The film's Fresnel over a base of F0 `f0` averaged over the base's specular lobe seen at n.v: the
+// visible-normal estimate sum Firid(v.h_i) w_i / sum w_i, w_i = G2(v, l_i) / G1(v) (Smith, height
+// correlated), h_i drawn by Heitz's sampler from `samples` Hammersley points; the lobe's albedo
+// with F = 1 times it is the film's share of the specular albedo.
+glm::dvec3 filmLobeFresnel(
+    const MaterialInfo& material, const glm::dvec3& f0, double NoV, double perceptualRoughness,
+    int samples = kSplitSumFilmSamples);
+// The film's Fresnel averaged over the cosine lobe of l (h = normalize(v + l)): per channel
+// (`mean`, LearnOpenGL's kD) and its largest channel's (`meanMax`, glTF's rgb_mix weight).
+struct FilmDiffuseFresnel {
+    glm::dvec3 mean {0.0};
+    double meanMax = 0.0;
+};
+FilmDiffuseFresnel filmDiffuseFresnel(
+    const MaterialInfo& material, const glm::dvec3& f0, double NoV, int samples = kSplitSumFilmSamples);
+
 } // namespace facet

@@ -65,7 +65,7 @@ FilmTerms filmTerms(const ThinFilm& film, const glm::dvec3& baseF0, double cosTh
         const double eta3 = (1.0 + sqrtF0) / (1.0 - sqrtF0);
         const double r1 = (eta3 - eta2) / (eta3 + eta2);
         const double R23 = schlick(r1 * r1, cos2);
-        const double phi23 = eta3 < eta2 ? kPi : 0.0;
+        const double phi23 = eta3 < eta2 - kThinFilmIndexTolerance ? kPi : 0.0;
         const double R123 = std::clamp(terms.R12 * R23, 1e-5, 0.9999);
         terms.r123[c] = std::sqrt(R123);
         terms.Rs[c] = terms.T121 * terms.T121 * R23 / (1.0 - R123);

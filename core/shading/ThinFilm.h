@@ -32,6 +32,12 @@ inline constexpr double kDefaultIridescenceThicknessMaximum = 400.0;
 // thickness 0 is no film: the sample renderer's smoothstep(0, 0.03, d), kept (the extension leaves
 // d -> 0 open; docs/shading.md).
 inline constexpr double kThinFilmFadeThickness = 0.03;
+// The reflection off the base shifts the phase by pi where the base is less dense than the film
+// (eta3 < eta2). Where the two indices are equal (a film of 1.5 over the default dielectric, F0
+// 0.04) the test is a coin toss of rounding, and the result jumps: the extension's Schlick R23 is
+// not 0 there. Facet decides it the same way in double and float: the base counts as less dense
+// only below eta2 - this (docs/shading.md, "Iridescence").
+inline constexpr double kThinFilmIndexTolerance = 1e-4;
 
 struct ThinFilm {
     double ior = kDefaultIridescenceIor; // eta2, >= 1

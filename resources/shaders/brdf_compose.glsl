@@ -5,6 +5,7 @@
 #include "ibl_lookup.glsl"
 #include "brdf_sheen.glsl"
 #include "brdf_anisotropy.glsl"
+#include "brdf_iridescence.glsl"
 
 uniform sampler2D uDfgLut;
 uniform float uDfgSize;
@@ -135,23 +136,70 @@ vec3 dielectricFresnel(MaterialInfo m, DielectricReflectance layer, float VoH)
 }
 
 // Kelemen & Szirmay-Kalos 2001: (1 - E_s(n.v)) (1 - E_s(n.l)) / (1 - E_s,avg), a tinted layer
-// through its largest channel.
-float couplingFactor(DielectricReflectance layer, float NoV, float NoL, float perceptualRoughness)
+// through its largest channel; E_s,avg the layer's average albedo (uDielectricAverageAlbedo for the
+// material's own layer).
+float couplingFactor(DielectricReflectance layer, float NoV, float NoL, float perceptualRoughness, float averageAlbedo)
 {
     float f0 = max3(layer.f0);
     float eo = dielectricSpecularAlbedo(f0, layer.f90, NoV, perceptualRoughness);
     float ei = dielectricSpecularAlbedo(f0, layer.f90, NoL, perceptualRoughness);
-    return max(0.0, 1.0 - eo) * max(0.0, 1.0 - ei) / max(1.0 - uDielectricAverageAlbedo, 1e-6);
+    return max(0.0, 1.0 - eo) * max(0.0, 1.0 - ei) / max(1.0 - averageAlbedo, 1e-6);
+}
+float couplingFactor(DielectricReflectance layer, float NoV, float NoL, float perceptualRoughness)
+{
+    return couplingFactor(layer, NoV, NoL, perceptualRoughness, uDielectricAverageAlbedo);
 }
 
-// The Fresnel of the composition at v.h (the F debug view).
+// KHR_materials_iridescence: the film's Fresnel over a base of reflectance f0 at cos(theta1),
+// clamped to [0, 1] (docs/shading.md, "Iridescence"). Twin of core's filmFresnel in
+// MaterialBrdf::evaluate.
+vec3 filmFresnel(MaterialInfo m, vec3 f0, float cosTheta)
+{
+    return saturate(iridescenceFresnel(m.iridescenceIor, f0, m.iridescenceThickness, cosTheta));
+}
+
+#ifdef MATERIAL_IRIDESCENCE
+// E_s,avg of the film's Schlick layer (filmLayer) at the material's constant values (its roughness,
+// its thickness without a texture): the energy-preserving coupling's (render/SceneFromProject).
+uniform float uFilmAverageAlbedo;
+#endif
+
+// The Schlick layer the energy-preserving coupling takes the film for: F0 the smallest whose curve
+// lies on or above the film's Fresnel (largest channel) at 11 angles, F90 1. Twin of core's
+// filmLayer (kFilmLayerAngles).
+DielectricReflectance filmLayer(MaterialInfo m, vec3 f0)
+{
+    const float angles[11] = float[11](1.0, 0.9, 0.8, 0.7, 0.6, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05);
+    float envelope = 0.0;
+    for (int i = 0; i < 11; ++i) {
+        float weight = pow5(1.0 - angles[i]);
+        envelope = max(envelope, (max3(filmFresnel(m, f0, angles[i])) - weight) / (1.0 - weight));
+    }
+    DielectricReflectance layer;
+    layer.f0 = vec3(saturate(envelope));
+    layer.f90 = 1.0;
+    return layer;
+}
+
+// The Fresnel of the composition at v.h (the F debug view), the film's mixed in.
 vec3 compositionFresnel(MaterialInfo m, float VoH)
 {
     DielectricReflectance layer = dielectricReflectance(m);
 #ifdef COMPOSITION_LEARNOPENGL
-    return F_Schlick(mix(layer.f0, m.baseColor, m.metallic), mix(layer.f90, 1.0, m.metallic), VoH);
+    vec3 f0 = mix(layer.f0, m.baseColor, m.metallic);
+    vec3 F = F_Schlick(f0, mix(layer.f90, 1.0, m.metallic), VoH);
+#ifdef MATERIAL_IRIDESCENCE
+    F = mix(F, filmFresnel(m, f0, VoH), m.iridescence);
+#endif
+    return F;
 #else
-    return mix(dielectricFresnel(m, layer, VoH), F_Schlick(m.baseColor, 1.0, VoH), m.metallic);
+    vec3 fDielectric = dielectricFresnel(m, layer, VoH);
+    vec3 fMetal = F_Schlick(m.baseColor, 1.0, VoH);
+#ifdef MATERIAL_IRIDESCENCE
+    fDielectric = mix(fDielectric, filmFresnel(m, layer.f0, VoH), m.iridescence);
+    fMetal = mix(fMetal, filmFresnel(m, m.baseColor, VoH), m.iridescence);
+#endif
+    return mix(fDielectric, fMetal, m.metallic);
 #endif
 }
 
@@ -199,6 +247,10 @@ BrdfLobes evaluateBrdf(MaterialInfo m, vec3 n, vec3 v, vec3 l, bool punctual)
 #ifdef COMPOSITION_LEARNOPENGL
     vec3 f0 = mix(layer.f0, baseColor, metallic);
     vec3 F = F_Schlick(f0, mix(layer.f90, 1.0, metallic), VoH);
+#ifdef MATERIAL_IRIDESCENCE
+    if (m.iridescence > 0.0)
+        F = mix(F, filmFresnel(m, f0, VoH), m.iridescence);
+#endif
     lobes.specular = microfacet * F * multiScatterFactor(f0, NoV, compensation.x, compensation.y);
 #ifdef COUPLING_ENERGY_PRESERVING
     vec3 kD = vec3(couplingFactor(layer, NoV, NoL, roughness) * (1.0 - metallic));
@@ -211,15 +263,33 @@ BrdfLobes evaluateBrdf(MaterialInfo m, vec3 n, vec3 v, vec3 l, bool punctual)
     vec3 fMetal = F_Schlick(baseColor, 1.0, VoH);
     vec3 msDielectric = multiScatterFactor(layer.f0, NoV, compensation.x, compensation.y);
     vec3 msMetal = multiScatterFactor(baseColor, NoV, compensation.x, compensation.y);
-    vec3 dielectricSpecular = microfacet * fDielectric * msDielectric;
 #ifdef COUPLING_ENERGY_PRESERVING
-    vec3 dielectricDiffuse = lambert * couplingFactor(layer, NoV, NoL, roughness);
+    float diffuseWeight = couplingFactor(layer, NoV, NoL, roughness);
 #else
     // The base keeps 1 - max_value(F(v.h)) (KHR_materials_specular; 1 - F without a tint).
-    vec3 dielectricDiffuse = lambert * (1.0 - max3(fDielectric));
+    float diffuseWeight = 1.0 - max3(fDielectric);
 #endif
-    lobes.diffuse = (1.0 - metallic) * dielectricDiffuse;
-    lobes.specular = (1.0 - metallic) * dielectricSpecular + metallic * microfacet * fMetal * msMetal;
+#ifdef MATERIAL_IRIDESCENCE
+    // mix(fresnel_mix(...), rgb_mix(diffuse, specular, Firid(f0)), iridescence) for the dielectric,
+    // specular mix(F(baseColor), Firid(baseColor), iridescence) for the metal, the film seen at v.h.
+    if (m.iridescence > 0.0) {
+        if (metallic < 1.0) {
+            vec3 firid = filmFresnel(m, layer.f0, VoH);
+            // The energy-preserving coupling couples the base to the film's Schlick layer.
+#ifdef COUPLING_ENERGY_PRESERVING
+            float filmWeight = couplingFactor(filmLayer(m, layer.f0), NoV, NoL, roughness, uFilmAverageAlbedo);
+#else
+            float filmWeight = 1.0 - max3(firid);
+#endif
+            diffuseWeight = mix(diffuseWeight, filmWeight, m.iridescence);
+            fDielectric = mix(fDielectric, firid, m.iridescence);
+        }
+        if (metallic > 0.0)
+            fMetal = mix(fMetal, filmFresnel(m, baseColor, VoH), m.iridescence);
+    }
+#endif
+    lobes.diffuse = (1.0 - metallic) * lambert * diffuseWeight;
+    lobes.specular = (1.0 - metallic) * microfacet * fDielectric * msDielectric + metallic * microfacet * fMetal * msMetal;
 #endif
 #ifdef MATERIAL_SHEEN
     // sheen_brdf + scaling x material, the scaling reciprocal (the min of its n.v and n.l terms);

@@ -9,6 +9,7 @@
 #include "ibl_lookup.glsl"
 #include "debug_views.glsl"
 #include "environment_frame.glsl"
+#include "common_sampling.glsl"
 
 uniform samplerCube uPrefilteredMap;
 uniform float uPrefilteredLevels;
@@ -60,6 +61,49 @@ vec3 irradiance(vec3 n)
 #endif
 }
 
+// KHR_materials_iridescence under the split sum (docs/shading.md, "Iridescence"): the film's Fresnel
+// averaged over a lobe with kSplitSumFilmSamples fixed points, not taken at n.v alone (its swings
+// with the angle made that up to 47% wrong under uniform light). Twins of core/shading/SplitSum.h
+// filmLobeFresnel and filmDiffuseFresnel, point for point.
+const uint kSplitSumFilmSamples = 8u;
+
+// Over the base's specular lobe: sum Firid(v.h_i) w_i / sum w_i, w_i = G2(v, l_i) / G1(v), h_i the
+// lobe's visible normals from Hammersley points, in a frame where v lies in the xz plane.
+vec3 filmLobeFresnel(MaterialInfo m, vec3 f0, float NoV, float perceptualRoughness)
+{
+    NoV = clamp(NoV, 1e-4, 1.0);
+    float alpha = alphaFromRoughness(perceptualRoughness);
+    vec3 v = vec3(sqrt(1.0 - NoV * NoV), 0.0, NoV);
+    float lambdaV = 1.0 / G1_SmithGGX(NoV, alpha) - 1.0;
+    vec3 sum = vec3(0.0);
+    float weights = 0.0;
+    for (uint i = 0u; i < kSplitSumFilmSamples; ++i) {
+        vec3 h = importanceSampleVNDF(hammersley(i, kSplitSumFilmSamples), v, alpha);
+        vec3 l = reflectAbout(v, h);
+        if (l.z <= 0.0)
+            continue;
+        float lambdaL = 1.0 / G1_SmithGGX(l.z, alpha) - 1.0;
+        float weight = (1.0 + lambdaV) / (1.0 + lambdaV + lambdaL);
+        sum += weight * filmFresnel(m, f0, dot(v, h));
+        weights += weight;
+    }
+    return weights > 0.0 ? sum / weights : filmFresnel(m, f0, NoV);
+}
+
+// Over the cosine lobe of l (h = normalize(v + l)): per channel, and (w) its largest channel's mean.
+vec4 filmDiffuseFresnel(MaterialInfo m, vec3 f0, float NoV)
+{
+    NoV = clamp(NoV, 1e-4, 1.0);
+    vec3 v = vec3(sqrt(1.0 - NoV * NoV), 0.0, NoV);
+    vec4 sum = vec4(0.0);
+    for (uint i = 0u; i < kSplitSumFilmSamples; ++i) {
+        vec3 l = sampleCosineHemisphere(hammersley(i, kSplitSumFilmSamples));
+        vec3 firid = filmFresnel(m, f0, dot(v, normalize(v + l)));
+        sum += vec4(firid, max3(firid));
+    }
+    return sum / float(kSplitSumFilmSamples);
+}
+
 // The diffuse lobe's albedo c w_d under uniform light of radiance 1, per composition (what the
 // irradiance E(n) / pi is multiplied by), with the dielectric layer's (F0_d, F90_d)
 // (dielectricReflectance: (F0(n), 1) without KHR_materials_specular):
@@ -82,6 +126,26 @@ vec3 environmentDiffuseAlbedo(MaterialInfo m, float NoV, float roughness)
 #else
     vec3 weight = vec3((1.0 - layer.f90) + (layer.f90 - max3(layer.f0)) * dfgLookup(NoV, roughness).a);
 #endif
+#ifdef MATERIAL_IRIDESCENCE
+    // KHR_materials_iridescence: in the film's share the base keeps what the film leaves, averaged
+    // over the cosine lobe (glTF: 1 - max_value(Firid); LearnOpenGL: 1 - Firid), or (energy-
+    // preserving) 1 - E_s of the film's Schlick layer (docs/shading.md, "Iridescence"). A metal has
+    // no diffuse lobe to weigh.
+    if (m.iridescence > 0.0 && metallic < 1.0) {
+#if defined(COUPLING_ENERGY_PRESERVING)
+#ifndef COMPOSITION_LEARNOPENGL
+        DielectricReflectance film = filmLayer(m, layer.f0);
+        weight = mix(weight, vec3(max(0.0, 1.0 - dielectricSpecularAlbedo(max3(film.f0), film.f90, NoV, roughness))),
+                     m.iridescence);
+#endif
+#elif defined(COMPOSITION_LEARNOPENGL)
+        weight = mix(weight, vec3(1.0) - filmDiffuseFresnel(m, mix(layer.f0, baseColor, metallic), NoV).rgb,
+                     m.iridescence);
+#else
+        weight = mix(weight, vec3(1.0 - filmDiffuseFresnel(m, layer.f0, NoV).a), m.iridescence);
+#endif
+    }
+#endif
     return baseColor * weight * (1.0 - metallic);
 }
 
@@ -99,8 +163,8 @@ vec3 facingNormal(vec3 n, vec3 v)
 
 // The methods' shared chunks, outside the #ifdefs: includes are expanded once, before the
 // preprocessor runs (render/ShaderProgram), so a chunk first included inside a disabled block
-// would be missing from the enabled one. Unused functions and samplers cost nothing.
-#include "common_sampling.glsl"
+// would be missing from the enabled one (common_sampling.glsl is at the top: the film's averages
+// below need it). Unused functions and samplers cost nothing.
 #include "environment_sampling.glsl"
 #include "ibl_filtering.glsl"
 
@@ -158,12 +222,33 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     vec3 radiance = splitSumLobeRadiance(n, v, roughness);
     vec4 dfg = dfgLookup(NoV, roughness);
     DielectricReflectance layer = dielectricReflectance(m);
+    // KHR_materials_iridescence: the film's Fresnel averaged over the lobe times the lobe's albedo
+    // with F = 1, mixed in by its strength (docs/shading.md, "Iridescence").
 #ifdef COMPOSITION_LEARNOPENGL
     vec3 f0 = mix(layer.f0, baseColor, metallic);
-    lobes.specular = radiance * (f0 * dfg.r + mix(layer.f90, 1.0, metallic) * dfg.g) * multiScatterFactor(f0, NoV, roughness);
+    vec3 ms = multiScatterFactor(f0, NoV, roughness);
+    vec3 specular = (f0 * dfg.r + mix(layer.f90, 1.0, metallic) * dfg.g) * ms;
+#ifdef MATERIAL_IRIDESCENCE
+    if (m.iridescence > 0.0)
+        specular = mix(specular, filmLobeFresnel(m, f0, NoV, roughness) * (dfg.r + dfg.g) * ms, m.iridescence);
+#endif
+    lobes.specular = radiance * specular;
 #else
-    vec3 specularDielectric = (layer.f0 * dfg.r + layer.f90 * dfg.g) * multiScatterFactor(layer.f0, NoV, roughness);
-    vec3 specularMetal = (baseColor * dfg.r + dfg.g) * multiScatterFactor(baseColor, NoV, roughness);
+    vec3 msDielectric = multiScatterFactor(layer.f0, NoV, roughness);
+    vec3 msMetal = multiScatterFactor(baseColor, NoV, roughness);
+    vec3 specularDielectric = (layer.f0 * dfg.r + layer.f90 * dfg.g) * msDielectric;
+    vec3 specularMetal = (baseColor * dfg.r + dfg.g) * msMetal;
+#ifdef MATERIAL_IRIDESCENCE
+    if (m.iridescence > 0.0) {
+        if (metallic < 1.0)
+            specularDielectric = mix(specularDielectric,
+                                     filmLobeFresnel(m, layer.f0, NoV, roughness) * (dfg.r + dfg.g) * msDielectric,
+                                     m.iridescence);
+        if (metallic > 0.0)
+            specularMetal = mix(specularMetal, filmLobeFresnel(m, baseColor, NoV, roughness) * (dfg.r + dfg.g) * msMetal,
+                                m.iridescence);
+    }
+#endif
     lobes.specular = radiance * mix(specularDielectric, specularMetal, metallic);
 #endif
     lobes.diffuse = irradiance(n) * INV_PI * environmentDiffuseAlbedo(m, NoV, roughness);

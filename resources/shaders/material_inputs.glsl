@@ -41,6 +41,12 @@ struct MaterialInfo {
     float anisotropy;
     vec2 anisotropyTangentDirection;
     vec3 anisotropyDirection;
+    // KHR_materials_iridescence (MATERIAL_IRIDESCENCE; 0 without it): the film's strength, index
+    // and thickness in nanometres (core's MaterialInfo::iridescence, iridescenceIor,
+    // iridescenceThickness).
+    float iridescence;
+    float iridescenceIor;
+    float iridescenceThickness;
 };
 
 uniform vec4 uBaseColorFactor;
@@ -67,6 +73,17 @@ uniform float uAnisotropyFactor;
 uniform vec2 uAnisotropyRotation; // (cos, sin) of Material::anisotropyRotationDegrees
 #ifdef HAS_ANISOTROPY_MAP
 uniform sampler2D uAnisotropyMap;
+#endif
+#endif
+#ifdef MATERIAL_IRIDESCENCE
+uniform float uIridescenceFactor;
+uniform float uIridescenceIor;
+uniform vec2 uIridescenceThickness; // (minimum, maximum) in nm: the thickness texture's 0 and 1
+#ifdef HAS_IRIDESCENCE_MAP
+uniform sampler2D uIridescenceMap;
+#endif
+#if defined(HAS_IRIDESCENCE_THICKNESS_MAP) && !defined(IRIDESCENCE_THICKNESS_TEXEL_FROM_IRIDESCENCE)
+uniform sampler2D uIridescenceThicknessMap;
 #endif
 #endif
 uniform mat3 uUvTransform[MAP_SLOT_COUNT];
@@ -308,6 +325,33 @@ MaterialInfo materialInputs(vec2 uv)
     m.anisotropyTangentDirection = vec2(1.0, 0.0);
 #endif
     m.anisotropyDirection = vec3(0.0); // surface.frag maps the tangent-plane direction
+#ifdef MATERIAL_IRIDESCENCE
+    // The strength in R and the thickness in G of the extension's textures (often one file: the
+    // thickness then reuses the strength's texel); the thickness mix(minimum, maximum, G), the
+    // maximum without a texture.
+    m.iridescence = uIridescenceFactor;
+#ifdef HAS_IRIDESCENCE_MAP
+    vec4 iridescenceTexel = texture(uIridescenceMap, mapUv(SLOT_IRIDESCENCE, uv));
+    m.iridescence *= scalarMapValue(SLOT_IRIDESCENCE, iridescenceTexel);
+#endif
+    m.iridescence = clamp(m.iridescence, 0.0, 1.0);
+    m.iridescenceIor = uIridescenceIor;
+    m.iridescenceThickness = uIridescenceThickness.y;
+#ifdef HAS_IRIDESCENCE_THICKNESS_MAP
+#ifdef IRIDESCENCE_THICKNESS_TEXEL_FROM_IRIDESCENCE
+    vec4 iridescenceThicknessTexel = iridescenceTexel;
+#else
+    vec4 iridescenceThicknessTexel = texture(uIridescenceThicknessMap, mapUv(SLOT_IRIDESCENCE_THICKNESS, uv));
+#endif
+    m.iridescenceThickness = mix(uIridescenceThickness.x, uIridescenceThickness.y,
+                                 scalarMapValue(SLOT_IRIDESCENCE_THICKNESS, iridescenceThicknessTexel));
+#endif
+    m.iridescenceThickness = max(m.iridescenceThickness, 0.0);
+#else
+    m.iridescence = 0.0;
+    m.iridescenceIor = 1.3;
+    m.iridescenceThickness = 400.0;
+#endif
     return m;
 }
 

@@ -155,6 +155,18 @@ void main()
     color = vec3(m.anisotropy);
 #elif DEBUG_VIEW == DEBUG_ANISOTROPY_DIRECTION
     color = m.anisotropyDirection * 0.5 + 0.5;
+#elif DEBUG_VIEW == DEBUG_IRIDESCENCE
+    color = vec3(m.iridescence);
+#elif DEBUG_VIEW == DEBUG_IRIDESCENCE_THICKNESS
+    color = vec3(m.iridescence > 0.0 ? m.iridescenceThickness / 1000.0 : 0.0);
+#elif DEBUG_VIEW == DEBUG_IRIDESCENCE_FRESNEL
+#ifdef MATERIAL_IRIDESCENCE
+    float filmNoV = saturate(dot(n, v));
+    color = mix(filmFresnel(m, dielectricReflectance(m).f0, filmNoV), filmFresnel(m, m.baseColor, filmNoV),
+                m.metallic);
+#else
+    color = vec3(0.0);
+#endif
 #elif DEBUG_VIEW == DEBUG_DISTRIBUTION
     color = vec3(distribution(saturate(dot(n, debugH)), debugR * debugR));
 #elif DEBUG_VIEW == DEBUG_VISIBILITY

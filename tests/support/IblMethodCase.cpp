@@ -41,6 +41,7 @@ Project iblMethodCaseProject(const IblMethodCase& c, IblMethod method, int sampl
     m.setSheen(c.sheenColor, c.sheenRoughness);
     m.setSpecular(c.specular, c.specularColor);
     m.setAnisotropy(c.anisotropy, c.anisotropyRotationDegrees);
+    m.setIridescence(c.iridescence, c.iridescenceIor, m.iridescenceThicknessMinimum, c.iridescenceThickness);
     return project;
 }
 

@@ -41,6 +41,10 @@ struct IblMethodCase {
     // KHR_materials_anisotropy: the strength (0: none) and the direction's turn in degrees.
     double anisotropy = 0.0;
     double anisotropyRotationDegrees = 0.0;
+    // KHR_materials_iridescence: the film's strength (0: none), index and thickness in nm.
+    double iridescence = 0.0;
+    double iridescenceIor = 1.3;
+    double iridescenceThickness = 400.0;
 };
 
 // The default project with the case's environment, material and light, the sphere, no debug

@@ -461,6 +461,20 @@ const std::vector<MapRow>& materialMapRows()
                 useMap(
                     m, MapSlot::Anisotropy, file(f, "direction.png"), MapChannel::Rgb, ColorEncoding::Linear);
             }},
+        // KHR_materials_iridescence: the strength (R) and thickness (G) from one texture (one
+        // fetch), and a thickness map alone whose minimum lies above the maximum (it runs the other
+        // way).
+        {"iridescence-packed",
+            [](Material& m, const QString& f) {
+                m.setIridescence(1.0, 1.3, 100.0, 800.0);
+                useScalar(m, MapSlot::Iridescence, file(f, "packed.png"), MapChannel::R);
+                useScalar(m, MapSlot::IridescenceThickness, file(f, "packed.png"), MapChannel::G);
+            }},
+        {"iridescence-thickness-reversed",
+            [](Material& m, const QString& f) {
+                m.setIridescence(0.6, 1.8, 900.0, 300.0);
+                useScalar(m, MapSlot::IridescenceThickness, file(f, "grey.png"), MapChannel::G);
+            }},
         {"all-nine",
             [](Material& m, const QString& f) {
                 useAllSix(m, f);

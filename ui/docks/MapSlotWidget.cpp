@@ -65,6 +65,8 @@ int mergeIdFor(MapSlot slot)
     case MapSlot::Specular:
     case MapSlot::SpecularColor:
     case MapSlot::Anisotropy:
+    case MapSlot::Iridescence:
+    case MapSlot::IridescenceThickness:
         // The registry's row of the slot's factor: the Material dock's slider (or colour) of it
         // merges alike. (Base colour's row also holds the alpha, a row of its own.)
         for (const MaterialPropertyInfo& info : materialProperties())
@@ -124,6 +126,10 @@ QString MapSlotWidget::title(MapSlot slot)
         return tr("Specular Colour");
     case MapSlot::Anisotropy:
         return tr("Anisotropy");
+    case MapSlot::Iridescence:
+        return tr("Iridescence");
+    case MapSlot::IridescenceThickness:
+        return tr("Iridescence Thickness");
     }
     return {};
 }
@@ -229,14 +235,27 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
             });
         }
     } else {
+        // A normal map's slider spans the usual 0-2, the field what the format allows (issue 30); the
+        // film's thickness its registry row's nanometres; the other factors 0-1.
         const bool normal = isNormalSlot(slot);
-        m_factor = new ValueSlider(0.0, normal ? 2.0 : 1.0, 3, this);
+        const bool thickness = slot == MapSlot::IridescenceThickness;
+        double sliderMaximum = normal ? 2.0 : 1.0;
+        double fieldMaximum = normal ? Material::kMaxNormalStrength : 1.0;
+        if (thickness) {
+            const MaterialPropertyInfo& row = infoOf(MaterialProperty::IridescenceThickness);
+            sliderMaximum = row.sliderMaximum;
+            fieldMaximum = row.maximum;
+        }
+        m_factor = new ValueSlider(0.0, sliderMaximum, thickness ? 1 : 3, this);
         m_factor->setObjectName(QStringLiteral("factorSlider_%1").arg(key));
-        // The slider spans the usual 0-2; the field takes what the format allows (issue 30).
-        if (normal)
-            m_factor->setSpinRange(0.0, Material::kMaxNormalStrength);
+        if (fieldMaximum > sliderMaximum)
+            m_factor->setSpinRange(0.0, fieldMaximum);
+        if (thickness)
+            m_factor->setSuffix(tr(" nm"));
         form->addRow(
-            normal || slot == MapSlot::Occlusion || slot == MapSlot::Clearcoat ? tr("Strength") : tr("Value"),
+            thickness ? tr("Maximum")
+                      : normal || slot == MapSlot::Occlusion || slot == MapSlot::Clearcoat ? tr("Strength")
+                                                                                          : tr("Value"),
             m_factor);
         connect(m_factor, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);
         connect(m_factor, &ValueSlider::editFinished, m_document, &Document::endInteractiveEdit);

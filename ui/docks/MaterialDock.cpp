@@ -175,6 +175,24 @@ MaterialDock::MaterialDock(Document* document, QWidget* parent)
     addPropertySlider(MaterialProperty::Anisotropy, anisotropyForm, tr("Strength"));
     addPropertySlider(MaterialProperty::AnisotropyRotation, anisotropyForm, tr("Rotation"));
     layout->addWidget(m_anisotropyGroup);
+    QFormLayout* iridescenceForm = nullptr;
+    m_iridescenceGroup = addLobeSection(
+        tr("Iridescence"),
+        // On: a full film at the extension's defaults (index 1.3, 100-400 nm); off: factor 0, the
+        // film's index and thicknesses kept.
+        [](Material& m, bool on) { m.setFactor(MapSlot::Iridescence, on ? 1.0 : 0.0); }, content, &iridescenceForm);
+    m_iridescenceGroup->setObjectName(QStringLiteral("iridescenceGroup"));
+    m_iridescenceGroup->setToolTip(tr("KHR_materials_iridescence: a thin film over the surface whose interference "
+                                      "colours the reflection by angle and thickness: soap bubbles, oil on water, "
+                                      "coated lenses, heat-tinted metal, beetle shells"));
+    addPropertySlider(MaterialProperty::Iridescence, iridescenceForm, tr("Strength"));
+    addPropertySlider(MaterialProperty::IridescenceIor, iridescenceForm, tr("Film IOR"));
+    addPropertySlider(MaterialProperty::IridescenceThickness, iridescenceForm, tr("Thickness"))->setSuffix(tr(" nm"));
+    ValueSlider* minimum = addPropertySlider(MaterialProperty::IridescenceThicknessMinimum, iridescenceForm, tr("Min"));
+    minimum->setSuffix(tr(" nm"));
+    minimum->setToolTip(tr("The film's thickness where a thickness texture reads 0 (the thickness above is where it "
+                           "reads 1, and everywhere without a texture)"));
+    layout->addWidget(m_iridescenceGroup);
     auto* surfaceGroup = new QGroupBox(tr("Alpha and Sides"), content);
     auto* surfaceForm = new QFormLayout(surfaceGroup);
     surfaceForm->addRow(tr("Alpha"), m_alphaMode);
@@ -383,7 +401,9 @@ ValueSlider* MaterialDock::addPropertySlider(
 {
     const MaterialPropertyInfo& info = infoOf(property);
     const double sliderMaximum = info.sliderMaximum > 0.0 ? info.sliderMaximum : info.maximum;
-    auto* slider = new ValueSlider(info.minimum, sliderMaximum, 3, this);
+    // Three decimals for the fractions, one for the large ranges (a film's nanometres): the spin
+    // box's width follows its longest text, and a wide one squeezes the slider in a narrow dock.
+    auto* slider = new ValueSlider(info.minimum, sliderMaximum, info.maximum > 1000.0 ? 1 : 3, this);
     if (sliderMaximum < info.maximum)
         slider->setSpinRange(info.minimum, info.maximum);
     slider->setObjectName(QLatin1String(info.name) + QLatin1String("Slider"));
@@ -524,6 +544,7 @@ void MaterialDock::onDocumentChanged(DocumentChanges changes)
     m_sheenGroup->setChecked(material.hasSheen());
     m_sheenColor->setLinearColor(material.sheenColor());
     m_anisotropyGroup->setChecked(material.hasAnisotropy());
+    m_iridescenceGroup->setChecked(material.hasIridescence());
 }
 
 void MaterialDock::editShading(const QString& undoText, const std::function<void(ShadingModel&)>& change)

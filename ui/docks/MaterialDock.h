@@ -58,6 +58,7 @@ public:
     // The Sheen section (KHR_materials_sheen): checked while the sheen's colour is not black.
     QGroupBox* sheenGroup() const { return m_sheenGroup; }
     QGroupBox* anisotropyGroup() const { return m_anisotropyGroup; }
+    QGroupBox* iridescenceGroup() const { return m_iridescenceGroup; }
     // The slider of a registry property the dock shows (the lobes' sliders), or null.
     ValueSlider* propertySlider(MaterialProperty property) const;
     // Applies the selected preset (one undo step). False when none is selected.
@@ -133,6 +134,7 @@ private:
     QGroupBox* m_clearcoatGroup = nullptr;
     QGroupBox* m_sheenGroup = nullptr;
     QGroupBox* m_anisotropyGroup = nullptr;
+    QGroupBox* m_iridescenceGroup = nullptr;
     ColorButton* m_sheenColor = nullptr;
     ColorButton* m_specularColor = nullptr;
     std::vector<std::pair<MaterialProperty, ValueSlider*>> m_propertySliders;

@@ -105,6 +105,9 @@ TextureMapsDock::TextureMapsDock(Document* document, QWidget* parent)
     lobeBox(MaterialLobe::Anisotropy, tr("Anisotropy Map"), "anisotropyMapsGroup",
         tr("KHR_materials_anisotropy's texture (linear): the direction in the tangent plane (red, green: "
            "x 2 - 1) and the strength (blue). Shown while the material is anisotropic (Material panel)."));
+    lobeBox(MaterialLobe::Iridescence, tr("Iridescence Maps"), "iridescenceMapsGroup",
+        tr("KHR_materials_iridescence's textures (linear): the film's strength (red) and thickness (green: 0 the "
+           "minimum, 1 the maximum; often one texture). Shown while the material has a film (Material panel)."));
     for (MapSlot slot : kAllMapSlots) {
         QWidget* box = m_lobeSlots[std::size_t(lobeOf(slot))];
         QWidget* owner = box ? box : content;
@@ -376,6 +379,8 @@ QString TextureMapsDock::assignFiles(const QStringList& paths)
                 part += tr(" (no sheen now)");
             else if (slot == MapSlot::Anisotropy && !material.hasAnisotropy())
                 part += tr(" (isotropic now)");
+            else if (slot == MapSlot::Iridescence && !material.hasIridescence())
+                part += tr(" (no film now)");
             clearedParts.append(part);
         }
         if (!clearedParts.isEmpty())

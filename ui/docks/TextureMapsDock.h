@@ -71,7 +71,7 @@ private:
     std::array<MapSlotWidget*, kMapSlotCount> m_slots {};
     // Each layered lobe's slots, under their heading, by MaterialLobe: shown while the lobe is on
     // (null for the core).
-    std::array<QWidget*, 5> m_lobeSlots {};
+    std::array<QWidget*, std::size_t(MaterialLobe::Iridescence) + 1> m_lobeSlots {}; // by MaterialLobe
     ThumbnailLoader* m_thumbnails;
     QFileSystemWatcher* m_watcher;
     QTimer* m_reloadTimer;

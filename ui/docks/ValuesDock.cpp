@@ -14,6 +14,7 @@
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -229,6 +230,15 @@ void ValuesDock::showValue(const PickedValue& value)
             row(material, tr("Anisotropy direction (tangent plane)"), components(inputs.anisotropyTangentDirection));
             if (inputs.anisotropyDirection != glm::dvec3(0.0))
                 row(material, tr("Anisotropy direction (world)"), components(inputs.anisotropyDirection));
+        }
+        if (inputs.iridescence > 0.0) {
+            row(material, tr("Iridescence strength"), number(inputs.iridescence));
+            row(material, tr("Iridescence film IOR"), number(inputs.iridescenceIor));
+            row(material, tr("Iridescence thickness (nm)"), number(inputs.iridescenceThickness));
+            // The film's reflectance seen head-on: what colours the highlight facing the viewer.
+            const glm::dvec3 headOn = glm::mix(filmFresnel(inputs, dielectricReflectance(inputs).f0, 1.0),
+                filmFresnel(inputs, inputs.baseColor, 1.0), inputs.metallic);
+            row(material, tr("Iridescence Fresnel at normal incidence"), components(headOn));
         }
     }
     m_tree->expandAll();

@@ -73,6 +73,10 @@ MaterialChange materialChange(const Material& a, const Material& b)
         changed |= MaterialField::Unlit;
     if (a.anisotropyRotationDegrees != b.anisotropyRotationDegrees)
         changed |= MaterialField::AnisotropyRotation;
+    if (a.iridescenceIor != b.iridescenceIor)
+        changed |= MaterialField::IridescenceIor;
+    if (a.iridescenceThicknessMinimum != b.iridescenceThicknessMinimum)
+        changed |= MaterialField::IridescenceThicknessMinimum;
     if (a.shading != b.shading)
         changed |= MaterialField::Shading;
     if (change.isEmpty() && !(a == b))
@@ -232,7 +236,9 @@ std::string materialNames(const MaterialChange& change)
             {MaterialField::EmissiveStrength, "emissiveStrength"}, {MaterialField::AlphaMode, "alphaMode"},
             {MaterialField::AlphaCutoff, "alphaCutoff"}, {MaterialField::DoubleSided, "doubleSided"},
             {MaterialField::Shading, "shading"}, {MaterialField::Unlit, "unlit"},
-            {MaterialField::AnisotropyRotation, "anisotropyRotationDegrees"}});
+            {MaterialField::AnisotropyRotation, "anisotropyRotationDegrees"},
+            {MaterialField::IridescenceIor, "iridescenceIor"},
+            {MaterialField::IridescenceThicknessMinimum, "iridescenceThicknessMinimum"}});
     for (MapSlot slot : kAllMapSlots)
         if (change.map(slot)) {
             if (!text.empty())

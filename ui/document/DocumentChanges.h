@@ -87,8 +87,10 @@ enum class MaterialField : unsigned {
     Shading = 1u << 6, // Material::shading: kind Shading
     Unlit = 1u << 7,
     AnisotropyRotation = 1u << 8, // KHR_materials_anisotropy's rotation (its strength is a map's factor)
+    IridescenceIor = 1u << 9, // KHR_materials_iridescence's film index
+    IridescenceThicknessMinimum = 1u << 10, // its thickness texture's 0 (the maximum is a map's factor)
     // (The layered lobes' factors are their maps' factors: the map changes say them.)
-    All = (1u << 9) - 1u,
+    All = (1u << 11) - 1u,
 };
 Q_DECLARE_FLAGS(MaterialFields, MaterialField)
 Q_DECLARE_OPERATORS_FOR_FLAGS(MaterialFields)
