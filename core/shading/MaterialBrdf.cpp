@@ -157,7 +157,7 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
             if (metallic < 1.0) {
                 const glm::dvec3 firid = filmFresnel(material, layer.f0, VoH);
                 // The energy-preserving coupling couples the base to the film as to a Schlick
-                // layer of the film's normal-incidence reflectance (docs/shading.md).
+                // layer over the film's Fresnel (filmLayer; docs/shading.md).
                 const double filmWeight = m_model.coupling == DielectricCoupling::FresnelMix
                     ? 1.0 - maxValue(firid)
                     : couplingFactor(filmLayer(material, layer.f0), NoV, NoL, roughness);
