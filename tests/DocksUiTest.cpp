@@ -59,18 +59,7 @@ using namespace facet;
 
 namespace {
 
-// Waits (processing events) until `done` holds.
-template <typename Predicate> bool waitFor(Predicate done, int timeoutMs = 30000)
-{
-    QElapsedTimer clock;
-    clock.start();
-    while (!done()) {
-        if (clock.elapsed() > timeoutMs)
-            return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
+using test::waitFor;
 
 // Drags `urls` onto `target` and drops them there, as the desktop would.
 bool dropUrls(QWidget* target, const QList<QUrl>& urls)

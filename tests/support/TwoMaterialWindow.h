@@ -9,7 +9,8 @@
 #include "ui/document/Document.h"
 #include "ui/viewport/ViewportWidget.h"
 
-#include <QElapsedTimer>
+#include "WindowTestSupport.h"
+
 #include <QString>
 #include <QTemporaryDir>
 #include <QtTest/QTest>
@@ -17,18 +18,6 @@
 #include <memory>
 
 namespace facet::test {
-
-template <typename Predicate> bool waitFor(Predicate done, int timeoutMs = 30000)
-{
-    QElapsedTimer clock;
-    clock.start();
-    while (!done()) {
-        if (clock.elapsed() > timeoutMs)
-            return false;
-        QTest::qWait(20);
-    }
-    return true;
-}
 
 class TwoMaterialWindowFixture {
 protected:

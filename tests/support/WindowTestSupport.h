@@ -10,6 +10,7 @@
 #include "ui/viewport/ViewportWidget.h"
 
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QMessageBox>
 #include <QSignalSpy>
 #include <QSlider>
@@ -22,6 +23,19 @@
 #include <memory>
 
 namespace facet::test {
+
+// Waits (processing events) until `done` holds, at most `timeoutMs`.
+template <typename Predicate> bool waitFor(Predicate done, int timeoutMs = 30000)
+{
+    QElapsedTimer clock;
+    clock.start();
+    while (!done()) {
+        if (clock.elapsed() > timeoutMs)
+            return false;
+        QTest::qWait(20);
+    }
+    return true;
+}
 
 // What a main-window test's initMain() does before the QApplication exists: QStandardPaths in
 // test mode (the user's settings and presets untouched), Qt's own dialogs (a test can answer
