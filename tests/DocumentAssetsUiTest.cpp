@@ -9,6 +9,7 @@
 #include "ui/document/DocumentAssets.h"
 
 #include "TestSupport.h"
+#include "core/image/MapImageCache.h"
 
 #include <QDateTime>
 #include <QFile>
@@ -17,6 +18,7 @@
 #include <QTemporaryDir>
 #include <QtTest/QTest>
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -64,6 +66,8 @@ private Q_SLOTS:
     void changedFileLoadsAgainPreviousStandsIn();
     void entriesNoUserNamesAreDropped();
     void indexedEnvironmentArrivesBeforeItsPixels();
+    void mapPixelsReleasedThenReloaded();
+    void mapWarningNamesSanitisedSamples();
 
 private:
     QString path(const QString& name) const { return m_dir.filePath(name); }
@@ -274,3 +278,53 @@ void DocumentAssetsUiTest::indexedEnvironmentArrivesBeforeItsPixels()
 
 QTEST_GUILESS_MAIN(DocumentAssetsUiTest)
 #include "DocumentAssetsUiTest.moc"
+
+void DocumentAssetsUiTest::mapPixelsReleasedThenReloaded()
+{
+    const QString file = path(QStringLiteral("released.exr"));
+    QVERIFY(test::writeConstantExr(file, 0.5f));
+    const std::string name = file.toStdString();
+    DocumentAssets assets;
+    assets.map(name);
+    assets.waitForLoads();
+    std::shared_ptr<const MapImage> image = assets.map(name);
+    QVERIFY(image && image->hasPixels());
+    QCOMPARE(assets.mapTimestamp(name), QFileInfo(file).lastModified().toMSecsSinceEpoch());
+
+    // Only the current entry is released; a copy the cache no longer holds is left alone.
+    const MapImage other = *image;
+    QVERIFY(!assets.releaseMapPixels(name, &other));
+    const std::shared_ptr<const MapImage> standIn = assets.releaseMapPixels(name, image.get());
+    QVERIFY(standIn && !standIn->hasPixels());
+    QCOMPARE(standIn->width(), image->width());
+    QCOMPARE(assets.map(name), standIn);
+    QVERIFY(!assets.releaseMapPixels(name, standIn.get())); // nothing left to release
+    image.reset();
+    QVERIFY(!MapImageCache::shared().isHeld(name)); // the pixels are gone
+
+    // Asked for again: the stand-in meanwhile, then a new decode with pixels.
+    assets.reload(Kind::Map, name);
+    QCOMPARE(assets.map(name), standIn);
+    QVERIFY(assets.isLoading(Kind::Map, name));
+    assets.waitForLoads();
+    QVERIFY(assets.map(name)->hasPixels());
+    QCOMPARE(assets.loads(Kind::Map), 2);
+    QCOMPARE(assets.map(name)->width(), standIn->width());
+    QCOMPARE(assets.loads(Kind::Map), 2); // once reloaded, current again
+}
+
+void DocumentAssetsUiTest::mapWarningNamesSanitisedSamples()
+{
+    const QString clean = path(QStringLiteral("clean.exr"));
+    const QString dirty = path(QStringLiteral("nan.exr"));
+    QVERIFY(test::writeConstantExr(clean, 0.5f));
+    QVERIFY(test::writeConstantExr(dirty, std::numeric_limits<float>::quiet_NaN()));
+    DocumentAssets assets;
+    assets.map(clean.toStdString());
+    assets.map(dirty.toStdString());
+    assets.waitForLoads();
+    QVERIFY(assets.map(dirty.toStdString()));
+    QCOMPARE(assets.warning(Kind::Map, clean.toStdString()), std::string());
+    const std::string warning = assets.warning(Kind::Map, dirty.toStdString());
+    QVERIFY2(warning.find("nan.exr: replaced") != std::string::npos, warning.c_str());
+}

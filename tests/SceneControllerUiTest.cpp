@@ -72,6 +72,8 @@ private Q_SLOTS:
     void environmentAndMeshFilesLoadOffTheGuiThread_data();
     void environmentAndMeshFilesLoadOffTheGuiThread();
     void changedFileChosenAgainShowsItsNewVersion();
+    void viewsShareOneMapLoader();
+    void releasedPixelsLeaveTheSharedCacheToo();
 
 private:
     // Two materials, each with a file in base colour, normal and roughness (six files).
@@ -363,3 +365,80 @@ void SceneControllerUiTest::changedFileChosenAgainShowsItsNewVersion()
 
 QTEST_GUILESS_MAIN(SceneControllerUiTest)
 #include "SceneControllerUiTest.moc"
+
+void SceneControllerUiTest::viewsShareOneMapLoader()
+{
+    // Two views of one document (the single view and the Compare view's controller) over the
+    // window's asset cache: the maps load once, through the cache, and the second view takes
+    // the first's images at once (the window had two map loaders before: this read 0 loads).
+    Document document;
+    document.setProject(texturedProject(), QStringLiteral("Maps"));
+    DocumentAssets assets;
+    SceneController first(&document, &assets);
+    QCOMPARE(first.pendingMapLoads(), 6);
+    QTRY_COMPARE_WITH_TIMEOUT(first.pendingMapLoads(), 0, 30000);
+    QCOMPARE(assets.loads(DocumentAssets::Kind::Map), 6);
+    QCOMPARE(first.loadCounts().maps, 6);
+
+    QSignalSpy arrived(&first, &SceneController::mapsArrived);
+    SceneController second(&document, &assets);
+    QCOMPARE(second.pendingMapLoads(), 0); // there at once, from the cache
+    QCOMPARE(second.loadCounts().maps, 0);
+    QCOMPARE(assets.loads(DocumentAssets::Kind::Map), 6);
+    for (std::size_t m = 0; m < 2; ++m)
+        for (MapSlot slot : {MapSlot::BaseColor, MapSlot::Normal, MapSlot::Roughness}) {
+            const LoadedMapImage& a = first.assets().maps[m][std::size_t(slot)];
+            const LoadedMapImage& b = second.assets().maps[m][std::size_t(slot)];
+            QVERIFY(a.image && a.image == b.image); // one decoded copy
+            QCOMPARE(a.timestamp, b.timestamp); // one texture key
+            QVERIFY(a.timestamp != 0);
+        }
+
+    // A new file for one slot: one load, and the other view takes it on arrival, not again.
+    Project project = document.project();
+    project.materials[1].map(MapSlot::Normal).path = file("new_normal.png");
+    document.setProject(project, QStringLiteral("New normal"));
+    QTRY_COMPARE_WITH_TIMEOUT(first.pendingMapLoads() + second.pendingMapLoads(), 0, 30000);
+    QCOMPARE(assets.loads(DocumentAssets::Kind::Map), 7);
+    QCOMPARE(first.assets().maps[1][std::size_t(MapSlot::Normal)].image,
+        second.assets().maps[1][std::size_t(MapSlot::Normal)].image);
+    QVERIFY(first.assets().maps[1][std::size_t(MapSlot::Normal)].image);
+    QVERIFY(arrived.count() > 0);
+}
+
+void SceneControllerUiTest::releasedPixelsLeaveTheSharedCacheToo()
+{
+    // After upload the view keeps a stand-in without pixels, and so does the asset cache: the
+    // decoded copy is freed (MapImageCache holds it weakly). A view without the texture asks for
+    // it again (reloadMaps): one decode, and it arrives.
+    Document document;
+    Project project = Project::defaultProject();
+    project.material().map(MapSlot::BaseColor).path = file("m0_base.png");
+    project.material().map(MapSlot::Roughness).path = file("m0_rough.png");
+    document.setProject(project, QStringLiteral("Maps"));
+    DocumentAssets assets;
+    SceneController scene(&document, &assets);
+    QTRY_COMPARE_WITH_TIMEOUT(scene.pendingMapLoads(), 0, 30000);
+    QVERIFY(MapImageCache::shared().isHeld(file("m0_base.png")));
+
+    // On the GPU in every colour space: both released.
+    QCOMPARE(scene.releaseMapPixels([](const std::string&, std::int64_t, ColorEncoding) { return true; }), 2);
+    QCOMPARE(scene.releaseMapPixels([](const std::string&, std::int64_t, ColorEncoding) { return true; }), 0);
+    for (const char* name : {"m0_base.png", "m0_rough.png"}) {
+        QVERIFY2(!MapImageCache::shared().isHeld(file(name)), name);
+        const std::shared_ptr<const MapImage> cached = assets.map(file(name));
+        QVERIFY(cached && !cached->hasPixels());
+        QCOMPARE(cached->width(), 8); // the stand-in keeps the size and format
+    }
+    QVERIFY(scene.assets().maps[0][std::size_t(MapSlot::BaseColor)].image
+        == assets.map(file("m0_base.png"))); // one stand-in for the view and the cache
+
+    // A new GL context: decoded again, once, then shown with its pixels.
+    const std::uint64_t decodes = MapImageCache::shared().decodeCount(file("m0_base.png"));
+    scene.reloadMaps({file("m0_base.png")});
+    QCOMPARE(scene.pendingMapLoads(), 1);
+    QTRY_COMPARE_WITH_TIMEOUT(scene.pendingMapLoads(), 0, 30000);
+    QCOMPARE(MapImageCache::shared().decodeCount(file("m0_base.png")), decodes + 1);
+    QVERIFY(scene.assets().maps[0][std::size_t(MapSlot::BaseColor)].image->hasPixels());
+    QVERIFY(!scene.assets().maps[0][std::size_t(MapSlot::Roughness)].image->hasPixels());
+}

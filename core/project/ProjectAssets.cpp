@@ -81,6 +81,21 @@ std::string viewMeshGltfFile(const std::string& nameOrPath)
     return file && isGltfFileName(*file) ? *file : std::string();
 }
 
+void placeEnvironment(Environment& environment, const EnvironmentSettings& settings)
+{
+    environment.setRotationDegrees(settings.rotationDegrees);
+    environment.setIntensity(settings.intensity);
+}
+
+void assignMaps(ProjectAssets& assets, const Project& project, const MapLookup& lookup)
+{
+    assets.maps.assign(project.materials.size(), {});
+    for (std::size_t m = 0; m < project.materials.size(); ++m)
+        for (MapSlot slot : kAllMapSlots)
+            if (const MaterialMap& map = project.materials[m].map(slot); map.hasTexture())
+                assets.maps[m][std::size_t(slot)] = lookup(m, slot, map);
+}
+
 std::optional<ProjectAssets> loadProjectAssets(
     const Project& project, std::string* error, std::string* warning)
 {
@@ -101,8 +116,7 @@ std::optional<ProjectAssets> loadProjectAssets(
             *error = "loadProjectAssets: environment: " + problem;
         return std::nullopt;
     }
-    environment->setRotationDegrees(project.environment.rotationDegrees);
-    environment->setIntensity(project.environment.intensity);
+    placeEnvironment(*environment, project.environment);
     assets.environment = std::move(*environment);
 
     auto mesh = cache.mesh(project.view.mesh, &problem, warning, project.view.keepUnits);
@@ -115,38 +129,36 @@ std::optional<ProjectAssets> loadProjectAssets(
     assets.meshKey = mesh->key;
 
     // Each file once: a packed file used by several slots or materials is decoded once
-    // (MapImageCache) and reported once.
+    // (MapImageCache) and reported once; the first that fails ends the load.
     std::map<std::string, std::shared_ptr<const MapImage>> decoded;
     std::string budgetNote;
     const MapBudget budget = MapBudget::fromEnvironment(&budgetNote);
     appendWarning(warning, budgetNote);
-    assets.maps.resize(project.materials.size());
-    for (std::size_t m = 0; m < project.materials.size(); ++m) {
-        for (MapSlot slot : kAllMapSlots) {
-            const MaterialMap& map = project.materials[m].map(slot);
-            if (!map.hasTexture() || !project.materials[m].usesSlot(slot))
-                continue; // nothing, or a lobe that is off: not read (Material::usesSlot)
-            std::shared_ptr<const MapImage>& image = decoded[map.path];
+    std::string mapError;
+    assignMaps(assets, project, [&](std::size_t m, MapSlot slot, const MaterialMap& map) -> LoadedMapImage {
+        if (!mapError.empty() || !project.materials[m].usesSlot(slot))
+            return {}; // a lobe that is off: not read (Material::usesSlot)
+        std::shared_ptr<const MapImage>& image = decoded[map.path];
+        if (!image) {
+            ImageLoadStats stats;
+            image = MapImageCache::shared().load(map.path, &problem, &stats, budget);
             if (!image) {
-                ImageLoadStats stats;
-                image = MapImageCache::shared().load(map.path, &problem, &stats, budget);
-                if (!image) {
-                    if (error)
-                        *error = "loadProjectAssets: " + materialLabel(project, m) + toString(slot)
-                            + " map: " + problem;
-                    return std::nullopt;
-                }
-                if (stats.total() > 0)
-                    appendWarning(warning,
-                        map.path + ": replaced " + std::to_string(stats.nanCount) + " NaN, "
-                            + std::to_string(stats.infCount) + " Inf, " + std::to_string(stats.negativeCount)
-                            + " negative samples");
+                mapError
+                    = "loadProjectAssets: " + materialLabel(project, m) + toString(slot) + " map: " + problem;
+                return {};
             }
-            LoadedMapImage& slotImage = assets.maps[m][std::size_t(slot)];
-            slotImage.image = image;
-            slotImage.path = map.path;
-            slotImage.timestamp = modificationTime(fileOfImagePath(map.path));
+            if (stats.total() > 0)
+                appendWarning(warning,
+                    map.path + ": replaced " + std::to_string(stats.nanCount) + " NaN, "
+                        + std::to_string(stats.infCount) + " Inf, " + std::to_string(stats.negativeCount)
+                        + " negative samples");
         }
+        return {image, map.path, modificationTime(fileOfImagePath(map.path))};
+    });
+    if (!mapError.empty()) {
+        if (error)
+            *error = mapError;
+        return std::nullopt;
     }
     return assets;
 }

@@ -4,7 +4,9 @@
 // turn a Project into ProjectAssets here, then hand the assets to the renderer.
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,6 +20,7 @@
 
 namespace facet {
 
+struct EnvironmentSettings;
 struct Project;
 
 struct LoadedMapImage {
@@ -35,6 +38,16 @@ struct ProjectAssets {
     // texture, a shared normal map) is decoded once and shared (core/image/MapImageCache.h).
     std::vector<std::array<LoadedMapImage, kMapSlotCount>> maps;
 };
+
+// The one builder of a frame's assets from a project, used by the command line
+// (loadProjectAssets), the window's single view (ui/viewport/SceneController) and the Compare
+// view's cells, each with its own source of files:
+// - `environment` placed as `settings` say (rotation and intensity);
+// - assets.maps sized to the project's materials, each slot that names a file set from
+//   lookup(material, slot, map) (an empty LoadedMapImage: the slot shows its factor alone).
+void placeEnvironment(Environment& environment, const EnvironmentSettings& settings);
+using MapLookup = std::function<LoadedMapImage(std::size_t material, MapSlot slot, const MaterialMap& map)>;
+void assignMaps(ProjectAssets& assets, const Project& project, const MapLookup& lookup);
 
 // Loads everything `project` names. Errors name the file and the problem (the environment,
 // the mesh, or a map: "loadProjectAssets: baseColor map: MapImage::load: <path>: <reason>"; a

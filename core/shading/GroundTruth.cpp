@@ -11,6 +11,7 @@
 
 #include "core/ibl/EnvironmentSampler.h"
 #include "core/project/Project.h"
+#include "core/project/ProjectAssets.h"
 #include "core/shading/Anisotropy.h"
 #include "core/shading/Brdf.h"
 #include "core/shading/MaterialInputs.h"
@@ -324,8 +325,7 @@ std::optional<GroundTruthScene> groundTruthSceneFromProject(
             *error = environmentError;
         return std::nullopt;
     }
-    environment->setRotationDegrees(project.environment.rotationDegrees);
-    environment->setIntensity(project.environment.intensity);
+    placeEnvironment(*environment, project.environment);
     scene.environment = std::move(*environment);
     scene.lights = project.lights;
     return scene;

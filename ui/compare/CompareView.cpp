@@ -1,5 +1,6 @@
 #include "ui/compare/CompareView.h"
 
+#include "core/project/ProjectAssets.h"
 #include "ui/compare/CompareController.h"
 #include "ui/document/Document.h"
 #include "ui/document/DocumentAssets.h"
@@ -10,9 +11,7 @@
 
 #include <QContextMenuEvent>
 #include <QDataStream>
-#include <QDateTime>
 #include <QDragEnterEvent>
-#include <QFileInfo>
 #include <QLabel>
 #include <QMenu>
 #include <QMimeData>
@@ -322,19 +321,21 @@ void CompareView::layoutOverlays()
 
 std::vector<CompareCellDraw> CompareView::cellDraws()
 {
-    // The single view's loaded maps by file (the mesh and maps are loaded once for both views).
-    // A decoded copy the single view released after upload (a stand-in without pixels) is drawn
-    // from the texture both views share (ui/viewport/ViewShareGroup) while that texture is there; when it
-    // is not (evicted, or a context of its own) the file comes again through DocumentAssets.
+    // The mesh, the environments and the maps come from the document's asset cache, shared with
+    // the single view (each file decoded once for both views), and are assembled as the single
+    // view's are (core/project/ProjectAssets.h). A map whose pixels the single view released after
+    // upload (a stand-in) is drawn from the texture both views share (ui/viewport/ViewShareGroup)
+    // while that texture is there; when it is not (evicted, or a context of its own) the cache
+    // decodes the file again and the slot shows its factor until it arrives.
     const ProjectAssets& shared = m_scene->assets();
-    std::map<std::string, LoadedMapImage> loaded;
-    for (const auto& material : shared.maps)
-        for (const LoadedMapImage& map : material)
-            if (map.image && !map.path.empty())
-                loaded.emplace(map.path, map);
-    const auto usable = [this](const LoadedMapImage& map, ColorEncoding colorSpace) {
-        return map.image->hasPixels()
-            || (m_renderer && m_renderer->textureReady(map.path, map.timestamp, colorSpace));
+    const auto mapOf = [this](std::size_t, MapSlot, const MaterialMap& source) -> LoadedMapImage {
+        LoadedMapImage map {m_assets->map(source.path), source.path, m_assets->mapTimestamp(source.path)};
+        if (!map.image || map.image->hasPixels()
+            || (m_renderer && m_renderer->textureReady(map.path, map.timestamp, source.colorSpace)))
+            return map.image ? map : LoadedMapImage {};
+        m_assets->reload(DocumentAssets::Kind::Map, source.path);
+        m_assets->map(source.path);
+        return {};
     };
 
     const qreal ratio = devicePixelRatioF();
@@ -366,27 +367,9 @@ std::vector<CompareCellDraw> CompareView::cellDraws()
         if (const auto environment
             = shared.mesh ? m_assets->environment(cell.project.environment.source) : nullptr) {
             draw.assets.environment = *environment;
-            draw.assets.environment.setRotationDegrees(cell.project.environment.rotationDegrees);
-            draw.assets.environment.setIntensity(cell.project.environment.intensity);
+            placeEnvironment(draw.assets.environment, cell.project.environment);
         }
-        draw.assets.maps.resize(cell.project.materials.size());
-        for (std::size_t m = 0; m < cell.project.materials.size(); ++m)
-            for (MapSlot slot : kAllMapSlots) {
-                const MaterialMap& source = cell.project.materials[m].map(slot);
-                const std::string& path = source.path;
-                if (path.empty())
-                    continue;
-                LoadedMapImage& map = draw.assets.maps[m][std::size_t(slot)];
-                if (const auto found = loaded.find(path);
-                    found != loaded.end() && usable(found->second, source.colorSpace)) {
-                    map = found->second;
-                } else if (auto image = m_assets->map(path)) {
-                    map.image = std::move(image);
-                    map.path = path;
-                    map.timestamp
-                        = QFileInfo(QString::fromStdString(path)).lastModified().toMSecsSinceEpoch();
-                }
-            }
+        assignMaps(draw.assets, cell.project, mapOf);
         const QRect rect = cellRectOf(i);
         const int left = int(std::lround(rect.left() * ratio));
         const int right = int(std::lround((rect.right() + 1) * ratio));

@@ -104,12 +104,32 @@ std::shared_ptr<const MapImage> DocumentAssets::map(const std::string& path)
 {
     const Entry* entry = lookup(Kind::Map, path, false, [path] {
         Entry loaded;
-        loaded.map = MapImageCache::shared().load(path, &loaded.problem);
+        ImageLoadStats stats;
+        loaded.map = MapImageCache::shared().load(path, &loaded.problem, &stats);
         if (!loaded.map && loaded.problem.empty())
             loaded.problem = path + ": could not be read";
+        if (loaded.map && stats.total() > 0)
+            loaded.warning
+                = path + ": replaced " + std::to_string(stats.total()) + " NaN, Inf or negative samples";
         return loaded;
     });
     return entry ? entry->map : nullptr;
+}
+
+std::int64_t DocumentAssets::mapTimestamp(const std::string& path) const
+{
+    const auto found = m_entries.find(keyOf(Kind::Map, path));
+    return found == m_entries.end() ? 0 : found->second.modified;
+}
+
+std::shared_ptr<const MapImage> DocumentAssets::releaseMapPixels(
+    const std::string& path, const MapImage* image)
+{
+    const auto found = m_entries.find(keyOf(Kind::Map, path));
+    if (found == m_entries.end() || found->second.map.get() != image || !image || !image->hasPixels())
+        return nullptr;
+    found->second.map = std::make_shared<const MapImage>(MapImage::withoutPixels(*image));
+    return found->second.map;
 }
 
 const DocumentAssets::Entry* DocumentAssets::lookup(
@@ -120,7 +140,8 @@ const DocumentAssets::Entry* DocumentAssets::lookup(
             : kind == Kind::Mesh                                             ? meshOfSource(name).first
                                                                              : name);
     const auto found = m_entries.find(key);
-    const bool current = found != m_entries.end() && found->second.modified == modified;
+    const bool current
+        = found != m_entries.end() && found->second.modified == modified && !found->second.reload;
     if (current || m_loading.count(key))
         return found == m_entries.end() ? nullptr : &found->second;
     ++m_loads[kind];
@@ -143,7 +164,9 @@ const DocumentAssets::Entry* DocumentAssets::lookup(
             },
             Qt::QueuedConnection);
     });
-    // A changed file: the previous version until the new one arrives.
+    // A changed file (or one asked for again): the previous version until the new one arrives.
+    if (found != m_entries.end())
+        found->second.reload = false;
     return found == m_entries.end() || !found->second.problem.empty() ? nullptr : &found->second;
 }
 
@@ -193,6 +216,13 @@ void DocumentAssets::retry(Kind kind, const std::string& name)
     const auto found = m_entries.find(keyOf(kind, name));
     if (found != m_entries.end() && !found->second.problem.empty())
         m_entries.erase(found);
+}
+
+void DocumentAssets::reload(Kind kind, const std::string& name)
+{
+    const auto found = m_entries.find(keyOf(kind, name));
+    if (found != m_entries.end())
+        found->second.reload = true;
 }
 
 void DocumentAssets::setInUse(const void* user, Kind kind, std::set<std::string> names)

@@ -1,11 +1,11 @@
 #pragma once
 // The window's asset cache, one per document (not a widget, no GL): environments, meshes and
-// material maps decoded on worker threads (a QThreadPool) and shared by every view. The single
-// view's ui/viewport/SceneController takes its environment and mesh from here, the Compare view its cells'
-// environments and the maps a cell names that the single view does not hold, so an environment
-// shown by the single view and three grid cells is decoded once. Maps go through the
-// process-wide core/image/MapImageCache (shared with the map slots and thumbnails); environments and
-// meshes are held here. (core/project/AssetCache is the command line's synchronous equivalent for one
+// material maps decoded on worker threads (a QThreadPool) and shared by every view: the window's
+// one loader of them. The single view's ui/viewport/SceneController and the Compare view's cells
+// take their environments, meshes and maps from here, so an environment or a map shown by the
+// single view and three grid cells is decoded once. Maps go through the process-wide
+// core/image/MapImageCache (shared with the map slots and thumbnails); environments and meshes are
+// held here. (core/project/AssetCache is the command line's synchronous equivalent for one
 // batch: `facet sheet`.)
 //
 // A request returns what is loaded, or null and starts the load; its arrival is announced
@@ -50,8 +50,16 @@ public:
     // mesh, with another name here).
     std::shared_ptr<const AssetCache::LoadedMesh> mesh(const std::string& source);
     static std::string meshSource(const std::string& nameOrPath, bool keepUnits);
-    // The map image of `path` (MapImageCache); null while it decodes or when it failed.
+    // The map image of `path` (MapImageCache); null while it decodes or when it failed. Its
+    // warning() names what the decode sanitised ("replaced 3 NaN, Inf or negative samples").
     std::shared_ptr<const MapImage> map(const std::string& path);
+    // The modification time (ms since the epoch) of the file the current map entry of `path` came
+    // from: LoadedMapImage::timestamp, the key of its textures; 0 when there is no entry.
+    std::int64_t mapTimestamp(const std::string& path) const;
+    // Memory: the entry of `path` keeps a stand-in without pixels (MapImage::withoutPixels) in place
+    // of `image` once a view has it on the GPU; an entry that is no longer `image` (a newer file, a
+    // decode asked for again) is left as it is. Returns the stand-in, or null when nothing changed.
+    std::shared_ptr<const MapImage> releaseMapPixels(const std::string& path, const MapImage* image);
 
     bool isLoading(Kind kind, const std::string& name) const;
     // Why `name` could not be loaded (core's message, naming the file); empty otherwise.
@@ -60,6 +68,10 @@ public:
     std::string warning(Kind kind, const std::string& name) const;
     // Forgets that `name` failed: the next request loads it again (an explicit reload).
     void retry(Kind kind, const std::string& name);
+    // The next request of `name` loads it again although its file did not change (a map whose
+    // pixels were released, wanted by a view without its texture); the current entry is returned
+    // meanwhile.
+    void reload(Kind kind, const std::string& name);
 
     // `user` shows `names` of `kind` (replacing what it said before); entries of that kind that
     // no user names are dropped (a load under way finishes and is kept until the next call).
@@ -88,6 +100,7 @@ private:
         std::int64_t modified = 0; // of the file the entry (or its failure) came from
         std::string problem; // set: it could not be loaded
         std::string warning;
+        bool reload = false; // reload(): loaded again at the next request
     };
     using Load = std::function<Entry()>;
 

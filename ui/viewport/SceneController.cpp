@@ -1,18 +1,16 @@
 #include "ui/viewport/SceneController.h"
 
 #include "core/gltf/GltfImport.h"
-#include "core/image/MapImageCache.h"
 #include "core/project/Project.h"
+#include "core/project/ProjectAssets.h"
 #include "render/SceneFromProject.h"
 #include "render/Turntable.h"
 #include "ui/document/Document.h"
 #include "ui/document/DocumentAssets.h"
 #include "ui/widgets/WindowMessages.h"
 
-#include <QDateTime>
 #include <QDebug>
 #include <QFileInfo>
-#include <QThread>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -22,24 +20,12 @@
 
 namespace facet {
 
-namespace {
-
-std::int64_t modificationTime(const std::string& path)
-{
-    return QFileInfo(QString::fromStdString(path)).lastModified().toMSecsSinceEpoch();
-}
-
-} // namespace
-
 SceneController::SceneController(Document* document, DocumentAssets* assets, QObject* parent)
     : QObject(parent)
     , m_document(document)
     , m_documentAssets(assets ? assets : new DocumentAssets(this))
     , m_documentAssetsAlive(m_documentAssets)
 {
-    // Decoding is CPU work beside llvmpipe's own threads and the GUI thread: leave a core to
-    // them (one worker on a 2-core machine), at most 4.
-    m_mapPool.setMaxThreadCount(std::clamp(QThread::idealThreadCount() - 1, 1, 4));
     connect(m_document, &Document::changed, this, &SceneController::onDocumentChanged);
     connect(m_documentAssets, &DocumentAssets::assetArrived, this, &SceneController::onAssetArrived);
     // The environment shown got its pixels (it came from the environment index undecoded): what
@@ -200,9 +186,7 @@ bool SceneController::takeEnvironment()
 
 void SceneController::applyEnvironmentSettings()
 {
-    const EnvironmentSettings& settings = m_document->project().environment;
-    m_assets.environment.setRotationDegrees(settings.rotationDegrees);
-    m_assets.environment.setIntensity(settings.intensity);
+    placeEnvironment(m_assets.environment, m_document->project().environment);
 }
 
 void SceneController::loadMesh()
@@ -265,6 +249,8 @@ void SceneController::announceLoading(const std::string& name)
 
 void SceneController::onAssetArrived()
 {
+    if (!m_pendingMaps.empty())
+        takeArrivedMaps();
     const int pendingBefore = pendingAssetLoads();
     const bool environment = takeEnvironment();
     const bool mesh = takeMesh();
@@ -278,8 +264,6 @@ void SceneController::onAssetArrived()
 
 SceneController::~SceneController()
 {
-    m_mapPool.clear();
-    m_mapPool.waitForDone();
     if (!m_documentAssetsAlive.isNull())
         m_documentAssets->forgetUser(this);
 }
@@ -290,94 +274,85 @@ void SceneController::loadMaps(const DocumentChanges& changes)
     // Only the slots whose file the change names are looked at on disk: the others keep what they
     // show, so a new normal map for material 1 never re-reads material 0's maps. A change that
     // names no slot (files changed on disk: kinds alone) looks at every file and loads those whose
-    // modification time changed; a new project (WholeProject) loads every file again.
+    // modification time changed; a new project (WholeProject) looks at every file and tries again
+    // those that failed.
+    using Kind = DocumentAssets::Kind;
     const bool all = changes == DocumentChanges(DocumentChange::WholeProject);
     const Project& project = m_document->project();
     std::map<std::string, CachedImage> images;
+    std::vector<std::string> lookAt;
     for (std::size_t m = 0; m < project.materials.size(); ++m) {
         const MaterialChange changed = changes.material(m);
         for (MapSlot slot : kAllMapSlots) {
             const MaterialMap& map = project.materials[m].map(slot);
             if (!map.hasTexture() || images.count(map.path))
                 continue;
+            const bool named = changed.map(slot).testFlag(MapProperty::Path);
             const auto previous = m_images.find(map.path);
-            if (!all && !changed.map(slot).testFlag(MapProperty::Path) && previous != m_images.end()) {
+            if (!all && !named && previous != m_images.end()) {
                 images.emplace(map.path, previous->second); // unchanged: shown (or loading) as it is
                 continue;
             }
-            const std::int64_t timestamp = modificationTime(fileOfImagePath(map.path));
-            const bool current = previous != m_images.end() && previous->second.timestamp == timestamp
-                && (previous->second.image || !previous->second.problem.empty());
-            const auto pending = m_pendingMaps.find(map.path);
-            if (!all && current) {
-                images.emplace(map.path, previous->second); // already loaded (or reported)
-                continue;
-            }
-            // Until the new decode arrives the slot shows the previous version of the file, if any.
+            // Until a new decode arrives the slot shows the previous version of the file, if any.
             images.emplace(map.path,
                 previous != m_images.end() && previous->second.image ? previous->second : CachedImage {});
-            if (pending == m_pendingMaps.end() || pending->second.timestamp != timestamp || all)
-                startMapLoad(map.path, timestamp);
+            if (all || named)
+                m_documentAssets->retry(
+                    Kind::Map, map.path); // chosen again: a file that failed is tried again
+            lookAt.push_back(map.path);
         }
     }
-    // A load of a file the project no longer names is stale: its result will be dropped.
-    for (auto it = m_pendingMaps.begin(); it != m_pendingMaps.end();) {
-        if (!images.count(it->first))
-            it = m_pendingMaps.erase(it);
-        else
-            ++it;
-    }
+    // A load of a file the project no longer names is not waited for.
+    std::erase_if(m_pendingMaps, [&](const std::string& path) { return !images.count(path); });
     // A file that failed and that no slot names any more is no longer a problem.
     for (const auto& [path, entry] : m_images)
         if (!entry.problem.empty() && !images.count(path))
             Q_EMIT problemChanged(QStringLiteral("map:") + QString::fromStdString(path), {});
     m_images = std::move(images);
+    std::set<std::string> inUse;
+    for (const auto& entry : m_images)
+        inUse.insert(entry.first);
+    m_documentAssets->setInUse(this, Kind::Map, std::move(inUse));
+    bool taken = false;
+    for (const std::string& path : lookAt)
+        taken = fetchMap(path) || taken;
     publishMaps();
     if (m_pendingMaps.empty() && m_batchTotal > 0) {
-        // Every load of the batch went stale: the batch is over.
+        // Every load of the batch settled or went stale: the batch is over.
         m_batchLoaded = m_batchTotal;
         Q_EMIT mapLoadProgress(m_batchLoaded, m_batchTotal, double(m_batchClock.nsecsElapsed()) / 1e6);
         m_batchTotal = m_batchLoaded = 0;
     }
+    if (taken)
+        Q_EMIT mapsArrived(); // entries the cache held already (another view's, an earlier project's)
 }
 
-void SceneController::startMapLoad(const std::string& path, std::int64_t timestamp)
+bool SceneController::fetchMap(const std::string& path)
 {
-    if (m_pendingMaps.empty() && m_batchTotal == 0) {
-        m_batchLoaded = 0;
-        m_batchFailed = false;
-        m_batchClock.start();
+    using Kind = DocumentAssets::Kind;
+    const int loadsBefore = m_documentAssets->loads(Kind::Map);
+    const std::shared_ptr<const MapImage> image = m_documentAssets->map(path);
+    if (m_documentAssets->loads(Kind::Map) > loadsBefore)
+        ++m_loadCounts.maps;
+    if (m_documentAssets->isLoading(Kind::Map, path)) {
+        if (m_pendingMaps.empty() && m_batchTotal == 0) {
+            m_batchLoaded = 0;
+            m_batchFailed = false;
+            m_batchClock.start();
+        }
+        if (m_pendingMaps.insert(path).second) {
+            ++m_batchTotal;
+            Q_EMIT mapLoadProgress(m_batchLoaded, m_batchTotal, double(m_batchClock.nsecsElapsed()) / 1e6);
+        }
+        return false;
     }
-    const bool replacesPending = m_pendingMaps.count(path) > 0;
-    const std::uint64_t ticket = m_nextTicket++;
-    m_pendingMaps[path] = PendingMap {timestamp, ticket};
-    if (!replacesPending)
-        ++m_batchTotal;
-    ++m_loadCounts.maps;
-    Q_EMIT mapLoadProgress(m_batchLoaded, m_batchTotal, double(m_batchClock.nsecsElapsed()) / 1e6);
-    m_mapPool.start([this, path, ticket] {
-        std::string error;
-        ImageLoadStats stats;
-        std::shared_ptr<const MapImage> image = MapImageCache::shared().load(path, &error, &stats);
-        QMetaObject::invokeMethod(
-            this,
-            [this, path, ticket, image, error, stats] { onMapLoaded(path, ticket, image, error, stats); },
-            Qt::QueuedConnection);
-    });
-}
-
-void SceneController::onMapLoaded(const std::string& path, std::uint64_t ticket,
-    std::shared_ptr<const MapImage> image, const std::string& error, ImageLoadStats stats)
-{
-    const auto pending = m_pendingMaps.find(path);
-    if (pending == m_pendingMaps.end() || pending->second.ticket != ticket)
-        return; // the project no longer names the file, or a newer load of it is under way
+    m_pendingMaps.erase(path);
     CachedImage& entry = m_images[path];
-    entry.timestamp = pending->second.timestamp;
-    m_pendingMaps.erase(pending);
-    entry.image = std::move(image);
-    entry.problem = entry.image ? std::string() : error;
-    if (!entry.image) {
+    entry.image = image;
+    entry.timestamp = m_documentAssets->mapTimestamp(path);
+    entry.problem = image ? std::string() : m_documentAssets->problem(Kind::Map, path);
+    const QString subject = QStringLiteral("map:") + QString::fromStdString(path);
+    if (!image) {
         // Name the slot that wanted it (the first one, when a packed file feeds several).
         std::string slotName = "Texture";
         for (const Material& material : m_document->project().materials)
@@ -385,42 +360,54 @@ void SceneController::onMapLoaded(const std::string& path, std::uint64_t ticket,
                 if (slotName == "Texture" && material.map(slot).path == path)
                     slotName = toString(slot);
         m_batchFailed = true;
-        report(slotName + " map: " + error);
-        Q_EMIT problemChanged(QStringLiteral("map:") + QString::fromStdString(path),
-            WindowMessages::fromCore(slotName + " map: " + error));
+        report(slotName + " map: " + entry.problem);
+        Q_EMIT problemChanged(subject, WindowMessages::fromCore(slotName + " map: " + entry.problem));
     } else {
-        Q_EMIT problemChanged(QStringLiteral("map:") + QString::fromStdString(path), {});
+        Q_EMIT problemChanged(subject, {});
+        report(m_documentAssets->warning(Kind::Map, path));
     }
-    if (entry.image && stats.total() > 0) {
-        report(path + ": replaced " + std::to_string(stats.total()) + " NaN, Inf or negative samples");
+    return true;
+}
+
+bool SceneController::takeArrivedMaps()
+{
+    using Kind = DocumentAssets::Kind;
+    std::vector<std::string> arrived;
+    for (const std::string& path : m_pendingMaps)
+        if (!m_documentAssets->isLoading(Kind::Map, path))
+            arrived.push_back(path);
+    bool loaded = false;
+    bool failed = false;
+    int settled = 0;
+    for (const std::string& path : arrived) {
+        if (!fetchMap(path))
+            continue; // the file changed again meanwhile: its newer version is loading
+        ++settled;
+        (m_images[path].image ? loaded : failed) = true;
     }
-    ++m_batchLoaded;
+    if (settled == 0)
+        return false;
+    m_batchLoaded += settled;
     publishMaps();
-    const double ms = double(m_batchClock.nsecsElapsed()) / 1e6;
-    Q_EMIT mapLoadProgress(std::min(m_batchLoaded, m_batchTotal), m_batchTotal, ms);
+    Q_EMIT mapLoadProgress(
+        std::min(m_batchLoaded, m_batchTotal), m_batchTotal, double(m_batchClock.nsecsElapsed()) / 1e6);
     if (m_pendingMaps.empty())
         m_batchTotal = m_batchLoaded = 0;
-    if (entry.image)
+    if (loaded)
         Q_EMIT mapsArrived();
-    else
-        Q_EMIT sceneChanged(m_document->interactiveEditOpen());
+    if (failed)
+        Q_EMIT sceneChanged(m_document->interactiveEditOpen()); // its slot goes back to its factor
+    return true;
 }
 
 void SceneController::publishMaps()
 {
-    const Project& project = m_document->project();
-    m_assets.maps.assign(project.materials.size(), {});
-    for (std::size_t m = 0; m < project.materials.size(); ++m)
-        for (MapSlot slot : kAllMapSlots) {
-            const MaterialMap& map = project.materials[m].map(slot);
-            const auto found = map.hasTexture() ? m_images.find(map.path) : m_images.end();
-            if (found == m_images.end())
-                continue;
-            LoadedMapImage& loaded = m_assets.maps[m][std::size_t(slot)];
-            loaded.image = found->second.image;
-            loaded.path = map.path;
-            loaded.timestamp = found->second.timestamp;
-        }
+    assignMaps(m_assets, m_document->project(), [this](std::size_t, MapSlot, const MaterialMap& map) {
+        const auto found = m_images.find(map.path);
+        return found == m_images.end()
+            ? LoadedMapImage {}
+            : LoadedMapImage {found->second.image, map.path, found->second.timestamp};
+    });
 }
 
 int SceneController::releaseMapPixels(
@@ -438,8 +425,11 @@ int SceneController::releaseMapPixels(
                     everywhere = false;
         if (!everywhere)
             continue;
-        // One stand-in per file: the slots that share the file still share one image.
-        entry.image = std::make_shared<const MapImage>(MapImage::withoutPixels(*entry.image));
+        // One stand-in per file: the slots that share the file still share one image, and the
+        // asset cache holds the same one (its pixels are gone for every view).
+        std::shared_ptr<const MapImage> standIn = m_documentAssets->releaseMapPixels(path, entry.image.get());
+        entry.image = standIn ? std::move(standIn)
+                              : std::make_shared<const MapImage>(MapImage::withoutPixels(*entry.image));
         ++released;
     }
     if (released > 0)
@@ -449,13 +439,22 @@ int SceneController::releaseMapPixels(
 
 void SceneController::reloadMaps(const std::vector<std::string>& paths)
 {
+    bool taken = false;
     for (const std::string& path : paths) {
         const auto found = m_images.find(path);
         if (found == m_images.end() || !found->second.image || found->second.image->hasPixels()
             || m_pendingMaps.count(path))
             continue;
-        startMapLoad(path, found->second.timestamp);
+        m_documentAssets->reload(DocumentAssets::Kind::Map, path);
+        taken = fetchMap(path) || taken;
     }
+    if (!taken)
+        return;
+    // Decoded again by the Compare view meanwhile: there at once. Announced after the frame that
+    // asked (the viewport calls this while it prepares one).
+    publishMaps();
+    QMetaObject::invokeMethod(
+        this, [this] { Q_EMIT mapsArrived(); }, Qt::QueuedConnection);
 }
 
 std::string SceneController::mapProblem(std::size_t material, MapSlot slot) const

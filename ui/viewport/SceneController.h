@@ -12,12 +12,14 @@
 // one (none before the first: pendingAssetLoads() says so and the viewport waits), the status bar
 // says what is loading (message), and the frame changes when it arrives.
 //
-// Maps are decoded off the GUI thread (a QThreadPool; the edit that assigns them returns at
-// once): until a map arrives its slot shows what it showed before (the previous version of a
-// reloaded file) or its factor alone; each arrival is announced (mapsArrived) with progress
-// (mapLoadProgress). Each file is decoded once for every slot, material and thumbnail
-// that shows it (MapImageCache); a file beyond the map size budget (core/image/MapImage.h MapBudget) is
-// refused from its header, and the slot keeps its factor.
+// Maps are decoded off the GUI thread by the document's asset cache too (the edit that assigns
+// them returns at once): until a map arrives its slot shows what it showed before (the previous
+// version of a reloaded file) or its factor alone; each arrival is announced (mapsArrived) with
+// progress (mapLoadProgress). Each file is decoded once for every slot, material, view and
+// thumbnail that shows it (DocumentAssets, core/image/MapImageCache); a file beyond the map size
+// budget (core/image/MapImage.h MapBudget) is refused from its header, and the slot keeps its
+// factor. The frame's assets are assembled as the command line's and the Compare cells' are
+// (core/project/ProjectAssets.h placeEnvironment, assignMaps).
 //
 // Problems (a missing map, an unreadable environment) never stop the frame: the slot falls back
 // to its factor, the environment and mesh keep their previous value (or the built-in default),
@@ -35,7 +37,6 @@
 #include <QObject>
 #include <QPointer>
 #include <QString>
-#include <QThreadPool>
 
 #include <glm/mat4x4.hpp>
 
@@ -43,6 +44,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -91,7 +93,8 @@ public:
         const std::function<bool(const std::string& path, std::int64_t timestamp, ColorEncoding colorSpace)>&
             onGpu);
     // Decodes again (off the GUI thread, as any load) the released maps among `paths` whose
-    // textures the viewport no longer has (a new GL context, another colour space).
+    // textures the viewport no longer has (a new GL context, another colour space); one the
+    // Compare view decoded again meanwhile is taken as it is.
     void reloadMaps(const std::vector<std::string>& paths);
 
     // Identifies the environment image and IBL quality the IBL textures must be made for: it
@@ -154,9 +157,12 @@ private:
     void onAssetArrived();
     void announceLoading(const std::string& name);
     void loadMaps(const DocumentChanges& changes);
-    void startMapLoad(const std::string& path, std::int64_t timestamp);
-    void onMapLoaded(const std::string& path, std::uint64_t ticket, std::shared_ptr<const MapImage> image,
-        const std::string& error, ImageLoadStats stats);
+    // Asks the asset cache for `path`: true when its entry is settled (loaded or failed) and now
+    // in m_images, false while it loads (it is then pending; its arrival is taken by
+    // onAssetArrived).
+    bool fetchMap(const std::string& path);
+    // Takes the pending maps that arrived: whether any did.
+    bool takeArrivedMaps();
     void publishMaps();
     void report(const std::string& text);
     void setEnvironmentProblem(const QString& problem);
@@ -165,10 +171,6 @@ private:
         std::shared_ptr<const MapImage> image; // null: not loaded yet, or it could not be read
         std::int64_t timestamp = 0; // of the file the image (or the failure) came from
         std::string problem; // why it could not be read (reported once)
-    };
-    struct PendingMap {
-        std::int64_t timestamp = 0; // of the file being decoded
-        std::uint64_t ticket = 0; // a newer load of the path makes an older result stale
     };
 
     Document* m_document;
@@ -182,13 +184,11 @@ private:
     std::shared_ptr<const AssetCache::LoadedMesh> m_meshHeld;
     std::string m_announced; // the file "Loading …" was said for
     std::map<std::string, CachedImage> m_images; // the map files shown, by path
-    std::map<std::string, PendingMap> m_pendingMaps; // the map files being decoded, by path
-    std::uint64_t m_nextTicket = 1;
+    std::set<std::string> m_pendingMaps; // the map files being decoded
     int m_batchTotal = 0;
     int m_batchLoaded = 0;
     bool m_batchFailed = false;
     QElapsedTimer m_batchClock;
-    QThreadPool m_mapPool; // declared last: destroyed (waited for) first
     std::string m_environmentSource; // the project's source last loaded (or tried)
     QString m_environmentProblem;
     std::string m_meshSource;
