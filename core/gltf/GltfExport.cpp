@@ -19,12 +19,43 @@
 #include "core/gltf/GltfAssetCopy.h"
 #include "core/gltf/GltfImport.h"
 #include "core/image/ImageWriter.h"
+#include "core/material/MaterialProperties.h"
 #include "core/support/AtomicFile.h"
 #include "core/support/FileSet.h"
 
 namespace facet {
 
 namespace {
+
+// The fields of `extension` for `material`, as the material property registry places them
+// (core/material/MaterialProperties.h, GltfField), each in the file's units and left out where it
+// equals what the extension means without it. `baked`: the value a field takes instead because a
+// baked texture holds factor x texture (1, or the specular colour's scale).
+QJsonObject extensionFields(
+    const char* extension, const Material& material, const std::map<MaterialProperty, glm::dvec3>& baked = {})
+{
+    QJsonObject object;
+    for (const MaterialPropertyInfo& info : materialProperties()) {
+        const GltfField& gltf = info.gltf;
+        if (!gltf.extension || std::strcmp(gltf.extension, extension) != 0)
+            continue;
+        const auto bakedValue = baked.find(info.property);
+        const QString field = QString::fromLatin1(gltf.field);
+        if (info.value == PropertyValue::Color) {
+            const glm::dvec3 rgb
+                = bakedValue != baked.end() ? bakedValue->second : colorOf(material, info.property);
+            if (rgb != glm::dvec3(gltf.absent))
+                object.insert(field, QJsonArray {rgb.r, rgb.g, rgb.b});
+            continue;
+        }
+        const double value
+            = (bakedValue != baked.end() ? bakedValue->second.x : scalarOf(material, info.property))
+            * gltf.scale;
+        if (value != gltf.absent)
+            object.insert(field, value);
+    }
+    return object;
+}
 
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
@@ -599,23 +630,24 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
         QJsonObject extensions;
         // An unlit material carries no extension of the lit model beside KHR_materials_unlit (the
         // validator warns of MULTIPLE_EXTENSIONS): its IOR and emission strength mean nothing.
-        if (!material.unlit && std::abs(material.ior - Material::kDefaultIor) > 1e-9) {
-            extensions.insert(
-                QStringLiteral("KHR_materials_ior"), QJsonObject {{QStringLiteral("ior"), material.ior}});
-            extensionsUsed.insert(QStringLiteral("KHR_materials_ior"));
-        }
-        if (!material.unlit && emits && material.emissiveStrength != 1.0) {
-            extensions.insert(QStringLiteral("KHR_materials_emissive_strength"),
-                QJsonObject {{QStringLiteral("emissiveStrength"), material.emissiveStrength}});
-            extensionsUsed.insert(QStringLiteral("KHR_materials_emissive_strength"));
-        }
+        // The numbers and colours from the registry (extensionFields); here what decides that an
+        // extension is written, and its textures.
+        const auto add = [&](const char* extension, const QJsonObject& object) {
+            extensions.insert(QLatin1String(extension), object);
+            extensionsUsed.insert(QLatin1String(extension));
+        };
+        if (!material.unlit && std::abs(material.ior - Material::kDefaultIor) > 1e-9)
+            add("KHR_materials_ior", extensionFields("KHR_materials_ior", material));
+        if (!material.unlit && emits && material.emissiveStrength != 1.0)
+            add("KHR_materials_emissive_strength",
+                extensionFields("KHR_materials_emissive_strength", material));
+        using P = MaterialProperty;
         if (!material.unlit && material.hasClearcoat()) {
             // A baked coat texture holds factor x texture: its factors are 1.
-            QJsonObject clearcoat {
-                {QStringLiteral("clearcoatFactor"), plan.coat ? 1.0 : material.clearcoat()}};
-            const double coatRoughness = plan.coat ? 1.0 : material.clearcoatRoughness();
-            if (coatRoughness != 0.0)
-                clearcoat.insert(QStringLiteral("clearcoatRoughnessFactor"), coatRoughness);
+            QJsonObject clearcoat = extensionFields("KHR_materials_clearcoat", material,
+                plan.coat ? std::map<P, glm::dvec3> {{P::Clearcoat, glm::dvec3(1.0)},
+                    {P::ClearcoatRoughness, glm::dvec3(1.0)}}
+                          : std::map<P, glm::dvec3> {});
             if (plan.coat)
                 packedTexture(clearcoat, Texture::Clearcoat, "clearcoatTexture", "clearcoatRoughnessTexture");
             if (plan.coatNormal)
@@ -623,72 +655,49 @@ bool writeGltfAsset(const std::string& path, const Mesh& mesh, const std::vector
                     textureInfo(index(Texture::ClearcoatNormal), plan, mesh.hasTexCoord1,
                         QJsonObject {
                             {QStringLiteral("scale"), material.map(MapSlot::ClearcoatNormal).factor.x}}));
-            extensions.insert(QStringLiteral("KHR_materials_clearcoat"), clearcoat);
-            extensionsUsed.insert(QStringLiteral("KHR_materials_clearcoat"));
+            add("KHR_materials_clearcoat", clearcoat);
         }
         if (!material.unlit && material.hasSheen()) {
             // A baked sheen texture holds factor x texture: its factors are 1.
-            const glm::dvec3 color = plan.sheen ? glm::dvec3(1.0) : material.sheenColor();
-            QJsonObject sheen {{QStringLiteral("sheenColorFactor"), QJsonArray {color.r, color.g, color.b}}};
-            const double sheenRoughness = plan.sheen ? 1.0 : material.sheenRoughness();
-            if (sheenRoughness != 0.0)
-                sheen.insert(QStringLiteral("sheenRoughnessFactor"), sheenRoughness);
+            QJsonObject sheen = extensionFields("KHR_materials_sheen", material,
+                plan.sheen ? std::map<P, glm::dvec3> {{P::SheenColor, glm::dvec3(1.0)},
+                    {P::SheenRoughness, glm::dvec3(1.0)}}
+                           : std::map<P, glm::dvec3> {});
             if (plan.sheen)
                 packedTexture(sheen, Texture::Sheen, "sheenColorTexture", "sheenRoughnessTexture");
-            extensions.insert(QStringLiteral("KHR_materials_sheen"), sheen);
-            extensionsUsed.insert(QStringLiteral("KHR_materials_sheen"));
+            add("KHR_materials_sheen", sheen);
         }
         if (!material.unlit && material.hasSpecular()) {
             // A baked texture holds factor x texture (the colour over specularColorScale): the
-            // strength's factor is 1, the colour's the scale. The defaults, 1 and white, are left out.
-            const double strength = plan.specular ? 1.0 : material.specular();
-            const glm::dvec3 tint
-                = plan.specular ? glm::dvec3(plan.specularColorScale) : material.specularColor();
-            QJsonObject specular;
-            if (strength != 1.0)
-                specular.insert(QStringLiteral("specularFactor"), strength);
-            if (tint != glm::dvec3(1.0))
-                specular.insert(QStringLiteral("specularColorFactor"), QJsonArray {tint.r, tint.g, tint.b});
+            // strength's factor is 1, the colour's the scale.
+            QJsonObject specular = extensionFields("KHR_materials_specular", material,
+                plan.specular ? std::map<P, glm::dvec3> {{P::Specular, glm::dvec3(1.0)},
+                    {P::SpecularColor, glm::dvec3(plan.specularColorScale)}}
+                              : std::map<P, glm::dvec3> {});
             if (plan.specular)
                 packedTexture(specular, Texture::Specular, "specularColorTexture", "specularTexture");
-            extensions.insert(QStringLiteral("KHR_materials_specular"), specular);
-            extensionsUsed.insert(QStringLiteral("KHR_materials_specular"));
+            add("KHR_materials_specular", specular);
         }
         if (!material.unlit && material.hasAnisotropy()) {
-            // Strength and rotation (radians in the file) as they are; the texture is baked
-            // without them. The default rotation, 0, is left out.
-            QJsonObject anisotropy {{QStringLiteral("anisotropyStrength"), material.anisotropy()}};
-            if (material.anisotropyRotationDegrees != 0.0)
-                anisotropy.insert(QStringLiteral("anisotropyRotation"),
-                    material.anisotropyRotationDegrees * std::numbers::pi / 180.0);
+            // Strength and rotation as they are: the texture is baked without them.
+            QJsonObject anisotropy = extensionFields("KHR_materials_anisotropy", material);
             if (plan.anisotropy)
                 anisotropy.insert(QStringLiteral("anisotropyTexture"),
                     textureInfo(index(Texture::Anisotropy), plan, mesh.hasTexCoord1));
-            extensions.insert(QStringLiteral("KHR_materials_anisotropy"), anisotropy);
-            extensionsUsed.insert(QStringLiteral("KHR_materials_anisotropy"));
+            add("KHR_materials_anisotropy", anisotropy);
         }
         if (!material.unlit && material.hasIridescence()) {
-            // The factor, the film's index and thickness range as they are (the texture is baked
-            // without them); the extension's defaults (1.3, 100, 400 nm) are left out.
-            const bool strengthTexture = plan.iridescence && material.map(MapSlot::Iridescence).hasTexture();
-            QJsonObject iridescence {{QStringLiteral("iridescenceFactor"), material.iridescence()}};
-            if (material.iridescenceIor != shading::kDefaultIridescenceIor)
-                iridescence.insert(QStringLiteral("iridescenceIor"), material.iridescenceIor);
-            if (material.iridescenceThicknessMinimum != shading::kDefaultIridescenceThicknessMinimum)
-                iridescence.insert(
-                    QStringLiteral("iridescenceThicknessMinimum"), material.iridescenceThicknessMinimum);
-            if (material.iridescenceThicknessMaximum() != shading::kDefaultIridescenceThicknessMaximum)
-                iridescence.insert(
-                    QStringLiteral("iridescenceThicknessMaximum"), material.iridescenceThicknessMaximum());
+            // The factor, the film's index and thickness range as they are: the texture is baked
+            // without them.
+            QJsonObject iridescence = extensionFields("KHR_materials_iridescence", material);
             const QJsonObject info = plan.iridescence
                 ? textureInfo(index(Texture::Iridescence), plan, mesh.hasTexCoord1)
                 : QJsonObject {};
-            if (strengthTexture)
+            if (plan.iridescence && material.map(MapSlot::Iridescence).hasTexture())
                 iridescence.insert(QStringLiteral("iridescenceTexture"), info);
             if (plan.iridescence && material.map(MapSlot::IridescenceThickness).hasTexture())
                 iridescence.insert(QStringLiteral("iridescenceThicknessTexture"), info);
-            extensions.insert(QStringLiteral("KHR_materials_iridescence"), iridescence);
-            extensionsUsed.insert(QStringLiteral("KHR_materials_iridescence"));
+            add("KHR_materials_iridescence", iridescence);
         }
         if (material.unlit) {
             extensions.insert(QStringLiteral("KHR_materials_unlit"), QJsonObject {});

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
-#include <set>
 
 #include <QDir>
 #include <QFileInfo>
@@ -13,6 +11,7 @@
 #include "core/gltf/GltfImport.h"
 #include "core/gltf/GltfSupport.h"
 #include "core/gltf/TinyGltf.h"
+#include "core/material/MaterialProperties.h"
 
 namespace facet::gltfsupport {
 
@@ -284,9 +283,6 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
     m.doubleSided = g.doubleSided;
 
     // Extensions of the material model.
-    static const std::set<std::string> kRead = {"KHR_materials_emissive_strength", "KHR_materials_ior",
-        "KHR_materials_unlit", "KHR_materials_clearcoat", "KHR_materials_sheen", "KHR_materials_specular",
-        "KHR_materials_anisotropy", "KHR_materials_iridescence"};
     // A number of an extension's object: its value clamped to [lo, hi] (a note when it was not
     // there), or `otherwise` with a note naming the field when it is not a number.
     const auto extensionNumber = [&](const tinygltf::Value& object, const char* extension, const char* field,
@@ -320,6 +316,34 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
             color[c] = clamped(array.Get(c).GetNumberAsDouble(), 0.0, hi, at, notes);
         return color;
     };
+    // An extension's numbers and colours, as the material property registry places them
+    // (core/material/MaterialProperties.h, GltfField): each clamped to its row's range (an angle
+    // wrapped into it), the extension's own value where the field is absent. False: the registry
+    // knows no field of `extension`.
+    const auto readFields = [&](const std::string& extension, const tinygltf::Value& object) {
+        bool known = false;
+        for (const MaterialPropertyInfo& info : materialProperties()) {
+            const GltfField& gltf = info.gltf;
+            if (!gltf.extension || extension != gltf.extension)
+                continue;
+            known = true;
+            if (info.value == PropertyValue::Color) {
+                setColor(m, info.property,
+                    extensionColor(
+                        object, gltf.extension, gltf.field, glm::dvec3(gltf.absent), info.maximum));
+                continue;
+            }
+            // Any angle is an angle (whole turns change nothing); the registry's range is one turn.
+            const double lo = gltf.periodic ? -1e6 : info.minimum * gltf.scale;
+            const double hi = gltf.periodic ? 1e6 : info.maximum * gltf.scale;
+            double value
+                = extensionNumber(object, gltf.extension, gltf.field, lo, hi, gltf.absent) / gltf.scale;
+            if (gltf.periodic)
+                value = std::remainder(value, info.maximum - info.minimum);
+            setScalar(m, info.property, value);
+        }
+        return known;
+    };
     // A colour texture (sRGB RGB) and a number in a texture's alpha (linear; often the same file):
     // the packing of KHR_materials_sheen (colour, roughness) and KHR_materials_specular (colour,
     // strength).
@@ -336,23 +360,25 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
         readExtensionTexture(model, object, extension, alphaField, false, assetPath, where, scalar, notes);
     };
     for (const auto& [name, value] : g.extensions) {
-        if (name == "KHR_materials_emissive_strength") {
-            m.emissiveStrength = extensionNumber(value, "KHR_materials_emissive_strength", "emissiveStrength",
-                0.0, Material::kMaxEmissiveStrength, m.emissiveStrength);
-        } else if (name == "KHR_materials_ior") {
-            m.ior = extensionNumber(
-                value, "KHR_materials_ior", "ior", Material::kMinIor, Material::kMaxIor, m.ior);
-        } else if (name == "KHR_materials_unlit") {
+        if (name == "KHR_materials_unlit") {
             m.unlit = true; // an empty object: its presence is the whole extension
-        } else if (name == "KHR_materials_clearcoat") {
-            // Defaults 0 (the extension's): an object without clearcoatFactor has no coat.
-            const char* const extension = "KHR_materials_clearcoat";
-            m.setFactor(
-                MapSlot::Clearcoat, extensionNumber(value, extension, "clearcoatFactor", 0.0, 1.0, 0.0));
-            m.setFactor(MapSlot::ClearcoatRoughness,
-                extensionNumber(value, extension, "clearcoatRoughnessFactor", 0.0, 1.0, 0.0));
+            continue;
+        }
+        if (!readFields(name, value)) {
+            notes.add(
+                "the material extension " + name + " is not supported: previewed as metallic-roughness");
+            continue;
+        }
+        // Their textures. The extensions' defaults (the registry's GltfField::absent): clearcoat,
+        // sheen, anisotropy and iridescence 0 (none of the lobe), specular 1 and white (the layer
+        // of glTF 2.0's core), the film's index 1.3 and thickness 100 to 400 nm (its minimum may
+        // exceed its maximum: a texture then runs the other way). The sheen's and the specular
+        // colour factors are linear, the specular one may exceed 1 (docs/gltf.md); the anisotropy
+        // rotation is radians in the file, degrees wrapped to [-180, 180] here.
+        if (name == "KHR_materials_clearcoat") {
             // The strength in R and the roughness in G (so one texture can hold both), the
             // normal as the core normal texture with its scale; all linear.
+            const char* const extension = "KHR_materials_clearcoat";
             const auto coatTexture = [&](const char* field, MapSlot slot) {
                 MaterialMap& map = m.map(slot);
                 map.colorSpace = ColorEncoding::Linear;
@@ -365,60 +391,34 @@ Material convertMaterial(const tinygltf::Model& model, int index, const std::str
             m.map(MapSlot::Clearcoat).channel = MapChannel::R;
             m.map(MapSlot::ClearcoatRoughness).channel = MapChannel::G;
         } else if (name == "KHR_materials_sheen") {
-            // Defaults black and 0 (the extension's): an object without sheenColorFactor has no
-            // sheen. The colour texture is sRGB RGB, the roughness its own texture's alpha (often
-            // the same texture's).
-            const char* const extension = "KHR_materials_sheen";
-            m.setSheen(extensionColor(value, extension, "sheenColorFactor", glm::dvec3(0.0), 1.0),
-                extensionNumber(value, extension, "sheenRoughnessFactor", 0.0, 1.0, 0.0));
-            colorAndAlphaTextures(value, extension, "sheenColorTexture", MapSlot::SheenColor,
+            // The colour texture is sRGB RGB, the roughness its own texture's alpha (often the
+            // same texture's).
+            colorAndAlphaTextures(value, "KHR_materials_sheen", "sheenColorTexture", MapSlot::SheenColor,
                 "sheenRoughnessTexture", MapSlot::SheenRoughness);
         } else if (name == "KHR_materials_specular") {
-            // Defaults 1 and white (the extension's: the layer of glTF 2.0's core). The strength is
-            // its texture's alpha, the colour its own texture's sRGB RGB (often one file); the
-            // colour factor may exceed 1 (docs/gltf.md).
-            const char* const extension = "KHR_materials_specular";
-            m.setSpecular(extensionNumber(value, extension, "specularFactor", 0.0, 1.0, 1.0),
-                extensionColor(
-                    value, extension, "specularColorFactor", glm::dvec3(1.0), Material::kMaxSpecularColor));
-            colorAndAlphaTextures(value, extension, "specularColorTexture", MapSlot::SpecularColor,
-                "specularTexture", MapSlot::Specular);
+            // The strength is its texture's alpha, the colour its own texture's sRGB RGB (often
+            // one file).
+            colorAndAlphaTextures(value, "KHR_materials_specular", "specularColorTexture",
+                MapSlot::SpecularColor, "specularTexture", MapSlot::Specular);
         } else if (name == "KHR_materials_anisotropy") {
-            // Defaults 0 (the extension's): an object without anisotropyStrength is isotropic. The
-            // rotation is in radians, any number (whole turns change nothing): Facet keeps it in
-            // degrees, wrapped to [-180, 180]. The texture is linear RGB (direction RG, strength B).
-            const char* const extension = "KHR_materials_anisotropy";
-            const double radians = extensionNumber(value, extension, "anisotropyRotation", -1e6, 1e6, 0.0);
-            m.setAnisotropy(extensionNumber(value, extension, "anisotropyStrength", 0.0, 1.0, 0.0),
-                std::remainder(radians * 180.0 / std::numbers::pi, 360.0));
+            // Linear RGB: the direction in RG, the strength in B.
             MaterialMap& map = m.map(MapSlot::Anisotropy);
             map.colorSpace = ColorEncoding::Linear;
             map.channel = MapChannel::Rgb;
-            readExtensionTexture(
-                model, value, extension, "anisotropyTexture", false, assetPath, where, map, notes);
+            readExtensionTexture(model, value, "KHR_materials_anisotropy", "anisotropyTexture", false,
+                assetPath, where, map, notes);
         } else if (name == "KHR_materials_iridescence") {
-            // Defaults (the extension's): factor 0 (no film), index 1.3, thickness 100 to 400 nm; the
-            // minimum may exceed the maximum (a texture then runs the other way). The strength is
-            // its texture's R, the thickness its own texture's G (often one file), both linear.
-            const char* const extension = "KHR_materials_iridescence";
-            m.setIridescence(extensionNumber(value, extension, "iridescenceFactor", 0.0, 1.0, 0.0),
-                extensionNumber(value, extension, "iridescenceIor", Material::kMinIor, Material::kMaxIor,
-                    shading::kDefaultIridescenceIor),
-                extensionNumber(value, extension, "iridescenceThicknessMinimum", 0.0,
-                    Material::kMaxIridescenceThickness, shading::kDefaultIridescenceThicknessMinimum),
-                extensionNumber(value, extension, "iridescenceThicknessMaximum", 0.0,
-                    Material::kMaxIridescenceThickness, shading::kDefaultIridescenceThicknessMaximum));
+            // The strength is its texture's R, the thickness its own texture's G (often one file),
+            // both linear.
             const auto filmTexture = [&](const char* field, MapSlot slot, MapChannel channel) {
                 MaterialMap& map = m.map(slot);
                 map.colorSpace = ColorEncoding::Linear;
                 map.channel = channel;
-                readExtensionTexture(model, value, extension, field, false, assetPath, where, map, notes);
+                readExtensionTexture(
+                    model, value, "KHR_materials_iridescence", field, false, assetPath, where, map, notes);
             };
             filmTexture("iridescenceTexture", MapSlot::Iridescence, MapChannel::R);
             filmTexture("iridescenceThicknessTexture", MapSlot::IridescenceThickness, MapChannel::G);
-        } else if (!kRead.count(name)) {
-            notes.add(
-                "the material extension " + name + " is not supported: previewed as metallic-roughness");
         }
     }
     return m;

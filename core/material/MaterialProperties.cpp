@@ -1,9 +1,11 @@
 #include "core/material/MaterialProperties.h"
 
 #include <array>
+#include <numbers>
 
 #include <QtGlobal>
 
+#include "core/shading/ThinFilm.h"
 #include "core/support/Failure.h"
 
 namespace facet {
@@ -17,60 +19,71 @@ using V = PropertyValue;
 // each end and refuses the next number beyond it.
 constexpr std::array<MaterialPropertyInfo, kMaterialPropertyCount> kProperties = {{
     {P::BaseColor, "baseColor", "baseColor.factor", "Base colour (linear)", V::Color, 0.0, 1.0,
-        MapSlot::BaseColor, "base-color"},
+        MapSlot::BaseColor, "base-color", {}},
     {P::Alpha, "alpha", "baseColor.factor.a", "Base colour alpha", V::Scalar, 0.0, 1.0, MapSlot::BaseColor,
-        nullptr},
+        nullptr, {}},
     {P::Metallic, "metallic", "metallic.factor", "Metallic", V::Scalar, 0.0, 1.0, MapSlot::Metallic,
-        "metallic"},
+        "metallic", {}},
     {P::Roughness, "roughness", "roughness.factor", "Perceptual roughness", V::Scalar, 0.0, 1.0,
-        MapSlot::Roughness, "roughness"},
+        MapSlot::Roughness, "roughness", {}},
     {P::Occlusion, "occlusion", "occlusion.factor", "Occlusion strength", V::Scalar, 0.0, 1.0,
-        MapSlot::Occlusion, nullptr},
+        MapSlot::Occlusion, nullptr, {}},
     {P::Normal, "normal", "normal.factor", "Normal map strength", V::Scalar, 0.0,
-        Material::kMaxNormalStrength, MapSlot::Normal, nullptr},
+        Material::kMaxNormalStrength, MapSlot::Normal, nullptr, {}},
     {P::Emissive, "emissive", "emissive.factor", "Emissive colour (linear)", V::Color, 0.0, 1.0,
-        MapSlot::Emissive, nullptr},
+        MapSlot::Emissive, nullptr, {}},
     {P::EmissiveStrength, "emissiveStrength", "emissiveStrength", "Emissive strength", V::Scalar, 0.0,
-        Material::kMaxEmissiveStrength, std::nullopt, nullptr},
+        Material::kMaxEmissiveStrength, std::nullopt, nullptr,
+        {"KHR_materials_emissive_strength", "emissiveStrength", 1.0}},
     {P::Ior, "ior", "ior", "Index of refraction", V::Scalar, Material::kMinIor, Material::kMaxIor,
-        std::nullopt, nullptr, 3.0},
-    {P::AlphaCutoff, "alphaCutoff", "alphaCutoff", "Alpha cutoff", V::Scalar, 0.0, 1.0, std::nullopt,
-        nullptr},
+        std::nullopt, nullptr, {"KHR_materials_ior", "ior", Material::kDefaultIor}, 3.0},
+    {P::AlphaCutoff, "alphaCutoff", "alphaCutoff", "Alpha cutoff", V::Scalar, 0.0, 1.0, std::nullopt, nullptr,
+        {}},
     {P::Clearcoat, "clearcoat", "clearcoat.factor", "Clearcoat strength", V::Scalar, 0.0, 1.0,
-        MapSlot::Clearcoat, "clearcoat"},
+        MapSlot::Clearcoat, "clearcoat", {"KHR_materials_clearcoat", "clearcoatFactor", 0.0}},
     {P::ClearcoatRoughness, "clearcoatRoughness", "clearcoatRoughness.factor",
         "Clearcoat roughness (perceptual)", V::Scalar, 0.0, 1.0, MapSlot::ClearcoatRoughness,
-        "clearcoat-roughness"},
+        "clearcoat-roughness", {"KHR_materials_clearcoat", "clearcoatRoughnessFactor", 0.0}},
     {P::ClearcoatNormal, "clearcoatNormal", "clearcoatNormal.factor", "Clearcoat normal map strength",
-        V::Scalar, 0.0, Material::kMaxNormalStrength, MapSlot::ClearcoatNormal, nullptr},
+        V::Scalar, 0.0, Material::kMaxNormalStrength, MapSlot::ClearcoatNormal, nullptr, {}},
     {P::SheenColor, "sheenColor", "sheenColor.factor", "Sheen colour (linear)", V::Color, 0.0, 1.0,
-        MapSlot::SheenColor, "sheen-color"},
+        MapSlot::SheenColor, "sheen-color", {"KHR_materials_sheen", "sheenColorFactor", 0.0}},
     {P::SheenRoughness, "sheenRoughness", "sheenRoughness.factor", "Sheen roughness (perceptual)", V::Scalar,
-        0.0, 1.0, MapSlot::SheenRoughness, "sheen-roughness"},
+        0.0, 1.0, MapSlot::SheenRoughness, "sheen-roughness",
+        {"KHR_materials_sheen", "sheenRoughnessFactor", 0.0}},
     {P::Specular, "specular", "specular.factor", "Specular strength (dielectric)", V::Scalar, 0.0, 1.0,
-        MapSlot::Specular, "specular"},
+        MapSlot::Specular, "specular", {"KHR_materials_specular", "specularFactor", 1.0}},
     // A colour above 1 raises F0 beyond the IOR's (the product clamped to 1): the extension allows
     // it, so the range goes on to Material::kMaxSpecularColor (the dock's colour button shows [0, 1]).
     {P::SpecularColor, "specularColor", "specularColor.factor", "Specular colour (linear F0 tint)", V::Color,
-        0.0, Material::kMaxSpecularColor, MapSlot::SpecularColor, "specular-color"},
+        0.0, Material::kMaxSpecularColor, MapSlot::SpecularColor, "specular-color",
+        {"KHR_materials_specular", "specularColorFactor", 1.0}},
     {P::Anisotropy, "anisotropy", "anisotropy.factor", "Anisotropy strength", V::Scalar, 0.0, 1.0,
-        MapSlot::Anisotropy, "anisotropy"},
+        MapSlot::Anisotropy, "anisotropy", {"KHR_materials_anisotropy", "anisotropyStrength", 0.0}},
     {P::AnisotropyRotation, "anisotropyRotation", "anisotropyRotationDegrees",
         "Anisotropy rotation (degrees, counter-clockwise from the tangent)", V::Scalar,
         -Material::kMaxAnisotropyRotationDegrees, Material::kMaxAnisotropyRotationDegrees, std::nullopt,
-        "anisotropy-rotation"},
+        "anisotropy-rotation",
+        {"KHR_materials_anisotropy", "anisotropyRotation", 0.0, std::numbers::pi / 180.0, true}},
     {P::Iridescence, "iridescence", "iridescence.factor", "Iridescence (thin film) strength", V::Scalar, 0.0,
-        1.0, MapSlot::Iridescence, "iridescence"},
+        1.0, MapSlot::Iridescence, "iridescence", {"KHR_materials_iridescence", "iridescenceFactor", 0.0}},
     {P::IridescenceIor, "iridescenceIor", "iridescenceIor", "Iridescence film's index of refraction",
-        V::Scalar, Material::kMinIor, Material::kMaxIor, std::nullopt, "iridescence-ior", 3.0},
+        V::Scalar, Material::kMinIor, Material::kMaxIor, std::nullopt, "iridescence-ior",
+        {"KHR_materials_iridescence", "iridescenceIor", shading::kDefaultIridescenceIor}, 3.0},
     // The thickness without a texture, and where a thickness texture reads 1 (the extension's
     // maximum); sliders stop at 1200 nm, past the last visible interference colours.
     {P::IridescenceThickness, "iridescenceThickness", "iridescenceThickness.factor",
         "Iridescence film thickness (nm; a thickness texture's 1)", V::Scalar, 0.0,
-        Material::kMaxIridescenceThickness, MapSlot::IridescenceThickness, "iridescence-thickness", 1200.0},
+        Material::kMaxIridescenceThickness, MapSlot::IridescenceThickness, "iridescence-thickness",
+        {"KHR_materials_iridescence", "iridescenceThicknessMaximum",
+            shading::kDefaultIridescenceThicknessMaximum},
+        1200.0},
     {P::IridescenceThicknessMinimum, "iridescenceThicknessMinimum", "iridescenceThicknessMinimum",
         "Iridescence film thickness where a thickness texture reads 0 (nm)", V::Scalar, 0.0,
-        Material::kMaxIridescenceThickness, std::nullopt, "iridescence-thickness-minimum", 1200.0},
+        Material::kMaxIridescenceThickness, std::nullopt, "iridescence-thickness-minimum",
+        {"KHR_materials_iridescence", "iridescenceThicknessMinimum",
+            shading::kDefaultIridescenceThicknessMinimum},
+        1200.0},
 }};
 
 constexpr bool inEnumOrder()

@@ -1,7 +1,8 @@
 #pragma once
 // The material property registry: one row per number or colour an artist sets on a material, with
 // what every part of Facet needs to know of it, so that each fact is written once. Today its
-// readers are Material::validate (the ranges and the fields its messages name), the wedge
+// readers are glTF import and export (each extension's numbers and colours, GltfField),
+// Material::validate (the ranges and the fields its messages name), the wedge
 // (core/project/WedgeAxis: an axis of a material property takes its name, field, range and
 // setter from here), the command line's material flags (`facet render` and `facet sheet`:
 // --base-color, --metallic, --roughness, --clearcoat, --clearcoat-roughness, --sheen-color,
@@ -52,6 +53,22 @@ inline constexpr int kMaterialPropertyCount = 23;
 // What a property holds: one number, or a linear RGB colour whose components each lie in the range.
 enum class PropertyValue { Scalar, Color };
 
+// Where glTF keeps a property of a material extension (KHR_materials_*): read and written from
+// this row by core/gltf (import, export) and checked row by row by GltfExtensionsTest. Properties
+// of glTF 2.0's core material (and a texture's scale or strength) have no extension here: the glTF
+// code reads those from tinygltf's typed fields.
+struct GltfField {
+    const char* extension = nullptr; // "KHR_materials_sheen"; null: not an extension's field
+    const char* field = nullptr; // "sheenRoughnessFactor"
+    // What the extension means when the field is absent (a colour: each component); a field equal
+    // to it is left out of an export.
+    double absent = 0.0;
+    // The file's units per Facet's: pi / 180 for the rotation (radians in the file, degrees here).
+    double scale = 1.0;
+    // The value is an angle: the file may hold any number, wrapped into the row's range on import.
+    bool periodic = false;
+};
+
 struct MaterialPropertyInfo {
     MaterialProperty property;
     // Its short name: the wedge axis's ("roughness", "emissiveStrength", "alpha") and the one
@@ -71,6 +88,7 @@ struct MaterialPropertyInfo {
     // The command-line flag of `facet render` and `facet sheet` ("base-color": --base-color
     // r,g,b), or null for none; it sets every material of the project.
     const char* flag;
+    GltfField gltf;
     // Where a slider of it ends when that is below `maximum` (the IOR's 3: every common material
     // lies below, and the spin box beside it still takes up to 5); 0: at `maximum`.
     double sliderMaximum = 0.0;
