@@ -1,6 +1,7 @@
 #include "core/material/MaterialJson.h"
 
 #include "core/json/JsonSupport.h"
+#include "core/material/MaterialProperties.h"
 #include "core/project/Project.h"
 #include "core/support/EnumNames.h"
 
@@ -173,15 +174,18 @@ void readMaterial(Messages& messages, const QJsonObject& object, const std::stri
 {
     ObjectReader r(messages, object, path);
     r.string("name", material.name);
-    r.number("ior", material.ior);
-    r.number("emissiveStrength", material.emissiveStrength);
     readEnum(r, "alphaMode", material.alphaMode, kAllAlphaModes);
-    r.number("alphaCutoff", material.alphaCutoff);
     r.boolean("doubleSided", material.doubleSided);
     r.boolean("unlit", material.unlit);
-    r.number("anisotropyRotationDegrees", material.anisotropyRotationDegrees);
-    r.number("iridescenceIor", material.iridescenceIor);
-    r.number("iridescenceThicknessMinimum", material.iridescenceThicknessMinimum);
+    // The numbers of no map (the IOR, the emission strength, the alpha cutoff, the anisotropy's
+    // rotation, the film's index and minimum thickness): a key each, the registry row's field
+    // (core/material/MaterialProperties.h). A map's factor is its map object's "factor".
+    for (const MaterialPropertyInfo& info : materialProperties())
+        if (!info.slot) {
+            double value = scalarOf(material, info.property);
+            r.number(info.field, value);
+            setScalar(material, info.property, value);
+        }
     if (const std::optional<QJsonObject> shading = r.object("shading"))
         readShading(messages, *shading, r.pathOf("shading"), material.shading);
     for (MapSlot slot : kAllMapSlots) {
@@ -212,15 +216,12 @@ QJsonObject materialToJson(const Material& material, const std::string& baseDir,
 {
     QJsonObject o;
     o[QLatin1String("name")] = qs(material.name);
-    o[QLatin1String("ior")] = material.ior;
-    o[QLatin1String("emissiveStrength")] = material.emissiveStrength;
     o[QLatin1String("alphaMode")] = QLatin1String(toString(material.alphaMode));
-    o[QLatin1String("alphaCutoff")] = material.alphaCutoff;
     o[QLatin1String("doubleSided")] = material.doubleSided;
     o[QLatin1String("unlit")] = material.unlit;
-    o[QLatin1String("anisotropyRotationDegrees")] = material.anisotropyRotationDegrees;
-    o[QLatin1String("iridescenceIor")] = material.iridescenceIor;
-    o[QLatin1String("iridescenceThicknessMinimum")] = material.iridescenceThicknessMinimum;
+    for (const MaterialPropertyInfo& info : materialProperties())
+        if (!info.slot)
+            o[QLatin1String(info.field)] = scalarOf(material, info.property);
     o[QLatin1String("shading")] = shadingToJson(material.shading);
     for (MapSlot slot : kAllMapSlots)
         o[QLatin1String(toString(slot))] = mapToJson(slot, material.map(slot), baseDir, includeTexturePaths);

@@ -1,7 +1,8 @@
 #pragma once
 // The material property registry: one row per number or colour an artist sets on a material, with
 // what every part of Facet needs to know of it, so that each fact is written once. Today its
-// readers are glTF import and export (each extension's numbers and colours, GltfField),
+// readers are glTF import and export (each extension's numbers and colours, GltfField), the
+// project file (core/material/MaterialJson: the numbers of no map, a key each, the row's field),
 // Material::validate (the ranges and the fields its messages name), the wedge
 // (core/project/WedgeAxis: an axis of a material property takes its name, field, range and
 // setter from here), the command line's material flags (`facet render` and `facet sheet`:
