@@ -76,13 +76,12 @@ vec3 multiScatterFactor(vec3 f0, float NoV, float perceptualRoughness)
 }
 
 // The base's specular lobe's compensation, (roughness, weight): the isotropic lobe's (r, 1), or
-// (MATERIAL_ANISOTROPY, with a frame t about n) the anisotropic lobe's.
-vec2 specularCompensation(MaterialInfo m, vec3 n, vec3 v, vec3 anisotropyT)
+// (MATERIAL_ANISOTROPY, v in the lobe's frame: (t.v, b.v, n.v), not zero) the anisotropic lobe's.
+vec2 specularCompensation(MaterialInfo m, vec3 anisotropyV)
 {
 #ifdef MATERIAL_ANISOTROPY
-    if (anisotropyT != vec3(0.0))
-        return anisotropicCompensation(vec3(dot(anisotropyT, v), dot(cross(n, anisotropyT), v), dot(n, v)),
-                                       m.perceptualRoughness, m.anisotropy);
+    if (anisotropyV != vec3(0.0))
+        return anisotropicCompensation(anisotropyV, m.perceptualRoughness, m.anisotropy);
 #endif
     return vec2(clampRoughness(m.perceptualRoughness), 1.0);
 }
@@ -181,6 +180,15 @@ DielectricReflectance filmLayer(MaterialInfo m, vec3 f0)
     return layer;
 }
 
+// filmLayer as surface.frag set it once per pixel (MaterialInfo::filmLayerF0).
+DielectricReflectance filmSchlickLayer(MaterialInfo m)
+{
+    DielectricReflectance layer;
+    layer.f0 = vec3(m.filmLayerF0);
+    layer.f90 = 1.0;
+    return layer;
+}
+
 // The Fresnel of the composition at v.h (the F debug view), the film's mixed in.
 vec3 compositionFresnel(MaterialInfo m, float VoH)
 {
@@ -226,21 +234,21 @@ BrdfLobes evaluateBrdf(MaterialInfo m, vec3 n, vec3 v, vec3 l, bool punctual)
     float metallic = saturate(m.metallic);
     vec3 baseColor = max(m.baseColor, vec3(0.0));
     float microfacet = distribution(NoH, alpha) * visibility(NoV, NoL, alpha, roughness, punctual);
-    vec3 anisotropyT = vec3(0.0);
+    vec3 anisotropyV = vec3(0.0); // v in the lobe's (t, b, n) frame; zero: isotropic
 #ifdef MATERIAL_ANISOTROPY
     // The base's specular lobes (dielectric and metal) take the extension's anisotropic D and V,
     // whatever the model's pair, and a compensation of their own (docs/shading.md, "Anisotropy");
     // without a frame, the isotropic lobe.
-    anisotropyT = m.anisotropy > 0.0 ? anisotropyTangent(n, m.anisotropyDirection) : vec3(0.0);
+    vec3 anisotropyT = m.anisotropy > 0.0 ? anisotropyTangent(n, m.anisotropyDirection) : vec3(0.0);
     if (anisotropyT != vec3(0.0)) {
         vec3 anisotropyB = cross(n, anisotropyT);
         vec2 anisotropyAlpha = anisotropicAlpha(m.perceptualRoughness, m.anisotropy);
+        anisotropyV = vec3(dot(anisotropyT, v), dot(anisotropyB, v), NoV);
         microfacet = D_GGXAnisotropic(vec3(dot(anisotropyT, h), dot(anisotropyB, h), NoH), anisotropyAlpha)
-            * V_GGXAnisotropic(vec3(dot(anisotropyT, v), dot(anisotropyB, v), NoV),
-                               vec3(dot(anisotropyT, l), dot(anisotropyB, l), NoL), anisotropyAlpha);
+            * V_GGXAnisotropic(anisotropyV, vec3(dot(anisotropyT, l), dot(anisotropyB, l), NoL), anisotropyAlpha);
     }
 #endif
-    vec2 compensation = specularCompensation(m, n, v, anisotropyT);
+    vec2 compensation = specularCompensation(m, anisotropyV);
     DielectricReflectance layer = dielectricReflectance(m);
     vec3 lambert = baseColor * Fd_Lambert();
 
@@ -277,7 +285,7 @@ BrdfLobes evaluateBrdf(MaterialInfo m, vec3 n, vec3 v, vec3 l, bool punctual)
             vec3 firid = filmFresnel(m, layer.f0, VoH);
             // The energy-preserving coupling couples the base to the film's Schlick layer.
 #ifdef COUPLING_ENERGY_PRESERVING
-            float filmWeight = couplingFactor(filmLayer(m, layer.f0), NoV, NoL, roughness, uFilmAverageAlbedo);
+            float filmWeight = couplingFactor(filmSchlickLayer(m), NoV, NoL, roughness, uFilmAverageAlbedo);
 #else
             float filmWeight = 1.0 - max3(firid);
 #endif

@@ -49,19 +49,20 @@ float sheenAlbedo(float NoV, float sheenRoughness)
 {
     return texture(uSheenLut, dfgTexCoord(NoV, sheenRoughness, uSheenLutSize)).r;
 }
-
-// The scaling of the base's image-based lobes (the split sum's and fis's): the specular lobe's
-// light arrives near the mirror direction, where n.l ~ n.v, so it keeps 1 - max3(c) E(n.v); the
-// diffuse lobe's arrives from the whole hemisphere, and keeps its cosine-weighted mean of the
-// reciprocal scaling, 1 - max3(c) Emax(n.v) (core SheenAlbedoTable::sampleDiffuse).
-float sheenSpecularScaling(vec3 sheenColor, float NoV, float sheenRoughness)
+// E(n.v, r) and Emax(n.v, r) in one fetch.
+vec2 sheenAlbedos(float NoV, float sheenRoughness)
 {
-    return max(1.0 - max(max3(sheenColor), 0.0) * sheenAlbedo(NoV, sheenRoughness), 0.0);
+    return texture(uSheenLut, dfgTexCoord(NoV, sheenRoughness, uSheenLutSize)).rg;
 }
-float sheenDiffuseScaling(vec3 sheenColor, float NoV, float sheenRoughness)
+
+// The scaling of the base's image-based lobes (the split sum's and fis's), 1 - max3(c) e: the
+// specular lobe's light arrives near the mirror direction, where n.l ~ n.v, so it keeps
+// 1 - max3(c) E(n.v) (e = sheenAlbedos().r); the diffuse lobe's arrives from the whole hemisphere,
+// and keeps its cosine-weighted mean of the reciprocal scaling, 1 - max3(c) Emax(n.v) (e =
+// sheenAlbedos().g; core SheenAlbedoTable::sampleDiffuse).
+float sheenScaling(vec3 sheenColor, float e)
 {
-    float emax = texture(uSheenLut, dfgTexCoord(NoV, sheenRoughness, uSheenLutSize)).g;
-    return max(1.0 - max(max3(sheenColor), 0.0) * emax, 0.0);
+    return max(1.0 - max(max3(sheenColor), 0.0) * e, 0.0);
 }
 
 // What the material under the sheen keeps towards v from l: min(1 - max3(c) E(n.v), 1 - max3(c)

@@ -134,7 +134,7 @@ vec3 environmentDiffuseAlbedo(MaterialInfo m, float NoV, float roughness)
     if (m.iridescence > 0.0 && metallic < 1.0) {
 #if defined(COUPLING_ENERGY_PRESERVING)
 #ifndef COMPOSITION_LEARNOPENGL
-        DielectricReflectance film = filmLayer(m, layer.f0);
+        DielectricReflectance film = filmSchlickLayer(m);
         weight = mix(weight, vec3(max(0.0, 1.0 - dielectricSpecularAlbedo(max3(film.f0), film.f90, NoV, roughness))),
                      m.iridescence);
 #endif
@@ -219,9 +219,15 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     float roughness = clampRoughness(m.perceptualRoughness);
     float metallic = saturate(m.metallic);
     vec3 baseColor = max(m.baseColor, vec3(0.0));
-    vec3 radiance = splitSumLobeRadiance(n, v, roughness);
     vec4 dfg = dfgLookup(NoV, roughness);
     DielectricReflectance layer = dielectricReflectance(m);
+    lobes.specular = vec3(0.0);
+#ifdef MATERIAL_ANISOTROPY
+    // A stretched lobe is integrated at the end (below): the isotropic one is not computed.
+    bool stretched = m.anisotropy > 0.0 && anisotropyTangent(n, m.anisotropyDirection) != vec3(0.0);
+    if (!stretched) {
+#endif
+    vec3 radiance = splitSumLobeRadiance(n, v, roughness);
     // KHR_materials_iridescence: the film's Fresnel averaged over the lobe times the lobe's albedo
     // with F = 1, mixed in by its strength (docs/shading.md, "Iridescence").
 #ifdef COMPOSITION_LEARNOPENGL
@@ -251,6 +257,9 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
 #endif
     lobes.specular = radiance * mix(specularDielectric, specularMetal, metallic);
 #endif
+#ifdef MATERIAL_ANISOTROPY
+    }
+#endif
     lobes.diffuse = irradiance(n) * INV_PI * environmentDiffuseAlbedo(m, NoV, roughness);
     lobes.sheen = vec3(0.0);
 #ifdef MATERIAL_SHEEN
@@ -259,10 +268,10 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     // for every view, a ring no prefiltered lookup about one direction resembles (for the sheen
     // alone on studio the GGX map at R measured 145% relative RMSE, the irradiance 59%), so its
     // light is a few filtered samples of the environment cube, averaged with the lobe's weights.
-    lobes.diffuse *= sheenDiffuseScaling(m.sheenColor, NoV, m.sheenRoughness);
-    lobes.specular *= sheenSpecularScaling(m.sheenColor, NoV, m.sheenRoughness);
-    lobes.sheen = m.sheenColor * sheenAlbedo(NoV, m.sheenRoughness)
-        * sheenLobeRadiance(m, facingNormal(n, v), v, uSheenSamples);
+    vec2 sheenE = sheenAlbedos(NoV, m.sheenRoughness); // E and Emax: one fetch
+    lobes.diffuse *= sheenScaling(m.sheenColor, sheenE.g);
+    lobes.specular *= sheenScaling(m.sheenColor, sheenE.r);
+    lobes.sheen = m.sheenColor * sheenE.r * sheenLobeRadiance(m, facingNormal(n, v), v, uSheenSamples);
 #endif
     lobes.coat = vec3(0.0);
 #ifdef MATERIAL_CLEARCOAT
@@ -285,7 +294,7 @@ BrdfLobes splitSumEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
     // studio); it is integrated by uAnisotropySamples filtered samples of its own visible normals
     // instead, whose weights carry the sheen's scaling and the coat's 1 - w_c (docs/shading.md,
     // "Anisotropy").
-    if (m.anisotropy > 0.0 && anisotropyTangent(n, m.anisotropyDirection) != vec3(0.0)) {
+    if (stretched) {
         lobes.specular = fisLobe(m, facingNormal(n, v), v, LOBE_SPECULAR, 0, uAnisotropySamples, uint(uAnisotropySamples));
         return lobes;
     }

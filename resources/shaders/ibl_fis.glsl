@@ -218,7 +218,7 @@ BrdfLobes fisEnvironmentLobes(MaterialInfo m, vec3 n, vec3 v)
 #ifdef MATERIAL_SHEEN
     // The specular samples carry the sheen's scaling (evaluateBrdf); the diffuse lobe takes its
     // cosine-weighted mean, as the split sum's.
-    lobes.diffuse *= sheenDiffuseScaling(m.sheenColor, max(NoV, 0.0), m.sheenRoughness);
+    lobes.diffuse *= sheenScaling(m.sheenColor, sheenAlbedos(max(NoV, 0.0), m.sheenRoughness).g);
     lobes.sheen = fisSheenLobe(m, n, v, uIblSampleBase, uIblSamples, total);
 #endif
     lobes.coat = vec3(0.0);

@@ -47,6 +47,10 @@ struct MaterialInfo {
     float iridescence;
     float iridescenceIor;
     float iridescenceThickness;
+    // Under the energy-preserving coupling: the F0 of the film's Schlick layer (brdf_compose.glsl
+    // filmLayer, 11 film Fresnels), set once per pixel by surface.frag, not in every sample's
+    // evaluateBrdf (core computes it per call: MaterialBrdf filmLayer).
+    float filmLayerF0;
 };
 
 uniform vec4 uBaseColorFactor;

@@ -79,6 +79,9 @@ void main()
 #endif
     m.anisotropyDirection = anisotropyDirection(ng, anisotropyFrameTangent, m.anisotropyTangentDirection);
 #endif
+#if defined(MATERIAL_IRIDESCENCE) && defined(COUPLING_ENERGY_PRESERVING)
+    m.filmLayerF0 = filmLayer(m, dielectricReflectance(m).f0).f0.x;
+#endif
     // Normal-mapped normals may face away from the viewer: keep n.v >= 0 consistent with core's
     // evaluate(), which returns zero below the surface.
 
