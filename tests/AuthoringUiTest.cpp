@@ -39,6 +39,7 @@
 #include "ui/widgets/ValueSlider.h"
 
 #include "TestAssets.h"
+#include "TwoMaterialWindow.h"
 #include "WindowTestSupport.h"
 
 #include <QAbstractItemView>
@@ -91,7 +92,7 @@ using Names = std::vector<std::string>;
 
 } // namespace
 
-class AuthoringUiTest : public QObject {
+class AuthoringUiTest : public QObject, public test::TwoMaterialWindowFixture {
     Q_OBJECT
 public:
     static void initMain() { test::initWindowTestMain(); }
@@ -115,9 +116,6 @@ private Q_SLOTS:
     void freedMemoryGoesBackToTheSystem();
 
 private:
-    bool openTwoMaterials();
-    // Raises the dock that holds `widget` (docks share tabs) and gives the widget the focus.
-    bool focus(QWidget* widget);
     void keyOnFocus(Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
     {
         QWidget* target = QApplication::focusWidget() ? QApplication::focusWidget() : m_window.get();
@@ -127,39 +125,16 @@ private:
     {
         return m_window->findChild<T*>(QLatin1String(name));
     }
-
-    QTemporaryDir m_dir;
-    QTemporaryDir m_recovery;
-    QString m_twoMaterials;
-    std::unique_ptr<MainWindow> m_window;
-    Document* m_document = nullptr;
 };
 
 void AuthoringUiTest::initTestCase()
 {
-    QCoreApplication::setOrganizationName(QStringLiteral("FacetTests"));
-    m_twoMaterials = m_dir.filePath(QStringLiteral("two.glb"));
-    QString error;
-    QVERIFY2(test::writeTwoMaterialAsset(m_twoMaterials, &error), qPrintable(error));
-    m_window = test::showTestWindow(m_recovery.path());
-    QVERIFY(m_window);
-    m_document = m_window->document();
+    initWindowFixture();
 }
 
 void AuthoringUiTest::cleanupTestCase()
 {
-    m_document->newProject();
-    m_window.reset();
-}
-
-bool AuthoringUiTest::openTwoMaterials()
-{
-    return test::openAndSettle(*m_window, m_twoMaterials) && m_document->project().parts.size() == 2;
-}
-
-bool AuthoringUiTest::focus(QWidget* widget)
-{
-    return test::focusWidget(widget);
+    cleanupWindowFixture();
 }
 
 void AuthoringUiTest::materialsAreObjects()

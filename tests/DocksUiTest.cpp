@@ -59,6 +59,7 @@ using namespace facet;
 
 namespace {
 
+using test::chooseInCombo;
 using test::waitFor;
 
 // Drags `urls` onto `target` and drops them there, as the desktop would.
@@ -81,23 +82,6 @@ bool writePng(const QString& path, QColor color, QSize size = QSize(8, 8))
     QImage image(size, QImage::Format_RGB32);
     image.fill(color);
     return image.save(path);
-}
-
-// Picks `text` in a combo box through its popup, as a user does.
-bool chooseInCombo(QComboBox* combo, const QString& text)
-{
-    const int index = combo->findText(text);
-    if (index < 0)
-        return false;
-    combo->showPopup();
-    QAbstractItemView* view = combo->view();
-    if (!QTest::qWaitForWindowExposed(view->window()))
-        return false;
-    const QModelIndex modelIndex = view->model()->index(index, combo->modelColumn(), view->rootIndex());
-    view->scrollTo(modelIndex);
-    const QPoint centre = view->visualRect(modelIndex).center();
-    QTest::mouseClick(view->viewport(), Qt::LeftButton, Qt::NoModifier, centre);
-    return waitFor([&] { return !view->isVisible(); }, 2000) && combo->currentIndex() == index;
 }
 
 } // namespace

@@ -30,6 +30,7 @@
 #include "ui/viewport/ViewportWidget.h"
 
 #include "TestAssets.h"
+#include "TwoMaterialWindow.h"
 #include "WindowTestSupport.h"
 
 #include <QApplication>
@@ -71,7 +72,7 @@ using Names = std::vector<std::string>;
 
 } // namespace
 
-class MaterialTransferUiTest : public QObject {
+class MaterialTransferUiTest : public QObject, public test::TwoMaterialWindowFixture {
     Q_OBJECT
 public:
     static void initMain() { test::initWindowTestMain(); }
@@ -87,45 +88,21 @@ private Q_SLOTS:
     void savedToTheLibraryAndWatchedFolders();
 
 private:
-    bool openTwoMaterials();
-    // Raises the dock that holds `widget` (docks share tabs) and gives the widget the focus.
-    bool focus(QWidget* widget);
-
-    QTemporaryDir m_dir;
-    QTemporaryDir m_recovery;
-    QString m_twoMaterials;
-    std::unique_ptr<MainWindow> m_window;
-    Document* m_document = nullptr;
 };
 
 void MaterialTransferUiTest::initTestCase()
 {
+    // The test's own presets folder (test mode), emptied before the window reads it: what a run
+    // saved must not meet the next.
     QCoreApplication::setOrganizationName(QStringLiteral("FacetTests"));
-    // The test's own presets folder (test mode), emptied: what a run saved must not meet the next.
     QVERIFY(QDir(UserPresets::directory()).removeRecursively());
     QSettings().remove(QStringLiteral("presets"));
-    m_twoMaterials = m_dir.filePath(QStringLiteral("two.glb"));
-    QString error;
-    QVERIFY2(test::writeTwoMaterialAsset(m_twoMaterials, &error), qPrintable(error));
-    m_window = test::showTestWindow(m_recovery.path());
-    QVERIFY(m_window);
-    m_document = m_window->document();
+    initWindowFixture();
 }
 
 void MaterialTransferUiTest::cleanupTestCase()
 {
-    m_document->newProject();
-    m_window.reset();
-}
-
-bool MaterialTransferUiTest::openTwoMaterials()
-{
-    return test::openAndSettle(*m_window, m_twoMaterials) && m_document->project().parts.size() == 2;
-}
-
-bool MaterialTransferUiTest::focus(QWidget* widget)
-{
-    return test::focusWidget(widget);
+    cleanupWindowFixture();
 }
 
 void MaterialTransferUiTest::copyAndPasteAMaterial()

@@ -52,30 +52,10 @@
 #include <memory>
 
 using namespace facet;
+using facet::test::chooseInCombo;
 using facet::test::waitFor;
 
 namespace {
-
-// Picks `text` in a combo box through its popup, as a user does with the keyboard: open it, arrow
-// keys to the entry, Enter. (A simulated mouse click in the popup was sometimes taken for the
-// release of the press that opened it, depending on what ran before.)
-bool chooseInCombo(QComboBox* combo, const QString& text)
-{
-    const int index = combo->findText(text);
-    if (index < 0)
-        return false;
-    combo->showPopup();
-    QAbstractItemView* view = combo->view();
-    if (!QTest::qWaitForWindowExposed(view->window()))
-        return false;
-    const int from = view->currentIndex().isValid() ? view->currentIndex().row() : combo->currentIndex();
-    for (int row = from; row < index; ++row)
-        QTest::keyClick(view, Qt::Key_Down);
-    for (int row = from; row > index; --row)
-        QTest::keyClick(view, Qt::Key_Up);
-    QTest::keyClick(view, Qt::Key_Return);
-    return waitFor([&] { return !view->isVisible(); }, 2000) && combo->currentIndex() == index;
-}
 
 // Clicks `button` (which opens a QColorDialog) and answers the dialog with `color`.
 bool clickAndChooseColour(QAbstractButton* button, const QColor& color)
@@ -320,7 +300,7 @@ void MaterialsFrameUiTest::assigningAnotherMaterialToAPart()
     const QPoint right = pixelOfPart(1);
     QComboBox* combo = m_window->materialsDock()->partMaterialCombo(1);
     QVERIFY(combo);
-    QVERIFY(chooseInCombo(combo, QStringLiteral("Red")));
+    QVERIFY(chooseInCombo(combo, QStringLiteral("Red"), test::ComboInput::Keyboard));
     QCOMPARE(m_document->project().parts.at(1).material, 0);
     QCOMPARE(m_document->undoStack()->count(), 1);
     QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Assign Red to Right"));
@@ -406,7 +386,8 @@ void MaterialsFrameUiTest::emissiveAndAlphaEditsReachTheFrame()
         break;
     }
     case Edit::AlphaMask:
-        QVERIFY(chooseInCombo(material->alphaModeCombo(), QStringLiteral("Mask (cut-out)")));
+        QVERIFY(chooseInCombo(
+            material->alphaModeCombo(), QStringLiteral("Mask (cut-out)"), test::ComboInput::Keyboard));
         QVERIFY(material->alphaCutoffSlider()->isEnabled());
         break;
     case Edit::AlphaCutoff:
@@ -417,7 +398,8 @@ void MaterialsFrameUiTest::emissiveAndAlphaEditsReachTheFrame()
             qPrintable(QString::number(m_document->project().material().alphaCutoff)));
         break;
     case Edit::AlphaBlend:
-        QVERIFY(chooseInCombo(material->alphaModeCombo(), QStringLiteral("Blend (transparent)")));
+        QVERIFY(chooseInCombo(
+            material->alphaModeCombo(), QStringLiteral("Blend (transparent)"), test::ComboInput::Keyboard));
         QVERIFY(!material->alphaCutoffSlider()->isEnabled());
         break;
     case Edit::Unlit:

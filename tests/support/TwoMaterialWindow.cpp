@@ -6,8 +6,6 @@
 #include "TestAssets.h"
 
 #include <QCoreApplication>
-#include <QMessageBox>
-#include <QSignalSpy>
 
 namespace facet::test {
 
@@ -21,17 +19,10 @@ void TwoMaterialWindowFixture::initWindowFixture()
     QVERIFY2(writeTwoMaterialAsset(m_twoMaterials, &error), qPrintable(error));
     QVERIFY2(writeTwoMaterialAsset(m_translucent, &error, 0.3), qPrintable(error));
 
-    m_window = std::make_unique<MainWindow>(nullptr, m_recovery.path());
+    m_window = showTestWindow(m_recovery.path());
+    QVERIFY(m_window);
     m_document = m_window->document();
     m_viewport = m_window->viewport();
-    m_window->projectFiles()->setErrorDialogsEnabled(false);
-    m_window->projectFiles()->setUnsavedChangesAnswer(QMessageBox::Discard);
-    QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    QVERIFY(rendered.count() > 0 || rendered.wait(60000));
-    m_window->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(m_window.get()));
 }
 
 void TwoMaterialWindowFixture::cleanupWindowFixture()
@@ -46,6 +37,11 @@ bool TwoMaterialWindowFixture::open(const QString& path)
         return false;
     SceneController* scene = m_window->sceneController();
     return QTest::qWaitFor([scene] { return scene->pendingAssetLoads() == 0; }, 30000);
+}
+
+bool TwoMaterialWindowFixture::openTwoMaterials()
+{
+    return openAndSettle(*m_window, m_twoMaterials) && m_document->project().parts.size() == 2;
 }
 
 } // namespace facet::test

@@ -1,9 +1,9 @@
 #pragma once
-// The main window the Materials UI tests drive (MaterialsUiTest, MaterialsFrameUiTest), a base of
-// each test class: the small assets written by the test (support/TestAssets.h: two quads side by
-// side, "Left" in the material "Red" and "Right" in "Blue", and the same with the right part's
-// alpha 0.3), the window shown with its first frame drawn, and opening a file until its assets
-// arrived. Links facet_ui: compiled into those tests only.
+// The main window the material UI tests drive (MaterialsUiTest, MaterialsFrameUiTest,
+// AuthoringUiTest, MaterialTransferUiTest), a base of each test class: the small assets written by the test
+// (support/TestAssets.h: two quads side by side, "Left" in the material "Red" and "Right" in "Blue", and the
+// same with the right part's alpha 0.3), the window shown with its first frame drawn, and opening a file
+// until its assets arrived. Links facet_ui: compiled into those tests only.
 
 #include "ui/MainWindow.h"
 #include "ui/document/Document.h"
@@ -29,6 +29,11 @@ protected:
     // Opens `path` and waits until its mesh (and environment) arrived: files load off the GUI
     // thread (ui/document/DocumentAssets).
     bool open(const QString& path);
+    // Opens the two-material asset, settled, with an empty undo stack (WindowTestSupport.h
+    // openAndSettle): true when it shows its two parts.
+    bool openTwoMaterials();
+    // Raises the dock that holds `widget` and gives it the focus (WindowTestSupport.h focusWidget).
+    static bool focus(QWidget* widget) { return focusWidget(widget); }
 
     QTemporaryDir m_dir;
     QTemporaryDir m_recovery;

@@ -9,6 +9,8 @@
 #include "ui/viewport/SurfaceFormat.h"
 #include "ui/viewport/ViewportWidget.h"
 
+#include <QAbstractItemView>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QMessageBox>
@@ -88,6 +90,35 @@ inline bool focusWidget(QWidget* widget)
         }
     widget->setFocus(Qt::OtherFocusReason);
     return QTest::qWaitFor([widget] { return widget->hasFocus(); }, 5000);
+}
+
+// Chooses `text` in `combo` as a user does: opens its popup and clicks the item (Mouse) or walks
+// to it with the arrow keys and presses Return (Keyboard: a combo in a table cell, whose popup a
+// click may miss). True when the popup closed on that item.
+enum class ComboInput { Mouse, Keyboard };
+inline bool chooseInCombo(QComboBox* combo, const QString& text, ComboInput input = ComboInput::Mouse)
+{
+    const int index = combo->findText(text);
+    if (index < 0)
+        return false;
+    combo->showPopup();
+    QAbstractItemView* view = combo->view();
+    if (!QTest::qWaitForWindowExposed(view->window()))
+        return false;
+    if (input == ComboInput::Mouse) {
+        const QModelIndex modelIndex = view->model()->index(index, combo->modelColumn(), view->rootIndex());
+        view->scrollTo(modelIndex);
+        QTest::mouseClick(
+            view->viewport(), Qt::LeftButton, Qt::NoModifier, view->visualRect(modelIndex).center());
+    } else {
+        const int from = view->currentIndex().isValid() ? view->currentIndex().row() : combo->currentIndex();
+        for (int row = from; row < index; ++row)
+            QTest::keyClick(view, Qt::Key_Down);
+        for (int row = from; row > index; --row)
+            QTest::keyClick(view, Qt::Key_Up);
+        QTest::keyClick(view, Qt::Key_Return);
+    }
+    return waitFor([&] { return !view->isVisible(); }, 2000) && combo->currentIndex() == index;
 }
 
 // Where a slider's handle is, from the style (what a user would grab).
