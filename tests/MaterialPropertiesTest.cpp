@@ -217,6 +217,30 @@ private Q_SLOTS:
         }
         QCOMPARE(materialAxes, 17);
     }
+
+    // Every map slot's factor has its row (the Texture Maps dock's sliders are made from it,
+    // ValueSlider::forProperty): a colour row for a colour map, a scalar one otherwise, naming the
+    // slot; a row per slot, one slot per row.
+    void everySlotHasItsFactorRow_data()
+    {
+        QTest::addColumn<int>("slot");
+        for (MapSlot slot : kAllMapSlots)
+            QTest::newRow(toString(slot)) << int(slot);
+    }
+    void everySlotHasItsFactorRow()
+    {
+        QFETCH(int, slot);
+        const std::optional<MaterialProperty> property = factorPropertyOf(MapSlot(slot));
+        QVERIFY(property);
+        const MaterialPropertyInfo& info = infoOf(*property);
+        QVERIFY(info.slot == MapSlot(slot));
+        QCOMPARE(info.value == PropertyValue::Color, isColorSlot(MapSlot(slot)));
+        const double sliderEnd = info.sliderMaximum > 0.0 ? info.sliderMaximum : info.maximum;
+        QVERIFY(sliderEnd > info.minimum && sliderEnd <= info.maximum);
+        // A normal map's slider spans the usual 0-2 of the format's 0-10 (issue 30).
+        if (isNormalSlot(MapSlot(slot)))
+            QCOMPARE(sliderEnd, 2.0);
+    }
 };
 
 QTEST_GUILESS_MAIN(MaterialPropertiesTest)

@@ -29,7 +29,7 @@ constexpr std::array<MaterialPropertyInfo, kMaterialPropertyCount> kProperties =
     {P::Occlusion, "occlusion", "occlusion.factor", "Occlusion strength", V::Scalar, 0.0, 1.0,
         MapSlot::Occlusion, nullptr, {}},
     {P::Normal, "normal", "normal.factor", "Normal map strength", V::Scalar, 0.0,
-        Material::kMaxNormalStrength, MapSlot::Normal, nullptr, {}},
+        Material::kMaxNormalStrength, MapSlot::Normal, nullptr, {}, 2.0},
     {P::Emissive, "emissive", "emissive.factor", "Emissive colour (linear)", V::Color, 0.0, 1.0,
         MapSlot::Emissive, nullptr, {}},
     {P::EmissiveStrength, "emissiveStrength", "emissiveStrength", "Emissive strength", V::Scalar, 0.0,
@@ -45,7 +45,7 @@ constexpr std::array<MaterialPropertyInfo, kMaterialPropertyCount> kProperties =
         "Clearcoat roughness (perceptual)", V::Scalar, 0.0, 1.0, MapSlot::ClearcoatRoughness,
         "clearcoat-roughness", {"KHR_materials_clearcoat", "clearcoatRoughnessFactor", 0.0}},
     {P::ClearcoatNormal, "clearcoatNormal", "clearcoatNormal.factor", "Clearcoat normal map strength",
-        V::Scalar, 0.0, Material::kMaxNormalStrength, MapSlot::ClearcoatNormal, nullptr, {}},
+        V::Scalar, 0.0, Material::kMaxNormalStrength, MapSlot::ClearcoatNormal, nullptr, {}, 2.0},
     {P::SheenColor, "sheenColor", "sheenColor.factor", "Sheen colour (linear)", V::Color, 0.0, 1.0,
         MapSlot::SheenColor, "sheen-color", {"KHR_materials_sheen", "sheenColorFactor", 0.0}},
     {P::SheenRoughness, "sheenRoughness", "sheenRoughness.factor", "Sheen roughness (perceptual)", V::Scalar,
@@ -100,6 +100,15 @@ static_assert(inEnumOrder(), "kProperties must list the properties in the order 
 std::span<const MaterialPropertyInfo> materialProperties()
 {
     return kProperties;
+}
+
+std::optional<MaterialProperty> factorPropertyOf(MapSlot slot)
+{
+    const PropertyValue value = isColorSlot(slot) ? PropertyValue::Color : PropertyValue::Scalar;
+    for (const MaterialPropertyInfo& info : kProperties)
+        if (info.slot == slot && info.value == value)
+            return info.property;
+    return std::nullopt;
 }
 
 const MaterialPropertyInfo& infoOf(MaterialProperty property)

@@ -9,7 +9,8 @@
 // --base-color, --metallic, --roughness, --clearcoat, --clearcoat-roughness, --sheen-color,
 // --sheen-roughness, --specular, --specular-color, --anisotropy, --anisotropy-rotation, --iridescence,
 // --iridescence-ior, --iridescence-thickness, --iridescence-thickness-minimum; app/MaterialFlags)
-// and the Material dock's sliders (ui/docks/MaterialDock addPropertySlider). A property's default is the
+// and the docks' sliders (ui/widgets/ValueSlider forProperty: the Material dock's, and the
+// Texture Maps dock's factor of each map, factorPropertyOf). A property's default is the
 // default Material's value, read through the row (no second copy). docs/architecture.md, "The material
 // property registry", says how a new property joins.
 
@@ -99,6 +100,9 @@ struct MaterialPropertyInfo {
 std::span<const MaterialPropertyInfo> materialProperties();
 const MaterialPropertyInfo& infoOf(MaterialProperty property);
 std::optional<MaterialProperty> materialPropertyFromString(std::string_view name);
+// The property whose factor `slot`'s texture multiplies: the slot's colour row for a colour map
+// (base colour, emissive, the sheen's and the specular colour), its scalar row otherwise.
+std::optional<MaterialProperty> factorPropertyOf(MapSlot slot);
 
 // The value of a scalar property of `material`, and setting it (a scalar map's factor keeps its
 // four components equal, Material::setFactor).

@@ -235,21 +235,13 @@ MapSlotWidget::MapSlotWidget(Document* document, MapSlot slot, QWidget* parent)
             });
         }
     } else {
-        // A normal map's slider spans the usual 0-2, the field what the format allows (issue 30); the
-        // film's thickness its registry row's nanometres; the other factors 0-1.
+        // The factor's slider from the slot's registry row (core/material/MaterialProperties.h): a
+        // normal map's spans the usual 0-2 and its field what the format allows (issue 30), the
+        // film's thickness nanometres, the other factors 0-1.
         const bool normal = isNormalSlot(slot);
         const bool thickness = slot == MapSlot::IridescenceThickness;
-        double sliderMaximum = normal ? 2.0 : 1.0;
-        double fieldMaximum = normal ? Material::kMaxNormalStrength : 1.0;
-        if (thickness) {
-            const MaterialPropertyInfo& row = infoOf(MaterialProperty::IridescenceThickness);
-            sliderMaximum = row.sliderMaximum;
-            fieldMaximum = row.maximum;
-        }
-        m_factor = new ValueSlider(0.0, sliderMaximum, thickness ? 1 : 3, this);
+        m_factor = ValueSlider::forProperty(infoOf(*factorPropertyOf(slot)), this);
         m_factor->setObjectName(QStringLiteral("factorSlider_%1").arg(key));
-        if (fieldMaximum > sliderMaximum)
-            m_factor->setSpinRange(0.0, fieldMaximum);
         if (thickness)
             m_factor->setSuffix(tr(" nm"));
         form->addRow(

@@ -400,14 +400,8 @@ ValueSlider* MaterialDock::addPropertySlider(
     MaterialProperty property, QFormLayout* form, const QString& label)
 {
     const MaterialPropertyInfo& info = infoOf(property);
-    const double sliderMaximum = info.sliderMaximum > 0.0 ? info.sliderMaximum : info.maximum;
-    // Three decimals for the fractions, one for the large ranges (a film's nanometres): the spin
-    // box's width follows its longest text, and a wide one squeezes the slider in a narrow dock.
-    auto* slider = new ValueSlider(info.minimum, sliderMaximum, info.maximum > 1000.0 ? 1 : 3, this);
-    if (sliderMaximum < info.maximum)
-        slider->setSpinRange(info.minimum, info.maximum);
+    ValueSlider* slider = ValueSlider::forProperty(info, this);
     slider->setObjectName(QLatin1String(info.name) + QLatin1String("Slider"));
-    slider->setToolTip(QString::fromUtf8(info.label));
     form->addRow(label, slider);
     m_propertySliders.emplace_back(property, slider);
     connect(slider, &ValueSlider::editStarted, m_document, &Document::beginInteractiveEdit);

@@ -1,5 +1,7 @@
 #include "ui/widgets/ValueSlider.h"
 
+#include "core/material/MaterialProperties.h"
+
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QSignalBlocker>
@@ -9,6 +11,18 @@
 #include <cmath>
 
 namespace facet {
+
+ValueSlider* ValueSlider::forProperty(const MaterialPropertyInfo& info, QWidget* parent)
+{
+    const double sliderMaximum = info.sliderMaximum > 0.0 ? info.sliderMaximum : info.maximum;
+    // Three decimals for the fractions, one for the large ranges: the spin box's width follows its
+    // longest text, and a wide one squeezes the slider in a narrow dock.
+    auto* slider = new ValueSlider(info.minimum, sliderMaximum, info.maximum > 1000.0 ? 1 : 3, parent);
+    if (sliderMaximum < info.maximum)
+        slider->setSpinRange(info.minimum, info.maximum);
+    slider->setToolTip(QString::fromUtf8(info.label));
+    return slider;
+}
 
 ValueSlider::ValueSlider(double minimum, double maximum, int decimals, QWidget* parent)
     : QWidget(parent)

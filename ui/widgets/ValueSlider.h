@@ -17,11 +17,18 @@ class QSlider;
 
 namespace facet {
 
+struct MaterialPropertyInfo;
+
 class ValueSlider : public QWidget {
     Q_OBJECT
 public:
     // `decimals` for the spin box; the slider has kSteps steps over the range.
     ValueSlider(double minimum, double maximum, int decimals, QWidget* parent = nullptr);
+
+    // A material property's slider from its registry row (core/material/MaterialProperties.h): its
+    // range, where the slider ends (sliderMaximum; the spin box goes on to the maximum), three
+    // decimals (one for a range past 1000: a film's nanometres) and the row's label as tooltip.
+    static ValueSlider* forProperty(const MaterialPropertyInfo& info, QWidget* parent = nullptr);
 
     static constexpr int kSteps = 1000;
 
