@@ -74,6 +74,7 @@ private Q_SLOTS:
     void changedFileChosenAgainShowsItsNewVersion();
     void viewsShareOneMapLoader();
     void releasedPixelsLeaveTheSharedCacheToo();
+    void aMissingMapIsSaidOnceUntilChosenAgain();
 
 private:
     // Two materials, each with a file in base colour, normal and roughness (six files).
@@ -441,4 +442,47 @@ void SceneControllerUiTest::releasedPixelsLeaveTheSharedCacheToo()
     QCOMPARE(MapImageCache::shared().decodeCount(file("m0_base.png")), decodes + 1);
     QVERIFY(scene.assets().maps[0][std::size_t(MapSlot::BaseColor)].image->hasPixels());
     QVERIFY(!scene.assets().maps[0][std::size_t(MapSlot::Roughness)].image->hasPixels());
+}
+
+void SceneControllerUiTest::aMissingMapIsSaidOnceUntilChosenAgain()
+{
+    // A slot whose file is missing is named once (status bar and problem bar); files changing on
+    // disk elsewhere look at it again without saying it again; choosing it again says it again.
+    Document document;
+    Project project = Project::defaultProject();
+    project.material().map(MapSlot::BaseColor).path = file("m0_base.png");
+    project.material().map(MapSlot::Normal).path = file("missing_normal.png");
+    document.setProject(project, QStringLiteral("Maps"));
+    SceneController scene(&document);
+    QSignalSpy messages(&scene, &SceneController::message);
+    QSignalSpy problems(&scene, &SceneController::problemChanged);
+    QTRY_COMPARE_WITH_TIMEOUT(scene.pendingMapLoads(), 0, 30000);
+    const auto saidMissing = [&] {
+        int count = 0;
+        for (const QList<QVariant>& arguments : messages)
+            if (arguments.at(0).toString().contains(QStringLiteral("missing_normal.png")))
+                ++count;
+        return count;
+    };
+    QCOMPARE(saidMissing(), 1);
+    QVERIFY(!scene.mapProblem(0, MapSlot::Normal).empty());
+    const int problemsBefore = problems.count();
+
+    for (int round = 0; round < 2; ++round) {
+        document.notifyFilesChangedOnDisk(DocumentChange::MaterialMaps);
+        QTRY_COMPARE_WITH_TIMEOUT(scene.pendingMapLoads(), 0, 30000);
+        QCoreApplication::processEvents();
+    }
+    QCOMPARE(saidMissing(), 1);
+    QCOMPARE(problems.count(), problemsBefore);
+    QVERIFY(!scene.mapProblem(0, MapSlot::Normal).empty());
+
+    // Chosen again (the same file): tried and said again.
+    Project again = document.project();
+    again.material().map(MapSlot::Normal).path.clear();
+    document.setProject(again, QStringLiteral("Clear"));
+    again.material().map(MapSlot::Normal).path = file("missing_normal.png");
+    document.setProject(again, QStringLiteral("Choose again"));
+    QTRY_COMPARE_WITH_TIMEOUT(scene.pendingMapLoads(), 0, 30000);
+    QTRY_COMPARE_WITH_TIMEOUT(saidMissing(), 2, 10000);
 }

@@ -293,12 +293,15 @@ void SceneController::loadMaps(const DocumentChanges& changes)
                 images.emplace(map.path, previous->second); // unchanged: shown (or loading) as it is
                 continue;
             }
-            // Until a new decode arrives the slot shows the previous version of the file, if any.
-            images.emplace(map.path,
-                previous != m_images.end() && previous->second.image ? previous->second : CachedImage {});
-            if (all || named)
-                m_documentAssets->retry(
-                    Kind::Map, map.path); // chosen again: a file that failed is tried again
+            // Until a new decode arrives the slot shows the previous version of the file, if any,
+            // and a file that failed stays failed without being reported again. Chosen again (or a
+            // new project), a file that failed is tried again and its problem said again.
+            CachedImage shown = previous != m_images.end() ? previous->second : CachedImage {};
+            if (all || (named && changes.namesMaterials())) {
+                m_documentAssets->retry(Kind::Map, map.path);
+                shown.problem.clear();
+            }
+            images.emplace(map.path, std::move(shown));
             lookAt.push_back(map.path);
         }
     }
@@ -314,8 +317,11 @@ void SceneController::loadMaps(const DocumentChanges& changes)
         inUse.insert(entry.first);
     m_documentAssets->setInUse(this, Kind::Map, std::move(inUse));
     bool taken = false;
-    for (const std::string& path : lookAt)
-        taken = fetchMap(path) || taken;
+    for (const std::string& path : lookAt) {
+        bool changed = false;
+        if (fetchMap(path, &changed) && changed)
+            taken = true;
+    }
     publishMaps();
     if (m_pendingMaps.empty() && m_batchTotal > 0) {
         // Every load of the batch settled or went stale: the batch is over.
@@ -327,7 +333,7 @@ void SceneController::loadMaps(const DocumentChanges& changes)
         Q_EMIT mapsArrived(); // entries the cache held already (another view's, an earlier project's)
 }
 
-bool SceneController::fetchMap(const std::string& path)
+bool SceneController::fetchMap(const std::string& path, bool* changed)
 {
     using Kind = DocumentAssets::Kind;
     const int loadsBefore = m_documentAssets->loads(Kind::Map);
@@ -348,9 +354,16 @@ bool SceneController::fetchMap(const std::string& path)
     }
     m_pendingMaps.erase(path);
     CachedImage& entry = m_images[path];
+    const bool newImage = image != entry.image;
+    const std::string problem = image ? std::string() : m_documentAssets->problem(Kind::Map, path);
+    const bool newProblem = problem != entry.problem;
+    if (changed)
+        *changed = newImage || newProblem;
     entry.image = image;
     entry.timestamp = m_documentAssets->mapTimestamp(path);
-    entry.problem = image ? std::string() : m_documentAssets->problem(Kind::Map, path);
+    entry.problem = problem;
+    if (!newImage && !newProblem)
+        return true; // what the slot shows already (looked at again: nothing to say)
     const QString subject = QStringLiteral("map:") + QString::fromStdString(path);
     if (!image) {
         // Name the slot that wanted it (the first one, when a packed file feeds several).
@@ -446,7 +459,9 @@ void SceneController::reloadMaps(const std::vector<std::string>& paths)
             || m_pendingMaps.count(path))
             continue;
         m_documentAssets->reload(DocumentAssets::Kind::Map, path);
-        taken = fetchMap(path) || taken;
+        bool changed = false;
+        if (fetchMap(path, &changed) && changed)
+            taken = true;
     }
     if (!taken)
         return;

@@ -159,8 +159,9 @@ private:
     void loadMaps(const DocumentChanges& changes);
     // Asks the asset cache for `path`: true when its entry is settled (loaded or failed) and now
     // in m_images, false while it loads (it is then pending; its arrival is taken by
-    // onAssetArrived).
-    bool fetchMap(const std::string& path);
+    // onAssetArrived). `changed`: whether what the slot shows changed (another image, or another
+    // problem); nothing is reported when it did not.
+    bool fetchMap(const std::string& path, bool* changed = nullptr);
     // Takes the pending maps that arrived: whether any did.
     bool takeArrivedMaps();
     void publishMaps();
