@@ -477,6 +477,23 @@ void SceneControllerUiTest::aMissingMapIsSaidOnceUntilChosenAgain()
     QCOMPARE(problems.count(), problemsBefore);
     QVERIFY(!scene.mapProblem(0, MapSlot::Normal).empty());
 
+    // A material added in front moves the textured one to index 1 (reported as changed in full):
+    // its maps are not chosen again, so nothing is said again.
+    Project moved = document.project();
+    Material added = moved.materials[0];
+    added.name = "Added";
+    added.map(MapSlot::BaseColor).path.clear();
+    added.map(MapSlot::Normal).path.clear();
+    moved.materials.insert(moved.materials.begin(), added);
+    document.setProject(moved, QStringLiteral("Add a material in front"));
+    QTRY_COMPARE_WITH_TIMEOUT(scene.pendingMapLoads(), 0, 30000);
+    QCoreApplication::processEvents();
+    QCOMPARE(saidMissing(), 1);
+    QVERIFY(!scene.mapProblem(1, MapSlot::Normal).empty());
+    moved.materials.erase(moved.materials.begin());
+    document.setProject(moved, QStringLiteral("Remove it"));
+    QTRY_COMPARE_WITH_TIMEOUT(scene.pendingMapLoads(), 0, 30000);
+
     // Chosen again (the same file): tried and said again.
     Project again = document.project();
     again.material().map(MapSlot::Normal).path.clear();

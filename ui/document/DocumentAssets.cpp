@@ -34,13 +34,18 @@ std::string keyOf(DocumentAssets::Kind kind, const std::string& name)
 DocumentAssets::DocumentAssets(QObject* parent)
     : QObject(parent)
 {
-    // Decoding beside llvmpipe's threads and the GUI thread: leave a core to them, at most 4.
-    m_pool.setMaxThreadCount(std::clamp(QThread::idealThreadCount() - 1, 1, 4));
+    // Decoding beside llvmpipe's threads and the GUI thread: leave a core to them, at most 4 (per
+    // pool: environments and meshes, maps).
+    const int threads = std::clamp(QThread::idealThreadCount() - 1, 1, 4);
+    m_pool.setMaxThreadCount(threads);
+    m_mapPool.setMaxThreadCount(threads);
 }
 
 DocumentAssets::~DocumentAssets()
 {
+    m_mapPool.clear();
     m_pool.clear();
+    m_mapPool.waitForDone();
     m_pool.waitForDone();
 }
 
@@ -153,7 +158,7 @@ const DocumentAssets::Entry* DocumentAssets::lookup(
     }
     m_loading.insert(key);
     QPointer<DocumentAssets> self(this);
-    m_pool.start([self, key, modified, load] {
+    (kind == Kind::Map ? m_mapPool : m_pool).start([self, key, modified, load] {
         Entry entry = load();
         entry.modified = modified;
         QMetaObject::invokeMethod(
@@ -259,6 +264,7 @@ int DocumentAssets::loads(Kind kind) const
 
 void DocumentAssets::waitForLoads()
 {
+    m_mapPool.waitForDone();
     m_pool.waitForDone();
     QCoreApplication::sendPostedEvents(this);
 }

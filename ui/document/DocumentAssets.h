@@ -114,7 +114,10 @@ private:
     std::set<std::string> m_loading; // keys
     std::map<const void*, std::map<Kind, std::set<std::string>>> m_inUse;
     std::map<Kind, int> m_loads;
-    QThreadPool m_pool; // declared last: destroyed (waited for) first
+    // Declared last: destroyed (waited for) first. Maps decode on a pool of their own, beside
+    // the environments' and meshes': a project's maps do not wait behind its EXR environment.
+    QThreadPool m_pool;
+    QThreadPool m_mapPool;
 };
 
 } // namespace facet

@@ -281,6 +281,17 @@ void SceneController::loadMaps(const DocumentChanges& changes)
     const Project& project = m_document->project();
     std::map<std::string, CachedImage> images;
     std::vector<std::string> lookAt;
+    // A file chosen (again) for a slot: a named edit of a material that kept its place (a
+    // material that moved, was added or removed is reported as changed in full).
+    const std::size_t firstShifted
+        = changes.namesMaterials() ? changes.materialList().firstShifted() : DocumentChanges::kNone;
+    std::set<std::string> chosen;
+    if (changes.namesMaterials())
+        for (const auto& [index, change] : changes.materialEdits())
+            if (index < project.materials.size() && index < firstShifted)
+                for (MapSlot slot : kAllMapSlots)
+                    if (change.map(slot).testFlag(MapProperty::Path))
+                        chosen.insert(project.materials[index].map(slot).path);
     for (std::size_t m = 0; m < project.materials.size(); ++m) {
         const MaterialChange changed = changes.material(m);
         for (MapSlot slot : kAllMapSlots) {
@@ -297,7 +308,7 @@ void SceneController::loadMaps(const DocumentChanges& changes)
             // and a file that failed stays failed without being reported again. Chosen again (or a
             // new project), a file that failed is tried again and its problem said again.
             CachedImage shown = previous != m_images.end() ? previous->second : CachedImage {};
-            if (all || (named && changes.namesMaterials())) {
+            if (all || chosen.count(map.path)) {
                 m_documentAssets->retry(Kind::Map, map.path);
                 shown.problem.clear();
             }
@@ -354,16 +365,19 @@ bool SceneController::fetchMap(const std::string& path, bool* changed)
     }
     m_pendingMaps.erase(path);
     CachedImage& entry = m_images[path];
-    const bool newImage = image != entry.image;
+    const std::int64_t timestamp = m_documentAssets->mapTimestamp(path);
     const std::string problem = image ? std::string() : m_documentAssets->problem(Kind::Map, path);
     const bool newProblem = problem != entry.problem;
+    // Another version of the file, or the first: what to say. The same file decoded again (its
+    // pixels released, then wanted by a view without the texture) is taken silently.
+    const bool newFile = image && (!entry.image || entry.timestamp != timestamp);
     if (changed)
-        *changed = newImage || newProblem;
+        *changed = image != entry.image || newProblem;
     entry.image = image;
-    entry.timestamp = m_documentAssets->mapTimestamp(path);
+    entry.timestamp = timestamp;
     entry.problem = problem;
-    if (!newImage && !newProblem)
-        return true; // what the slot shows already (looked at again: nothing to say)
+    if (!newFile && !newProblem)
+        return true; // what the slot shows already, or the same file again: nothing to say
     const QString subject = QStringLiteral("map:") + QString::fromStdString(path);
     if (!image) {
         // Name the slot that wanted it (the first one, when a packed file feeds several).
@@ -458,7 +472,11 @@ void SceneController::reloadMaps(const std::vector<std::string>& paths)
         if (found == m_images.end() || !found->second.image || found->second.image->hasPixels()
             || m_pendingMaps.count(path))
             continue;
-        m_documentAssets->reload(DocumentAssets::Kind::Map, path);
+        // A copy with pixels in the cache (the Compare view had it decoded again) is taken at
+        // once; else it is decoded again.
+        if (const std::shared_ptr<const MapImage> cached = m_documentAssets->map(path);
+            !cached || !cached->hasPixels())
+            m_documentAssets->reload(DocumentAssets::Kind::Map, path);
         bool changed = false;
         if (fetchMap(path, &changed) && changed)
             taken = true;
