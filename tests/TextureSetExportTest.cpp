@@ -29,6 +29,7 @@
 #include "core/export/TextureSetExport.h"
 #include "core/image/MapImage.h"
 #include "core/image/ToneMap.h"
+#include "core/material/MaterialProperties.h"
 
 using namespace facet;
 using facet::test::ReadBack;
@@ -50,6 +51,72 @@ private Q_SLOTS:
             QVERIFY(!t->name.empty());
         }
         QVERIFY(!ExportTemplate::builtin("unreal5"));
+    }
+
+    // Every channel source the registry names (core/material/MaterialProperties, exportField),
+    // read at a texel of a material of factors alone, each a distinct number: the name parses
+    // back to the row and the value is the row's factor (a unit vector's stored v * 0.5 + 0.5).
+    // The table is written here, not from the registry: a row that gains or loses a source, or
+    // a source exportTexel leaves unset (it reads 0), turns a row red.
+    void everySourceReadsItsRow_data()
+    {
+        QTest::addColumn<QString>("source");
+        QTest::addColumn<double>("expected");
+        const double c60 = 0.5 * 0.5 + 0.5; // the direction turned 60 degrees: (cos, sin) stored
+        const double s60 = std::sqrt(3.0) / 2.0 * 0.5 + 0.5;
+        const std::map<std::string, double> expected = {{"baseColor.r", 0.11}, {"baseColor.g", 0.12},
+            {"baseColor.b", 0.13}, {"baseColor.a", 0.14}, {"metallic", 0.21}, {"roughness", 0.31},
+            {"occlusion", 1.0}, // the strength mixes toward a texture; without one, unoccluded
+            {"normal.x", 0.5}, {"normal.y", 0.5}, {"normal.z", 1.0}, {"emissive.r", 0.41},
+            {"emissive.g", 0.42}, {"emissive.b", 0.43}, {"clearcoat", 0.51}, {"clearcoatRoughness", 0.52},
+            {"clearcoatNormal.x", 0.5}, {"clearcoatNormal.y", 0.5}, {"clearcoatNormal.z", 1.0},
+            {"sheenColor.r", 0.61}, {"sheenColor.g", 0.62}, {"sheenColor.b", 0.63}, {"sheenRoughness", 0.64},
+            {"specular", 0.71}, {"specularColor.r", 0.72}, {"specularColor.g", 0.73},
+            {"specularColor.b", 0.74}, {"anisotropy", 0.81}, {"anisotropyDirection.x", c60},
+            {"anisotropyDirection.y", s60}, {"iridescence", 0.91},
+            {"iridescenceThickness", 1.0}}; // no thickness texture: the maximum
+        std::size_t found = 0;
+        for (const ExportSource& source : exportSources()) {
+            const std::string name = toString(source);
+            const auto it = expected.find(name);
+            if (it == expected.end())
+                QFAIL(qPrintable(QStringLiteral("the registry's source %1 has no row here")
+                                     .arg(QString::fromStdString(name))));
+            QTest::newRow(name.c_str()) << QString::fromStdString(name) << it->second;
+            ++found;
+        }
+        QCOMPARE(found, expected.size());
+    }
+
+    void everySourceReadsItsRow()
+    {
+        QFETCH(QString, source);
+        QFETCH(double, expected);
+        using P = MaterialProperty;
+        Material material;
+        setColor(material, P::BaseColor, {0.11, 0.12, 0.13});
+        setScalar(material, P::Alpha, 0.14);
+        setScalar(material, P::Metallic, 0.21);
+        setScalar(material, P::Roughness, 0.31);
+        setScalar(material, P::Occlusion, 0.35);
+        setColor(material, P::Emissive, {0.41, 0.42, 0.43});
+        setScalar(material, P::Clearcoat, 0.51);
+        setScalar(material, P::ClearcoatRoughness, 0.52);
+        setColor(material, P::SheenColor, {0.61, 0.62, 0.63});
+        setScalar(material, P::SheenRoughness, 0.64);
+        setScalar(material, P::Specular, 0.71);
+        setColor(material, P::SpecularColor, {0.72, 0.73, 0.74});
+        setScalar(material, P::Anisotropy, 0.81);
+        setScalar(material, P::AnisotropyRotation, 60.0);
+        setScalar(material, P::Iridescence, 0.91);
+
+        const std::optional<ExportSource> parsed = exportSourceFromString(source.toStdString());
+        QVERIFY(parsed);
+        QCOMPARE(QString::fromStdString(toString(*parsed)), source);
+        const MaterialMapImages images {};
+        const ExportTexel texel = exportTexel(material, images, glm::dvec2(0.5));
+        QVERIFY(std::abs(channelValue(ExportChannel {parsed, 0.0, false}, texel) - expected) < 1e-9);
+        QVERIFY(std::abs(channelValue(ExportChannel {parsed, 0.0, true}, texel) - (1.0 - expected)) < 1e-9);
     }
 
     // Every file of every built-in template, every channel, against the engine's layout.

@@ -1,5 +1,6 @@
 #include "core/export/ExportTemplate.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
@@ -16,41 +17,6 @@ namespace facet {
 using namespace jsonsupport;
 
 namespace {
-
-constexpr std::array<std::pair<ExportSource, const char*>, 32> kSources = {{
-    {ExportSource::Constant, "constant"},
-    {ExportSource::BaseColorR, "baseColor.r"},
-    {ExportSource::BaseColorG, "baseColor.g"},
-    {ExportSource::BaseColorB, "baseColor.b"},
-    {ExportSource::BaseColorA, "baseColor.a"},
-    {ExportSource::NormalX, "normal.x"},
-    {ExportSource::NormalY, "normal.y"},
-    {ExportSource::NormalZ, "normal.z"},
-    {ExportSource::Metallic, "metallic"},
-    {ExportSource::Roughness, "roughness"},
-    {ExportSource::Occlusion, "occlusion"},
-    {ExportSource::EmissiveR, "emissive.r"},
-    {ExportSource::EmissiveG, "emissive.g"},
-    {ExportSource::EmissiveB, "emissive.b"},
-    {ExportSource::Clearcoat, "clearcoat"},
-    {ExportSource::ClearcoatRoughness, "clearcoatRoughness"},
-    {ExportSource::ClearcoatNormalX, "clearcoatNormal.x"},
-    {ExportSource::ClearcoatNormalY, "clearcoatNormal.y"},
-    {ExportSource::ClearcoatNormalZ, "clearcoatNormal.z"},
-    {ExportSource::SheenColorR, "sheenColor.r"},
-    {ExportSource::SheenColorG, "sheenColor.g"},
-    {ExportSource::SheenColorB, "sheenColor.b"},
-    {ExportSource::SheenRoughness, "sheenRoughness"},
-    {ExportSource::Specular, "specular"},
-    {ExportSource::SpecularColorR, "specularColor.r"},
-    {ExportSource::SpecularColorG, "specularColor.g"},
-    {ExportSource::SpecularColorB, "specularColor.b"},
-    {ExportSource::Anisotropy, "anisotropy"},
-    {ExportSource::AnisotropyDirectionX, "anisotropyDirection.x"},
-    {ExportSource::AnisotropyDirectionY, "anisotropyDirection.y"},
-    {ExportSource::Iridescence, "iridescence"},
-    {ExportSource::IridescenceThickness, "iridescenceThickness"},
-}};
 
 constexpr std::array<std::pair<TextureFileFormat, const char*>, 4> kFormats = {{
     {TextureFileFormat::Png, "png"},
@@ -70,9 +36,8 @@ constexpr std::array<const char*, 4> kTokens = {"material", "map", "size", "temp
 std::string sourceList()
 {
     std::string list;
-    for (const auto& [source, name] : kSources)
-        if (source != ExportSource::Constant)
-            list += (list.empty() ? "" : ", ") + std::string(name);
+    for (const ExportSource& source : exportSources())
+        list += (list.empty() ? "" : ", ") + toString(source);
     return list;
 }
 
@@ -138,11 +103,11 @@ std::optional<ExportChannel> readChannel(const QJsonValue& value, const std::str
         return std::nullopt;
     }
     const std::optional<ExportSource> source = exportSourceFromString(sourceName);
-    if (!source || *source == ExportSource::Constant) {
+    if (!source) {
         messages.fail(path, "\"" + sourceName + "\" is not a source (" + sourceList() + ", or a number)");
         return std::nullopt;
     }
-    channel.source = *source;
+    channel.source = source;
     return channel;
 }
 
@@ -205,20 +170,34 @@ std::optional<ExportOutput> readOutput(
 
 } // namespace
 
-const char* toString(ExportSource source)
+std::string toString(const ExportSource& source)
 {
-    for (const auto& [candidate, name] : kSources)
-        if (candidate == source)
-            return name;
-    return "constant";
+    const ExportField& field = infoOf(source.property).exportField;
+    std::string name = field.source ? field.source : "";
+    if (std::string_view components = field.components; !components.empty())
+        name += std::string(".") + components[std::size_t(source.component)];
+    return name;
 }
 
 std::optional<ExportSource> exportSourceFromString(std::string_view name)
 {
-    for (const auto& [source, text] : kSources)
-        if (name == text)
+    for (const ExportSource& source : exportSources())
+        if (toString(source) == name)
             return source;
     return std::nullopt;
+}
+
+std::vector<ExportSource> exportSources()
+{
+    std::vector<ExportSource> sources;
+    for (const MaterialPropertyInfo& info : materialProperties()) {
+        if (!info.exportField.source)
+            continue;
+        const int count = std::max(1, int(std::string_view(info.exportField.components).size()));
+        for (int component = 0; component < count; ++component)
+            sources.push_back({info.property, component});
+    }
+    return sources;
 }
 
 const char* toString(TextureFileFormat format)

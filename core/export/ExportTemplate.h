@@ -24,7 +24,8 @@
 // the roughness, a DirectX normal's green). One channel makes a grey file, two grey + alpha,
 // three RGB, four RGBA.
 // Sources (what the material shades with at each texel, factor and texture combined, before any
-// UV transform of its own: core/shading/MaterialInputs materialInputs):
+// UV transform of its own: core/shading/MaterialInputs materialInputs; each is a row's export field
+// in the material property registry, core/material/MaterialProperties):
 //   baseColor.r/.g/.b  linear base colour (the file's colour space encodes it)
 //   baseColor.a        coverage (base colour alpha)
 //   normal.x/.y/.z     the tangent-space shading normal, OpenGL convention (+Y green), strength
@@ -53,49 +54,26 @@
 #include <QJsonObject>
 
 #include "core/image/Image.h" // ColorEncoding
+#include "core/material/MaterialProperties.h"
 
 namespace facet {
 
-enum class ExportSource {
-    Constant,
-    BaseColorR,
-    BaseColorG,
-    BaseColorB,
-    BaseColorA,
-    NormalX, // x, y, z in order (channelValue counts on it)
-    NormalY,
-    NormalZ,
-    Metallic,
-    Roughness,
-    Occlusion,
-    EmissiveR,
-    EmissiveG,
-    EmissiveB,
-    Clearcoat, // KHR_materials_clearcoat's strength
-    ClearcoatRoughness, // the coat's perceptual roughness
-    ClearcoatNormalX, // the coat's tangent-space normal, as NormalX/Y/Z (in order too)
-    ClearcoatNormalY,
-    ClearcoatNormalZ,
-    SheenColorR, // KHR_materials_sheen's colour (linear)
-    SheenColorG,
-    SheenColorB,
-    SheenRoughness, // the sheen's perceptual roughness
-    Specular, // KHR_materials_specular's strength
-    SpecularColorR, // its F0 tint (linear)
-    SpecularColorG,
-    SpecularColorB,
-    Anisotropy, // KHR_materials_anisotropy's strength
-    AnisotropyDirectionX, // its tangent-plane direction, x then y (in order)
-    AnisotropyDirectionY,
-    Iridescence, // KHR_materials_iridescence's strength
-    IridescenceThickness, // where its thickness lies between the minimum (0) and the maximum (1)
+// A channel's source: a material property's export field (core/material/MaterialProperties,
+// MaterialPropertyInfo::exportField) and which of its components. Its name is the field's source
+// and the component's letter: "roughness", "baseColor.g", "normal.x".
+struct ExportSource {
+    MaterialProperty property = MaterialProperty::BaseColor;
+    int component = 0; // into the export field's components; 0 for a one-value source
+    bool operator==(const ExportSource&) const = default;
 };
-const char* toString(ExportSource source); // "baseColor.r", ...; "constant"
+std::string toString(const ExportSource& source); // "baseColor.r", "roughness"
 std::optional<ExportSource> exportSourceFromString(std::string_view name);
+// Every source, in the registry's order.
+std::vector<ExportSource> exportSources();
 
 struct ExportChannel {
-    ExportSource source = ExportSource::Constant;
-    double constant = 0.0; // Constant: the value the file holds
+    std::optional<ExportSource> source; // none: the constant
+    double constant = 0.0; // without a source: the value the file holds
     bool invert = false; // 1 - value
     bool operator==(const ExportChannel&) const = default;
 };

@@ -18,60 +18,6 @@ namespace facet {
 
 namespace {
 
-// The map a source reads, or none (a constant).
-std::optional<MapSlot> slotOf(ExportSource source)
-{
-    switch (source) {
-    case ExportSource::Constant:
-        return std::nullopt;
-    case ExportSource::Clearcoat:
-        return MapSlot::Clearcoat;
-    case ExportSource::ClearcoatRoughness:
-        return MapSlot::ClearcoatRoughness;
-    case ExportSource::ClearcoatNormalX:
-    case ExportSource::ClearcoatNormalY:
-    case ExportSource::ClearcoatNormalZ:
-        return MapSlot::ClearcoatNormal;
-    case ExportSource::SheenColorR:
-    case ExportSource::SheenColorG:
-    case ExportSource::SheenColorB:
-        return MapSlot::SheenColor;
-    case ExportSource::SheenRoughness:
-        return MapSlot::SheenRoughness;
-    case ExportSource::Specular:
-        return MapSlot::Specular;
-    case ExportSource::SpecularColorR:
-    case ExportSource::SpecularColorG:
-    case ExportSource::SpecularColorB:
-        return MapSlot::SpecularColor;
-    case ExportSource::Anisotropy:
-    case ExportSource::AnisotropyDirectionX:
-    case ExportSource::AnisotropyDirectionY:
-        return MapSlot::Anisotropy;
-    case ExportSource::Iridescence:
-        return MapSlot::Iridescence;
-    case ExportSource::IridescenceThickness:
-        return MapSlot::IridescenceThickness;
-    case ExportSource::NormalX:
-    case ExportSource::NormalY:
-    case ExportSource::NormalZ:
-        return MapSlot::Normal;
-    case ExportSource::Metallic:
-        return MapSlot::Metallic;
-    case ExportSource::Roughness:
-        return MapSlot::Roughness;
-    case ExportSource::Occlusion:
-        return MapSlot::Occlusion;
-    case ExportSource::EmissiveR:
-    case ExportSource::EmissiveG:
-    case ExportSource::EmissiveB:
-        return MapSlot::Emissive;
-    default:
-        break;
-    }
-    return MapSlot::BaseColor;
-}
-
 const MapImage* imageOf(const Material& material, const MaterialMapImages& images, MapSlot slot)
 {
     const MapImage* image = images[std::size_t(slot)];
@@ -111,37 +57,42 @@ const char* channelLetter(int index, int count)
 
 ExportTexel exportTexel(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv)
 {
+    using P = MaterialProperty;
     // materialInputs is the shader's CPU twin: the same factors, picks and decoding.
     const MaterialInfo inputs = materialInputs(material, images, uv);
     ExportTexel texel;
-    texel.baseColor = glm::dvec4(inputs.baseColor, inputs.alpha);
-    texel.metallic = inputs.metallic;
-    texel.roughness = inputs.perceptualRoughness;
-    texel.occlusion = inputs.occlusion;
-    texel.clearcoat = inputs.clearcoat;
-    texel.clearcoatRoughness = inputs.clearcoatRoughness;
-    texel.sheenColor = inputs.sheenColor;
-    texel.sheenRoughness = inputs.sheenRoughness;
-    texel.specular = inputs.specular;
-    texel.specularColor = inputs.specularColor;
-    texel.anisotropy = inputs.anisotropy;
-    texel.anisotropyDirection = inputs.anisotropyTangentDirection;
-    texel.iridescence = inputs.iridescence;
+    texel[P::BaseColor] = glm::dvec4(inputs.baseColor, 1.0);
+    texel[P::Alpha] = glm::dvec4(inputs.alpha);
+    texel[P::Metallic] = glm::dvec4(inputs.metallic);
+    texel[P::Roughness] = glm::dvec4(inputs.perceptualRoughness);
+    texel[P::Occlusion] = glm::dvec4(inputs.occlusion);
+    texel[P::Clearcoat] = glm::dvec4(inputs.clearcoat);
+    texel[P::ClearcoatRoughness] = glm::dvec4(inputs.clearcoatRoughness);
+    texel[P::SheenColor] = glm::dvec4(inputs.sheenColor, 1.0);
+    texel[P::SheenRoughness] = glm::dvec4(inputs.sheenRoughness);
+    texel[P::Specular] = glm::dvec4(inputs.specular);
+    texel[P::SpecularColor] = glm::dvec4(inputs.specularColor, 1.0);
+    texel[P::Anisotropy] = glm::dvec4(inputs.anisotropy);
+    texel[P::AnisotropyRotation] = glm::dvec4(inputs.anisotropyTangentDirection, 0.0, 0.0);
+    texel[P::Iridescence] = glm::dvec4(inputs.iridescence);
     // The thickness texture's value back from the thickness it made (mix(minimum, maximum, g)).
     const double thicknessSpan = material.iridescenceThicknessMaximum() - material.iridescenceThicknessMinimum;
-    if (material.hasIridescence() && thicknessSpan != 0.0)
-        texel.iridescenceThickness = std::clamp(
-            (inputs.iridescenceThickness - material.iridescenceThicknessMinimum) / thicknessSpan, 0.0, 1.0);
+    texel[P::IridescenceThickness] = glm::dvec4(material.hasIridescence() && thicknessSpan != 0.0
+            ? std::clamp((inputs.iridescenceThickness - material.iridescenceThicknessMinimum) / thicknessSpan,
+                0.0, 1.0)
+            : 1.0);
     // The emissive strength stays a parameter of the material, not a texel value.
+    glm::dvec3 emissive;
     if (material.emissiveStrength > 0.0) {
-        texel.emissive = inputs.emissive / material.emissiveStrength;
+        emissive = inputs.emissive / material.emissiveStrength;
     } else {
-        texel.emissive = glm::dvec3(material.map(MapSlot::Emissive).factor);
+        emissive = glm::dvec3(material.map(MapSlot::Emissive).factor);
         const MaterialMap& emissiveMap = material.map(MapSlot::Emissive);
         if (const MapImage* image = imageOf(material, images, MapSlot::Emissive))
-            texel.emissive *= glm::dvec3(sampleMap(emissiveMap, *image, TexCoords {uv, uv}));
-        texel.emissive = glm::max(texel.emissive, glm::dvec3(0.0));
+            emissive *= glm::dvec3(sampleMap(emissiveMap, *image, TexCoords {uv, uv}));
+        emissive = glm::max(emissive, glm::dvec3(0.0));
     }
+    texel[P::Emissive] = glm::dvec4(emissive, 1.0);
     const auto normalOf = [&](MapSlot slot) {
         const MaterialMap& map = material.map(slot);
         const MapImage* image = material.usesSlot(slot) ? imageOf(material, images, slot) : nullptr;
@@ -149,94 +100,19 @@ ExportTexel exportTexel(const Material& material, const MaterialMapImages& image
             ? tangentSpaceNormal(sampleMap(map, *image, TexCoords {uv, uv}), map.factor.x, map.flipGreen)
             : glm::dvec3(0.0, 0.0, 1.0);
     };
-    texel.normal = normalOf(MapSlot::Normal);
-    texel.clearcoatNormal = normalOf(MapSlot::ClearcoatNormal);
+    texel[P::Normal] = glm::dvec4(normalOf(MapSlot::Normal), 0.0);
+    texel[P::ClearcoatNormal] = glm::dvec4(normalOf(MapSlot::ClearcoatNormal), 0.0);
     return texel;
 }
 
 double channelValue(const ExportChannel& channel, const ExportTexel& texel)
 {
     double value = channel.constant;
-    switch (channel.source) {
-    case ExportSource::Constant:
-        break;
-    case ExportSource::BaseColorR:
-        value = texel.baseColor.r;
-        break;
-    case ExportSource::BaseColorG:
-        value = texel.baseColor.g;
-        break;
-    case ExportSource::BaseColorB:
-        value = texel.baseColor.b;
-        break;
-    case ExportSource::BaseColorA:
-        value = texel.baseColor.a;
-        break;
-    case ExportSource::NormalX:
-    case ExportSource::NormalY:
-    case ExportSource::NormalZ:
-        // Stored as n * 0.5 + 0.5; the sources are in x, y, z order.
-        value = texel.normal[int(channel.source) - int(ExportSource::NormalX)] * 0.5 + 0.5;
-        break;
-    case ExportSource::Metallic:
-        value = texel.metallic;
-        break;
-    case ExportSource::Roughness:
-        value = texel.roughness;
-        break;
-    case ExportSource::Occlusion:
-        value = texel.occlusion;
-        break;
-    case ExportSource::EmissiveR:
-        value = texel.emissive.r;
-        break;
-    case ExportSource::EmissiveG:
-        value = texel.emissive.g;
-        break;
-    case ExportSource::EmissiveB:
-        value = texel.emissive.b;
-        break;
-    case ExportSource::Clearcoat:
-        value = texel.clearcoat;
-        break;
-    case ExportSource::ClearcoatRoughness:
-        value = texel.clearcoatRoughness;
-        break;
-    case ExportSource::ClearcoatNormalX:
-    case ExportSource::ClearcoatNormalY:
-    case ExportSource::ClearcoatNormalZ:
-        value = texel.clearcoatNormal[int(channel.source) - int(ExportSource::ClearcoatNormalX)] * 0.5 + 0.5;
-        break;
-    case ExportSource::SheenColorR:
-    case ExportSource::SheenColorG:
-    case ExportSource::SheenColorB:
-        value = texel.sheenColor[int(channel.source) - int(ExportSource::SheenColorR)];
-        break;
-    case ExportSource::SheenRoughness:
-        value = texel.sheenRoughness;
-        break;
-    case ExportSource::Specular:
-        value = texel.specular;
-        break;
-    case ExportSource::SpecularColorR:
-    case ExportSource::SpecularColorG:
-    case ExportSource::SpecularColorB:
-        value = texel.specularColor[int(channel.source) - int(ExportSource::SpecularColorR)];
-        break;
-    case ExportSource::Anisotropy:
-        value = texel.anisotropy;
-        break;
-    case ExportSource::AnisotropyDirectionX:
-    case ExportSource::AnisotropyDirectionY:
-        value = texel.anisotropyDirection[int(channel.source) - int(ExportSource::AnisotropyDirectionX)] * 0.5
-            + 0.5;
-        break;
-    case ExportSource::Iridescence:
-        value = texel.iridescence;
-        break;
-    case ExportSource::IridescenceThickness:
-        value = texel.iridescenceThickness;
-        break;
+    if (channel.source) {
+        value = texel[channel.source->property][channel.source->component];
+        // A unit vector's components (the export field's "xyz", "xy") are stored as v * 0.5 + 0.5.
+        if (std::string_view(infoOf(channel.source->property).exportField.components).starts_with('x'))
+            value = value * 0.5 + 0.5;
     }
     return channel.invert ? 1.0 - value : value;
 }
@@ -270,7 +146,13 @@ bool slotHasContent(const Material& material, MapSlot slot)
     return material.map(slot).hasTexture();
 }
 
-bool usesSource(const Material& material, ExportSource source)
+std::optional<MapSlot> slotOf(const ExportSource& source)
+{
+    const MaterialPropertyInfo& info = infoOf(source.property);
+    return info.exportField.slot ? info.exportField.slot : info.slot;
+}
+
+bool usesSource(const Material& material, const ExportSource& source)
 {
     const std::optional<MapSlot> slot = slotOf(source);
     return slot && slotHasContent(material, *slot);
@@ -309,7 +191,7 @@ std::optional<TextureSetPlan> planTextureSet(const ExportTemplate& exportTemplat
         if (output.optional) {
             bool used = false;
             for (const ExportChannel& channel : output.channels)
-                used = used || usesSource(material, channel.source);
+                used = used || (channel.source && usesSource(material, *channel.source));
             if (!used) {
                 plan.skipped.push_back(output.map);
                 continue;
@@ -351,9 +233,8 @@ std::string describe(const PlannedTexture& texture)
         + " " + (output.colorSpace == ColorEncoding::SRGB ? "sRGB" : "linear") + ":";
     for (int i = 0; i < count; ++i) {
         const ExportChannel& channel = output.channels[std::size_t(i)];
-        std::string source = channel.source == ExportSource::Constant
-            ? "constant " + std::to_string(channel.constant).substr(0, 5)
-            : std::string(toString(channel.source));
+        std::string source = channel.source ? toString(*channel.source)
+                                            : "constant " + std::to_string(channel.constant).substr(0, 5);
         if (channel.invert)
             source = "1 - " + source;
         text += std::string(i == 0 ? " " : ", ") + channelLetter(i, count) + " " + source;
@@ -372,7 +253,7 @@ std::vector<float> renderTexture(const PlannedTexture& texture, const TextureSet
     // the texels are evaluated from (an ORM file reads no base colour, normal or emissive).
     std::array<bool, kMapSlotCount> read {};
     for (const ExportChannel& channel : channels)
-        if (const std::optional<MapSlot> slot = slotOf(channel.source))
+        if (const std::optional<MapSlot> slot = channel.source ? slotOf(*channel.source) : std::nullopt)
             read[std::size_t(*slot)] = true;
     Material needed = material;
     for (const MapSlot slot : kAllMapSlots)
@@ -417,7 +298,7 @@ void encodeTexture(const PlannedTexture& texture, std::vector<float>& values)
         return;
     const int count = int(output.channels.size());
     for (int c = 0; c < count; ++c) {
-        if (isAlphaChannel(c, count) || output.channels[std::size_t(c)].source == ExportSource::Constant)
+        if (isAlphaChannel(c, count) || !output.channels[std::size_t(c)].source)
             continue;
         for (std::size_t i = std::size_t(c); i < values.size(); i += std::size_t(count))
             values[i] = float(tonemap::linearToSrgb(std::clamp(double(values[i]), 0.0, 1.0)));
@@ -436,7 +317,7 @@ ImageFileSpec textureFileSpec(const PlannedTexture& texture)
     // Alpha only where the last channel is the base colour's coverage; a packed mask's fourth
     // channel (Unity's smoothness) is data.
     spec.alpha = (spec.channels == 2 || spec.channels == 4)
-        && texture.output.channels.back().source == ExportSource::BaseColorA;
+        && texture.output.channels.back().source == ExportSource {MaterialProperty::Alpha, 0};
     return spec;
 }
 

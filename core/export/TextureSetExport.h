@@ -12,6 +12,7 @@
 // sampled bilinearly at the set's texel centres (as the GPU magnifies it); a map of the set's
 // size with no UV transform is copied texel for texel.
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -50,29 +51,19 @@ struct TextureSetPlan {
     std::vector<std::string> skipped; // optional outputs the material does not need ({map} values)
 };
 
-// What a template's sources read at one texel of the material.
+// What a template's sources read at one texel of the material: per registry row with an export
+// field, its components (a colour's linear RGB, a normal's unit x, y, z: tangent space, OpenGL
+// convention; the anisotropy's direction in the tangent plane, rotation applied; the emissive
+// colour without its strength; the film's thickness as (d - minimum) / (maximum - minimum), 1 where
+// they are equal). Rows without one stay zero.
 struct ExportTexel {
-    glm::dvec4 baseColor {1.0}; // linear RGB and coverage
-    glm::dvec3 normal {0.0, 0.0, 1.0}; // tangent space, unit, OpenGL convention
-    double metallic = 0.0;
-    double roughness = 0.5; // perceptual
-    double occlusion = 1.0; // strength applied
-    glm::dvec3 emissive {0.0}; // factor x texture (without the strength)
-    double clearcoat = 0.0;
-    double clearcoatRoughness = 0.0; // perceptual
-    glm::dvec3 clearcoatNormal {0.0, 0.0, 1.0}; // as `normal`, from the coat's normal map
-    glm::dvec3 sheenColor {0.0}; // linear
-    double sheenRoughness = 0.0; // perceptual
-    double specular = 1.0; // KHR_materials_specular's strength
-    glm::dvec3 specularColor {1.0}; // linear, may exceed 1
-    double anisotropy = 0.0; // KHR_materials_anisotropy's strength
-    glm::dvec2 anisotropyDirection {1.0, 0.0}; // tangent plane, unit, rotation applied
-    double iridescence = 0.0; // KHR_materials_iridescence's strength
-    double iridescenceThickness = 1.0; // (d - minimum) / (maximum - minimum); 1 where they are equal
+    std::array<glm::dvec4, kMaterialPropertyCount> values {};
+    glm::dvec4& operator[](MaterialProperty property) { return values[std::size_t(property)]; }
+    const glm::dvec4& operator[](MaterialProperty property) const { return values[std::size_t(property)]; }
 };
 ExportTexel exportTexel(const Material& material, const MaterialMapImages& images, const glm::dvec2& uv);
-// A source's value in a texel ([0, 1] for every source but emissive: the normal is stored as
-// n * 0.5 + 0.5). Constant: channel.constant; then inverted when channel.invert.
+// A source's value in a texel ([0, 1] for every source but emissive: a unit vector is stored as
+// v * 0.5 + 0.5). Without a source: channel.constant; then inverted when channel.invert.
 double channelValue(const ExportChannel& channel, const ExportTexel& texel);
 
 // Whether the material uses `slot` beyond a neutral constant (ExportOutput::optional): a
@@ -80,8 +71,10 @@ double channelValue(const ExportChannel& channel, const ExportTexel& texel);
 // always; the coat's strength and roughness while the coat is on (Material::usesSlot), its normal
 // map when it has a texture.
 bool slotHasContent(const Material& material, MapSlot slot);
-// The same for a template's source: its map's slotHasContent. Constant: false.
-bool usesSource(const Material& material, ExportSource source);
+// The map a source reads: its export field's slot, else its row's.
+std::optional<MapSlot> slotOf(const ExportSource& source);
+// The same for a template's source: its map's slotHasContent.
+bool usesSource(const Material& material, const ExportSource& source);
 
 // The files `exportTemplate` writes for `material` (file names expanded, sizes from the maps'):
 // nullopt with *error for a bit depth the format cannot hold ("unreal's BC is png, which holds 8

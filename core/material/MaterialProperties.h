@@ -1,6 +1,6 @@
 #pragma once
 // The material property registry: one row per number or colour an artist sets on a material, with
-// what every part of Facet needs to know of it, so that each fact is written once. Today its
+// what every part of Facet needs to know of it, so that each fact is written once. Its
 // readers are glTF import and export (each extension's numbers and colours, GltfField), the
 // project file (core/material/MaterialJson: the numbers of no map, a key each, the row's field),
 // Material::validate (the ranges and the fields its messages name), the wedge
@@ -8,11 +8,11 @@
 // setter from here), the command line's material flags (`facet render` and `facet sheet`:
 // --base-color, --metallic, --roughness, --clearcoat, --clearcoat-roughness, --sheen-color,
 // --sheen-roughness, --specular, --specular-color, --anisotropy, --anisotropy-rotation, --iridescence,
-// --iridescence-ior, --iridescence-thickness, --iridescence-thickness-minimum; app/MaterialFlags)
-// and the docks' sliders (ui/widgets/ValueSlider forProperty: the Material dock's, and the
-// Texture Maps dock's factor of each map, factorPropertyOf). A property's default is the
-// default Material's value, read through the row (no second copy). docs/architecture.md, "The material
-// property registry", says how a new property joins.
+// --iridescence-ior, --iridescence-thickness, --iridescence-thickness-minimum; app/MaterialFlags),
+// the export templates' channel sources (ExportField) and the docks' sliders (ui/widgets/ValueSlider
+// forProperty: the Material dock's, and the Texture Maps dock's factor of each map, factorPropertyOf). A
+// property's default is the default Material's value, read through the row (no second copy).
+// docs/architecture.md, "The material property registry", says how a new property joins.
 
 #include <optional>
 #include <span>
@@ -71,6 +71,19 @@ struct GltfField {
     bool periodic = false;
 };
 
+// Where an export template's channels read a property (core/export/ExportTemplate's sources): the
+// value the material shades with at a texel, factor and texture combined
+// (core/export/TextureSetExport exportTexel).
+struct ExportField {
+    const char* source = nullptr; // "roughness", "baseColor"; null: no channel reads it
+    // Its components' letters, each a source of its own ("baseColor.g"): "" one value, "rgb" a
+    // colour's, "a" the base colour's coverage; "xyz", "xy" a unit vector's, stored v * 0.5 + 0.5.
+    const char* components = "";
+    // The map whose texture the source reads when it is not the row's slot (the anisotropy's
+    // direction: the anisotropy texture's RG turned by the rotation).
+    std::optional<MapSlot> slot = std::nullopt;
+};
+
 struct MaterialPropertyInfo {
     MaterialProperty property;
     // Its short name: the wedge axis's ("roughness", "emissiveStrength", "alpha") and the one
@@ -91,6 +104,7 @@ struct MaterialPropertyInfo {
     // r,g,b), or null for none; it sets every material of the project.
     const char* flag;
     GltfField gltf;
+    ExportField exportField;
     // Where a slider of it ends when that is below `maximum` (the IOR's 3: every common material
     // lies below, and the spin box beside it still takes up to 5); 0: at `maximum`.
     double sliderMaximum = 0.0;
