@@ -524,6 +524,15 @@ int runGpu(const RenderRequest& request)
             exitCode = RenderCommand::kExitFailure;
         }
         const auto written = Clock::now();
+        if (const std::vector<MapSlot>& leftOut = renderer.lastFrameMapsLeftOut(); !leftOut.empty()) {
+            std::string names;
+            for (const MapSlot slot : leftOut)
+                names += (names.empty() ? "" : ", ") + std::string(toString(slot));
+            std::fprintf(stderr,
+                "facet render: warning: the GPU's texture units (%d for maps) hold too few of the "
+                "material's textures: %s shaded by %s factor alone (docs/limits.md)\n",
+                renderer.mapUnits(), names.c_str(), leftOut.size() == 1 ? "its" : "their");
+        }
         if (request.printStats) {
             const RenderStats& frame = renderer.lastFrameStats();
             const GLInfo& gl = context->info();

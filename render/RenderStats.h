@@ -13,6 +13,9 @@ struct RenderStats {
     int texturesUploaded = 0; // material maps (TextureCache misses)
     int meshesUploaded = 0;   // GpuMesh (re)uploads
     int drawCalls = 0;
+    // Textured slots shaded with their factors alone: the material needed more texture units
+    // than the driver has (Renderer::variantKeyFor).
+    int mapsLeftOut = 0;
     std::uint64_t frameCount = 0; // render() calls (accumulated stats only)
     // Milliseconds per step, measured with glFinish() around the step when
     // Renderer::setTimingEnabled(true) (it stalls the pipeline, so it is off by default); 0 else.
@@ -28,6 +31,7 @@ struct RenderStats {
         texturesUploaded += frame.texturesUploaded;
         meshesUploaded += frame.meshesUploaded;
         drawCalls += frame.drawCalls;
+        mapsLeftOut += frame.mapsLeftOut;
         uploadMs += frame.uploadMs;
         backgroundMs += frame.backgroundMs;
         surfaceMs += frame.surfaceMs;

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <vector>
 
@@ -91,7 +92,8 @@ Renderer::~Renderer()
         glDeleteVertexArrays(1, &m_emptyVao);
 }
 
-SurfaceVariantKey Renderer::variantKeyFor(const RenderScene& scene, int materialIndex)
+SurfaceVariantKey Renderer::variantKeyFor(
+    const RenderScene& scene, int materialIndex, int mapUnits, std::vector<MapSlot>* mapsLeftOut)
 {
     const RenderMaterial& material = scene.materials[std::size_t(materialIndex)];
     bool hasImage[kMapSlotCount] = {};
@@ -101,23 +103,68 @@ SurfaceVariantKey Renderer::variantKeyFor(const RenderScene& scene, int material
         hasImage[i] = image && !image->isEmpty();
         textures[std::size_t(i)] = hasImage[i] ? image.get() : nullptr;
     }
-    SurfaceVariantKey key;
-    key.features
-        = surfaceFeaturesFor(material.material, hasImage, enabledLightCount(scene) > 0, scene.environment.useSH);
-    key.features |= sharedTexelFeatures(material.material, key.features, textures);
-    if (scene.sampling.method == IblMethod::Reference)
-        key.features = key.features | SurfaceFeature::IblReference;
-    else if (scene.sampling.method == IblMethod::Fis)
-        key.features = key.features | SurfaceFeature::IblFis;
-    if (scene.analyticSphere)
-        key.features = key.features | SurfaceFeature::AnalyticSphereNormal;
-    key.features |= texCoordFeatures(material.material, key.features, scene.mesh && scene.mesh->hasTexCoord1);
-    if (scene.mesh && scene.mesh->hasVertexColors)
-        key.features = key.features | SurfaceFeature::HasVertexColors;
-    if (splitSumSharpLobes(scene, material))
-        key.features = key.features | SurfaceFeature::SplitSumSharpLobes;
-    key.debugView = scene.view.debugView;
+    const auto keyFor = [&] {
+        SurfaceVariantKey key;
+        key.features = surfaceFeaturesFor(
+            material.material, hasImage, enabledLightCount(scene) > 0, scene.environment.useSH);
+        key.features |= sharedTexelFeatures(material.material, key.features, textures);
+        if (scene.sampling.method == IblMethod::Reference)
+            key.features = key.features | SurfaceFeature::IblReference;
+        else if (scene.sampling.method == IblMethod::Fis)
+            key.features = key.features | SurfaceFeature::IblFis;
+        if (scene.analyticSphere)
+            key.features = key.features | SurfaceFeature::AnalyticSphereNormal;
+        key.features
+            |= texCoordFeatures(material.material, key.features, scene.mesh && scene.mesh->hasTexCoord1);
+        if (scene.mesh && scene.mesh->hasVertexColors)
+            key.features = key.features | SurfaceFeature::HasVertexColors;
+        if (splitSumSharpLobes(scene, material))
+            key.features = key.features | SurfaceFeature::SplitSumSharpLobes;
+        key.debugView = scene.view.debugView;
+        return key;
+    };
+    // The units a variant binds beyond the lighting's (setMaterialUniforms): one per texture it
+    // samples, and the sheen's table.
+    const auto unitsOf = [](SurfaceFeatures features) {
+        int units = hasFeature(features, SurfaceFeature::Sheen) ? 1 : 0;
+        for (const MapSlot slot : kAllMapSlots)
+            units += samplesOwnTexture(features, slot) ? 1 : 0;
+        return units;
+    };
+    // The order maps are left out in when they do not fit: what the material's look depends on
+    // least first.
+    static constexpr std::array<MapSlot, kMapSlotCount> kLeastNeededFirst
+        = {MapSlot::IridescenceThickness, MapSlot::SheenRoughness, MapSlot::ClearcoatNormal,
+            MapSlot::Iridescence, MapSlot::Anisotropy, MapSlot::SpecularColor, MapSlot::Specular,
+            MapSlot::ClearcoatRoughness, MapSlot::SheenColor, MapSlot::Clearcoat, MapSlot::Emissive,
+            MapSlot::Occlusion, MapSlot::Metallic, MapSlot::Roughness, MapSlot::Normal, MapSlot::BaseColor};
+    SurfaceVariantKey key = keyFor();
+    if (mapsLeftOut)
+        mapsLeftOut->clear();
+    for (const MapSlot slot : kLeastNeededFirst) {
+        if (unitsOf(key.features) <= mapUnits)
+            break;
+        const std::size_t index = std::size_t(slot);
+        if (!samplesOwnTexture(key.features, slot))
+            continue; // binds no unit of its own
+        // A texture another slot still reads frees no unit by leaving this slot.
+        bool shared = false;
+        for (std::size_t other = 0; other < std::size_t(kMapSlotCount); ++other)
+            shared = shared || (other != index && hasImage[other] && textures[other] == textures[index]);
+        if (shared)
+            continue;
+        hasImage[index] = false;
+        textures[index] = nullptr;
+        if (mapsLeftOut)
+            mapsLeftOut->push_back(slot);
+        key = keyFor();
+    }
     return key;
+}
+
+int Renderer::mapUnits() const
+{
+    return m_mapUnitLimit > 0 ? std::min(m_mapUnits, std::max(m_mapUnitLimit - kMapUnit0, 0)) : m_mapUnits;
 }
 
 bool Renderer::ensureFixedPrograms(std::string* error)
@@ -188,6 +235,7 @@ bool Renderer::ensureMsaaTarget(int width, int height, int samples, bool fullFlo
 bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::string* error)
 {
     m_frame = {};
+    m_mapsLeftOut.clear();
     // The split-sum table must be the one integrated with each drawn material's own V (another
     // V's is 3.5-11% off, docs/ibl.md): a scene without it is refused, never drawn with a stand-in.
     for (const Visibility visibility : dfgVisibilitiesFor(scene))
@@ -216,6 +264,19 @@ bool Renderer::render(const RenderScene& scene, Framebuffer& hdrTarget, std::str
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     if (!ensureFixedPrograms(error))
         return false;
+    if (m_mapUnits == 0) {
+        GLint units = 16; // GL 4.1's least
+        glGetIntegerv(GL_MAX_TEXTURE_IMAGE_UNITS, &units);
+        int usable = std::max(int(units), 16);
+        // FACET_TEXTURE_UNITS=N (16 up to the driver's): what a GPU with fewer units would show.
+        if (const char* text = std::getenv("FACET_TEXTURE_UNITS"); text && *text) {
+            char* end = nullptr;
+            const long value = std::strtol(text, &end, 10);
+            if (*end == '\0' && value >= 16)
+                usable = std::min(usable, int(value));
+        }
+        m_mapUnits = usable - kMapUnit0;
+    }
 
     GLint maxSamples = 1;
     glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
@@ -512,8 +573,17 @@ bool Renderer::drawSurface(const RenderScene& scene, const glm::dmat4& view, con
             continue;
         const int material = scene.materialOfPart(p);
         auto& key = keys[std::size_t(material)];
-        if (!key)
-            key = variantKeyFor(scene, material);
+        if (!key) {
+            std::vector<MapSlot> leftOut;
+            key = variantKeyFor(scene, material, mapUnits(), &leftOut);
+            if (pass == SurfacePass::Opaque) {
+                m_frame.mapsLeftOut += int(leftOut.size());
+                for (const MapSlot slot : leftOut)
+                    if (std::find(m_mapsLeftOut.begin(), m_mapsLeftOut.end(), slot) == m_mapsLeftOut.end())
+                        m_mapsLeftOut.push_back(slot);
+                std::sort(m_mapsLeftOut.begin(), m_mapsLeftOut.end());
+            }
+        }
         const bool blended = hasFeature(key->features, SurfaceFeature::AlphaBlend) && key->debugView != DebugView::Alpha
             && key->debugView != DebugView::NonFinite;
         if (blended != (pass == SurfacePass::Blended))

@@ -57,8 +57,22 @@ public:
     bool toneMapTo(const Framebuffer& hdr, unsigned framebuffer, const ViewSettings& view, std::string* error,
         bool straightAlpha = false);
 
-    // The variant key render() uses for material `materialIndex` of `scene`.
-    static SurfaceVariantKey variantKeyFor(const RenderScene& scene, int materialIndex = 0);
+    // Every map slot and the sheen's table: a variant never binds more textures than this.
+    static constexpr int kAllMapUnits = kMapSlotCount + 1;
+    // The variant key render() uses for material `materialIndex` of `scene`. A material whose
+    // distinct textures (and the sheen's table) need more than `mapUnits` texture units leaves
+    // out its least needed maps until they fit (the iridescence thickness first, then the
+    // sheen's roughness, the coat's normal, ..., the base colour last; a texture another slot
+    // of the material still reads is never the one left out): their factors shade alone, and
+    // *mapsLeftOut (when given) lists them.
+    static SurfaceVariantKey variantKeyFor(const RenderScene& scene, int materialIndex = 0,
+        int mapUnits = kAllMapUnits, std::vector<MapSlot>* mapsLeftOut = nullptr);
+    // The texture units the surface program may give maps: the driver's fragment units
+    // (GL_MAX_TEXTURE_IMAGE_UNITS, 16 at least; llvmpipe and current desktop GPUs have 32) less the
+    // lighting's (render/RendererDetail.h), read at the first frame. setMapUnitLimit lowers it
+    // (a test of a 16-unit driver on a 32-unit one); 0 goes back to the driver's.
+    int mapUnits() const;
+    void setMapUnitLimit(int units) { m_mapUnitLimit = units; }
 
     // The material textures (render/TextureCache.h): the viewport uploads maps through it in
     // slices between frames and sets the frame's anisotropy; render() uploads what is missing.
@@ -66,6 +80,9 @@ public:
     const std::shared_ptr<TextureCache>& sharedTextureCache() const { return m_textures; }
 
     const RenderStats& lastFrameStats() const { return m_frame; }
+    // The slots the last frame shaded with their factors alone (variantKeyFor), over its materials,
+    // in MapSlot order: as many as lastFrameStats().mapsLeftOut counts when one material has them.
+    const std::vector<MapSlot>& lastFrameMapsLeftOut() const { return m_mapsLeftOut; }
     const RenderStats& totalStats() const { return m_total; }
     // Per-step milliseconds via glFinish() (stalls; for benchmarks and tests).
     void setTimingEnabled(bool enabled) { m_timing = enabled; }
@@ -108,6 +125,9 @@ private:
     RenderStats m_frame;
     RenderStats m_total;
     bool m_timing = false;
+    int m_mapUnits = 0; // the driver's, less the lighting's; 0 until the first frame
+    int m_mapUnitLimit = 0;
+    std::vector<MapSlot> m_mapsLeftOut;
 };
 
 } // namespace facet

@@ -9,6 +9,7 @@
 
 #include <epoxy/gl.h>
 
+#include "core/image/MapImage.h"
 #include "core/image/ToneMap.h"
 #include "core/shading/Brdf.h"
 #include "core/shading/DfgTable.h"
@@ -24,6 +25,7 @@
 #include "RendererTestScene.h"
 #include "TestSupport.h"
 
+#include <QScopeGuard>
 #include <QtTest/QTest>
 
 #include <glm/geometric.hpp>
@@ -79,6 +81,8 @@ private Q_SLOTS:
     void directLightMatchesCpu();
     void extremesStayFinite();
     void skippedWorkIsCounted();
+    void mapsBeyondTheTextureUnitsAreLeftOut_data();
+    void mapsBeyondTheTextureUnitsAreLeftOut();
 };
 
 void RendererGLTest::initTestCase()
@@ -472,6 +476,119 @@ void RendererGLTest::skippedWorkIsCounted()
     QVERIFY2(renderer.toneMap(*target, *display, scene.view, &error), error.c_str());
     QCOMPARE(renderer.totalStats().programsCompiled, 2 + 1 + 1);
     QCOMPARE(renderer.totalStats().frameCount, std::uint64_t(5));
+}
+
+// A material with every lobe on and a texture in each of its 16 slots (each a grey of its own,
+// or one texture for metallic, roughness and occlusion), drawn with the driver's texture units
+// and with a 16-unit driver's (GL 4.1's least: 8 for maps after the lighting's). The slots left
+// out are listed here, not taken from the renderer; each slot's debug view shows its texture
+// when bound and its factor alone when left out, and GL reports no error.
+void RendererGLTest::mapsBeyondTheTextureUnitsAreLeftOut_data()
+{
+    QTest::addColumn<int>("unitLimit"); // 0: the driver's
+    QTest::addColumn<bool>("packed"); // metallic, roughness and occlusion from one texture
+    QTest::addColumn<QList<int>>("leftOut"); // MapSlot values
+    const auto slots = [](std::initializer_list<MapSlot> list) {
+        QList<int> out;
+        for (const MapSlot slot : list)
+            out.push_back(int(slot));
+        return out;
+    };
+    QTest::newRow("the driver's units, every map bound") << 0 << false << QList<int>();
+    QTest::newRow("16 units, 16 textures")
+        << 16 << false
+        << slots({MapSlot::IridescenceThickness, MapSlot::SheenRoughness, MapSlot::ClearcoatNormal,
+               MapSlot::Iridescence, MapSlot::Anisotropy, MapSlot::SpecularColor, MapSlot::Specular,
+               MapSlot::ClearcoatRoughness, MapSlot::SheenColor});
+    // 14 textures: the shared one takes one unit, so two fewer slots go.
+    QTest::newRow("16 units, metallic roughness occlusion packed")
+        << 16 << true
+        << slots({MapSlot::IridescenceThickness, MapSlot::SheenRoughness, MapSlot::ClearcoatNormal,
+               MapSlot::Iridescence, MapSlot::Anisotropy, MapSlot::SpecularColor, MapSlot::Specular});
+}
+
+void RendererGLTest::mapsBeyondTheTextureUnitsAreLeftOut()
+{
+    QFETCH(int, unitLimit);
+    QFETCH(bool, packed);
+    QFETCH(QList<int>, leftOut);
+    TinyIbl ibl {glm::vec3(1.0f)};
+    RenderScene scene = referenceScene(ibl);
+    Material& material = scene.materials[0].material;
+    // Every factor 1 (a factor of 0 would make its texture irrelevant, and unbound), the film
+    // 100 to 400 nm.
+    for (const MapSlot slot : kAllMapSlots)
+        material.map(slot).factor = glm::dvec4(1.0);
+    material.emissiveStrength = 1.0;
+    material.setIridescence(1.0, 1.3, 100.0, 400.0);
+    std::array<double, kMapSlotCount> grey {};
+    std::shared_ptr<const MapImage> packedImage;
+    for (const MapSlot slot : kAllMapSlots) {
+        const int i = int(slot);
+        grey[std::size_t(i)] = double(60 + 8 * i) / 255.0;
+        // Grey in every channel, alpha too: the sheen's roughness and the specular strength read A.
+        glm::vec4 texel(float(grey[std::size_t(i)]));
+        if (slot == MapSlot::Normal || slot == MapSlot::ClearcoatNormal)
+            texel = glm::vec4(128.0f / 255.0f, 128.0f / 255.0f, 1.0f, 1.0f); // flat
+        auto image = std::make_shared<const MapImage>(
+            MapImage::fromImage(Image(4, 4, texel), MapLayout::Rgba, MapSampleType::UInt8));
+        const bool shared = packed
+            && (slot == MapSlot::Metallic || slot == MapSlot::Roughness || slot == MapSlot::Occlusion);
+        if (shared) {
+            if (!packedImage)
+                packedImage = image;
+            image = packedImage;
+            grey[std::size_t(i)] = grey[std::size_t(MapSlot::Metallic)];
+        }
+        const std::string path
+            = shared ? "/textures/orm.png" : "/textures/" + std::string(toString(slot)) + ".png";
+        material.map(slot).path = path;
+        material.map(slot).colorSpace = ColorEncoding::Linear;
+        scene.materials[0].maps[std::size_t(i)] = {image, path, 1};
+    }
+    m_renderer->setMapUnitLimit(unitLimit);
+    const auto restore = qScopeGuard([this] { m_renderer->setMapUnitLimit(0); });
+    while (glGetError() != GL_NO_ERROR) { }
+    renderScene(scene);
+    if (unitLimit == 0 && m_renderer->mapUnits() < Renderer::kAllMapUnits)
+        QSKIP("this driver has fewer texture units than the material needs: the 16-unit rows test it");
+    QCOMPARE(m_renderer->lastFrameStats().mapsLeftOut, int(leftOut.size()));
+    QList<int> reported;
+    for (const MapSlot slot : m_renderer->lastFrameMapsLeftOut())
+        reported.push_back(int(slot));
+    QList<int> expectedSlots = leftOut;
+    std::sort(expectedSlots.begin(), expectedSlots.end());
+    QCOMPARE(reported, expectedSlots);
+    QCOMPARE(int(glGetError()), int(GL_NO_ERROR));
+
+    // A view per slot of one value (the factors are 1; the film's thickness is mix(100, 400, g)
+    // nm, shown / 1000, and 400 nm alone).
+    struct View {
+        const char* name;
+        MapSlot slot;
+    };
+    const View views[] = {{"base-color", MapSlot::BaseColor}, {"metallic", MapSlot::Metallic},
+        {"roughness", MapSlot::Roughness}, {"occlusion", MapSlot::Occlusion}, {"emissive", MapSlot::Emissive},
+        {"clearcoat", MapSlot::Clearcoat}, {"clearcoat-roughness", MapSlot::ClearcoatRoughness},
+        {"sheen-color", MapSlot::SheenColor}, {"sheen-roughness", MapSlot::SheenRoughness},
+        {"specular", MapSlot::Specular}, {"specular-color", MapSlot::SpecularColor},
+        {"anisotropy", MapSlot::Anisotropy}, {"iridescence", MapSlot::Iridescence},
+        {"iridescence-thickness", MapSlot::IridescenceThickness}};
+    for (const View& view : views) {
+        scene.view.debugView = debugViewFromString(view.name).value();
+        const Image image = renderScene(scene);
+        const double shown = image.at(kSize / 2, kSize / 2).x;
+        const bool out = leftOut.contains(int(view.slot));
+        double expected = out ? 1.0 : grey[std::size_t(view.slot)];
+        if (view.slot == MapSlot::IridescenceThickness)
+            expected = (out ? 400.0 : 100.0 + 300.0 * expected) / 1000.0;
+        QVERIFY2(std::abs(shown - expected) < 2e-3,
+            qPrintable(QStringLiteral("%1 (%2): shown %3, expected %4")
+                           .arg(QLatin1String(view.name), QLatin1String(out ? "left out" : "bound"))
+                           .arg(shown)
+                           .arg(expected)));
+    }
+    QCOMPARE(int(glGetError()), int(GL_NO_ERROR));
 }
 
 QTEST_GUILESS_MAIN(RendererGLTest)

@@ -68,6 +68,13 @@ QString ViewportFrameStats::summary() const
                    .arg(refinement.seconds, 0, 'f', 1)
                    .arg(state);
     }
+    // Maps the GPU's texture units could not hold (Renderer::variantKeyFor): shaded by their
+    // factors, and said here rather than shown wrong.
+    if (render.mapsLeftOut == 1)
+        text += QCoreApplication::translate("ViewportRenderer", " · 1 map not shown: too few texture units");
+    else if (render.mapsLeftOut > 1)
+        text += QCoreApplication::translate("ViewportRenderer", " · %1 maps not shown: too few texture units")
+                    .arg(render.mapsLeftOut);
     return text;
 }
 
