@@ -22,6 +22,7 @@
 #include "ui/widgets/ProblemBar.h"
 
 #include "TestSupport.h"
+#include "WindowTestSupport.h"
 
 #include <QElapsedTimer>
 #include <QImage>
@@ -40,11 +41,11 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
-#include <functional>
 #include <memory>
 #include <vector>
 
 using namespace facet;
+using facet::test::waitFor;
 
 namespace {
 
@@ -63,17 +64,8 @@ bool writeFlatPng(const QString& path, int size, int r, int g, int b)
         && output->write_image(OIIO::TypeDesc::UINT8, pixels.data()) && output->close();
 }
 
-bool waitFor(const std::function<bool()>& condition, int timeoutMs = 60000)
-{
-    QElapsedTimer clock;
-    clock.start();
-    while (!condition()) {
-        if (clock.elapsed() > timeoutMs)
-            return false;
-        QTest::qWait(10);
-    }
-    return true;
-}
+// Map loads and thumbnails on 2 cores under the sanitizers: twice the window tests' usual wait.
+constexpr int kLoadTimeoutMs = 60000;
 
 // What one frame showed at a grid of points inside the sphere (read from the widget's framebuffer
 // while it is bound, at the end of the frame).
@@ -157,7 +149,7 @@ void MapLoadingUiTest::init()
     ViewSettings view = m_document->project().view;
     view.debugView = DebugView::BaseColor;
     m_document->setView(view, QStringLiteral("View"));
-    QVERIFY(waitFor([&] { return m_scene->pendingMapLoads() == 0; }));
+    QVERIFY(waitFor([&] { return m_scene->pendingMapLoads() == 0; }, kLoadTimeoutMs));
     QSignalSpy rendered(m_viewport, &ViewportWidget::frameRendered);
     m_viewport->update();
     QVERIFY(rendered.wait(30000));
@@ -204,12 +196,12 @@ void MapLoadingUiTest::setLoadsOffTheGuiThreadAndShowsWhole()
     m_document->setMaterial(material, QStringLiteral("Base Colour"));
     QSignalSpy factorFrame(m_viewport, &ViewportWidget::frameRendered);
     QVERIFY(factorFrame.wait(30000));
-    QVERIFY(waitFor([&] { return !m_viewport->lastFrameStats().reduced; }));
+    QVERIFY(waitFor([&] { return !m_viewport->lastFrameStats().reduced; }, kLoadTimeoutMs));
     m_viewport->update();
     std::vector<FrameSample> frames;
     QMetaObject::Connection sampling
         = connect(m_viewport, &ViewportWidget::frameRendered, this, [&] { frames.push_back(sampleFrame()); });
-    QVERIFY(waitFor([&] { return !frames.empty(); }));
+    QVERIFY(waitFor([&] { return !frames.empty(); }, kLoadTimeoutMs));
     const QRgb factor = frames.back().points[12];
     frames.clear();
 
@@ -286,8 +278,8 @@ void MapLoadingUiTest::mapBeyondTheBudgetIsRefused()
     QElapsedTimer clock;
     clock.start();
     m_document->setMaterial(material, QStringLiteral("Set Base Colour Map"));
-    QVERIFY(waitFor([&] { return m_scene->pendingMapLoads() == 0; }));
-    QVERIFY(waitFor([&] { return m_window->textureMapsDock()->pendingThumbnails() == 0; }));
+    QVERIFY(waitFor([&] { return m_scene->pendingMapLoads() == 0; }, kLoadTimeoutMs));
+    QVERIFY(waitFor([&] { return m_window->textureMapsDock()->pendingThumbnails() == 0; }, kLoadTimeoutMs));
     qInfo("refused after %lld ms", (long long)clock.elapsed());
 
     // The status bar names the file and the limit; the scene keeps the factor.
@@ -329,7 +321,7 @@ void MapLoadingUiTest::mapBeyondTheBudgetIsRefused()
     Material cleared = m_document->project().material();
     cleared.map(MapSlot::BaseColor).path.clear();
     m_document->setMaterial(cleared, QStringLiteral("Clear Base Colour Map"));
-    QVERIFY(waitFor([&] { return !problems->hasProblems(); }));
+    QVERIFY(waitFor([&] { return !problems->hasProblems(); }, kLoadTimeoutMs));
     QVERIFY(!problems->isVisibleTo(m_window.get()));
     problems->setProblem(QStringLiteral("file"), QStringLiteral("Could not save p.json: disk full"));
     QVERIFY(problems->isVisibleTo(m_window.get()));
@@ -353,10 +345,11 @@ void MapLoadingUiTest::packedFileAndThumbnailsDecodeOnce()
     }
     const std::uint64_t loadsBefore = MapImage::loadCount();
     m_document->setMaterial(material, QStringLiteral("Assign Maps"));
-    QVERIFY(waitFor([&] { return m_scene->pendingMapLoads() == 0; }));
-    QVERIFY(waitFor([&] { return m_window->textureMapsDock()->pendingThumbnails() == 0; }));
+    QVERIFY(waitFor([&] { return m_scene->pendingMapLoads() == 0; }, kLoadTimeoutMs));
+    QVERIFY(waitFor([&] { return m_window->textureMapsDock()->pendingThumbnails() == 0; }, kLoadTimeoutMs));
     QVERIFY(waitFor(
-        [&] { return !m_viewport->lastFrameStats().loadingMaps && !m_viewport->lastFrameStats().reduced; }));
+        [&] { return !m_viewport->lastFrameStats().loadingMaps && !m_viewport->lastFrameStats().reduced; },
+        kLoadTimeoutMs));
     // Three slots, three thumbnails, one texture on the GPU, one decode.
     for (const auto& use : uses)
         QVERIFY(m_scene->assets().maps[0][std::size_t(use.slot)].image.get()
@@ -384,11 +377,13 @@ void MapLoadingUiTest::theNewestEditWinsWhileMapsLoad()
             *shown = sampleFrame().points[12];
             drawn = true;
         });
-        const bool ok = waitFor([&] {
-            const ViewportFrameStats& stats = m_viewport->lastFrameStats();
-            return drawn && m_scene->pendingMapLoads() == 0 && !stats.loadingMaps && !stats.reduced
-                && stats.mapsHeldBack == 0;
-        });
+        const bool ok = waitFor(
+            [&] {
+                const ViewportFrameStats& stats = m_viewport->lastFrameStats();
+                return drawn && m_scene->pendingMapLoads() == 0 && !stats.loadingMaps && !stats.reduced
+                    && stats.mapsHeldBack == 0;
+            },
+            kLoadTimeoutMs);
         disconnect(sampling);
         return ok;
     };
@@ -446,11 +441,14 @@ void MapLoadingUiTest::decodedMapsAreReleasedOnceOnTheGpu()
             *shown = sampleFrame().points[12];
             drawn = true;
         });
-        const bool ok = waitFor([&] {
-            const ViewportFrameStats& stats = m_viewport->lastFrameStats();
-            return drawn && m_scene->pendingMapLoads() == 0 && !stats.loadingMaps && stats.mapsHeldBack == 0
-                && image(MapSlot::BaseColor) && !image(MapSlot::BaseColor)->hasPixels();
-        });
+        const bool ok = waitFor(
+            [&] {
+                const ViewportFrameStats& stats = m_viewport->lastFrameStats();
+                return drawn && m_scene->pendingMapLoads() == 0 && !stats.loadingMaps
+                    && stats.mapsHeldBack == 0 && image(MapSlot::BaseColor)
+                    && !image(MapSlot::BaseColor)->hasPixels();
+            },
+            kLoadTimeoutMs);
         disconnect(sampling);
         return ok;
     };
@@ -458,7 +456,7 @@ void MapLoadingUiTest::decodedMapsAreReleasedOnceOnTheGpu()
     QVERIFY(settledShowing(&shown));
     QVERIFY2(
         qGreen(shown) > 2 * qRed(shown) && qGreen(shown) > 2 * qBlue(shown), qPrintable(describe(shown)));
-    QVERIFY(waitFor([&] { return m_window->textureMapsDock()->pendingThumbnails() == 0; }));
+    QVERIFY(waitFor([&] { return m_window->textureMapsDock()->pendingThumbnails() == 0; }, kLoadTimeoutMs));
     // Released: stand-ins of the right size, one per file, and nobody holds the pixels.
     for (MapSlot slot : {MapSlot::BaseColor, MapSlot::Roughness, MapSlot::Metallic}) {
         QVERIFY2(image(slot) && !image(slot)->hasPixels(), toString(slot));

@@ -60,27 +60,21 @@ void WedgeAxesDialog::updateOk()
 {
     const bool valid = m_rows->isValid() && m_columns->isValid();
     okButton()->setEnabled(valid);
-    // The axes as they would be, asked whether each sweeps something in some cell.
+    // The axes as they would be (each editor's, as it validated it), asked whether each sweeps
+    // something in some cell.
     QStringList warnings;
-    if (valid) {
+    if (valid && m_rows->axis()) {
         WedgeLayout wedge;
-        std::string problem;
-        const std::optional<WedgeAxis> rows = WedgeAxis::parse(m_rows->text(), &problem);
-        std::optional<WedgeAxis> columns;
-        if (!m_columns->text().empty())
-            columns = WedgeAxis::parse(m_columns->text(), &problem);
-        if (rows && (columns || m_columns->text().empty())) {
-            wedge.rows = *rows;
-            wedge.columns = columns;
-            for (const bool columnsAxis : {false, true}) {
-                const std::string reason = sweepsNothing(wedge, m_project, columnsAxis);
-                if (!reason.empty())
-                    warnings << (columnsAxis ? tr("Columns: %1 sweeps nothing: %2")
-                                             : tr("Rows: %1 sweeps nothing: %2"))
-                                    .arg(QString::fromLatin1(
-                                             toString((columnsAxis ? *columns : *rows).parameter)),
-                                        WindowMessages::fromCore(reason));
-            }
+        wedge.rows = *m_rows->axis();
+        wedge.columns = m_columns->axis();
+        for (const bool columnsAxis : {false, true}) {
+            const std::string reason = sweepsNothing(wedge, m_project, columnsAxis);
+            if (!reason.empty())
+                warnings << (columnsAxis ? tr("Columns: %1 sweeps nothing: %2")
+                                         : tr("Rows: %1 sweeps nothing: %2"))
+                                .arg(QString::fromLatin1(
+                                         toString((columnsAxis ? *wedge.columns : wedge.rows).parameter)),
+                                    WindowMessages::fromCore(reason));
         }
     }
     m_warning->setText(warnings.join(u'\n'));

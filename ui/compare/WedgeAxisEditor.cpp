@@ -212,12 +212,14 @@ std::string WedgeAxisEditor::text() const
 void WedgeAxisEditor::validate()
 {
     m_problem.clear();
+    m_axis.reset();
     QString message;
     if (parameter()) {
         const std::string axisText = text();
         std::string error;
-        if (const std::optional<WedgeAxis> axis = WedgeAxis::parse(axisText, &error)) {
-            message = axis->size() == 1 ? tr("1 value") : tr("%1 values").arg(axis->size());
+        m_axis = WedgeAxis::parse(axisText, &error);
+        if (m_axis) {
+            message = m_axis->size() == 1 ? tr("1 value") : tr("%1 values").arg(m_axis->size());
         } else {
             // parse()'s message names the function and repeats the text typed: the field shows
             // the text, the message says what is wrong with it.

@@ -36,6 +36,8 @@ public:
     // Whether text() is an axis (or "none"); problem(): why not, in the window's wording.
     bool isValid() const { return m_problem.isEmpty(); }
     const QString& problem() const { return m_problem; }
+    // The axis text() parses to, as validated; nullopt for "none" or while not valid.
+    const std::optional<WedgeAxis>& axis() const { return m_axis; }
 
     // The widgets, for tests: objectNames wedgeParameterCombo, wedgeValuesEdit, wedgeListMode,
     // wedgeRangeMode, wedgeFromSpin, wedgeToSpin, wedgeStepsSpin, wedgeAxisMessage.
@@ -71,6 +73,7 @@ private:
     QSpinBox* m_steps;
     QLabel* m_message;
     QString m_problem;
+    std::optional<WedgeAxis> m_axis;
 };
 
 } // namespace facet
