@@ -9,8 +9,8 @@ packages=(
   g++ cmake ninja-build pkg-config git
   # Qt 6 (Widgets, OpenGL widgets, Test); the xcb platform plugin for the GUI
   qt6-base-dev qt6-base-dev-tools libqt6opengl6-dev qt6-qpa-plugins libxkbcommon-dev
-  # maths, meshes, images, colour
-  libglm-dev libassimp-dev libtinygltf-dev nlohmann-json3-dev libdraco-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev libopencolorio-dev opencolorio-tools
+  # maths, meshes, images, colour; ray tracing for the ground truth of staged scenes (Embree 3)
+  libembree-dev libglm-dev libassimp-dev libtinygltf-dev nlohmann-json3-dev libdraco-dev libopenimageio-dev openimageio-tools libopenexr-dev libpng-dev libopencolorio-dev opencolorio-tools
   # OpenGL: loader, Mesa's software rasteriser, EGL for headless rendering
   libepoxy-dev libgl1-mesa-dri libegl-mesa0 libegl-dev mesa-utils
   # headless GUI tests

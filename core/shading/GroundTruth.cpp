@@ -14,6 +14,8 @@
 #include "core/project/ProjectAssets.h"
 #include "core/shading/Anisotropy.h"
 #include "core/shading/Brdf.h"
+#include "core/shading/BrdfSampler.h"
+#include "core/shading/LightIrradiance.h"
 #include "core/shading/MaterialInputs.h"
 #include "core/shading/Punctual.h"
 #include "core/shading/ReferenceView.h"
@@ -24,80 +26,9 @@ namespace facet {
 
 namespace {
 
-double luminance(const glm::dvec3& c)
-{
-    return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
-}
-
-double powerHeuristic(double pdfA, double pdfB)
-{
-    const double a = pdfA * pdfA;
-    const double b = pdfB * pdfB;
-    return a + b > 0.0 ? a / (a + b) : 0.0;
-}
-
 bool isUsable(const glm::dvec3& c)
 {
     return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
-}
-
-// How the BRDF strategy picks its lobe: the coat with probability `coat`, the specular lobe with
-// `specular`, the diffuse one otherwise, from the lobes' approximate albedos at this n.v. Any
-// probabilities that give each lobe a share keep the estimator unbiased (the environment
-// strategy covers the rest); good ones lower variance.
-struct LobeSelection {
-    double coat = 0.0;
-    double specular = 0.0;
-};
-
-LobeSelection lobeSelection(const MaterialInfo& m, double NoV, GroundTruthSettings::Lobes lobes)
-{
-    if (lobes == GroundTruthSettings::Lobes::LambertOnly)
-        return {};
-    const double metallic = std::clamp(m.metallic, 0.0, 1.0);
-    const DielectricReflectance layer = dielectricReflectance(m);
-    const glm::dvec3 f0 = glm::mix(layer.f0, m.baseColor, metallic);
-    const double specular = luminance(shading::F_Schlick(f0, glm::mix(layer.f90, 1.0, metallic), NoV));
-    // The cosine strategy also serves the sheen, a broad lobe (KHR_materials_sheen), which a
-    // metal would otherwise leave to the environment strategy alone.
-    const double sheen = m.hasSheen() ? luminance(glm::max(m.sheenColor, glm::dvec3(0.0))) : 0.0;
-    const double diffuse = luminance(m.baseColor) * (1.0 - metallic) * (1.0 - specular) + sheen;
-    LobeSelection p;
-    p.specular = diffuse <= 0.0 ? 1.0 : std::clamp(specular / (specular + diffuse), 0.1, 0.9);
-    if (m.clearcoat > 0.0) {
-        const double coat = clearcoatWeight(m, NoV);
-        const double base = (1.0 - coat) * (specular + std::max(diffuse, 0.0));
-        p.coat = std::clamp(coat / std::max(coat + base, 1e-12), 0.1, 0.9);
-        p.specular *= 1.0 - p.coat;
-    }
-    return p;
-}
-
-// Radiance a punctual light delivers to the surface point `position`, and the unit direction
-// towards the light (KHR_lights_punctual: directional in lux = lm/m^2, i.e. irradiance at normal
-// incidence; point and spot in candela = lm/sr, i.e. intensity / distance^2 of irradiance).
-bool punctualIrradiance(
-    const Light& light, const glm::dvec3& position, glm::dvec3* toLight, glm::dvec3* irradiance)
-{
-    if (!light.enabled)
-        return false;
-    const glm::dvec3 color = light.linearColor();
-    if (light.type == LightType::Directional) {
-        *toLight = -glm::normalize(light.direction);
-        *irradiance = color * light.intensity;
-        return true;
-    }
-    const glm::dvec3 offset = light.position - position;
-    const double distance = glm::length(offset);
-    if (distance <= 0.0)
-        return false;
-    *toLight = offset / distance;
-    double attenuation = shading::getRangeAttenuation(light.range, distance);
-    if (light.type == LightType::Spot)
-        attenuation *= shading::getSpotAttenuation(*toLight, glm::normalize(light.direction),
-            std::cos(light.outerConeAngle), std::cos(light.innerConeAngle));
-    *irradiance = color * (light.intensity * attenuation);
-    return attenuation > 0.0;
 }
 
 } // namespace
@@ -129,34 +60,7 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
     const Environment& environment = scene.environment;
     const bool lambertOnly = lobes == GroundTruthSettings::Lobes::LambertOnly;
     const double NoV = std::clamp(glm::dot(n, v), 0.0, 1.0);
-    // The specular lobe's strategy (anisotropic in its frame where the material is); the coat's
-    // and the cosine strategy draw in the same frame.
-    const shading::SpecularLobeSampler specularSampler(
-        n, v, material.perceptualRoughness, material.anisotropy, material.anisotropyDirection);
-    const glm::dvec3 t = specularSampler.frame().t;
-    const glm::dvec3 b = specularSampler.frame().b;
-    const glm::dvec3 vLocal = sampling::worldToTangent(v, t, b, n);
-    const LobeSelection p = lobeSelection(material, NoV, lobes);
-    const double coatAlpha = shading::alphaFromRoughness(material.clearcoatRoughness);
-
-    auto f = [&](const glm::dvec3& l, LightingKind kind) -> glm::dvec3 {
-        if (lambertOnly)
-            return glm::dot(n, l) > 0.0 ? material.baseColor * shading::kInvPi : glm::dvec3(0.0);
-        return brdf.evaluate(material, n, v, l, kind).total();
-    };
-    // Density of the BRDF strategy (the lobe mixture) for direction l.
-    auto pdfBrdf = [&](const glm::dvec3& l) {
-        const double NoL = glm::dot(n, l);
-        if (NoL <= 0.0)
-            return 0.0;
-        double pdf = (1.0 - p.specular - p.coat) * sampling::pdfCosineHemisphere(NoL);
-        const double NoH = glm::dot(n, glm::normalize(v + l));
-        if (p.specular > 0.0)
-            pdf += p.specular * specularSampler.pdf(l);
-        if (p.coat > 0.0)
-            pdf += p.coat * sampling::pdfVNDFReflection(NoV, NoH, coatAlpha);
-        return pdf;
-    };
+    const BrdfSampler strategy(material, brdf, n, v, lambertOnly);
 
     // Randomised quasi-Monte Carlo: the N Hammersley points, shifted per pixel and strategy by a
     // random offset modulo 1 (Cranley-Patterson rotation). Unbiased like plain Monte Carlo, and
@@ -173,29 +77,13 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
     for (std::uint32_t s = 0; s < count; ++s) {
         // BRDF strategy.
         {
-            // The lobe is chosen by the first coordinate, which is then stretched back to [0, 1):
-            // each lobe keeps a stratified share of the points.
-            glm::dvec3 l;
-            glm::dvec2 u = point(s, brdfShift);
-            const double belowOne = std::nextafter(1.0, 0.0);
-            if (u.x < p.coat) {
-                u.x = std::min(u.x / p.coat, belowOne);
-                const glm::dvec3 h = sampling::importanceSampleVNDF(u, vLocal, coatAlpha);
-                l = sampling::tangentToWorld(sampling::reflectAbout(vLocal, h), t, b, n);
-            } else if (u.x < p.coat + p.specular) {
-                u.x = std::min((u.x - p.coat) / p.specular, belowOne);
-                l = specularSampler.sample(u);
-            } else {
-                const double pDiffuse = 1.0 - p.coat - p.specular;
-                u.x = std::min((u.x - p.coat - p.specular) / pDiffuse, belowOne);
-                l = sampling::tangentToWorld(sampling::sampleCosineHemisphere(u), t, b, n);
-            }
+            const glm::dvec3 l = strategy.sample(point(s, brdfShift));
             const double NoL = glm::dot(n, l);
-            const double pdf = pdfBrdf(l);
+            const double pdf = strategy.pdf(l);
             if (NoL > 0.0 && pdf > 0.0) {
                 const double weight = powerHeuristic(pdf, sampler.pdf(l));
-                const glm::dvec3 contribution
-                    = f(l, LightingKind::Environment) * environment.radiance(l) * (NoL * weight / pdf);
+                const glm::dvec3 contribution = strategy.f(l, LightingKind::Environment)
+                    * environment.radiance(l) * (NoL * weight / pdf);
                 if (isUsable(contribution))
                     sum += contribution;
             }
@@ -206,9 +94,9 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
             const glm::dvec3 l = sampler.sample(point(s, environmentShift), &pdf);
             const double NoL = glm::dot(n, l);
             if (NoL > 0.0 && pdf > 0.0) {
-                const double weight = powerHeuristic(pdf, pdfBrdf(l));
-                const glm::dvec3 contribution
-                    = f(l, LightingKind::Environment) * environment.radiance(l) * (NoL * weight / pdf);
+                const double weight = powerHeuristic(pdf, strategy.pdf(l));
+                const glm::dvec3 contribution = strategy.f(l, LightingKind::Environment)
+                    * environment.radiance(l) * (NoL * weight / pdf);
                 if (isUsable(contribution))
                     sum += contribution;
             }
@@ -222,13 +110,12 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
 
     // Punctual lights: the position on the unit sphere is its normal.
     for (const Light& light : scene.lights) {
-        glm::dvec3 l;
-        glm::dvec3 irradiance;
-        if (!punctualIrradiance(light, n, &l, &irradiance))
+        LightIrradiance arriving;
+        if (!lightIrradiance(light, n, &arriving))
             continue;
-        const double NoL = glm::dot(n, l);
+        const double NoL = glm::dot(n, arriving.toLight);
         if (NoL > 0.0)
-            radiance += f(l, LightingKind::Punctual) * irradiance * NoL;
+            radiance += strategy.f(arriving.toLight, LightingKind::Punctual) * arriving.irradiance * NoL;
     }
     return radiance;
 }
