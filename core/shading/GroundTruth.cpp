@@ -60,7 +60,8 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
     const Environment& environment = scene.environment;
     const bool lambertOnly = lobes == GroundTruthSettings::Lobes::LambertOnly;
     const double NoV = std::clamp(glm::dot(n, v), 0.0, 1.0);
-    const BrdfSampler strategy(material, brdf, n, v, lambertOnly);
+    const BrdfSampler strategy(
+        material, brdf, n, v, lambertOnly ? BrdfSampler::Mode::LambertOnly : BrdfSampler::Mode::Full);
 
     // Randomised quasi-Monte Carlo: the N Hammersley points, shifted per pixel and strategy by a
     // random offset modulo 1 (Cranley-Patterson rotation). Unbiased like plain Monte Carlo, and

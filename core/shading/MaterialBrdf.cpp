@@ -11,6 +11,7 @@
 #include "core/shading/Brdf.h"
 #include "core/shading/Sampling.h"
 #include "core/shading/Sheen.h"
+#include "core/shading/Transmission.h"
 
 namespace facet {
 
@@ -110,9 +111,15 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
 {
     const double NoL = glm::dot(n, l);
     const double NoVraw = glm::dot(n, v);
-    if (NoL <= 0.0 || NoVraw < 0.0)
+    if (NoVraw < 0.0)
         return {};
     const double NoV = std::min(NoVraw, 1.0);
+    if (NoL <= 0.0) {
+        BrdfLobes lobes;
+        if (NoL < 0.0 && material.hasTransmission())
+            lobes.transmission = transmissionLobe(material, n, v, l, NoV, kind);
+        return lobes;
+    }
     const glm::dvec3 hSum = v + l;
     const double hLength = glm::length(hSum);
     // v = -l (grazing from both sides) has no half vector; the lobe is zero there anyway.
@@ -130,8 +137,11 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
     };
     const DielectricReflectance layer = dielectricReflectance(material);
 
-    // Diffuse of the dielectric base, before coupling with the specular layer.
-    const glm::dvec3 lambert = baseColor * Fd_Lambert();
+    // Diffuse of the dielectric base, before coupling with the specular layer; a transmitting
+    // material's base is that much BTDF instead (KHR_materials_transmission's
+    // mix(diffuse_brdf, specular_btdf, transmission)).
+    const glm::dvec3 lambert
+        = baseColor * (Fd_Lambert() * (1.0 - std::clamp(material.transmission, 0.0, 1.0)));
 
     // KHR_materials_iridescence: the film's Fresnel seen at v.h (docs/shading.md, "Iridescence").
     const double iridescence = std::clamp(material.iridescence, 0.0, 1.0);
@@ -214,6 +224,86 @@ BrdfLobes MaterialBrdf::evaluate(const MaterialInfo& material, const glm::dvec3&
         }
     }
     return lobes;
+}
+
+glm::dvec3 MaterialBrdf::transmissionLobe(const MaterialInfo& material, const glm::dvec3& n,
+    const glm::dvec3& v, const glm::dvec3& l, double NoV, LightingKind kind) const
+{
+    const double metallic = std::clamp(material.metallic, 0.0, 1.0);
+    const double transmission = std::clamp(material.transmission, 0.0, 1.0) * (1.0 - metallic);
+    const double roughness = clampRoughness(material.perceptualRoughness);
+    const double alpha = roughness * roughness;
+    const double NoL = -glm::dot(n, l); // > 0: l is below the surface
+    double shape = 0.0;
+    double VoH = 1.0;
+    if (material.isThinWalled()) {
+        // A thin wall bends nothing: its BTDF is the reflection lobe mirrored through the surface.
+        const glm::dvec3 mirrored = l + 2.0 * NoL * n;
+        const glm::dvec3 hSum = v + mirrored;
+        const double hLength = glm::length(hSum);
+        const glm::dvec3 h = hLength > 0.0 ? hSum / hLength : n;
+        VoH = std::clamp(glm::dot(v, h), 0.0, 1.0);
+        shape = distribution(std::clamp(glm::dot(n, h), 0.0, 1.0), alpha)
+            * visibility(NoV, std::min(NoL, 1.0), alpha, roughness, kind);
+    } else {
+        // The volume's interface, from the outside (index 1) into the material's index.
+        const double ior = std::max(material.ior, kMinRefractiveIor);
+        const glm::dvec3 h = refractionHalfVector(n, v, l, 1.0, ior);
+        if (h == glm::dvec3(0.0))
+            return glm::dvec3(0.0);
+        VoH = glm::dot(v, h);
+        if (VoH <= 0.0)
+            return glm::dvec3(0.0);
+        shape = distribution(glm::dot(n, h), alpha)
+            * visibility(NoV, std::min(NoL, 1.0), alpha, roughness, kind)
+            * refractionJacobianFactor(VoH, glm::dot(l, h), 1.0, ior);
+    }
+    // The light the specular layer (and the film over it) does not reflect, as fresnel_mix leaves
+    // the base, with its multiple scattering compensated.
+    const DielectricReflectance layer = dielectricReflectance(material);
+    glm::dvec3 fresnel = dielectricFresnel(material, layer, VoH);
+    if (material.iridescence > 0.0)
+        fresnel = glm::mix(
+            fresnel, filmFresnel(material, layer.f0, VoH), std::clamp(material.iridescence, 0.0, 1.0));
+    const double passed = 1.0 - std::max({fresnel.r, fresnel.g, fresnel.b});
+    glm::dvec3 lobe = glm::max(material.baseColor, glm::dvec3(0.0))
+        * (transmission * passed * shape * transmissionCompensation(material, NoV));
+    if (material.hasSheen())
+        lobe *= sheenAlbedoScaling(material.sheenColor, material.sheenRoughness, NoV, std::min(NoL, 1.0));
+    if (material.clearcoat > 0.0) {
+        const glm::dvec3 nc = material.clearcoatNormal == glm::dvec3(0.0) ? n : material.clearcoatNormal;
+        lobe *= 1.0 - clearcoatWeight(material, std::clamp(glm::dot(nc, v), 0.0, 1.0));
+    }
+    return lobe;
+}
+
+void MaterialBrdf::setInterfaceTables(
+    std::shared_ptr<const InterfaceAlbedoTable> entering, std::shared_ptr<const InterfaceAlbedoTable> leaving)
+{
+    m_entering = std::move(entering);
+    m_leaving = std::move(leaving);
+}
+
+double MaterialBrdf::transmissionCompensation(const MaterialInfo& material, double NoV) const
+{
+    if (!m_model.multiScatter)
+        return 1.0;
+    const double roughness = clampRoughness(material.perceptualRoughness);
+    const DielectricReflectance layer = dielectricReflectance(material);
+    const double reflected = dielectricSpecularAlbedo(layer.maxF0(), NoV, roughness, layer.f90);
+    double transmitted = 0.0;
+    if (material.isThinWalled()) {
+        // The mirrored reflection lobe weighed by 1 - F: the lobe's albedo less the layer's.
+        const DfgValue t = m_table->sample(NoV, roughness);
+        transmitted = (1.0 - layer.maxF0()) * t.scale + (1.0 - layer.f90) * t.bias;
+    } else if (m_entering) {
+        transmitted = m_entering->sample(NoV, roughness).transmitted;
+    } else {
+        return 1.0;
+    }
+    if (transmitted <= 1e-6)
+        return 1.0;
+    return std::clamp((1.0 - reflected) / transmitted, 1.0, 4.0);
 }
 
 MaterialBrdf::SpecularShape MaterialBrdf::specularShape(const MaterialInfo& material, const glm::dvec3& n,

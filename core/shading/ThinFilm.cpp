@@ -131,14 +131,12 @@ glm::dvec3 iridescenceFresnelSpectral(
     const FilmTerms terms = filmTerms(film, baseF0, cosTheta);
     if (terms.totalReflection)
         return glm::dvec3(1.0);
-    constexpr double kShortest = 360.0;
-    constexpr double kLongest = 830.0;
     const int samples = std::max(wavelengthSamples, 1);
-    const double step = (kLongest - kShortest) / double(samples);
+    const double step = (kVisibleLongest - kVisibleShortest) / double(samples);
     glm::dvec3 white(0.0);
     glm::dvec3 channelXyz[3] = {glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
     for (int i = 0; i < samples; ++i) {
-        const double lambda = kShortest + (double(i) + 0.5) * step;
+        const double lambda = kVisibleShortest + (double(i) + 0.5) * step;
         const glm::dvec3 cmf = colourMatchingFunctions(lambda);
         white += cmf;
         for (int c = 0; c < 3; ++c) {
@@ -155,6 +153,20 @@ glm::dvec3 iridescenceFresnelSpectral(
     for (int c = 0; c < 3; ++c)
         result[c] = (kXyzToRec709 * channelXyz[c])[c] / whiteRgb[c];
     return result;
+}
+
+glm::dvec3 wavelengthRgbWeight(double lambda)
+{
+    // The band's mean colour by the midpoint rule at 0.1 nm, once.
+    static const glm::dvec3 mean = [] {
+        constexpr int kSteps = 4700;
+        const double step = (kVisibleLongest - kVisibleShortest) / double(kSteps);
+        glm::dvec3 sum(0.0);
+        for (int i = 0; i < kSteps; ++i)
+            sum += kXyzToRec709 * colourMatchingFunctions(kVisibleShortest + (double(i) + 0.5) * step);
+        return sum / double(kSteps);
+    }();
+    return (kXyzToRec709 * colourMatchingFunctions(lambda)) / mean;
 }
 
 glm::dvec3 thinFilmIncoherentReflectance(const ThinFilm& film, const glm::dvec3& baseF0, double cosTheta)

@@ -64,6 +64,16 @@ glm::dvec3 iridescenceFresnelSpectral(
 // the spectral reference integrates against.
 glm::dvec3 colourMatchingFunctions(double lambda);
 
+// The visible band the spectral reference integrates over, and the colour one wavelength of it
+// stands for in a spectral estimate: the colour matching functions at lambda taken to linear
+// Rec.709, divided per channel by their mean over the band, so that wavelengths drawn uniformly
+// over it average to white (1, 1, 1) (some channels are negative: a spectral colour lies outside
+// Rec.709's gamut). KHR_materials_dispersion's paths draw their wavelength with it
+// (core/truth/SceneTruth).
+inline constexpr double kVisibleShortest = 360.0; // nm
+inline constexpr double kVisibleLongest = 830.0;
+glm::dvec3 wavelengthRgbWeight(double lambda);
+
 // The film's incoherent reflectance, C0 = R12 + Rs: what both converge to as the film thickens and
 // its interference averages out over the visible band.
 glm::dvec3 thinFilmIncoherentReflectance(const ThinFilm& film, const glm::dvec3& baseF0, double cosTheta);

@@ -44,7 +44,9 @@ struct SceneTruthSettings {
     int samplesPerPixel = 256;
     std::uint64_t seed = 1;
     int threads = 0; // 0: all cores
-    int maxBounces = 16; // surfaces a path may meet after the camera's
+    // Surfaces a path may meet after the camera's. Light inside glass bounces long: a rough glass
+    // sphere's rim lost 1.8% of a uniform environment's light at 16, none measurable at 64.
+    int maxBounces = 64;
     int albedoTableSize = 64; // the albedo tables of compensation and coupling, as GroundTruthSettings
     int albedoTableSamples = 2048;
 };
