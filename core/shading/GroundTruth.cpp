@@ -24,15 +24,6 @@
 
 namespace facet {
 
-namespace {
-
-bool isUsable(const glm::dvec3& c)
-{
-    return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
-}
-
-} // namespace
-
 std::shared_ptr<const DfgTable> albedoTable(int size, int samples, Visibility visibility)
 {
     // Computing a 64 x 64 table at 2048 samples takes about a second: keep the ones made.
@@ -71,8 +62,7 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
     const glm::dvec2 environmentShift = rng.next2D();
     const auto count = std::uint32_t(std::max(samples, 1));
     auto point = [count](std::uint32_t i, const glm::dvec2& shift) {
-        const glm::dvec2 u = sampling::hammersley(i, count) + shift;
-        return glm::dvec2(u.x - std::floor(u.x), u.y - std::floor(u.y));
+        return sampling::shiftedHammersley(i, count, shift);
     };
     glm::dvec3 sum(0.0);
     for (std::uint32_t s = 0; s < count; ++s) {
@@ -85,7 +75,7 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
                 const double weight = powerHeuristic(pdf, sampler.pdf(l));
                 const glm::dvec3 contribution = strategy.f(l, LightingKind::Environment)
                     * environment.radiance(l) * (NoL * weight / pdf);
-                if (isUsable(contribution))
+                if (sampling::isFinite(contribution))
                     sum += contribution;
             }
         }
@@ -98,7 +88,7 @@ glm::dvec3 integrateOutgoingRadiance(const GroundTruthScene& scene, const Materi
                 const double weight = powerHeuristic(pdf, strategy.pdf(l));
                 const glm::dvec3 contribution = strategy.f(l, LightingKind::Environment)
                     * environment.radiance(l) * (NoL * weight / pdf);
-                if (isUsable(contribution))
+                if (sampling::isFinite(contribution))
                     sum += contribution;
             }
         }

@@ -41,6 +41,17 @@ glm::dvec2 hammersley(std::uint32_t i, std::uint32_t n)
     return {double(i) / double(n), radicalInverse(i)};
 }
 
+glm::dvec2 shiftedHammersley(std::uint32_t i, std::uint32_t n, const glm::dvec2& shift)
+{
+    const glm::dvec2 u = hammersley(i, n) + shift;
+    return glm::dvec2(u.x - std::floor(u.x), u.y - std::floor(u.y));
+}
+
+bool isFinite(const glm::dvec3& c)
+{
+    return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
+}
+
 glm::uvec2 sobol2DBits(std::uint32_t s)
 {
     // Dimension 2: XOR of the direction numbers of the set bits of s, lowest bit first; the

@@ -27,6 +27,10 @@ double radicalInverse(std::uint32_t i);
 glm::dvec2 halton23(std::uint32_t i);
 // The i-th of n Hammersley points: (i / n, radicalInverse(i)) [Hammersley & Handscomb 1964].
 glm::dvec2 hammersley(std::uint32_t i, std::uint32_t n);
+// Randomised quasi-Monte Carlo: the i-th of n Hammersley points shifted by `shift` modulo 1
+// (a Cranley-Patterson rotation): unbiased like independent points, with an error that falls
+// faster on smooth integrands. The ground truths draw their first surface's points with it.
+glm::dvec2 shiftedHammersley(std::uint32_t i, std::uint32_t n, const glm::dvec2& shift);
 
 // The first two dimensions of the Sobol' sequence as 32-bit fixed-point fractions: x is the
 // radical inverse of s (dimension 1, van der Corput), y is dimension 2 (primitive polynomial
@@ -69,6 +73,9 @@ private:
     std::uint64_t m_state = 0;
     std::uint64_t m_increment = 0;
 };
+
+// Whether every channel of an estimate is a finite number (a sample to keep).
+bool isFinite(const glm::dvec3& c);
 
 // ---- Frames -----------------------------------------------------------------------------------
 

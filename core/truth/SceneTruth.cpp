@@ -30,11 +30,6 @@ constexpr int kRouletteDepth = 3;
 constexpr double kGoldenRatioFraction = 0.61803398874989484820; // (sqrt(5) - 1) / 2
 constexpr double kSilverRatioFraction = 0.41421356237309504880; // sqrt(2) - 1
 
-bool isUsable(const glm::dvec3& c)
-{
-    return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b);
-}
-
 // How far along its geometric normal a ray leaving a hit starts, so that it does not meet the
 // surface it leaves (Embree intersects in single precision).
 double offsetFor(const glm::dvec3& position)
@@ -106,7 +101,7 @@ struct Tracer {
                 const double weight
                     = previousPdf > 0.0 ? powerHeuristic(previousPdf, environment.pdf(direction)) : 1.0;
                 const glm::dvec3 contribution = throughput * scene.environment.radiance(direction) * weight;
-                if (isUsable(contribution))
+                if (sampling::isFinite(contribution))
                     sum += contribution;
                 break;
             }
@@ -174,7 +169,7 @@ struct Tracer {
                             const double weight = powerHeuristic(pdf, brdfSampler.pdf(l));
                             const glm::dvec3 contribution = throughput * f * scene.environment.radiance(l)
                                 * (std::abs(glm::dot(n, l)) * weight / pdf);
-                            if (isUsable(contribution))
+                            if (sampling::isFinite(contribution))
                                 sum += contribution;
                         }
                     }
@@ -196,7 +191,7 @@ struct Tracer {
                     continue;
                 const glm::dvec3 contribution
                     = throughput * f * arriving.irradiance * std::abs(glm::dot(n, l));
-                if (isUsable(contribution))
+                if (sampling::isFinite(contribution))
                     sum += contribution;
             }
 
@@ -207,7 +202,7 @@ struct Tracer {
             if (pdf <= 0.0 || !reaches(l, false))
                 break;
             throughput *= brdfSampler.f(l, LightingKind::Environment) * (std::abs(glm::dot(n, l)) / pdf);
-            if (!isUsable(throughput) || throughput == glm::dvec3(0.0))
+            if (!sampling::isFinite(throughput) || throughput == glm::dvec3(0.0))
                 break;
             const bool crossed = glm::dot(n, l) < 0.0;
             if (crossed && volume) {
@@ -265,9 +260,7 @@ Image renderSceneTruth(
                 const double wavelengthShift = rng.nextDouble();
                 const double fresnelShift = rng.nextDouble();
                 const auto point = [samples](int i, const glm::dvec2& shift) {
-                    const glm::dvec2 u
-                        = sampling::hammersley(std::uint32_t(i), std::uint32_t(samples)) + shift;
-                    return glm::dvec2(u.x - std::floor(u.x), u.y - std::floor(u.y));
+                    return sampling::shiftedHammersley(std::uint32_t(i), std::uint32_t(samples), shift);
                 };
                 glm::dvec3 sum(0.0);
                 for (int s = 0; s < samples; ++s) {
